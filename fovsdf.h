@@ -1,0 +1,3036 @@
+/* fovsdf.h - v0.1.0 - sphere tracing of signed distance functions, built for foveation
+                       - MIT or public domain (see end of file)
+
+   Do this:
+      #define FOVSDF_IMPLEMENTATION   (or #define FOV_IMPL for all fov headers)
+   before you include this file in *one* C or C++ file to create the implementation.
+
+QUICK START
+      #define FOVSDF_IMPLEMENTATION
+      #include "fovsdf.h"
+
+      static float my_sdf(const float p[3], void *user)      // a unit sphere
+      { (void)user; return sqrtf(p[0]*p[0] + p[1]*p[1] + p[2]*p[2]) - 1.0f; }
+
+      fovsdf_scene scene;  fovsdf_scene_init(&scene);  scene.dist = my_sdf;
+      fovsdf_camera cam;   fovsdf_camera_init(&cam, 320, 240);
+      cam.pos[2] = -3.0f;                                    // looks at the origin
+      fovsdf_config cfg = fovsdf_config_default();           // classic sphere tracing
+      fovsdf_ctx ctx;
+      fov_gaze gaze = { 160.0f, 120.0f };
+      if (fovsdf_init(&ctx, &cfg, &scene, &cam, gaze, NULL, 0) != FOV_OK) ...
+      fovsdf_output out;   fovsdf_output_init(&out);  out.rgb8 = pixels;  // 320*240*3 bytes
+      fovsdf_render_rows(&ctx, 0, 240, &out, NULL);          // split rows over threads if you like
+
+   See examples/sdf_basic.c (a complete program) and examples/sdf_scenes.c (the built-in
+   scenes, all tracers, written to image files).
+
+WHAT IT DOES
+   - Sphere tracing (Hart 1996) of a signed distance function (SDF) given as a C callback, or
+     as a tree of built-in primitives and operators compiled into a small program that skips
+     far-away objects with bounding spheres.
+   - Tracers: classic (absolute and pixel-cone epsilon), over-relaxed (Keinert et al. 2014),
+     the Balint & Valasek 2018 step, auto-relaxed (Ban & Valasek 2023). Every distance
+     evaluation is counted.
+   - Shading helpers: tetrahedron normals (4 evaluations), Lambert plus ambient, soft shadows
+     (Algorithm 2 of the Polychronakis thesis = Quilez's penumbra estimate) with a head start,
+     material ids, a sky gradient; 1, 4 or 16 samples per pixel.
+   - One eccentricity model (degrees between the gaze ray and a pixel's ray, from the display
+     geometry), shared with fovlp.h and fovpt.h.
+   - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
+     Temple on a terrain, Atrium, Thin features, Fractals).
+
+DOES NOT
+   - use a GPU API, start threads, allocate memory, or read or write files;
+   - keep any global or thread-local state.
+
+CONFIGURATION (define before including the implementation)
+   FOVSDF_STATIC        all functions static (use it when two libraries embed this header)
+   FOV_DLL              export (FOVSDF_IMPLEMENTATION) or import the API from a DLL
+   FOVSDF_API           override the linkage of every public function
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOVSDF_MAX_STEPS     hard cap on march steps per ray               (default 65536)
+   FOVSDF_MAX_DIM       hard cap on image width and height            (default 65536)
+   FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
+   FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
+                        it references software-double routines on a single-precision FPU)
+   FOV_NO_ERROR_STRINGS compile out the result strings (fovsdf_result_string returns "")
+
+MEMORY
+   The caller owns every byte. fovsdf_memory_size() says how much working memory a
+   configuration needs (0 for the tracers of this version); fovsdf_init() takes it as a
+   pointer and size. Images are caller buffers with an explicit row stride. The scene program
+   and the built-in scenes are built into caller memory after a size query
+   (fovsdf_program_size, fovsdf_builtin_size). Stack use: every entry point uses less than
+   2 KiB of stack plus the scene program's value stack (FOVSDF_MAX_STACK * 8 bytes).
+
+ERRORS AND LOGGING
+   Every fallible function returns fov_result: FOV_OK (0) or a negative code.
+   fovsdf_result_string() never returns NULL. Bad input (NULL pointers, zero, negative,
+   overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
+   outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
+   rejected with an error code before any work is done; nothing asserts on data. An optional
+   fov_logger in the config receives a message with each error.
+
+THREADING
+   No function keeps state between calls except in the objects you pass. fovsdf_init fills a
+   context that is read-only afterwards: call fovsdf_render_rows / fovsdf_render_tile on
+   disjoint rows or tiles from as many threads as you like, each with its own fovsdf_stats.
+
+NUMERICS (the float envelope; tests/test_fovsdf.c establishes it)
+   - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
+   - The hit threshold of a ray at distance t is max(eps, eps_px * pixel_angle * t,
+     8 * FLT_EPSILON * (|camera| + t)): never below a few float ulps of the position, so a
+     march always makes progress and ends within max_steps. With the camera 1e4 to 1e5 units
+     from the origin the hit depth is correct to that ulp floor (about 1e-2 at 1e5).
+   - Scenes are best kept within [1e-4, 1e3] units in object size and 1e5 in distance; the
+     tests render spheres from 1e-4 to 1e3 units (camera scaled with them) correctly.
+   - Rays that start inside a surface (negative distance) report a hit at t_start.
+   - Rays that graze a surface can exhaust max_steps: they are reported as
+     FOVSDF_EXHAUSTED with the t reached, and shaded as hits there.
+   - Floating-point contraction: the tests build with -ffp-contract=off; results across
+     targets agree within the tolerances stated in tests/xtarget (not bit for bit).
+
+PLATFORM NOTES
+   - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
+     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined;
+     otherwise it also includes <math.h> and <assert.h>.
+   - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
+   - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
+     library's object file references no __aeabi_d* routine (checked by the tests).
+
+LICENSE: see end of file.
+
+RECENT REVISION HISTORY
+   0.1.0 (2026-11-22) first release: tracers, built-in scenes, shading, eccentricity model.
+*/
+
+#if defined(FOV_IMPL) && !defined(FOVSDF_IMPLEMENTATION)
+#define FOVSDF_IMPLEMENTATION
+#endif
+
+#ifndef FOVSDF_H_INCLUDED
+#define FOVSDF_H_INCLUDED
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FOVSDF_VERSION_MAJOR 0
+#define FOVSDF_VERSION_MINOR 1
+#define FOVSDF_VERSION_PATCH 0
+#define FOVSDF_VERSION_STRING "0.1.0"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOVSDF__UNUSED __attribute__((unused))
+#else
+#define FOVSDF__UNUSED
+#endif
+
+#ifndef FOVSDF_API
+#if defined(FOVSDF_STATIC)
+#define FOVSDF_API static FOVSDF__UNUSED
+#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVSDF_IMPLEMENTATION)
+#define FOVSDF_API __declspec(dllexport)
+#elif defined(FOV_DLL) && defined(_WIN32)
+#define FOVSDF_API __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOVSDF_API __attribute__((visibility("default"))) extern
+#else
+#define FOVSDF_API extern
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
+#ifndef FOV_COMMON_DEFINED
+#define FOV_COMMON_DEFINED
+/* Result codes of every fallible function in the fov headers. */
+typedef enum fov_result {
+    FOV_OK = 0,
+    FOV_ERR_INVALID_ARG = -1,  /* a parameter is out of its documented range */
+    FOV_ERR_TOO_SMALL = -2,    /* the memory or buffer passed is smaller than required */
+    FOV_ERR_LIMIT = -3,        /* a size is above a hard cap or overflows size_t */
+    FOV_ERR_NULL = -4,         /* a required pointer is NULL */
+    FOV_ERR_NOT_FINITE = -5,   /* NaN or infinity where a finite number is required */
+    FOV_ERR_DEGENERATE = -6,   /* degenerate geometry: camera, display, scene */
+    FOV_ERR_UNSUPPORTED = -7,  /* a valid request this build or version does not support */
+    _FOV_RESULT_FORCE_I32 = 0x7FFFFFFF
+} fov_result;
+
+typedef enum fov_log_level {
+    FOV_LOG_ERROR = 1,
+    FOV_LOG_WARN = 2,
+    FOV_LOG_INFO = 3,
+    _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
+} fov_log_level;
+
+/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
+   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
+                             uint32_t line, void *user);
+typedef struct fov_logger {
+    fov_log_func func;
+    void *user;
+} fov_logger;
+
+/* Gaze point in image pixels, continuous: pixel (i, j) covers [i, i+1) x [j, j+1), so its
+   centre is (i + 0.5, j + 0.5); y grows downwards. Must be finite; it may lie off-screen. */
+typedef struct fov_gaze {
+    float x, y;
+} fov_gaze;
+
+/* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
+   f (in pixels) from the image plane; the axis meets the image at its centre plus
+   (axis_dx, axis_dy) pixels. f comes from, in this order:
+     fov_y_deg > 0                      the image height subtends fov_y_deg at the eye
+                                        (an HMD, or a window whose view matches the camera)
+     pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
+     all zero                           the rendering camera's vertical field of view.
+   Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
+   through q and through the gaze point. This is the one definition all fov headers use. */
+typedef struct fov_display {
+    float fov_y_deg;
+    float pixel_pitch_mm;
+    float distance_mm;
+    float axis_dx, axis_dy;
+} fov_display;
+
+/* Precomputed eccentricity model (fill it with fovsdf_ecc_init / fovlp_ecc_init / ...). */
+typedef struct fov_ecc_model {
+    float cx, cy;    /* where the eye's axis meets the image, pixels */
+    float f_px;      /* eye to image plane, pixels */
+    float gx, gy;    /* the gaze point, pixels */
+    float g[3];      /* unit direction of the gaze ray */
+} fov_ecc_model;
+#endif /* FOV_COMMON_DEFINED */
+/* ---- end of the shared block ---- */
+
+/* ==== tracers and settings ================================================================ */
+
+typedef enum fovsdf_method {
+    FOVSDF_METHOD_CLASSIC = 0,     /* Hart 1996; the ground truth with a tight epsilon */
+    FOVSDF_METHOD_RELAXED = 1,     /* over-relaxation with back-step, Keinert et al. 2014 */
+    FOVSDF_METHOD_AUTORELAXED = 2, /* slope-driven relaxation, Ban & Valasek 2023 */
+    FOVSDF_METHOD_BV2018 = 3,      /* linear-approximation step, Balint & Valasek 2018 */
+    _FOVSDF_METHOD_NUM,
+    _FOVSDF_METHOD_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_method;
+
+typedef enum fovsdf_eps_mode {
+    FOVSDF_EPS_BOTH = 0,      /* hit when d < max(eps, eps_px * pixel_angle * t)  (default) */
+    FOVSDF_EPS_ABSOLUTE = 1,  /* hit when d < eps */
+    FOVSDF_EPS_CONE = 2,      /* hit when d < eps_px * pixel_angle * t */
+    _FOVSDF_EPS_NUM,
+    _FOVSDF_EPS_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_eps_mode;
+/* Whatever the mode, the threshold never drops below 8 float ulps of |camera| + t. */
+
+typedef enum fovsdf_shading {
+    FOVSDF_SHADE_FULL = 0,       /* albedo * (ambient + sum of lights * Lambert * soft shadow) */
+    FOVSDF_SHADE_NO_SHADOWS = 1, /* as FULL without shadow rays */
+    FOVSDF_SHADE_NORMALS = 2,    /* 0.5 + 0.5 * normal */
+    FOVSDF_SHADE_DEPTH = 3,      /* grey 1 - t / t_max */
+    FOVSDF_SHADE_STEPS = 4,      /* heat map of the evaluations per pixel (blue 1, red 256) */
+    _FOVSDF_SHADE_NUM,
+    _FOVSDF_SHADE_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_shading;
+
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+typedef struct fovsdf_config {
+    uint32_t method;        /* fovsdf_method                                       0: classic */
+    uint32_t spp;           /* samples per pixel: 1, 4 or 16 (patterns below)      0: 1 */
+    uint32_t eps_mode;      /* fovsdf_eps_mode                                     0: both */
+    float eps;              /* absolute hit threshold, world units                 0: 1e-4 */
+    float eps_px;           /* pixel-cone hit threshold, in pixels                 0: 0.25 */
+    uint32_t max_steps;     /* march steps per ray, <= FOVSDF_MAX_STEPS            0: 256 */
+    float t_max;            /* rays beyond it miss; 0: the scene's t_max, else      100 */
+    float omega;            /* RELAXED: step factor in [1, 2)                      0: 1.6 */
+    float ar_beta;          /* AUTORELAXED: slope smoothing in (0, 1]              0: 0.3 */
+    float bv_relax;         /* BV2018: weight of the linear extrapolation in (0,1]  0: 0.9 */
+    uint32_t shading;       /* fovsdf_shading                                      0: full */
+    uint32_t shadow_steps;  /* max steps per shadow ray                            0: 64 */
+    float shadow_eps;       /* shadow ray: stop when the penumbra factor < it      0: 1e-3 */
+    float shadow_t0;        /* shadow ray start offset along the light, world units 0: 1e-2 */
+    float normal_eps;       /* tetrahedron half-size; 0: 0.5 pixel cone at the hit (>= 1e-4) */
+    fov_display display;    /* for eccentricity; all zero: the camera's field of view */
+    fov_logger logger;      /* optional diagnostics */
+} fovsdf_config;
+
+/* Sample patterns (offsets from the pixel centre, in pixels):
+     1 spp: (0, 0).
+     4 spp: rotated grid, (+-1/8, +-3/8) and (+-3/8, -+1/8): (-1/8,-3/8) (3/8,-1/8) (1/8,3/8)
+            (-3/8,1/8).
+     16 spp: a 4x4 grid of strata of size 1/4, each sample jittered inside its stratum by a
+            fixed n-rooks pattern so no two samples share a row or a column of a 16x16 grid.
+   The pixel's colour is the box-filtered mean of its samples. */
+
+/* ==== camera ============================================================================== */
+
+/* Pinhole camera. Pixel (i, j) centre looks along
+      fwd + ((i + 0.5) / width * 2 - 1) * tan(fov_y/2) * aspect * right
+          - ((j + 0.5) / height * 2 - 1) * tan(fov_y/2) * up
+   with fwd = normalize(target - pos), right = normalize(fwd x up_hint) and up = right x fwd
+   (a right-handed world: with up_hint +y and fwd +z, right is -x ... see fovsdf_camera_basis).
+   eye_offset moves the pinhole along `right` by that many world units (stereo: -ipd/2 for
+   the left eye, +ipd/2 for the right one; render each eye with its own context). */
+typedef struct fovsdf_camera {
+    float pos[3];           /* pinhole position, world units */
+    float target[3];        /* a point the camera looks at (must differ from pos) */
+    float up[3];            /* up hint; all zero: +y. Must not be parallel to target - pos */
+    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
+    uint32_t width, height; /* image size in pixels, 1 .. FOVSDF_MAX_DIM */
+    float eye_offset;       /* stereo offset along the right axis, world units */
+} fovsdf_camera;
+
+/* ==== scenes ============================================================================== */
+
+/* What the tracer tells an extended distance callback, and what the callback may report. */
+typedef struct fovsdf_query {
+    float inflate;          /* SDF scaling s (Skipping Spheres): 1 = the exact scene. A
+                               callback that honours it returns f(p/s)*s per object, with
+                               subtracted operands scaled by 1/s (holes shrink when objects
+                               grow). Callbacks that ignore it stay correct, only slower. */
+    float eps;              /* the current hit threshold, for bounding-volume margins */
+    uint32_t want_material; /* 1: set material */
+    int32_t material;       /* out: material id of the nearest surface */
+    uint32_t prims;         /* out, accumulated: primitive evaluations */
+    uint32_t prims_skipped; /* out, accumulated: primitive evaluations skipped by bounds */
+} fovsdf_query;
+
+typedef float (*fovsdf_dist_fn)(const float p[3], void *user);
+typedef float (*fovsdf_dist_ex_fn)(const float p[3], fovsdf_query *q, void *user);
+typedef void (*fovsdf_albedo_fn)(const float p[3], int32_t material, float rgb[3], void *user);
+#ifdef FOVSDF_DOUBLE
+typedef double (*fovsdf_dist_d_fn)(const double p[3], void *user);
+#endif
+
+typedef enum fovsdf_light_type {
+    FOVSDF_LIGHT_DIRECTIONAL = 0, /* v = direction towards the light (need not be unit) */
+    FOVSDF_LIGHT_POINT = 1,       /* v = position; falloff 1 / (1 + d^2 / range^2) */
+    _FOVSDF_LIGHT_NUM,
+    _FOVSDF_LIGHT_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_light_type;
+
+typedef struct fovsdf_light {
+    uint32_t type;          /* fovsdf_light_type */
+    float v[3];             /* direction or position */
+    float color[3];         /* linear RGB intensity */
+    float range;            /* point light: falloff radius, and no light (no shadow ray)
+                               beyond 8 * range; 0: infinite, no falloff */
+    float shadow_k;         /* penumbra hardness k of Algorithm 2 (8 soft .. 128 hard);
+                               0: 16; negative: this light casts no shadows */
+} fovsdf_light;
+
+#ifndef FOVSDF_MAX_LIGHTS
+#define FOVSDF_MAX_LIGHTS 8
+#endif
+
+/* A scene: a distance function plus how to light and colour it. Not a config: zero fields
+   are literal (no lights, black sky) except lipschitz (0 = 1). fovsdf_scene_init sets a
+   useful default (one white sun, grey sky gradient, ambient 0.15). */
+typedef struct fovsdf_scene {
+    fovsdf_dist_fn dist;        /* plain distance callback; or */
+    fovsdf_dist_ex_fn dist_ex;  /* extended callback, used when not NULL */
+    void *user;                 /* passed to every callback */
+    fovsdf_albedo_fn albedo;    /* NULL: a built-in palette indexed by material id, with
+                                   material 1 a checkerboard on x/z */
+    float lipschitz;            /* bound on |grad f|; steps are divided by it; 0: 1 */
+    float t_max;                /* scene extent along rays; 0: use the config's */
+    uint32_t num_lights;        /* <= FOVSDF_MAX_LIGHTS */
+    fovsdf_light lights[FOVSDF_MAX_LIGHTS];
+    float ambient[3];           /* added to every hit's light */
+    float sky_zenith[3];        /* sky colour straight up */
+    float sky_horizon[3];       /* sky colour at the horizon and below */
+#ifdef FOVSDF_DOUBLE
+    fovsdf_dist_d_fn dist_d;    /* optional double distance for the reference tracer */
+#endif
+} fovsdf_scene;
+
+/* ==== built-in scene description (a tree of nodes compiled into a program) =============== */
+
+typedef enum fovsdf_node_type {
+    FOVSDF_NODE_NONE = 0,
+    /* primitives (centred at the origin) */
+    FOVSDF_NODE_SPHERE,       /* f0 radius */
+    FOVSDF_NODE_BOX,          /* f0..f2 half extents */
+    FOVSDF_NODE_ROUND_BOX,    /* f0..f2 half extents, f3 rounding radius */
+    FOVSDF_NODE_BOX_FRAME,    /* f0..f2 half extents, f3 frame thickness */
+    FOVSDF_NODE_TORUS,        /* f0 major radius, f1 minor radius; in the x/z plane */
+    FOVSDF_NODE_CAPSULE,      /* segment f0..f2 -> f3..f5, f6 radius */
+    FOVSDF_NODE_CYLINDER,     /* along y: f0 half height, f1 radius */
+    FOVSDF_NODE_CONE,         /* capped cone along y: f0 half height, f1 bottom, f2 top radius */
+    FOVSDF_NODE_PLANE,        /* f0..f2 unit normal, f3 offset: dot(p, n) + f3 */
+    FOVSDF_NODE_MENGER,       /* Menger sponge: f0 half size, i0 iterations (1..8) */
+    FOVSDF_NODE_MANDELBULB,   /* f0 power, i0 iterations (1..32); radius about 1.2 */
+    FOVSDF_NODE_TERRAIN,      /* height field y = f0 * fbm(x * f1, z * f1), i0 octaves;
+                                 a distance bound with Lipschitz factor f2 (0: 0.5) */
+    /* binary operators: a, b children */
+    FOVSDF_NODE_UNION,
+    FOVSDF_NODE_SUBTRACT,     /* a minus b */
+    FOVSDF_NODE_INTERSECT,
+    FOVSDF_NODE_SMOOTH_UNION,     /* f0 = k, blend radius */
+    FOVSDF_NODE_SMOOTH_SUBTRACT,  /* f0 = k */
+    FOVSDF_NODE_SMOOTH_INTERSECT, /* f0 = k */
+    /* unary: a child */
+    FOVSDF_NODE_TRANSLATE,    /* f0..f2 offset */
+    FOVSDF_NODE_ROTATE,       /* f0..f8 rotation matrix (row-major, object -> world) */
+    FOVSDF_NODE_SCALE,        /* f0 uniform scale > 0 */
+    FOVSDF_NODE_REPEAT,       /* f0..f2 period per axis (0: no repetition on that axis),
+                                 i0..i2 copies each side (0: infinite) */
+    FOVSDF_NODE_MIRROR,       /* i0 bit mask of mirrored axes (1 x, 2 y, 4 z): p -> |p| */
+    FOVSDF_NODE_ROUND,        /* f0 radius: f - r */
+    FOVSDF_NODE_ONION,        /* f0 thickness: |f| - th (the canonical onion) */
+    _FOVSDF_NODE_NUM,
+    _FOVSDF_NODE_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_node_type;
+
+typedef struct fovsdf_node {
+    uint32_t type;          /* fovsdf_node_type */
+    int32_t a, b;           /* child node indices (operators), -1 when unused */
+    int32_t material;       /* primitives: material id */
+    int32_t i[3];           /* integer parameters */
+    float f[9];             /* float parameters */
+} fovsdf_node;
+
+/* Builds nodes into a caller array; every function returns the new node's index, or -1
+   after an error (then err says why, and later calls keep returning -1). */
+typedef struct fovsdf_builder {
+    fovsdf_node *nodes;
+    uint32_t cap, count;
+    int32_t material;       /* material given to the primitives created next */
+    fov_result err;
+} fovsdf_builder;
+
+/* A compiled scene program (opaque data in caller memory; evaluate it with
+   fovsdf_program_eval, or hand it to a scene with fovsdf_scene_set_program). */
+typedef struct fovsdf_program {
+    const void *code;       /* instructions */
+    uint32_t count;         /* number of instructions */
+    uint32_t prims;         /* number of primitive instructions */
+    uint32_t bounds;        /* number of bounding volumes */
+    float bound_center[3];  /* bounding sphere of the whole scene (radius < 0: unbounded) */
+    float bound_radius;
+} fovsdf_program;
+
+/* ==== built-in scenes ===================================================================== */
+
+typedef enum fovsdf_builtin_id {
+    FOVSDF_SCENE_PRIMITIVES = 0, /* open: primitives on a checkerboard plane */
+    FOVSDF_SCENE_COLUMNS = 1,    /* closed: repeated columns, several point lights */
+    FOVSDF_SCENE_TEMPLE = 2,     /* a temple on a cliff terrain, large depth range */
+    FOVSDF_SCENE_ATRIUM = 3,     /* an interior with arcades, many objects */
+    FOVSDF_SCENE_THIN = 4,       /* wires, small spheres, subtraction holes */
+    FOVSDF_SCENE_FRACTALS = 5,   /* Menger sponge and Mandelbulb */
+    _FOVSDF_SCENE_NUM,
+    _FOVSDF_SCENE_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_builtin_id;
+
+typedef struct fovsdf_builtin {
+    fovsdf_scene scene;     /* ready to trace; scene.user points into the caller memory */
+    fovsdf_camera camera;   /* a suggested view (640x360; change width/height freely) */
+    const fovsdf_program *program;
+    const char *name;
+} fovsdf_builtin;
+
+/* ==== per-frame context and outputs ======================================================= */
+
+typedef struct fovsdf_ctx {  /* filled by fovsdf_init; read-only afterwards */
+    fovsdf_config cfg;       /* resolved: defaults filled in */
+    fovsdf_scene scene;
+    fovsdf_camera cam;
+    fov_gaze gaze;
+    fov_ecc_model ecc;
+    float origin[3];         /* pinhole after the stereo offset */
+    float right[3], up[3], fwd[3];
+    float tan_half_y, aspect;
+    float pixel_angle;       /* angle of one pixel at the image centre, radians */
+    float t_max;
+    float ulp_base;          /* 8 * FLT_EPSILON * |origin| */
+    float cam_dist;          /* the scene's distance at the camera (sign: inside < 0) */
+    void *mem;
+    size_t mem_size;
+} fovsdf_ctx;
+
+/* Per-pixel outputs; every pointer may be NULL (not written). Strides are in elements
+   (floats, bytes or integers) per row; 0 means tightly packed. The buffers describe the
+   whole image: fovsdf_render_rows writes only its rows. */
+typedef struct fovsdf_output {
+    float *rgb;            uint32_t rgb_stride;      /* linear RGB, 3 floats per pixel */
+    uint8_t *rgb8;         uint32_t rgb8_stride;     /* sRGB-encoded 8-bit RGB */
+    float *depth;          uint32_t depth_stride;    /* ray t of the nearest hitting sample;
+                                                        t_max when no sample hit */
+    uint8_t *hit;          uint32_t hit_stride;      /* 1 when at least half the samples hit */
+    uint32_t *evals;       uint32_t evals_stride;    /* distance evaluations of the pixel */
+    int32_t *material;     uint32_t material_stride;  /* of the nearest hit, -1 for a miss */
+} fovsdf_output;
+
+/* Deterministic counters; add them up across threads yourself. */
+typedef struct fovsdf_stats {
+    uint64_t evals;          /* every distance evaluation */
+    uint64_t evals_primary;  /* of primary (camera) rays */
+    uint64_t evals_normal;   /* of normals */
+    uint64_t evals_shadow;   /* of shadow rays */
+    uint64_t evals_lowres;   /* of head-start passes (accelerated methods) */
+    uint64_t rays;           /* primary rays */
+    uint64_t shadow_rays;
+    uint64_t hits;           /* primary rays that hit */
+    uint64_t exhausted;      /* primary rays that ran out of steps */
+    uint64_t prims;          /* built-in programs: primitive evaluations */
+    uint64_t prims_skipped;  /* built-in programs: primitive evaluations saved by bounds */
+} fovsdf_stats;
+
+typedef enum fovsdf_hit_kind {
+    FOVSDF_MISS = 0,
+    FOVSDF_HIT = 1,
+    FOVSDF_EXHAUSTED = 2,    /* ran out of steps before t_max: treated as a hit */
+    _FOVSDF_HIT_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_hit_kind;
+
+typedef struct fovsdf_hit {
+    uint32_t kind;           /* fovsdf_hit_kind */
+    float t;                 /* ray parameter reached (t_max on a miss) */
+    float dist;              /* the distance value at t */
+    uint32_t steps;          /* march steps taken */
+    uint32_t evals;          /* distance evaluations (steps plus back-steps) */
+} fovsdf_hit;
+
+/* Explicit parameters for fovsdf_march (no defaults: every field is taken as given). */
+typedef struct fovsdf_march_params {
+    uint32_t method;        /* fovsdf_method */
+    uint32_t max_steps;     /* 1 .. FOVSDF_MAX_STEPS (0 is an error here) */
+    float eps;              /* absolute hit threshold (>= 0) */
+    float eps_cone;         /* threshold growth per unit t, radians (>= 0); eps or eps_cone > 0 */
+    float t_max;            /* > 0 */
+    float omega;            /* RELAXED: [1, 2) */
+    float ar_beta;          /* AUTORELAXED: (0, 1] */
+    float bv_relax;         /* BV2018: (0, 1] */
+} fovsdf_march_params;
+
+/* ==== functions =========================================================================== */
+
+/* Versions and results */
+FOVSDF_API const char *fovsdf_result_string(fov_result r);   /* never NULL */
+FOVSDF_API const char *fovsdf_method_name(uint32_t method);  /* "classic", ...; never NULL */
+
+/* Config: defaults, and the effective values (defaults filled in) with validation. */
+FOVSDF_API fovsdf_config fovsdf_config_default(void);
+FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5, eps_px 0.01,
+                                                              4096 steps */
+FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
+
+/* Camera and scene helpers */
+FOVSDF_API void fovsdf_camera_init(fovsdf_camera *cam, uint32_t width, uint32_t height);
+FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[3],
+                                          float up[3], float fwd[3]);
+FOVSDF_API void fovsdf_scene_init(fovsdf_scene *scene);
+FOVSDF_API void fovsdf_scene_set_program(fovsdf_scene *scene, const fovsdf_program *prog);
+
+/* Eccentricity (the shared model; see fov_display). cam_fov_y_deg is used when the display
+   gives no geometry. Returns FOV_ERR_* for bad sizes, NaN gaze or degenerate displays. */
+FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *display,
+                                      float cam_fov_y_deg, uint32_t width, uint32_t height,
+                                      fov_gaze gaze);
+FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y); /* degrees */
+/* Pixels per degree at the gaze point (radial direction), e.g. for FLIP. */
+FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m);
+
+/* Working memory for a config and camera (0 for the tracers of this version). */
+FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam,
+                                         size_t *bytes);
+/* Validates everything and fills ctx. mem may be NULL when the size is 0. */
+FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
+                                  const fovsdf_scene *scene, const fovsdf_camera *cam,
+                                  fov_gaze gaze, void *mem, size_t mem_size);
+FOVSDF_API void fovsdf_output_init(fovsdf_output *out);
+FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s);
+
+/* Render rows [y0, y1) or the tile [x0, x1) x [y0, y1); stats (may be NULL) is added to. */
+FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *ctx, uint32_t y0, uint32_t y1,
+                                         const fovsdf_output *out, fovsdf_stats *stats);
+FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *ctx, uint32_t x0, uint32_t y0,
+                                         uint32_t x1, uint32_t y1, const fovsdf_output *out,
+                                         fovsdf_stats *stats);
+
+/* Single rays. fovsdf_camera_ray gives the ray through image point (px, py) (continuous
+   pixel coordinates; pixel centres at +0.5). fovsdf_trace marches with the context's method
+   from t_start. rd must be unit length. */
+FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *ctx, float px, float py,
+                                        float ro[3], float rd[3]);
+FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], const float rd[3],
+                                   float t_start, fovsdf_hit *hit, fovsdf_stats *stats);
+/* March one ray through a scene without a context, with explicit parameters. */
+FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *params,
+                                   const float ro[3], const float rd[3], float t_start,
+                                   fovsdf_hit *hit, fovsdf_stats *stats);
+/* Distance at p (counts one evaluation); material may be NULL. */
+FOVSDF_API float fovsdf_distance(const fovsdf_ctx *ctx, const float p[3], int32_t *material,
+                                 fovsdf_stats *stats);
+/* Unit normal by the tetrahedron technique: 4 evaluations at +-h. */
+FOVSDF_API void fovsdf_normal(const fovsdf_ctx *ctx, const float p[3], float h, float n[3],
+                              fovsdf_stats *stats);
+/* Soft shadow (Algorithm 2): march from p towards the unit direction l for t in
+   [t_start, t_end]; returns the light fraction in [0, 1] (0 = full shadow). */
+FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], const float l[3],
+                                    float t_start, float t_end, float k, fovsdf_stats *stats);
+/* Shades one hit: linear RGB of the surface at p with normal n seen along rd. */
+FOVSDF_API void fovsdf_shade(const fovsdf_ctx *ctx, const float p[3], const float n[3],
+                             const float rd[3], int32_t material, float rgb[3],
+                             fovsdf_stats *stats);
+FOVSDF_API void fovsdf_sky(const fovsdf_ctx *ctx, const float rd[3], float rgb[3]);
+
+/* Scene builder */
+FOVSDF_API void fovsdf_builder_init(fovsdf_builder *b, fovsdf_node *nodes, uint32_t cap);
+FOVSDF_API int32_t fovsdf_sphere(fovsdf_builder *b, float r);
+FOVSDF_API int32_t fovsdf_box(fovsdf_builder *b, float hx, float hy, float hz);
+FOVSDF_API int32_t fovsdf_round_box(fovsdf_builder *b, float hx, float hy, float hz, float r);
+FOVSDF_API int32_t fovsdf_box_frame(fovsdf_builder *b, float hx, float hy, float hz, float e);
+FOVSDF_API int32_t fovsdf_torus(fovsdf_builder *b, float major, float minor);
+FOVSDF_API int32_t fovsdf_capsule(fovsdf_builder *b, const float a[3], const float c[3],
+                                  float r);
+FOVSDF_API int32_t fovsdf_cylinder(fovsdf_builder *b, float half_height, float r);
+FOVSDF_API int32_t fovsdf_cone(fovsdf_builder *b, float half_height, float r_bottom,
+                               float r_top);
+FOVSDF_API int32_t fovsdf_plane(fovsdf_builder *b, float nx, float ny, float nz, float offset);
+FOVSDF_API int32_t fovsdf_menger(fovsdf_builder *b, float half_size, int32_t iterations);
+FOVSDF_API int32_t fovsdf_mandelbulb(fovsdf_builder *b, float power, int32_t iterations);
+FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float frequency,
+                                  int32_t octaves);
+FOVSDF_API int32_t fovsdf_union(fovsdf_builder *b, int32_t x, int32_t y);
+FOVSDF_API int32_t fovsdf_subtract(fovsdf_builder *b, int32_t x, int32_t y);
+FOVSDF_API int32_t fovsdf_intersect(fovsdf_builder *b, int32_t x, int32_t y);
+FOVSDF_API int32_t fovsdf_smooth_union(fovsdf_builder *b, int32_t x, int32_t y, float k);
+FOVSDF_API int32_t fovsdf_smooth_subtract(fovsdf_builder *b, int32_t x, int32_t y, float k);
+FOVSDF_API int32_t fovsdf_smooth_intersect(fovsdf_builder *b, int32_t x, int32_t y, float k);
+FOVSDF_API int32_t fovsdf_translate(fovsdf_builder *b, int32_t x, float tx, float ty, float tz);
+FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float ay, float az,
+                                 float angle_deg);
+FOVSDF_API int32_t fovsdf_scale(fovsdf_builder *b, int32_t x, float s);
+FOVSDF_API int32_t fovsdf_repeat(fovsdf_builder *b, int32_t x, float px, float py, float pz,
+                                 int32_t nx, int32_t ny, int32_t nz);
+FOVSDF_API int32_t fovsdf_mirror(fovsdf_builder *b, int32_t x, int32_t axes);
+FOVSDF_API int32_t fovsdf_round(fovsdf_builder *b, int32_t x, float r);
+FOVSDF_API int32_t fovsdf_onion(fovsdf_builder *b, int32_t x, float thickness);
+
+/* Compile the tree under root into a program: size query, then build into caller memory.
+   Union clusters are rebalanced into a bounding-sphere hierarchy and bounding spheres are
+   placed around subtrees worth skipping (see fovsdf_program_eval). */
+FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t count,
+                                          int32_t root, size_t *bytes);
+FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes,
+                                           uint32_t count, int32_t root, void *mem,
+                                           size_t bytes);
+/* Evaluate (the signature of fovsdf_dist_ex_fn; user = const fovsdf_program *). q may be
+   NULL. */
+FOVSDF_API float fovsdf_program_eval(const float p[3], fovsdf_query *q, void *user);
+
+/* Built-in scenes: size query, then build into caller memory (which must outlive use). */
+FOVSDF_API const char *fovsdf_builtin_name(uint32_t id);   /* never NULL */
+FOVSDF_API fov_result fovsdf_builtin_size(uint32_t id, size_t *bytes);
+FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *out, void *mem,
+                                          size_t bytes);
+
+#ifdef FOVSDF_DOUBLE
+/* Reference tracer in double precision: classic sphere tracing of scene->dist_d with the
+   absolute threshold eps (FOV_ERR_UNSUPPORTED when the scene has no dist_d). */
+FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double ro[3],
+                                       const double rd[3], double t_start, double t_max,
+                                       double eps, uint32_t max_steps, double *t_hit,
+                                       uint32_t *kind);
+#endif
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FOVSDF_H_INCLUDED */
+
+/* ---- end of API; implementation below ---- */
+#ifdef __INTELLISENSE__
+#define FOVSDF_IMPLEMENTATION
+#endif
+
+#if defined(FOVSDF_IMPLEMENTATION) && !defined(FOVSDF_IMPL_INCLUDED)
+#define FOVSDF_IMPL_INCLUDED
+
+#include <float.h>
+#include <limits.h>
+
+/* ---- hooks ------------------------------------------------------------------------------ */
+#ifndef FOV_ASSERT
+#include <assert.h>
+#define FOV_ASSERT(c) assert(c)
+#endif
+
+#if defined(FOV_SQRTF) || defined(FOV_FLOORF) || defined(FOV_SINF) || defined(FOV_COSF) ||    \
+    defined(FOV_TANF) || defined(FOV_ATAN2F) || defined(FOV_EXPF) || defined(FOV_LOGF) ||      \
+    defined(FOV_POWF)
+#if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
+    !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
+    !defined(FOV_POWF)
+#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#endif
+#define FOVSDF__HOOKED_MATH 1
+#endif
+
+#define FOVSDF__PRIV static FOVSDF__UNUSED
+
+#if !defined(FOVSDF__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#include <math.h>
+#define FOVSDF__SQRT(x) sqrtf(x)
+#define FOVSDF__FLOOR(x) floorf(x)
+#define FOVSDF__SIN(x) sinf(x)
+#define FOVSDF__COS(x) cosf(x)
+#define FOVSDF__TAN(x) tanf(x)
+#define FOVSDF__ATAN2(y, x) atan2f(y, x)
+#define FOVSDF__EXP(x) expf(x)
+#define FOVSDF__LOG(x) logf(x)
+#define FOVSDF__POW(x, y) powf(x, y)
+#elif defined(FOVSDF__HOOKED_MATH)
+#define FOVSDF__SQRT(x) FOV_SQRTF(x)
+#define FOVSDF__FLOOR(x) FOV_FLOORF(x)
+#define FOVSDF__SIN(x) FOV_SINF(x)
+#define FOVSDF__COS(x) FOV_COSF(x)
+#define FOVSDF__TAN(x) FOV_TANF(x)
+#define FOVSDF__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOVSDF__EXP(x) FOV_EXPF(x)
+#define FOVSDF__LOG(x) FOV_LOGF(x)
+#define FOVSDF__POW(x, y) FOV_POWF(x, y)
+#else
+/* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
+   ranges the library uses; tests/test_fovsdf.c checks them against libm). */
+#define FOVSDF__SQRT(x) fovsdf__sqrtf(x)
+#define FOVSDF__FLOOR(x) fovsdf__floorf(x)
+#define FOVSDF__SIN(x) fovsdf__sinf(x)
+#define FOVSDF__COS(x) fovsdf__cosf(x)
+#define FOVSDF__TAN(x) (fovsdf__sinf(x) / fovsdf__cosf(x))
+#define FOVSDF__ATAN2(y, x) fovsdf__atan2f(y, x)
+#define FOVSDF__EXP(x) fovsdf__expf(x)
+#define FOVSDF__LOG(x) fovsdf__logf(x)
+#define FOVSDF__POW(x, y) fovsdf__powf(x, y)
+
+typedef union fovsdf__bits { float f; uint32_t u; } fovsdf__bits;
+
+FOVSDF__PRIV float fovsdf__sqrtf(float x)
+{
+#if defined(__wasm__) && defined(__clang__)
+    return __builtin_sqrtf(x); /* one f32.sqrt instruction */
+#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+#else
+    fovsdf__bits b;
+    float y;
+    if (!(x > 0.0f)) return x == 0.0f ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
+    y = b.f;
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = x * y;                          /* sqrt estimate; one Newton step on sqrt */
+    return 0.5f * (y + x / y);
+#endif
+}
+
+FOVSDF__PRIV float fovsdf__floorf(float x)
+{
+    float r;
+    if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
+    r = (float)(int32_t)x;
+    return r > x ? r - 1.0f : r;
+}
+
+/* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
+FOVSDF__PRIV float fovsdf__sin_k(float x)
+{
+    float x2 = x * x;
+    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
+                x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
+}
+FOVSDF__PRIV float fovsdf__cos_k(float x)
+{
+    float x2 = x * x;
+    return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
+                x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
+}
+/* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
+FOVSDF__PRIV float fovsdf__reduce(float x, int32_t *q)
+{
+    float k;
+    if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
+    k = fovsdf__floorf(x * 0.63661977236758134f + 0.5f);
+    *q = (int32_t)k;
+    /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
+    return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
+}
+FOVSDF__PRIV float fovsdf__sinf(float x)
+{
+    int32_t q;
+    float r = fovsdf__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovsdf__sin_k(r);
+    case 1: return fovsdf__cos_k(r);
+    case 2: return -fovsdf__sin_k(r);
+    default: return -fovsdf__cos_k(r);
+    }
+}
+FOVSDF__PRIV float fovsdf__cosf(float x)
+{
+    int32_t q;
+    float r = fovsdf__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovsdf__cos_k(r);
+    case 1: return -fovsdf__sin_k(r);
+    case 2: return -fovsdf__cos_k(r);
+    default: return fovsdf__sin_k(r);
+    }
+}
+/* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
+FOVSDF__PRIV float fovsdf__atan01(float x)
+{
+    float off = 0.0f, z, z2;
+    if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
+    z = x;
+    z2 = z * z;
+    return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
+                 z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
+}
+FOVSDF__PRIV float fovsdf__atan2f(float y, float x)
+{
+    float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
+    if (x != x || y != y) return x + y;
+    if (ax == 0.0f && ay == 0.0f) return 0.0f;
+    a = ay <= ax ? fovsdf__atan01(ay / ax) : 1.57079633f - fovsdf__atan01(ax / ay);
+    if (x < 0.0f) a = 3.14159265f - a;
+    return y < 0.0f ? -a : a;
+}
+FOVSDF__PRIV float fovsdf__expf(float x)
+{
+    float k, r, p;
+    fovsdf__bits b;
+    if (x != x) return x;
+    if (x > 88.7f) return FLT_MAX * 2.0f;
+    if (x < -103.0f) return 0.0f;
+    k = fovsdf__floorf(x * 1.44269504f + 0.5f);
+    r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
+    p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
+        r * (8.3333333e-3f + r * 1.3888889e-3f)))));
+    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return p * b.f;
+}
+FOVSDF__PRIV float fovsdf__logf(float x)
+{
+    fovsdf__bits b;
+    int32_t e;
+    float m, s, s2;
+    if (x != x || x < 0.0f) return (x - x) / (x - x);
+    if (x == 0.0f) return -FLT_MAX * 2.0f;
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    e = 0;
+    if (b.u < 0x00800000u) { b.f = x * 8388608.0f; e = -23; } /* subnormal */
+    e += (int32_t)((b.u >> 23) & 0xffu) - 127;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u; /* m in [1, 2) */
+    m = b.f;
+    if (m > 1.41421356f) { m *= 0.5f; e += 1; }
+    s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
+    s2 = s * s;
+    return (float)e * 0.693147181f +
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+}
+FOVSDF__PRIV float fovsdf__powf(float x, float y)
+{
+    if (y == 0.0f) return 1.0f;
+    if (x == 0.0f) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (x < 0.0f) {
+        float fy = fovsdf__floorf(y);
+        float r;
+        if (fy != y) return (x - x) / (x - x);
+        r = fovsdf__expf(y * fovsdf__logf(-x));
+        return ((int32_t)fovsdf__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+    }
+    return fovsdf__expf(y * fovsdf__logf(x));
+}
+#endif
+
+#ifndef FOV_MEMSET
+#define FOV_MEMSET(p, v, n) fovsdf__memset(p, v, n)
+FOVSDF__PRIV void fovsdf__memset(void *p, int v, size_t n)
+{
+    unsigned char *c = (unsigned char *)p;
+    while (n--) *c++ = (unsigned char)v;
+}
+#endif
+#ifndef FOV_MEMCPY
+#define FOV_MEMCPY(d, s, n) fovsdf__memcpy(d, s, n)
+FOVSDF__PRIV void fovsdf__memcpy(void *d, const void *s, size_t n)
+{
+    unsigned char *a = (unsigned char *)d;
+    const unsigned char *b = (const unsigned char *)s;
+    while (n--) *a++ = *b++;
+}
+#endif
+
+#ifndef FOVSDF_MAX_STEPS
+#define FOVSDF_MAX_STEPS 65536u
+#endif
+#ifndef FOVSDF_MAX_DIM
+#define FOVSDF_MAX_DIM 65536u
+#endif
+#ifndef FOVSDF_MAX_STACK
+#define FOVSDF_MAX_STACK 32
+#endif
+
+#define FOVSDF__PI 3.14159265358979f
+#define FOVSDF__DEG 0.0174532925199433f
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOVSDF__PRIV int fovsdf__finite(float x) { return x - x == 0.0f; }
+FOVSDF__PRIV int fovsdf__finite3(const float v[3])
+{
+    return fovsdf__finite(v[0]) && fovsdf__finite(v[1]) && fovsdf__finite(v[2]);
+}
+FOVSDF__PRIV float fovsdf__minf(float a, float b) { return a < b ? a : b; }
+FOVSDF__PRIV float fovsdf__maxf(float a, float b) { return a > b ? a : b; }
+FOVSDF__PRIV float fovsdf__absf(float a) { return a < 0.0f ? -a : a; }
+FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOVSDF__PRIV float fovsdf__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOVSDF__PRIV float fovsdf__len(const float a[3]) { return FOVSDF__SQRT(fovsdf__dot(a, a)); }
+FOVSDF__PRIV float fovsdf__len2f(float x, float y) { return FOVSDF__SQRT(x * x + y * y); }
+FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z) { return FOVSDF__SQRT(x * x + y * y + z * z); }
+FOVSDF__PRIV void fovsdf__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+FOVSDF__PRIV float fovsdf__normalize(float v[3])
+{
+    float l = fovsdf__len(v);
+    if (l > 0.0f && fovsdf__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
+    return l;
+}
+FOVSDF__PRIV size_t fovsdf__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+
+#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+#define FOVSDF__MSG(s) s
+#else
+#define FOVSDF__MSG(s) ((const char *)0)
+#endif
+/* Report an error through the optional logger and return it. */
+FOVSDF__PRIV fov_result fovsdf__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
+{
+    if (lg && lg->func) lg->func("fovsdf", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOVSDF__FAIL(lg, r, msg) return fovsdf__err(lg, r, FOVSDF__MSG(msg), (uint32_t)__LINE__)
+
+/* ---- results, names, configs ------------------------------------------------------------ */
+FOVSDF_API const char *fovsdf_result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+FOVSDF_API const char *fovsdf_method_name(uint32_t method)
+{
+    static const char *const names[] = { "classic", "relaxed", "autorelaxed", "bv2018" };
+    return method < (uint32_t)_FOVSDF_METHOD_NUM ? names[method] : "unknown";
+}
+
+FOVSDF_API fovsdf_config fovsdf_config_default(void)
+{
+    fovsdf_config c;
+    FOV_MEMSET(&c, 0, sizeof c);
+    (void)fovsdf_config_resolve(&c, &c);
+    return c;
+}
+
+FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void)
+{
+    fovsdf_config c = fovsdf_config_default();
+    c.method = FOVSDF_METHOD_CLASSIC;
+    c.eps = 1e-5f;
+    c.eps_px = 0.01f;
+    c.max_steps = 4096;
+    c.shadow_steps = 256;
+    return c;
+}
+
+FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out)
+{
+    fovsdf_config c;
+    const fov_logger *lg;
+    if (!in || !out) return FOV_ERR_NULL;
+    c = *in;
+    lg = &in->logger;
+    if (!fovsdf__finite(c.eps) || !fovsdf__finite(c.eps_px) || !fovsdf__finite(c.t_max) ||
+        !fovsdf__finite(c.omega) || !fovsdf__finite(c.ar_beta) || !fovsdf__finite(c.bv_relax) ||
+        !fovsdf__finite(c.shadow_eps) || !fovsdf__finite(c.shadow_t0) ||
+        !fovsdf__finite(c.normal_eps) || !fovsdf__finite(c.display.fov_y_deg) ||
+        !fovsdf__finite(c.display.pixel_pitch_mm) || !fovsdf__finite(c.display.distance_mm) ||
+        !fovsdf__finite(c.display.axis_dx) || !fovsdf__finite(c.display.axis_dy))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
+    if (c.method >= (uint32_t)_FOVSDF_METHOD_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown method");
+    if (c.spp == 0) c.spp = 1;
+    if (c.spp != 1 && c.spp != 4 && c.spp != 16) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: spp must be 1, 4 or 16");
+    if (c.eps_mode >= (uint32_t)_FOVSDF_EPS_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown eps_mode");
+    if (c.eps < 0.0f || c.eps_px < 0.0f || c.t_max < 0.0f || c.omega < 0.0f || c.ar_beta < 0.0f ||
+        c.bv_relax < 0.0f || c.shadow_eps < 0.0f || c.shadow_t0 < 0.0f || c.normal_eps < 0.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter");
+    if (c.eps == 0.0f) c.eps = 1e-4f;
+    if (c.eps_px == 0.0f) c.eps_px = 0.25f;
+    if (c.max_steps == 0) c.max_steps = 256;
+    if (c.max_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: max_steps above FOVSDF_MAX_STEPS");
+    if (c.omega == 0.0f) c.omega = 1.6f;
+    if (c.omega < 1.0f || c.omega >= 2.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: omega must be in [1, 2)");
+    if (c.ar_beta == 0.0f) c.ar_beta = 0.3f;
+    if (c.ar_beta > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ar_beta must be in (0, 1]");
+    if (c.bv_relax == 0.0f) c.bv_relax = 0.9f;
+    if (c.bv_relax > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: bv_relax must be in (0, 1]");
+    if (c.shading >= (uint32_t)_FOVSDF_SHADE_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown shading");
+    if (c.shadow_steps == 0) c.shadow_steps = 64;
+    if (c.shadow_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: shadow_steps above FOVSDF_MAX_STEPS");
+    if (c.shadow_eps == 0.0f) c.shadow_eps = 1e-3f;
+    if (c.shadow_t0 == 0.0f) c.shadow_t0 = 1e-2f;
+    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
+        c.display.distance_mm < 0.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
+    *out = c;
+    return FOV_OK;
+}
+
+/* ---- camera, scene defaults, eccentricity -------------------------------------------------- */
+FOVSDF_API void fovsdf_camera_init(fovsdf_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->pos[2] = -5.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[3], float up[3],
+                                          float fwd[3])
+{
+    float f[3], u[3], r[3], lf, lr;
+    if (!cam || !right || !up || !fwd) return FOV_ERR_NULL;
+    if (!fovsdf__finite3(cam->pos) || !fovsdf__finite3(cam->target) || !fovsdf__finite3(cam->up))
+        return FOV_ERR_NOT_FINITE;
+    f[0] = cam->target[0] - cam->pos[0];
+    f[1] = cam->target[1] - cam->pos[1];
+    f[2] = cam->target[2] - cam->pos[2];
+    u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
+    if (u[0] == 0.0f && u[1] == 0.0f && u[2] == 0.0f) u[1] = 1.0f;
+    lf = fovsdf__normalize(f);
+    if (!(lf > 0.0f) || !fovsdf__finite(lf) || !fovsdf__finite3(f)) return FOV_ERR_DEGENERATE;
+    if (!(fovsdf__normalize(u) > 0.0f) || !fovsdf__finite3(u)) return FOV_ERR_DEGENERATE;
+    fovsdf__cross(f, u, r);
+    lr = fovsdf__normalize(r);
+    if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
+    fovsdf__cross(r, f, u);
+    fovsdf__normalize(u);
+    right[0] = r[0]; right[1] = r[1]; right[2] = r[2];
+    up[0] = u[0]; up[1] = u[1]; up[2] = u[2];
+    fwd[0] = f[0]; fwd[1] = f[1]; fwd[2] = f[2];
+    return FOV_OK;
+}
+
+FOVSDF_API void fovsdf_scene_init(fovsdf_scene *s)
+{
+    if (!s) return;
+    FOV_MEMSET(s, 0, sizeof *s);
+    s->lipschitz = 1.0f;
+    s->num_lights = 1;
+    s->lights[0].type = FOVSDF_LIGHT_DIRECTIONAL;
+    s->lights[0].v[0] = -0.5f; s->lights[0].v[1] = 0.8f; s->lights[0].v[2] = -0.3f;
+    s->lights[0].color[0] = s->lights[0].color[1] = s->lights[0].color[2] = 1.0f;
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.15f;
+    s->sky_zenith[0] = 0.30f; s->sky_zenith[1] = 0.45f; s->sky_zenith[2] = 0.75f;
+    s->sky_horizon[0] = 0.75f; s->sky_horizon[1] = 0.80f; s->sky_horizon[2] = 0.85f;
+}
+
+FOVSDF_API void fovsdf_scene_set_program(fovsdf_scene *s, const fovsdf_program *prog)
+{
+    if (!s) return;
+    s->dist = 0;
+    s->dist_ex = fovsdf_program_eval;
+    s->user = (void *)(uintptr_t)prog; /* the evaluator only reads through it */
+}
+
+/* The shared eccentricity model (see fov_display). */
+FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                      uint32_t width, uint32_t height, fov_gaze gaze)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > FOVSDF_MAX_DIM || height > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
+    if (!fovsdf__finite(gaze.x) || !fovsdf__finite(gaze.y) || !fovsdf__finite(cam_fov_y_deg) ||
+        !fovsdf__finite(d->fov_y_deg) || !fovsdf__finite(d->pixel_pitch_mm) ||
+        !fovsdf__finite(d->distance_mm) || !fovsdf__finite(d->axis_dx) || !fovsdf__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVSDF__TAN(0.5f * d->fov_y_deg * FOVSDF__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || d->pixel_pitch_mm < 0.0f || d->distance_mm < 0.0f) {
+        return FOV_ERR_INVALID_ARG;
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVSDF__TAN(0.5f * cam_fov_y_deg * FOVSDF__DEG);
+    }
+    if (!(f > 0.0f) || !fovsdf__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fovsdf__finite3(v) || !fovsdf__finite(fovsdf__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    fovsdf__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    fovsdf__cross(v, m->g, c);
+    s = fovsdf__len(c);
+    co = fovsdf__dot(v, m->g);
+    return FOVSDF__ATAN2(s, co) * (180.0f / FOVSDF__PI); /* atan2 keeps small angles exact */
+}
+
+FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
+{
+    /* d(angle)/d(pixels) along the radial direction at the gaze: f / (f^2 + r^2) radians per
+       pixel, with r the gaze's distance from the axis; its inverse in pixels per degree. */
+    float rx, ry, r2;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    return (m->f_px * m->f_px + r2) / m->f_px * FOVSDF__DEG;
+}
+
+/* ---- scene builder ------------------------------------------------------------------------ */
+FOVSDF_API void fovsdf_builder_init(fovsdf_builder *b, fovsdf_node *nodes, uint32_t cap)
+{
+    if (!b) return;
+    b->nodes = nodes;
+    b->cap = nodes ? cap : 0;
+    b->count = 0;
+    b->material = 0;
+    b->err = nodes ? FOV_OK : FOV_ERR_NULL;
+}
+
+/* Appends a node; checks children exist and parameters are finite. */
+FOVSDF__PRIV int32_t fovsdf__add(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y,
+                                 const float *f, uint32_t nf, const int32_t *iv, uint32_t ni)
+{
+    fovsdf_node *n;
+    uint32_t k;
+    if (!b) return -1;
+    if (b->err != FOV_OK) return -1;
+    if (b->count >= b->cap || b->count >= 0x7fffffffu) { b->err = FOV_ERR_TOO_SMALL; return -1; }
+    if ((x != -1 && (x < 0 || (uint32_t)x >= b->count)) || (y != -1 && (y < 0 || (uint32_t)y >= b->count))) {
+        b->err = FOV_ERR_INVALID_ARG;
+        return -1;
+    }
+    for (k = 0; k < nf; ++k)
+        if (!fovsdf__finite(f[k])) { b->err = FOV_ERR_NOT_FINITE; return -1; }
+    n = &b->nodes[b->count];
+    FOV_MEMSET(n, 0, sizeof *n);
+    n->type = type;
+    n->a = x;
+    n->b = y;
+    n->material = b->material;
+    for (k = 0; k < nf && k < 9; ++k) n->f[k] = f[k];
+    for (k = 0; k < ni && k < 3; ++k) n->i[k] = iv[k];
+    return (int32_t)b->count++;
+}
+FOVSDF__PRIV int32_t fovsdf__bad(fovsdf_builder *b, fov_result r)
+{
+    if (b && b->err == FOV_OK) b->err = r;
+    return -1;
+}
+FOVSDF__PRIV int fovsdf__pos(float v) { return v > 0.0f && fovsdf__finite(v); }
+FOVSDF__PRIV int fovsdf__nonneg(float v) { return v >= 0.0f && fovsdf__finite(v); }
+
+FOVSDF_API int32_t fovsdf_sphere(fovsdf_builder *b, float r)
+{
+    if (!fovsdf__pos(r)) return fovsdf__bad(b, fovsdf__finite(r) ? FOV_ERR_INVALID_ARG : FOV_ERR_NOT_FINITE);
+    return fovsdf__add(b, FOVSDF_NODE_SPHERE, -1, -1, &r, 1, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_box(fovsdf_builder *b, float hx, float hy, float hz)
+{
+    float f[3];
+    f[0] = hx; f[1] = hy; f[2] = hz;
+    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_BOX, -1, -1, f, 3, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_round_box(fovsdf_builder *b, float hx, float hy, float hz, float r)
+{
+    float f[4];
+    f[0] = hx; f[1] = hy; f[2] = hz; f[3] = r;
+    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz) || !fovsdf__nonneg(r) || r > hx || r > hy || r > hz)
+        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_ROUND_BOX, -1, -1, f, 4, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_box_frame(fovsdf_builder *b, float hx, float hy, float hz, float e)
+{
+    float f[4];
+    f[0] = hx; f[1] = hy; f[2] = hz; f[3] = e;
+    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz) || !fovsdf__pos(e)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_BOX_FRAME, -1, -1, f, 4, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_torus(fovsdf_builder *b, float major, float minor)
+{
+    float f[2];
+    f[0] = major; f[1] = minor;
+    if (!fovsdf__nonneg(major) || !fovsdf__pos(minor)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_TORUS, -1, -1, f, 2, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_capsule(fovsdf_builder *b, const float a[3], const float c[3], float r)
+{
+    float f[7];
+    if (!a || !c) return fovsdf__bad(b, FOV_ERR_NULL);
+    f[0] = a[0]; f[1] = a[1]; f[2] = a[2]; f[3] = c[0]; f[4] = c[1]; f[5] = c[2]; f[6] = r;
+    if (!fovsdf__pos(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_CAPSULE, -1, -1, f, 7, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_cylinder(fovsdf_builder *b, float half_height, float r)
+{
+    float f[2];
+    f[0] = half_height; f[1] = r;
+    if (!fovsdf__pos(half_height) || !fovsdf__pos(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_CYLINDER, -1, -1, f, 2, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_cone(fovsdf_builder *b, float half_height, float r_bottom, float r_top)
+{
+    float f[3];
+    f[0] = half_height; f[1] = r_bottom; f[2] = r_top;
+    if (!fovsdf__pos(half_height) || !fovsdf__nonneg(r_bottom) || !fovsdf__nonneg(r_top) ||
+        !(r_bottom > 0.0f || r_top > 0.0f))
+        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_CONE, -1, -1, f, 3, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_plane(fovsdf_builder *b, float nx, float ny, float nz, float offset)
+{
+    float f[4], l;
+    f[0] = nx; f[1] = ny; f[2] = nz; f[3] = offset;
+    if (!fovsdf__finite3(f) || !fovsdf__finite(offset)) return fovsdf__bad(b, FOV_ERR_NOT_FINITE);
+    l = fovsdf__normalize(f);
+    if (!(l > 0.0f)) return fovsdf__bad(b, FOV_ERR_DEGENERATE);
+    return fovsdf__add(b, FOVSDF_NODE_PLANE, -1, -1, f, 4, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_menger(fovsdf_builder *b, float half_size, int32_t iterations)
+{
+    if (!fovsdf__pos(half_size) || iterations < 1 || iterations > 8) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_MENGER, -1, -1, &half_size, 1, &iterations, 1);
+}
+FOVSDF_API int32_t fovsdf_mandelbulb(fovsdf_builder *b, float power, int32_t iterations)
+{
+    if (!(power >= 2.0f && power <= 16.0f) || iterations < 1 || iterations > 32) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_MANDELBULB, -1, -1, &power, 1, &iterations, 1);
+}
+FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float frequency, int32_t octaves)
+{
+    float f[3], g = 0.0f, w = 1.0f;
+    int32_t o;
+    if (!fovsdf__nonneg(amplitude) || !fovsdf__pos(frequency) || octaves < 1 || octaves > 12)
+        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    /* |grad h| <= amplitude * frequency * sum_o (0.5 * 2.03)^o; the distance bound divides
+       (y - h) by sqrt(1 + |grad h|^2), which makes it Lipschitz 1 (conservative). */
+    for (o = 0; o < octaves; ++o) { g += w; w *= 0.5f * 2.03f; }
+    g *= amplitude * frequency;
+    f[0] = amplitude; f[1] = frequency; f[2] = 1.0f / FOVSDF__SQRT(1.0f + g * g);
+    return fovsdf__add(b, FOVSDF_NODE_TERRAIN, -1, -1, f, 3, &octaves, 1);
+}
+FOVSDF__PRIV int32_t fovsdf__binop(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y, float k, int smooth)
+{
+    if (x < 0 || y < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    if (smooth && !fovsdf__pos(k)) return fovsdf__bad(b, fovsdf__finite(k) ? FOV_ERR_INVALID_ARG : FOV_ERR_NOT_FINITE);
+    return fovsdf__add(b, type, x, y, &k, smooth ? 1u : 0u, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_union(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_UNION, x, y, 0.0f, 0); }
+FOVSDF_API int32_t fovsdf_subtract(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_SUBTRACT, x, y, 0.0f, 0); }
+FOVSDF_API int32_t fovsdf_intersect(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_INTERSECT, x, y, 0.0f, 0); }
+FOVSDF_API int32_t fovsdf_smooth_union(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_UNION, x, y, k, 1); }
+FOVSDF_API int32_t fovsdf_smooth_subtract(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_SUBTRACT, x, y, k, 1); }
+FOVSDF_API int32_t fovsdf_smooth_intersect(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_INTERSECT, x, y, k, 1); }
+FOVSDF_API int32_t fovsdf_translate(fovsdf_builder *b, int32_t x, float tx, float ty, float tz)
+{
+    float f[3];
+    f[0] = tx; f[1] = ty; f[2] = tz;
+    if (x < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_TRANSLATE, x, -1, f, 3, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float ay, float az, float angle_deg)
+{
+    float a[3], f[9], c, s, t;
+    a[0] = ax; a[1] = ay; a[2] = az;
+    if (x < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    if (!fovsdf__finite3(a) || !fovsdf__finite(angle_deg)) return fovsdf__bad(b, FOV_ERR_NOT_FINITE);
+    if (!(fovsdf__normalize(a) > 0.0f)) return fovsdf__bad(b, FOV_ERR_DEGENERATE);
+    c = FOVSDF__COS(angle_deg * FOVSDF__DEG);
+    s = FOVSDF__SIN(angle_deg * FOVSDF__DEG);
+    t = 1.0f - c;
+    /* Rodrigues: rotation matrix R (object -> world), row-major */
+    f[0] = c + a[0] * a[0] * t;        f[1] = a[0] * a[1] * t - a[2] * s; f[2] = a[0] * a[2] * t + a[1] * s;
+    f[3] = a[1] * a[0] * t + a[2] * s; f[4] = c + a[1] * a[1] * t;        f[5] = a[1] * a[2] * t - a[0] * s;
+    f[6] = a[2] * a[0] * t - a[1] * s; f[7] = a[2] * a[1] * t + a[0] * s; f[8] = c + a[2] * a[2] * t;
+    return fovsdf__add(b, FOVSDF_NODE_ROTATE, x, -1, f, 9, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_scale(fovsdf_builder *b, int32_t x, float s)
+{
+    if (x < 0 || !fovsdf__pos(s)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_SCALE, x, -1, &s, 1, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_repeat(fovsdf_builder *b, int32_t x, float px, float py, float pz,
+                                 int32_t nx, int32_t ny, int32_t nz)
+{
+    float f[3];
+    int32_t n[3];
+    f[0] = px; f[1] = py; f[2] = pz; n[0] = nx; n[1] = ny; n[2] = nz;
+    if (x < 0 || !fovsdf__nonneg(px) || !fovsdf__nonneg(py) || !fovsdf__nonneg(pz) || nx < 0 || ny < 0 || nz < 0 ||
+        nx > 1000000 || ny > 1000000 || nz > 1000000)
+        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_REPEAT, x, -1, f, 3, n, 3);
+}
+FOVSDF_API int32_t fovsdf_mirror(fovsdf_builder *b, int32_t x, int32_t axes)
+{
+    if (x < 0 || axes < 1 || axes > 7) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_MIRROR, x, -1, 0, 0, &axes, 1);
+}
+FOVSDF_API int32_t fovsdf_round(fovsdf_builder *b, int32_t x, float r)
+{
+    if (x < 0 || !fovsdf__nonneg(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_ROUND, x, -1, &r, 1, 0, 0);
+}
+FOVSDF_API int32_t fovsdf_onion(fovsdf_builder *b, int32_t x, float thickness)
+{
+    if (x < 0 || !fovsdf__pos(thickness)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    return fovsdf__add(b, FOVSDF_NODE_ONION, x, -1, &thickness, 1, 0, 0);
+}
+
+/* ---- compiled program -------------------------------------------------------------------- */
+/* The program is postfix code for a small stack machine: primitives push a (distance,
+   material) pair, operators pop two and push one, point ops (translate, rotate, scale, repeat,
+   mirror) save the evaluation point, transform it, and a POP restores it (and rescales the
+   distance for SCALE). BOUND instructions guard a subtree: when the point is farther than a
+   margin from the subtree's bounding sphere, the distance to the sphere (a lower bound of the
+   subtree's distance) is pushed instead and the subtree is skipped. */
+enum {
+    FOVSDF__OP_PRIM = 1,  /* node type in sub */
+    FOVSDF__OP_BIN,       /* binary operator, node type in sub */
+    FOVSDF__OP_UNARY,     /* ROUND / ONION, node type in sub */
+    FOVSDF__OP_PUSHP,     /* point op, node type in sub */
+    FOVSDF__OP_POPP,      /* restore point; multiply distance by f[0] */
+    FOVSDF__OP_BOUND      /* f[0..2] centre, f[3] radius, jump = index after the subtree */
+};
+#define FOVSDF__FLAG_DEFLATE 1u
+
+typedef struct fovsdf__ins {
+    uint16_t op, sub;
+    uint32_t flags;
+    int32_t material;
+    uint32_t jump;        /* BOUND: next instruction after the guarded subtree */
+    int32_t i[3];         /* BOUND: i[0] = primitives inside */
+    float f[9];
+} fovsdf__ins;
+
+typedef struct fovsdf__bsph {   /* per-node bounds and cost */
+    float c[3], r;              /* r < 0: unbounded */
+    uint32_t prims;
+    uint32_t done;
+} fovsdf__bsph;
+
+#define FOVSDF__MAX_DEPTH 64
+
+FOVSDF__PRIV int fovsdf__node_arity(uint32_t t)
+{
+    if (t >= FOVSDF_NODE_SPHERE && t <= FOVSDF_NODE_TERRAIN) return 0;
+    if (t >= FOVSDF_NODE_UNION && t <= FOVSDF_NODE_SMOOTH_INTERSECT) return 2;
+    if (t >= FOVSDF_NODE_TRANSLATE && t <= FOVSDF_NODE_ONION) return 1;
+    return -1;
+}
+
+/* Bounding sphere of a primitive in its own frame. */
+FOVSDF__PRIV void fovsdf__prim_bound(const fovsdf_node *n, fovsdf__bsph *o)
+{
+    const float *f = n->f;
+    o->c[0] = o->c[1] = o->c[2] = 0.0f;
+    switch (n->type) {
+    case FOVSDF_NODE_SPHERE: o->r = f[0]; break;
+    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: case FOVSDF_NODE_BOX_FRAME: o->r = fovsdf__len3f(f[0], f[1], f[2]); break;
+    case FOVSDF_NODE_TORUS: o->r = f[0] + f[1]; break;
+    case FOVSDF_NODE_CAPSULE:
+        o->c[0] = 0.5f * (f[0] + f[3]); o->c[1] = 0.5f * (f[1] + f[4]); o->c[2] = 0.5f * (f[2] + f[5]);
+        o->r = 0.5f * fovsdf__len3f(f[3] - f[0], f[4] - f[1], f[5] - f[2]) + f[6];
+        break;
+    case FOVSDF_NODE_CYLINDER: o->r = fovsdf__len2f(f[0], f[1]); break;
+    case FOVSDF_NODE_CONE: o->r = fovsdf__len2f(f[0], fovsdf__maxf(f[1], f[2])); break;
+    case FOVSDF_NODE_MENGER: o->r = f[0] * 1.7320508f; break;
+    case FOVSDF_NODE_MANDELBULB: o->r = f[0] < 4.0f ? 1.5f : 1.25f; break;
+    default: o->r = -1.0f; break; /* plane, terrain */
+    }
+    o->r *= 1.0001f; /* absorb rounding */
+}
+
+FOVSDF__PRIV void fovsdf__merge_bound(const fovsdf__bsph *a, const fovsdf__bsph *b, fovsdf__bsph *o)
+{
+    float d[3], l, r;
+    if (a->r < 0.0f || b->r < 0.0f) { o->r = -1.0f; return; }
+    d[0] = b->c[0] - a->c[0]; d[1] = b->c[1] - a->c[1]; d[2] = b->c[2] - a->c[2];
+    l = fovsdf__len(d);
+    if (l + b->r <= a->r) { o->c[0] = a->c[0]; o->c[1] = a->c[1]; o->c[2] = a->c[2]; o->r = a->r; return; }
+    if (l + a->r <= b->r) { o->c[0] = b->c[0]; o->c[1] = b->c[1]; o->c[2] = b->c[2]; o->r = b->r; return; }
+    r = 0.5f * (l + a->r + b->r);
+    o->c[0] = a->c[0] + d[0] * ((r - a->r) / l);
+    o->c[1] = a->c[1] + d[1] * ((r - a->r) / l);
+    o->c[2] = a->c[2] + d[2] * ((r - a->r) / l);
+    o->r = r * 1.0001f; /* absorb rounding */
+}
+
+/* Bounds of node n from its children's (already computed) bounds. */
+FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fovsdf__bsph *o)
+{
+    const fovsdf__bsph *a = n->a >= 0 ? &bs[n->a] : 0, *b = n->b >= 0 ? &bs[n->b] : 0;
+    const float *f = n->f;
+    uint32_t prims = (a ? a->prims : 0) + (b ? b->prims : 0);
+    switch (n->type) {
+    case FOVSDF_NODE_UNION: fovsdf__merge_bound(a, b, o); break;
+    case FOVSDF_NODE_SMOOTH_UNION: fovsdf__merge_bound(a, b, o); if (o->r >= 0.0f) o->r += 0.25f * f[0]; break;
+    case FOVSDF_NODE_SUBTRACT: *o = *a; break;
+    case FOVSDF_NODE_SMOOTH_SUBTRACT: *o = *a; if (o->r >= 0.0f) o->r += 0.25f * f[0]; break;
+    case FOVSDF_NODE_INTERSECT: case FOVSDF_NODE_SMOOTH_INTERSECT:
+        if (a->r < 0.0f) *o = *b; else if (b->r < 0.0f) *o = *a; else *o = a->r < b->r ? *a : *b;
+        if (n->type == FOVSDF_NODE_SMOOTH_INTERSECT && o->r >= 0.0f) o->r += 0.25f * f[0];
+        break;
+    case FOVSDF_NODE_TRANSLATE: *o = *a; o->c[0] += f[0]; o->c[1] += f[1]; o->c[2] += f[2]; break;
+    case FOVSDF_NODE_ROTATE:
+        *o = *a;
+        o->c[0] = f[0] * a->c[0] + f[1] * a->c[1] + f[2] * a->c[2];
+        o->c[1] = f[3] * a->c[0] + f[4] * a->c[1] + f[5] * a->c[2];
+        o->c[2] = f[6] * a->c[0] + f[7] * a->c[1] + f[8] * a->c[2];
+        o->r = a->r < 0.0f ? -1.0f : a->r * 1.0001f;
+        break;
+    case FOVSDF_NODE_SCALE: *o = *a; o->c[0] *= f[0]; o->c[1] *= f[0]; o->c[2] *= f[0]; if (o->r >= 0.0f) o->r *= f[0]; break;
+    case FOVSDF_NODE_REPEAT: {
+        int k;
+        float ext = 0.0f;
+        *o = *a;
+        for (k = 0; k < 3; ++k) {
+            if (f[k] > 0.0f) {
+                if (n->i[k] == 0) { o->r = -1.0f; break; }
+                ext += ((float)n->i[k] * f[k]) * ((float)n->i[k] * f[k]);
+            }
+        }
+        if (o->r >= 0.0f) o->r += FOVSDF__SQRT(ext);
+        break;
+    }
+    case FOVSDF_NODE_MIRROR: {
+        int k;
+        float m = 0.0f;
+        *o = *a;
+        for (k = 0; k < 3; ++k) if (n->i[0] & (1 << k)) { m += o->c[k] * o->c[k]; o->c[k] = 0.0f; }
+        if (o->r >= 0.0f) o->r += FOVSDF__SQRT(m);
+        break;
+    }
+    case FOVSDF_NODE_ROUND: case FOVSDF_NODE_ONION: *o = *a; if (o->r >= 0.0f) o->r += f[0]; break;
+    default: fovsdf__prim_bound(n, o); prims = 1; break;
+    }
+    /* cost in primitive-evaluation units: fractals and terrain cost several */
+    if (n->type == FOVSDF_NODE_MENGER) prims = 1u + (uint32_t)n->i[0];
+    if (n->type == FOVSDF_NODE_MANDELBULB) prims = 2u + (uint32_t)n->i[0] / 2u;
+    if (n->type == FOVSDF_NODE_TERRAIN) prims = 1u + (uint32_t)n->i[0];
+    o->prims = prims > 0xffffffu ? 0xffffffu : prims;
+    o->done = 1;
+}
+
+typedef struct fovsdf__frame {
+    int32_t node;
+    uint32_t stage;
+    uint32_t flags;    /* inflation parity */
+    uint32_t bound_at; /* index of this node's BOUND instruction, or ~0 */
+    int32_t parent_r_valid;
+    float parent_r;
+} fovsdf__frame;
+
+/* Bounds of every node reachable from root, post-order with an explicit stack (DAGs are
+   fine; cycles are caught by the depth limit). */
+FOVSDF__PRIV fov_result fovsdf__bounds(const fovsdf_node *nodes, uint32_t count, int32_t root, fovsdf__bsph *bs)
+{
+    fovsdf__frame st[FOVSDF__MAX_DEPTH];
+    int32_t sp;
+    uint32_t k;
+    for (k = 0; k < count; ++k) bs[k].done = 0;
+    st[0].node = root; st[0].stage = 0; sp = 1;
+    while (sp > 0) {
+        fovsdf__frame *fr = &st[sp - 1];
+        const fovsdf_node *nd = &nodes[fr->node];
+        int ar = fovsdf__node_arity(nd->type);
+        if (ar < 0) return FOV_ERR_INVALID_ARG;
+        if (bs[fr->node].done) { --sp; continue; }
+        if (fr->stage < (uint32_t)ar) {
+            int32_t ch = fr->stage == 0 ? nd->a : nd->b;
+            fr->stage++;
+            if (ch < 0 || (uint32_t)ch >= count) return FOV_ERR_INVALID_ARG;
+            if (!bs[ch].done) {
+                if (sp >= FOVSDF__MAX_DEPTH) return FOV_ERR_LIMIT;
+                st[sp].node = ch; st[sp].stage = 0; ++sp;
+            }
+            continue;
+        }
+        fovsdf__node_bound(nd, bs, &bs[fr->node]);
+        --sp;
+    }
+    return FOV_OK;
+}
+
+/* Rebalance every union cluster (a maximal tree of plain unions) into a bounding-sphere
+   hierarchy: unbounded operands (planes, terrain, infinite repetition) stay at the top, the
+   bounded ones are split recursively at the median of their centres along the widest axis.
+   The cluster's root node keeps its index; new union nodes are appended after *n. */
+FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t cap, const fovsdf__bsph *bs,
+                                          int32_t *leaves, uint32_t leaf_cap, uint8_t *is_child)
+{
+    uint32_t count = *n, u, k;
+    for (k = 0; k < count; ++k) is_child[k] = 0;
+    for (k = 0; k < count; ++k)
+        if (nd[k].type == FOVSDF_NODE_UNION) {
+            if (nd[nd[k].a].type == FOVSDF_NODE_UNION) is_child[nd[k].a] = 1;
+            if (nd[nd[k].b].type == FOVSDF_NODE_UNION) is_child[nd[k].b] = 1;
+        }
+    for (u = 0; u < count; ++u) {
+        int32_t stk[FOVSDF__MAX_DEPTH];
+        int32_t sp = 0, top = -1;
+        uint32_t nl = 0, nb = 0, i, j;
+        int32_t rlo[FOVSDF__MAX_DEPTH], rhi[FOVSDF__MAX_DEPTH], *rslot[FOVSDF__MAX_DEPTH];
+        int32_t rsp = 0;
+        if (nd[u].type != FOVSDF_NODE_UNION || is_child[u] || !bs[u].done) continue;
+        /* gather the cluster's operands */
+        stk[sp++] = nd[u].b;
+        stk[sp++] = nd[u].a;
+        while (sp > 0) {
+            int32_t x = stk[--sp];
+            if (nd[x].type == FOVSDF_NODE_UNION) {
+                if (sp + 2 > FOVSDF__MAX_DEPTH) return FOV_ERR_LIMIT;
+                stk[sp++] = nd[x].b;
+                stk[sp++] = nd[x].a;
+            } else {
+                if (nl >= leaf_cap) return FOV_ERR_LIMIT;
+                leaves[nl++] = x;
+            }
+        }
+        if (nl < 3) continue;
+        /* bounded operands first (keeping their order), unbounded ones after */
+        for (i = 0; i < nl; ++i)
+            if (bs[leaves[i]].r >= 0.0f) {
+                int32_t t = leaves[i];
+                for (j = i; j > nb; --j) leaves[j] = leaves[j - 1];
+                leaves[nb++] = t;
+            }
+        if (nb >= 2) {
+            rlo[0] = 0; rhi[0] = (int32_t)nb; rslot[0] = &top; rsp = 1;
+            while (rsp > 0) {
+                int32_t lo, hi, *slot, mid, g;
+                int ax = 0;
+                float mn[3], mx[3];
+                --rsp;
+                lo = rlo[rsp]; hi = rhi[rsp]; slot = rslot[rsp];
+                if (hi - lo == 1) { *slot = leaves[lo]; continue; }
+                mn[0] = mn[1] = mn[2] = FLT_MAX;
+                mx[0] = mx[1] = mx[2] = -FLT_MAX;
+                for (i = (uint32_t)lo; i < (uint32_t)hi; ++i)
+                    for (k = 0; k < 3; ++k) {
+                        mn[k] = fovsdf__minf(mn[k], bs[leaves[i]].c[k]);
+                        mx[k] = fovsdf__maxf(mx[k], bs[leaves[i]].c[k]);
+                    }
+                if (mx[1] - mn[1] > mx[ax] - mn[ax]) ax = 1;
+                if (mx[2] - mn[2] > mx[ax] - mn[ax]) ax = 2;
+                for (g = (hi - lo) / 2; g > 0; g /= 2) /* shell sort by centre along ax */
+                    for (i = (uint32_t)(lo + g); i < (uint32_t)hi; ++i) {
+                        int32_t t = leaves[i];
+                        for (j = i; j >= (uint32_t)(lo + g) && bs[leaves[j - (uint32_t)g]].c[ax] > bs[t].c[ax]; j -= (uint32_t)g)
+                            leaves[j] = leaves[j - (uint32_t)g];
+                        leaves[j] = t;
+                    }
+                mid = (lo + hi) / 2;
+                if (*n >= cap || rsp + 2 > FOVSDF__MAX_DEPTH) return FOV_ERR_LIMIT;
+                nd[*n] = nd[u];
+                nd[*n].a = -1;
+                nd[*n].b = -1;
+                *slot = (int32_t)*n;
+                rlo[rsp] = lo; rhi[rsp] = mid; rslot[rsp] = &nd[*n].a; ++rsp;
+                rlo[rsp] = mid; rhi[rsp] = hi; rslot[rsp] = &nd[*n].b; ++rsp;
+                ++*n;
+            }
+        } else if (nb == 1) {
+            top = leaves[0];
+        }
+        for (i = nb; i < nl; ++i) {
+            if (top < 0) { top = leaves[i]; continue; }
+            if (*n >= cap) return FOV_ERR_LIMIT;
+            nd[*n] = nd[u];
+            nd[*n].a = top;
+            nd[*n].b = leaves[i];
+            top = (int32_t)(*n)++;
+        }
+        /* the cluster root keeps its index: move the top union into it */
+        FOV_ASSERT(top >= 0 && nd[top].type == FOVSDF_NODE_UNION);
+        nd[u].a = nd[top].a;
+        nd[u].b = nd[top].b;
+    }
+    return FOV_OK;
+}
+
+/* Emit the postfix code for the tree under root (bounds in bs). code == NULL counts only. */
+FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root, const fovsdf__bsph *bs,
+                                        fovsdf__ins *code, uint32_t *n_out)
+{
+    fovsdf__frame st[FOVSDF__MAX_DEPTH];
+    int32_t sp = 0;
+    uint32_t n = 0, k;
+    int32_t vdepth = 0, pdepth = 0, vmax = 0, pmax = 0;
+    st[0].node = root; st[0].stage = 0; st[0].flags = 0; st[0].bound_at = 0xffffffffu;
+    st[0].parent_r_valid = 0; st[0].parent_r = 0.0f;
+    sp = 1;
+    while (sp > 0) {
+        fovsdf__frame *fr = &st[sp - 1];
+        const fovsdf_node *nd = &nodes[fr->node];
+        const fovsdf__bsph *b = &bs[fr->node];
+        int ar = fovsdf__node_arity(nd->type);
+        if (fr->stage == 0) {
+            /* a bound pays off around subtrees of two or more primitives that are clearly
+               smaller than the enclosing bound */
+            if (b->r >= 0.0f && b->prims >= 2u && (!fr->parent_r_valid || fr->parent_r > 1.2f * b->r)) {
+                if (code) {
+                    fovsdf__ins *in = &code[n];
+                    FOV_MEMSET(in, 0, sizeof *in);
+                    in->op = FOVSDF__OP_BOUND;
+                    in->f[0] = b->c[0]; in->f[1] = b->c[1]; in->f[2] = b->c[2]; in->f[3] = b->r;
+                    in->i[0] = (int32_t)b->prims;
+                }
+                fr->bound_at = n++;
+            } else {
+                fr->bound_at = 0xffffffffu;
+            }
+            if (ar == 0) {
+                if (code) {
+                    fovsdf__ins *in = &code[n];
+                    FOV_MEMSET(in, 0, sizeof *in);
+                    in->op = FOVSDF__OP_PRIM;
+                    in->sub = (uint16_t)nd->type;
+                    in->flags = fr->flags;
+                    in->material = nd->material;
+                    for (k = 0; k < 9; ++k) in->f[k] = nd->f[k];
+                    for (k = 0; k < 3; ++k) in->i[k] = nd->i[k];
+                }
+                ++n;
+                if (++vdepth > vmax) vmax = vdepth;
+                fr->stage = 99;
+            } else {
+                if (nd->type >= FOVSDF_NODE_TRANSLATE && nd->type <= FOVSDF_NODE_MIRROR) {
+                    if (code) {
+                        fovsdf__ins *in = &code[n];
+                        FOV_MEMSET(in, 0, sizeof *in);
+                        in->op = FOVSDF__OP_PUSHP;
+                        in->sub = (uint16_t)nd->type;
+                        for (k = 0; k < 9; ++k) in->f[k] = nd->f[k];
+                        for (k = 0; k < 3; ++k) in->i[k] = nd->i[k];
+                    }
+                    ++n;
+                    if (++pdepth > pmax) pmax = pdepth;
+                }
+                fr->stage = 1;
+            }
+        }
+        if (fr->stage >= 1 && fr->stage <= (uint32_t)ar) {
+            int32_t ch = fr->stage == 1 ? nd->a : nd->b;
+            uint32_t fl = fr->flags;
+            float pr = b->r >= 0.0f ? b->r : (fr->parent_r_valid ? fr->parent_r : 0.0f);
+            int32_t pv = (b->r >= 0.0f || fr->parent_r_valid) ? 1 : 0;
+            /* inside a transform the child's bound is in another frame: compare radii only
+               when the frames agree in scale (rotate/translate/mirror/repeat keep it) */
+            if (nd->type == FOVSDF_NODE_SCALE) pv = 0;
+            if (fr->stage == 2 && (nd->type == FOVSDF_NODE_SUBTRACT || nd->type == FOVSDF_NODE_SMOOTH_SUBTRACT))
+                fl ^= FOVSDF__FLAG_DEFLATE; /* holes shrink when solids grow */
+            fr->stage++;
+            if (sp >= FOVSDF__MAX_DEPTH) return FOV_ERR_LIMIT;
+            st[sp].node = ch; st[sp].stage = 0; st[sp].flags = fl; st[sp].bound_at = 0xffffffffu;
+            st[sp].parent_r_valid = pv; st[sp].parent_r = pr;
+            ++sp;
+            continue;
+        }
+        /* all children done: emit the operator */
+        if (ar == 2 || nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION ||
+            (nd->type >= FOVSDF_NODE_TRANSLATE && nd->type <= FOVSDF_NODE_MIRROR)) {
+            if (code) {
+                fovsdf__ins *in = &code[n];
+                FOV_MEMSET(in, 0, sizeof *in);
+                if (ar == 2) in->op = FOVSDF__OP_BIN;
+                else if (nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION) in->op = FOVSDF__OP_UNARY;
+                else in->op = FOVSDF__OP_POPP;
+                in->sub = (uint16_t)nd->type;
+                in->f[0] = nd->f[0];
+                if (in->op == FOVSDF__OP_POPP && nd->type != FOVSDF_NODE_SCALE) in->f[0] = 1.0f;
+            }
+            ++n;
+            if (ar == 2) --vdepth;
+            if (nd->type >= FOVSDF_NODE_TRANSLATE && nd->type <= FOVSDF_NODE_MIRROR) --pdepth;
+        }
+        if (fr->bound_at != 0xffffffffu && code) code[fr->bound_at].jump = n;
+        --sp;
+        if (n > 0x00ffffffu) return FOV_ERR_LIMIT;
+    }
+    if (vmax > FOVSDF_MAX_STACK || pmax > FOVSDF_MAX_STACK) return FOV_ERR_LIMIT;
+    *n_out = n;
+    return FOV_OK;
+}
+
+/* Program memory: [bounds 2n][nodes 2n][leaves n][child marks n][code 6n]. The node copy
+   is rebalanced (union clusters become bounding hierarchies, at most n - 1 new nodes) and then
+   compiled; every node visit emits at most 3 instructions (BOUND, the op or PUSHP, POP). */
+FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t count, int32_t root,
+                                          size_t *bytes)
+{
+    size_t n2;
+    if (!nodes || !bytes) return FOV_ERR_NULL;
+    if (count == 0 || root < 0 || (uint32_t)root >= count) return FOV_ERR_INVALID_ARG;
+    if (count > 0x00ffffffu) return FOV_ERR_LIMIT;
+    n2 = 2u * (size_t)count;
+    *bytes = 16u + fovsdf__align(sizeof(fovsdf__bsph) * n2) + fovsdf__align(sizeof(fovsdf_node) * n2) +
+             fovsdf__align(sizeof(int32_t) * (size_t)count) + fovsdf__align((size_t)count) +
+             fovsdf__align(sizeof(fovsdf__ins) * n2 * 3u);
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes, uint32_t count,
+                                           int32_t root, void *mem, size_t bytes)
+{
+    size_t need, n2;
+    uint32_t n = 0, k, prims = 0, bounds = 0, nn = count;
+    fovsdf__bsph *bs;
+    fovsdf_node *nd;
+    int32_t *leaves;
+    uint8_t *marks;
+    fovsdf__ins *code;
+    fov_result r;
+    unsigned char *base;
+    if (!prog || !nodes || !mem) return FOV_ERR_NULL;
+    r = fovsdf_program_size(nodes, count, root, &need);
+    if (r != FOV_OK) return r;
+    if (bytes < need) return FOV_ERR_TOO_SMALL;
+    for (k = 0; k < count; ++k) {
+        int ar = fovsdf__node_arity(nodes[k].type);
+        if (ar < 0) return FOV_ERR_INVALID_ARG;
+        if (ar >= 1 && (nodes[k].a < 0 || (uint32_t)nodes[k].a >= count)) return FOV_ERR_INVALID_ARG;
+        if (ar == 2 && (nodes[k].b < 0 || (uint32_t)nodes[k].b >= count)) return FOV_ERR_INVALID_ARG;
+    }
+    n2 = 2u * (size_t)count;
+    base = (unsigned char *)mem;
+    base += (16u - ((uintptr_t)base & 15u)) & 15u; /* 16-byte align */
+    bs = (fovsdf__bsph *)(void *)base;
+    base += fovsdf__align(sizeof(fovsdf__bsph) * n2);
+    nd = (fovsdf_node *)(void *)base;
+    base += fovsdf__align(sizeof(fovsdf_node) * n2);
+    leaves = (int32_t *)(void *)base;
+    base += fovsdf__align(sizeof(int32_t) * (size_t)count);
+    marks = (uint8_t *)base;
+    base += fovsdf__align((size_t)count);
+    code = (fovsdf__ins *)(void *)base;
+    for (k = 0; k < count; ++k) nd[k] = nodes[k];
+    r = fovsdf__bounds(nd, count, root, bs);
+    if (r != FOV_OK) return r;
+    r = fovsdf__rebalance(nd, &nn, (uint32_t)n2, bs, leaves, count, marks);
+    if (r != FOV_OK) return r;
+    r = fovsdf__bounds(nd, nn, root, bs);
+    if (r != FOV_OK) return r;
+    r = fovsdf__compile(nd, root, bs, 0, &n); /* count first */
+    if (r != FOV_OK) return r;
+    if ((size_t)n > n2 * 3u) return FOV_ERR_TOO_SMALL; /* shared subtrees: more memory */
+    r = fovsdf__compile(nd, root, bs, code, &n);
+    if (r != FOV_OK) return r;
+    for (k = 0; k < n; ++k) {
+        if (code[k].op == FOVSDF__OP_PRIM) ++prims;
+        if (code[k].op == FOVSDF__OP_BOUND) ++bounds;
+    }
+    prog->code = code;
+    prog->count = n;
+    prog->prims = prims;
+    prog->bounds = bounds;
+    prog->bound_center[0] = bs[root].c[0];
+    prog->bound_center[1] = bs[root].c[1];
+    prog->bound_center[2] = bs[root].c[2];
+    prog->bound_radius = bs[root].r;
+    return FOV_OK;
+}
+
+/* ---- primitive distance functions (canonical exact forms after Quilez; the thesis's
+        section 2.2 lists the same set, notes seed000 section 2.1) ------------------------- */
+FOVSDF__PRIV float fovsdf__sd_box(float x, float y, float z, float bx, float by, float bz)
+{
+    float qx = fovsdf__absf(x) - bx, qy = fovsdf__absf(y) - by, qz = fovsdf__absf(z) - bz;
+    float o = fovsdf__len3f(fovsdf__maxf(qx, 0.0f), fovsdf__maxf(qy, 0.0f), fovsdf__maxf(qz, 0.0f));
+    return o + fovsdf__minf(fovsdf__maxf(qx, fovsdf__maxf(qy, qz)), 0.0f);
+}
+FOVSDF__PRIV float fovsdf__sd_frame3(float ax, float ay, float az)
+{
+    return fovsdf__len3f(fovsdf__maxf(ax, 0.0f), fovsdf__maxf(ay, 0.0f), fovsdf__maxf(az, 0.0f)) +
+           fovsdf__minf(fovsdf__maxf(ax, fovsdf__maxf(ay, az)), 0.0f);
+}
+FOVSDF__PRIV float fovsdf__sd_box_frame(const float p[3], const float *f)
+{
+    float px = fovsdf__absf(p[0]) - f[0], py = fovsdf__absf(p[1]) - f[1], pz = fovsdf__absf(p[2]) - f[2];
+    float e = f[3];
+    float qx = fovsdf__absf(px + e) - e, qy = fovsdf__absf(py + e) - e, qz = fovsdf__absf(pz + e) - e;
+    return fovsdf__minf(fovsdf__minf(fovsdf__sd_frame3(px, qy, qz), fovsdf__sd_frame3(qx, py, qz)),
+                        fovsdf__sd_frame3(qx, qy, pz));
+}
+FOVSDF__PRIV float fovsdf__sd_capsule(const float p[3], const float *f)
+{
+    float pa[3], ba[3], h, bb;
+    pa[0] = p[0] - f[0]; pa[1] = p[1] - f[1]; pa[2] = p[2] - f[2];
+    ba[0] = f[3] - f[0]; ba[1] = f[4] - f[1]; ba[2] = f[5] - f[2];
+    bb = fovsdf__dot(ba, ba);
+    h = bb > 0.0f ? fovsdf__clampf(fovsdf__dot(pa, ba) / bb, 0.0f, 1.0f) : 0.0f;
+    return fovsdf__len3f(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - f[6];
+}
+FOVSDF__PRIV float fovsdf__sd_cone(const float p[3], const float *f)
+{
+    float h = f[0], r1 = f[1], r2 = f[2];
+    float qx = fovsdf__len2f(p[0], p[2]), qy = p[1];
+    float k2x = r2 - r1, k2y = 2.0f * h;
+    float cax = qx - fovsdf__minf(qx, qy < 0.0f ? r1 : r2), cay = fovsdf__absf(qy) - h;
+    float tt = fovsdf__clampf(((r2 - qx) * k2x + (h - qy) * k2y) / (k2x * k2x + k2y * k2y), 0.0f, 1.0f);
+    float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
+    float s = (cbx < 0.0f && cay < 0.0f) ? -1.0f : 1.0f;
+    return s * FOVSDF__SQRT(fovsdf__minf(cax * cax + cay * cay, cbx * cbx + cby * cby));
+}
+FOVSDF__PRIV float fovsdf__sd_menger(const float p[3], int32_t iters)
+{
+    float d = fovsdf__sd_box(p[0], p[1], p[2], 1.0f, 1.0f, 1.0f), s = 1.0f;
+    int32_t m;
+    for (m = 0; m < iters; ++m) {
+        float a[3], r[3], da, db, dc, c;
+        int k;
+        for (k = 0; k < 3; ++k) {
+            float v = p[k] * s;
+            v = v - 2.0f * FOVSDF__FLOOR(v * 0.5f); /* mod 2 */
+            a[k] = v - 1.0f;
+            r[k] = fovsdf__absf(1.0f - 3.0f * fovsdf__absf(a[k]));
+        }
+        s *= 3.0f;
+        da = fovsdf__maxf(r[0], r[1]);
+        db = fovsdf__maxf(r[1], r[2]);
+        dc = fovsdf__maxf(r[2], r[0]);
+        c = (fovsdf__minf(da, fovsdf__minf(db, dc)) - 1.0f) / s;
+        d = fovsdf__maxf(d, c);
+    }
+    return d;
+}
+FOVSDF__PRIV float fovsdf__sd_mandelbulb(const float p[3], float power, int32_t iters)
+{
+    float z[3], dr = 1.0f, r;
+    int32_t i;
+    z[0] = p[0]; z[1] = p[1]; z[2] = p[2];
+    r = fovsdf__len(z);
+    for (i = 0; i < iters && r <= 2.0f; ++i) {
+        float th, ph, zr, st;
+        if (r < 1e-20f) { dr = 1.0f; break; }
+        th = FOVSDF__ATAN2(fovsdf__len2f(z[0], z[1]), z[2]) * power;
+        ph = FOVSDF__ATAN2(z[1], z[0]) * power;
+        zr = FOVSDF__POW(r, power - 1.0f);
+        dr = power * zr * dr + 1.0f;
+        zr *= r;
+        st = FOVSDF__SIN(th);
+        z[0] = zr * st * FOVSDF__COS(ph) + p[0];
+        z[1] = zr * st * FOVSDF__SIN(ph) + p[1];
+        z[2] = zr * FOVSDF__COS(th) + p[2];
+        r = fovsdf__len(z);
+    }
+    if (r < 1e-20f) return 0.0f;
+    return 0.5f * FOVSDF__LOG(r) * r / dr;
+}
+FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
+{
+    float h = 0.0f, w = 1.0f, fx = x * f[1], fz = z * f[1];
+    int32_t o;
+    for (o = 0; o < oct; ++o) {
+        float nx;
+        h += w * FOVSDF__SIN(fx) * FOVSDF__SIN(fz);
+        nx = (0.8f * fx - 0.6f * fz) * 2.03f; /* rotate and scale each octave */
+        fz = (0.6f * fx + 0.8f * fz) * 2.03f;
+        fx = nx;
+        w *= 0.5f;
+    }
+    return h * f[0];
+}
+
+FOVSDF__PRIV float fovsdf__prim(const fovsdf__ins *in, const float p[3])
+{
+    const float *f = in->f;
+    switch (in->sub) {
+    case FOVSDF_NODE_SPHERE: return fovsdf__len(p) - f[0];
+    case FOVSDF_NODE_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0], f[1], f[2]);
+    case FOVSDF_NODE_ROUND_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0] - f[3], f[1] - f[3], f[2] - f[3]) - f[3];
+    case FOVSDF_NODE_BOX_FRAME: return fovsdf__sd_box_frame(p, f);
+    case FOVSDF_NODE_TORUS: return fovsdf__len2f(fovsdf__len2f(p[0], p[2]) - f[0], p[1]) - f[1];
+    case FOVSDF_NODE_CAPSULE: return fovsdf__sd_capsule(p, f);
+    case FOVSDF_NODE_CYLINDER: {
+        float dx = fovsdf__len2f(p[0], p[2]) - f[1], dy = fovsdf__absf(p[1]) - f[0];
+        return fovsdf__minf(fovsdf__maxf(dx, dy), 0.0f) + fovsdf__len2f(fovsdf__maxf(dx, 0.0f), fovsdf__maxf(dy, 0.0f));
+    }
+    case FOVSDF_NODE_CONE: return fovsdf__sd_cone(p, f);
+    case FOVSDF_NODE_PLANE: return fovsdf__dot(p, f) + f[3];
+    case FOVSDF_NODE_MENGER: {
+        float q[3];
+        q[0] = p[0] / f[0]; q[1] = p[1] / f[0]; q[2] = p[2] / f[0];
+        return fovsdf__sd_menger(q, in->i[0]) * f[0];
+    }
+    case FOVSDF_NODE_MANDELBULB: return fovsdf__sd_mandelbulb(p, f[0], in->i[0]);
+    case FOVSDF_NODE_TERRAIN: return (p[1] - fovsdf__terrain_h(p[0], p[2], f, in->i[0])) * f[2];
+    default: return FLT_MAX;
+    }
+}
+
+FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void *user)
+{
+    const fovsdf_program *prog = (const fovsdf_program *)user;
+    const fovsdf__ins *code;
+    float vs[FOVSDF_MAX_STACK];
+    int32_t ms[FOVSDF_MAX_STACK];
+    float ps[FOVSDF_MAX_STACK][3];
+    float p[3], inflate = 1.0f, eps = 0.0f;
+    int32_t vsp = 0, psp = 0;
+    uint32_t pc = 0, n, prims = 0, skipped = 0;
+    if (!prog || !prog->code || prog->count == 0 || !p_in) return FLT_MAX;
+    code = (const fovsdf__ins *)prog->code;
+    n = prog->count;
+    p[0] = p_in[0]; p[1] = p_in[1]; p[2] = p_in[2];
+    if (q) {
+        inflate = (q->inflate > 0.0f && fovsdf__finite(q->inflate)) ? q->inflate : 1.0f;
+        eps = q->eps;
+    }
+    while (pc < n) {
+        const fovsdf__ins *in = &code[pc];
+        switch (in->op) {
+        case FOVSDF__OP_PRIM: {
+            float d;
+            if (inflate != 1.0f) { /* Skipping Spheres: Scale(p) = f(p / s) * s about the primitive's origin */
+                float s = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate, qp[3];
+                qp[0] = p[0] / s; qp[1] = p[1] / s; qp[2] = p[2] / s;
+                d = fovsdf__prim(in, qp) * s;
+            } else {
+                d = fovsdf__prim(in, p);
+            }
+            vs[vsp] = d;
+            ms[vsp] = in->material;
+            ++vsp;
+            ++prims;
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_BIN: {
+            float b = vs[--vsp], a = vs[vsp - 1], k = in->f[0], h, r;
+            int32_t mb = ms[vsp], ma = ms[vsp - 1], m = ma;
+            switch (in->sub) {
+            case FOVSDF_NODE_UNION: r = a < b ? a : b; m = a < b ? ma : mb; break;
+            case FOVSDF_NODE_SUBTRACT: r = a > -b ? a : -b; m = a > -b ? ma : mb; break;
+            case FOVSDF_NODE_INTERSECT: r = a > b ? a : b; m = a > b ? ma : mb; break;
+            case FOVSDF_NODE_SMOOTH_UNION:
+                h = fovsdf__clampf(0.5f + 0.5f * (b - a) / k, 0.0f, 1.0f);
+                r = b + (a - b) * h - k * h * (1.0f - h); m = h > 0.5f ? ma : mb; break;
+            case FOVSDF_NODE_SMOOTH_SUBTRACT:
+                h = fovsdf__clampf(0.5f - 0.5f * (a + b) / k, 0.0f, 1.0f);
+                r = a + (-b - a) * h + k * h * (1.0f - h); m = h > 0.5f ? mb : ma; break;
+            default: /* smooth intersection */
+                h = fovsdf__clampf(0.5f - 0.5f * (b - a) / k, 0.0f, 1.0f);
+                r = b + (a - b) * h + k * h * (1.0f - h); m = h > 0.5f ? ma : mb; break;
+            }
+            vs[vsp - 1] = r;
+            ms[vsp - 1] = m;
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_UNARY:
+            if (in->sub == FOVSDF_NODE_ROUND) vs[vsp - 1] -= in->f[0];
+            else vs[vsp - 1] = fovsdf__absf(vs[vsp - 1]) - in->f[0];
+            ++pc;
+            break;
+        case FOVSDF__OP_PUSHP: {
+            const float *f = in->f;
+            int k;
+            ps[psp][0] = p[0]; ps[psp][1] = p[1]; ps[psp][2] = p[2];
+            ++psp;
+            switch (in->sub) {
+            case FOVSDF_NODE_TRANSLATE: p[0] -= f[0]; p[1] -= f[1]; p[2] -= f[2]; break;
+            case FOVSDF_NODE_ROTATE: {
+                float x = p[0], y = p[1], z = p[2]; /* world -> object: R^T p */
+                p[0] = f[0] * x + f[3] * y + f[6] * z;
+                p[1] = f[1] * x + f[4] * y + f[7] * z;
+                p[2] = f[2] * x + f[5] * y + f[8] * z;
+                break;
+            }
+            case FOVSDF_NODE_SCALE: p[0] /= f[0]; p[1] /= f[0]; p[2] /= f[0]; break;
+            case FOVSDF_NODE_REPEAT:
+                for (k = 0; k < 3; ++k) {
+                    if (f[k] > 0.0f) {
+                        float c = FOVSDF__FLOOR(p[k] / f[k] + 0.5f);
+                        if (in->i[k] > 0) c = fovsdf__clampf(c, -(float)in->i[k], (float)in->i[k]);
+                        p[k] -= f[k] * c;
+                    }
+                }
+                break;
+            default: /* mirror */
+                for (k = 0; k < 3; ++k) if (in->i[0] & (1 << k)) p[k] = fovsdf__absf(p[k]);
+                break;
+            }
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_POPP:
+            --psp;
+            p[0] = ps[psp][0]; p[1] = ps[psp][1]; p[2] = ps[psp][2];
+            vs[vsp - 1] *= in->f[0];
+            ++pc;
+            break;
+        default: { /* BOUND */
+            const float *f = in->f;
+            float db = fovsdf__len3f(p[0] - f[0], p[1] - f[1], p[2] - f[2]) - f[3];
+            /* With inflation each primitive grows about its own origin, which a bound of the
+               exact scene does not cover: evaluate everything then. */
+            if (inflate == 1.0f && db > 0.25f * f[3] + 4.0f * eps) {
+                vs[vsp] = db;
+                ms[vsp] = -1;
+                ++vsp;
+                skipped += (uint32_t)in->i[0];
+                pc = in->jump;
+            } else {
+                ++pc;
+            }
+            break;
+        }
+        }
+    }
+    if (q) {
+        q->prims += prims;
+        q->prims_skipped += skipped;
+        q->material = vsp > 0 ? ms[0] : -1;
+    }
+    return vsp > 0 ? vs[0] : FLT_MAX;
+}
+
+/* ---- distance evaluation and the four tracers --------------------------------------------- */
+typedef struct fovsdf__marcher {
+    const fovsdf_scene *sc;
+    float inv_lip;
+    uint32_t method, max_steps;
+    float eps, eps_cone, ulp0, ulp1, t_max;
+    float omega, beta, relax;
+} fovsdf__marcher;
+
+/* One counted evaluation. A non-finite value from a user callback becomes FLT_MAX, which ends
+   the ray as a miss instead of spreading NaN. */
+FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const float p[3], float eps,
+                                   int32_t *mat, fovsdf_stats *st)
+{
+    float d;
+    if (sc->dist_ex) {
+        fovsdf_query q;
+        q.inflate = 1.0f; q.eps = eps; q.want_material = 1; q.material = 0; q.prims = 0; q.prims_skipped = 0;
+        d = sc->dist_ex(p, &q, sc->user);
+        if (mat) *mat = q.material;
+        if (st) { st->prims += q.prims; st->prims_skipped += q.prims_skipped; }
+    } else {
+        d = sc->dist(p, sc->user);
+        if (mat) *mat = 0;
+    }
+    if (st) st->evals++;
+    d *= inv_lip;
+    return fovsdf__finite(d) ? d : FLT_MAX;
+}
+
+FOVSDF__PRIV float fovsdf__thr(const fovsdf__marcher *m, float t)
+{
+    float a = m->eps, b = m->eps_cone * t, c = m->ulp0 + m->ulp1 * t;
+    return fovsdf__maxf(a, fovsdf__maxf(b, c));
+}
+
+/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers). */
+FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3], float t0,
+                                fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
+{
+    float t = t0, p[3], d;
+    uint32_t steps = 0, ev0 = st ? (uint32_t)st->evals : 0;
+    fovsdf_stats local;
+    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; ev0 = 0; }
+    ev0 = (uint32_t)st->evals;
+    h->kind = FOVSDF_MISS;
+#define FOVSDF__AT(tt) (p[0] = ro[0] + rd[0] * (tt), p[1] = ro[1] + rd[1] * (tt), p[2] = ro[2] + rd[2] * (tt), \
+                        fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), mat, st))
+    if (m->method == FOVSDF_METHOD_RELAXED) {
+        /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
+           sphere at the new point does not overlap the previous one the step may have jumped a
+           surface: go back to the safe point tp + rp and continue with omega = 1. */
+        float om = m->omega, tp = t0, rp = 0.0f;
+        int have = 0;
+        d = 0.0f;
+        for (;;) {
+            if (t > m->t_max) break;
+            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
+            d = FOVSDF__AT(t);
+            ++steps;
+            if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
+            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
+            tp = t; rp = d; have = 1;
+            t += om * d;
+        }
+    } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
+        /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
+           weight beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the
+           surface predicted by the line; back-step to a plain step when the spheres at t and
+           t + z do not overlap. */
+        float r, z, sl = -1.0f;
+        r = FOVSDF__AT(t);
+        ++steps;
+        d = r;
+        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
+        z = r;
+        while (h->kind == FOVSDF_MISS) {
+            float T, R, M, om;
+            if (t > m->t_max) break;
+            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
+            T = t + z;
+            R = FOVSDF__AT(T);
+            ++steps;
+            if (z > fovsdf__absf(R) + r) { sl = -1.0f; z = r; continue; }
+            M = (R - r) / fovsdf__maxf(T - t, 1e-20f);
+            sl += m->beta * (M - sl);
+            t = T; r = R; d = r;
+            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
+            om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
+            z = r * fovsdf__maxf(1.0f, om);
+        }
+    } else if (m->method == FOVSDF_METHOD_BV2018) {
+        /* Balint & Valasek 2018: fit a line through the last two distance samples and step
+           d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when
+           the spheres do not overlap. */
+        float r, z, dp = 0.0f, rp = 0.0f;
+        int have = 0;
+        r = FOVSDF__AT(t);
+        ++steps;
+        d = r;
+        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
+        while (h->kind == FOVSDF_MISS) {
+            float T, R;
+            if (t > m->t_max) break;
+            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
+            z = r;
+            if (have) {
+                float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
+                z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
+            }
+            T = t + z;
+            R = FOVSDF__AT(T);
+            ++steps;
+            if (have && z > r + fovsdf__absf(R)) { have = 0; continue; }
+            dp = z; rp = r; have = 1;
+            t = T; r = R; d = r;
+            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
+        }
+    } else {
+        /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
+        d = 0.0f;
+        for (;;) {
+            if (t > m->t_max) break;
+            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
+            d = FOVSDF__AT(t);
+            ++steps;
+            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
+            t += d;
+        }
+    }
+#undef FOVSDF__AT
+    h->t = h->kind == FOVSDF_MISS ? m->t_max : t;
+    h->dist = d;
+    h->steps = steps;
+    h->evals = (uint32_t)st->evals - ev0;
+}
+
+FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher *m, const float ro[3])
+{
+    m->sc = &c->scene;
+    m->inv_lip = 1.0f / c->scene.lipschitz;
+    m->method = c->cfg.method;
+    m->max_steps = c->cfg.max_steps;
+    m->eps = c->cfg.eps_mode == FOVSDF_EPS_CONE ? 0.0f : c->cfg.eps;
+    m->eps_cone = c->cfg.eps_mode == FOVSDF_EPS_ABSOLUTE ? 0.0f : c->cfg.eps_px * c->pixel_angle;
+    m->ulp0 = 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    m->ulp1 = 8.0f * FLT_EPSILON;
+    m->t_max = c->t_max;
+    m->omega = c->cfg.omega;
+    m->beta = c->cfg.ar_beta;
+    m->relax = c->cfg.bv_relax;
+}
+
+FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *mp,
+                                   const float ro[3], const float rd[3], float t_start,
+                                   fovsdf_hit *hit, fovsdf_stats *stats)
+{
+    fovsdf__marcher m;
+    float l;
+    if (!scene || !mp || !ro || !rd || !hit) return FOV_ERR_NULL;
+    if (!scene->dist && !scene->dist_ex) return FOV_ERR_NULL;
+    if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start) || !fovsdf__finite(mp->eps) ||
+        !fovsdf__finite(mp->eps_cone) || !fovsdf__finite(mp->t_max) || !fovsdf__finite(mp->omega) ||
+        !fovsdf__finite(mp->ar_beta) || !fovsdf__finite(mp->bv_relax) || !fovsdf__finite(scene->lipschitz))
+        return FOV_ERR_NOT_FINITE;
+    if (mp->method >= (uint32_t)_FOVSDF_METHOD_NUM || mp->max_steps == 0 || mp->eps < 0.0f || mp->eps_cone < 0.0f ||
+        !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) || t_start < 0.0f || scene->lipschitz < 0.0f)
+        return FOV_ERR_INVALID_ARG;
+    if (mp->max_steps > FOVSDF_MAX_STEPS) return FOV_ERR_LIMIT;
+    if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f)) return FOV_ERR_INVALID_ARG;
+    if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f)) return FOV_ERR_INVALID_ARG;
+    if (mp->method == FOVSDF_METHOD_BV2018 && !(mp->bv_relax > 0.0f && mp->bv_relax <= 1.0f)) return FOV_ERR_INVALID_ARG;
+    l = fovsdf__len(rd);
+    if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
+    m.sc = scene;
+    m.inv_lip = scene->lipschitz > 0.0f ? 1.0f / scene->lipschitz : 1.0f;
+    m.method = mp->method;
+    m.max_steps = mp->max_steps;
+    m.eps = mp->eps;
+    m.eps_cone = mp->eps_cone;
+    m.ulp0 = 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    m.ulp1 = 8.0f * FLT_EPSILON;
+    m.t_max = mp->t_max;
+    m.omega = mp->omega;
+    m.beta = mp->ar_beta;
+    m.relax = mp->bv_relax;
+    fovsdf__march(&m, ro, rd, t_start, hit, 0, stats);
+    return FOV_OK;
+}
+
+/* ---- shading helpers ------------------------------------------------------------------------ */
+FOVSDF_API float fovsdf_distance(const fovsdf_ctx *c, const float p[3], int32_t *material, fovsdf_stats *st)
+{
+    if (!c || !p) return FLT_MAX;
+    return fovsdf__eval_sc(&c->scene, 1.0f / c->scene.lipschitz, p, c->cfg.eps, material, st);
+}
+
+FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, float n[3], fovsdf_stats *st)
+{
+    /* tetrahedron technique: n = sum_i k_i f(p + h k_i), k_i = (+-1, +-1, +-1) with an even
+       number of minus signs; 4 evaluations. */
+    static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f }, { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
+    fovsdf_stats local;
+    int i;
+    float inv;
+    if (!c || !p || !n) return;
+    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
+    inv = 1.0f / c->scene.lipschitz;
+    n[0] = n[1] = n[2] = 0.0f;
+    for (i = 0; i < 4; ++i) {
+        float q[3], d;
+        q[0] = p[0] + h * k[i][0]; q[1] = p[1] + h * k[i][1]; q[2] = p[2] + h * k[i][2];
+        d = fovsdf__eval_sc(&c->scene, inv, q, 0.0f, 0, st);
+        if (d >= FLT_MAX) d = 0.0f;
+        n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
+    }
+    st->evals_normal += 4;
+    if (!(fovsdf__normalize(n) > 0.0f)) { n[0] = 0.0f; n[1] = 1.0f; n[2] = 0.0f; }
+}
+
+FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const float l[3], float t_start,
+                                    float t_end, float k, fovsdf_stats *st)
+{
+    /* Algorithm 2 of the thesis (Quilez's penumbra estimate): res = min(res, k h / t); full
+       shadow as soon as res < eps (the algorithm's strict comparison); t_start is the head
+       start. */
+    float res = 1.0f, t = t_start, inv, floor0;
+    uint32_t i;
+    fovsdf_stats local;
+    uint64_t e0;
+    if (!c || !p || !l) return 1.0f;
+    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
+    if (!(t > 0.0f)) t = 1e-6f;
+    e0 = st->evals;
+    inv = 1.0f / c->scene.lipschitz;
+    floor0 = 8.0f * FLT_EPSILON * fovsdf__len(p);
+    st->shadow_rays++;
+    for (i = 0; i < c->cfg.shadow_steps && t < t_end; ++i) {
+        float q[3], h;
+        q[0] = p[0] + l[0] * t; q[1] = p[1] + l[1] * t; q[2] = p[2] + l[2] * t;
+        h = fovsdf__eval_sc(&c->scene, inv, q, c->cfg.eps, 0, st);
+        res = fovsdf__minf(res, k * h / t);
+        if (res < c->cfg.shadow_eps) { res = 0.0f; break; }
+        t += fovsdf__maxf(h, floor0 + 8.0f * FLT_EPSILON * t);
+    }
+    st->evals_shadow += st->evals - e0;
+    return fovsdf__clampf(res, 0.0f, 1.0f);
+}
+
+FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t mat, float rgb[3])
+{
+    static const float pal[8][3] = {
+        { 0.80f, 0.80f, 0.80f }, { 0.0f, 0.0f, 0.0f }, { 0.85f, 0.30f, 0.25f }, { 0.30f, 0.55f, 0.85f },
+        { 0.90f, 0.75f, 0.30f }, { 0.35f, 0.75f, 0.40f }, { 0.70f, 0.45f, 0.80f }, { 0.92f, 0.90f, 0.85f }
+    };
+    if (c->scene.albedo) { c->scene.albedo(p, mat, rgb, c->scene.user); return; }
+    if (mat == 1) { /* checkerboard on x/z, unit squares */
+        int32_t ix = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
+        int32_t iz = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
+        float v = ((ix + iz) & 1) ? 0.85f : 0.30f;
+        rgb[0] = rgb[1] = rgb[2] = v;
+        return;
+    }
+    if (mat < 0) mat = 0;
+    rgb[0] = pal[mat & 7][0]; rgb[1] = pal[mat & 7][1]; rgb[2] = pal[mat & 7][2];
+}
+
+FOVSDF_API void fovsdf_sky(const fovsdf_ctx *c, const float rd[3], float rgb[3])
+{
+    float s;
+    int i;
+    if (!c || !rd || !rgb) return;
+    s = fovsdf__clampf(rd[1], 0.0f, 1.0f);
+    for (i = 0; i < 3; ++i) rgb[i] = c->scene.sky_horizon[i] + (c->scene.sky_zenith[i] - c->scene.sky_horizon[i]) * s;
+}
+
+FOVSDF_API void fovsdf_shade(const fovsdf_ctx *c, const float p[3], const float n[3], const float rd[3],
+                             int32_t material, float rgb[3], fovsdf_stats *st)
+{
+    float alb[3], acc[3], off;
+    uint32_t i;
+    if (!c || !p || !n || !rd || !rgb) return;
+    (void)rd;
+    fovsdf__albedo(c, p, material, alb);
+    acc[0] = c->scene.ambient[0]; acc[1] = c->scene.ambient[1]; acc[2] = c->scene.ambient[2];
+    off = fovsdf__maxf(2.0f * c->cfg.eps, 16.0f * FLT_EPSILON * fovsdf__len(p));
+    for (i = 0; i < c->scene.num_lights; ++i) {
+        const fovsdf_light *L = &c->scene.lights[i];
+        float l[3], dist, att = 1.0f, ndl, sh = 1.0f;
+        if (L->type == FOVSDF_LIGHT_POINT) {
+            l[0] = L->v[0] - p[0]; l[1] = L->v[1] - p[1]; l[2] = L->v[2] - p[2];
+            dist = fovsdf__normalize(l);
+            if (!(dist > 0.0f)) continue;
+            if (L->range > 0.0f) {
+                if (dist > 8.0f * L->range) continue; /* no light reaches: no shadow ray */
+                att = 1.0f / (1.0f + dist * dist / (L->range * L->range));
+            }
+        } else {
+            l[0] = L->v[0]; l[1] = L->v[1]; l[2] = L->v[2];
+            if (!(fovsdf__normalize(l) > 0.0f)) continue;
+            dist = c->t_max;
+        }
+        ndl = fovsdf__dot(n, l);
+        if (ndl <= 0.0f) continue; /* facing away: no light, no shadow ray */
+        if (c->cfg.shading == FOVSDF_SHADE_FULL && L->shadow_k >= 0.0f) {
+            float q[3], k = L->shadow_k > 0.0f ? L->shadow_k : 16.0f;
+            q[0] = p[0] + n[0] * off; q[1] = p[1] + n[1] * off; q[2] = p[2] + n[2] * off;
+            sh = fovsdf_soft_shadow(c, q, l, c->cfg.shadow_t0, dist, k, st);
+        }
+        acc[0] += L->color[0] * ndl * att * sh;
+        acc[1] += L->color[1] * ndl * att * sh;
+        acc[2] += L->color[2] * ndl * att * sh;
+    }
+    rgb[0] = alb[0] * acc[0]; rgb[1] = alb[1] * acc[1]; rgb[2] = alb[2] * acc[2];
+}
+
+/* ---- context ------------------------------------------------------------------------------- */
+FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam, size_t *bytes)
+{
+    fovsdf_config c;
+    fov_result r;
+    if (!bytes) return FOV_ERR_NULL;
+    *bytes = 0;
+    if (cfg) {
+        r = fovsdf_config_resolve(cfg, &c);
+        if (r != FOV_OK) return r;
+    }
+    if (cam && (cam->width == 0 || cam->height == 0)) return FOV_ERR_INVALID_ARG;
+    if (cam && (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM)) return FOV_ERR_LIMIT;
+    return FOV_OK;
+}
+
+FOVSDF_API void fovsdf_output_init(fovsdf_output *o)
+{
+    if (o) FOV_MEMSET(o, 0, sizeof *o);
+}
+
+FOVSDF_API void fovsdf_stats_add(fovsdf_stats *a, const fovsdf_stats *s)
+{
+    if (!a || !s) return;
+    a->evals += s->evals; a->evals_primary += s->evals_primary; a->evals_normal += s->evals_normal;
+    a->evals_shadow += s->evals_shadow; a->evals_lowres += s->evals_lowres; a->rays += s->rays;
+    a->shadow_rays += s->shadow_rays; a->hits += s->hits; a->exhausted += s->exhausted;
+    a->prims += s->prims; a->prims_skipped += s->prims_skipped;
+}
+
+FOVSDF__PRIV int fovsdf__scene_ok(const fovsdf_scene *s, fov_result *r)
+{
+    uint32_t i;
+    if (!s->dist && !s->dist_ex) { *r = FOV_ERR_NULL; return 0; }
+    if (!fovsdf__finite(s->lipschitz) || !fovsdf__finite(s->t_max) || !fovsdf__finite3(s->ambient) ||
+        !fovsdf__finite3(s->sky_zenith) || !fovsdf__finite3(s->sky_horizon)) { *r = FOV_ERR_NOT_FINITE; return 0; }
+    if (s->lipschitz < 0.0f || s->t_max < 0.0f) { *r = FOV_ERR_INVALID_ARG; return 0; }
+    if (s->num_lights > FOVSDF_MAX_LIGHTS) { *r = FOV_ERR_LIMIT; return 0; }
+    for (i = 0; i < s->num_lights; ++i) {
+        const fovsdf_light *L = &s->lights[i];
+        if (!fovsdf__finite3(L->v) || !fovsdf__finite3(L->color) || !fovsdf__finite(L->range) || !fovsdf__finite(L->shadow_k)) {
+            *r = FOV_ERR_NOT_FINITE;
+            return 0;
+        }
+        if (L->type >= (uint32_t)_FOVSDF_LIGHT_NUM || L->range < 0.0f) { *r = FOV_ERR_INVALID_ARG; return 0; }
+    }
+    return 1;
+}
+
+FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, const fovsdf_scene *scene,
+                                  const fovsdf_camera *cam, fov_gaze gaze, void *mem, size_t mem_size)
+{
+    fovsdf_config c;
+    const fov_logger *lg = cfg ? &cfg->logger : 0;
+    fov_result r;
+    size_t need;
+    float tanh, fov;
+    if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
+    if (cfg) {
+        r = fovsdf_config_resolve(cfg, &c);
+        if (r != FOV_OK) return r;
+    } else {
+        c = fovsdf_config_default();
+    }
+    if (!fovsdf__scene_ok(scene, &r)) FOVSDF__FAIL(lg, r, "init: bad scene");
+    if (cam->width == 0 || cam->height == 0) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: zero image size");
+    if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: image larger than FOVSDF_MAX_DIM");
+    if (!fovsdf__finite(cam->fov_y_deg) || !fovsdf__finite(cam->eye_offset) || !fovsdf__finite(gaze.x) || !fovsdf__finite(gaze.y))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
+    fov = cam->fov_y_deg == 0.0f ? 60.0f : cam->fov_y_deg;
+    if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
+    r = fovsdf_camera_basis(cam, ctx->right, ctx->up, ctx->fwd);
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
+    r = fovsdf_memory_size(&c, cam, &need);
+    if (r != FOV_OK) return r;
+    if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
+    ctx->cfg = c;
+    ctx->scene = *scene;
+    if (ctx->scene.lipschitz == 0.0f) ctx->scene.lipschitz = 1.0f;
+    ctx->cam = *cam;
+    ctx->cam.fov_y_deg = fov;
+    ctx->gaze = gaze;
+    r = fovsdf_ecc_init(&ctx->ecc, &c.display, fov, cam->width, cam->height, gaze);
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze or display geometry");
+    ctx->origin[0] = cam->pos[0] + ctx->right[0] * cam->eye_offset;
+    ctx->origin[1] = cam->pos[1] + ctx->right[1] * cam->eye_offset;
+    ctx->origin[2] = cam->pos[2] + ctx->right[2] * cam->eye_offset;
+    tanh = FOVSDF__TAN(0.5f * fov * FOVSDF__DEG);
+    ctx->tan_half_y = tanh;
+    ctx->aspect = (float)cam->width / (float)cam->height;
+    ctx->pixel_angle = 2.0f * tanh / (float)cam->height;
+    ctx->t_max = c.t_max > 0.0f ? c.t_max : (scene->t_max > 0.0f ? scene->t_max : 100.0f);
+    ctx->ulp_base = 8.0f * FLT_EPSILON * fovsdf__len(ctx->origin);
+    ctx->mem = mem;
+    ctx->mem_size = mem_size;
+    ctx->cam_dist = fovsdf__eval_sc(&ctx->scene, 1.0f / ctx->scene.lipschitz, ctx->origin, c.eps, 0, 0);
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
+{
+    float u, v;
+    if (!c || !ro || !rd) return FOV_ERR_NULL;
+    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
+    u = (px / (float)c->cam.width * 2.0f - 1.0f) * c->tan_half_y * c->aspect;
+    v = (1.0f - py / (float)c->cam.height * 2.0f) * c->tan_half_y;
+    rd[0] = c->fwd[0] + u * c->right[0] + v * c->up[0];
+    rd[1] = c->fwd[1] + u * c->right[1] + v * c->up[1];
+    rd[2] = c->fwd[2] + u * c->right[2] + v * c->up[2];
+    fovsdf__normalize(rd);
+    ro[0] = c->origin[0]; ro[1] = c->origin[1]; ro[2] = c->origin[2];
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const float rd[3], float t_start,
+                                   fovsdf_hit *hit, fovsdf_stats *st)
+{
+    fovsdf__marcher m;
+    float l;
+    if (!c || !ro || !rd || !hit) return FOV_ERR_NULL;
+    if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start)) return FOV_ERR_NOT_FINITE;
+    if (t_start < 0.0f) return FOV_ERR_INVALID_ARG;
+    l = fovsdf__len(rd);
+    if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
+    fovsdf__marcher_from_ctx(c, &m, ro);
+    fovsdf__march(&m, ro, rd, t_start, hit, 0, st);
+    return FOV_OK;
+}
+
+/* ---- rendering ------------------------------------------------------------------------------ */
+/* Sample offsets from the pixel centre (see the config's documentation). */
+static const float fovsdf__pat4[4][2] = { { -0.125f, -0.375f }, { 0.375f, -0.125f }, { 0.125f, 0.375f }, { -0.375f, 0.125f } };
+static const int fovsdf__rook_a[4] = { 1, 3, 0, 2 };
+static const int fovsdf__rook_b[4] = { 2, 0, 3, 1 };
+
+FOVSDF__PRIV void fovsdf__sample_offset(uint32_t spp, uint32_t s, float *ox, float *oy)
+{
+    if (spp == 4) { *ox = fovsdf__pat4[s][0]; *oy = fovsdf__pat4[s][1]; return; }
+    if (spp == 16) {
+        uint32_t i = s & 3u, j = s >> 2;
+        *ox = ((float)(4 * (int)i + fovsdf__rook_a[j]) + 0.5f) / 16.0f - 0.5f;
+        *oy = ((float)(4 * (int)j + fovsdf__rook_b[i]) + 0.5f) / 16.0f - 0.5f;
+        return;
+    }
+    *ox = 0.0f; *oy = 0.0f;
+}
+
+FOVSDF__PRIV float fovsdf__srgb(float x)
+{
+    if (!(x > 0.0f)) return 0.0f;
+    if (x >= 1.0f) return 1.0f;
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * FOVSDF__POW(x, 1.0f / 2.4f) - 0.055f;
+}
+
+FOVSDF__PRIV void fovsdf__heat(float evals, float rgb[3])
+{
+    /* blue (1 evaluation) -> green -> red (256 or more), log scale */
+    float s = fovsdf__clampf(FOVSDF__LOG(fovsdf__maxf(evals, 1.0f)) / FOVSDF__LOG(256.0f), 0.0f, 1.0f);
+    rgb[0] = fovsdf__clampf(2.0f * s - 1.0f, 0.0f, 1.0f);
+    rgb[1] = 1.0f - fovsdf__absf(2.0f * s - 1.0f);
+    rgb[2] = fovsdf__clampf(1.0f - 2.0f * s, 0.0f, 1.0f);
+}
+
+/* One pixel: all samples, shading, outputs. */
+FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, uint32_t x, uint32_t y,
+                                const fovsdf_output *o, fovsdf_stats *st)
+{
+    float acc[3] = { 0.0f, 0.0f, 0.0f }, tnear = c->t_max;
+    uint32_t s, spp = c->cfg.spp, nhit = 0;
+    int32_t mnear = -1;
+    uint64_t e0 = st->evals;
+    for (s = 0; s < spp; ++s) {
+        float ox, oy, ro[3], rd[3], col[3];
+        fovsdf_hit h;
+        int32_t mat = 0;
+        uint64_t es = st->evals;
+        fovsdf__sample_offset(spp, s, &ox, &oy);
+        (void)fovsdf_camera_ray(c, (float)x + 0.5f + ox, (float)y + 0.5f + oy, ro, rd);
+        fovsdf__march(m0, ro, rd, 0.0f, &h, &mat, st);
+        st->rays++;
+        st->evals_primary += h.evals;
+        if (h.kind == FOVSDF_EXHAUSTED) st->exhausted++;
+        if (h.kind != FOVSDF_MISS) {
+            float p[3], n[3], hn;
+            st->hits++;
+            ++nhit;
+            if (h.t < tnear) { tnear = h.t; mnear = mat; }
+            p[0] = ro[0] + rd[0] * h.t; p[1] = ro[1] + rd[1] * h.t; p[2] = ro[2] + rd[2] * h.t;
+            if (c->cfg.shading == FOVSDF_SHADE_DEPTH) {
+                col[0] = col[1] = col[2] = 1.0f - h.t / c->t_max;
+            } else if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+                col[0] = col[1] = col[2] = 0.0f;
+            } else {
+                hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
+                                              : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * h.t),
+                                                             4.0f * (m0->ulp0 + m0->ulp1 * h.t));
+                fovsdf_normal(c, p, hn, n, st);
+                if (fovsdf__dot(n, rd) > 0.0f && h.dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+                if (c->cfg.shading == FOVSDF_SHADE_NORMALS) {
+                    col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1]; col[2] = 0.5f + 0.5f * n[2];
+                } else {
+                    fovsdf_shade(c, p, n, rd, mat, col, st);
+                }
+            }
+        } else {
+            if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS) col[0] = col[1] = col[2] = 0.0f;
+            else fovsdf_sky(c, rd, col);
+        }
+        if (c->cfg.shading == FOVSDF_SHADE_STEPS) fovsdf__heat((float)(st->evals - es), col);
+        acc[0] += col[0]; acc[1] += col[1]; acc[2] += col[2];
+    }
+    acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
+    if (o->rgb) {
+        float *q = o->rgb + (size_t)y * (o->rgb_stride ? o->rgb_stride : 3u * c->cam.width) + 3u * (size_t)x;
+        q[0] = acc[0]; q[1] = acc[1]; q[2] = acc[2];
+    }
+    if (o->rgb8) {
+        uint8_t *q = o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * c->cam.width) + 3u * (size_t)x;
+        int i;
+        for (i = 0; i < 3; ++i) q[i] = (uint8_t)(fovsdf__srgb(acc[i]) * 255.0f + 0.5f);
+    }
+    if (o->depth) o->depth[(size_t)y * (o->depth_stride ? o->depth_stride : c->cam.width) + x] = tnear;
+    if (o->hit) o->hit[(size_t)y * (o->hit_stride ? o->hit_stride : c->cam.width) + x] = (uint8_t)(2u * nhit >= spp ? 1u : 0u);
+    if (o->evals) o->evals[(size_t)y * (o->evals_stride ? o->evals_stride : c->cam.width) + x] = (uint32_t)(st->evals - e0);
+    if (o->material) o->material[(size_t)y * (o->material_stride ? o->material_stride : c->cam.width) + x] = mnear;
+}
+
+FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o)
+{
+    uint32_t w = c->cam.width;
+    if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) || (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
+        (o->depth && o->depth_stride && o->depth_stride < w) || (o->hit && o->hit_stride && o->hit_stride < w) ||
+        (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w))
+        return FOV_ERR_TOO_SMALL;
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1,
+                                         const fovsdf_output *o, fovsdf_stats *stats)
+{
+    fovsdf_stats local;
+    fovsdf__marcher m;
+    uint32_t x, y;
+    fov_result r;
+    if (!c || !o) return FOV_ERR_NULL;
+    if (x0 > x1 || y0 > y1 || x1 > c->cam.width || y1 > c->cam.height) return FOV_ERR_INVALID_ARG;
+    r = fovsdf__check_output(c, o);
+    if (r != FOV_OK) return r;
+    FOV_MEMSET(&local, 0, sizeof local);
+    fovsdf__marcher_from_ctx(c, &m, c->origin);
+    for (y = y0; y < y1; ++y)
+        for (x = x0; x < x1; ++x) fovsdf__pixel(c, &m, x, y, o, &local);
+    if (stats) fovsdf_stats_add(stats, &local);
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint32_t y1, const fovsdf_output *o,
+                                         fovsdf_stats *stats)
+{
+    if (!c || !o) return FOV_ERR_NULL;
+    return fovsdf_render_tile(c, 0, y0, c->cam.width, y1, o, stats);
+}
+
+/* ---- built-in scenes (modelled on the thesis's test scenes, notes seed000 section 2.3) ----- */
+#define FOVSDF__SCENE_NODES 160u
+
+FOVSDF__PRIV int32_t fovsdf__at(fovsdf_builder *b, int32_t x, float tx, float ty, float tz)
+{
+    return fovsdf_translate(b, x, tx, ty, tz);
+}
+FOVSDF__PRIV int32_t fovsdf__mat(fovsdf_builder *b, int32_t m) { b->material = m; return m; }
+
+FOVSDF__PRIV void fovsdf__light(fovsdf_scene *s, uint32_t type, float x, float y, float z, float r, float g,
+                                float bl, float range, float k)
+{
+    fovsdf_light *L;
+    if (s->num_lights >= FOVSDF_MAX_LIGHTS) return;
+    L = &s->lights[s->num_lights++];
+    L->type = type;
+    L->v[0] = x; L->v[1] = y; L->v[2] = z;
+    L->color[0] = r; L->color[1] = g; L->color[2] = bl;
+    L->range = range;
+    L->shadow_k = k;
+}
+
+/* Primitives: the open scene, every primitive and operator on a checkerboard plane. */
+FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r, x, y, ca[3];
+    float a[3], c[3];
+    (void)ca;
+    fovsdf__mat(b, 1);
+    r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
+    fovsdf__mat(b, 2);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_sphere(b, 0.5f), -4.0f, 0.5f, 0.0f));
+    fovsdf__mat(b, 3);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_box(b, 0.4f, 0.4f, 0.4f), 0.0f, 1.0f, 0.0f, 30.0f), -2.0f, 0.4f, 0.0f));
+    fovsdf__mat(b, 4);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_round_box(b, 0.45f, 0.35f, 0.45f, 0.12f), 0.0f, 0.35f, 0.0f));
+    fovsdf__mat(b, 5);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_torus(b, 0.4f, 0.12f), 1.0f, 0.0f, 0.0f, 90.0f), 2.0f, 0.55f, 0.0f));
+    fovsdf__mat(b, 6);
+    a[0] = -0.3f; a[1] = 0.2f; a[2] = 0.0f; c[0] = 0.3f; c[1] = 0.9f; c[2] = 0.1f;
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_capsule(b, a, c, 0.18f), 4.0f, 0.0f, 0.0f));
+    fovsdf__mat(b, 7);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_cylinder(b, 0.5f, 0.35f), -4.0f, 0.5f, 2.5f));
+    fovsdf__mat(b, 2);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_cone(b, 0.5f, 0.45f, 0.1f), -2.0f, 0.5f, 2.5f));
+    fovsdf__mat(b, 3);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_box_frame(b, 0.45f, 0.45f, 0.45f, 0.04f), 0.0f, 0.45f, 2.5f));
+    fovsdf__mat(b, 4);
+    x = fovsdf__at(b, fovsdf_sphere(b, 0.35f), -0.25f, 0.0f, 0.0f);
+    fovsdf__mat(b, 6);
+    y = fovsdf__at(b, fovsdf_box(b, 0.25f, 0.25f, 0.25f), 0.3f, 0.0f, 0.0f);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_smooth_union(b, x, y, 0.25f), 2.0f, 0.4f, 2.5f));
+    fovsdf__mat(b, 5);
+    x = fovsdf_onion(b, fovsdf_sphere(b, 0.45f), 0.04f);
+    y = fovsdf__at(b, fovsdf_box(b, 0.6f, 0.3f, 0.6f), 0.0f, 0.45f, -0.3f);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_subtract(b, x, y), 4.0f, 0.5f, 2.5f));
+    fovsdf__mat(b, 7);
+    x = fovsdf_intersect(b, fovsdf_sphere(b, 0.5f), fovsdf_box(b, 0.4f, 0.4f, 0.4f));
+    r = fovsdf_union(b, r, fovsdf__at(b, x, -3.0f, 0.4f, 5.0f));
+    fovsdf__mat(b, 2);
+    x = fovsdf_smooth_subtract(b, fovsdf_box(b, 0.45f, 0.45f, 0.45f), fovsdf_sphere(b, 0.55f), 0.1f);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.45f, 5.0f));
+    fovsdf__mat(b, 3);
+    x = fovsdf_smooth_intersect(b, fovsdf_sphere(b, 0.55f), fovsdf_cylinder(b, 0.6f, 0.4f), 0.1f);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 3.0f, 0.5f, 5.0f));
+    fovsdf__mat(b, 4); /* a mirrored pair of rounded boxes, scaled */
+    x = fovsdf_mirror(b, fovsdf__at(b, fovsdf_round(b, fovsdf_box(b, 0.1f, 0.3f, 0.1f), 0.05f), 0.5f, 0.0f, 0.0f), 1);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_scale(b, x, 1.2f), 0.0f, 0.42f, 7.5f));
+    fovsdf__mat(b, 6); /* a short row of repeated small spheres */
+    x = fovsdf_repeat(b, fovsdf_sphere(b, 0.12f), 0.5f, 0.0f, 0.0f, 6, 0, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.12f, -1.5f));
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.6f, 0.8f, -0.4f, 1.0f, 0.95f, 0.85f, 0.0f, 16.0f);
+    o->scene.ambient[0] = 0.18f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.25f;
+    o->scene.t_max = 60.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = 0.0f; o->camera.pos[1] = 2.6f; o->camera.pos[2] = -7.0f;
+    o->camera.target[0] = 0.0f; o->camera.target[1] = 0.4f; o->camera.target[2] = 2.5f;
+    o->camera.fov_y_deg = 50.0f;
+    return r;
+}
+
+/* Columns and Lights: a closed hall of repeated columns lit by five point lights. */
+FOVSDF__PRIV int32_t fovsdf__scene_columns(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r, col, x;
+    fovsdf__mat(b, 1);
+    r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
+    fovsdf__mat(b, 7);
+    x = fovsdf_subtract(b, fovsdf__at(b, fovsdf_box(b, 20.5f, 2.5f, 20.5f), 0.0f, 2.0f, 0.0f),
+                        fovsdf__at(b, fovsdf_box(b, 19.5f, 2.25f, 19.5f), 0.0f, 1.75f, 0.0f));
+    r = fovsdf_union(b, r, x);
+    fovsdf__mat(b, 4);
+    col = fovsdf__at(b, fovsdf_cylinder(b, 1.8f, 0.35f), 0.0f, 2.0f, 0.0f);
+    fovsdf__mat(b, 0);
+    col = fovsdf_union(b, col, fovsdf__at(b, fovsdf_box(b, 0.5f, 0.1f, 0.5f), 0.0f, 0.1f, 0.0f));
+    col = fovsdf_union(b, col, fovsdf__at(b, fovsdf_box(b, 0.5f, 0.1f, 0.5f), 0.0f, 3.9f, 0.0f));
+    fovsdf__mat(b, 3);
+    col = fovsdf_union(b, col, fovsdf__at(b, fovsdf_torus(b, 0.36f, 0.05f), 0.0f, 3.6f, 0.0f));
+    col = fovsdf_repeat(b, col, 4.0f, 0.0f, 4.0f, 4, 0, 4);
+    r = fovsdf_union(b, r, col);
+    fovsdf__mat(b, 2);
+    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.3f), 0.0f, 0.3f, 0.0f), 8.0f, 0.0f, 8.0f, 2, 0, 2);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 2.0f, 0.0f, 2.0f));
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 2.0f, 3.0f, -6.0f, 3.0f, 2.2f, 1.2f, 5.0f, 12.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, -6.0f, 2.5f, 2.0f, 1.2f, 1.8f, 3.0f, 5.0f, 12.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 6.0f, 2.5f, 6.0f, 2.6f, 1.2f, 2.4f, 5.0f, 12.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, -2.0f, 3.2f, 10.0f, 1.5f, 3.0f, 1.5f, 5.0f, 12.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 10.0f, 3.0f, -2.0f, 3.0f, 3.0f, 2.0f, 5.0f, 12.0f);
+    o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.06f;
+    o->scene.t_max = 60.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = 1.7f; o->camera.pos[1] = 1.6f; o->camera.pos[2] = -10.0f;
+    o->camera.target[0] = 3.5f; o->camera.target[1] = 1.5f; o->camera.target[2] = 4.0f;
+    o->camera.fov_y_deg = 60.0f;
+    return r;
+}
+
+/* Temple on a terrain: hills to the horizon (large depth range), a columned temple. */
+FOVSDF__PRIV int32_t fovsdf__scene_temple(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r, t, x, y;
+    fovsdf__mat(b, 5);
+    r = fovsdf_terrain(b, 6.0f, 0.035f, 6);
+    fovsdf__mat(b, 7);
+    t = fovsdf__at(b, fovsdf_box(b, 4.6f, 0.6f, 6.6f), 0.0f, 0.1f, 0.0f);
+    t = fovsdf_union(b, t, fovsdf__at(b, fovsdf_box(b, 4.2f, 0.15f, 6.2f), 0.0f, 0.85f, 0.0f));
+    x = fovsdf_repeat(b, fovsdf_cylinder(b, 1.5f, 0.25f), 1.6f, 0.0f, 2.0f, 2, 0, 3);
+    t = fovsdf_union(b, t, fovsdf__at(b, x, 0.0f, 2.5f, 0.0f));
+    t = fovsdf_union(b, t, fovsdf__at(b, fovsdf_box(b, 4.0f, 0.25f, 6.0f), 0.0f, 4.25f, 0.0f));
+    fovsdf__mat(b, 2);
+    x = fovsdf_rotate(b, fovsdf_box(b, 2.9f, 2.9f, 6.1f), 0.0f, 0.0f, 1.0f, 45.0f);
+    y = fovsdf_plane(b, 0.0f, -1.0f, 0.0f, 4.5f);
+    t = fovsdf_union(b, t, fovsdf_intersect(b, fovsdf__at(b, x, 0.0f, 2.45f, 0.0f), y));
+    r = fovsdf_union(b, r, t);
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.45f, 0.35f, 1.2f, 1.05f, 0.85f, 0.0f, 12.0f);
+    o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.22f; o->scene.ambient[2] = 0.28f;
+    o->scene.t_max = 400.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = -14.0f; o->camera.pos[1] = 6.0f; o->camera.pos[2] = -22.0f;
+    o->camera.target[0] = 0.0f; o->camera.target[1] = 2.0f; o->camera.target[2] = 0.0f;
+    o->camera.fov_y_deg = 45.0f;
+    return r;
+}
+
+/* Atrium: an interior court with two storeys of arcades (many objects, open roof). */
+FOVSDF__PRIV int32_t fovsdf__scene_atrium(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r, x, arch, up, bay;
+    fovsdf__mat(b, 1);
+    r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
+    fovsdf__mat(b, 7); /* side walls and end walls */
+    x = fovsdf_mirror(b, fovsdf__at(b, fovsdf_box(b, 0.5f, 5.0f, 16.0f), 7.0f, 5.0f, 0.0f), 1);
+    r = fovsdf_union(b, r, x);
+    x = fovsdf_mirror(b, fovsdf__at(b, fovsdf_box(b, 7.5f, 5.0f, 0.5f), 0.0f, 5.0f, 15.5f), 4);
+    r = fovsdf_union(b, r, x);
+    /* one bay of the arcade: column, arch with a cylindrical cut, upper column, balustrade */
+    fovsdf__mat(b, 4);
+    bay = fovsdf__at(b, fovsdf_cylinder(b, 1.6f, 0.28f), 0.0f, 1.6f, 0.0f);
+    fovsdf__mat(b, 0);
+    bay = fovsdf_union(b, bay, fovsdf__at(b, fovsdf_box(b, 0.4f, 0.12f, 0.4f), 0.0f, 0.12f, 0.0f));
+    bay = fovsdf_union(b, bay, fovsdf__at(b, fovsdf_box(b, 0.4f, 0.12f, 0.4f), 0.0f, 3.2f, 0.0f));
+    fovsdf__mat(b, 7);
+    arch = fovsdf__at(b, fovsdf_box(b, 0.35f, 0.8f, 1.25f), 0.0f, 4.1f, 1.25f);
+    x = fovsdf__at(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.5f, 0.95f), 0.0f, 0.0f, 1.0f, 90.0f), 0.0f, 3.4f, 1.25f);
+    arch = fovsdf_subtract(b, arch, x);
+    bay = fovsdf_union(b, bay, arch);
+    fovsdf__mat(b, 4);
+    up = fovsdf__at(b, fovsdf_cylinder(b, 1.1f, 0.18f), 0.0f, 6.0f, 0.0f);
+    fovsdf__mat(b, 2);
+    up = fovsdf_union(b, up, fovsdf__at(b, fovsdf_box(b, 0.25f, 0.5f, 1.25f), -0.1f, 5.4f, 1.25f));
+    up = fovsdf_union(b, up, fovsdf__at(b, fovsdf_box(b, 0.35f, 0.2f, 1.25f), 0.0f, 7.3f, 1.25f));
+    bay = fovsdf_union(b, bay, up);
+    fovsdf__mat(b, 6); /* hanging rings in each bay */
+    bay = fovsdf_union(b, bay, fovsdf__at(b, fovsdf_rotate(b, fovsdf_torus(b, 0.3f, 0.04f), 0.0f, 0.0f, 1.0f, 90.0f), 0.0f, 2.3f, 1.25f));
+    bay = fovsdf_repeat(b, bay, 0.0f, 0.0f, 2.5f, 0, 0, 5);
+    r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, bay, 4.0f, 0.0f, -1.25f), 1));
+    /* the gallery floor between arcade and wall */
+    fovsdf__mat(b, 0);
+    r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, fovsdf_box(b, 1.5f, 0.15f, 15.0f), 5.5f, 4.75f, 0.0f), 1));
+    /* fountain and statues in the court */
+    fovsdf__mat(b, 3);
+    x = fovsdf_subtract(b, fovsdf_cylinder(b, 0.3f, 1.2f), fovsdf__at(b, fovsdf_cylinder(b, 0.3f, 1.05f), 0.0f, 0.2f, 0.0f));
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.3f, 2.0f));
+    fovsdf__mat(b, 2);
+    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.35f), 0.0f, 1.25f, 0.0f), 0.0f, 0.0f, 5.0f, 0, 0, 2);
+    x = fovsdf_union(b, x, fovsdf_repeat(b, fovsdf__at(b, fovsdf_box(b, 0.25f, 0.45f, 0.25f), 0.0f, 0.45f, 0.0f), 0.0f, 0.0f, 5.0f, 0, 0, 2));
+    r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, x, 2.2f, 0.0f, 0.0f), 1));
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, 0.35f, 0.9f, 0.25f, 1.1f, 1.0f, 0.85f, 0.0f, 16.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, -8.0f, 1.5f, 1.2f, 0.8f, 4.0f, 16.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, 9.0f, 0.8f, 1.0f, 1.5f, 4.0f, 16.0f);
+    o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.12f;
+    o->scene.t_max = 80.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = -1.0f; o->camera.pos[1] = 1.7f; o->camera.pos[2] = -13.0f;
+    o->camera.target[0] = 0.5f; o->camera.target[1] = 3.2f; o->camera.target[2] = 8.0f;
+    o->camera.fov_y_deg = 65.0f;
+    return r;
+}
+
+/* Thin features: wires, small spheres and a plate with small holes. */
+FOVSDF__PRIV int32_t fovsdf__scene_thin(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r, x, y;
+    float a[3], c[3];
+    fovsdf__mat(b, 1);
+    r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
+    fovsdf__mat(b, 3); /* a fence of thin vertical wires */
+    a[0] = 0.0f; a[1] = 0.0f; a[2] = 0.0f; c[0] = 0.0f; c[1] = 1.2f; c[2] = 0.0f;
+    x = fovsdf_repeat(b, fovsdf_capsule(b, a, c, 0.008f), 0.12f, 0.0f, 0.0f, 12, 0, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, -0.4f, 0.0f, 0.6f));
+    fovsdf__mat(b, 6); /* horizontal wires strung between two poles */
+    a[0] = -2.5f; a[1] = 0.0f; a[2] = 0.0f; c[0] = 2.5f; c[1] = 0.0f; c[2] = 0.0f;
+    x = fovsdf_repeat(b, fovsdf_capsule(b, a, c, 0.005f), 0.0f, 0.15f, 0.0f, 0, 3, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 1.5f, 1.4f));
+    fovsdf__mat(b, 0);
+    x = fovsdf_mirror(b, fovsdf__at(b, fovsdf_cylinder(b, 1.0f, 0.04f), 2.5f, 1.0f, 1.4f), 1);
+    r = fovsdf_union(b, r, x);
+    fovsdf__mat(b, 2); /* a grid of small spheres */
+    x = fovsdf_repeat(b, fovsdf_sphere(b, 0.018f), 0.1f, 0.1f, 0.0f, 7, 4, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, -1.7f, 0.6f, 0.0f));
+    fovsdf__mat(b, 7); /* a plate with a grid of holes (subtraction) */
+    x = fovsdf_box(b, 0.6f, 0.5f, 0.02f);
+    y = fovsdf_repeat(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.1f, 0.03f), 1.0f, 0.0f, 0.0f, 90.0f), 0.1f, 0.1f, 0.0f, 5, 4, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_subtract(b, x, y), 1.6f, 0.6f, 0.0f));
+    fovsdf__mat(b, 4); /* thin box frames */
+    x = fovsdf_repeat(b, fovsdf_box_frame(b, 0.15f, 0.15f, 0.15f, 0.006f), 0.4f, 0.0f, 0.0f, 2, 0, 0);
+    r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.16f, -0.6f));
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.4f, 0.8f, -0.5f, 1.0f, 1.0f, 0.95f, 0.0f, 24.0f);
+    o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.2f;
+    o->scene.t_max = 40.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = 0.2f; o->camera.pos[1] = 1.1f; o->camera.pos[2] = -3.2f;
+    o->camera.target[0] = 0.0f; o->camera.target[1] = 0.7f; o->camera.target[2] = 0.6f;
+    o->camera.fov_y_deg = 55.0f;
+    return r;
+}
+
+/* Fractals: a Menger sponge and a Mandelbulb (distance estimators, not exact SDFs). */
+FOVSDF__PRIV int32_t fovsdf__scene_fractals(fovsdf_builder *b, fovsdf_builtin *o)
+{
+    int32_t r;
+    fovsdf__mat(b, 1);
+    r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
+    fovsdf__mat(b, 3);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_menger(b, 1.0f, 4), 0.0f, 1.0f, 0.0f, 25.0f), -1.7f, 1.0f, 0.3f));
+    fovsdf__mat(b, 4);
+    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_mandelbulb(b, 8.0f, 8), 1.0f, 0.0f, 0.0f, -90.0f), 1.5f, 1.15f, 0.0f));
+    fovsdf_scene_init(&o->scene);
+    o->scene.num_lights = 0;
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.7f, -0.6f, 1.0f, 0.95f, 0.9f, 0.0f, 16.0f);
+    o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.24f;
+    o->scene.t_max = 40.0f;
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = 0.0f; o->camera.pos[1] = 1.9f; o->camera.pos[2] = -5.0f;
+    o->camera.target[0] = 0.0f; o->camera.target[1] = 1.0f; o->camera.target[2] = 0.0f;
+    o->camera.fov_y_deg = 50.0f;
+    return r;
+}
+
+FOVSDF_API const char *fovsdf_builtin_name(uint32_t id)
+{
+    static const char *const names[] = { "primitives", "columns", "temple", "atrium", "thin", "fractals" };
+    return id < (uint32_t)_FOVSDF_SCENE_NUM ? names[id] : "unknown";
+}
+
+FOVSDF_API fov_result fovsdf_builtin_size(uint32_t id, size_t *bytes)
+{
+    size_t prog;
+    fovsdf_node dummy;
+    fov_result r;
+    if (!bytes) return FOV_ERR_NULL;
+    if (id >= (uint32_t)_FOVSDF_SCENE_NUM) return FOV_ERR_INVALID_ARG;
+    FOV_MEMSET(&dummy, 0, sizeof dummy);
+    r = fovsdf_program_size(&dummy, FOVSDF__SCENE_NODES, 0, &prog);
+    if (r != FOV_OK) return r;
+    *bytes = 16u + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES) + prog;
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *mem, size_t bytes)
+{
+    size_t need;
+    unsigned char *base;
+    fovsdf_program *prog;
+    fovsdf_node *nodes;
+    fovsdf_builder b;
+    int32_t root;
+    fov_result r;
+    if (!o || !mem) return FOV_ERR_NULL;
+    r = fovsdf_builtin_size(id, &need);
+    if (r != FOV_OK) return r;
+    if (bytes < need) return FOV_ERR_TOO_SMALL;
+    base = (unsigned char *)mem;
+    base += (16u - ((uintptr_t)base & 15u)) & 15u;
+    prog = (fovsdf_program *)(void *)base;
+    nodes = (fovsdf_node *)(void *)(base + fovsdf__align(sizeof(fovsdf_program)));
+    FOV_MEMSET(o, 0, sizeof *o);
+    fovsdf_builder_init(&b, nodes, FOVSDF__SCENE_NODES);
+    switch (id) {
+    case FOVSDF_SCENE_PRIMITIVES: root = fovsdf__scene_primitives(&b, o); break;
+    case FOVSDF_SCENE_COLUMNS: root = fovsdf__scene_columns(&b, o); break;
+    case FOVSDF_SCENE_TEMPLE: root = fovsdf__scene_temple(&b, o); break;
+    case FOVSDF_SCENE_ATRIUM: root = fovsdf__scene_atrium(&b, o); break;
+    case FOVSDF_SCENE_THIN: root = fovsdf__scene_thin(&b, o); break;
+    default: root = fovsdf__scene_fractals(&b, o); break;
+    }
+    if (b.err != FOV_OK) return b.err;
+    if (root < 0) return FOV_ERR_INVALID_ARG;
+    r = fovsdf_program_build(prog, nodes, b.count, root,
+                             base + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES),
+                             bytes - (size_t)(base - (unsigned char *)mem) - fovsdf__align(sizeof(fovsdf_program)) -
+                                 fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES));
+    if (r != FOV_OK) return r;
+    fovsdf_scene_set_program(&o->scene, prog);
+    o->program = prog;
+    o->name = fovsdf_builtin_name(id);
+    return FOV_OK;
+}
+
+#ifdef FOVSDF_DOUBLE
+/* Double-precision classic sphere tracing of a double distance callback (the reference for
+   the numerical-stability tests). */
+FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double ro[3], const double rd[3],
+                                       double t_start, double t_max, double eps, uint32_t max_steps,
+                                       double *t_hit, uint32_t *kind)
+{
+    double t = t_start;
+    uint32_t i;
+    if (!scene || !ro || !rd || !t_hit || !kind) return FOV_ERR_NULL;
+    if (!scene->dist_d) return FOV_ERR_UNSUPPORTED;
+    if (max_steps == 0 || !(eps > 0.0) || !(t_max > 0.0) || !(t_start >= 0.0)) return FOV_ERR_INVALID_ARG;
+    *kind = FOVSDF_EXHAUSTED;
+    for (i = 0; i < max_steps; ++i) {
+        double p[3], d;
+        if (t > t_max) { *kind = FOVSDF_MISS; t = t_max; break; }
+        p[0] = ro[0] + rd[0] * t; p[1] = ro[1] + rd[1] * t; p[2] = ro[2] + rd[2] * t;
+        d = scene->dist_d(p, scene->user);
+        if (!(d - d == 0.0)) { *kind = FOVSDF_MISS; t = t_max; break; }
+        if (d < eps) { *kind = FOVSDF_HIT; break; }
+        t += d;
+    }
+    *t_hit = t;
+    return FOV_OK;
+}
+#endif
+
+#endif /* FOVSDF_IMPLEMENTATION */
+
+/*
+------------------------------------------------------------------------------
+This software is available under 2 licenses -- choose whichever you prefer.
+------------------------------------------------------------------------------
+ALTERNATIVE A - MIT License
+Copyright (c) 2026 the fov authors
+Permission is hereby granted, free of charge, to any person obtaining a copy of
+this software and associated documentation files (the "Software"), to deal in
+the Software without restriction, including without limitation the rights to
+use, copy, modify, merge, publish, distribute, sublicense, and/or sell copies
+of the Software, and to permit persons to whom the Software is furnished to do
+so, subject to the following conditions:
+The above copyright notice and this permission notice shall be included in all
+copies or substantial portions of the Software.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+SOFTWARE.
+------------------------------------------------------------------------------
+ALTERNATIVE B - Public Domain (www.unlicense.org)
+This is free and unencumbered software released into the public domain.
+Anyone is free to copy, modify, publish, use, compile, sell, or distribute this
+software, either in source code form or as a compiled binary, for any purpose,
+commercial or non-commercial, and by any means.
+In jurisdictions that recognize copyright laws, the author or authors of this
+software dedicate any and all copyright interest in the software to the public
+domain. We make this dedication for the benefit of the public at large and to
+the detriment of our heirs and successors. We intend this dedication to be an
+overt act of relinquishment in perpetuity of all present and future rights to
+this software under copyright law.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER IN AN
+ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
+WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
+------------------------------------------------------------------------------
+*/
