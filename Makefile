@@ -1,0 +1,34 @@
+# fov - foveated rendering single-header libraries.
+#   make demo    render the built-in scenes with every tracer into out/ and print the figures
+#   make test    the whole test suite (closing line: "N passed, N failed")
+#   make examples, make clean
+# Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
+
+CC      ?= cc
+CFLAGS  ?= -O2
+STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
+WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
+BUILD   := build
+
+.PHONY: all demo test examples clean
+
+all: examples
+
+$(BUILD)/sdf_basic: examples/sdf_basic.c fovsdf.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+$(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes
+
+demo: $(BUILD)/sdf_scenes
+	./$(BUILD)/sdf_scenes --out out
+
+test:
+	@bash tests/run_all.sh
+
+clean:
+	rm -rf $(BUILD) out

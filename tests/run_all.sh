@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# The fov test suite. Runs every section, prints each section's FAIL/SKIP lines and its
+# summary, and closes with the line "N passed, N failed" (the sum over the sections).
+# Exit status 1 when anything failed. Logs: build/logs/<section>.log.
+# Under CI=true a missing toolchain is a failure, never a skip (tests/compile and
+# tests/xtarget enforce that).
+set -u
+cd "$(dirname "$0")/.."
+mkdir -p build/logs build/tests
+CC=${CC:-gcc}
+TOTAL_P=0
+TOTAL_F=0
+T0=$(date +%s)
+
+# run_section NAME COMMAND...: the command must print "N passed, N failed" as a line.
+run_section() {
+    local name=$1; shift
+    local log=build/logs/$name.log t1 rc summary p f
+    t1=$(date +%s)
+    "$@" >"$log" 2>&1
+    rc=$?
+    summary=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -1)
+    if [ -z "$summary" ]; then
+        p=0; f=1
+        echo "FAIL [$name] no summary line (exit status $rc); last lines of $log:"
+        tail -n 15 "$log" | sed 's/^/    /'
+    else
+        p=$(echo "$summary" | sed -E 's/^([0-9]+) passed.*/\1/')
+        f=$(echo "$summary" | sed -E 's/^[0-9]+ passed, ([0-9]+) failed.*/\1/')
+        if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; echo "FAIL [$name] exit status $rc"; fi
+        grep -E '^(FAIL|SKIP)' "$log" | sed "s/^/  [$name] /"
+    fi
+    echo "[$name] $p passed, $f failed ($(( $(date +%s) - t1 )) s)"
+    TOTAL_P=$((TOTAL_P + p))
+    TOTAL_F=$((TOTAL_F + f))
+}
+
+# build_test NAME SOURCE FLAGS...: compile a test program; a compile failure is a failure.
+build_test() {
+    local name=$1 src=$2; shift 2
+    if ! $CC "$src" -o "build/tests/$name" "$@" >"build/logs/build_$name.log" 2>&1; then
+        echo "FAIL [build] $name: compile error, see build/logs/build_$name.log"
+        sed 's/^/    /' "build/logs/build_$name.log" | head -20
+        TOTAL_F=$((TOTAL_F + 1))
+        return 1
+    fi
+    return 0
+}
+
+WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror"
+SAN="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+
+# --- unit tests ---------------------------------------------------------------------------
+if build_test test_fovsdf tests/test_fovsdf.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
+    run_section unit_fovsdf build/tests/test_fovsdf
+fi
+if build_test test_fovsdf_nolibm tests/test_fovsdf.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
+    run_section unit_fovsdf_nolibm build/tests/test_fovsdf_nolibm
+fi
+if build_test test_fovsdf_san tests/test_fovsdf.c -std=c99 $SAN -I. -Itests/common -lm; then
+    run_section unit_fovsdf_sanitizers build/tests/test_fovsdf_san
+fi
+if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
+    run_section unit_metrics build/tests/test_metrics
+fi
+if build_test test_metrics_san tests/test_metrics.c -std=c99 $SAN -Itests/common -lm; then
+    run_section unit_metrics_sanitizers build/tests/test_metrics_san
+fi
+if build_test test_flip_reference tests/test_flip_reference.c -std=c99 -O2 $WARN -Itests/common -lm; then
+    run_section flip_reference build/tests/test_flip_reference tests/flip_reference
+fi
+
+# --- examples: they build warning-free and the demo's tracers agree with the ground truth --
+run_section examples bash tests/examples.sh
+
+# --- compile matrix, freestanding builds, other targets -----------------------------------
+run_section compile_matrix bash tests/compile/run.sh
+run_section cross_targets bash tests/xtarget/run.sh
+
+echo "suite took $(( $(date +%s) - T0 )) s"
+echo "$TOTAL_P passed, $TOTAL_F failed"
+[ "$TOTAL_F" -eq 0 ]
