@@ -468,7 +468,9 @@ typedef struct fovsdf_output {
     float *depth;          uint32_t depth_stride;    /* ray t of the nearest hitting sample;
                                                         t_max when no sample hit */
     uint8_t *hit;          uint32_t hit_stride;      /* 1 when at least half the samples hit */
-    uint32_t *evals;       uint32_t evals_stride;    /* distance evaluations of the pixel */
+    uint32_t *evals;       uint32_t evals_stride;    /* distance evaluations of the pixel
+                                                        (primary rays, normals, shadows) */
+    uint32_t *steps;       uint32_t steps_stride;    /* march steps of its primary rays */
     int32_t *material;     uint32_t material_stride;  /* of the nearest hit, -1 for a miss */
 } fovsdf_output;
 
@@ -2568,6 +2570,7 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
     float acc[3] = { 0.0f, 0.0f, 0.0f }, tnear = c->t_max;
     uint32_t s, spp = c->cfg.spp, nhit = 0;
     int32_t mnear = -1;
+    uint32_t nsteps = 0;
     uint64_t e0 = st->evals;
     for (s = 0; s < spp; ++s) {
         float ox, oy, ro[3], rd[3], col[3];
@@ -2579,6 +2582,7 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
         fovsdf__march(m0, ro, rd, 0.0f, &h, &mat, st);
         st->rays++;
         st->evals_primary += h.evals;
+        nsteps += h.steps;
         if (h.kind == FOVSDF_EXHAUSTED) st->exhausted++;
         if (h.kind != FOVSDF_MISS) {
             float p[3], n[3], hn;
@@ -2622,6 +2626,7 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
     if (o->depth) o->depth[(size_t)y * (o->depth_stride ? o->depth_stride : c->cam.width) + x] = tnear;
     if (o->hit) o->hit[(size_t)y * (o->hit_stride ? o->hit_stride : c->cam.width) + x] = (uint8_t)(2u * nhit >= spp ? 1u : 0u);
     if (o->evals) o->evals[(size_t)y * (o->evals_stride ? o->evals_stride : c->cam.width) + x] = (uint32_t)(st->evals - e0);
+    if (o->steps) o->steps[(size_t)y * (o->steps_stride ? o->steps_stride : c->cam.width) + x] = nsteps;
     if (o->material) o->material[(size_t)y * (o->material_stride ? o->material_stride : c->cam.width) + x] = mnear;
 }
 
@@ -2630,7 +2635,8 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
     uint32_t w = c->cam.width;
     if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) || (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
         (o->depth && o->depth_stride && o->depth_stride < w) || (o->hit && o->hit_stride && o->hit_stride < w) ||
-        (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w))
+        (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w) ||
+        (o->steps && o->steps_stride && o->steps_stride < w))
         return FOV_ERR_TOO_SMALL;
     return FOV_OK;
 }
