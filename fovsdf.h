@@ -2034,11 +2034,12 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             break;
         default: { /* BOUND */
             const float *f = in->f;
-            float db = fovsdf__len3f(p[0] - f[0], p[1] - f[1], p[2] - f[2]) - f[3];
+            float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2], d2 = dx * dx + dy * dy + dz * dz;
+            float lim = 1.25f * f[3] + 4.0f * eps; /* skip beyond a margin of r/4 + 4 eps */
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
-            if (inflate == 1.0f && db > 0.25f * f[3] + 4.0f * eps) {
-                vs[vsp] = db;
+            if (inflate == 1.0f && d2 > lim * lim) {
+                vs[vsp] = FOVSDF__SQRT(d2) - f[3];
                 ms[vsp] = -1;
                 ++vsp;
                 skipped += (uint32_t)in->i[0];
@@ -2123,7 +2124,9 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
             if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
             tp = t; rp = d; have = 1;
             pt = t; pd = d; hp = 1;
-            t += om * d;
+            /* an over-relaxed step may only leave the range after the overlap test has seen
+               its end point: stop it at t_max (a plain step past t_max is a safe miss) */
+            t = (t + d > m->t_max) ? t + d : fovsdf__minf(t + om * d, m->t_max);
         }
     } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
         /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
