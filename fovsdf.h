@@ -684,6 +684,10 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
 
 #define FOVSDF__PRIV static FOVSDF__UNUSED
 
+/* Float tests without == (the library builds clean with -Wfloat-equal). */
+FOVSDF__PRIV int fovsdf__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOVSDF__PRIV int fovsdf__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+
 #if !defined(FOVSDF__HOOKED_MATH) && !defined(FOV_NO_LIBM)
 #include <math.h>
 #define FOVSDF__SQRT(x) sqrtf(x)
@@ -731,7 +735,7 @@ FOVSDF__PRIV float fovsdf__sqrtf(float x)
 #else
     fovsdf__bits b;
     float y;
-    if (!(x > 0.0f)) return x == 0.0f ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fovsdf__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -810,8 +814,8 @@ FOVSDF__PRIV float fovsdf__atan01(float x)
 FOVSDF__PRIV float fovsdf__atan2f(float y, float x)
 {
     float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
-    if (x != x || y != y) return x + y;
-    if (ax == 0.0f && ay == 0.0f) return 0.0f;
+    if (fovsdf__isnan(x) || fovsdf__isnan(y)) return x + y;
+    if (fovsdf__is0(ax) && fovsdf__is0(ay)) return 0.0f;
     a = ay <= ax ? fovsdf__atan01(ay / ax) : 1.57079633f - fovsdf__atan01(ax / ay);
     if (x < 0.0f) a = 3.14159265f - a;
     return y < 0.0f ? -a : a;
@@ -820,7 +824,7 @@ FOVSDF__PRIV float fovsdf__expf(float x)
 {
     float k, r, p;
     fovsdf__bits b;
-    if (x != x) return x;
+    if (fovsdf__isnan(x)) return x;
     if (x > 88.7f) return FLT_MAX * 2.0f;
     if (x < -103.0f) return 0.0f;
     k = fovsdf__floorf(x * 1.44269504f + 0.5f);
@@ -836,8 +840,8 @@ FOVSDF__PRIV float fovsdf__logf(float x)
     fovsdf__bits b;
     int32_t e;
     float m, s, s2;
-    if (x != x || x < 0.0f) return (x - x) / (x - x);
-    if (x == 0.0f) return -FLT_MAX * 2.0f;
+    if (fovsdf__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fovsdf__is0(x)) return -FLT_MAX * 2.0f;
     if (x > FLT_MAX) return x;
     b.f = x;
     e = 0;
@@ -853,12 +857,12 @@ FOVSDF__PRIV float fovsdf__logf(float x)
 }
 FOVSDF__PRIV float fovsdf__powf(float x, float y)
 {
-    if (y == 0.0f) return 1.0f;
-    if (x == 0.0f) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (fovsdf__is0(y)) return 1.0f;
+    if (fovsdf__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
     if (x < 0.0f) {
         float fy = fovsdf__floorf(y);
         float r;
-        if (fy != y) return (x - x) / (x - x);
+        if (fy < y || fy > y) return (x - x) / (x - x);
         r = fovsdf__expf(y * fovsdf__logf(-x));
         return ((int32_t)fovsdf__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
     }
@@ -898,7 +902,7 @@ FOVSDF__PRIV void fovsdf__memcpy(void *d, const void *s, size_t n)
 #define FOVSDF__DEG 0.0174532925199433f
 
 /* ---- small helpers ---------------------------------------------------------------------- */
-FOVSDF__PRIV int fovsdf__finite(float x) { return x - x == 0.0f; }
+FOVSDF__PRIV int fovsdf__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
 FOVSDF__PRIV int fovsdf__finite3(const float v[3])
 {
     return fovsdf__finite(v[0]) && fovsdf__finite(v[1]) && fovsdf__finite(v[2]);
@@ -1007,21 +1011,21 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.eps < 0.0f || c.eps_px < 0.0f || c.t_max < 0.0f || c.omega < 0.0f || c.ar_beta < 0.0f ||
         c.bv_relax < 0.0f || c.shadow_eps < 0.0f || c.shadow_t0 < 0.0f || c.normal_eps < 0.0f)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter");
-    if (c.eps == 0.0f) c.eps = 1e-4f;
-    if (c.eps_px == 0.0f) c.eps_px = 0.25f;
+    if (fovsdf__is0(c.eps)) c.eps = 1e-4f;
+    if (fovsdf__is0(c.eps_px)) c.eps_px = 0.25f;
     if (c.max_steps == 0) c.max_steps = 256;
     if (c.max_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: max_steps above FOVSDF_MAX_STEPS");
-    if (c.omega == 0.0f) c.omega = 1.6f;
+    if (fovsdf__is0(c.omega)) c.omega = 1.6f;
     if (c.omega < 1.0f || c.omega >= 2.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: omega must be in [1, 2)");
-    if (c.ar_beta == 0.0f) c.ar_beta = 0.3f;
+    if (fovsdf__is0(c.ar_beta)) c.ar_beta = 0.3f;
     if (c.ar_beta > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ar_beta must be in (0, 1]");
-    if (c.bv_relax == 0.0f) c.bv_relax = 0.9f;
+    if (fovsdf__is0(c.bv_relax)) c.bv_relax = 0.9f;
     if (c.bv_relax > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: bv_relax must be in (0, 1]");
     if (c.shading >= (uint32_t)_FOVSDF_SHADE_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown shading");
     if (c.shadow_steps == 0) c.shadow_steps = 64;
     if (c.shadow_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: shadow_steps above FOVSDF_MAX_STEPS");
-    if (c.shadow_eps == 0.0f) c.shadow_eps = 1e-3f;
-    if (c.shadow_t0 == 0.0f) c.shadow_t0 = 1e-2f;
+    if (fovsdf__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
+    if (fovsdf__is0(c.shadow_t0)) c.shadow_t0 = 1e-2f;
     if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
         c.display.distance_mm < 0.0f)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
@@ -1052,7 +1056,7 @@ FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[
     f[1] = cam->target[1] - cam->pos[1];
     f[2] = cam->target[2] - cam->pos[2];
     u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
-    if (u[0] == 0.0f && u[1] == 0.0f && u[2] == 0.0f) u[1] = 1.0f;
+    if (fovsdf__is0(u[0]) && fovsdf__is0(u[1]) && fovsdf__is0(u[2])) u[1] = 1.0f;
     lf = fovsdf__normalize(f);
     if (!(lf > 0.0f) || !fovsdf__finite(lf) || !fovsdf__finite3(f)) return FOV_ERR_DEGENERATE;
     if (!(fovsdf__normalize(u) > 0.0f) || !fovsdf__finite3(u)) return FOV_ERR_DEGENERATE;
@@ -1954,7 +1958,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         switch (in->op) {
         case FOVSDF__OP_PRIM: {
             float d;
-            if (inflate != 1.0f) { /* Skipping Spheres: Scale(p) = f(p / s) * s about the primitive's origin */
+            if (inflate < 1.0f || inflate > 1.0f) { /* Skipping Spheres: Scale(p) = f(p / s) * s about the primitive's origin */
                 float s = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate, qp[3];
                 qp[0] = p[0] / s; qp[1] = p[1] / s; qp[2] = p[2] / s;
                 d = fovsdf__prim(in, qp) * s;
@@ -2038,7 +2042,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             float lim = 1.25f * f[3] + 4.0f * eps; /* skip beyond a margin of r/4 + 4 eps */
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
-            if (inflate == 1.0f && d2 > lim * lim) {
+            if (!(inflate < 1.0f || inflate > 1.0f) && d2 > lim * lim) {
                 vs[vsp] = FOVSDF__SQRT(d2) - f[3];
                 ms[vsp] = -1;
                 ++vsp;
@@ -2204,7 +2208,7 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
         float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 16.0f * fovsdf__absf(d), d2;
         dt = fovsdf__clampf(dt, -lim, lim);
-        if (dt != 0.0f && fovsdf__finite(dt)) {
+        if (!fovsdf__is0(dt) && fovsdf__finite(dt)) {
             float t2 = t + dt;
             int32_t m2 = 0;
             d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
@@ -2472,7 +2476,7 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: image larger than FOVSDF_MAX_DIM");
     if (!fovsdf__finite(cam->fov_y_deg) || !fovsdf__finite(cam->eye_offset) || !fovsdf__finite(gaze.x) || !fovsdf__finite(gaze.y))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
-    fov = cam->fov_y_deg == 0.0f ? 60.0f : cam->fov_y_deg;
+    fov = fovsdf__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
     r = fovsdf_camera_basis(cam, ctx->right, ctx->up, ctx->fwd);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
@@ -2481,7 +2485,7 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
     ctx->cfg = c;
     ctx->scene = *scene;
-    if (ctx->scene.lipschitz == 0.0f) ctx->scene.lipschitz = 1.0f;
+    if (fovsdf__is0(ctx->scene.lipschitz)) ctx->scene.lipschitz = 1.0f;
     ctx->cam = *cam;
     ctx->cam.fov_y_deg = fov;
     ctx->gaze = gaze;
@@ -2502,11 +2506,10 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     return FOV_OK;
 }
 
-FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
+/* The ray through image point (px, py); no argument checks (internal use). */
+FOVSDF__PRIV void fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
     float u, v;
-    if (!c || !ro || !rd) return FOV_ERR_NULL;
-    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
     u = (px / (float)c->cam.width * 2.0f - 1.0f) * c->tan_half_y * c->aspect;
     v = (1.0f - py / (float)c->cam.height * 2.0f) * c->tan_half_y;
     rd[0] = c->fwd[0] + u * c->right[0] + v * c->up[0];
@@ -2514,6 +2517,13 @@ FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py,
     rd[2] = c->fwd[2] + u * c->right[2] + v * c->up[2];
     fovsdf__normalize(rd);
     ro[0] = c->origin[0]; ro[1] = c->origin[1]; ro[2] = c->origin[2];
+}
+
+FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
+{
+    if (!c || !ro || !rd) return FOV_ERR_NULL;
+    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
+    fovsdf__ray(c, px, py, ro, rd);
     return FOV_OK;
 }
 
@@ -2581,7 +2591,7 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
         int32_t mat = 0;
         uint64_t es = st->evals;
         fovsdf__sample_offset(spp, s, &ox, &oy);
-        (void)fovsdf_camera_ray(c, (float)x + 0.5f + ox, (float)y + 0.5f + oy, ro, rd);
+        fovsdf__ray(c, (float)x + 0.5f + ox, (float)y + 0.5f + oy, ro, rd);
         fovsdf__march(m0, ro, rd, 0.0f, &h, &mat, st);
         st->rays++;
         st->evals_primary += h.evals;
@@ -2613,7 +2623,10 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
             if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS) col[0] = col[1] = col[2] = 0.0f;
             else fovsdf_sky(c, rd, col);
         }
-        if (c->cfg.shading == FOVSDF_SHADE_STEPS) fovsdf__heat((float)(st->evals - es), col);
+        if (c->cfg.shading == FOVSDF_SHADE_STEPS) { /* via uint32: no 64-bit int-to-float helper on 32-bit CPUs */
+            uint64_t ne = st->evals - es;
+            fovsdf__heat((float)(uint32_t)(ne > 0xffffffu ? 0xffffffu : ne), col);
+        }
         acc[0] += col[0]; acc[1] += col[1]; acc[2] += col[2];
     }
     acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
@@ -3017,7 +3030,7 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
         if (t > t_max) { *kind = FOVSDF_MISS; t = t_max; break; }
         p[0] = ro[0] + rd[0] * t; p[1] = ro[1] + rd[1] * t; p[2] = ro[2] + rd[2] * t;
         d = scene->dist_d(p, scene->user);
-        if (!(d - d == 0.0)) { *kind = FOVSDF_MISS; t = t_max; break; }
+        if (!(d >= -DBL_MAX && d <= DBL_MAX)) { *kind = FOVSDF_MISS; t = t_max; break; }
         if (d < eps) { *kind = FOVSDF_HIT; break; }
         t += d;
     }

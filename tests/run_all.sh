@@ -60,6 +60,15 @@ fi
 if build_test test_fovsdf_san tests/test_fovsdf.c -std=c99 $SAN -I. -Itests/common -lm; then
     run_section unit_fovsdf_sanitizers build/tests/test_fovsdf_san
 fi
+if build_test test_fovsdf_scene tests/test_fovsdf_scene.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
+    run_section scene_fovsdf build/tests/test_fovsdf_scene
+fi
+if build_test test_fovsdf_scene_nolibm tests/test_fovsdf_scene.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
+    run_section scene_fovsdf_nolibm build/tests/test_fovsdf_scene_nolibm
+fi
+if build_test test_fovsdf_scene_san tests/test_fovsdf_scene.c -std=c99 $SAN -I. -Itests/common -lm; then
+    run_section scene_fovsdf_sanitizers build/tests/test_fovsdf_scene_san
+fi
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

@@ -1,0 +1,47 @@
+/* Compile test (stb#1429): two translation units each embed a private (FOVxx_STATIC) copy of
+   every present header and expose one non-static wrapper; two_static_copies_main.c links
+   both into one program. Any public symbol that escapes the STATIC switch (a function or a
+   constant table) gives a duplicate-symbol link error; run.sh also checks with nm that no
+   fovsdf_/fovlp_/fovpt_ symbol is global in the object. Unused static functions must not
+   warn under -Wall -Werror (the unused attribute). */
+#ifdef FOV_HAVE_FOVSDF
+#define FOVSDF_STATIC
+#define FOVSDF_IMPLEMENTATION
+#include "fovsdf.h"
+#include "tiny_scene.h"
+#endif
+#ifdef FOV_HAVE_FOVLP
+#define FOVLP_STATIC
+#define FOVLP_IMPLEMENTATION
+#include "fovlp.h"
+#endif
+#ifdef FOV_HAVE_FOVPT
+#define FOVPT_STATIC
+#define FOVPT_IMPLEMENTATION
+#include "fovpt.h"
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+int two_static_copy_a(unsigned char *rgb, unsigned long *evals);
+#ifdef __cplusplus
+}
+#endif
+
+/* renders the tiny scene with this copy; 0 on success */
+int two_static_copy_a(unsigned char *rgb, unsigned long *evals)
+{
+    *evals = 0;
+#ifdef FOV_HAVE_FOVSDF
+    {
+        uint64_t e = 0;
+        int r = tiny_render(rgb, &e);
+        *evals = (unsigned long)e;
+        return r;
+    }
+#else
+    (void)rgb;
+    return 0;
+#endif
+}
