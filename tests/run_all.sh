@@ -47,8 +47,8 @@ build_test() {
     return 0
 }
 
-WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror"
-SAN="-O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror -ffp-contract=off"
+SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # --- unit tests ---------------------------------------------------------------------------
 if build_test test_fovsdf tests/test_fovsdf.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
