@@ -2749,6 +2749,16 @@ FOVSDF__PRIV void fovsdf__light(fovsdf_scene *s, uint32_t type, float x, float y
     L->shadow_k = k;
 }
 
+FOVSDF__PRIV void fovsdf__view(fovsdf_builtin *o, float px, float py, float pz, float tx, float ty, float tz,
+                               float fov, float t_max)
+{
+    fovsdf_camera_init(&o->camera, 640, 360);
+    o->camera.pos[0] = px; o->camera.pos[1] = py; o->camera.pos[2] = pz;
+    o->camera.target[0] = tx; o->camera.target[1] = ty; o->camera.target[2] = tz;
+    o->camera.fov_y_deg = fov;
+    o->scene.t_max = t_max;
+}
+
 /* Primitives: the open scene, every primitive and operator on a checkerboard plane. */
 FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin *o)
 {
@@ -2802,11 +2812,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin 
     o->scene.num_lights = 0;
     fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.6f, 0.8f, -0.4f, 1.0f, 0.95f, 0.85f, 0.0f, 16.0f);
     o->scene.ambient[0] = 0.18f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.25f;
-    o->scene.t_max = 60.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = 0.0f; o->camera.pos[1] = 2.6f; o->camera.pos[2] = -7.0f;
-    o->camera.target[0] = 0.0f; o->camera.target[1] = 0.4f; o->camera.target[2] = 2.5f;
-    o->camera.fov_y_deg = 50.0f;
+    fovsdf__view(o, 0.0f, 2.6f, -7.0f, 0.0f, 0.4f, 2.5f, 50.0f, 60.0f);
     return r;
 }
 
@@ -2840,11 +2846,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_columns(fovsdf_builder *b, fovsdf_builtin *o)
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, -2.0f, 3.2f, 10.0f, 1.5f, 3.0f, 1.5f, 5.0f, 12.0f);
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 10.0f, 3.0f, -2.0f, 3.0f, 3.0f, 2.0f, 5.0f, 12.0f);
     o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.06f;
-    o->scene.t_max = 60.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = 1.7f; o->camera.pos[1] = 1.6f; o->camera.pos[2] = -10.0f;
-    o->camera.target[0] = 3.5f; o->camera.target[1] = 1.5f; o->camera.target[2] = 4.0f;
-    o->camera.fov_y_deg = 60.0f;
+    fovsdf__view(o, 1.7f, 1.6f, -10.0f, 3.5f, 1.5f, 4.0f, 60.0f, 60.0f);
     return r;
 }
 
@@ -2869,11 +2871,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_temple(fovsdf_builder *b, fovsdf_builtin *o)
     o->scene.num_lights = 0;
     fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.45f, 0.35f, 1.2f, 1.05f, 0.85f, 0.0f, 12.0f);
     o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.22f; o->scene.ambient[2] = 0.28f;
-    o->scene.t_max = 400.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = -14.0f; o->camera.pos[1] = 6.0f; o->camera.pos[2] = -22.0f;
-    o->camera.target[0] = 0.0f; o->camera.target[1] = 2.0f; o->camera.target[2] = 0.0f;
-    o->camera.fov_y_deg = 45.0f;
+    fovsdf__view(o, -14.0f, 6.0f, -22.0f, 0.0f, 2.0f, 0.0f, 45.0f, 400.0f);
     return r;
 }
 
@@ -2926,11 +2924,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_atrium(fovsdf_builder *b, fovsdf_builtin *o)
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, -8.0f, 1.5f, 1.2f, 0.8f, 4.0f, 16.0f);
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, 9.0f, 0.8f, 1.0f, 1.5f, 4.0f, 16.0f);
     o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.12f;
-    o->scene.t_max = 80.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = -1.0f; o->camera.pos[1] = 1.7f; o->camera.pos[2] = -13.0f;
-    o->camera.target[0] = 0.5f; o->camera.target[1] = 3.2f; o->camera.target[2] = 8.0f;
-    o->camera.fov_y_deg = 65.0f;
+    fovsdf__view(o, -1.0f, 1.7f, -13.0f, 0.5f, 3.2f, 8.0f, 65.0f, 80.0f);
     return r;
 }
 
@@ -2966,11 +2960,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_thin(fovsdf_builder *b, fovsdf_builtin *o)
     o->scene.num_lights = 0;
     fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.4f, 0.8f, -0.5f, 1.0f, 1.0f, 0.95f, 0.0f, 24.0f);
     o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.2f;
-    o->scene.t_max = 40.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = 0.2f; o->camera.pos[1] = 1.1f; o->camera.pos[2] = -3.2f;
-    o->camera.target[0] = 0.0f; o->camera.target[1] = 0.7f; o->camera.target[2] = 0.6f;
-    o->camera.fov_y_deg = 55.0f;
+    fovsdf__view(o, 0.2f, 1.1f, -3.2f, 0.0f, 0.7f, 0.6f, 55.0f, 40.0f);
     return r;
 }
 
@@ -2988,11 +2978,7 @@ FOVSDF__PRIV int32_t fovsdf__scene_fractals(fovsdf_builder *b, fovsdf_builtin *o
     o->scene.num_lights = 0;
     fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.7f, -0.6f, 1.0f, 0.95f, 0.9f, 0.0f, 16.0f);
     o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.24f;
-    o->scene.t_max = 40.0f;
-    fovsdf_camera_init(&o->camera, 640, 360);
-    o->camera.pos[0] = 0.0f; o->camera.pos[1] = 1.9f; o->camera.pos[2] = -5.0f;
-    o->camera.target[0] = 0.0f; o->camera.target[1] = 1.0f; o->camera.target[2] = 0.0f;
-    o->camera.fov_y_deg = 50.0f;
+    fovsdf__view(o, 0.0f, 1.9f, -5.0f, 0.0f, 1.0f, 0.0f, 50.0f, 40.0f);
     return r;
 }
 

@@ -29,6 +29,7 @@
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
+#include "fovcheck.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -37,7 +38,6 @@
 #include <string.h>
 
 /* ==== harness ============================================================================ */
-static int g_pass, g_fail;
 static char g_name[160];
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -57,24 +57,6 @@ static const char *N(const char *fmt, ...)
     return g_name;
 }
 
-static int check(int ok, const char *name, const char *fmt, ...) T_PRINTF(3, 4);
-static int check(int ok, const char *name, const char *fmt, ...)
-{
-    if (ok) {
-        printf("PASS %s\n", name);
-        g_pass++;
-    } else {
-        va_list ap;
-        printf("FAIL %s: ", name);
-        va_start(ap, fmt);
-        vprintf(fmt, ap);
-        va_end(ap);
-        printf("\n");
-        g_fail++;
-    }
-    fflush(stdout);
-    return ok;
-}
 
 static const char *rname(fov_result r)
 {
@@ -2942,6 +2924,5 @@ int main(void)
     test_nolibm_math();
     T_SECTION("5 nolibm_math");
 #endif
-    printf("%d passed, %d failed\n", g_pass, g_fail);
-    return g_fail ? 1 : 0;
+    return fovcheck_summary();
 }

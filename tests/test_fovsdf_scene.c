@@ -33,6 +33,7 @@
 #define FOVSDF_IMPLEMENTATION
 #define FOVSDF_DOUBLE
 #include "fovsdf.h"
+#include "fovcheck.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,24 +44,7 @@
 #include <time.h>
 
 /* ==== checks ============================================================================== */
-static int g_pass, g_fail;
 
-static void check(int ok, const char *name, const char *fmt, ...)
-{
-    if (ok) {
-        printf("PASS %s\n", name);
-        g_pass++;
-    } else {
-        va_list ap;
-        printf("FAIL %s: ", name);
-        va_start(ap, fmt);
-        vprintf(fmt, ap);
-        va_end(ap);
-        printf("\n");
-        g_fail++;
-    }
-    fflush(stdout);
-}
 
 static void info(const char *fmt, ...)
 {
@@ -2203,6 +2187,5 @@ int main(void)
     section4_inside();
     section4_render();
     info("run time %.2f s", (double)(clock() - t0) / CLOCKS_PER_SEC);
-    printf("%d passed, %d failed\n", g_pass, g_fail);
-    return g_fail ? 1 : 0;
+    return fovcheck_summary();
 }
