@@ -69,6 +69,15 @@ fi
 if build_test test_fovsdf_scene_san tests/test_fovsdf_scene.c -std=c99 $SAN -I. -Itests/common -lm; then
     run_section scene_fovsdf_sanitizers build/tests/test_fovsdf_scene_san
 fi
+if build_test test_fovsdf_accel tests/test_fovsdf_accel.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
+    run_section accel_fovsdf build/tests/test_fovsdf_accel
+fi
+if build_test test_fovsdf_accel_nolibm tests/test_fovsdf_accel.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
+    run_section accel_fovsdf_nolibm build/tests/test_fovsdf_accel_nolibm
+fi
+if build_test test_fovsdf_accel_san tests/test_fovsdf_accel.c -std=c99 $SAN -I. -Itests/common -lm; then
+    run_section accel_fovsdf_sanitizers build/tests/test_fovsdf_accel_san
+fi
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

@@ -528,8 +528,10 @@ static void test_ranges(void)
     expect_res("march_eps_and_cone_0", fovsdf_march(&b.sc, &mp, ro, rd, 0.0f, &hit, NULL), FOV_ERR_INVALID_ARG);
     mp = mp_make(FOVSDF_METHOD_CLASSIC, 1e-4f, 0.0f, 64);
     expect_res("march_t_max_0", fovsdf_march(&b.sc, &mp, ro, rd, 0.0f, &hit, NULL), FOV_ERR_INVALID_ARG);
-    mp = mp_make(4u, 1e-4f, 10.0f, 64);
+    mp = mp_make(99u, 1e-4f, 10.0f, 64);
     expect_res("march_unknown_method", fovsdf_march(&b.sc, &mp, ro, rd, 0.0f, &hit, NULL), FOV_ERR_INVALID_ARG);
+    mp = mp_make((uint32_t)FOVSDF_METHOD_CONE, 1e-4f, 10.0f, 64);
+    expect_res("march_rejects_per_image_method", fovsdf_march(&b.sc, &mp, ro, rd, 0.0f, &hit, NULL), FOV_ERR_INVALID_ARG);
     mp = mp_make(FOVSDF_METHOD_CLASSIC, 1e-4f, 10.0f, 64);
     expect_res("march_negative_t_start", fovsdf_march(&b.sc, &mp, ro, rd, -1.0f, &hit, NULL), FOV_ERR_INVALID_ARG);
     {

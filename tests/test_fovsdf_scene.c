@@ -1733,7 +1733,7 @@ static void nsetup_run(const NSetup *su, NAcc acc[4])
     rr = nsetup_refs(su, &n);
     for (i = 0; i < n; ++i) if (rr[i].kind == 99) bad_ref++;
     if (bad_ref) check(0, su->name, "fovsdf_trace_ref failed on %d rays", bad_ref);
-    for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m) {
+    for (m = 0; m <= (uint32_t)FOVSDF_METHOD_BV2018; ++m) { /* the four ray tracers */
         NAcc a;
         nacc_init(&a);
         for (i = 0; i < n; ++i) nacc_ray(&a, &fs, su->s, su->root, m, &rr[i], su->eps, su->t_max, 1024);

@@ -1,0 +1,380 @@
+/* test_fovsdf_accel.c - tests of fovsdf.h's accelerated (head-start) methods.
+
+   The cone pyramid's guarantee: for any distance function that never overestimates, no sample
+   ray starts past its first hit. Property test: random scenes (unions of spheres, rotated boxes
+   and sometimes a ground plane, built with the scene builder, so the program's bounding volumes
+   are exercised too), random cameras, image sizes, tile sizes, levels and samples per pixel.
+   The true first hit of every sample ray comes from analytic ray-primitive intersection in
+   double precision, independent of the library. Also: proven-empty pixels have no hit, the
+   images agree with classic sphere tracing, and bad parameters are rejected.
+   The cones run with no stop slack (march until a cone touches a surface): the default slack
+   only stops them earlier, and without it a geometric error shows (planted errors in the
+   step, the cone angle or the empty-cell rule fail this test; with the default slack they
+   hide behind the margin). */
+#define FOVSDF_CONE_SLACK 0.0f
+#define FOVSDF_IMPLEMENTATION
+#include "fovsdf.h"
+#include "fovcheck.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char g_nm[128];
+static const char *N(const char *fmt, const char *arg)
+{
+    snprintf(g_nm, sizeof g_nm, fmt, arg);
+    return g_nm;
+}
+
+typedef struct rng { uint64_t s; } rng;
+static double urand(rng *r)
+{
+    r->s = r->s * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(r->s >> 11) * (1.0 / 9007199254740992.0);
+}
+static double urange(rng *r, double a, double b) { return a + (b - a) * urand(r); }
+
+#define MAXP 24
+typedef struct prim {
+    int kind;           /* 0 sphere, 1 box (rotated about y), 2 plane y = h */
+    double c[3], r, h[3], ang;
+} prim;
+typedef struct scene_t { prim p[MAXP]; int n; } scene_t;
+
+/* First t > 0 where the ray o + t d enters the primitive (t = 0 when o is inside), or -1. */
+static double hit_sphere(const prim *p, const double o[3], const double d[3])
+{
+    double oc[3] = { o[0] - p->c[0], o[1] - p->c[1], o[2] - p->c[2] };
+    double b = oc[0] * d[0] + oc[1] * d[1] + oc[2] * d[2];
+    double c = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2] - p->r * p->r, disc, t0;
+    if (c <= 0.0) return 0.0;
+    disc = b * b - c;
+    if (disc < 0.0) return -1.0;
+    t0 = -b - sqrt(disc);
+    return t0 >= 0.0 ? t0 : -1.0;
+}
+static double hit_box(const prim *p, const double o[3], const double d[3])
+{
+    /* to box space: translate, rotate by -ang about y */
+    double cs = cos(p->ang), sn = sin(p->ang), lo[3], ld[3], tn = -1e300, tf = 1e300;
+    double ox = o[0] - p->c[0], oy = o[1] - p->c[1], oz = o[2] - p->c[2];
+    int k;
+    lo[0] = cs * ox - sn * oz; lo[1] = oy; lo[2] = sn * ox + cs * oz;
+    ld[0] = cs * d[0] - sn * d[2]; ld[1] = d[1]; ld[2] = sn * d[0] + cs * d[2];
+    for (k = 0; k < 3; ++k) {
+        if (fabs(ld[k]) < 1e-300) {
+            if (lo[k] < -p->h[k] || lo[k] > p->h[k]) return -1.0;
+        } else {
+            double t1 = (-p->h[k] - lo[k]) / ld[k], t2 = (p->h[k] - lo[k]) / ld[k];
+            if (t1 > t2) { double t = t1; t1 = t2; t2 = t; }
+            if (t1 > tn) tn = t1;
+            if (t2 < tf) tf = t2;
+        }
+    }
+    if (tn > tf || tf < 0.0) return -1.0;
+    return tn > 0.0 ? tn : 0.0;
+}
+static double hit_plane(const prim *p, const double o[3], const double d[3])
+{
+    if (o[1] <= p->h[0]) return 0.0;
+    if (d[1] >= 0.0) return -1.0;
+    return (p->h[0] - o[1]) / d[1];
+}
+static double first_hit(const scene_t *s, const double o[3], const double d[3])
+{
+    double best = -1.0;
+    int i;
+    for (i = 0; i < s->n; ++i) {
+        const prim *p = &s->p[i];
+        double t = p->kind == 0 ? hit_sphere(p, o, d) : p->kind == 1 ? hit_box(p, o, d) : hit_plane(p, o, d);
+        if (t >= 0.0 && (best < 0.0 || t < best)) best = t;
+    }
+    return best;
+}
+
+/* Build the same scene with the library's builder. */
+static int build(const scene_t *s, fovsdf_node *nodes, uint32_t cap, fovsdf_program *prog, void *mem, size_t memsz,
+                 uint32_t *count)
+{
+    fovsdf_builder b;
+    int32_t r = -1;
+    int i;
+    fovsdf_builder_init(&b, nodes, cap);
+    for (i = 0; i < s->n; ++i) {
+        const prim *p = &s->p[i];
+        int32_t x;
+        b.material = i % 7;
+        if (p->kind == 0) x = fovsdf_translate(&b, fovsdf_sphere(&b, (float)p->r), (float)p->c[0], (float)p->c[1], (float)p->c[2]);
+        else if (p->kind == 1)
+            x = fovsdf_translate(&b, fovsdf_rotate(&b, fovsdf_box(&b, (float)p->h[0], (float)p->h[1], (float)p->h[2]), 0.0f, 1.0f, 0.0f,
+                                                   (float)(p->ang * 180.0 / 3.14159265358979323846)),
+                                 (float)p->c[0], (float)p->c[1], (float)p->c[2]);
+        else x = fovsdf_plane(&b, 0.0f, 1.0f, 0.0f, (float)-p->h[0]);
+        r = r < 0 ? x : fovsdf_union(&b, r, x);
+    }
+    *count = b.count;
+    if (b.err != FOV_OK || r < 0) return 0;
+    return fovsdf_program_build(prog, nodes, b.count, r, mem, memsz) == FOV_OK;
+}
+
+/* The documented sample offsets (fovsdf.h, config comment). */
+static void sample_offset(uint32_t spp, uint32_t s, double *ox, double *oy)
+{
+    static const double p4[4][2] = { { -0.125, -0.375 }, { 0.375, -0.125 }, { 0.125, 0.375 }, { -0.375, 0.125 } };
+    static const int ra[4] = { 1, 3, 0, 2 }, rb[4] = { 2, 0, 3, 1 };
+    if (spp == 4) { *ox = p4[s][0]; *oy = p4[s][1]; return; }
+    if (spp == 16) {
+        uint32_t i = s & 3u, j = s >> 2;
+        *ox = ((double)(4 * (int)i + ra[j]) + 0.5) / 16.0 - 0.5;
+        *oy = ((double)(4 * (int)j + rb[i]) + 0.5) / 16.0 - 0.5;
+        return;
+    }
+    *ox = *oy = 0.0;
+}
+
+static void random_scene(rng *g, scene_t *s)
+{
+    int i, n = 3 + (int)(urand(g) * 18.0);
+    s->n = 0;
+    for (i = 0; i < n; ++i) {
+        prim *p = &s->p[s->n++];
+        p->kind = urand(g) < 0.5 ? 0 : 1;
+        p->c[0] = urange(g, -4, 4); p->c[1] = urange(g, -1, 3); p->c[2] = urange(g, -4, 4);
+        p->r = urange(g, 0.02, 1.0);
+        p->h[0] = urange(g, 0.02, 0.8); p->h[1] = urange(g, 0.02, 0.8); p->h[2] = urange(g, 0.02, 0.8);
+        p->ang = urange(g, 0, 3.14159);
+    }
+    if (urand(g) < 0.5) {
+        prim *p = &s->p[s->n++];
+        memset(p, 0, sizeof *p);
+        p->kind = 2;
+        p->h[0] = urange(g, -2.0, -1.0);
+    }
+}
+
+static void cone_property(void)
+{
+    rng g = { 12345 };
+    static fovsdf_node nodes[4 * MAXP];
+    static unsigned char mem[1 << 17];
+    int it, bad = 0, empty_bad = 0, builds = 0;
+    long rays = 0, hits = 0, empty = 0;
+    double worst = -1e300;
+    char where[256] = "";
+    for (it = 0; it < 300; ++it) {
+        scene_t s;
+        fovsdf_program prog;
+        fovsdf_scene sc;
+        fovsdf_camera cam;
+        fovsdf_config cfg = fovsdf_config_default();
+        fovsdf_ctx ctx;
+        fovsdf_output out;
+        fov_gaze gz;
+        uint32_t count, W, H, x, y, smp, tiles[4] = { 2, 4, 8, 16 }, spps[3] = { 1, 4, 16 };
+        static float start[96 * 64];
+        double ang;
+        random_scene(&g, &s);
+        if (!build(&s, nodes, 4 * MAXP, &prog, mem, sizeof mem, &count)) continue;
+        ++builds;
+        fovsdf_scene_init(&sc);
+        fovsdf_scene_set_program(&sc, &prog);
+        W = 16 + (uint32_t)(urand(&g) * 80.0);
+        H = 9 + (uint32_t)(urand(&g) * 55.0);
+        fovsdf_camera_init(&cam, W, H);
+        ang = urange(&g, 0, 6.2831853);
+        cam.pos[0] = (float)(9.0 * cos(ang)); cam.pos[1] = (float)urange(&g, -0.5, 5.0); cam.pos[2] = (float)(9.0 * sin(ang));
+        cam.target[0] = (float)urange(&g, -1, 1); cam.target[1] = (float)urange(&g, -0.5, 1.5); cam.target[2] = (float)urange(&g, -1, 1);
+        cam.fov_y_deg = (float)urange(&g, 15.0, 110.0);
+        cfg.method = FOVSDF_METHOD_CONE;
+        cfg.cone_tile = tiles[it % 4];
+        cfg.cone_levels = 1 + (uint32_t)(urand(&g) * 2.0); /* 1 or 2 levels; 0 (default) below */
+        if (it % 3 == 0) cfg.cone_levels = 0;
+        {   /* levels must not exceed log2(tile) + 1 */
+            uint32_t lv = 1, t = cfg.cone_tile;
+            while (t > 1) { t >>= 1; ++lv; }
+            if (cfg.cone_levels > lv) cfg.cone_levels = lv;
+        }
+        cfg.spp = spps[it % 3];
+        cfg.shading = FOVSDF_SHADE_DEPTH;
+        cfg.t_max = 40.0f;
+        gz.x = 0.5f * (float)W; gz.y = 0.5f * (float)H;
+        if (fovsdf_init(&ctx, &cfg, &sc, &cam, gz, NULL, 0) != FOV_OK) { ++bad; snprintf(where, sizeof where, "init failed at scene %d", it); continue; }
+        fovsdf_output_init(&out);
+        out.start = start;
+        fovsdf_render_rows(&ctx, 0, H, &out, NULL);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                double st = (double)start[y * W + x];
+                for (smp = 0; smp < ctx.cfg.spp; ++smp) {
+                    double ox, oy, o[3], d[3], th, tol;
+                    float ro[3], rd[3];
+                    sample_offset(ctx.cfg.spp, smp, &ox, &oy);
+                    fovsdf_camera_ray(&ctx, (float)((double)x + 0.5 + ox), (float)((double)y + 0.5 + oy), ro, rd);
+                    o[0] = ro[0]; o[1] = ro[1]; o[2] = ro[2];
+                    d[0] = rd[0]; d[1] = rd[1]; d[2] = rd[2];
+                    th = first_hit(&s, o, d);
+                    ++rays;
+                    if (st >= (double)cfg.t_max) { /* proven empty: no hit within t_max */
+                        ++empty;
+                        if (th >= 0.0 && th < (double)cfg.t_max * 0.9999) {
+                            if (!empty_bad) snprintf(where, sizeof where, "scene %d pixel (%u,%u): empty but hit at %.6g", it, x, y, th);
+                            ++empty_bad;
+                        }
+                        continue;
+                    }
+                    if (th < 0.0) continue;
+                    ++hits;
+                    /* float rounding of the ray and of the distance: a few ulps of |o| + t */
+                    tol = 1e-5 * (sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]) + th);
+                    if (st - th > worst) worst = st - th;
+                    if (st > th + tol) {
+                        if (!bad) snprintf(where, sizeof where, "scene %d tile %u levels %u spp %u pixel (%u,%u): start %.7g > hit %.7g",
+                                           it, ctx.cfg.cone_tile, ctx.cfg.cone_levels, ctx.cfg.spp, x, y, st, th);
+                        ++bad;
+                    }
+                }
+            }
+    }
+    check(builds >= 280 && rays > 1000000 && hits > 100000 && bad == 0, "cone_start_never_past_first_hit",
+          "%d violations of %ld hit rays (%ld rays, %d scenes built); worst start - hit %.3g; first: %s", bad, hits, rays, builds,
+          worst, where);
+    check(empty > 10000 && empty_bad == 0, "cone_empty_cells_have_no_hit", "%d of %ld proven-empty rays do hit; %s", empty_bad,
+          empty, where);
+}
+
+/* The cone images agree with classic sphere tracing on the built-in scenes. */
+static void cone_vs_classic(void)
+{
+    uint32_t id;
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+        size_t sz;
+        void *mem;
+        fovsdf_builtin bi;
+        fovsdf_config c0 = fovsdf_config_default(), c1;
+        fovsdf_ctx k0, k1;
+        fovsdf_output o0, o1;
+        fovsdf_stats s0, s1;
+        fov_gaze gz = { 60.0f, 34.0f };
+        static uint8_t h0[120 * 68], h1[120 * 68];
+        static float f0[120 * 68 * 3], f1[120 * 68 * 3];
+        uint32_t i, mis = 0;
+        double se = 0.0;
+        fovsdf_builtin_size(id, &sz);
+        mem = malloc(sz);
+        fovsdf_builtin_init(id, &bi, mem, sz);
+        bi.camera.width = 120; bi.camera.height = 68;
+        c0.shading = FOVSDF_SHADE_NORMALS;
+        c1 = c0;
+        c1.method = FOVSDF_METHOD_CONE;
+        c1.finish = FOVSDF_FINISH_CLASSIC;
+        fovsdf_init(&k0, &c0, &bi.scene, &bi.camera, gz, NULL, 0);
+        fovsdf_init(&k1, &c1, &bi.scene, &bi.camera, gz, NULL, 0);
+        fovsdf_output_init(&o0); o0.hit = h0; o0.rgb = f0;
+        fovsdf_output_init(&o1); o1.hit = h1; o1.rgb = f1;
+        memset(&s0, 0, sizeof s0); memset(&s1, 0, sizeof s1);
+        fovsdf_render_rows(&k0, 0, 68, &o0, &s0);
+        fovsdf_render_rows(&k1, 0, 68, &o1, &s1);
+        for (i = 0; i < 120u * 68u; ++i) mis += h0[i] != h1[i];
+        for (i = 0; i < 120u * 68u * 3u; ++i) se += ((double)f0[i] - (double)f1[i]) * ((double)f0[i] - (double)f1[i]);
+        se /= 120.0 * 68.0 * 3.0;
+        check(mis <= 24 && se < 3e-3, N("cone_matches_classic_%s", bi.name),
+              "hit mismatch %u px of 8160, normal-image MSE %.3g", mis, se);
+        check(s1.evals_lowres > 0 && s1.evals_primary + s1.evals_lowres < s0.evals_primary, N("cone_fewer_evals_%s", bi.name),
+              "classic %llu primary evaluations, cone %llu low-res + %llu rays", (unsigned long long)s0.evals_primary,
+              (unsigned long long)s1.evals_lowres, (unsigned long long)s1.evals_primary);
+        free(mem);
+    }
+}
+
+static fov_result init_with(fovsdf_config c)
+{
+    fovsdf_scene sc;
+    fovsdf_camera cam;
+    fovsdf_ctx ctx;
+    fov_gaze gz = { 8.0f, 8.0f };
+    fovsdf_scene_init(&sc);
+    sc.dist = NULL;
+    {
+        static fovsdf_node nodes[4];
+        static unsigned char mem[8192];
+        static fovsdf_program prog;
+        fovsdf_builder b;
+        int32_t r;
+        size_t need;
+        fovsdf_builder_init(&b, nodes, 4);
+        r = fovsdf_sphere(&b, 1.0f);
+        fovsdf_program_size(nodes, b.count, r, &need);
+        if (need > sizeof mem || fovsdf_program_build(&prog, nodes, b.count, r, mem, sizeof mem) != FOV_OK) return FOV_ERR_LIMIT;
+        fovsdf_scene_set_program(&sc, &prog);
+    }
+    fovsdf_camera_init(&cam, 16, 16);
+    return fovsdf_init(&ctx, &c, &sc, &cam, gz, NULL, 0);
+}
+
+static void bad_params(void)
+{
+    fovsdf_config c = fovsdf_config_default();
+    fov_result r;
+    c.method = FOVSDF_METHOD_CONE;
+    check(init_with(c) == FOV_OK, "cone_default_config_ok", "init failed");
+    c.cone_tile = 12;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "cone_tile_not_power_of_two", "got %d", (int)r);
+    c.cone_tile = 512;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "cone_tile_above_256", "got %d", (int)r);
+    c.cone_tile = 8; c.cone_levels = 5;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "cone_levels_above_log2_tile_plus_1", "got %d", (int)r);
+    c.cone_levels = 4;
+    r = init_with(c);
+    check(r == FOV_OK, "cone_levels_log2_tile_plus_1_ok", "got %d", (int)r);
+    c.finish = 99;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "finish_unknown", "got %d", (int)r);
+}
+
+/* The cone's cells are grid-aligned: rendering by 7-row bands or 13x11 tiles gives the same
+   bytes as one full render (as for the plain tracers). */
+static void cone_partition_invariant(void)
+{
+    size_t sz;
+    void *mem;
+    fovsdf_builtin bi;
+    fovsdf_config c = fovsdf_config_default();
+    fovsdf_ctx k;
+    fovsdf_output o;
+    fov_gaze gz = { 50.0f, 30.0f };
+    static float a[100 * 57 * 3], b[100 * 57 * 3], sa[100 * 57], sb[100 * 57];
+    uint32_t y, x, diff = 0, diff_s = 0;
+    fovsdf_builtin_size(FOVSDF_SCENE_PRIMITIVES, &sz);
+    mem = malloc(sz);
+    fovsdf_builtin_init(FOVSDF_SCENE_PRIMITIVES, &bi, mem, sz);
+    bi.camera.width = 100; bi.camera.height = 57;
+    c.method = FOVSDF_METHOD_CONE;
+    c.spp = 4;
+    fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+    fovsdf_output_init(&o); o.rgb = a; o.start = sa;
+    fovsdf_render_rows(&k, 0, 57, &o, NULL);
+    o.rgb = b; o.start = sb;
+    for (y = 0; y < 57; y += 7) fovsdf_render_rows(&k, y, y + 7 < 57 ? y + 7 : 57, &o, NULL);
+    diff = (uint32_t)(memcmp(a, b, sizeof a) != 0);
+    diff_s = (uint32_t)(memcmp(sa, sb, sizeof sa) != 0);
+    check(!diff && !diff_s, "cone_rows_in_bands_identical", "rgb differs %u, start differs %u", diff, diff_s);
+    memset(b, 0, sizeof b);
+    for (y = 0; y < 57; y += 11)
+        for (x = 0; x < 100; x += 13)
+            fovsdf_render_tile(&k, x, y, x + 13 < 100 ? x + 13 : 100, y + 11 < 57 ? y + 11 : 57, &o, NULL);
+    check(memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0, "cone_tiles_identical", "13x11 tiles differ from the full render");
+    free(mem);
+}
+
+int main(void)
+{
+    cone_partition_invariant();
+    bad_params();
+    cone_vs_classic();
+    cone_property();
+    return fovcheck_summary();
+}
