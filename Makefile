@@ -1,6 +1,8 @@
 # fov - foveated rendering single-header libraries.
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures
 #   make test    the whole test suite (closing line: "N passed, N failed")
+#   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv);
+#                make bench-sdf FULL=1 runs the whole grid
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -10,7 +12,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test examples clean
+.PHONY: all demo test examples bench bench-sdf clean
 
 all: examples
 
@@ -22,6 +24,10 @@ $(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h tests/common/fovimg.h tests/
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
+$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h tests/common/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
 examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes
 
 demo: $(BUILD)/sdf_scenes
@@ -29,6 +35,12 @@ demo: $(BUILD)/sdf_scenes
 
 test:
 	@bash tests/run_all.sh
+
+bench-sdf: $(BUILD)/bench_sdf
+	@mkdir -p bench/results
+	./$(BUILD)/bench_sdf $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench: bench-sdf
 
 clean:
 	rm -rf $(BUILD) out

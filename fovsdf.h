@@ -37,7 +37,8 @@ WHAT IT DOES
      material ids, a sky gradient; 1, 4 or 16 samples per pixel.
    - One eccentricity model (degrees between the gaze ray and a pixel's ray, from the display
      geometry), shared with fovlp.h and fovpt.h.
-   - Accelerated head starts: the conservative cone pyramid (FOVSDF_METHOD_CONE, below).
+   - Accelerated head starts: the conservative cone pyramid (FOVSDF_METHOD_CONE) and the
+     inverted pyramid of the thesis (FOVSDF_METHOD_IPR), below.
 
 ACCELERATED METHODS
    CONE (beyond the thesis): the image is cut into grid-aligned tiles of cone_tile pixels. Each
@@ -52,6 +53,19 @@ ACCELERATED METHODS
    into rows or tiles. Working memory: none beyond a 40-cell stack (about 1 KiB) per call;
    fovsdf_memory_size stays 0. Distance estimators that can overestimate (Mandelbulb, smooth
    operators, large repetition with overlapping copies) lose the guarantee, not the image.
+   IPR (thesis ch. 5): ipr_levels levels (default 3: 1/16, 1/4 and all of the pixels); each
+   level traces the rays through its cells' centres from the minimum t of the parent cell and
+   its neighbours within ipr_radius (default 1: the 3x3 filter, applied before each level;
+   fovsdf_min_filter is the same filter on an image); every sample ray of a pixel starts from
+   the filtered value of the last level. Misses are stored as t_max. Choices where the thesis
+   is silent: the child of cell (u, v) is (u/2, v/2); no extra safety margin; nearest parent;
+   every level uses cfg.finish. The filter is a heuristic, no guarantee: sub-pixel features the
+   coarse rays miss can be skipped (measured on the thin scene: 2 % of the pixels at 320x180).
+   Working memory per tile of ipr_tile pixels (default 32): the level arrays with aprons,
+   (8 + 2*2)^2 + (16 + 2*1)^2 = 468 floats = 1872 bytes for the defaults, on the stack, at most
+   FOVSDF_TILE_SCRATCH floats (default 1024; a config that needs more is FOV_ERR_LIMIT). The
+   aprons are recomputed by each tile: 0.46 coarse rays per pixel against the 0.31 of a
+   whole-image pyramid.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -243,7 +257,8 @@ typedef enum fovsdf_method {
     FOVSDF_METHOD_RELAXED = 1,     /* over-relaxation with back-step, Keinert et al. 2014 */
     FOVSDF_METHOD_AUTORELAXED = 2, /* slope-driven relaxation, Ban & Valasek 2023 */
     FOVSDF_METHOD_BV2018 = 3,      /* linear-approximation step, Balint & Valasek 2018 */
-    FOVSDF_METHOD_CONE = 4,        /* conservative cone pyramid head start, then classic */
+    FOVSDF_METHOD_CONE = 4,        /* conservative cone pyramid head start (beyond the thesis) */
+    FOVSDF_METHOD_IPR = 5,         /* inverted pyramid with minimum filter (thesis ch. 5) */
     _FOVSDF_METHOD_NUM,
     _FOVSDF_METHOD_FORCE_U32 = 0x7FFFFFFF
 } fovsdf_method;
@@ -289,6 +304,14 @@ typedef struct fovsdf_config {
     uint32_t cone_levels;   /* CONE: cone levels, each halving the cell side, at most
                                log2(cone_tile) + 1 (down to single pixels); 0: log2(cone_tile),
                                i.e. down to 2x2-pixel cells (measured cheapest) */
+    uint32_t ipr_levels;    /* IPR: pyramid levels including the full-resolution one, 1 .. 6
+                               (1 = no head start); each lower level has 1/4 of the pixels
+                                                                          0: 3 (1/16, 1/4, 1) */
+    int32_t ipr_radius;     /* IPR: radius of the neighbour minimum filter applied before each
+                               level, 1 .. 3 (negative: an error)           0: 1 (3x3 filter) */
+    uint32_t ipr_no_filter; /* IPR: 1 = no minimum filter (the thesis's ablation; may miss) */
+    uint32_t ipr_tile;      /* IPR: tile side in pixels (multiple of 2^(levels-1), <= 64;
+                               working memory is per tile)                              0: 32 */
     uint32_t finish;        /* head-start methods: tracer of the sample rays from their head
                                start, fovsdf_finish                                 0: bv2018 */
     fov_display display;    /* for eccentricity; all zero: the camera's field of view */
@@ -633,6 +656,10 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *ctx, const float p[3], float h, 
    [t_start, t_end]; returns the light fraction in [0, 1] (0 = full shadow). */
 FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], const float l[3],
                                     float t_start, float t_end, float k, fovsdf_stats *stats);
+/* The IPR neighbour minimum filter on a caller image: out(x, y) = the minimum of in over the
+   (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies). out must not
+   alias in. */
+FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
 /* Shades one hit: linear RGB of the surface at p with normal n seen along rd. */
 FOVSDF_API void fovsdf_shade(const fovsdf_ctx *ctx, const float p[3], const float n[3],
                              const float rd[3], int32_t material, float rgb[3],
@@ -948,6 +975,27 @@ FOVSDF__PRIV void fovsdf__memcpy(void *d, const void *s, size_t n)
 #ifndef FOVSDF_MAX_STACK
 #define FOVSDF_MAX_STACK 32
 #endif
+#ifndef FOVSDF_TILE_SCRATCH /* floats of per-call working memory on the stack (IPR tiles) */
+#define FOVSDF_TILE_SCRATCH 1024
+#endif
+/* IPR: the apron of stored level l (cells beyond the tile its filters reach) and the floats a
+   tile needs: level levels-2 needs r (the pixels' filter), each level below ceil(a/2) + r. */
+FOVSDF__PRIV uint32_t fovsdf__ipr_apron(uint32_t levels, uint32_t l, uint32_t r)
+{
+    uint32_t a = r, k;
+    for (k = levels - 2u; k > l; --k) a = (a + 1u) / 2u + r;
+    return a;
+}
+FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r)
+{
+    size_t n = 0;
+    uint32_t l;
+    for (l = 0; l + 1u < levels; ++l) {
+        size_t side = (size_t)(tile >> (levels - 1u - l)) + 2u * fovsdf__ipr_apron(levels, l, (uint32_t)r);
+        n += side * side;
+    }
+    return n;
+}
 #ifndef FOVSDF_CONE_SLACK /* a cone stops when f <= t k (1 + slack): earlier is always safe */
 #define FOVSDF_CONE_SLACK 0.5f
 #endif
@@ -1021,7 +1069,7 @@ FOVSDF_API const char *fovsdf_result_string(fov_result r)
 
 FOVSDF_API const char *fovsdf_method_name(uint32_t method)
 {
-    static const char *const names[] = { "classic", "relaxed", "autorelaxed", "bv2018", "cone" };
+    static const char *const names[] = { "classic", "relaxed", "autorelaxed", "bv2018", "cone", "ipr" };
     return method < (uint32_t)_FOVSDF_METHOD_NUM ? names[method] : "unknown";
 }
 
@@ -1081,6 +1129,16 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (fovsdf__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
     if (c.finish == 0) c.finish = FOVSDF_FINISH_BV2018;
     if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown finish");
+    if (c.ipr_levels == 0) c.ipr_levels = 3;
+    if (c.ipr_levels > 6) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_levels must be 1 .. 6");
+    if (c.ipr_radius < 0 || c.ipr_radius > 3) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_radius must be 0 .. 3");
+    if (c.ipr_radius == 0) c.ipr_radius = 1;
+    if (c.ipr_no_filter > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_no_filter must be 0 or 1");
+    if (c.ipr_tile == 0) c.ipr_tile = 32;
+    if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
+    if (fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_TILE_SCRATCH)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
     if (c.cone_tile == 0) c.cone_tile = 16;
     if (c.cone_tile > 256 || (c.cone_tile & (c.cone_tile - 1)) != 0)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cone_tile must be a power of two <= 256");
@@ -2299,6 +2357,19 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
        samples (at most 64 |d| long) is exact for planes seen at |cos(incidence)| >= 1/64 and
        close for smooth surfaces; it is kept only when it lowers |d| and stays outside. Costs
        one evaluation per hit. */
+    if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fovsdf__finite(d)) {
+        /* hit at the first evaluation (a head start next to the surface): one plain step
+           gives the second sample the secant needs (kept only when it gets closer) */
+        float t2 = t + d, d2;
+        int32_t m2 = 0;
+        d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
+              fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st));
+        if (fovsdf__absf(d2) < d && d2 > -(0.01f * fovsdf__thr(m, t2) + 0.5f * (m->ulp0 + m->ulp1 * t2))) {
+            pt = t; pd = d; hp = 1;
+            t = t2; d = d2;
+            if (mat) *mat = m2;
+        }
+    }
     if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
         float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fovsdf__absf(d), d2;
         dt = fovsdf__clampf(dt, -lim, lim);
@@ -2860,6 +2931,94 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
     }
 }
 
+FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out)
+{
+    uint32_t x, y;
+    if (!in || !out) return FOV_ERR_NULL;
+    if (w == 0 || h == 0 || radius < 0) return FOV_ERR_INVALID_ARG;
+    if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
+    if (in == out) return FOV_ERR_INVALID_ARG;
+    for (y = 0; y < h; ++y)
+        for (x = 0; x < w; ++x) {
+            uint32_t u0 = x > (uint32_t)radius ? x - (uint32_t)radius : 0, u1 = x + (uint32_t)radius < w ? x + (uint32_t)radius : w - 1;
+            uint32_t v0 = y > (uint32_t)radius ? y - (uint32_t)radius : 0, v1 = y + (uint32_t)radius < h ? y + (uint32_t)radius : h - 1;
+            uint32_t u, v;
+            float t = in[(size_t)y * w + x];
+            for (v = v0; v <= v1; ++v)
+                for (u = u0; u <= u1; ++u) t = in[(size_t)v * w + u] < t ? in[(size_t)v * w + u] : t;
+            out[(size_t)y * w + x] = t;
+        }
+    return FOV_OK;
+}
+
+/* ---- inverted pyramid rendering, IPR (thesis ch. 5.3, notes seed000 section 1.5.1) ----------
+   Level 0 traces one ray per cell of 2^(levels-1) x 2^(levels-1) pixels through the cell's
+   centre from the camera; every higher level traces the rays of cells half as wide, each from
+   the minimum t of its parent and the parent's neighbours within ipr_radius (the neighbour
+   minimum filter, "applied before each level"); at the top every sample ray of a pixel starts
+   from that filtered value. A miss is stored as t_max (explicit, so the filter takes the
+   neighbours' hits). The filter is a heuristic: unlike the cone, a child may start past a
+   surface the coarser rays did not see. Tiles are grid aligned with an apron of cells around
+   them, so results do not depend on how the image is split. */
+FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, int32_t v, int32_t r)
+{
+    float t = lv[(size_t)v * side + (size_t)u];
+    int32_t i, j;
+    for (j = -r; j <= r; ++j)
+        for (i = -r; i <= r; ++i) {
+            float q = lv[(size_t)(v + j) * side + (size_t)(u + i)];
+            t = q < t ? q : t;
+        }
+    return t;
+}
+
+FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty, uint32_t rx0,
+                                   uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+{
+    float scratch[FOVSDF_TILE_SCRATCH];
+    float *lv[6];
+    uint32_t side[6], apr[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, l, x, y;
+    int32_t r = c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius;
+    size_t off = 0;
+    uint64_t e0 = st->evals;
+    for (l = 0; l + 1u < L; ++l) {
+        apr[l] = fovsdf__ipr_apron(L, l, (uint32_t)r);
+        side[l] = (T >> (L - 1u - l)) + 2u * apr[l];
+        lv[l] = scratch + off;
+        off += (size_t)side[l] * side[l];
+    }
+    FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
+    for (l = 0; l + 1u < L; ++l) {
+        uint32_t S = 1u << (L - 1u - l), u, v;
+        int32_t c0x = (int32_t)(tx / S) - (int32_t)apr[l], c0y = (int32_t)(ty / S) - (int32_t)apr[l];
+        for (v = 0; v < side[l]; ++v)
+            for (u = 0; u < side[l]; ++u) {
+                int32_t cx = c0x + (int32_t)u, cy = c0y + (int32_t)v;
+                float ro[3], rd[3], t0 = 0.0f;
+                fovsdf_hit h;
+                if (l > 0) { /* parent cell and its neighbours, in the parent's array */
+                    int32_t pu = ((cx >= 0 ? cx : cx - 1) / 2) - ((int32_t)(tx / (S * 2u)) - (int32_t)apr[l - 1]);
+                    int32_t pv = ((cy >= 0 ? cy : cy - 1) / 2) - ((int32_t)(ty / (S * 2u)) - (int32_t)apr[l - 1]);
+                    t0 = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
+                }
+                fovsdf__ray(c, ((float)cx + 0.5f) * (float)S, ((float)cy + 0.5f) * (float)S, ro, rd);
+                fovsdf__march(m, ro, rd, t0, &h, 0, st);
+                lv[l][(size_t)v * side[l] + u] = h.kind == FOVSDF_MISS ? c->t_max : h.t;
+            }
+    }
+    st->evals_lowres += st->evals - e0;
+    for (y = ry0; y < ry1; ++y)
+        for (x = rx0; x < rx1; ++x) {
+            float t0 = 0.0f;
+            if (L > 1u) {
+                int32_t pu = (int32_t)(x / 2u) - ((int32_t)(tx / 2u) - (int32_t)apr[L - 2u]);
+                int32_t pv = (int32_t)(y / 2u) - ((int32_t)(ty / 2u) - (int32_t)apr[L - 2u]);
+                t0 = fovsdf__ipr_min(lv[L - 2u], side[L - 2u], pu, pv, r);
+            }
+            fovsdf__pixel(c, m, x, y, o, st, t0 < c->t_max ? t0 : c->t_max, 0);
+        }
+}
+
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1,
                                          const fovsdf_output *o, fovsdf_stats *stats)
 {
@@ -2873,7 +3032,15 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     if (r != FOV_OK) return r;
     FOV_MEMSET(&local, 0, sizeof local);
     fovsdf__marcher_from_ctx(c, &m, c->origin);
-    if (c->cfg.method == FOVSDF_METHOD_CONE) {
+    if (c->cfg.method == FOVSDF_METHOD_IPR) {
+        fovsdf__marcher mp = m;
+        uint32_t T = c->cfg.ipr_tile, tx, ty;
+        mp.method = c->cfg.finish - 1u; /* every level traces with the finishing tracer */
+        for (ty = y0 - y0 % T; ty < y1; ty += T)
+            for (tx = x0 - x0 % T; tx < x1; tx += T)
+                fovsdf__ipr_tile(c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
+                                 ty + T < y1 ? ty + T : y1, o, &local);
+    } else if (c->cfg.method == FOVSDF_METHOD_CONE) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.cone_tile, tx, ty;
         mp.method = c->cfg.finish - 1u; /* fovsdf_finish -> fovsdf_method */

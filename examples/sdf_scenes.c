@@ -8,8 +8,10 @@
 
    usage: sdf_scenes [--width W] [--height H] [--spp N] [--gaze X,Y] [--threads N]
                      [--scenes a,b,...] [--out DIR] [--check] [--no-images]
-   --check makes it a test (exit 1 on failure): every relaxed tracer must match the classic
-   tracer at the same epsilon (hit masks on >= 99.5% of the pixels, PSNR >= 30 dB), and the
+   --check makes it a test (exit 1 on failure): every relaxed tracer and the cone pyramid must
+   match the classic tracer at the same epsilon (hit masks on >= 99.5% of the pixels, PSNR >=
+   30 dB), IPR, a heuristic that loses features narrower than its coarse rays, within 3% and
+   20 dB, and the
    classic tracer must match the ground truth's hit mask on >= 95% of the pixels (its quarter
    pixel cone dilates sub-pixel wires, more so at small sizes) with a finite image.          */
 #define FOVSDF_IMPLEMENTATION
@@ -18,61 +20,13 @@
 #include "../tests/common/fovimg.h"
 #define FOVM_IMPLEMENTATION
 #include "../tests/common/fovmetrics.h"
+#include "../tests/common/fovrun.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
-
-typedef struct job {
-    const fovsdf_ctx *ctx;
-    const fovsdf_output *out;
-    uint32_t band, first, step, height;
-    fovsdf_stats stats;
-} job;
-
-static void *worker(void *arg)
-{
-    job *j = (job *)arg;
-    uint32_t y;
-    for (y = j->first * j->band; y < j->height; y += j->step * j->band) {
-        uint32_t y1 = y + j->band < j->height ? y + j->band : j->height;
-        fovsdf_render_rows(j->ctx, y, y1, j->out, &j->stats);
-    }
-    return NULL;
-}
-
-static double now_ms(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
-}
-
-/* Render with nthreads threads; returns wall time in ms and the summed stats. */
-static double render(const fovsdf_ctx *ctx, const fovsdf_output *out, int nthreads, fovsdf_stats *st)
-{
-    pthread_t th[64];
-    job jobs[64];
-    int i;
-    double t0 = now_ms();
-    if (nthreads > 64) nthreads = 64;
-    for (i = 0; i < nthreads; ++i) {
-        memset(&jobs[i], 0, sizeof jobs[i]);
-        jobs[i].ctx = ctx; jobs[i].out = out; jobs[i].band = 4; jobs[i].first = (uint32_t)i;
-        jobs[i].step = (uint32_t)nthreads; jobs[i].height = ctx->cam.height;
-        pthread_create(&th[i], NULL, worker, &jobs[i]);
-    }
-    memset(st, 0, sizeof *st);
-    for (i = 0; i < nthreads; ++i) {
-        pthread_join(th[i], NULL);
-        fovsdf_stats_add(st, &jobs[i].stats);
-    }
-    return now_ms() - t0;
-}
 
 typedef struct frame {
     float *rgb, *depth;
@@ -180,7 +134,7 @@ int main(int argc, char **argv)
         }
         fovsdf_output_init(&out);
         out.rgb = gt.rgb; out.depth = gt.depth; out.hit = gt.hit; out.evals = gt.evals;
-        ms = render(&ctx, &out, nthreads, &st);
+        ms = fovrun_render(&ctx, &out, nthreads, &st);
         to_display(gt.rgb, gt_disp, npx * 3);
         if (images) save(outdir, name, "gt", gt_disp, (int)W, (int)H, png);
         printf("%-11s %-12s %9.1f %8.1f %8.1f %8.1f %7.1f %9.1f %8s %7s %7s %8s %9s\n", name, "groundtruth",
@@ -199,7 +153,7 @@ int main(int argc, char **argv)
             fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0);
             fovsdf_output_init(&out);
             out.rgb = fr.rgb; out.depth = fr.depth; out.hit = fr.hit; out.evals = fr.evals;
-            ms = render(&ctx, &out, nthreads, &st);
+            ms = fovrun_render(&ctx, &out, nthreads, &st);
             to_display(fr.rgb, disp, npx * 3);
             if (images) save(outdir, name, fovsdf_method_name(m), disp, (int)W, (int)H, png);
             if (images && m == 0) { /* the evaluation heat map of the classic tracer */
@@ -208,13 +162,13 @@ int main(int argc, char **argv)
                 hc.shading = FOVSDF_SHADE_STEPS;
                 fovsdf_init(&ctx, &hc, &bi.scene, &bi.camera, gaze, NULL, 0);
                 out.depth = NULL; out.hit = NULL; out.evals = NULL;
-                render(&ctx, &out, nthreads, &hs);
+                fovrun_render(&ctx, &out, nthreads, &hs);
                 to_display(fr.rgb, disp, npx * 3);
                 save(outdir, name, "classic_evals", disp, (int)W, (int)H, png);
                 to_display(fr.rgb, disp, npx * 3);
                 fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0);
                 out.depth = fr.depth; out.hit = fr.hit; out.evals = fr.evals;
-                render(&ctx, &out, nthreads, &hs);
+                fovrun_render(&ctx, &out, nthreads, &hs);
                 to_display(fr.rgb, disp, npx * 3);
             }
             fovm_psnr(gt_disp, disp, (int)W, (int)H, 3, &psnr);
@@ -253,7 +207,10 @@ int main(int argc, char **argv)
                     for (i = 0; i < npx; ++i) mis_c += cl_hit[i] != fr.hit[i];
                     fovm_psnr(cl_disp, disp, (int)W, (int)H, 3, &ps_c);
                     what = "vs classic";
-                    ok = fin > 0.0 && 100.0 * (double)mis_c / (double)npx <= 0.5 && ps_c >= 30.0;
+                    if (m == FOVSDF_METHOD_IPR) /* a heuristic: features narrower than its coarse rays vanish */
+                        ok = fin > 0.0 && 100.0 * (double)mis_c / (double)npx <= 3.0 && ps_c >= 20.0;
+                    else
+                        ok = fin > 0.0 && 100.0 * (double)mis_c / (double)npx <= 0.5 && ps_c >= 30.0;
                 }
                 printf("%s %s %s %s: hit mismatch %.3f%%, psnr %.2f dB%s\n", ok ? "PASS" : "FAIL", name,
                        fovsdf_method_name(m), what, 100.0 * (double)mis_c / (double)npx, ps_c, fin > 0.0 ? "" : ", NON-FINITE pixels");

@@ -1,0 +1,233 @@
+/* bench_sdf.c - run time against error for every fovsdf method (make bench-sdf).
+
+   For every built-in scene, method, samples per pixel and gaze position (and, for foveated
+   methods, fovea size and periphery refresh): distance evaluations per pixel (deterministic,
+   split by pass), wall time (median of --runs runs, every method in this one process, so the
+   time ratio against classic is measured side by side), and the error against the ground truth
+   (classic tracer, epsilon 1e-5, 0.01-pixel cone, 4096 steps, same spp): PSNR, SSIM, FLIP,
+   hit-mask mismatch and mean |dt|/t.
+
+   Writes bench/results/sdf.csv; the first columns are an interface other tools read:
+     scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,
+     flip,hit_mismatch_pct
+   then: evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,
+     mean_rel_dt,shading,width,height,runs
+   evals_per_px counts the evaluations that find the visible surface (head-start passes plus the
+   sample rays), which is what the methods differ in; shading evaluations (normals, shadow rays)
+   are the same for every method and reported separately. Non-foveated methods have fovea_deg 0
+   and refresh 1. With gnuplot installed it also draws bench/results/sdf_<scene>.png (speed-up
+   against PSNR).
+
+   usage: bench_sdf [--full] [--hd] [--runs N] [--threads N] [--scenes a,b] [--shadows]
+                    [--out FILE]
+   Default grid (about 10 minutes on 2 cores at 640x360): every method at 1 spp with the gaze at
+   the centre, classic, cone and ipr at 4 and 16 spp. --full: every method at 1, 4, 16 spp, gaze at
+   the centre and at a corner. --hd: 1920x1080. Shading without shadow rays by default (as in
+   the thesis's IPR/FIPR study); --shadows adds them. */
+#define FOVSDF_IMPLEMENTATION
+#include "../fovsdf.h"
+#define FOVIMG_IMPLEMENTATION
+#include "../tests/common/fovimg.h"
+#define FOVM_IMPLEMENTATION
+#include "../tests/common/fovmetrics.h"
+#include "../tests/common/fovrun.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+typedef struct job_t {
+    uint32_t scene, method, spp, corner;
+} job_t;
+
+typedef struct img_t {
+    float *rgb, *disp, *depth;
+    uint8_t *hit;
+} img_t;
+
+static void img_alloc(img_t *m, size_t n)
+{
+    m->rgb = (float *)malloc(n * 3 * sizeof(float));
+    m->disp = (float *)malloc(n * 3 * sizeof(float));
+    m->depth = (float *)malloc(n * sizeof(float));
+    m->hit = (uint8_t *)malloc(n);
+}
+static void img_free(img_t *m) { free(m->rgb); free(m->disp); free(m->depth); free(m->hit); }
+
+static void to_display(img_t *m, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n * 3; ++i) {
+        float v = m->rgb[i];
+        m->disp[i] = fovimg_linear_to_srgb(v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v));
+    }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : (x > y ? 1 : 0);
+}
+
+static void progress(int done, int total, const char *what)
+{
+    int i, w = 30, f = total ? done * w / total : w;
+    fprintf(stderr, "\r[");
+    for (i = 0; i < w; ++i) fputc(i < f ? '#' : '-', stderr);
+    fprintf(stderr, "] %3d/%d %-40.40s", done, total, what);
+    if (done == total) fputc('\n', stderr);
+    fflush(stderr);
+}
+
+int main(int argc, char **argv)
+{
+    uint32_t W = 640, H = 360;
+    int full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
+    const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/sdf.csv";
+    job_t jobs[1024];
+    FILE *csv;
+    uint32_t id, m, s, g;
+    const uint32_t spps[3] = { 1, 4, 16 };
+
+    for (a = 1; a < argc; ++a) {
+        if (!strcmp(argv[a], "--full")) full = 1;
+        else if (!strcmp(argv[a], "--hd")) { W = 1920; H = 1080; }
+        else if (!strcmp(argv[a], "--runs") && a + 1 < argc) runs = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--threads") && a + 1 < argc) nthreads = atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
+        else if (!strcmp(argv[a], "--shadows")) shadows = 1;
+        else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
+        else { fprintf(stderr, "unknown option %s (see the comment at the top of bench_sdf.c)\n", argv[a]); return 2; }
+    }
+    if (runs < 1) runs = 1;
+
+    /* the grid: classic first in every (scene, spp, gaze) group, for the side-by-side ratio */
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+        const char *nm = fovsdf_builtin_name(id), *p = strstr(scenes, nm);
+        if (!p || (p != scenes && p[-1] != ',') || (p[strlen(nm)] != ',' && p[strlen(nm)] != 0)) continue;
+        for (g = 0; g < (full ? 2u : 1u); ++g)
+            for (s = 0; s < 3; ++s)
+                for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m) {
+                    int in = full || spps[s] == 1 || m == FOVSDF_METHOD_CLASSIC || m == FOVSDF_METHOD_CONE || m == FOVSDF_METHOD_IPR;
+                    if (!in || njobs >= 1024) continue;
+                    jobs[njobs].scene = id; jobs[njobs].method = m; jobs[njobs].spp = spps[s]; jobs[njobs].corner = g;
+                    ++njobs;
+                }
+    }
+    csv = fopen(outpath, "w");
+    if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
+    fprintf(csv, "scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,flip,hit_mismatch_pct,"
+                 "evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,mean_rel_dt,shading,width,height,runs\n");
+    fprintf(stderr, "bench-sdf: %ux%u, %d configurations, median of %d runs, %d threads, %s\n", W, H, njobs, runs, nthreads,
+            shadows ? "with shadows" : "no shadow rays");
+
+    {
+        size_t npx = (size_t)W * H, sz = 0;
+        img_t gt, im;
+        void *mem = NULL;
+        fovsdf_builtin bi;
+        uint32_t cur_scene = 0xffffffffu, cur_spp = 0, cur_g = 2;
+        double classic_ms = 0.0;
+        int j;
+        img_alloc(&gt, npx);
+        img_alloc(&im, npx);
+        for (j = 0; j < njobs; ++j) {
+            const job_t *jb = &jobs[j];
+            fovsdf_config cfg;
+            fovsdf_ctx ctx;
+            fovsdf_output out;
+            fovsdf_stats st;
+            fov_gaze gaze;
+            double times[64], ms, psnr = 0.0, ssim = 0.0, flip = 0.0, rel = 0.0;
+            long mismatch = 0, nrel = 0;
+            size_t i;
+            int r;
+            char what[96];
+            if (jb->scene != cur_scene) {
+                free(mem);
+                fovsdf_builtin_size(jb->scene, &sz);
+                mem = malloc(sz);
+                if (fovsdf_builtin_init(jb->scene, &bi, mem, sz) != FOV_OK) { fprintf(stderr, "scene init failed\n"); return 1; }
+                bi.camera.width = W;
+                bi.camera.height = H;
+                cur_scene = jb->scene;
+                cur_spp = 0;
+            }
+            gaze.x = jb->corner ? 0.1f * (float)W : 0.5f * (float)W;
+            gaze.y = jb->corner ? 0.1f * (float)H : 0.5f * (float)H;
+            if (jb->spp != cur_spp || jb->corner != cur_g) { /* ground truth of this group */
+                snprintf(what, sizeof what, "%s ground truth %u spp", bi.name, jb->spp);
+                progress(done, njobs, what);
+                cfg = fovsdf_config_ground_truth();
+                cfg.spp = jb->spp;
+                cfg.shading = shadows ? FOVSDF_SHADE_FULL : FOVSDF_SHADE_NO_SHADOWS;
+                fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0);
+                fovsdf_output_init(&out);
+                out.rgb = gt.rgb; out.depth = gt.depth; out.hit = gt.hit;
+                fovrun_render(&ctx, &out, nthreads, &st);
+                to_display(&gt, npx);
+                cur_spp = jb->spp;
+                cur_g = jb->corner;
+            }
+            snprintf(what, sizeof what, "%s %s %u spp%s", bi.name, fovsdf_method_name(jb->method), jb->spp, jb->corner ? " corner" : "");
+            progress(done, njobs, what);
+            cfg = fovsdf_config_default();
+            cfg.method = jb->method;
+            cfg.spp = jb->spp;
+            cfg.shading = shadows ? FOVSDF_SHADE_FULL : FOVSDF_SHADE_NO_SHADOWS;
+            if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) { fprintf(stderr, "init failed\n"); return 1; }
+            fovsdf_output_init(&out);
+            out.rgb = im.rgb; out.depth = im.depth; out.hit = im.hit;
+            for (r = 0; r < runs && r < 64; ++r) times[r] = fovrun_render(&ctx, &out, nthreads, &st);
+            qsort(times, (size_t)(runs < 64 ? runs : 64), sizeof times[0], cmp_double);
+            ms = times[(runs < 64 ? runs : 64) / 2];
+            if (jb->method == FOVSDF_METHOD_CLASSIC) classic_ms = ms;
+            to_display(&im, npx);
+            fovm_psnr(gt.disp, im.disp, (int)W, (int)H, 3, &psnr);
+            fovm_ssim(gt.disp, im.disp, (int)W, (int)H, 3, &ssim, NULL);
+            fovm_flip(gt.disp, im.disp, (int)W, (int)H, 3, FOVM_FLIP_DEFAULT_PPD, &flip, NULL);
+            for (i = 0; i < npx; ++i) {
+                if (gt.hit[i] != im.hit[i]) ++mismatch;
+                else if (gt.hit[i]) { rel += fabs((double)im.depth[i] - (double)gt.depth[i]) / (double)gt.depth[i]; ++nrel; }
+            }
+            fprintf(csv, "%s,%s,%u,%g,%d,%s,%.4f,%.3f,%.4f,%.4f,%.6f,%.6f,%.5f,%.4f,%.4f,%.4f,%.4f,%.4e,%s,%u,%u,%d\n", bi.name,
+                    fovsdf_method_name(jb->method), jb->spp, 0.0, 1, jb->corner ? "corner" : "center",
+                    (double)(st.evals_lowres + st.evals_primary) / (double)npx, ms, classic_ms > 0.0 ? classic_ms / ms : 0.0, psnr, ssim,
+                    flip, 100.0 * (double)mismatch / (double)npx, (double)st.evals_lowres / (double)npx,
+                    (double)st.evals_primary / (double)npx, (double)(st.evals_normal + st.evals_shadow) / (double)npx,
+                    (double)st.evals / (double)npx, nrel ? rel / (double)nrel : 0.0, shadows ? "full" : "no_shadows", W, H, runs);
+            fflush(csv);
+            ++done;
+        }
+        progress(done, njobs, "done");
+        free(mem);
+        img_free(&gt);
+        img_free(&im);
+    }
+    fclose(csv);
+    fprintf(stderr, "wrote %s\n", outpath);
+
+    /* plots: speed-up against PSNR per scene */
+    if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
+        FILE *gp = popen("gnuplot", "w");
+        if (gp) {
+            for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+                const char *nm = fovsdf_builtin_name(id);
+                if (!strstr(scenes, nm)) continue;
+                fprintf(gp, "set terminal pngcairo size 800,500; set output 'bench/results/sdf_%s.png'\n", nm);
+                fprintf(gp, "set datafile separator ','; set key off; set grid\n");
+                fprintf(gp, "set title '%s: speed-up against classic vs error (%ux%u)'\n", nm, W, H);
+                fprintf(gp, "set xlabel 'time ratio classic / method (same run)'; set ylabel 'PSNR against ground truth (dB)'\n");
+                fprintf(gp, "plot '%s' every ::1 using (strcol(1) eq '%s' ? $9 : 1/0):10:(sprintf('%%s %%dspp', strcol(2), $3)) with labels point pt 7 offset 0.5,0.5 font ',8'\n",
+                        outpath, nm);
+            }
+            pclose(gp);
+            fprintf(stderr, "plots in bench/results/sdf_<scene>.png\n");
+        }
+    } else {
+        fprintf(stderr, "gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
+    }
+    return 0;
+}
