@@ -525,8 +525,150 @@ static void ipr_partition_invariant(void)
     free(mem);
 }
 
+/* ---- Skipping Spheres ---------------------------------------------------------------------- */
+typedef struct rec_t { float min_infl, max_infl; float r; } rec_t;
+/* A solid sphere of radius r at the origin that records the scales it is asked for. */
+static float rec_sphere(const float p[3], fovsdf_query *q, void *user)
+{
+    rec_t *u = (rec_t *)user;
+    float s = q && q->inflate > 0.0f ? q->inflate : 1.0f;
+    if (s < u->min_infl) u->min_infl = s;
+    if (s > u->max_infl) u->max_infl = s;
+    return (sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / s - u->r) * s;
+}
+
+static void skip_sign_aware(void)
+{
+    rec_t u;
+    fovsdf_scene sc;
+    fovsdf_camera cam;
+    fovsdf_config c = fovsdf_config_default();
+    fovsdf_ctx k;
+    fovsdf_output o;
+    fov_gaze gz = { 8.0f, 8.0f };
+    fovsdf_scene_init(&sc);
+    sc.dist_ex = rec_sphere;
+    sc.user = &u;
+    fovsdf_camera_init(&cam, 16, 16);
+    c.method = FOVSDF_METHOD_SKIP;
+    c.skip_scale = 1.05f;
+    /* camera outside the sphere: the low-resolution pass inflates */
+    u.min_infl = 1e9f; u.max_infl = 0.0f; u.r = 1.0f;
+    fovsdf_init(&k, &c, &sc, &cam, gz, NULL, 0);
+    fovsdf_output_init(&o);
+    fovsdf_render_rows(&k, 0, 16, &o, NULL);
+    check(u.max_infl > 1.04f && u.max_infl < 1.06f, "skip_inflates_camera_outside", "largest scale asked %.4f, want 1.05", (double)u.max_infl);
+    /* camera inside the sphere: it deflates (1/s) */
+    u.min_infl = 1e9f; u.max_infl = 0.0f; u.r = 20.0f;
+    fovsdf_init(&k, &c, &sc, &cam, gz, NULL, 0);
+    fovsdf_render_rows(&k, 0, 16, &o, NULL);
+    check(u.min_infl > 0.94f && u.min_infl < 0.96f && u.max_infl <= 1.0f, "skip_deflates_camera_inside",
+          "scales asked %.4f .. %.4f, want 1/1.05 = 0.952 .. 1", (double)u.min_infl, (double)u.max_infl);
+}
+
+/* A room: a big box minus a sphere of radius 10, camera in the cavity. Scaling the solid up
+   shrinks the subtracted hole, so every low-resolution start stays before the wall at 10. */
+static void skip_hole_shrinks(void)
+{
+    static fovsdf_node nodes[8];
+    static unsigned char mem[1 << 14];
+    static float start[40 * 30];
+    fovsdf_program prog;
+    fovsdf_builder b;
+    fovsdf_scene sc;
+    fovsdf_camera cam;
+    fovsdf_config c = fovsdf_config_default();
+    fovsdf_ctx k;
+    fovsdf_output o;
+    fov_gaze gz = { 20.0f, 15.0f };
+    int32_t r;
+    uint32_t i, past = 0;
+    float worst = 0.0f;
+    fovsdf_builder_init(&b, nodes, 8);
+    r = fovsdf_subtract(&b, fovsdf_box(&b, 30.0f, 30.0f, 30.0f), fovsdf_sphere(&b, 10.0f));
+    fovsdf_program_build(&prog, nodes, b.count, r, mem, sizeof mem);
+    fovsdf_scene_init(&sc);
+    fovsdf_scene_set_program(&sc, &prog);
+    fovsdf_camera_init(&cam, 40, 30);
+    cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 0.0f; cam.target[2] = 1.0f;
+    cam.fov_y_deg = 90.0f;
+    c.method = FOVSDF_METHOD_SKIP;
+    c.skip_scale = 1.05f;
+    c.skip_eps = 0.001f;
+    fovsdf_init(&k, &c, &sc, &cam, gz, NULL, 0);
+    fovsdf_output_init(&o); o.start = start;
+    fovsdf_render_rows(&k, 0, 30, &o, NULL);
+    for (i = 0; i < 40u * 30u; ++i) {
+        if (start[i] > 10.0f) ++past;
+        if (start[i] > worst) worst = start[i];
+    }
+    check(past == 0 && worst > 9.0f, "skip_subtracted_hole_shrinks", "%u of 1200 starts past the wall at 10 (largest %.4f; an inflated hole would give ~10.5)",
+          past, (double)worst);
+}
+
+static void skip_tests(void)
+{
+    static uint8_t h0[160 * 90], h1[160 * 90];
+    fovsdf_config c = fovsdf_config_default();
+    fov_result r;
+    uint32_t id, i, mis;
+    c.method = FOVSDF_METHOD_SKIP;
+    r = init_with(c);
+    check(r == FOV_OK, "skip_default_config_ok", "got %d", (int)r);
+    c.skip_scale = -1.0f;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "skip_scale_negative", "got %d", (int)r);
+    c.skip_scale = 3.0f;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "skip_scale_3", "got %d", (int)r);
+    c.skip_scale = 0.0f; c.skip_eps = -0.1f;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "skip_eps_negative", "got %d", (int)r);
+    c.skip_eps = 0.0f; c.skip_block = 17;
+    r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "skip_block_17", "got %d", (int)r);
+    /* a heuristic: images within 3 % of classic's hit mask */
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+        vis_evals(id, FOVSDF_METHOD_CLASSIC, 1, 160, 90, h0, NULL, 0);
+        vis_evals(id, FOVSDF_METHOD_SKIP, 1, 160, 90, h1, NULL, 0);
+        for (mis = 0, i = 0; i < 160u * 90u; ++i) mis += h0[i] != h1[i];
+        check(100.0 * mis / (160.0 * 90.0) <= 3.0, N("skip_hit_mask_near_classic_%s", fovsdf_builtin_name(id)),
+              "%.2f %% of the pixels differ", 100.0 * mis / (160.0 * 90.0));
+    }
+    skip_sign_aware();
+    skip_hole_shrinks();
+    {   /* the shadow head start saves shadow evaluations (primitives, full shading) */
+        size_t sz;
+        void *mem;
+        fovsdf_builtin bi;
+        fovsdf_config a = fovsdf_config_default(), bcfg;
+        fovsdf_ctx ka, kb;
+        fovsdf_output o;
+        fovsdf_stats sa, sb;
+        fov_gaze gz = { 48.0f, 27.0f };
+        fovsdf_builtin_size(FOVSDF_SCENE_PRIMITIVES, &sz);
+        mem = malloc(sz);
+        fovsdf_builtin_init(FOVSDF_SCENE_PRIMITIVES, &bi, mem, sz);
+        bi.camera.width = 96; bi.camera.height = 54;
+        a.method = FOVSDF_METHOD_SKIP;
+        bcfg = a;
+        bcfg.skip_no_shadow_start = 1;
+        fovsdf_init(&ka, &a, &bi.scene, &bi.camera, gz, NULL, 0);
+        fovsdf_init(&kb, &bcfg, &bi.scene, &bi.camera, gz, NULL, 0);
+        fovsdf_output_init(&o);
+        memset(&sa, 0, sizeof sa); memset(&sb, 0, sizeof sb);
+        fovsdf_render_rows(&ka, 0, 54, &o, &sa);
+        fovsdf_render_rows(&kb, 0, 54, &o, &sb);
+        check(sa.evals_shadow * 5 < sb.evals_shadow * 4, "skip_shadow_head_start_saves",
+              "full-resolution shadow evaluations with head start %llu, without %llu",
+              (unsigned long long)sa.evals_shadow, (unsigned long long)sb.evals_shadow);
+        free(mem);
+    }
+}
+
 int main(void)
 {
+    skip_tests();
     min_filter_tests();
     ipr_bad_params();
     ipr_tests();
