@@ -642,6 +642,11 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
 FOVSDF_API void fovsdf_output_init(fovsdf_output *out);
 FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s);
 
+/* Rows per band for threading: the head-start methods work on grid-aligned tiles, and a call
+   whose rows cut a tile repeats that tile's coarse work. Split the image into row ranges that
+   start at multiples of this (cone_tile, ipr_tile, skip_block; 1 for the plain tracers).
+   Results never depend on the split, only the cost. */
+FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *ctx);
 /* Render rows [y0, y1) or the tile [x0, x1) x [y0, y1); stats (may be NULL) is added to. */
 FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *ctx, uint32_t y0, uint32_t y1,
                                          const fovsdf_output *out, fovsdf_stats *stats);
@@ -2556,27 +2561,11 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const
     /* Algorithm 2 of the thesis (Quilez's penumbra estimate): res = min(res, k h / t); full
        shadow as soon as res < eps (the algorithm's strict comparison); t_start is the head
        start. */
-    float res = 1.0f, t = t_start, inv, floor0;
-    uint32_t i;
     fovsdf_stats local;
-    uint64_t e0;
+    float tr;
     if (!c || !p || !l) return 1.0f;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
-    if (!(t > 0.0f)) t = 1e-6f;
-    e0 = st->evals;
-    inv = 1.0f / c->scene.lipschitz;
-    floor0 = 8.0f * FLT_EPSILON * fovsdf__len(p);
-    st->shadow_rays++;
-    for (i = 0; i < c->cfg.shadow_steps && t < t_end; ++i) {
-        float q[3], h;
-        q[0] = p[0] + l[0] * t; q[1] = p[1] + l[1] * t; q[2] = p[2] + l[2] * t;
-        h = fovsdf__eval_sc(&c->scene, inv, q, c->cfg.eps, 0, st);
-        res = fovsdf__minf(res, k * h / t);
-        if (res < c->cfg.shadow_eps) { res = 0.0f; break; }
-        t += fovsdf__maxf(h, floor0 + 8.0f * FLT_EPSILON * t);
-    }
-    st->evals_shadow += st->evals - e0;
-    return fovsdf__clampf(res, 0.0f, 1.0f);
+    return fovsdf__shadow(c, p, l, t_start, t_end, k, 1.0f, &tr, st);
 }
 
 FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t mat, float rgb[3])
@@ -3211,6 +3200,17 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     }
     if (stats) fovsdf_stats_add(stats, &local);
     return FOV_OK;
+}
+
+FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *c)
+{
+    if (!c) return 1;
+    switch (c->cfg.method) {
+    case FOVSDF_METHOD_CONE: return c->cfg.cone_tile;
+    case FOVSDF_METHOD_IPR: return c->cfg.ipr_tile;
+    case FOVSDF_METHOD_SKIP: return c->cfg.skip_block;
+    default: return 1;
+    }
 }
 
 FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint32_t y1, const fovsdf_output *o,

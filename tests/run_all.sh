@@ -51,33 +51,22 @@ WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror 
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # --- unit tests ---------------------------------------------------------------------------
-if build_test test_fovsdf tests/test_fovsdf.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
-    run_section unit_fovsdf build/tests/test_fovsdf
-fi
-if build_test test_fovsdf_nolibm tests/test_fovsdf.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
-    run_section unit_fovsdf_nolibm build/tests/test_fovsdf_nolibm
-fi
-if build_test test_fovsdf_san tests/test_fovsdf.c -std=c99 $SAN -I. -Itests/common -lm; then
-    run_section unit_fovsdf_sanitizers build/tests/test_fovsdf_san
-fi
-if build_test test_fovsdf_scene tests/test_fovsdf_scene.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
-    run_section scene_fovsdf build/tests/test_fovsdf_scene
-fi
-if build_test test_fovsdf_scene_nolibm tests/test_fovsdf_scene.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
-    run_section scene_fovsdf_nolibm build/tests/test_fovsdf_scene_nolibm
-fi
-if build_test test_fovsdf_scene_san tests/test_fovsdf_scene.c -std=c99 $SAN -I. -Itests/common -lm; then
-    run_section scene_fovsdf_sanitizers build/tests/test_fovsdf_scene_san
-fi
-if build_test test_fovsdf_accel tests/test_fovsdf_accel.c -std=c99 -O2 $WARN -I. -Itests/common -lm; then
-    run_section accel_fovsdf build/tests/test_fovsdf_accel
-fi
-if build_test test_fovsdf_accel_nolibm tests/test_fovsdf_accel.c -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
-    run_section accel_fovsdf_nolibm build/tests/test_fovsdf_accel_nolibm
-fi
-if build_test test_fovsdf_accel_san tests/test_fovsdf_accel.c -std=c99 $SAN -I. -Itests/common -lm; then
-    run_section accel_fovsdf_sanitizers build/tests/test_fovsdf_accel_san
-fi
+# three builds of each fovsdf test program: libm, FOV_NO_LIBM, sanitizers
+fovsdf_tests() {
+    local name=$1 src=$2
+    if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common -lm; then
+        run_section "$name" "build/tests/test_$name"
+    fi
+    if build_test "test_${name}_nolibm" "$src" -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
+        run_section "${name}_nolibm" "build/tests/test_${name}_nolibm"
+    fi
+    if build_test "test_${name}_san" "$src" -std=c99 $SAN -I. -Itests/common -lm; then
+        run_section "${name}_sanitizers" "build/tests/test_${name}_san"
+    fi
+}
+fovsdf_tests unit_fovsdf tests/test_fovsdf.c
+fovsdf_tests scene_fovsdf tests/test_fovsdf_scene.c
+fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

@@ -335,9 +335,9 @@ static void bad_params(void)
     check(r == FOV_ERR_INVALID_ARG, "finish_unknown", "got %d", (int)r);
 }
 
-/* The cone's cells are grid-aligned: rendering by 7-row bands or 13x11 tiles gives the same
-   bytes as one full render (as for the plain tracers). */
-static void cone_partition_invariant(void)
+/* Head-start cells are grid aligned: rendering by 7-row bands or by 13x11 tiles gives the same
+   bytes (colour and head starts) as one full render, as for the plain tracers. */
+static void partition_invariant(uint32_t method, uint32_t scene, uint32_t spp)
 {
     size_t sz;
     void *mem;
@@ -347,26 +347,27 @@ static void cone_partition_invariant(void)
     fovsdf_output o;
     fov_gaze gz = { 50.0f, 30.0f };
     static float a[100 * 57 * 3], b[100 * 57 * 3], sa[100 * 57], sb[100 * 57];
-    uint32_t y, x, diff = 0, diff_s = 0;
-    fovsdf_builtin_size(FOVSDF_SCENE_PRIMITIVES, &sz);
+    uint32_t y, x;
+    int same;
+    fovsdf_builtin_size(scene, &sz);
     mem = malloc(sz);
-    fovsdf_builtin_init(FOVSDF_SCENE_PRIMITIVES, &bi, mem, sz);
+    fovsdf_builtin_init(scene, &bi, mem, sz);
     bi.camera.width = 100; bi.camera.height = 57;
-    c.method = FOVSDF_METHOD_CONE;
-    c.spp = 4;
+    c.method = method;
+    c.spp = spp;
     fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
     fovsdf_output_init(&o); o.rgb = a; o.start = sa;
     fovsdf_render_rows(&k, 0, 57, &o, NULL);
     o.rgb = b; o.start = sb;
     for (y = 0; y < 57; y += 7) fovsdf_render_rows(&k, y, y + 7 < 57 ? y + 7 : 57, &o, NULL);
-    diff = (uint32_t)(memcmp(a, b, sizeof a) != 0);
-    diff_s = (uint32_t)(memcmp(sa, sb, sizeof sa) != 0);
-    check(!diff && !diff_s, "cone_rows_in_bands_identical", "rgb differs %u, start differs %u", diff, diff_s);
+    same = memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0;
+    check(same, N("%s_rows_in_bands_identical", fovsdf_method_name(method)), "differs from the full render");
     memset(b, 0, sizeof b);
+    memset(sb, 0, sizeof sb);
     for (y = 0; y < 57; y += 11)
-        for (x = 0; x < 100; x += 13)
-            fovsdf_render_tile(&k, x, y, x + 13 < 100 ? x + 13 : 100, y + 11 < 57 ? y + 11 : 57, &o, NULL);
-    check(memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0, "cone_tiles_identical", "13x11 tiles differ from the full render");
+        for (x = 0; x < 100; x += 13) fovsdf_render_tile(&k, x, y, x + 13 < 100 ? x + 13 : 100, y + 11 < 57 ? y + 11 : 57, &o, NULL);
+    same = memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0;
+    check(same, N("%s_tiles_identical", fovsdf_method_name(method)), "13x11 tiles differ from the full render");
     free(mem);
 }
 
@@ -494,35 +495,6 @@ static void ipr_tests(void)
     vis_evals(FOVSDF_SCENE_PRIMITIVES, FOVSDF_METHOD_IPR, 1, 96, 54, h1, s1, 1);
     for (mis = 0, i = 0; i < 96u * 54u; ++i) mis += s1[i] > 0.0f;
     check(mis == 0, "ipr_one_level_no_head_start", "%u pixels start past 0", mis);
-}
-
-static void ipr_partition_invariant(void)
-{
-    size_t sz;
-    void *mem;
-    fovsdf_builtin bi;
-    fovsdf_config c = fovsdf_config_default();
-    fovsdf_ctx k;
-    fovsdf_output o;
-    fov_gaze gz = { 50.0f, 30.0f };
-    static float a[100 * 57 * 3], b[100 * 57 * 3];
-    uint32_t y, x;
-    fovsdf_builtin_size(FOVSDF_SCENE_ATRIUM, &sz);
-    mem = malloc(sz);
-    fovsdf_builtin_init(FOVSDF_SCENE_ATRIUM, &bi, mem, sz);
-    bi.camera.width = 100; bi.camera.height = 57;
-    c.method = FOVSDF_METHOD_IPR;
-    fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
-    fovsdf_output_init(&o); o.rgb = a;
-    fovsdf_render_rows(&k, 0, 57, &o, NULL);
-    o.rgb = b;
-    for (y = 0; y < 57; y += 7) fovsdf_render_rows(&k, y, y + 7 < 57 ? y + 7 : 57, &o, NULL);
-    check(memcmp(a, b, sizeof a) == 0, "ipr_rows_in_bands_identical", "differs");
-    memset(b, 0, sizeof b);
-    for (y = 0; y < 57; y += 11)
-        for (x = 0; x < 100; x += 13) fovsdf_render_tile(&k, x, y, x + 13 < 100 ? x + 13 : 100, y + 11 < 57 ? y + 11 : 57, &o, NULL);
-    check(memcmp(a, b, sizeof a) == 0, "ipr_tiles_identical", "differs");
-    free(mem);
 }
 
 /* ---- Skipping Spheres ---------------------------------------------------------------------- */
@@ -672,8 +644,9 @@ int main(void)
     min_filter_tests();
     ipr_bad_params();
     ipr_tests();
-    ipr_partition_invariant();
-    cone_partition_invariant();
+    partition_invariant(FOVSDF_METHOD_CONE, FOVSDF_SCENE_PRIMITIVES, 4);
+    partition_invariant(FOVSDF_METHOD_IPR, FOVSDF_SCENE_ATRIUM, 1);
+    partition_invariant(FOVSDF_METHOD_SKIP, FOVSDF_SCENE_COLUMNS, 1);
     bad_params();
     cone_vs_classic();
     cone_property();

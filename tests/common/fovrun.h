@@ -32,19 +32,22 @@ static double fovrun_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
-/* Renders the whole image with nthreads threads in 4-row bands; returns the wall time in ms
-   and the summed stats in *st. */
+/* Renders the whole image with nthreads threads in bands of fovsdf_band_rows rows (at least 4)
+   handed out round robin; returns the wall time in ms and the summed stats in *st. */
 static double fovrun_render(const fovsdf_ctx *ctx, const fovsdf_output *out, int nthreads, fovsdf_stats *st)
 {
     pthread_t th[64];
     fovrun_job jobs[64];
     int i;
+    uint32_t band;
     double t0 = fovrun_now_ms();
     if (nthreads < 1) nthreads = 1;
     if (nthreads > 64) nthreads = 64;
+    band = fovsdf_band_rows(ctx);
+    if (band < 4) band = 4;
     for (i = 0; i < nthreads; ++i) {
         memset(&jobs[i], 0, sizeof jobs[i]);
-        jobs[i].ctx = ctx; jobs[i].out = out; jobs[i].band = 4; jobs[i].first = (uint32_t)i;
+        jobs[i].ctx = ctx; jobs[i].out = out; jobs[i].band = band; jobs[i].first = (uint32_t)i;
         jobs[i].step = (uint32_t)nthreads; jobs[i].height = ctx->cam.height;
         pthread_create(&th[i], NULL, fovrun_worker, &jobs[i]);
     }
