@@ -118,6 +118,9 @@ THREADING
    No function keeps state between calls except in the objects you pass. fovsdf_init fills a
    context that is read-only afterwards: call fovsdf_render_rows / fovsdf_render_tile on
    disjoint rows or tiles from as many threads as you like, each with its own fovsdf_stats.
+   The head-start methods work on grid-aligned tiles: split the rows at multiples of
+   fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
+   image is the same either way).
 
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c establishes it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).

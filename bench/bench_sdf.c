@@ -212,11 +212,14 @@ int main(int argc, char **argv)
     /* plots: speed-up against PSNR per scene */
     if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
         FILE *gp = popen("gnuplot", "w");
+        const char *slash = strrchr(outpath, '/');
+        int dirlen = slash ? (int)(slash - outpath + 1) : 0;
         if (gp) {
             for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
                 const char *nm = fovsdf_builtin_name(id);
                 if (!strstr(scenes, nm)) continue;
-                fprintf(gp, "set terminal pngcairo size 800,500; set output 'bench/results/sdf_%s.png'\n", nm);
+                /* next to the CSV: bench/results/sdf_<scene>.png for the default --out */
+                fprintf(gp, "set terminal pngcairo size 800,500; set output '%.*ssdf_%s.png'\n", dirlen, outpath, nm);
                 fprintf(gp, "set datafile separator ','; set key off; set grid\n");
                 fprintf(gp, "set title '%s: speed-up against classic vs error (%ux%u)'\n", nm, W, H);
                 fprintf(gp, "set xlabel 'time ratio classic / method (same run)'; set ylabel 'PSNR against ground truth (dB)'\n");
@@ -224,7 +227,7 @@ int main(int argc, char **argv)
                         outpath, nm);
             }
             pclose(gp);
-            fprintf(stderr, "plots in bench/results/sdf_<scene>.png\n");
+            fprintf(stderr, "plots next to %s: sdf_<scene>.png\n", outpath);
         }
     } else {
         fprintf(stderr, "gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
