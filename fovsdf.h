@@ -635,6 +635,25 @@ FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y); /* de
 /* Pixels per degree at the gaze point (radial direction), e.g. for FLIP. */
 FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m);
 
+/* Acuity model of the thesis (Eq. 4.1, 4.2, 5.1): the probability that a pixel at eccentricity
+   w (degrees) is traced at full resolution, p(w) = A exp(-rate w) + C, with p = 1 inside the
+   fovea and 0 beyond the outer periphery (outer_deg 0: no outer zone). The OCR of the thesis
+   garbles the exponent; we read it as a rate of 0.20651 per degree (tau = 4.842 degrees), the
+   one reading that matches the thesis's own "75 % lower at 6 degrees" (p(6) = 0.271 against
+   p(0) = 0.918) and the hyperbolic fall-off it cites (notes seed000 section 4.2). */
+typedef struct fovsdf_acuity {
+    float A;          /* 0.90964 */
+    float rate;       /* per degree, 1 / tau: 0.20651 */
+    float C;          /* 0.00792 */
+    float fovea_deg;  /* p = 1 below: 7.5 (the thesis's imperceptible fovea) */
+    float outer_deg;  /* p = 0 beyond (0: never) */
+} fovsdf_acuity;
+FOVSDF_API fovsdf_acuity fovsdf_acuity_default(void);
+FOVSDF_API float fovsdf_acuity_p(const fovsdf_acuity *a, float ecc_deg); /* 0 for bad input */
+/* A deterministic uniform number in [0, 1) per (seed, x, y, frame): a 32-bit integer hash, the
+   same on every target, for Bernoulli masks (mask = u < p) that repeat for a seed. */
+FOVSDF_API float fovsdf_u01(uint32_t seed, uint32_t x, uint32_t y, uint32_t frame);
+
 /* Working memory for a config and camera (0 for the tracers of this version). */
 FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam,
                                          size_t *bytes);
@@ -2656,6 +2675,38 @@ FOVSDF_API void fovsdf_shade(const fovsdf_ctx *c, const float p[3], const float 
 }
 
 /* ---- context ------------------------------------------------------------------------------- */
+FOVSDF_API fovsdf_acuity fovsdf_acuity_default(void)
+{
+    fovsdf_acuity a;
+    a.A = 0.90964f;
+    a.rate = 0.20651f;
+    a.C = 0.00792f;
+    a.fovea_deg = 7.5f;
+    a.outer_deg = 0.0f;
+    return a;
+}
+
+FOVSDF_API float fovsdf_acuity_p(const fovsdf_acuity *a, float w)
+{
+    float p;
+    if (!a || !fovsdf__finite(w) || !fovsdf__finite(a->A) || !fovsdf__finite(a->rate) || !fovsdf__finite(a->C)) return 0.0f;
+    if (w <= a->fovea_deg) return 1.0f;
+    if (a->outer_deg > 0.0f && w > a->outer_deg) return 0.0f;
+    p = a->A * FOVSDF__EXP(-a->rate * w) + a->C;
+    return fovsdf__clampf(p, 0.0f, 1.0f);
+}
+
+FOVSDF_API float fovsdf_u01(uint32_t seed, uint32_t x, uint32_t y, uint32_t frame)
+{
+    /* integer mixing (murmur3-style finaliser over the combined key) */
+    uint32_t h = seed ^ 0x9e3779b9u;
+    h ^= x * 0x85ebca6bu; h = (h << 13) | (h >> 19); h = h * 5u + 0xe6546b64u;
+    h ^= y * 0xc2b2ae35u; h = (h << 13) | (h >> 19); h = h * 5u + 0xe6546b64u;
+    h ^= frame * 0x27d4eb2fu; h = (h << 13) | (h >> 19); h = h * 5u + 0xe6546b64u;
+    h ^= h >> 16; h *= 0x85ebca6bu; h ^= h >> 13; h *= 0xc2b2ae35u; h ^= h >> 16;
+    return (float)(h >> 8) * (1.0f / 16777216.0f); /* 24 bits: exact in float */
+}
+
 FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam, size_t *bytes)
 {
     fovsdf_config c;

@@ -638,8 +638,97 @@ static void skip_tests(void)
     }
 }
 
+/* ---- FIPR building blocks: acuity, deterministic uniforms, Bernoulli mask density --------- */
+static void acuity_tests(void)
+{
+    fovsdf_acuity a = fovsdf_acuity_default();
+    const double w[9] = { 0, 2.5, 5, 6, 7.5, 10, 15, 20, 30 };
+    int i, bad = 0;
+    double worst = 0.0;
+    a.fovea_deg = -1.0f; /* the raw curve */
+    for (i = 0; i < 9; ++i) {
+        double want = 0.90964 * exp(-0.20651 * w[i]) + 0.00792, got = (double)fovsdf_acuity_p(&a, (float)w[i]);
+        if (fabs(got - want) > worst) worst = fabs(got - want);
+        if (fabs(got - want) > 1e-5) ++bad;
+    }
+    check(bad == 0, "acuity_curve_values", "%d of 9 values off by more than 1e-5 (worst %.3g)", bad, worst);
+    /* the notes' table (seed000 section 4.2): 0.918 0.551 0.332 0.271 0.201 0.123 0.049 0.023 0.010 */
+    check(fabs((double)fovsdf_acuity_p(&a, 6.0f) - 0.271) < 5e-4 && fabs((double)fovsdf_acuity_p(&a, 0.0f) - 0.918) < 5e-4 &&
+              fabs((double)fovsdf_acuity_p(&a, 30.0f) - 0.010) < 5e-4,
+          "acuity_matches_notes_table", "p(0) %.4f p(6) %.4f p(30) %.4f", (double)fovsdf_acuity_p(&a, 0.0f),
+          (double)fovsdf_acuity_p(&a, 6.0f), (double)fovsdf_acuity_p(&a, 30.0f));
+    a = fovsdf_acuity_default();
+    a.outer_deg = 25.0f;
+    check(fovsdf_acuity_p(&a, 7.0f) >= 1.0f && fovsdf_acuity_p(&a, 8.0f) < 0.3f && fovsdf_acuity_p(&a, 26.0f) <= 0.0f,
+          "acuity_zones", "fovea %.3f, periphery %.3f, outer %.3f", (double)fovsdf_acuity_p(&a, 7.0f),
+          (double)fovsdf_acuity_p(&a, 8.0f), (double)fovsdf_acuity_p(&a, 26.0f));
+    check(fovsdf_acuity_p(NULL, 3.0f) <= 0.0f && fovsdf_acuity_p(&a, (float)NAN) <= 0.0f, "acuity_bad_input", "nonzero");
+}
+
+static void u01_tests(void)
+{
+    uint32_t x, y, hist[16] = { 0 }, n = 0, same = 0, diff_seed = 0;
+    double chi = 0.0;
+    for (y = 0; y < 256; ++y)
+        for (x = 0; x < 256; ++x) {
+            float u = fovsdf_u01(7u, x, y, 3u);
+            if (!(u >= 0.0f && u < 1.0f)) { ++n; continue; }
+            hist[(int)(u * 16.0f)]++;
+            same += fovsdf_u01(7u, x, y, 3u) >= u && fovsdf_u01(7u, x, y, 3u) <= u;
+            diff_seed += fovsdf_u01(8u, x, y, 3u) < u || fovsdf_u01(8u, x, y, 3u) > u;
+        }
+    for (x = 0; x < 16; ++x) chi += ((double)hist[x] - 4096.0) * ((double)hist[x] - 4096.0) / 4096.0;
+    check(n == 0 && same == 65536, "u01_range_and_determinism", "%u out of range, %u of 65536 repeat", n, same);
+    check(diff_seed > 65000, "u01_seed_changes_values", "%u of 65536 differ", diff_seed);
+    /* 15 degrees of freedom: chi^2 above 37.7 has probability 0.001 */
+    check(chi < 37.7, "u01_uniform_chi_square", "chi^2 = %.2f over 16 bins", chi);
+}
+
+/* Bernoulli mask (u < p(w)) over an image: the traced fraction per eccentricity ring matches the
+   ring's mean p within 4 binomial standard deviations. */
+static void mask_density_tests(void)
+{
+    fovsdf_acuity a = fovsdf_acuity_default();
+    fov_ecc_model m;
+    fov_display d;
+    fov_gaze g = { 320.0f, 180.0f };
+    double sum_p[8] = { 0 }, cnt[8] = { 0 }, traced[8] = { 0 };
+    uint32_t x, y, k, bad = 0, rep2 = 0;
+    char where[160] = "";
+    memset(&d, 0, sizeof d);
+    fovsdf_ecc_init(&m, &d, 60.0f, 640, 360, g);
+    for (y = 0; y < 360; ++y)
+        for (x = 0; x < 640; ++x) {
+            float w = fovsdf_ecc_deg(&m, (float)x + 0.5f, (float)y + 0.5f), p = fovsdf_acuity_p(&a, w);
+            int ring = (int)(w / 5.0f);
+            if (ring > 7) ring = 7;
+            sum_p[ring] += (double)p;
+            cnt[ring] += 1.0;
+            traced[ring] += fovsdf_u01(42u, x, y, 0u) < p ? 1.0 : 0.0;
+            rep2 += (fovsdf_u01(42u, x, y, 0u) < p) == (fovsdf_u01(42u, x, y, 0u) < p);
+        }
+    for (k = 0; k < 8; ++k) {
+        double mean, var, sd;
+        if (cnt[k] < 100.0) continue;
+        mean = sum_p[k];
+        var = 0.0;
+        /* variance of a sum of independent Bernoullis <= n/4; use the ring's p(1-p) bound */
+        var = mean * (1.0 - mean / cnt[k]);
+        sd = sqrt(var > 1.0 ? var : 1.0);
+        if (fabs(traced[k] - mean) > 4.0 * sd) {
+            ++bad;
+            snprintf(where, sizeof where, "ring %u: traced %.0f of %.0f, expected %.1f (sd %.1f)", k, traced[k], cnt[k], mean, sd);
+        }
+    }
+    check(bad == 0, "mask_density_matches_acuity", "%u rings outside 4 sd; %s", bad, where);
+    check(rep2 == 640u * 360u, "mask_deterministic_for_seed", "%u of %u repeat", rep2, 640u * 360u);
+}
+
 int main(void)
 {
+    acuity_tests();
+    u01_tests();
+    mask_density_tests();
     skip_tests();
     min_filter_tests();
     ipr_bad_params();
