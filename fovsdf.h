@@ -3275,7 +3275,9 @@ FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint3
 }
 
 /* ---- built-in scenes (modelled on the thesis's test scenes, notes seed000 section 2.3) ----- */
-#define FOVSDF__SCENE_NODES 160u
+/* Node capacity of each built-in scene (exactly what its builder creates: a scene that grows
+   without updating this fails fovsdf_builtin_init with FOV_ERR_TOO_SMALL, which the tests see). */
+static const uint32_t fovsdf__scene_nodes[_FOVSDF_SCENE_NUM] = { 67u, 25u, 20u, 61u, 28u, 9u };
 
 FOVSDF__PRIV int32_t fovsdf__at(fovsdf_builder *b, int32_t x, float tx, float ty, float tz)
 {
@@ -3543,9 +3545,9 @@ FOVSDF_API fov_result fovsdf_builtin_size(uint32_t id, size_t *bytes)
     if (!bytes) return FOV_ERR_NULL;
     if (id >= (uint32_t)_FOVSDF_SCENE_NUM) return FOV_ERR_INVALID_ARG;
     FOV_MEMSET(&dummy, 0, sizeof dummy);
-    r = fovsdf_program_size(&dummy, FOVSDF__SCENE_NODES, 0, &prog);
+    r = fovsdf_program_size(&dummy, fovsdf__scene_nodes[id], 0, &prog);
     if (r != FOV_OK) return r;
-    *bytes = 16u + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES) + prog;
+    *bytes = 16u + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]) + prog;
     return FOV_OK;
 }
 
@@ -3567,7 +3569,7 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
     prog = (fovsdf_program *)(void *)base;
     nodes = (fovsdf_node *)(void *)(base + fovsdf__align(sizeof(fovsdf_program)));
     FOV_MEMSET(o, 0, sizeof *o);
-    fovsdf_builder_init(&b, nodes, FOVSDF__SCENE_NODES);
+    fovsdf_builder_init(&b, nodes, fovsdf__scene_nodes[id]);
     switch (id) {
     case FOVSDF_SCENE_PRIMITIVES: root = fovsdf__scene_primitives(&b, o); break;
     case FOVSDF_SCENE_COLUMNS: root = fovsdf__scene_columns(&b, o); break;
@@ -3579,9 +3581,9 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
     if (b.err != FOV_OK) return b.err;
     if (root < 0) return FOV_ERR_INVALID_ARG;
     r = fovsdf_program_build(prog, nodes, b.count, root,
-                             base + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES),
+                             base + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]),
                              bytes - (size_t)(base - (unsigned char *)mem) - fovsdf__align(sizeof(fovsdf_program)) -
-                                 fovsdf__align(sizeof(fovsdf_node) * FOVSDF__SCENE_NODES));
+                                 fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]));
     if (r != FOV_OK) return r;
     fovsdf_scene_set_program(&o->scene, prog);
     o->program = prog;
