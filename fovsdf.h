@@ -541,7 +541,6 @@ typedef struct fovsdf_ctx {  /* filled by fovsdf_init; read-only afterwards */
     float tan_half_y, aspect;
     float pixel_angle;       /* angle of one pixel at the image centre, radians */
     float t_max;
-    float ulp_base;          /* 8 * FLT_EPSILON * |origin| */
     float cam_dist;          /* the scene's distance at the camera (sign: inside < 0) */
     void *mem;
     size_t mem_size;
@@ -2306,9 +2305,9 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
 {
     float t = t0, p[3], d, pt = t0, pd = 0.0f;
     int hp = 0;
-    uint32_t steps = 0, ev0 = st ? (uint32_t)st->evals : 0;
+    uint32_t steps = 0, ev0;
     fovsdf_stats local;
-    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; ev0 = 0; }
+    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     ev0 = (uint32_t)st->evals;
     h->kind = FOVSDF_MISS;
     if (t0 > m->t_max) { /* nothing to march: a miss for every method */
@@ -2798,7 +2797,6 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     ctx->aspect = (float)cam->width / (float)cam->height;
     ctx->pixel_angle = 2.0f * tanh / (float)cam->height;
     ctx->t_max = c.t_max > 0.0f ? c.t_max : (scene->t_max > 0.0f ? scene->t_max : 100.0f);
-    ctx->ulp_base = 8.0f * FLT_EPSILON * fovsdf__len(ctx->origin);
     ctx->mem = mem;
     ctx->mem_size = mem_size;
     ctx->cam_dist = fovsdf__eval_sc(&ctx->scene, 1.0f / ctx->scene.lipschitz, ctx->origin, c.eps, 0, 0);

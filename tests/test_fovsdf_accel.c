@@ -243,12 +243,24 @@ static void cone_property(void)
           empty, where);
 }
 
+/* A built-in scene at w x h (free the returned memory). */
+static void *load_builtin(uint32_t id, uint32_t w, uint32_t h, fovsdf_builtin *bi)
+{
+    size_t sz;
+    void *mem;
+    fovsdf_builtin_size(id, &sz);
+    mem = malloc(sz);
+    fovsdf_builtin_init(id, bi, mem, sz);
+    bi->camera.width = w;
+    bi->camera.height = h;
+    return mem;
+}
+
 /* The cone images agree with classic sphere tracing on the built-in scenes. */
 static void cone_vs_classic(void)
 {
     uint32_t id;
     for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
-        size_t sz;
         void *mem;
         fovsdf_builtin bi;
         fovsdf_config c0 = fovsdf_config_default(), c1;
@@ -260,10 +272,7 @@ static void cone_vs_classic(void)
         static float f0[120 * 68 * 3], f1[120 * 68 * 3];
         uint32_t i, mis = 0;
         double se = 0.0;
-        fovsdf_builtin_size(id, &sz);
-        mem = malloc(sz);
-        fovsdf_builtin_init(id, &bi, mem, sz);
-        bi.camera.width = 120; bi.camera.height = 68;
+        mem = load_builtin(id, 120, 68, &bi);
         c0.shading = FOVSDF_SHADE_NORMALS;
         c1 = c0;
         c1.method = FOVSDF_METHOD_CONE;
@@ -339,7 +348,6 @@ static void bad_params(void)
    bytes (colour and head starts) as one full render, as for the plain tracers. */
 static void partition_invariant(uint32_t method, uint32_t scene, uint32_t spp)
 {
-    size_t sz;
     void *mem;
     fovsdf_builtin bi;
     fovsdf_config c = fovsdf_config_default();
@@ -349,10 +357,7 @@ static void partition_invariant(uint32_t method, uint32_t scene, uint32_t spp)
     static float a[100 * 57 * 3], b[100 * 57 * 3], sa[100 * 57], sb[100 * 57];
     uint32_t y, x;
     int same;
-    fovsdf_builtin_size(scene, &sz);
-    mem = malloc(sz);
-    fovsdf_builtin_init(scene, &bi, mem, sz);
-    bi.camera.width = 100; bi.camera.height = 57;
+    mem = load_builtin(scene, 100, 57, &bi);
     c.method = method;
     c.spp = spp;
     fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
@@ -440,7 +445,6 @@ static void ipr_bad_params(void)
 static double vis_evals(uint32_t id, uint32_t method, uint32_t spp, uint32_t w, uint32_t h, uint8_t *hit, float *start,
                         uint32_t levels)
 {
-    size_t sz;
     void *mem;
     fovsdf_builtin bi;
     fovsdf_config c = fovsdf_config_default();
@@ -448,10 +452,7 @@ static double vis_evals(uint32_t id, uint32_t method, uint32_t spp, uint32_t w, 
     fovsdf_output o;
     fovsdf_stats st;
     fov_gaze gz;
-    fovsdf_builtin_size(id, &sz);
-    mem = malloc(sz);
-    fovsdf_builtin_init(id, &bi, mem, sz);
-    bi.camera.width = w; bi.camera.height = h;
+    mem = load_builtin(id, w, h, &bi);
     gz.x = 0.5f * (float)w; gz.y = 0.5f * (float)h;
     c.method = method; c.spp = spp; c.shading = FOVSDF_SHADE_DEPTH; c.ipr_levels = levels;
     c.finish = FOVSDF_FINISH_CLASSIC;
@@ -610,7 +611,6 @@ static void skip_tests(void)
     skip_sign_aware();
     skip_hole_shrinks();
     {   /* the shadow head start saves shadow evaluations (primitives, full shading) */
-        size_t sz;
         void *mem;
         fovsdf_builtin bi;
         fovsdf_config a = fovsdf_config_default(), bcfg;
@@ -618,10 +618,7 @@ static void skip_tests(void)
         fovsdf_output o;
         fovsdf_stats sa, sb;
         fov_gaze gz = { 48.0f, 27.0f };
-        fovsdf_builtin_size(FOVSDF_SCENE_PRIMITIVES, &sz);
-        mem = malloc(sz);
-        fovsdf_builtin_init(FOVSDF_SCENE_PRIMITIVES, &bi, mem, sz);
-        bi.camera.width = 96; bi.camera.height = 54;
+        mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, 96, 54, &bi);
         a.method = FOVSDF_METHOD_SKIP;
         bcfg = a;
         bcfg.skip_no_shadow_start = 1;
