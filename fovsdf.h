@@ -271,6 +271,8 @@ typedef enum fovsdf_method {
     FOVSDF_METHOD_CONE = 4,        /* conservative cone pyramid head start (beyond the thesis) */
     FOVSDF_METHOD_IPR = 5,         /* inverted pyramid with minimum filter (thesis ch. 5) */
     FOVSDF_METHOD_SKIP = 6,        /* Skipping Spheres: scaled SDF, early termination (ch. 6) */
+    FOVSDF_METHOD_FIPR = 7,        /* foveated IPR: acuity and edge mask, mid level elsewhere */
+    FOVSDF_METHOD_CONE_FOV = 8,    /* the FIPR mask and refresh on the cone pyramid */
     _FOVSDF_METHOD_NUM,
     _FOVSDF_METHOD_FORCE_U32 = 0x7FFFFFFF
 } fovsdf_method;
@@ -293,6 +295,20 @@ typedef enum fovsdf_shading {
     _FOVSDF_SHADE_NUM,
     _FOVSDF_SHADE_FORCE_U32 = 0x7FFFFFFF
 } fovsdf_shading;
+
+/* Acuity model of the thesis (Eq. 4.1, 4.2, 5.1): the probability that a pixel at eccentricity
+   w (degrees) is traced at full resolution, p(w) = A exp(-rate w) + C, with p = 1 inside the
+   fovea and 0 beyond the outer periphery (outer_deg 0: no outer zone). The OCR of the thesis
+   garbles the exponent; we read it as a rate of 0.20651 per degree (tau = 4.842 degrees), the
+   one reading that matches the thesis's own "75 % lower at 6 degrees" (p(6) = 0.271 against
+   p(0) = 0.918) and the hyperbolic fall-off it cites (notes seed000 section 4.2). */
+typedef struct fovsdf_acuity {
+    float A;          /* 0.90964 */
+    float rate;       /* per degree, 1 / tau: 0.20651 */
+    float C;          /* 0.00792 */
+    float fovea_deg;  /* p = 1 below: 7.5 (the thesis's imperceptible fovea) */
+    float outer_deg;  /* p = 0 beyond (0: never) */
+} fovsdf_acuity;
 
 /* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
 typedef struct fovsdf_config {
@@ -332,9 +348,30 @@ typedef struct fovsdf_config {
     uint32_t skip_no_shadow_start; /* SKIP: 1 = shadow rays get no head start            */
     uint32_t finish;        /* head-start methods: tracer of the sample rays from their head
                                start, fovsdf_finish                                 0: bv2018 */
+    /* FIPR and CONE_FOV: which pixels trace their own sample rays (see FOVEATED METHODS) */
+    fovsdf_acuity acuity;   /* p(w); a zero field takes its default (fovsdf_acuity_default:
+                               fovea 7.5 degrees of eccentricity, no outer zone) */
+    uint32_t fov_mask;      /* fovsdf_fov_mask: how fovea, acuity and edges combine  0: edges */
+    float edge_threshold;   /* relative depth change per low-resolution cell (Sobel) that
+                               makes an edge, > 0                                    0: 0.1 */
+    uint32_t refresh;       /* pixels outside the mask are refreshed every refresh-th frame:
+                               1, 2 or 4 (the thesis's 1/1, 1/2, 1/4 rates)          0: 1 */
+    uint32_t frame;         /* frame number: which quarter or half of the periphery refreshes */
+    uint32_t seed;          /* seed of the mask's random numbers (fovsdf_u01) */
     fov_display display;    /* for eccentricity; all zero: the camera's field of view */
     fov_logger logger;      /* optional diagnostics */
 } fovsdf_config;
+
+/* How FIPR and CONE_FOV choose the pixels that trace their own sample rays (the rest take the
+   mid level, interpolated). u = fovsdf_u01(seed, x, y, 0), p = fovsdf_acuity_p(acuity, w). */
+typedef enum fovsdf_fov_mask {
+    FOVSDF_MASK_EDGES = 0,  /* fovea OR (edge AND u < p): the thesis's edges-in-the-periphery
+                               reading (default) */
+    FOVSDF_MASK_ACUITY = 1, /* fovea OR u < p: acuity alone (the chapter 4 sampling) */
+    FOVSDF_MASK_FOVEA = 2,  /* fovea only */
+    _FOVSDF_MASK_NUM,
+    _FOVSDF_MASK_FORCE_U32 = 0x7FFFFFFF
+} fovsdf_fov_mask;
 
 /* Tracer of the sample rays after a head start (CONE). Measured over the built-in scenes at
    320x180: the Balint-Valasek step needs 15 % fewer evaluations than classic from a head start. */
@@ -562,6 +599,10 @@ typedef struct fovsdf_output {
                                                         start; 0 without one; t_max when a
                                                         conservative pass proved it empty) */
     int32_t *material;     uint32_t material_stride;  /* of the nearest hit, -1 for a miss */
+    uint8_t *mask;         uint32_t mask_stride;     /* how the pixel was made: 1 its own sample
+                                                        rays (every method but FIPR/CONE_FOV);
+                                                        0 interpolated from the mid level; 2 kept
+                                                        from an earlier frame (not written) */
 } fovsdf_output;
 
 /* Deterministic counters; add them up across threads yourself. */
@@ -634,19 +675,6 @@ FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y); /* de
 /* Pixels per degree at the gaze point (radial direction), e.g. for FLIP. */
 FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m);
 
-/* Acuity model of the thesis (Eq. 4.1, 4.2, 5.1): the probability that a pixel at eccentricity
-   w (degrees) is traced at full resolution, p(w) = A exp(-rate w) + C, with p = 1 inside the
-   fovea and 0 beyond the outer periphery (outer_deg 0: no outer zone). The OCR of the thesis
-   garbles the exponent; we read it as a rate of 0.20651 per degree (tau = 4.842 degrees), the
-   one reading that matches the thesis's own "75 % lower at 6 degrees" (p(6) = 0.271 against
-   p(0) = 0.918) and the hyperbolic fall-off it cites (notes seed000 section 4.2). */
-typedef struct fovsdf_acuity {
-    float A;          /* 0.90964 */
-    float rate;       /* per degree, 1 / tau: 0.20651 */
-    float C;          /* 0.00792 */
-    float fovea_deg;  /* p = 1 below: 7.5 (the thesis's imperceptible fovea) */
-    float outer_deg;  /* p = 0 beyond (0: never) */
-} fovsdf_acuity;
 FOVSDF_API fovsdf_acuity fovsdf_acuity_default(void);
 FOVSDF_API float fovsdf_acuity_p(const fovsdf_acuity *a, float ecc_deg); /* 0 for bad input */
 /* A deterministic uniform number in [0, 1) per (seed, x, y, frame): a 32-bit integer hash, the
@@ -1037,6 +1065,16 @@ FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r
     }
     return n;
 }
+#ifndef FOVSDF_FOV_CELLS /* mid-level cells per FIPR / CONE_FOV tile (28 bytes each, stack) */
+#define FOVSDF_FOV_CELLS 324
+#endif
+/* FIPR / CONE_FOV: mid-level cells of a tile with its apron (at least one cell for the
+   bilinear reconstruction, r for the minimum filter). */
+FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r)
+{
+    size_t side = (size_t)(tile / 2u) + 2u * (size_t)(r > 1 ? r : 1);
+    return side * side;
+}
 #ifndef FOVSDF_CONE_SLACK /* a cone stops when f <= t k (1 + slack): earlier is always safe */
 #define FOVSDF_CONE_SLACK 0.5f
 #endif
@@ -1110,7 +1148,8 @@ FOVSDF_API const char *fovsdf_result_string(fov_result r)
 
 FOVSDF_API const char *fovsdf_method_name(uint32_t method)
 {
-    static const char *const names[] = { "classic", "relaxed", "autorelaxed", "bv2018", "cone", "ipr", "skip" };
+    static const char *const names[] = { "classic", "relaxed", "autorelaxed", "bv2018", "cone",
+                                         "ipr", "skip", "fipr", "cone_fov" };
     return method < (uint32_t)_FOVSDF_METHOD_NUM ? names[method] : "unknown";
 }
 
@@ -1199,6 +1238,34 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         if (c.cone_levels > lv) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cone_levels above log2(cone_tile) + 1");
     }
     if (fovsdf__is0(c.shadow_t0)) c.shadow_t0 = 1e-2f;
+    {
+        fovsdf_acuity d = fovsdf_acuity_default();
+        if (!fovsdf__finite(c.acuity.A) || !fovsdf__finite(c.acuity.rate) || !fovsdf__finite(c.acuity.C) ||
+            !fovsdf__finite(c.acuity.fovea_deg) || !fovsdf__finite(c.acuity.outer_deg) || !fovsdf__finite(c.edge_threshold))
+            FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: acuity or edge_threshold not finite");
+        if (c.acuity.A < 0.0f || c.acuity.rate < 0.0f || c.acuity.C < 0.0f || c.acuity.fovea_deg < 0.0f ||
+            c.acuity.outer_deg < 0.0f || c.edge_threshold < 0.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative acuity parameter or edge_threshold");
+        if (fovsdf__is0(c.acuity.A)) c.acuity.A = d.A;
+        if (fovsdf__is0(c.acuity.rate)) c.acuity.rate = d.rate;
+        if (fovsdf__is0(c.acuity.C)) c.acuity.C = d.C;
+        if (fovsdf__is0(c.acuity.fovea_deg)) c.acuity.fovea_deg = d.fovea_deg;
+        if (c.acuity.A + c.acuity.C > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity A + C above 1");
+        if (c.acuity.fovea_deg > 180.0f || (c.acuity.outer_deg > 0.0f && c.acuity.outer_deg <= c.acuity.fovea_deg))
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity zones out of order (0 < fovea < outer)");
+        if (fovsdf__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
+        if (c.fov_mask >= (uint32_t)_FOVSDF_MASK_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown fov_mask");
+        if (c.refresh == 0) c.refresh = 1;
+        if (c.refresh != 1 && c.refresh != 2 && c.refresh != 4)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: refresh must be 1, 2 or 4");
+        if (c.method == FOVSDF_METHOD_FIPR &&
+            (c.ipr_tile % 4u != 0 || fovsdf__fov_cells(c.ipr_tile, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_FOV_CELLS))
+            FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: FIPR needs ipr_tile a multiple of 4 and its cells within FOVSDF_FOV_CELLS");
+        if (c.method == FOVSDF_METHOD_CONE_FOV && c.cone_tile < 4)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: CONE_FOV needs cone_tile >= 4");
+        if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1) > FOVSDF_FOV_CELLS)
+            FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: CONE_FOV cone_tile cells above FOVSDF_FOV_CELLS");
+    }
     if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
         c.display.distance_mm < 0.0f || fovsdf__is0(c.display.pixel_pitch_mm) != fovsdf__is0(c.display.distance_mm))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
@@ -2477,7 +2544,8 @@ FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher 
     m->beta = c->cfg.ar_beta;
     m->relax = c->cfg.bv_relax;
     m->inflate = 1.0f;
-    m->verify_start = c->cfg.method == FOVSDF_METHOD_IPR || c->cfg.method == FOVSDF_METHOD_SKIP;
+    m->verify_start = c->cfg.method == FOVSDF_METHOD_IPR || c->cfg.method == FOVSDF_METHOD_SKIP ||
+                      c->cfg.method == FOVSDF_METHOD_FIPR;
 }
 
 FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *mp,
@@ -2873,9 +2941,97 @@ FOVSDF__PRIV void fovsdf__heat(float evals, float rgb[3])
     rgb[2] = fovsdf__clampf(1.0f - 2.0f * s, 0.0f, 1.0f);
 }
 
-/* One pixel: all samples, shading, outputs. */
-/* sh_start: per-light head starts of the shadow rays (SKIP), used when the sample's hit lies
+/* Writes one pixel's outputs. */
+FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x, uint32_t y, const float acc[3],
+                              float depth, uint8_t hit, uint32_t evals, float start, uint32_t steps, int32_t mat,
+                              uint8_t mask)
+{
+    uint32_t w = c->cam.width;
+    if (o->rgb) {
+        float *q = o->rgb + (size_t)y * (o->rgb_stride ? o->rgb_stride : 3u * w) + 3u * (size_t)x;
+        q[0] = acc[0]; q[1] = acc[1]; q[2] = acc[2];
+    }
+    if (o->rgb8) {
+        uint8_t *q = o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * w) + 3u * (size_t)x;
+        int i;
+        for (i = 0; i < 3; ++i) q[i] = (uint8_t)(fovsdf__srgb(acc[i]) * 255.0f + 0.5f);
+    }
+    if (o->depth) o->depth[(size_t)y * (o->depth_stride ? o->depth_stride : w) + x] = depth;
+    if (o->hit) o->hit[(size_t)y * (o->hit_stride ? o->hit_stride : w) + x] = hit;
+    if (o->evals) o->evals[(size_t)y * (o->evals_stride ? o->evals_stride : w) + x] = evals;
+    if (o->start) o->start[(size_t)y * (o->start_stride ? o->start_stride : w) + x] = start;
+    if (o->steps) o->steps[(size_t)y * (o->steps_stride ? o->steps_stride : w) + x] = steps;
+    if (o->material) o->material[(size_t)y * (o->material_stride ? o->material_stride : w) + x] = mat;
+    if (o->mask) o->mask[(size_t)y * (o->mask_stride ? o->mask_stride : w) + x] = mask;
+}
+
+/* One sample ray through image point (px, py): march from t_start (or a proven miss), shade.
+   sh_start: per-light head starts of the shadow rays (SKIP), used when the sample's hit lies
    within sh_tol of sh_ref_t (the low-resolution hit), else none (a different surface). */
+typedef struct fovsdf__smp { float col[3], t; int32_t mat; uint32_t steps; int hit; } fovsdf__smp;
+/* Colour of a marched ray (hit or miss) into col. */
+FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *m0, const float ro[3], const float rd[3],
+                                    const fovsdf_hit *h, int32_t mat, const float *sh_start, float sh_ref_t,
+                                    float sh_tol, float col[3], fovsdf_stats *st)
+{
+    uint64_t es = st->evals;
+    if (h->kind != FOVSDF_MISS) {
+        float p[3], n[3], hn;
+        p[0] = ro[0] + rd[0] * h->t; p[1] = ro[1] + rd[1] * h->t; p[2] = ro[2] + rd[2] * h->t;
+        if (c->cfg.shading == FOVSDF_SHADE_DEPTH) {
+            col[0] = col[1] = col[2] = 1.0f - h->t / c->t_max;
+        } else if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+            col[0] = col[1] = col[2] = 0.0f;
+        } else {
+            hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
+                                          : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * h->t),
+                                                         4.0f * (m0->ulp0 + m0->ulp1 * h->t));
+            fovsdf_normal(c, p, hn, n, st);
+            if (fovsdf__dot(n, rd) > 0.0f && h->dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+            if (c->cfg.shading == FOVSDF_SHADE_NORMALS) {
+                col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1]; col[2] = 0.5f + 0.5f * n[2];
+            } else {
+                fovsdf__shade(c, p, n, mat, col, (sh_start && fovsdf__absf(h->t - sh_ref_t) <= sh_tol) ? sh_start : NULL, st);
+            }
+        }
+    } else {
+        if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS) col[0] = col[1] = col[2] = 0.0f;
+        else fovsdf_sky(c, rd, col);
+    }
+    if (c->cfg.shading == FOVSDF_SHADE_STEPS) { /* via uint32: no 64-bit int-to-float helper on 32-bit CPUs */
+        uint64_t ne = st->evals - es + h->evals;
+        fovsdf__heat((float)(uint32_t)(ne > 0xffffffu ? 0xffffffu : ne), col);
+    }
+}
+
+/* One sample ray through image point (px, py): march from t_start (or a proven miss), shade.
+   sh_start: per-light head starts of the shadow rays (SKIP), used when the sample's hit lies
+   within sh_tol of sh_ref_t (the low-resolution hit), else none (a different surface). */
+FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0, float px, float py, float t_start,
+                                 int known_miss, const float *sh_start, float sh_ref_t, float sh_tol, fovsdf__smp *r,
+                                 fovsdf_stats *st)
+{
+    float ro[3], rd[3];
+    fovsdf_hit h;
+    int32_t mat = 0;
+    fovsdf__ray(c, px, py, ro, rd);
+    if (known_miss) { /* a conservative pass proved this ray empty up to t_max */
+        h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f; h.steps = 0; h.evals = 0;
+    } else {
+        fovsdf__march(m0, ro, rd, t_start, &h, &mat, st);
+    }
+    st->rays++;
+    st->evals_primary += h.evals;
+    r->steps = h.steps;
+    r->t = h.t;
+    r->mat = h.kind != FOVSDF_MISS ? mat : -1;
+    r->hit = h.kind != FOVSDF_MISS;
+    if (h.kind == FOVSDF_EXHAUSTED) st->exhausted++;
+    if (r->hit) st->hits++;
+    fovsdf__shade_ray(c, m0, ro, rd, &h, mat, sh_start, sh_ref_t, sh_tol, r->col, st);
+}
+
+/* One pixel: all samples, shading, outputs. */
 FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, uint32_t x, uint32_t y,
                                 const fovsdf_output *o, fovsdf_stats *st, float t_start, int known_miss,
                                 const float *sh_start, float sh_ref_t, float sh_tol)
@@ -2886,69 +3042,21 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
     uint32_t nsteps = 0;
     uint64_t e0 = st->evals;
     for (s = 0; s < spp; ++s) {
-        float ox, oy, ro[3], rd[3], col[3];
-        fovsdf_hit h;
-        int32_t mat = 0;
-        uint64_t es = st->evals;
+        float ox, oy;
+        fovsdf__smp r;
         fovsdf__sample_offset(spp, s, &ox, &oy);
-        fovsdf__ray(c, (float)x + 0.5f + ox, (float)y + 0.5f + oy, ro, rd);
-        if (known_miss) { /* a conservative pass proved this ray empty up to t_max */
-            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f; h.steps = 0; h.evals = 0;
-        } else {
-            fovsdf__march(m0, ro, rd, t_start, &h, &mat, st);
-        }
-        st->rays++;
-        st->evals_primary += h.evals;
-        nsteps += h.steps;
-        if (h.kind == FOVSDF_EXHAUSTED) st->exhausted++;
-        if (h.kind != FOVSDF_MISS) {
-            float p[3], n[3], hn;
-            st->hits++;
+        fovsdf__sample(c, m0, (float)x + 0.5f + ox, (float)y + 0.5f + oy, t_start, known_miss, sh_start, sh_ref_t, sh_tol,
+                       &r, st);
+        nsteps += r.steps;
+        if (r.hit) {
             ++nhit;
-            if (h.t < tnear) { tnear = h.t; mnear = mat; }
-            p[0] = ro[0] + rd[0] * h.t; p[1] = ro[1] + rd[1] * h.t; p[2] = ro[2] + rd[2] * h.t;
-            if (c->cfg.shading == FOVSDF_SHADE_DEPTH) {
-                col[0] = col[1] = col[2] = 1.0f - h.t / c->t_max;
-            } else if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
-                col[0] = col[1] = col[2] = 0.0f;
-            } else {
-                hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
-                                              : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * h.t),
-                                                             4.0f * (m0->ulp0 + m0->ulp1 * h.t));
-                fovsdf_normal(c, p, hn, n, st);
-                if (fovsdf__dot(n, rd) > 0.0f && h.dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
-                if (c->cfg.shading == FOVSDF_SHADE_NORMALS) {
-                    col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1]; col[2] = 0.5f + 0.5f * n[2];
-                } else {
-                    fovsdf__shade(c, p, n, mat, col, (sh_start && fovsdf__absf(h.t - sh_ref_t) <= sh_tol) ? sh_start : NULL, st);
-                }
-            }
-        } else {
-            if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS) col[0] = col[1] = col[2] = 0.0f;
-            else fovsdf_sky(c, rd, col);
+            if (r.t < tnear) { tnear = r.t; mnear = r.mat; }
         }
-        if (c->cfg.shading == FOVSDF_SHADE_STEPS) { /* via uint32: no 64-bit int-to-float helper on 32-bit CPUs */
-            uint64_t ne = st->evals - es;
-            fovsdf__heat((float)(uint32_t)(ne > 0xffffffu ? 0xffffffu : ne), col);
-        }
-        acc[0] += col[0]; acc[1] += col[1]; acc[2] += col[2];
+        acc[0] += r.col[0]; acc[1] += r.col[1]; acc[2] += r.col[2];
     }
     acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
-    if (o->rgb) {
-        float *q = o->rgb + (size_t)y * (o->rgb_stride ? o->rgb_stride : 3u * c->cam.width) + 3u * (size_t)x;
-        q[0] = acc[0]; q[1] = acc[1]; q[2] = acc[2];
-    }
-    if (o->rgb8) {
-        uint8_t *q = o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * c->cam.width) + 3u * (size_t)x;
-        int i;
-        for (i = 0; i < 3; ++i) q[i] = (uint8_t)(fovsdf__srgb(acc[i]) * 255.0f + 0.5f);
-    }
-    if (o->depth) o->depth[(size_t)y * (o->depth_stride ? o->depth_stride : c->cam.width) + x] = tnear;
-    if (o->hit) o->hit[(size_t)y * (o->hit_stride ? o->hit_stride : c->cam.width) + x] = (uint8_t)(2u * nhit >= spp ? 1u : 0u);
-    if (o->evals) o->evals[(size_t)y * (o->evals_stride ? o->evals_stride : c->cam.width) + x] = (uint32_t)(st->evals - e0);
-    if (o->start) o->start[(size_t)y * (o->start_stride ? o->start_stride : c->cam.width) + x] = known_miss ? c->t_max : t_start;
-    if (o->steps) o->steps[(size_t)y * (o->steps_stride ? o->steps_stride : c->cam.width) + x] = nsteps;
-    if (o->material) o->material[(size_t)y * (o->material_stride ? o->material_stride : c->cam.width) + x] = mnear;
+    fovsdf__put(c, o, x, y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), (uint32_t)(st->evals - e0),
+                known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
 }
 
 FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o)
@@ -2957,7 +3065,8 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
     if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) || (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
         (o->depth && o->depth_stride && o->depth_stride < w) || (o->hit && o->hit_stride && o->hit_stride < w) ||
         (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w) ||
-        (o->steps && o->steps_stride && o->steps_stride < w) || (o->start && o->start_stride && o->start_stride < w))
+        (o->steps && o->steps_stride && o->steps_stride < w) || (o->start && o->start_stride && o->start_stride < w) ||
+        (o->mask && o->mask_stride && o->mask_stride < w))
         return FOV_ERR_TOO_SMALL;
     return FOV_OK;
 }
@@ -3211,6 +3320,263 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
             fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
 }
 
+/* ---- foveated methods: FIPR (thesis ch. 5.4, Fig. 5.3; notes seed000 section 1.5.2) and
+   CONE_FOV (the same mask and refresh on the cone pyramid) -----------------------------------
+   Per grid-aligned tile (ipr_tile pixels for FIPR, cone_tile for CONE_FOV), in the order the
+   data flows (the thesis's five passes):
+   1. low-resolution depth. FIPR: one ray per 4x4-pixel cell (level 0, 1/16 of the pixels)
+      from the camera. CONE_FOV: the cone pyramid down to 2x2-pixel cells (their cones' t).
+   2. edges: Sobel on a depth map, |G| > 8 edge_threshold tmin, tmin the least t of the 3x3
+      neighbourhood: a relative change of depth per cell (scale-free; 8 is the Sobel response
+      to a unit slope). FIPR: on level 0, nearest upscaling (the thesis); CONE_FOV: on the mid
+      level, which it traces anyway.
+   3. the mask (Eq. 5.1 and the combination policy, fov_mask): with w the pixel's eccentricity,
+      p = fovsdf_acuity_p(acuity, w) (1 in the fovea, 0 beyond outer_deg) and
+      u = fovsdf_u01(seed, x, y, 0), a pixel is in the mask when w <= fovea_deg, or when
+      u < p and it lies on an edge (FOVSDF_MASK_EDGES). The thesis's literal product p * edge
+      would drop the fovea's non-edge pixels, against its own text; we read "salient edges are
+      traced even in the periphery" as this OR. The mask does not depend on the frame: pass
+      another seed for another pattern.
+   4. rendering. The mid level is one ray per 2x2-pixel cell through the cell's centre. FIPR:
+      it starts from the minimum of level 0 over the parent and its neighbours within
+      ipr_radius (the 3x3 min filter), and pixels in the mask march every sample ray from the
+      same filter over the mid level. CONE_FOV: the mid ray and the pixels' sample rays start
+      from their 2x2 cell's cone (the guarantee of CONE holds for every traced ray). Pixels
+      outside the mask take the bilinear interpolation of the shaded mid-level rays around
+      them (weights 3/4, 1/4 per axis) and are refreshed every refresh-th frame: the 2x2 cells
+      take turns in Bayer order (cell (u, v) refreshes when frame % refresh equals its rank in
+      {0, 2 / 3, 1} over (u & 1, v & 1)), so every frame costs about the same. A pixel that is
+      not refreshed is not written at all (the caller's buffers hold the earlier frame; the
+      mask output says 2). A static scene and gaze therefore reach the image of refresh 1
+      after `refresh` consecutive frames.
+   5. the thesis's mask-guided blur is not applied: its study found it made the foveation
+      more visible (notes section 3.3).
+   Everything is lazy: a cell is traced, or shaded, the first time a pixel of the tile needs
+   it, so the fovea never shades mid-level rays and the periphery never traces its pixels.
+   The tile's arrays hold its cells and a one-cell (FIPR: max(1, r)) apron; the apron cells
+   are traced by the tile that needs them (CONE_FOV: from the camera), so results depend on the
+   tile grid only, never on the caller's split. */
+typedef struct fovsdf__mid {
+    float tc;              /* CONE_FOV: the cell cone's t; -1 proven empty; -2 unknown (apron) */
+    float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there */
+    float rgb[3];          /* its colour, once shaded */
+    int32_t mat;
+    uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
+} fovsdf__mid;
+
+typedef struct fovsdf__fovt {
+    const fovsdf_ctx *c;
+    const fovsdf__marcher *mp; /* mid rays and sample rays */
+    fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
+    float *l0;                 /* FIPR level 0: t, or -1 before it is traced */
+    int32_t mu0, mv0, lu0, lv0, r;
+    uint32_t ms, ls;
+    float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
+    int cone;
+    fovsdf_stats *st;
+} fovsdf__fovt;
+
+FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh rank of a 2x2 cell */
+{
+    static const uint8_t b4[4] = { 0, 2, 3, 1 };
+    if (k == 2u) return (uint32_t)((u + v) & 1);
+    return k == 4u ? b4[(u & 1) + 2 * (v & 1)] : 0u;
+}
+FOVSDF__PRIV int32_t fovsdf__fdiv2(int32_t a) { return (a - (a < 0 ? 1 : 0)) / 2; } /* floor(a / 2) */
+
+FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
+{
+    float *q;
+    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls && j < f->lv0 + (int32_t)f->ls);
+    q = f->l0 + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
+    if (*q < 0.0f) {
+        float ro[3], rd[3];
+        fovsdf_hit h;
+        uint64_t e0 = f->st->evals;
+        fovsdf__ray(f->c, ((float)i + 0.5f) * 4.0f, ((float)j + 0.5f) * 4.0f, ro, rd);
+        fovsdf__march(f->mp, ro, rd, 0.0f, &h, 0, f->st);
+        *q = h.kind == FOVSDF_MISS ? f->c->t_max : h.t;
+        f->st->evals_lowres += f->st->evals - e0;
+    }
+    return *q;
+}
+
+/* Mid cell (u, v): traced on first use, shaded when `shade`. */
+FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
+{
+    const fovsdf_ctx *c = f->c;
+    fovsdf__mid *m;
+    float ro[3], rd[3];
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms && v < f->mv0 + (int32_t)f->ms);
+    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
+    if (m->state == 2 || (m->state == 1 && !shade)) return m;
+    fovsdf__ray(c, ((float)u + 0.5f) * 2.0f, ((float)v + 0.5f) * 2.0f, ro, rd);
+    if (m->state == 0) {
+        fovsdf_hit h;
+        int32_t mat = 0;
+        float t0 = 0.0f;
+        uint64_t e0;
+        if (f->cone) {
+            t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
+        } else {
+            int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
+            t0 = c->t_max;
+            for (b = -f->r; b <= f->r; ++b)
+                for (a = -f->r; a <= f->r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
+        }
+        e0 = f->st->evals; /* after the level-0 rays, which count themselves */
+        if (f->cone && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
+            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
+        } else {
+            fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
+        }
+        m->th = h.kind == FOVSDF_MISS ? c->t_max : h.t;
+        m->dist = h.dist;
+        m->kind = (uint8_t)h.kind;
+        m->mat = h.kind == FOVSDF_MISS ? -1 : mat;
+        m->state = 1;
+        f->st->evals_lowres += f->st->evals - e0;
+    }
+    if (shade) {
+        fovsdf_hit h;
+        h.kind = (fovsdf_hit_kind)m->kind; h.t = m->th; h.dist = m->dist; h.steps = 0; h.evals = 0;
+        fovsdf__shade_ray(c, f->mp, ro, rd, &h, m->mat, NULL, 0.0f, 0.0f, m->rgb, f->st);
+        m->state = 2;
+    }
+    return m;
+}
+
+/* Step 2: Sobel on level 0 (FIPR) or the mid level (CONE_FOV) around cell (i, j). */
+FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
+{
+    float t[9], tmin, gx, gy, s;
+    int32_t a, b;
+    for (b = -1; b <= 1; ++b)
+        for (a = -1; a <= 1; ++a)
+            t[(b + 1) * 3 + (a + 1)] = f->cone ? fovsdf__fov_mid(f, i + a, j + b, 0)->th : fovsdf__fov_l0(f, i + a, j + b);
+    tmin = t[0];
+    for (a = 1; a < 9; ++a) tmin = fovsdf__minf(tmin, t[a]);
+    gx = (t[2] + 2.0f * t[5] + t[8]) - (t[0] + 2.0f * t[3] + t[6]);
+    gy = (t[6] + 2.0f * t[7] + t[8]) - (t[0] + 2.0f * t[1] + t[2]);
+    s = 8.0f * f->c->cfg.edge_threshold * fovsdf__maxf(tmin, 1e-6f);
+    return gx * gx + gy * gy > s * s;
+}
+
+/* Step 1 of CONE_FOV: the cone pyramid over the tile, down to 2x2-pixel cells (cone_levels
+   permitting), storing each cell's t in the mid cells it covers. The cells are the tile's own
+   grid, not clipped to the image, so 2x2 cells stay aligned. */
+FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, uint32_t tx, uint32_t ty, uint32_t T)
+{
+    const fovsdf_ctx *c = f->c;
+    fovsdf__cell stk[4 * 10];
+    int sp = 1;
+    stk[0].x0 = tx; stk[0].y0 = ty; stk[0].x1 = tx + T; stk[0].y1 = ty + T; stk[0].level = 1; stk[0].t = 0.0f;
+    while (sp > 0) {
+        fovsdf__cell cl = stk[--sp];
+        float a[3], k, t;
+        if (cl.x0 >= c->cam.width || cl.y0 >= c->cam.height) continue; /* off the image */
+        k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
+        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOVSDF__SQRT(1.0f + k * k)), f->st); /* as CONE */
+        if (t < 0.0f || cl.x1 - cl.x0 <= 2u || cl.level >= c->cfg.cone_levels) {
+            uint32_t u, v;
+            for (v = cl.y0 / 2u; v < cl.y1 / 2u; ++v)
+                for (u = cl.x0 / 2u; u < cl.x1 / 2u; ++u)
+                    f->mid[(size_t)((int32_t)v - f->mv0) * f->ms + (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
+            continue;
+        }
+        {
+            uint32_t h = (cl.x1 - cl.x0) / 2u, q;
+            for (q = 4; q-- > 0;) {
+                fovsdf__cell ch;
+                ch.x0 = cl.x0 + ((q & 1) ? h : 0); ch.x1 = ch.x0 + h;
+                ch.y0 = cl.y0 + ((q & 2) ? h : 0); ch.y1 = ch.y0 + h;
+                ch.level = cl.level + 1;
+                ch.t = t;
+                FOV_ASSERT(sp < (int)(sizeof stk / sizeof stk[0]));
+                stk[sp++] = ch;
+            }
+        }
+    }
+}
+
+FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp, uint32_t tx,
+                                   uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
+                                   const fovsdf_output *o, fovsdf_stats *st)
+{
+    fovsdf__mid mid[FOVSDF_FOV_CELLS];
+    float l0[FOVSDF_FOV_CELLS];
+    fovsdf__fovt f;
+    uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh;
+    int32_t am;
+    f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.st = st;
+    f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
+    f.r = f.cone ? 1 : (c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius);
+    T = f.cone ? c->cfg.cone_tile : c->cfg.ipr_tile;
+    am = f.r > 1 ? f.r : 1;
+    f.ms = T / 2u + 2u * (uint32_t)am;
+    f.mu0 = (int32_t)(tx / 2u) - am; f.mv0 = (int32_t)(ty / 2u) - am;
+    f.ls = T / 4u + 2u * (uint32_t)((am + 1) / 2 + f.r);
+    f.lu0 = (int32_t)(tx / 4u) - (am + 1) / 2 - f.r; f.lv0 = (int32_t)(ty / 4u) - (am + 1) / 2 - f.r;
+    FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS && (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
+    for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
+    if (!f.cone)
+        for (i = 0; i < f.ls * f.ls; ++i) l0[i] = -1.0f;
+    f.t_ring = 0.0f;
+    if (f.cone) {
+        /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
+           by them gives their rays a safe start */
+        float a[3], k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f, (float)(tx + T) + 2.0f,
+                                          (float)(ty + T) + 2.0f, a);
+        f.t_ring = fovsdf__cone_march(c, mc, a, k, 0.0f, st);
+        if (f.t_ring < 0.0f) f.t_ring = c->t_max; /* the whole neighbourhood is empty */
+        fovsdf__fov_cones(&f, mc, tx, ty, T);
+    }
+    for (y = ry0; y < ry1; ++y)
+        for (x = rx0; x < rx1; ++x) {
+            int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
+            float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
+            int in;
+            /* step 3: the mask */
+            if (w <= c->cfg.acuity.fovea_deg) in = 1;
+            else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
+            else {
+                p = fovsdf_acuity_p(&c->cfg.acuity, w);
+                in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
+                     (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
+                      fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u), f.cone ? v : (int32_t)(y / 4u)));
+            }
+            /* step 4: render */
+            if (in) {
+                float t0;
+                int miss = 0;
+                if (f.cone) {
+                    t0 = mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc;
+                    miss = t0 < 0.0f;
+                    if (miss) t0 = 0.0f;
+                } else {
+                    int32_t a, b;
+                    t0 = c->t_max;
+                    for (b = -f.r; b <= f.r; ++b)
+                        for (a = -f.r; a <= f.r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
+                }
+                fovsdf__pixel(c, mp, x, y, o, st, t0, miss, NULL, 0.0f, 0.0f);
+            } else if (c->cfg.refresh > 1u && fovsdf__bayer(u, v, c->cfg.refresh) != ph) {
+                if (o->mask) o->mask[(size_t)y * (o->mask_stride ? o->mask_stride : c->cam.width) + x] = 2u;
+            } else {
+                int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
+                float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f, col[3] = { 0.0f, 0.0f, 0.0f };
+                const fovsdf__mid *own = fovsdf__fov_mid(&f, u, v, 1);
+                for (b = 0; b < 2; ++b)
+                    for (a = 0; a < 2; ++a) {
+                        const fovsdf__mid *m = fovsdf__fov_mid(&f, ua + a, va + b, 1);
+                        float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
+                        col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1]; col[2] += wt * m->rgb[2];
+                    }
+                fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u, own->mat, 0u);
+            }
+        }
+}
+
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1,
                                          const fovsdf_output *o, fovsdf_stats *stats)
 {
@@ -3238,6 +3604,14 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__ipr_tile(c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
                                  ty + T < y1 ? ty + T : y1, o, &local);
+    } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
+        fovsdf__marcher mp = m;
+        uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx, ty;
+        mp.method = c->cfg.finish - 1u;
+        for (ty = y0 - y0 % T; ty < y1; ty += T)
+            for (tx = x0 - x0 % T; tx < x1; tx += T)
+                fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
+                                 ty + T < y1 ? ty + T : y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_CONE) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.cone_tile, tx, ty;
@@ -3261,6 +3635,8 @@ FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *c)
     case FOVSDF_METHOD_CONE: return c->cfg.cone_tile;
     case FOVSDF_METHOD_IPR: return c->cfg.ipr_tile;
     case FOVSDF_METHOD_SKIP: return c->cfg.skip_block;
+    case FOVSDF_METHOD_FIPR: return c->cfg.ipr_tile;
+    case FOVSDF_METHOD_CONE_FOV: return c->cfg.cone_tile;
     default: return 1;
     }
 }

@@ -24,7 +24,7 @@ if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. examples
     P=$((P + $(echo "$out" | grep -c '^PASS')))
     F=$((F + $(echo "$out" | grep -c '^FAIL')))
     n=$(echo "$out" | grep -cE '^(PASS|FAIL)')
-    if [ "$n" -ne 42 ]; then bad "sdf_scenes --check ran $n of 42 checks (6 scenes x 7 methods)"; fi
+    if [ "$n" -ne 54 ]; then bad "sdf_scenes --check ran $n of 54 checks (6 scenes x 9 methods)"; fi
 else
     bad "sdf_scenes build"
 fi

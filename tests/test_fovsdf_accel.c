@@ -159,7 +159,7 @@ static void cone_property(void)
     static fovsdf_node nodes[4 * MAXP];
     static unsigned char mem[1 << 17];
     int it, bad = 0, empty_bad = 0, builds = 0;
-    long rays = 0, hits = 0, empty = 0;
+    long rays = 0, hits = 0, empty = 0, fov_px = 0;
     double worst = -1e300;
     char where[256] = "";
     for (it = 0; it < 300; ++it) {
@@ -173,6 +173,7 @@ static void cone_property(void)
         fov_gaze gz;
         uint32_t count, W, H, x, y, smp, tiles[4] = { 2, 4, 8, 16 }, spps[3] = { 1, 4, 16 };
         static float start[96 * 64];
+        static uint8_t mask[96 * 64];
         double ang;
         random_scene(&g, &s);
         if (!build(&s, nodes, 4 * MAXP, &prog, mem, sizeof mem, &count)) continue;
@@ -199,13 +200,21 @@ static void cone_property(void)
         cfg.shading = FOVSDF_SHADE_DEPTH;
         cfg.t_max = 40.0f;
         gz.x = 0.5f * (float)W; gz.y = 0.5f * (float)H;
+        if (it % 4 == 1 || it % 4 == 3) { /* CONE_FOV: its traced pixels keep the guarantee */
+            cfg.method = FOVSDF_METHOD_CONE_FOV;
+            cfg.acuity.fovea_deg = 20.0f;
+            gz.x = (float)urange(&g, 0.0, (double)W); gz.y = (float)urange(&g, 0.0, (double)H);
+        }
         if (fovsdf_init(&ctx, &cfg, &sc, &cam, gz, NULL, 0) != FOV_OK) { ++bad; snprintf(where, sizeof where, "init failed at scene %d", it); continue; }
         fovsdf_output_init(&out);
         out.start = start;
+        out.mask = mask;
         fovsdf_render_rows(&ctx, 0, H, &out, NULL);
         for (y = 0; y < H; ++y)
             for (x = 0; x < W; ++x) {
                 double st = (double)start[y * W + x];
+                if (mask[y * W + x] != 1) continue; /* CONE_FOV: interpolated from the mid level */
+                if (cfg.method == FOVSDF_METHOD_CONE_FOV) ++fov_px;
                 for (smp = 0; smp < ctx.cfg.spp; ++smp) {
                     double ox, oy, o[3], d[3], th, tol;
                     float ro[3], rd[3];
@@ -239,6 +248,7 @@ static void cone_property(void)
     check(builds >= 280 && rays > 1000000 && hits > 100000 && bad == 0, "cone_start_never_past_first_hit",
           "%d violations of %ld hit rays (%ld rays, %d scenes built); worst start - hit %.3g; first: %s", bad, hits, rays, builds,
           worst, where);
+    check(fov_px > 50000, "cone_fov_pixels_in_property_test", "only %ld CONE_FOV pixels traced", fov_px);
     check(empty > 10000 && empty_bad == 0, "cone_empty_cells_have_no_hit", "%d of %ld proven-empty rays do hit; %s", empty_bad,
           empty, where);
 }
@@ -721,6 +731,312 @@ static void mask_density_tests(void)
     check(rep2 == 640u * 360u, "mask_deterministic_for_seed", "%u of %u repeat", rep2, 640u * 360u);
 }
 
+/* ---- FIPR and CONE_FOV -------------------------------------------------------------------- */
+/* Renders a built-in scene at 96x64 with a method and config tweaks; returns 0 on init failure. */
+typedef struct fovimgs { float rgb[96 * 64 * 3], depth[96 * 64], start[96 * 64]; uint8_t hit[96 * 64], mask[96 * 64]; } fovimgs;
+static int render96(const fovsdf_builtin *bi, const fovsdf_config *c, fov_gaze gz, fovimgs *im, fovsdf_stats *st)
+{
+    fovsdf_ctx k;
+    fovsdf_output o;
+    if (fovsdf_init(&k, c, &bi->scene, &bi->camera, gz, NULL, 0) != FOV_OK) return 0;
+    fovsdf_output_init(&o);
+    o.rgb = im->rgb; o.depth = im->depth; o.start = im->start; o.hit = im->hit; o.mask = im->mask;
+    fovsdf_render_rows(&k, 0, 64, &o, st);
+    return 1;
+}
+
+/* With a fovea that covers everything, FIPR is IPR (3 levels) and CONE_FOV is CONE (2x2
+   leaves), bit for bit: the foveated pipelines add nothing where every pixel is traced. */
+static void fov_equal_unfoveated(void)
+{
+    static fovimgs a, b;
+    uint32_t ids[2] = { FOVSDF_SCENE_PRIMITIVES, FOVSDF_SCENE_TEMPLE }, i, m;
+    fov_gaze gz = { 30.0f, 20.0f };
+    for (i = 0; i < 2; ++i)
+        for (m = 0; m < 2; ++m) {
+            fovsdf_builtin bi;
+            void *mem = load_builtin(ids[i], 96, 64, &bi);
+            fovsdf_config c = fovsdf_config_default(), d;
+            uint32_t p, all1 = 1;
+            c.spp = 4;
+            c.shading = FOVSDF_SHADE_NO_SHADOWS;
+            c.method = m ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
+            d = c;
+            d.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+            d.acuity.fovea_deg = 180.0f;
+            memset(&a, 0, sizeof a); memset(&b, 0, sizeof b);
+            render96(&bi, &c, gz, &a, NULL);
+            render96(&bi, &d, gz, &b, NULL);
+            for (p = 0; p < 96u * 64u; ++p) all1 &= b.mask[p] == 1;
+            check(all1 && memcmp(a.rgb, b.rgb, sizeof a.rgb) == 0 && memcmp(a.depth, b.depth, sizeof a.depth) == 0 &&
+                      memcmp(a.start, b.start, sizeof a.start) == 0,
+                  N(m ? "cone_fov_full_fovea_is_cone_%s" : "fipr_full_fovea_is_ipr_%s", bi.name), "images differ (all mask 1: %u)", all1);
+            free(mem);
+        }
+}
+
+/* Temporal reuse: a static scene and gaze rendered for `refresh` consecutive frames into the
+   same buffers gives exactly the image of refresh 1; before the last frame some pixels are
+   still untouched (the refresh really skips them). */
+static void fov_temporal_reuse(void)
+{
+    static fovimgs ref, im;
+    uint32_t m, k;
+    fov_gaze gz = { 20.0f, 14.0f };
+    fovsdf_builtin bi;
+    void *mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, 96, 64, &bi);
+    for (m = 0; m < 2; ++m)
+        for (k = 2; k <= 4; k += 2) {
+            fovsdf_config c = fovsdf_config_default();
+            uint32_t f, p, untouched_before = 0, kept_last = 0, interp = 0;
+            fovsdf_stats s1, sk;
+            c.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+            c.shading = FOVSDF_SHADE_NO_SHADOWS;
+            c.acuity.fovea_deg = 5.0f;
+            c.fov_mask = FOVSDF_MASK_ACUITY;
+            c.seed = 7u;
+            memset(&s1, 0, sizeof s1); memset(&sk, 0, sizeof sk);
+            render96(&bi, &c, gz, &ref, &s1);
+            for (p = 0; p < 96u * 64u; ++p) interp += ref.mask[p] == 0;
+            c.refresh = k;
+            for (p = 0; p < 96u * 64u * 3u; ++p) im.rgb[p] = -1.0f;
+            for (f = 0; f < k; ++f) {
+                fovsdf_stats s;
+                memset(&s, 0, sizeof s);
+                c.frame = 100u + f; /* any k consecutive frames */
+                render96(&bi, &c, gz, &im, &s);
+                if (f + 2u == k)
+                    for (p = 0; p < 96u * 64u; ++p) untouched_before += im.rgb[3 * p] < 0.0f;
+                if (f + 1u == k) {
+                    for (p = 0; p < 96u * 64u; ++p) kept_last += im.mask[p] == 2;
+                    sk = s;
+                }
+            }
+            check(interp > 2000 && untouched_before > interp / (2u * k) && memcmp(ref.rgb, im.rgb, sizeof im.rgb) == 0,
+                  N(m ? "cone_fov_refresh_%s_static_equals_full" : "fipr_refresh_%s_static_equals_full", k == 2 ? "2" : "4"),
+                  "%u interpolated pixels, %u untouched before the last frame, images %s", interp, untouched_before,
+                  memcmp(ref.rgb, im.rgb, sizeof im.rgb) ? "differ" : "equal");
+            /* one frame refreshes about 1/k of the interpolated pixels and costs less */
+            check(fabs((double)kept_last - (double)interp * (double)(k - 1u) / (double)k) < 0.1 * (double)interp &&
+                      sk.evals < s1.evals,
+                  N(m ? "cone_fov_refresh_%s_skips_its_share" : "fipr_refresh_%s_skips_its_share", k == 2 ? "2" : "4"),
+                  "%u kept of %u interpolated; evaluations %llu vs %llu at refresh 1", kept_last, interp,
+                  (unsigned long long)sk.evals, (unsigned long long)s1.evals);
+        }
+    free(mem);
+}
+
+/* The mask: the fovea is always traced; FOVEA policy = exactly the fovea; the ACUITY policy's
+   density per ring follows p(w); the EDGES mask is a subset of the ACUITY mask (same seed) and,
+   with p = 1 everywhere, it marks the silhouettes (every hit/miss boundary of a classic render
+   is in it, and everything in it lies within a few pixels of a depth discontinuity). */
+static void fov_mask_tests(void)
+{
+    static fovimgs ac, ed, fo, cl, s2;
+    fovsdf_builtin bi;
+    void *mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, 96, 64, &bi);
+    uint32_t m;
+    fov_gaze gz = { 40.0f, 30.0f };
+    for (m = 0; m < 2; ++m) {
+        fovsdf_config c = fovsdf_config_default();
+        fovsdf_ctx k;
+        uint32_t x, y, bad_fovea = 0, bad_policy = 0, not_subset = 0, n_ed = 0, n_ac = 0, diff_seed = 0;
+        c.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+        c.shading = FOVSDF_SHADE_NO_SHADOWS;
+        c.acuity.fovea_deg = 6.0f;
+        c.acuity.rate = 0.02f; /* a slow fall-off: many periphery pixels in play */
+        c.seed = 3u;
+        fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+        c.fov_mask = FOVSDF_MASK_ACUITY; render96(&bi, &c, gz, &ac, NULL);
+        c.fov_mask = FOVSDF_MASK_EDGES; render96(&bi, &c, gz, &ed, NULL);
+        c.fov_mask = FOVSDF_MASK_FOVEA; render96(&bi, &c, gz, &fo, NULL);
+        c.fov_mask = FOVSDF_MASK_EDGES; c.seed = 4u; render96(&bi, &c, gz, &s2, NULL);
+        for (y = 0; y < 64; ++y)
+            for (x = 0; x < 96; ++x) {
+                uint32_t p = y * 96 + x;
+                float w = fovsdf_ecc_deg(&k.ecc, (float)x + 0.5f, (float)y + 0.5f);
+                if (w <= 6.0f && (ac.mask[p] != 1 || ed.mask[p] != 1 || fo.mask[p] != 1)) ++bad_fovea;
+                if ((fo.mask[p] == 1) != (w <= 6.0f)) ++bad_policy;
+                if (ed.mask[p] == 1 && ac.mask[p] != 1) ++not_subset;
+                n_ed += ed.mask[p] == 1 && w > 6.0f;
+                n_ac += ac.mask[p] == 1 && w > 6.0f;
+                diff_seed += (ed.mask[p] == 1) != (s2.mask[p] == 1);
+            }
+        check(bad_fovea == 0 && bad_policy == 0, N("%s_fovea_always_traced", fovsdf_method_name(c.method)),
+              "%u fovea pixels not traced, %u FOVEA-policy pixels wrong", bad_fovea, bad_policy);
+        check(not_subset == 0 && n_ed > 20 && n_ed < n_ac && diff_seed > 0,
+              N("%s_edge_mask_subset_of_acuity", fovsdf_method_name(c.method)),
+              "%u edge-mask pixels outside the acuity mask; periphery traced %u (edges) vs %u (acuity); %u differ with another seed",
+              not_subset, n_ed, n_ac, diff_seed);
+        {   /* p = 1 everywhere (rate ~0, A + C = 1): the EDGES mask outside the fovea = the edges */
+            fovsdf_config g = fovsdf_config_default();
+            uint32_t missed = 0, boundary = 0, far_from_edge = 0, marked = 0;
+            c.acuity.A = 0.999f; c.acuity.C = 0.001f; c.acuity.rate = 1e-9f; c.acuity.fovea_deg = 1.0f;
+            c.seed = 3u;
+            render96(&bi, &c, gz, &ed, NULL);
+            g.shading = FOVSDF_SHADE_NO_SHADOWS;
+            render96(&bi, &g, gz, &cl, NULL);
+            for (y = 1; y < 63; ++y)
+                for (x = 1; x < 95; ++x) {
+                    uint32_t p = y * 96 + x, i, j, near = 0;
+                    int bnd = cl.hit[p] != cl.hit[p + 1] || cl.hit[p] != cl.hit[p + 96];
+                    if (bnd) { ++boundary; if (ed.mask[p] != 1) ++missed; }
+                    if (ed.mask[p] != 1) continue;
+                    ++marked;
+                    /* a relative depth jump of >= 5 % between pixels within 6 of this one */
+                    {   /* the Sobel window: 3x3 cells of 4 (FIPR) or 2 (CONE_FOV) pixels */
+                        uint32_t R = m ? 4u : 8u;
+                        float lo = 1e30f, hi = 0.0f;
+                        for (j = y > R ? y - R : 0; j < (y + R + 1 < 64 ? y + R + 1 : 64); ++j)
+                            for (i = x > R ? x - R : 0; i < (x + R + 1 < 96 ? x + R + 1 : 96); ++i) {
+                                float d0 = cl.depth[j * 96 + i];
+                                lo = d0 < lo ? d0 : lo; hi = d0 > hi ? d0 : hi;
+                            }
+                        near = hi > 1.1f * lo; /* a relative depth change of 10 % somewhere */
+                    }
+                    if (!near) ++far_from_edge;
+                }
+            check(boundary > 50 && missed == 0 && marked > boundary && far_from_edge == 0,
+                  N("%s_edges_are_silhouettes", fovsdf_method_name(c.method)),
+                  "%u of %u silhouette pixels not marked; %u marked pixels, %u far from any depth jump", missed, boundary,
+                  marked, far_from_edge);
+        }
+    }
+    {   /* ACUITY density per 5-degree ring at 320x180 (CONE_FOV, cheap at 1 spp) */
+        static uint8_t mk[320 * 180];
+        fovsdf_builtin b2;
+        void *m2 = load_builtin(FOVSDF_SCENE_PRIMITIVES, 320, 180, &b2);
+        fovsdf_config c = fovsdf_config_default();
+        fovsdf_ctx k;
+        fovsdf_output o;
+        fov_gaze g2 = { 100.0f, 60.0f };
+        double sp[8] = { 0 }, n[8] = { 0 }, tr[8] = { 0 };
+        uint32_t x, y, r, bad = 0;
+        char where[128] = "";
+        c.method = FOVSDF_METHOD_CONE_FOV;
+        c.shading = FOVSDF_SHADE_DEPTH;
+        c.fov_mask = FOVSDF_MASK_ACUITY;
+        c.seed = 11u;
+        fovsdf_init(&k, &c, &b2.scene, &b2.camera, g2, NULL, 0);
+        fovsdf_output_init(&o);
+        o.mask = mk;
+        fovsdf_render_rows(&k, 0, 180, &o, NULL);
+        for (y = 0; y < 180; ++y)
+            for (x = 0; x < 320; ++x) {
+                float w = fovsdf_ecc_deg(&k.ecc, (float)x + 0.5f, (float)y + 0.5f);
+                fovsdf_acuity a = k.cfg.acuity;
+                r = (uint32_t)(w / 5.0f);
+                if (r > 7) r = 7;
+                sp[r] += (double)fovsdf_acuity_p(&a, w);
+                n[r] += 1.0;
+                tr[r] += mk[y * 320 + x] == 1;
+            }
+        for (r = 0; r < 8; ++r) {
+            double sd = sqrt(sp[r] * (1.0 - sp[r] / (n[r] > 0 ? n[r] : 1)) + 1.0);
+            if (n[r] > 100 && fabs(tr[r] - sp[r]) > 4.0 * sd) {
+                ++bad;
+                snprintf(where, sizeof where, "ring %u: %.0f traced, %.1f expected of %.0f", r, tr[r], sp[r], n[r]);
+            }
+        }
+        check(bad == 0, "cone_fov_acuity_mask_density", "%u rings off by more than 4 sd; %s", bad, where);
+        free(m2);
+    }
+    free(mem);
+}
+
+/* Pixels in the mask are exactly the unfoveated method's pixels (IPR for FIPR, CONE for
+   CONE_FOV); the others are the bilinear interpolation (weights 3/4, 1/4) of the mid level,
+   whose rays are the pixel centres of the half-resolution image: checked against a classic
+   half-resolution render interpolated here (depth shading, so colour = hit distance). */
+static void fov_quality(void)
+{
+    static fovimgs f, u, t;
+    static fovimgs h; /* 48x32 used */
+    fovsdf_builtin bi, bh;
+    void *mem = load_builtin(FOVSDF_SCENE_TEMPLE, 96, 64, &bi), *mh = load_builtin(FOVSDF_SCENE_TEMPLE, 48, 32, &bh);
+    uint32_t m;
+    fov_gaze gz = { 30.0f, 32.0f };
+    for (m = 0; m < 2; ++m) {
+        fovsdf_config c = fovsdf_config_default(), cu, ch = fovsdf_config_default();
+        fovsdf_ctx kh;
+        fovsdf_output oh;
+        uint32_t x, y, traced = 0, same = 0, interp = 0, close = 0;
+        double sad = 0.0;
+        c.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+        c.shading = FOVSDF_SHADE_DEPTH;
+        c.acuity.fovea_deg = 10.0f;
+        c.fov_mask = FOVSDF_MASK_ACUITY;
+        c.finish = FOVSDF_FINISH_CLASSIC; /* the reference's tracer, */
+        c.max_steps = 4096;               /* and no ray runs out of steps at the horizon; */
+        c.eps_mode = FOVSDF_EPS_ABSOLUTE; /* a pixel-cone epsilon would depend on the resolution */
+        cu = c;
+        cu.method = m ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
+        render96(&bi, &c, gz, &f, NULL);
+        render96(&bi, &cu, gz, &u, NULL);
+        ch.shading = FOVSDF_SHADE_DEPTH;
+        ch.max_steps = 4096;
+        ch.eps_mode = FOVSDF_EPS_ABSOLUTE;
+        fovsdf_init(&kh, &ch, &bh.scene, &bh.camera, gz, NULL, 0);
+        fovsdf_output_init(&oh);
+        oh.rgb = h.rgb;
+        fovsdf_render_rows(&kh, 0, 32, &oh, NULL);
+        (void)t;
+        for (y = 0; y < 64; ++y)
+            for (x = 0; x < 96; ++x) {
+                uint32_t p = y * 96 + x;
+                if (f.mask[p] == 1) {
+                    ++traced;
+                    same += memcmp(f.rgb + 3 * p, u.rgb + 3 * p, 3 * sizeof(float)) == 0;
+                } else if (x >= 1 && y >= 1 && x + 1 < 96 && y + 1 < 64) {
+                    int32_t ua = (x & 1) ? (int32_t)(x / 2) : (int32_t)(x / 2) - 1, va = (y & 1) ? (int32_t)(y / 2) : (int32_t)(y / 2) - 1;
+                    double wx = (x & 1) ? 0.25 : 0.75, wy = (y & 1) ? 0.25 : 0.75, ref, d;
+                    ref = (1 - wx) * (1 - wy) * (double)h.rgb[3 * (va * 48 + ua)] + wx * (1 - wy) * (double)h.rgb[3 * (va * 48 + ua + 1)] +
+                          (1 - wx) * wy * (double)h.rgb[3 * ((va + 1) * 48 + ua)] + wx * wy * (double)h.rgb[3 * ((va + 1) * 48 + ua + 1)];
+                    d = fabs(ref - (double)f.rgb[3 * p]);
+                    ++interp;
+                    close += d < 0.01;
+                    sad += d;
+                }
+            }
+        check(traced > 300 && same == traced, N("%s_traced_pixels_are_unfoveated", fovsdf_method_name(c.method)),
+              "%u of %u traced pixels equal the unfoveated render", same, traced);
+        check(interp > 2000 && close >= interp - interp / 100 && sad / interp < 2e-3,
+              N("%s_interpolation_is_bilinear_of_mid_level", fovsdf_method_name(c.method)),
+              "%u of %u interpolated pixels within 0.01 of the half-resolution classic render, mean |d| %.3g", close,
+              interp, sad / (interp ? interp : 1));
+    }
+    free(mem);
+    free(mh);
+}
+
+static void fov_bad_params(void)
+{
+    fovsdf_config c = fovsdf_config_default();
+    fov_result r;
+    c.method = FOVSDF_METHOD_FIPR;
+    check(init_with(c) == FOV_OK, "fipr_default_config_ok", "init failed");
+    c.refresh = 3; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "fov_refresh_3_rejected", "got %d", (int)r);
+    c.refresh = 4; c.edge_threshold = -0.1f; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "fov_edge_threshold_negative", "got %d", (int)r);
+    c.edge_threshold = 0.0f; c.acuity.fovea_deg = 10.0f; c.acuity.outer_deg = 5.0f; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "fov_outer_inside_fovea", "got %d", (int)r);
+    c.acuity.outer_deg = 0.0f; c.acuity.rate = NAN; r = init_with(c);
+    check(r == FOV_ERR_NOT_FINITE, "fov_acuity_nan", "got %d", (int)r);
+    c.acuity.rate = 0.0f; c.acuity.A = 0.995f; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "fov_acuity_above_one", "got %d", (int)r);
+    c.acuity.A = 0.0f; c.fov_mask = 3; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "fov_mask_unknown", "got %d", (int)r);
+    c.fov_mask = 0; c.ipr_tile = 64; r = init_with(c);
+    check(r == FOV_ERR_LIMIT, "fipr_tile_above_scratch", "got %d", (int)r);
+    c.ipr_tile = 0; c.method = FOVSDF_METHOD_CONE_FOV; c.cone_tile = 2; r = init_with(c);
+    check(r == FOV_ERR_INVALID_ARG, "cone_fov_tile_2_rejected", "got %d", (int)r);
+    c.cone_tile = 64; r = init_with(c);
+    check(r == FOV_ERR_LIMIT, "cone_fov_tile_above_scratch", "got %d", (int)r);
+    c.cone_tile = 32; r = init_with(c);
+    check(r == FOV_OK, "cone_fov_tile_32_ok", "got %d", (int)r);
+}
+
 int main(void)
 {
     acuity_tests();
@@ -733,6 +1049,13 @@ int main(void)
     partition_invariant(FOVSDF_METHOD_CONE, FOVSDF_SCENE_PRIMITIVES, 4);
     partition_invariant(FOVSDF_METHOD_IPR, FOVSDF_SCENE_ATRIUM, 1);
     partition_invariant(FOVSDF_METHOD_SKIP, FOVSDF_SCENE_COLUMNS, 1);
+    partition_invariant(FOVSDF_METHOD_FIPR, FOVSDF_SCENE_TEMPLE, 4);
+    partition_invariant(FOVSDF_METHOD_CONE_FOV, FOVSDF_SCENE_PRIMITIVES, 1);
+    fov_bad_params();
+    fov_equal_unfoveated();
+    fov_temporal_reuse();
+    fov_mask_tests();
+    fov_quality();
     bad_params();
     cone_vs_classic();
     cone_property();
