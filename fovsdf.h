@@ -74,6 +74,22 @@ ACCELERATED METHODS
    centre ray hits something far can start its edge pixels past a nearer object. Working
    memory: one cell (a few floats per light); no apron. Scaling needs a dist_ex callback that
    honours fovsdf_query.inflate (the built-in programs do).
+   FIPR (thesis ch. 5.4) and CONE_FOV (beyond the thesis): foveated head starts. A pixel is
+   traced (all its sample rays, from IPR's or CONE's head start) when it lies in the fovea
+   (acuity.fovea_deg of eccentricity, default 7.5), or, with probability p(w) = A exp(-rate w)
+   + C (fovsdf_acuity), when it lies on an edge of a low-resolution depth map (Sobel, relative
+   threshold edge_threshold, default 0.1; fov_mask chooses other policies). Every other pixel
+   is the bilinear interpolation of a mid level (one shaded ray per 2x2 pixels), refreshed
+   every refresh-th frame (1, 2, 4; the 2x2 cells take turns, so frames cost the same; pixels
+   not refreshed are not written, so keep the previous frame in the buffers). The mask output
+   says which pixel was made how. Super-sampling (spp) applies to traced pixels only: the
+   thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
+   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR and CONE_FOV is
+   CONE bit for bit. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
+   mask-guided blur is left out: its own study found it made the foveation more visible.
+   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and as
+   many floats, on the stack (about 13 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
+   cone_tile 32 (CONE_FOV); larger tiles are FOV_ERR_LIMIT.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -103,8 +119,11 @@ MEMORY
    configuration needs (0 for the tracers of this version); fovsdf_init() takes it as a
    pointer and size. Images are caller buffers with an explicit row stride. The scene program
    and the built-in scenes are built into caller memory after a size query
-   (fovsdf_program_size, fovsdf_builtin_size). Stack use: every entry point uses less than
-   2 KiB of stack plus the scene program's value stack (FOVSDF_MAX_STACK * 8 bytes).
+   (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
+   tracers and CONE need less than 4 KiB plus the scene program's value stack
+   (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
+   CONE_FOV add FOVSDF_FOV_CELLS * 36 bytes (about 12 KiB). Lower the two macros for small
+   stacks (configs that need more are then FOV_ERR_LIMIT).
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code.
@@ -603,6 +622,11 @@ typedef struct fovsdf_output {
                                                         rays (every method but FIPR/CONE_FOV);
                                                         0 interpolated from the mid level; 2 kept
                                                         from an earlier frame (not written) */
+    uint32_t origin_x, origin_y; /* the buffers' first element is pixel (origin_x, origin_y):
+                                    0, 0 for whole-image buffers; a tile's corner for tile
+                                    buffers (set the strides to the tile's width). Rendering
+                                    pixels left of or above the origin is FOV_ERR_INVALID_ARG.
+                                    A zero stride means rows of width - origin_x pixels. */
 } fovsdf_output;
 
 /* Deterministic counters; add them up across threads yourself. */
@@ -776,6 +800,15 @@ FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t cou
 FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes,
                                            uint32_t count, int32_t root, void *mem,
                                            size_t bytes);
+/* Keep only the code: fovsdf_program_compact copies the instructions (code_bytes of them,
+   64 bytes each, plus up to 15 for alignment) to dst and points prog there, so the build
+   memory (nodes, bounds, scratch: several times larger) can be reused. For a built-in scene:
+      fovsdf_program p = *bi.program;                    // keep p alive while tracing
+      fovsdf_program_compact(&p, code, sizeof code);
+      fovsdf_scene_set_program(&bi.scene, &p);
+   (tests/xtarget/mem_test.c renders Primitives this way in 32 KiB on a Cortex-M4). */
+FOVSDF_API size_t fovsdf_program_code_bytes(const fovsdf_program *prog);
+FOVSDF_API fov_result fovsdf_program_compact(fovsdf_program *prog, void *dst, size_t bytes);
 /* Evaluate (the signature of fovsdf_dist_ex_fn; user = const fovsdf_program *). q may be
    NULL. */
 FOVSDF_API float fovsdf_program_eval(const float p[3], fovsdf_query *q, void *user);
@@ -2002,6 +2035,29 @@ FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t cou
     return FOV_OK;
 }
 
+FOVSDF_API size_t fovsdf_program_code_bytes(const fovsdf_program *prog)
+{
+    if (!prog || !prog->code) return 0;
+    return 15u + sizeof(fovsdf__ins) * (size_t)prog->count;
+}
+
+FOVSDF_API fov_result fovsdf_program_compact(fovsdf_program *prog, void *dst, size_t bytes)
+{
+    unsigned char *base;
+    const unsigned char *src;
+    size_t n, i;
+    if (!prog || !dst || !prog->code) return FOV_ERR_NULL;
+    if (bytes < fovsdf_program_code_bytes(prog)) return FOV_ERR_TOO_SMALL;
+    base = (unsigned char *)dst;
+    base += (16u - ((uintptr_t)base & 15u)) & 15u;
+    src = (const unsigned char *)prog->code;
+    n = sizeof(fovsdf__ins) * (size_t)prog->count;
+    if (src < base + n && base < src + n) return FOV_ERR_INVALID_ARG; /* overlapping */
+    for (i = 0; i < n; ++i) base[i] = src[i];
+    prog->code = base;
+    return FOV_OK;
+}
+
 FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes, uint32_t count,
                                            int32_t root, void *mem, size_t bytes)
 {
@@ -2946,7 +3002,9 @@ FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint3
                               float depth, uint8_t hit, uint32_t evals, float start, uint32_t steps, int32_t mat,
                               uint8_t mask)
 {
-    uint32_t w = c->cam.width;
+    uint32_t w = c->cam.width - o->origin_x;
+    x -= o->origin_x;
+    y -= o->origin_y;
     if (o->rgb) {
         float *q = o->rgb + (size_t)y * (o->rgb_stride ? o->rgb_stride : 3u * w) + 3u * (size_t)x;
         q[0] = acc[0]; q[1] = acc[1]; q[2] = acc[2];
@@ -3059,9 +3117,14 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
                 known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
 }
 
-FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o)
+FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x0, uint32_t y0,
+                                             uint32_t x1, uint32_t y1)
 {
-    uint32_t w = c->cam.width;
+    uint32_t w;
+    if (x0 >= x1 || y0 >= y1) return FOV_OK; /* nothing is written */
+    if (x0 < o->origin_x || y0 < o->origin_y || o->origin_x >= c->cam.width || o->origin_y >= c->cam.height)
+        return FOV_ERR_INVALID_ARG;
+    w = x1 - o->origin_x; /* the widest row written */
     if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) || (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
         (o->depth && o->depth_stride && o->depth_stride < w) || (o->hit && o->hit_stride && o->hit_stride < w) ||
         (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w) ||
@@ -3561,7 +3624,9 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                 }
                 fovsdf__pixel(c, mp, x, y, o, st, t0, miss, NULL, 0.0f, 0.0f);
             } else if (c->cfg.refresh > 1u && fovsdf__bayer(u, v, c->cfg.refresh) != ph) {
-                if (o->mask) o->mask[(size_t)y * (o->mask_stride ? o->mask_stride : c->cam.width) + x] = 2u;
+                if (o->mask)
+                    o->mask[(size_t)(y - o->origin_y) * (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
+                            (x - o->origin_x)] = 2u;
             } else {
                 int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
                 float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f, col[3] = { 0.0f, 0.0f, 0.0f };
@@ -3586,7 +3651,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     fov_result r;
     if (!c || !o) return FOV_ERR_NULL;
     if (x0 > x1 || y0 > y1 || x1 > c->cam.width || y1 > c->cam.height) return FOV_ERR_INVALID_ARG;
-    r = fovsdf__check_output(c, o);
+    r = fovsdf__check_output(c, o, x0, y0, x1, y1);
     if (r != FOV_OK) return r;
     FOV_MEMSET(&local, 0, sizeof local);
     fovsdf__marcher_from_ctx(c, &m, c->origin);

@@ -11,19 +11,29 @@
      scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,
      flip,hit_mismatch_pct
    then: evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,
-     mean_rel_dt,shading,width,height,runs
+     mean_rel_dt,shading,width,height,runs,psnr_e0_5,psnr_e5_10,psnr_e10_20,psnr_e20_up,
+     flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct
    evals_per_px counts the evaluations that find the visible surface (head-start passes plus the
    sample rays), which is what the methods differ in; shading evaluations (normals, shadow rays)
-   are the same for every method and reported separately. Non-foveated methods have fovea_deg 0
-   and refresh 1. With gnuplot installed it also draws bench/results/sdf_<scene>.png (speed-up
-   against PSNR).
+   are reported separately (foveated methods shade fewer rays). psnr_eA_B / flip_eA_B: the error
+   over the pixels between A and B degrees of eccentricity from the gaze; traced_pct: pixels
+   that traced their own rays (100 but for fipr and cone_fov). Non-foveated methods have
+   fovea_deg 0 and refresh 1. refresh is the periphery's rate relative to the fovea (1, 0.5,
+   0.25): such a row renders a whole refresh cycle of 1/refresh frames of the static scene; its
+   time and evaluations are per frame, its error that of the image after the cycle (equal to
+   the refresh-1 image for a static scene; a moving camera would add staleness, not measured
+   here). With gnuplot installed it also draws bench/results/sdf_<scene>.png (speed-up against
+   PSNR).
 
    usage: bench_sdf [--full] [--hd] [--runs N] [--threads N] [--scenes a,b] [--shadows]
                     [--out FILE]
-   Default grid (about 10 minutes on 2 cores at 640x360): every method at 1 spp with the gaze at
-   the centre, classic, cone and ipr at 4 and 16 spp. --full: every method at 1, 4, 16 spp, gaze at
-   the centre and at a corner. --hd: 1920x1080. Shading without shadow rays by default (as in
-   the thesis's IPR/FIPR study); --shadows adds them. */
+   Default grid (about 11 minutes on 2 cores at 640x360): every method at 1 spp with the gaze at
+   the centre (fipr and cone_fov with the 7.5-degree fovea, refresh 1), classic, cone and ipr
+   at 4 and 16 spp, and cone_fov at 16 spp beside classic at 16 spp. --full: every method at
+   1, 4, 16 spp, gaze at the centre and at a corner (10 % of the width and height), fipr and
+   cone_fov at every fovea (2.5, 5, 7.5, 10, 15 degrees) and refresh (1, 1/2, 1/4): 1332 rows,
+   hours. --hd: 1920x1080. Shading without shadow rays by default (as in the thesis's IPR/FIPR
+   study); --shadows adds them. */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
 #define FOVIMG_IMPLEMENTATION
@@ -39,8 +49,11 @@
 #include <unistd.h>
 
 typedef struct job_t {
-    uint32_t scene, method, spp, corner;
+    uint32_t scene, method, spp, corner, refresh;
+    float fovea;
 } job_t;
+
+static int foveated(uint32_t m) { return m == FOVSDF_METHOD_FIPR || m == FOVSDF_METHOD_CONE_FOV; }
 
 typedef struct img_t {
     float *rgb, *disp, *depth;
@@ -86,7 +99,10 @@ int main(int argc, char **argv)
     uint32_t W = 640, H = 360;
     int full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
     const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/sdf.csv";
-    job_t jobs[1024];
+    static job_t jobs[4096];
+    const float foveas[5] = { 2.5f, 5.0f, 7.5f, 10.0f, 15.0f };
+    const uint32_t refreshes[3] = { 1, 2, 4 };
+    uint32_t fi, ri;
     FILE *csv;
     uint32_t id, m, s, g;
     const uint32_t spps[3] = { 1, 4, 16 };
@@ -109,23 +125,37 @@ int main(int argc, char **argv)
         if (!p || (p != scenes && p[-1] != ',') || (p[strlen(nm)] != ',' && p[strlen(nm)] != 0)) continue;
         for (g = 0; g < (full ? 2u : 1u); ++g)
             for (s = 0; s < 3; ++s)
-                for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m) {
-                    int in = full || spps[s] == 1 || m == FOVSDF_METHOD_CLASSIC || m == FOVSDF_METHOD_CONE || m == FOVSDF_METHOD_IPR;
-                    if (!in || njobs >= 1024) continue;
-                    jobs[njobs].scene = id; jobs[njobs].method = m; jobs[njobs].spp = spps[s]; jobs[njobs].corner = g;
-                    ++njobs;
-                }
+                for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m)
+                    for (fi = 0; fi < 5; ++fi)
+                        for (ri = 0; ri < 3; ++ri) {
+                            /* default grid: every method at 1 spp (foveated ones at 7.5 degrees,
+                               refresh 1), classic, cone and ipr at 4 and 16 spp, cone_fov at 16 spp
+                               beside classic; --full: everything, foveated ones over the fovea x
+                               refresh grid */
+                            int def = (spps[s] == 1 || m == FOVSDF_METHOD_CLASSIC || m == FOVSDF_METHOD_CONE ||
+                                       m == FOVSDF_METHOD_IPR || (m == FOVSDF_METHOD_CONE_FOV && spps[s] == 16)) &&
+                                      fi == 2 && ri == 0;
+                            if (!foveated(m) && (fi != 2 || ri != 0)) continue;
+                            if (!(full || def) || njobs >= 4096) continue;
+                            jobs[njobs].scene = id; jobs[njobs].method = m; jobs[njobs].spp = spps[s]; jobs[njobs].corner = g;
+                            jobs[njobs].fovea = foveated(m) ? foveas[fi] : 0.0f;
+                            jobs[njobs].refresh = foveated(m) ? refreshes[ri] : 1u;
+                            ++njobs;
+                        }
     }
     csv = fopen(outpath, "w");
     if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
     fprintf(csv, "scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,flip,hit_mismatch_pct,"
-                 "evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,mean_rel_dt,shading,width,height,runs\n");
+                 "evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,mean_rel_dt,shading,width,height,runs,"
+                 "psnr_e0_5,psnr_e5_10,psnr_e10_20,psnr_e20_up,flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct\n");
     fprintf(stderr, "bench-sdf: %ux%u, %d configurations, median of %d runs, %d threads, %s\n", W, H, njobs, runs, nthreads,
             shadows ? "with shadows" : "no shadow rays");
 
     {
         size_t npx = (size_t)W * H, sz = 0;
         img_t gt, im;
+        float *ecc = (float *)malloc(npx * sizeof(float)), *flipmap = (float *)malloc(npx * sizeof(float));
+        uint8_t *mask = (uint8_t *)malloc(npx);
         void *mem = NULL;
         fovsdf_builtin bi;
         uint32_t cur_scene = 0xffffffffu, cur_spp = 0, cur_g = 2;
@@ -140,8 +170,10 @@ int main(int argc, char **argv)
             fovsdf_output out;
             fovsdf_stats st;
             fov_gaze gaze;
-            double times[64], ms, psnr = 0.0, ssim = 0.0, flip = 0.0, rel = 0.0;
-            long mismatch = 0, nrel = 0;
+            double times[64], ms, psnr = 0.0, ssim = 0.0, flip = 0.0, rel = 0.0, bp[4], bf[4];
+            const double edges[5] = { 0.0, 5.0, 10.0, 20.0, 1e9 };
+            long mismatch = 0, nrel = 0, traced = 0, cnt;
+            uint64_t ev_frames = 0, ev_low = 0, ev_prim = 0, ev_shade = 0;
             size_t i;
             int r;
             char what[96];
@@ -168,41 +200,69 @@ int main(int argc, char **argv)
                 out.rgb = gt.rgb; out.depth = gt.depth; out.hit = gt.hit;
                 fovrun_render(&ctx, &out, nthreads, &st);
                 to_display(&gt, npx);
+                for (i = 0; i < npx; ++i) ecc[i] = fovsdf_ecc_deg(&ctx.ecc, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
                 cur_spp = jb->spp;
                 cur_g = jb->corner;
             }
-            snprintf(what, sizeof what, "%s %s %u spp%s", bi.name, fovsdf_method_name(jb->method), jb->spp, jb->corner ? " corner" : "");
+            snprintf(what, sizeof what, "%s %s %u spp%s %g/%u", bi.name, fovsdf_method_name(jb->method), jb->spp,
+                     jb->corner ? " corner" : "", (double)jb->fovea, jb->refresh);
             progress(done, njobs, what);
             cfg = fovsdf_config_default();
             cfg.method = jb->method;
             cfg.spp = jb->spp;
             cfg.shading = shadows ? FOVSDF_SHADE_FULL : FOVSDF_SHADE_NO_SHADOWS;
-            if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) { fprintf(stderr, "init failed\n"); return 1; }
+            if (foveated(jb->method)) { cfg.acuity.fovea_deg = jb->fovea; cfg.refresh = jb->refresh; }
             fovsdf_output_init(&out);
-            out.rgb = im.rgb; out.depth = im.depth; out.hit = im.hit;
-            for (r = 0; r < runs && r < 64; ++r) times[r] = fovrun_render(&ctx, &out, nthreads, &st);
+            out.rgb = im.rgb; out.depth = im.depth; out.hit = im.hit; out.mask = mask;
+            /* a refresh cycle of `refresh` frames (static scene and gaze): the time and the
+               evaluations are per frame, the error is that of the image after the cycle */
+            for (r = 0; r < runs && r < 64; ++r) {
+                uint32_t f;
+                times[r] = 0.0;
+                ev_frames = ev_low = ev_prim = ev_shade = 0;
+                for (f = 0; f < cfg.refresh + (cfg.refresh == 0); ++f) {
+                    cfg.frame = f;
+                    if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) { fprintf(stderr, "init failed\n"); return 1; }
+                    times[r] += fovrun_render(&ctx, &out, nthreads, &st);
+                    ev_frames += st.evals; ev_low += st.evals_lowres; ev_prim += st.evals_primary;
+                    ev_shade += st.evals_normal + st.evals_shadow;
+                }
+                times[r] /= (double)ctx.cfg.refresh;
+            }
+            for (i = 0; i < npx; ++i) traced += mask[i] == 1;
             qsort(times, (size_t)(runs < 64 ? runs : 64), sizeof times[0], cmp_double);
             ms = times[(runs < 64 ? runs : 64) / 2];
             if (jb->method == FOVSDF_METHOD_CLASSIC) classic_ms = ms;
             to_display(&im, npx);
             fovm_psnr(gt.disp, im.disp, (int)W, (int)H, 3, &psnr);
             fovm_ssim(gt.disp, im.disp, (int)W, (int)H, 3, &ssim, NULL);
-            fovm_flip(gt.disp, im.disp, (int)W, (int)H, 3, FOVM_FLIP_DEFAULT_PPD, &flip, NULL);
+            fovm_flip(gt.disp, im.disp, (int)W, (int)H, 3, FOVM_FLIP_DEFAULT_PPD, &flip, flipmap);
+            for (r = 0; r < 4; ++r) { /* per eccentricity band (degrees from the gaze) */
+                fovm_sel sel = fovm_sel_band(ecc, edges[r], edges[r + 1]);
+                if (fovm_psnr_sel(gt.disp, im.disp, (int)W, (int)H, 3, &sel, &bp[r], &cnt) != 0 || cnt == 0) bp[r] = NAN;
+                if (fovm_map_mean_sel(flipmap, (int)W, (int)H, &sel, &bf[r], &cnt) != 0 || cnt == 0) bf[r] = NAN;
+            }
             for (i = 0; i < npx; ++i) {
                 if (gt.hit[i] != im.hit[i]) ++mismatch;
                 else if (gt.hit[i]) { rel += fabs((double)im.depth[i] - (double)gt.depth[i]) / (double)gt.depth[i]; ++nrel; }
             }
-            fprintf(csv, "%s,%s,%u,%g,%d,%s,%.4f,%.3f,%.4f,%.4f,%.6f,%.6f,%.5f,%.4f,%.4f,%.4f,%.4f,%.4e,%s,%u,%u,%d\n", bi.name,
-                    fovsdf_method_name(jb->method), jb->spp, 0.0, 1, jb->corner ? "corner" : "center",
-                    (double)(st.evals_lowres + st.evals_primary) / (double)npx, ms, classic_ms > 0.0 ? classic_ms / ms : 0.0, psnr, ssim,
-                    flip, 100.0 * (double)mismatch / (double)npx, (double)st.evals_lowres / (double)npx,
-                    (double)st.evals_primary / (double)npx, (double)(st.evals_normal + st.evals_shadow) / (double)npx,
-                    (double)st.evals / (double)npx, nrel ? rel / (double)nrel : 0.0, shadows ? "full" : "no_shadows", W, H, runs);
+            {
+                double fr = (double)ctx.cfg.refresh * (double)npx; /* per frame and pixel */
+                fprintf(csv, "%s,%s,%u,%g,%g,%s,%.4f,%.3f,%.4f,%.4f,%.6f,%.6f,%.5f,%.4f,%.4f,%.4f,%.4f,%.4e,%s,%u,%u,%d,"
+                             "%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.3f\n",
+                        bi.name, fovsdf_method_name(jb->method), jb->spp, (double)jb->fovea, 1.0 / (double)jb->refresh,
+                        jb->corner ? "corner" : "center", (double)(ev_low + ev_prim) / fr, ms,
+                        classic_ms > 0.0 ? classic_ms / ms : 0.0, psnr, ssim, flip, 100.0 * (double)mismatch / (double)npx,
+                        (double)ev_low / fr, (double)ev_prim / fr, (double)ev_shade / fr, (double)ev_frames / fr,
+                        nrel ? rel / (double)nrel : 0.0, shadows ? "full" : "no_shadows", W, H, runs, bp[0], bp[1], bp[2], bp[3],
+                        bf[0], bf[1], bf[2], bf[3], 100.0 * (double)traced / (double)npx);
+            }
             fflush(csv);
             ++done;
         }
         progress(done, njobs, "done");
         free(mem);
+        free(ecc); free(flipmap); free(mask);
         img_free(&gt);
         img_free(&im);
     }

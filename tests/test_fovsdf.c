@@ -577,7 +577,9 @@ static void test_ranges(void)
         fovsdf_output_init(&o); o.steps = st; o.steps_stride = 63;
         expect_res("stride_steps_too_small", fovsdf_render_rows(&ctx, 0, 1, &o, NULL), FOV_ERR_TOO_SMALL);
         fovsdf_output_init(&o); o.material = mat; o.material_stride = 63;
-        expect_res("stride_material_too_small", fovsdf_render_tile(&ctx, 0, 0, 1, 1, &o, NULL), FOV_ERR_TOO_SMALL);
+        expect_res("stride_material_too_small", fovsdf_render_tile(&ctx, 0, 0, 64, 1, &o, NULL), FOV_ERR_TOO_SMALL);
+        /* the rule is the widest row written: a 1-pixel tile fits a 63-element stride, 64 do not */
+        expect_res("stride_checked_against_the_region", fovsdf_render_tile(&ctx, 0, 0, 1, 1, &o, NULL), FOV_OK);
         fovsdf_output_init(&o); o.rgb = rgb; o.rgb_stride = 3 * 64;
         expect_res("stride_rgb_exact_ok", fovsdf_render_rows(&ctx, 0, 1, &o, NULL), FOV_OK);
     }

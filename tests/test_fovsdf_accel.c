@@ -383,6 +383,34 @@ static void partition_invariant(uint32_t method, uint32_t scene, uint32_t spp)
         for (x = 0; x < 100; x += 13) fovsdf_render_tile(&k, x, y, x + 13 < 100 ? x + 13 : 100, y + 11 < 57 ? y + 11 : 57, &o, NULL);
     same = memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0;
     check(same, N("%s_tiles_identical", fovsdf_method_name(method)), "13x11 tiles differ from the full render");
+    {   /* the same tiles into 13x11 tile buffers (origin at the tile's corner): fixed memory */
+        float tb[13 * 11 * 3], ts[13 * 11];
+        fov_result r0 = FOV_OK, r1, r2;
+        memset(b, 0, sizeof b);
+        memset(sb, 0, sizeof sb);
+        for (y = 0; y < 57; y += 11)
+            for (x = 0; x < 100; x += 13) {
+                uint32_t x1 = x + 13 < 100 ? x + 13 : 100, y1 = y + 11 < 57 ? y + 11 : 57, i, j;
+                fovsdf_output t;
+                fovsdf_output_init(&t);
+                t.rgb = tb; t.rgb_stride = 3 * 13; t.start = ts; t.start_stride = 13;
+                t.origin_x = x; t.origin_y = y;
+                r1 = fovsdf_render_tile(&k, x, y, x1, y1, &t, NULL);
+                if (r1 != FOV_OK) r0 = r1;
+                for (j = y; j < y1; ++j)
+                    for (i = x; i < x1; ++i) {
+                        memcpy(b + 3 * (j * 100 + i), tb + 3 * ((j - y) * 13 + (i - x)), 3 * sizeof(float));
+                        sb[j * 100 + i] = ts[(j - y) * 13 + (i - x)];
+                    }
+            }
+        same = r0 == FOV_OK && memcmp(a, b, sizeof a) == 0 && memcmp(sa, sb, sizeof sa) == 0;
+        check(same, N("%s_tile_buffers_identical", fovsdf_method_name(method)), "tile buffers differ (status %d)", (int)r0);
+        o.rgb = tb; o.rgb_stride = 3 * 13; o.start = NULL; o.origin_x = 13; o.origin_y = 11;
+        r1 = fovsdf_render_tile(&k, 12, 11, 20, 20, &o, NULL);
+        r2 = fovsdf_render_tile(&k, 13, 11, 27, 20, &o, NULL);
+        check(r1 == FOV_ERR_INVALID_ARG && r2 == FOV_ERR_TOO_SMALL, N("%s_tile_buffer_bounds", fovsdf_method_name(method)),
+              "left of the origin: %d, wider than the stride: %d", (int)r1, (int)r2);
+    }
     free(mem);
 }
 

@@ -2173,6 +2173,47 @@ static void section4_render(void)
 }
 
 /* ==== main ================================================================================ */
+/* fovsdf_program_compact: the compacted code renders the same bytes after the build memory
+   is overwritten, and it is a small part of that memory. */
+static void section5_compact(void)
+{
+    size_t sz, need;
+    unsigned char *mem, *code;
+    fovsdf_builtin bi;
+    fovsdf_program p;
+    fovsdf_config c = fovsdf_config_default();
+    fovsdf_ctx k;
+    fovsdf_output o;
+    fov_gaze gz = { 32.0f, 18.0f };
+    static float a[64 * 36 * 3], b[64 * 36 * 3];
+    fov_result r1, r2, r3;
+    fovsdf_builtin_size(FOVSDF_SCENE_PRIMITIVES, &sz);
+    mem = (unsigned char *)malloc(sz);
+    fovsdf_builtin_init(FOVSDF_SCENE_PRIMITIVES, &bi, mem, sz);
+    bi.camera.width = 64; bi.camera.height = 36;
+    c.method = FOVSDF_METHOD_CONE;
+    fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+    fovsdf_output_init(&o); o.rgb = a;
+    fovsdf_render_rows(&k, 0, 36, &o, NULL);
+    p = *bi.program;
+    need = fovsdf_program_code_bytes(&p);
+    code = (unsigned char *)malloc(need + 1);
+    r1 = fovsdf_program_compact(&p, code + 1, need - 1);   /* too small */
+    r2 = fovsdf_program_compact(&p, NULL, need);
+    r3 = fovsdf_program_compact(&p, code + 1, need);       /* unaligned start: aligned inside */
+    memset(mem, 0xff, sz);                                  /* the build memory is gone */
+    fovsdf_scene_set_program(&bi.scene, &p);
+    fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+    o.rgb = b;
+    fovsdf_render_rows(&k, 0, 36, &o, NULL);
+    check(r1 == FOV_ERR_TOO_SMALL && r2 == FOV_ERR_NULL && r3 == FOV_OK && memcmp(a, b, sizeof a) == 0 && need * 4 < sz,
+          "s5_compact_program_renders_the_same",
+          "errors %d %d, compact %d, images %s, code %zu of %zu build bytes", (int)r1, (int)r2, (int)r3,
+          memcmp(a, b, sizeof a) ? "differ" : "equal", need, sz);
+    free(code);
+    free(mem);
+}
+
 int main(void)
 {
     clock_t t0 = clock();
@@ -2186,6 +2227,7 @@ int main(void)
     section4_grazing();
     section4_inside();
     section4_render();
+    section5_compact();
     info("run time %.2f s", (double)(clock() - t0) / CLOCKS_PER_SEC);
     return fovcheck_summary();
 }

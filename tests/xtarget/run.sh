@@ -32,6 +32,11 @@
 #   reference: PASS when PSNR >= 50 dB and hit-mask mismatch <= 0.1 %; it also reports the
 #   largest depth difference over pixels both mark as hit and the evaluation counts.
 #
+#   mem_test.c renders FOVSDF_SCENE_PRIMITIVES at 160x128 with the cone pyramid (full shading)
+#   band by band from a bump-allocated arena (compacted program, context, one band of
+#   outputs) and measures the stack high-water mark on the Cortex-M4: PASS when arena +
+#   stack <= 32768 bytes; its image is compared with the native build of the same program.
+#
 # Debian packages: gcc clang lld wasi-libc libclang-rt-dev-wasm32 nodejs (>= 20)
 # gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm.
 
@@ -272,6 +277,44 @@ if [ ! -f fovsdf.h ]; then
     exit 1
 fi
 
+# mem_test: Primitives at 160x128 with the cone pyramid in at most 32 KiB of working memory
+# on the Cortex-M4 (mem_test.c), compared with the same program built natively.
+MEM_LIMIT=32768
+mem_check() {
+    local d="$B/mem" n="mem cortex-m4"
+    mkdir -p "$d"
+    need "build mem native" gcc gcc || return 0
+    if ! gcc -std=c99 "${COMMON[@]}" "$T/mem_test.c" -o "$d/native" -lm > "$d/build_native.log" 2>&1; then
+        fail "build mem native" "$(errsum "$d/build_native.log")"; return 0
+    fi
+    timeout 120 "$d/native" > "$d/native.txt" 2>&1 || { fail "run mem native" "exit status $? (log: $d/native.txt)"; return 0; }
+    m4_build_tools "build $n" 0 || return 0
+    if ! arm-none-eabi-gcc "${M4FLAGS[@]}" -std=c99 "${COMMON[@]}" -DXT_SEMIHOSTING -nostartfiles -T "$T/mps2_an386.ld" \
+        -Wl,--gc-sections -ffunction-sections -fdata-sections "$T/m4_startup.c" "$T/mem_test.c" -ffreestanding \
+        -DFOV_NO_LIBM -nostdlib -o "$d/m4.elf" -lgcc > "$d/build_m4.log" 2>&1; then
+        fail "build $n" "$(errsum "$d/build_m4.log")"; return 0
+    fi
+    m4_run_tools "run $n" || return 0
+    timeout 300 qemu-system-arm -M mps2-an386 -nographic -semihosting -kernel "$d/m4.elf" < /dev/null > "$d/m4.txt" 2> "$d/m4.err"
+    local rc=$?
+    if [ $rc != 0 ] || ! grep -q '^done 0$' "$d/m4.txt"; then
+        fail "run $n" "exit status $rc; $(grep -E '^(status|error)' "$d/m4.txt" | tr '\n' ' ') (log: $d/)"; return 0
+    fi
+    local line total stack
+    line=$(grep '^memory render ' "$d/m4.txt")
+    total=$(echo "$line" | awk '{for (i = 1; i < NF; i++) if ($i == "total") print $(i + 1)}')
+    stack=$(echo "$line" | awk '{for (i = 1; i < NF; i++) if ($i == "stack") print $(i + 1)}')
+    if [ -n "$total" ] && [ -n "$stack" ] && [ "$stack" -gt 0 ] && [ "$total" -le "$MEM_LIMIT" ]; then
+        pass "$n primitives 160x128 cone in <= $MEM_LIMIT B" "${line#memory render }; build (start-up only) $(grep '^memory build ' "$d/m4.txt" | cut -d' ' -f3) B"
+    else
+        fail "$n primitives 160x128 cone in <= $MEM_LIMIT B" "measured: ${line:-no memory line} (log: $d/m4.txt)"
+    fi
+    if [ -x "$B/compare" ]; then
+        "$B/compare" --psnr "$PSNR_MIN" --hit "$HIT_MAX" "$n" "$d/native.txt" "$d/m4.txt" > "$d/compare.txt" 2>&1
+        grep -E '^(PASS|FAIL) ' "$d/compare.txt" || fail "compare $n" "$(head -c 300 "$d/compare.txt")"
+    fi
+}
+
 # the reference and the compare tool first, then the other targets
 job build_compare
 job native_ref
@@ -279,6 +322,7 @@ wait
 for tgt in cortex-m4-nolibm cortex-m4-libm wasm32-libm wasm32-nolibm native-nolibm; do
     job target "$tgt"
 done
+job mem_check
 wait
 
 # images for viewing: build/xtarget/<target>/<scene>.ppm and <scene>_hit.pgm (not checks)
