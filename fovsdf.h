@@ -86,7 +86,8 @@ ACCELERATED METHODS
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
    `refresh` frames (tested), and with a fovea covering the image FIPR is IPR and CONE_FOV is
    CONE bit for bit. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
-   mask-guided blur is left out: its own study found it made the foveation more visible.
+   mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by default: its
+   own study found it made the foveation more visible.
    Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and as
    many floats, on the stack (about 13 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
    cone_tile 32 (CONE_FOV); larger tiles are FOV_ERR_LIMIT.
@@ -753,6 +754,16 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], con
    (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies). out must not
    alias in. */
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
+/* FIPR's pass 5, optional (the thesis's study found it made the foveation more visible, so
+   nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied only where
+   traced and interpolated pixels meet: a pixel is blurred when its 3x3 neighbourhood holds
+   both mask value 1 and another value (the mask output of FIPR / CONE_FOV); every other pixel
+   is copied. Kernel radius ceil(3 sigma), renormalised at the image borders. rgb and out are
+   3 floats per pixel with row strides in floats (0: 3 w), mask a byte per pixel (stride 0: w);
+   out must not alias rgb. */
+FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask,
+                                       uint32_t mask_stride, uint32_t w, uint32_t h, float sigma,
+                                       float *out, uint32_t out_stride);
 /* Shades one hit: linear RGB of the surface at p with normal n seen along rd. */
 FOVSDF_API void fovsdf_shade(const fovsdf_ctx *ctx, const float p[3], const float n[3],
                              const float rd[3], int32_t material, float rgb[3],
@@ -3254,6 +3265,53 @@ FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h,
     return FOV_OK;
 }
 
+FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask, uint32_t mask_stride,
+                                       uint32_t w, uint32_t h, float sigma, float *out, uint32_t out_stride)
+{
+    float wt[25];
+    int32_t R, i, j, x, y;
+    if (!rgb || !mask || !out) return FOV_ERR_NULL;
+    if (!fovsdf__finite(sigma)) return FOV_ERR_NOT_FINITE;
+    if (w == 0 || h == 0 || !(sigma > 0.0f) || sigma > 8.0f || rgb == out) return FOV_ERR_INVALID_ARG;
+    if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
+    if (rgb_stride == 0) rgb_stride = 3u * w;
+    if (out_stride == 0) out_stride = 3u * w;
+    if (mask_stride == 0) mask_stride = w;
+    if (rgb_stride < 3u * w || out_stride < 3u * w || mask_stride < w) return FOV_ERR_TOO_SMALL;
+    R = (int32_t)(3.0f * sigma + 0.999f);
+    if (R > 24) R = 24;
+    for (i = 0; i <= R; ++i) wt[i] = FOVSDF__EXP(-0.5f * (float)(i * i) / (sigma * sigma));
+    for (y = 0; y < (int32_t)h; ++y)
+        for (x = 0; x < (int32_t)w; ++x) {
+            const float *s = rgb + (size_t)y * rgb_stride + 3u * (size_t)x;
+            float *d = out + (size_t)y * out_stride + 3u * (size_t)x;
+            int has1 = 0, has0 = 0;
+            for (j = y - 1; j <= y + 1; ++j)
+                for (i = x - 1; i <= x + 1; ++i)
+                    if (i >= 0 && j >= 0 && i < (int32_t)w && j < (int32_t)h) {
+                        if (mask[(size_t)j * mask_stride + (size_t)i] == 1u) has1 = 1; else has0 = 1;
+                    }
+            if (!(has1 && has0)) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; continue; }
+            {
+                float acc[3] = { 0.0f, 0.0f, 0.0f }, sum = 0.0f;
+                for (j = y - R; j <= y + R; ++j) {
+                    if (j < 0 || j >= (int32_t)h) continue;
+                    for (i = x - R; i <= x + R; ++i) {
+                        const float *q;
+                        float k;
+                        if (i < 0 || i >= (int32_t)w) continue;
+                        q = rgb + (size_t)j * rgb_stride + 3u * (size_t)i;
+                        k = wt[i > x ? i - x : x - i] * wt[j > y ? j - y : y - j];
+                        acc[0] += k * q[0]; acc[1] += k * q[1]; acc[2] += k * q[2];
+                        sum += k;
+                    }
+                }
+                d[0] = acc[0] / sum; d[1] = acc[1] / sum; d[2] = acc[2] / sum;
+            }
+        }
+    return FOV_OK;
+}
+
 /* ---- inverted pyramid rendering, IPR (thesis ch. 5.3, notes seed000 section 1.5.1) ----------
    Level 0 traces one ray per cell of 2^(levels-1) x 2^(levels-1) pixels through the cell's
    centre from the camera; every higher level traces the rays of cells half as wide, each from
@@ -3412,8 +3470,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
       not refreshed is not written at all (the caller's buffers hold the earlier frame; the
       mask output says 2). A static scene and gaze therefore reach the image of refresh 1
       after `refresh` consecutive frames.
-   5. the thesis's mask-guided blur is not applied: its study found it made the foveation
-      more visible (notes section 3.3).
+   5. the thesis's mask-guided blur is not applied here: its study found it made the
+      foveation more visible (notes section 3.3); fovsdf_mask_blur does it on request.
    Everything is lazy: a cell is traced, or shaded, the first time a pixel of the tile needs
    it, so the fovea never shades mid-level rays and the periphery never traces its pixels.
    The tile's arrays hold its cells and a one-cell (FIPR: max(1, r)) apron; the apron cells

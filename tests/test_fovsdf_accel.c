@@ -1065,6 +1065,69 @@ static void fov_bad_params(void)
     check(r == FOV_OK, "cone_fov_tile_32_ok", "got %d", (int)r);
 }
 
+/* fovsdf_mask_blur: copies every pixel away from a traced/interpolated border, blurs the
+   border pixels with the Gaussian computed here in double, keeps a constant image constant. */
+static void mask_blur_tests(void)
+{
+    enum { W = 40, H = 30 };
+    static float in[W * H * 3], out[W * H * 3], cst[W * H * 3], o2[W * H * 3];
+    static uint8_t mk[W * H];
+    uint32_t x, y, i, copied = 0, notcopied = 0, blurred = 0, badblur = 0, n_border = 0;
+    double worst = 0.0;
+    fov_result r, e1, e2, e3, e4, e5;
+    rng g = { 99 };
+    for (i = 0; i < W * H * 3; ++i) { in[i] = (float)urand(&g); cst[i] = 0.375f; }
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) mk[y * W + x] = (uint8_t)((x - 20) * (x - 20) + (y - 15) * (y - 15) < 64 ? 1 : (x % 7 == 0 ? 2 : 0));
+    r = fovsdf_mask_blur(in, 0, mk, 0, W, H, 1.5f, out, 0);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            int has1 = 0, has0 = 0, a, b;
+            for (b = -1; b <= 1; ++b)
+                for (a = -1; a <= 1; ++a) {
+                    int xx = (int)x + a, yy = (int)y + b;
+                    if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+                    if (mk[yy * W + xx] == 1) has1 = 1; else has0 = 1;
+                }
+            if (!(has1 && has0)) {
+                if (memcmp(out + 3 * (y * W + x), in + 3 * (y * W + x), 3 * sizeof(float)) == 0) ++copied; else ++notcopied;
+            } else {
+                double acc[3] = { 0, 0, 0 }, s = 0.0;
+                int R = 5, c;
+                ++n_border;
+                for (b = -R; b <= R; ++b)
+                    for (a = -R; a <= R; ++a) {
+                        int xx = (int)x + a, yy = (int)y + b;
+                        double k;
+                        if (xx < 0 || yy < 0 || xx >= W || yy >= H) continue;
+                        k = exp(-0.5 * (a * a + b * b) / (1.5 * 1.5));
+                        for (c = 0; c < 3; ++c) acc[c] += k * (double)in[3 * (yy * W + xx) + c];
+                        s += k;
+                    }
+                for (c = 0; c < 3; ++c) {
+                    double d = fabs(acc[c] / s - (double)out[3 * (y * W + x) + (uint32_t)c]);
+                    if (d > worst) worst = d;
+                    if (d > 1e-5) ++badblur;
+                }
+                ++blurred;
+            }
+        }
+    check(r == FOV_OK && notcopied == 0 && n_border > 40 && badblur == 0, "mask_blur_border_only",
+          "status %d; %u of %u non-border pixels changed; %u border pixels, worst difference to the Gaussian %.3g", (int)r,
+          notcopied, copied + notcopied, blurred, worst);
+    r = fovsdf_mask_blur(cst, 0, mk, 0, W, H, 3.0f, o2, 0);
+    for (i = 0, notcopied = 0; i < W * H * 3; ++i) notcopied += fabsf(o2[i] - 0.375f) > 1e-6f;
+    check(r == FOV_OK && notcopied == 0, "mask_blur_keeps_constant", "%u values changed", notcopied);
+    e1 = fovsdf_mask_blur(NULL, 0, mk, 0, W, H, 1.0f, out, 0);
+    e2 = fovsdf_mask_blur(in, 0, mk, 0, W, H, 0.0f, out, 0);
+    e3 = fovsdf_mask_blur(in, 0, mk, 0, W, H, NAN, out, 0);
+    e4 = fovsdf_mask_blur(in, 0, mk, 0, W, H, 1.0f, in, 0);
+    e5 = fovsdf_mask_blur(in, 3 * W - 1, mk, 0, W, H, 1.0f, out, 0);
+    check(e1 == FOV_ERR_NULL && e2 == FOV_ERR_INVALID_ARG && e3 == FOV_ERR_NOT_FINITE && e4 == FOV_ERR_INVALID_ARG &&
+              e5 == FOV_ERR_TOO_SMALL,
+          "mask_blur_bad_params", "got %d %d %d %d %d", (int)e1, (int)e2, (int)e3, (int)e4, (int)e5);
+}
+
 int main(void)
 {
     acuity_tests();
@@ -1084,6 +1147,7 @@ int main(void)
     fov_temporal_reuse();
     fov_mask_tests();
     fov_quality();
+    mask_blur_tests();
     bad_params();
     cone_vs_classic();
     cone_property();
