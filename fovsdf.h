@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.1.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.2.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -175,6 +175,10 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.2.0 (2026-11-23) FIPR and CONE_FOV (foveated head starts, periphery refresh, mask output,
+                      fovsdf_mask_blur), tile output buffers (fovsdf_output.origin_x/y),
+                      fovsdf_program_compact; fovsdf_output gained fields (zero them with
+                      fovsdf_output_init), fovsdf_config gained the foveation fields.
    0.1.0 (2026-11-22) first release: tracers, built-in scenes, shading, eccentricity model.
 */
 
@@ -189,9 +193,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 1
+#define FOVSDF_VERSION_MINOR 2
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.1.0"
+#define FOVSDF_VERSION_STRING "0.2.0"
 
 #if defined(__GNUC__) || defined(__clang__)
 #define FOVSDF__UNUSED __attribute__((unused))

@@ -12,12 +12,14 @@
      flip,hit_mismatch_pct
    then: evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,
      mean_rel_dt,shading,width,height,runs,psnr_e0_5,psnr_e5_10,psnr_e10_20,psnr_e20_up,
-     flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct
+     flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct,psnr_vs_classic,flip_vs_classic,
+     hit_mismatch_vs_classic_pct
    evals_per_px counts the evaluations that find the visible surface (head-start passes plus the
    sample rays), which is what the methods differ in; shading evaluations (normals, shadow rays)
    are reported separately (foveated methods shade fewer rays). psnr_eA_B / flip_eA_B: the error
    over the pixels between A and B degrees of eccentricity from the gaze; traced_pct: pixels
-   that traced their own rays (100 but for fipr and cone_fov). Non-foveated methods have
+   that traced their own rays (100 but for fipr and cone_fov); *_vs_classic: against classic at
+   the same spp and gaze (the same hit threshold: what an acceleration itself changes). Non-foveated methods have
    fovea_deg 0 and refresh 1. refresh is the periphery's rate relative to the fovea (1, 0.5,
    0.25): such a row renders a whole refresh cycle of 1/refresh frames of the static scene; its
    time and evaluations are per frame, its error that of the image after the cycle (equal to
@@ -147,7 +149,8 @@ int main(int argc, char **argv)
     if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
     fprintf(csv, "scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,flip,hit_mismatch_pct,"
                  "evals_lowres_per_px,evals_primary_per_px,evals_shading_per_px,evals_total_per_px,mean_rel_dt,shading,width,height,runs,"
-                 "psnr_e0_5,psnr_e5_10,psnr_e10_20,psnr_e20_up,flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct\n");
+                 "psnr_e0_5,psnr_e5_10,psnr_e10_20,psnr_e20_up,flip_e0_5,flip_e5_10,flip_e10_20,flip_e20_up,traced_pct,"
+                 "psnr_vs_classic,flip_vs_classic,hit_mismatch_vs_classic_pct\n");
     fprintf(stderr, "bench-sdf: %ux%u, %d configurations, median of %d runs, %d threads, %s\n", W, H, njobs, runs, nthreads,
             shadows ? "with shadows" : "no shadow rays");
 
@@ -155,7 +158,8 @@ int main(int argc, char **argv)
         size_t npx = (size_t)W * H, sz = 0;
         img_t gt, im;
         float *ecc = (float *)malloc(npx * sizeof(float)), *flipmap = (float *)malloc(npx * sizeof(float));
-        uint8_t *mask = (uint8_t *)malloc(npx);
+        uint8_t *mask = (uint8_t *)malloc(npx), *cl_hit = (uint8_t *)malloc(npx);
+        float *cl_disp = (float *)malloc(npx * 3 * sizeof(float));
         void *mem = NULL;
         fovsdf_builtin bi;
         uint32_t cur_scene = 0xffffffffu, cur_spp = 0, cur_g = 2;
@@ -172,7 +176,8 @@ int main(int argc, char **argv)
             fov_gaze gaze;
             double times[64], ms, psnr = 0.0, ssim = 0.0, flip = 0.0, rel = 0.0, bp[4], bf[4];
             const double edges[5] = { 0.0, 5.0, 10.0, 20.0, 1e9 };
-            long mismatch = 0, nrel = 0, traced = 0, cnt;
+            long mismatch = 0, nrel = 0, traced = 0, cnt, mis_cl = 0;
+            double psnr_cl = 0.0, flip_cl = 0.0;
             uint64_t ev_frames = 0, ev_low = 0, ev_prim = 0, ev_shade = 0;
             size_t i;
             int r;
@@ -242,6 +247,13 @@ int main(int argc, char **argv)
                 if (fovm_psnr_sel(gt.disp, im.disp, (int)W, (int)H, 3, &sel, &bp[r], &cnt) != 0 || cnt == 0) bp[r] = NAN;
                 if (fovm_map_mean_sel(flipmap, (int)W, (int)H, &sel, &bf[r], &cnt) != 0 || cnt == 0) bf[r] = NAN;
             }
+            if (jb->method == FOVSDF_METHOD_CLASSIC) { /* the same-threshold reference of this group */
+                memcpy(cl_disp, im.disp, npx * 3 * sizeof(float));
+                memcpy(cl_hit, im.hit, npx);
+            }
+            fovm_psnr(cl_disp, im.disp, (int)W, (int)H, 3, &psnr_cl);
+            fovm_flip(cl_disp, im.disp, (int)W, (int)H, 3, FOVM_FLIP_DEFAULT_PPD, &flip_cl, NULL);
+            for (i = 0; i < npx; ++i) mis_cl += cl_hit[i] != im.hit[i];
             for (i = 0; i < npx; ++i) {
                 if (gt.hit[i] != im.hit[i]) ++mismatch;
                 else if (gt.hit[i]) { rel += fabs((double)im.depth[i] - (double)gt.depth[i]) / (double)gt.depth[i]; ++nrel; }
@@ -249,20 +261,21 @@ int main(int argc, char **argv)
             {
                 double fr = (double)ctx.cfg.refresh * (double)npx; /* per frame and pixel */
                 fprintf(csv, "%s,%s,%u,%g,%g,%s,%.4f,%.3f,%.4f,%.4f,%.6f,%.6f,%.5f,%.4f,%.4f,%.4f,%.4f,%.4e,%s,%u,%u,%d,"
-                             "%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.3f\n",
+                             "%.4f,%.4f,%.4f,%.4f,%.6f,%.6f,%.6f,%.6f,%.3f,%.4f,%.6f,%.5f\n",
                         bi.name, fovsdf_method_name(jb->method), jb->spp, (double)jb->fovea, 1.0 / (double)jb->refresh,
                         jb->corner ? "corner" : "center", (double)(ev_low + ev_prim) / fr, ms,
                         classic_ms > 0.0 ? classic_ms / ms : 0.0, psnr, ssim, flip, 100.0 * (double)mismatch / (double)npx,
                         (double)ev_low / fr, (double)ev_prim / fr, (double)ev_shade / fr, (double)ev_frames / fr,
                         nrel ? rel / (double)nrel : 0.0, shadows ? "full" : "no_shadows", W, H, runs, bp[0], bp[1], bp[2], bp[3],
-                        bf[0], bf[1], bf[2], bf[3], 100.0 * (double)traced / (double)npx);
+                        bf[0], bf[1], bf[2], bf[3], 100.0 * (double)traced / (double)npx, psnr_cl, flip_cl,
+                        100.0 * (double)mis_cl / (double)npx);
             }
             fflush(csv);
             ++done;
         }
         progress(done, njobs, "done");
         free(mem);
-        free(ecc); free(flipmap); free(mask);
+        free(ecc); free(flipmap); free(mask); free(cl_hit); free(cl_disp);
         img_free(&gt);
         img_free(&im);
     }

@@ -1128,6 +1128,52 @@ static void mask_blur_tests(void)
           "mask_blur_bad_params", "got %d %d %d %d %d", (int)e1, (int)e2, (int)e3, (int)e4, (int)e5);
 }
 
+/* Every method at tiny and odd sizes, every spp, gaze inside and far outside the image: no
+   crash (the sanitizer build runs this too), finite colours, every pixel written. */
+static void tiny_sizes(void)
+{
+    static const uint32_t sz[6][2] = { { 1, 1 }, { 2, 3 }, { 5, 1 }, { 1, 7 }, { 17, 9 }, { 33, 31 } };
+    uint32_t s, m, k, bad = 0, runs = 0;
+    char where[160] = "";
+    for (s = 0; s < 6; ++s)
+        for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m)
+            for (k = 0; k < 3; ++k) {
+                fovsdf_builtin bi;
+                void *mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, sz[s][0], sz[s][1], &bi);
+                fovsdf_config c = fovsdf_config_default();
+                fovsdf_ctx ctx;
+                fovsdf_output o;
+                fov_gaze gz;
+                static float rgb[33 * 31 * 3];
+                uint32_t i, n = sz[s][0] * sz[s][1] * 3;
+                fov_result r;
+                c.method = m;
+                c.spp = k == 0 ? 1u : (k == 1 ? 4u : 16u);
+                c.refresh = k == 2 ? 4u : 1u;
+                c.frame = k;
+                gz.x = k == 1 ? -500.0f : 0.3f * (float)sz[s][0];
+                gz.y = k == 1 ? 900.0f : 0.6f * (float)sz[s][1];
+                for (i = 0; i < n; ++i) rgb[i] = -1.0f;
+                r = fovsdf_init(&ctx, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+                if (r == FOV_OK) {
+                    fovsdf_output_init(&o);
+                    o.rgb = rgb;
+                    r = fovsdf_render_rows(&ctx, 0, sz[s][1], &o, NULL);
+                }
+                ++runs;
+                for (i = 0; i < n; ++i)
+                    if (!(rgb[i] >= 0.0f && rgb[i] < 100.0f) && !(c.refresh > 1u && rgb[i] == -1.0f)) break;
+                if (r != FOV_OK || i < n) {
+                    ++bad;
+                    snprintf(where, sizeof where, "%ux%u %s spp %u: status %d, value %g at %u", sz[s][0], sz[s][1],
+                             fovsdf_method_name(m), c.spp, (int)r, i < n ? (double)rgb[i] : 0.0, i);
+                }
+                free(mem);
+            }
+    check(bad == 0 && runs == 6u * 3u * (uint32_t)_FOVSDF_METHOD_NUM, "all_methods_tiny_sizes",
+          "%u of %u renders failed; %s", bad, runs, where);
+}
+
 int main(void)
 {
     acuity_tests();
@@ -1148,6 +1194,7 @@ int main(void)
     fov_mask_tests();
     fov_quality();
     mask_blur_tests();
+    tiny_sizes();
     bad_params();
     cone_vs_classic();
     cone_property();
