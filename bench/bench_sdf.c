@@ -28,7 +28,7 @@
    PSNR).
 
    usage: bench_sdf [--full] [--hd] [--runs N] [--threads N] [--scenes a,b] [--shadows]
-                    [--out FILE]
+                    [--out FILE] [--plots-only]   (--plots-only: redraw the plots of FILE)
    Default grid (about 11 minutes on 2 cores at 640x360): every method at 1 spp with the gaze at
    the centre (fipr and cone_fov with the 7.5-degree fovea, refresh 1), classic, cone and ipr
    at 4 and 16 spp, and cone_fov at 16 spp beside classic at 16 spp. --full: every method at
@@ -99,7 +99,7 @@ static void progress(int done, int total, const char *what)
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360;
-    int full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
+    int plots_only = 0, full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
     const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/sdf.csv";
     static job_t jobs[4096];
     const float foveas[5] = { 2.5f, 5.0f, 7.5f, 10.0f, 15.0f };
@@ -117,6 +117,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
+        else if (!strcmp(argv[a], "--plots-only")) plots_only = 1;
         else { fprintf(stderr, "unknown option %s (see the comment at the top of bench_sdf.c)\n", argv[a]); return 2; }
     }
     if (runs < 1) runs = 1;
@@ -145,6 +146,7 @@ int main(int argc, char **argv)
                             ++njobs;
                         }
     }
+    if (plots_only) goto plots;
     csv = fopen(outpath, "w");
     if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
     fprintf(csv, "scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,flip,hit_mismatch_pct,"
@@ -282,7 +284,7 @@ int main(int argc, char **argv)
     fclose(csv);
     fprintf(stderr, "wrote %s\n", outpath);
 
-    /* plots: speed-up against PSNR per scene */
+plots: /* speed-up against PSNR per scene */
     if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
         FILE *gp = popen("gnuplot", "w");
         const char *slash = strrchr(outpath, '/');
@@ -292,11 +294,11 @@ int main(int argc, char **argv)
                 const char *nm = fovsdf_builtin_name(id);
                 if (!strstr(scenes, nm)) continue;
                 /* next to the CSV: bench/results/sdf_<scene>.png for the default --out */
-                fprintf(gp, "set terminal pngcairo size 800,500; set output '%.*ssdf_%s.png'\n", dirlen, outpath, nm);
-                fprintf(gp, "set datafile separator ','; set key off; set grid\n");
+                fprintf(gp, "set terminal pngcairo size 800,500 noenhanced; set output '%.*ssdf_%s.png'\n", dirlen, outpath, nm);
+                fprintf(gp, "set datafile separator ','; set key off; set grid; set logscale x 2\n");
                 fprintf(gp, "set title '%s: speed-up against classic vs error (%ux%u)'\n", nm, W, H);
                 fprintf(gp, "set xlabel 'time ratio classic / method (same run)'; set ylabel 'PSNR against ground truth (dB)'\n");
-                fprintf(gp, "plot '%s' every ::1 using (strcol(1) eq '%s' ? $9 : 1/0):10:(sprintf('%%s %%dspp', strcol(2), $3)) with labels point pt 7 offset 0.5,0.5 font ',8'\n",
+                fprintf(gp, "plot '%s' every ::1 using (strcol(1) eq '%s' && $9 > 0 ? $9 : 1/0):10:(sprintf('%%s %%d', strcol(2), $3)) with labels point pt 7 offset 0.3,0.4 left font ',7'\n",
                         outpath, nm);
             }
             pclose(gp);

@@ -3,7 +3,7 @@
 
 usage: python3 bench/sdf_tables.py [bench/results/sdf.csv]
 Prints markdown: the mean over scenes of the evaluation and time ratios against classic (same
-spp, gaze; for foveated methods per fovea and refresh), then every row of the CSV.
+spp, gaze; for foveated methods per fovea and refresh) with the errors, then every row.
 """
 import csv
 import sys
@@ -27,20 +27,25 @@ def main():
         key = (r["method"], int(r["spp"]), r["gaze"], float(r["fovea_deg"]), float(r["refresh"]))
         if key not in groups:
             order.append(key)
-        groups[key].append((float(c["evals_per_px"]) / float(r["evals_per_px"]), float(r["speedup_vs_classic"]),
-                            float(r["psnr"]), float(r["psnr_e0_5"]) if r.get("psnr_e0_5") not in (None, "", "nan") else float("nan")))
-    print("| method | spp | gaze | fovea deg | refresh | classic/method evaluations | range | time ratio | range | PSNR dB | PSNR inner 5 deg |")
-    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|")
+        groups[key].append(dict(ev=float(c["evals_per_px"]) / float(r["evals_per_px"]), tr=float(r["speedup_vs_classic"]),
+                                psnr=float(r["psnr"]), flip=float(r["flip"]),
+                                mis_cl=float(r.get("hit_mismatch_vs_classic_pct", "nan")),
+                                flip_cl=float(r.get("flip_vs_classic", "nan"))))
+    print("| method | spp | gaze | fovea deg | refresh | classic/method evaluations | range | time ratio | range | "
+          "PSNR dB | FLIP | FLIP vs classic | hit mismatch vs classic % (max) |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for key in sorted(order, key=lambda k: (k[1], k[0], k[2], k[3], -k[4])):
         v = groups[key]
-        ev = [a for a, _, _, _ in v]
-        tr = [b for _, b, _, _ in v]
-        ps = [c for _, _, c, _ in v]
-        p5 = [d for _, _, _, d in v]
+
+        def mean(f):
+            return sum(x[f] for x in v) / len(v)
+        ev = [x["ev"] for x in v]
+        tr = [x["tr"] for x in v]
         m, spp, gaze, fov, ref = key
         fov_s = f"{fov:g}" if fov > 0 else "-"
-        print(f"| {m} | {spp} | {gaze} | {fov_s} | {ref:g} | {sum(ev) / len(ev):.2f} | {min(ev):.2f} - {max(ev):.2f} | "
-              f"{sum(tr) / len(tr):.2f} | {min(tr):.2f} - {max(tr):.2f} | {sum(ps) / len(ps):.2f} | {sum(p5) / len(p5):.2f} |")
+        print(f"| {m} | {spp} | {gaze} | {fov_s} | {ref:g} | {mean('ev'):.2f} | {min(ev):.2f} - {max(ev):.2f} | "
+              f"{mean('tr'):.2f} | {min(tr):.2f} - {max(tr):.2f} | {mean('psnr'):.2f} | {mean('flip'):.4f} | "
+              f"{mean('flip_cl'):.4f} | {max(x['mis_cl'] for x in v):.3f} |")
     print()
     print("| scene | method | spp | fovea | refresh | gaze | evals/px | time ms | speed-up | PSNR dB | SSIM | FLIP | hit mismatch % | traced % |")
     print("|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|")
