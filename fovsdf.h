@@ -84,13 +84,16 @@ ACCELERATED METHODS
    not refreshed are not written, so keep the previous frame in the buffers). The mask output
    says which pixel was made how. Super-sampling (spp) applies to traced pixels only: the
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
-   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR and CONE_FOV is
-   CONE bit for bit. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
+   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels) and
+   CONE_FOV is CONE bit for bit when the image's sides are multiples of the tile (CONE_FOV keeps
+   its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
+   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
    mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by default: its
    own study found it made the foveation more visible.
    Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and as
-   many floats, on the stack (about 13 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
-   cone_tile 32 (CONE_FOV); larger tiles are FOV_ERR_LIMIT.
+   many floats, on the stack (11.4 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
+   cone_tile 32 (CONE_FOV); configs that need more are FOV_ERR_LIMIT. acuity.fovea_deg 0 means
+   the default 7.5: for no fovea at all pass a tiny angle such as 1e-3.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -123,7 +126,7 @@ MEMORY
    (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
-   CONE_FOV add FOVSDF_FOV_CELLS * 36 bytes (about 12 KiB). Lower the two macros for small
+   CONE_FOV add FOVSDF_FOV_CELLS * 36 bytes (11.4 KiB). Lower the two macros for small
    stacks (configs that need more are then FOV_ERR_LIMIT).
 
 ERRORS AND LOGGING
@@ -372,7 +375,7 @@ typedef struct fovsdf_config {
     uint32_t skip_no_shadow_start; /* SKIP: 1 = shadow rays get no head start            */
     uint32_t finish;        /* head-start methods: tracer of the sample rays from their head
                                start, fovsdf_finish                                 0: bv2018 */
-    /* FIPR and CONE_FOV: which pixels trace their own sample rays (see FOVEATED METHODS) */
+    /* FIPR and CONE_FOV: which pixels trace their own sample rays (see ACCELERATED METHODS) */
     fovsdf_acuity acuity;   /* p(w); a zero field takes its default (fovsdf_acuity_default:
                                fovea 7.5 degrees of eccentricity, no outer zone) */
     uint32_t fov_mask;      /* fovsdf_fov_mask: how fovea, acuity and edges combine  0: edges */
@@ -760,9 +763,10 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], con
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
 /* FIPR's pass 5, optional (the thesis's study found it made the foveation more visible, so
    nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied only where
-   traced and interpolated pixels meet: a pixel is blurred when its 3x3 neighbourhood holds
-   both mask value 1 and another value (the mask output of FIPR / CONE_FOV); every other pixel
-   is copied. Kernel radius ceil(3 sigma), renormalised at the image borders. rgb and out are
+   traced and interpolated pixels meet (sigma in [0.05, 8]): a pixel is blurred when its 3x3
+   neighbourhood holds
+   both mask value 1 and another value (the mask output of FIPR / CONE_FOV); every other
+   pixel is copied. Kernel radius ceil(3 sigma), renormalised at the image borders. rgb and out are
    3 floats per pixel with row strides in floats (0: 3 w), mask a byte per pixel (stride 0: w);
    out must not alias rgb. */
 FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask,
@@ -1113,15 +1117,18 @@ FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r
     }
     return n;
 }
-#ifndef FOVSDF_FOV_CELLS /* mid-level cells per FIPR / CONE_FOV tile (28 bytes each, stack) */
+#ifndef FOVSDF_FOV_CELLS /* cells per FIPR / CONE_FOV tile: mid level (32 bytes each) and
+                            FIPR's level 0 (4 bytes each), on the stack */
 #define FOVSDF_FOV_CELLS 324
 #endif
-/* FIPR / CONE_FOV: mid-level cells of a tile with its apron (at least one cell for the
-   bilinear reconstruction, r for the minimum filter). */
-FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r)
+/* FIPR / CONE_FOV: the larger of a tile's two arrays, apron included: the mid level (at least
+   one cell for the bilinear reconstruction, r for the minimum filter) and FIPR's level 0 (the
+   parents of those cells and their filter, at least one for Sobel). */
+FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r, int cone)
 {
-    size_t side = (size_t)(tile / 2u) + 2u * (size_t)(r > 1 ? r : 1);
-    return side * side;
+    size_t am = (size_t)(r > 1 ? r : 1), ms = (size_t)(tile / 2u) + 2u * am;
+    size_t ls = (size_t)(tile / 4u) + 2u * ((am + 1u) / 2u + (size_t)r);
+    return cone || ms >= ls ? ms * ms : ls * ls;
 }
 #ifndef FOVSDF_CONE_SLACK /* a cone stops when f <= t k (1 + slack): earlier is always safe */
 #define FOVSDF_CONE_SLACK 0.5f
@@ -1265,7 +1272,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.ipr_tile == 0) c.ipr_tile = 32;
     if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
-    if (fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_TILE_SCRATCH)
+    if (c.method == FOVSDF_METHOD_IPR &&
+        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_TILE_SCRATCH)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
     if (!fovsdf__finite(c.skip_scale) || !fovsdf__finite(c.skip_eps))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: skip_scale or skip_eps not finite");
@@ -1300,18 +1308,18 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         if (fovsdf__is0(c.acuity.fovea_deg)) c.acuity.fovea_deg = d.fovea_deg;
         if (c.acuity.A + c.acuity.C > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity A + C above 1");
         if (c.acuity.fovea_deg > 180.0f || (c.acuity.outer_deg > 0.0f && c.acuity.outer_deg <= c.acuity.fovea_deg))
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity zones out of order (0 < fovea < outer)");
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity.outer_deg must exceed fovea_deg (0: 7.5), fovea_deg <= 180");
         if (fovsdf__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
         if (c.fov_mask >= (uint32_t)_FOVSDF_MASK_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown fov_mask");
         if (c.refresh == 0) c.refresh = 1;
         if (c.refresh != 1 && c.refresh != 2 && c.refresh != 4)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: refresh must be 1, 2 or 4");
         if (c.method == FOVSDF_METHOD_FIPR &&
-            (c.ipr_tile % 4u != 0 || fovsdf__fov_cells(c.ipr_tile, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_FOV_CELLS))
+            (c.ipr_tile % 4u != 0 || fovsdf__fov_cells(c.ipr_tile, c.ipr_no_filter ? 0 : c.ipr_radius, 0) > FOVSDF_FOV_CELLS))
             FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: FIPR needs ipr_tile a multiple of 4 and its cells within FOVSDF_FOV_CELLS");
         if (c.method == FOVSDF_METHOD_CONE_FOV && c.cone_tile < 4)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: CONE_FOV needs cone_tile >= 4");
-        if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1) > FOVSDF_FOV_CELLS)
+        if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1, 1) > FOVSDF_FOV_CELLS)
             FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: CONE_FOV cone_tile cells above FOVSDF_FOV_CELLS");
     }
     if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
@@ -3276,14 +3284,14 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
     int32_t R, i, j, x, y;
     if (!rgb || !mask || !out) return FOV_ERR_NULL;
     if (!fovsdf__finite(sigma)) return FOV_ERR_NOT_FINITE;
-    if (w == 0 || h == 0 || !(sigma > 0.0f) || sigma > 8.0f || rgb == out) return FOV_ERR_INVALID_ARG;
+    if (w == 0 || h == 0 || !(sigma >= 0.05f) || sigma > 8.0f || rgb == out) return FOV_ERR_INVALID_ARG;
     if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
     if (rgb_stride == 0) rgb_stride = 3u * w;
     if (out_stride == 0) out_stride = 3u * w;
     if (mask_stride == 0) mask_stride = w;
     if (rgb_stride < 3u * w || out_stride < 3u * w || mask_stride < w) return FOV_ERR_TOO_SMALL;
-    R = (int32_t)(3.0f * sigma + 0.999f);
-    if (R > 24) R = 24;
+    R = (int32_t)(3.0f * sigma);
+    if ((float)R < 3.0f * sigma) ++R; /* ceil(3 sigma), at most 24 */
     for (i = 0; i <= R; ++i) wt[i] = FOVSDF__EXP(-0.5f * (float)(i * i) / (sigma * sigma));
     for (y = 0; y < (int32_t)h; ++y)
         for (x = 0; x < (int32_t)w; ++x) {
@@ -3469,8 +3477,9 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
       from their 2x2 cell's cone (the guarantee of CONE holds for every traced ray). Pixels
       outside the mask take the bilinear interpolation of the shaded mid-level rays around
       them (weights 3/4, 1/4 per axis) and are refreshed every refresh-th frame: the 2x2 cells
-      take turns in Bayer order (cell (u, v) refreshes when frame % refresh equals its rank in
-      {0, 2 / 3, 1} over (u & 1, v & 1)), so every frame costs about the same. A pixel that is
+      take turns (refresh 2: a checkerboard of cells; refresh 4: cell (u, v) refreshes when
+      frame % 4 equals the Bayer rank [[0, 2], [3, 1]] at row v & 1, column u & 1), so every
+      frame costs about the same. A pixel that is
       not refreshed is not written at all (the caller's buffers hold the earlier frame; the
       mask output says 2). A static scene and gaze therefore reach the image of refresh 1
       after `refresh` consecutive frames.

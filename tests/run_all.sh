@@ -67,6 +67,10 @@ fovsdf_tests() {
 fovsdf_tests unit_fovsdf tests/test_fovsdf.c
 fovsdf_tests scene_fovsdf tests/test_fovsdf_scene.c
 fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
+# FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
+if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
+    run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
+fi
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

@@ -1123,6 +1123,13 @@ static void mask_blur_tests(void)
     e3 = fovsdf_mask_blur(in, 0, mk, 0, W, H, NAN, out, 0);
     e4 = fovsdf_mask_blur(in, 0, mk, 0, W, H, 1.0f, in, 0);
     e5 = fovsdf_mask_blur(in, 3 * W - 1, mk, 0, W, H, 1.0f, out, 0);
+    {   /* the smallest sigma accepted gives finite values; below it (sigma^2 underflows) an error */
+        fov_result e6 = fovsdf_mask_blur(in, 0, mk, 0, W, H, 0.05f, o2, 0), e7 = fovsdf_mask_blur(in, 0, mk, 0, W, H, 1e-30f, o2, 0);
+        uint32_t nf = 0;
+        for (i = 0; i < W * H * 3; ++i) nf += !(o2[i] >= 0.0f && o2[i] <= 1.0f);
+        check(e6 == FOV_OK && nf == 0 && e7 == FOV_ERR_INVALID_ARG, "mask_blur_small_sigma", "status %d, %u bad values, tiny sigma %d",
+              (int)e6, nf, (int)e7);
+    }
     check(e1 == FOV_ERR_NULL && e2 == FOV_ERR_INVALID_ARG && e3 == FOV_ERR_NOT_FINITE && e4 == FOV_ERR_INVALID_ARG &&
               e5 == FOV_ERR_TOO_SMALL,
           "mask_blur_bad_params", "got %d %d %d %d %d", (int)e1, (int)e2, (int)e3, (int)e4, (int)e5);
