@@ -51,7 +51,7 @@ WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror 
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # --- unit tests ---------------------------------------------------------------------------
-# three builds of each fovsdf test program: libm, FOV_NO_LIBM, sanitizers
+# three builds of each test program (fovsdf, fovpt): libm, FOV_NO_LIBM, sanitizers
 fovsdf_tests() {
     local name=$1 src=$2
     if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common -lm; then
@@ -67,6 +67,7 @@ fovsdf_tests() {
 fovsdf_tests unit_fovsdf tests/test_fovsdf.c
 fovsdf_tests scene_fovsdf tests/test_fovsdf_scene.c
 fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
+fovsdf_tests unit_fovpt tests/test_fovpt.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

@@ -1,0 +1,1139 @@
+/*
+ * test_fovpt.c - unit and property tests of fovpt.h.
+ *
+ * Build and run from the repository root (tests/run_all.sh builds it three ways: libm,
+ * -DFOV_NO_LIBM, sanitizers):
+ *   gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
+ *       -Werror -I. -Itests/common tests/test_fovpt.c -lm -o build/tests/test_fovpt
+ *
+ * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
+ * Expected values come from analytic formulas, brute force or independent quadrature done
+ * here (in double), or from the notes' reference tables; never from the code under test.
+ *
+ * Sections:
+ *   1. API, configs, shared block, eccentricity against fovsdf.
+ *   2. Scenes: bad input with exact codes, BVH against brute force on random scenes and
+ *      rays, depth cap, the no-BVH path, the user hook.
+ *   3. Random streams and BSDF samplers (energy, pdf consistency, Fresnel).
+ *   4. Path tracer: furnace tests, NEE on/off, Russian roulette, bounce limit, Whitted,
+ *      determinism, row splits, non-finite radiance.
+ *   5. Foveation building blocks: Catmull-Rom, tau_fov reference values, alpha(e), presets.
+ */
+#define FOV_IMPL
+#include "fovsdf.h"
+#include "fovpt.h"
+#include "fovcheck.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char g_name[200];
+#if defined(__GNUC__) || defined(__clang__)
+#define T_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define T_PRINTF(a, b)
+#endif
+static const char *N(const char *fmt, ...) T_PRINTF(1, 2);
+static const char *N(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g_name, sizeof g_name, fmt, ap);
+    va_end(ap);
+    return g_name;
+}
+
+/* a test-side generator (independent of the library's streams) */
+static uint64_t g_rs = 0x9e3779b97f4a7c15ull;
+static double urand(void)
+{
+    g_rs ^= g_rs << 13; g_rs ^= g_rs >> 7; g_rs ^= g_rs << 17;
+    return (double)(g_rs >> 11) * (1.0 / 9007199254740992.0);
+}
+static float frand(float a, float b) { return a + (b - a) * (float)urand(); }
+
+/* malloc: 16-byte aligned on the hosts the tests run on (glibc, x86-64) */
+static void *amalloc(size_t n) { return malloc(n + 16u); }
+
+static int g_log_count;
+static int32_t g_log_code;
+static void logger(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line, void *user)
+{
+    (void)tag; (void)level; (void)msg; (void)line; (void)user;
+    g_log_count++;
+    g_log_code = code;
+}
+
+/* ==== 1. API ================================================================================= */
+static char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    long n;
+    char *b;
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b = (char *)malloc((size_t)n + 1u);
+    if (b && fread(b, 1, (size_t)n, f) != (size_t)n) { free(b); b = NULL; }
+    if (b) b[n] = 0;
+    fclose(f);
+    return b;
+}
+static const char *block(const char *text, size_t *len)
+{
+    const char *a = strstr(text, "/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */");
+    const char *e = a ? strstr(a, "/* ---- end of the shared block ---- */") : NULL;
+    if (!a || !e) return NULL;
+    *len = (size_t)(e - a);
+    return a;
+}
+
+static void test_api(void)
+{
+    int r;
+    fovpt_config c = fovpt_config_default(), o;
+    memset(&o, 0, sizeof o);
+    check(strcmp(fovpt_result_string(FOV_OK), "ok") == 0 || strlen(fovpt_result_string(FOV_OK)) == 0, "result_string ok", " ");
+    {
+        int ok = 1;
+        for (r = -10; r <= 2; ++r) if (!fovpt_result_string((fov_result)r)) ok = 0;
+        check(ok, "result_string never NULL (-10 .. 2)", " ");
+    }
+    check(strcmp(fovpt_method_name(FOVPT_METHOD_LAYERS), "layers") == 0 && strcmp(fovpt_method_name(99), "unknown") == 0,
+          "method names", " ");
+    check(c.spp == 1 && c.max_depth == 8 && c.rr_start == 3 && c.method == 0 && c.mode == 0, "config defaults (spp 1, depth 8, rr 3)",
+          "spp %u depth %u rr %u", c.spp, c.max_depth, c.rr_start);
+    check(c.layers.count == 4 && fabsf(c.layers.layer[3].radius_deg - 6.0f) < 1e-6f && c.layers.layer[1].stride == 3 &&
+              c.layers.layer[0].stride == 4 && c.layers.layer[2].spp == 4,
+          "config defaults: seed 002 layers", " ");
+    check(fabsf(c.selective.e_deg[3] - 30.0f) < 1e-6f && c.selective.n_sd[0] == 9 && fabsf(c.selective.tau[1] - 0.05f) < 1e-7f &&
+              fabsf(c.temporal.alpha[4] - 0.2f) < 1e-7f && c.temporal.n_reuse_max == 5,
+          "config defaults: seed 004 tables", " ");
+    {
+        fovpt_config w;
+        memset(&w, 0, sizeof w);
+        w.mode = FOVPT_MODE_WHITTED;
+        check(fovpt_config_resolve(&w, &o) == FOV_OK && o.max_depth == 3, "Whitted default depth 3", "%u", o.max_depth);
+    }
+    /* bad configs */
+#define BADCFG(field_stmt, code, name)                                                  \
+    do {                                                                                \
+        fovpt_config b = fovpt_config_default();                                        \
+        b.logger.func = logger;                                                         \
+        g_log_count = 0;                                                                \
+        field_stmt;                                                                     \
+        r = (int)fovpt_config_resolve(&b, &o);                                          \
+        check(r == (int)(code) && g_log_count == 1, N("config rejects %s", name), "got %d (%s), log %d", r, \
+              fovpt_result_string((fov_result)r), g_log_count);                        \
+    } while (0)
+    BADCFG(b.method = 99, FOV_ERR_INVALID_ARG, "method 99");
+    BADCFG(b.mode = 5, FOV_ERR_INVALID_ARG, "mode 5");
+    BADCFG(b.spp = 70000, FOV_ERR_LIMIT, "spp 70000");
+    BADCFG(b.max_depth = 5000, FOV_ERR_LIMIT, "max_depth 5000");
+    BADCFG((b.mode = 1, b.max_depth = 40), FOV_ERR_LIMIT, "Whitted depth 40");
+    BADCFG(b.layers.layer[2].radius_deg = 30.0f, FOV_ERR_INVALID_ARG, "layer radii not decreasing");
+    BADCFG(b.layers.layer[1].stride = 0, FOV_ERR_INVALID_ARG, "layer stride d < 1");
+    BADCFG(b.layers.layer[3].spp = 0, FOV_ERR_INVALID_ARG, "layer spp 0");
+    BADCFG(b.layers.layer[3].radius_deg = NAN, FOV_ERR_NOT_FINITE, "layer radius NaN");
+    BADCFG(b.layers.count = 1, FOV_ERR_INVALID_ARG, "one layer");
+    BADCFG(b.layers.count = FOVPT_MAX_LAYERS + 1, FOV_ERR_INVALID_ARG, "too many layers");
+    BADCFG(b.layers.layer[0].radius_deg = 15.0f, FOV_ERR_INVALID_ARG, "mask inside layer 1");
+    BADCFG(b.layers.blend_deg = INFINITY, FOV_ERR_NOT_FINITE, "blend inf");
+    BADCFG(b.zones.middle_deg = 5.0f, FOV_ERR_INVALID_ARG, "zones middle < inner");
+    BADCFG(b.selective.e_deg[2] = 4.0f, FOV_ERR_INVALID_ARG, "e_deg not increasing");
+    BADCFG(b.selective.tau_shape[2] = 0.1f, FOV_ERR_INVALID_ARG, "tau_fov shape non-monotone");
+    BADCFG(b.temporal.n_tpi = 5, FOV_ERR_INVALID_ARG, "n_tpi 5");
+    BADCFG(b.temporal.alpha[2] = 1.5f, FOV_ERR_INVALID_ARG, "alpha 1.5");
+    BADCFG(b.display.fov_y_deg = NAN, FOV_ERR_NOT_FINITE, "display NaN");
+    check(fovpt_config_resolve(NULL, &o) == FOV_ERR_NULL && fovpt_config_resolve(&c, NULL) == FOV_ERR_NULL, "config NULL", " ");
+    {
+        fovpt_layers_cfg L;
+        check(fovpt_layers_preset(&L, FOVPT_LAYERS_KTH_DIAMETER) == FOV_OK && fabsf(L.layer[1].radius_deg - 10.0f) < 1e-6f &&
+                  fabsf(L.layer[3].radius_deg - 3.0f) < 1e-6f && L.layer[3].stride == 1 && L.layer[0].stride == 4,
+              "preset: 6/10/20 as diameters -> radii 3/5/10, d = 4,3,2,1", " ");
+        check(fovpt_layers_preset(&L, FOVPT_LAYERS_KTH_RADIUS) == FOV_OK && fabsf(L.layer[1].radius_deg - 20.0f) < 1e-6f &&
+                  fabsf(L.layer[2].radius_deg - 10.0f) < 1e-6f && L.layer[2].stride == 2,
+              "preset: 6/10/20 as radii", " ");
+        check(fovpt_layers_preset(&L, 7) == FOV_ERR_INVALID_ARG && fovpt_layers_preset(NULL, 0) == FOV_ERR_NULL, "preset bad id", " ");
+    }
+    /* the shared block is byte-for-byte the same as fovsdf.h's */
+    {
+        char *a = read_file("fovsdf.h"), *b = read_file("fovpt.h");
+        size_t la = 0, lb = 0;
+        const char *ba = a ? block(a, &la) : NULL, *bb = b ? block(b, &lb) : NULL;
+        check(ba && bb && la == lb && memcmp(ba, bb, la) == 0, "shared block identical to fovsdf.h's",
+              "found %d %d, lengths %zu %zu", ba != NULL, bb != NULL, la, lb);
+        free(a); free(b);
+    }
+}
+
+static void test_ecc(void)
+{
+    int i, same = 1, codes = 1;
+    float worst = 0.0f;
+    for (i = 0; i < 2000; ++i) {
+        fov_ecc_model a, b;
+        fov_display d;
+        fov_gaze g;
+        uint32_t w = 1u + (uint32_t)(urand() * 2000.0), h = 1u + (uint32_t)(urand() * 2000.0);
+        float fov = frand(1.0f, 179.0f);
+        fov_result ra, rb;
+        memset(&d, 0, sizeof d);
+        if (i % 3 == 1) d.fov_y_deg = frand(10.0f, 170.0f);
+        if (i % 3 == 2) { d.pixel_pitch_mm = frand(0.05f, 0.5f); d.distance_mm = frand(100.0f, 1000.0f); }
+        d.axis_dx = frand(-50.0f, 50.0f);
+        d.axis_dy = frand(-50.0f, 50.0f);
+        g.x = frand(-100.0f, (float)w + 100.0f);
+        g.y = frand(-100.0f, (float)h + 100.0f);
+        if (i % 97 == 0) g.x = NAN;
+        if (i % 89 == 0) w = 0;
+        ra = fovsdf_ecc_init(&a, &d, fov, w, h, g);
+        rb = fovpt_ecc_init(&b, &d, fov, w, h, g);
+        if (ra != rb) { codes = 0; continue; }
+        if (ra != FOV_OK) continue;
+        {
+            int k;
+            for (k = 0; k < 5; ++k) {
+                float x = frand(0.0f, (float)w), y = frand(0.0f, (float)h);
+                float ea = fovsdf_ecc_deg(&a, x, y), eb = fovpt_ecc_deg(&b, x, y);
+                if (fabsf(ea - eb) > worst) worst = fabsf(ea - eb);
+            }
+            if (fabsf(fovsdf_ecc_ppd(&a) - fovpt_ecc_ppd(&b)) > 1e-6f * fovsdf_ecc_ppd(&a)) same = 0;
+        }
+    }
+    check(codes, "ecc_init: same result codes as fovsdf_ecc_init (2000 random displays)", " ");
+    check(worst <= 0.0f && same, "ecc_deg / ecc_ppd identical to fovsdf's", "max |diff| %g deg", (double)worst);
+}
+
+/* ==== 2. scenes ============================================================================== */
+typedef struct scene_buf {
+    fovpt_scene s;
+    void *mem;
+} scene_buf;
+static fov_result build(scene_buf *b, const fovpt_scene_desc *d)
+{
+    size_t n = 0;
+    fov_result r = fovpt_scene_size(d, &n);
+    b->mem = NULL;
+    if (r != FOV_OK) return r;
+    b->mem = amalloc(n + 16u);
+    return fovpt_scene_build(&b->s, d, b->mem, n);
+}
+
+static void random_scene(fovpt_shape *sh, uint32_t ns, float *pos, uint32_t ntri, int clustered)
+{
+    uint32_t i, k;
+    for (i = 0; i < ns; ++i) {
+        float c[3], u[3], v[3];
+        uint32_t t = (uint32_t)(urand() * 4.0);
+        for (k = 0; k < 3; ++k) c[k] = clustered ? frand(-1.0f, 1.0f) * (i % 2 ? 0.1f : 5.0f) : frand(-5.0f, 5.0f);
+        if (t == 0) fovpt_shape_sphere(&sh[i], c[0], c[1], c[2], frand(0.05f, 0.6f), i % 3);
+        else if (t == 1) {
+            for (k = 0; k < 3; ++k) { u[k] = frand(-1.0f, 1.0f); v[k] = frand(-1.0f, 1.0f); }
+            fovpt_shape_quad(&sh[i], c, u, v, i % 3);
+        } else if (t == 2) {
+            float hi[3];
+            for (k = 0; k < 3; ++k) hi[k] = c[k] + frand(0.05f, 1.0f);
+            fovpt_shape_box(&sh[i], c, hi, i % 3);
+        } else {
+            float n[3] = { frand(-1, 1), frand(-1, 1), frand(-1, 1) };
+            for (k = 0; k < 3; ++k) c[k] *= 3.0f;
+            if (i % 7 == 0) fovpt_shape_plane(&sh[i], c, n, i % 3);
+            else fovpt_shape_sphere(&sh[i], c[0], c[1], c[2], frand(0.01f, 0.3f), 0);
+        }
+    }
+    for (i = 0; i < ntri; ++i) {
+        float c[3];
+        for (k = 0; k < 3; ++k) c[k] = clustered ? frand(-0.5f, 0.5f) : frand(-5.0f, 5.0f);
+        for (k = 0; k < 9; ++k) pos[9u * i + k] = c[k % 3] + frand(-0.4f, 0.4f);
+    }
+}
+
+static void test_bvh_random(void)
+{
+    int sc;
+    for (sc = 0; sc < 12; ++sc) {
+        uint32_t ns = 5u + (uint32_t)(urand() * 200.0), nt = (uint32_t)(urand() * 3000.0), i, mism = 0, hits = 0;
+        fovpt_shape *sh = (fovpt_shape *)malloc(sizeof(fovpt_shape) * ns);
+        float *pos = (float *)malloc(sizeof(float) * 9u * (nt + 1u));
+        fovpt_material m[3];
+        fovpt_mesh mesh;
+        fovpt_scene_desc d;
+        scene_buf b;
+        fov_result r;
+        random_scene(sh, ns, pos, nt, sc % 3 == 2);
+        fovpt_material_init(&m[0]); fovpt_material_init(&m[1]); fovpt_material_init(&m[2]);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = pos; mesh.num_vertices = 3u * nt; mesh.num_triangles = nt; mesh.material = 1;
+        fovpt_scene_desc_init(&d);
+        d.shapes = sh; d.num_shapes = ns; d.meshes = &mesh; d.num_meshes = 1; d.materials = m; d.num_materials = 3;
+        d.bvh_leaf = 1u + (uint32_t)sc % 4u;
+        d.bvh_bins = sc % 2 ? 8u : 0u;
+        d.skip_degenerate = 1;
+        r = build(&b, &d);
+        if (!check(r == FOV_OK && b.s.nodes != NULL, N("random scene %d builds a BVH (%u shapes, %u triangles)", sc, ns, nt),
+                   "%s", fovpt_result_string(r))) { free(sh); free(pos); free(b.mem); continue; }
+        for (i = 0; i < 3000; ++i) {
+            float o[3], dd[3];
+            fovpt_hit h1, h2;
+            int a1, a2;
+            uint32_t k;
+            for (k = 0; k < 3; ++k) { o[k] = frand(-8.0f, 8.0f); dd[k] = frand(-1.0f, 1.0f); }
+            if (i % 50 == 0) { dd[0] = 0.0f; dd[1] = 0.0f; } /* axis-parallel rays */
+            {
+                float lim = i % 5 == 0 ? frand(0.1f, 10.0f) : FLT_MAX;
+                a1 = fovpt_intersect(&b.s, o, dd, 0.0f, lim, &h1);
+                a2 = fovpt_intersect_brute(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+                if (i % 5 != 0) {
+                    if (a1 != a2 || (a1 && (!(h1.t <= h2.t && h1.t >= h2.t) || h1.prim != h2.prim))) mism++;
+                } else if (a1 ? (!a2 || h1.t < h2.t || h1.t > h2.t) : (a2 && h2.t < lim)) {
+                    mism++; /* within a limited range: the global closest hit, or none before lim */
+                }
+            }
+            hits += (uint32_t)a1;
+        }
+        check(mism == 0 && hits > 100, N("random scene %d: BVH = brute force on 3000 rays (t, primitive)", sc),
+              "%u mismatches, %u hits, depth %u, nodes %u", mism, hits, b.s.bvh_depth, b.s.num_nodes);
+        free(sh); free(pos); free(b.mem);
+    }
+}
+
+static void test_scene_bad(void)
+{
+    fovpt_material m[2];
+    fovpt_shape sh[2];
+    float pos[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+    uint32_t idx[3] = { 0, 1, 2 };
+    fovpt_mesh mesh;
+    fovpt_scene_desc d;
+    scene_buf b;
+    size_t n;
+    fov_result r;
+    fovpt_material_init(&m[0]); fovpt_material_init(&m[1]);
+    m[1].emission[0] = 1.0f;
+#define RESET()                                                                                  \
+    do {                                                                                         \
+        fovpt_scene_desc_init(&d);                                                               \
+        fovpt_material_init(&m[0]); fovpt_material_init(&m[1]); m[1].emission[0] = 1.0f;        \
+        fovpt_shape_sphere(&sh[0], 0, 0, 0, 1, 0);                                               \
+        fovpt_shape_sphere(&sh[1], 0, 2, 0, 0.5f, 1);                                            \
+        memset(&mesh, 0, sizeof mesh);                                                           \
+        pos[0] = 0; pos[1] = 0; pos[2] = 0; pos[3] = 1; pos[4] = 0; pos[5] = 0;                  \
+        pos[6] = 0; pos[7] = 1; pos[8] = 0; idx[0] = 0; idx[1] = 1; idx[2] = 2;                 \
+        mesh.positions = pos; mesh.num_vertices = 3; mesh.indices = idx; mesh.num_triangles = 1; \
+        d.shapes = sh; d.num_shapes = 2; d.meshes = &mesh; d.num_meshes = 1;                     \
+        d.materials = m; d.num_materials = 2; d.logger.func = logger;                            \
+        g_log_count = 0;                                                                         \
+    } while (0)
+#define BAD(stmt, code, name)                                                                     \
+    do {                                                                                          \
+        RESET();                                                                                  \
+        stmt;                                                                                     \
+        r = fovpt_scene_size(&d, &n);                                                             \
+        check(r == (code) && g_log_count >= 1 && g_log_code == (int32_t)(code), N("scene rejects %s", name), \
+              "got %d (%s)", (int)r, fovpt_result_string(r));                                     \
+    } while (0)
+    RESET();
+    r = build(&b, &d);
+    check(r == FOV_OK && b.s.num_prims == 3 && b.s.num_lights == 1 && b.s.nodes == NULL, "valid 3-primitive scene: no BVH, one light",
+          "%s prims %u lights %u", fovpt_result_string(r), b.s.num_prims, b.s.num_lights);
+    free(b.mem);
+    BAD(pos[3] = 0.0f, FOV_ERR_DEGENERATE, "degenerate triangle (two equal vertices)");
+    BAD((pos[3] = 2.0f, pos[4] = 2.0f, pos[6] = 1.0f, pos[7] = 1.0f), FOV_ERR_DEGENERATE, "degenerate triangle (collinear)");
+    BAD(pos[4] = NAN, FOV_ERR_NOT_FINITE, "NaN vertex");
+    BAD(pos[8] = -INFINITY, FOV_ERR_NOT_FINITE, "infinite vertex");
+    BAD(idx[2] = 3, FOV_ERR_INVALID_ARG, "index out of range");
+    BAD(mesh.num_triangles = 0xFFFFFFFFu, FOV_ERR_LIMIT, "overflowing triangle count");
+    BAD((mesh.indices = NULL, mesh.num_triangles = 2), FOV_ERR_INVALID_ARG, "non-indexed mesh short of vertices");
+    BAD(d.num_shapes = 0xFFFFFFF0u, FOV_ERR_LIMIT, "overflowing shape count");
+    BAD(sh[0].r = 0.0f, FOV_ERR_DEGENERATE, "sphere radius 0");
+    BAD(sh[1].r = -1.0f, FOV_ERR_DEGENERATE, "light sphere radius < 0 (zero-area light)");
+    BAD(sh[0].p[1] = INFINITY, FOV_ERR_NOT_FINITE, "infinite sphere centre");
+    BAD(sh[0].material = 2, FOV_ERR_INVALID_ARG, "material index out of range");
+    BAD(mesh.material = 9, FOV_ERR_INVALID_ARG, "mesh material out of range");
+    {
+        float c[3] = { 0, 0, 0 }, u[3] = { 1, 0, 0 }, v[3] = { 2, 0, 0 };
+        BAD(fovpt_shape_quad(&sh[1], c, u, v, 1), FOV_ERR_DEGENERATE, "zero-area light (quad)");
+    }
+    BAD((mesh.material = 1, pos[6] = 2.0f, pos[7] = 0.0f), FOV_ERR_DEGENERATE, "zero-area light (triangle)");
+    {
+        float lo[3] = { 0, 0, 0 }, hi[3] = { 1, -1, 1 };
+        BAD(fovpt_shape_box(&sh[0], lo, hi, 0), FOV_ERR_DEGENERATE, "inverted box");
+    }
+    {
+        float p[3] = { 0, 0, 0 }, nz[3] = { 0, 0, 0 };
+        BAD(fovpt_shape_plane(&sh[0], p, nz, 0), FOV_ERR_DEGENERATE, "plane with zero normal");
+    }
+    BAD(sh[0].type = 9, FOV_ERR_INVALID_ARG, "shape type 9");
+    BAD(d.materials = NULL, FOV_ERR_NULL, "NULL materials");
+    BAD(d.shapes = NULL, FOV_ERR_NULL, "NULL shapes with a count");
+    BAD(m[0].albedo[1] = 1.5f, FOV_ERR_INVALID_ARG, "albedo 1.5");
+    BAD(m[0].emission[2] = NAN, FOV_ERR_NOT_FINITE, "NaN emission");
+    BAD(m[0].type = 11, FOV_ERR_INVALID_ARG, "material type 11");
+    BAD((m[0].type = FOVPT_MAT_DIELECTRIC, m[0].ior = 0.0f), FOV_ERR_INVALID_ARG, "ior 0");
+    BAD(d.background[0] = NAN, FOV_ERR_NOT_FINITE, "NaN background");
+    BAD(d.bvh_bins = 1, FOV_ERR_INVALID_ARG, "bvh_bins 1");
+    BAD(d.bvh_leaf = 17, FOV_ERR_INVALID_ARG, "bvh_leaf 17");
+    fovpt_material_init(&m[0]);
+    /* skip_degenerate */
+    RESET();
+    pos[3] = 0.0f;
+    d.skip_degenerate = 1;
+    r = build(&b, &d);
+    check(r == FOV_OK && b.s.num_skipped == 1 && b.s.num_prims == 2, "skip_degenerate drops the zero-area triangle",
+          "%s skipped %u", fovpt_result_string(r), b.s.num_skipped);
+    free(b.mem);
+    /* memory */
+    RESET();
+    r = fovpt_scene_size(&d, &n);
+    {
+        unsigned char *mem = (unsigned char *)amalloc(n + 32u);
+        check(fovpt_scene_build(&b.s, &d, mem, n - 1u) == FOV_ERR_TOO_SMALL, "scene memory too small", " ");
+        check(fovpt_scene_build(&b.s, &d, NULL, n) == FOV_ERR_NULL, "scene memory NULL", " ");
+        check(fovpt_scene_build(&b.s, &d, mem + 4, n) == FOV_ERR_INVALID_ARG, "scene memory misaligned", " ");
+        check(fovpt_scene_size(NULL, &n) == FOV_ERR_NULL && fovpt_scene_size(&d, NULL) == FOV_ERR_NULL, "scene_size NULL", " ");
+        free(mem);
+    }
+    /* over-deep BVH: spheres at exponentially growing distances, one per leaf */
+    {
+        fovpt_shape ex[40];
+        uint32_t i, mism = 0;
+        for (i = 0; i < 40; ++i) fovpt_shape_sphere(&ex[i], ldexpf(1.0f, (int)i), 0.0f, 0.0f, 0.25f, 0);
+        fovpt_scene_desc_init(&d);
+        d.shapes = ex; d.num_shapes = 40; d.materials = m; d.num_materials = 1; d.bvh_leaf = 1; d.bvh_max_depth = 8;
+        d.logger.func = logger;
+        g_log_count = 0;
+        r = build(&b, &d);
+        check(r == FOV_ERR_LIMIT && g_log_count == 1, "over-deep BVH (cap 8) is FOV_ERR_LIMIT", "%s", fovpt_result_string(r));
+        free(b.mem);
+        d.bvh_max_depth = 0;
+        r = build(&b, &d);
+        for (i = 0; i < 2000 && r == FOV_OK; ++i) {
+            float o[3] = { -1.0f, frand(-0.3f, 0.3f), frand(-0.3f, 0.3f) }, dd[3] = { 1.0f, frand(-0.01f, 0.01f), frand(-0.01f, 0.01f) };
+            fovpt_hit h1, h2;
+            int a1 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h1), a2 = fovpt_intersect_brute(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+            if (a1 != a2 || (a1 && h1.prim != h2.prim)) mism++;
+        }
+        check(r == FOV_OK && b.s.bvh_depth > 8 && mism == 0, "deep BVH within the default cap: same hits as brute force",
+              "%s depth %u mismatches %u", fovpt_result_string(r), b.s.bvh_depth, mism);
+        free(b.mem);
+    }
+}
+
+/* user hook: a sphere of radius 1 at (0, 0, 5) */
+static int hook_sphere(const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3],
+                       uint32_t *material, void *user)
+{
+    double oc[3] = { (double)org[0], (double)org[1], (double)org[2] - 5.0 }, a, b, c, disc, t0;
+    int k;
+    (void)user;
+    a = (double)dir[0] * (double)dir[0] + (double)dir[1] * (double)dir[1] + (double)dir[2] * (double)dir[2];
+    b = oc[0] * (double)dir[0] + oc[1] * (double)dir[1] + oc[2] * (double)dir[2];
+    c = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2] - 1.0;
+    disc = b * b - a * c;
+    if (disc < 0.0) return 0;
+    t0 = (-b - sqrt(disc)) / a;
+    if (t0 <= (double)tmin) t0 = (-b + sqrt(disc)) / a;
+    if (!(t0 > (double)tmin && t0 < (double)tmax)) return 0;
+    *t = (float)t0;
+    for (k = 0; k < 3; ++k) n[k] = (float)(oc[k] + t0 * (double)dir[k]);
+    *material = 0;
+    return 1;
+}
+static int hook_nan(const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3],
+                    uint32_t *material, void *user)
+{
+    (void)org; (void)dir; (void)tmax; (void)user;
+    *t = tmin + 1.0f;
+    n[0] = NAN; n[1] = 0.0f; n[2] = 1.0f;
+    *material = 0;
+    return 1;
+}
+
+static void test_user_hook(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    scene_buf a, b;
+    int i, bad = 0;
+    fovpt_material_init(&m);
+    fovpt_scene_desc_init(&d);
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 5.0f, 1.0f, 0);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    build(&a, &d);
+    d.num_shapes = 0; d.shapes = NULL; d.user_hit = hook_sphere;
+    build(&b, &d);
+    for (i = 0; i < 1000; ++i) {
+        float o[3] = { frand(-1.5f, 1.5f), frand(-1.5f, 1.5f), 0.0f }, dd[3] = { frand(-0.1f, 0.1f), frand(-0.1f, 0.1f), 1.0f };
+        fovpt_hit h1, h2;
+        int a1 = fovpt_intersect(&a.s, o, dd, 0.0f, FLT_MAX, &h1), a2 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+        if (a1 != a2) { if (fabsf(o[0] * o[0] + o[1] * o[1] - 1.0f) > 0.05f) bad++; continue; }
+        if (a1 && (fabsf(h1.t - h2.t) > 1e-4f || h2.prim != FOVPT_PRIM_USER || fabsf(h1.n[0] - h2.n[0]) > 1e-3f)) bad++;
+    }
+    check(bad == 0, "user hook sphere = built-in sphere (t, normal; prim FOVPT_PRIM_USER)", "%d bad", bad);
+    free(b.mem);
+    d.user_hit = hook_nan;
+    build(&b, &d);
+    {
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 0, 1 };
+        fovpt_hit h;
+        check(fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h) == 0, "user hook with a NaN normal is ignored", " ");
+    }
+    free(a.mem); free(b.mem);
+}
+
+/* ==== 3. random streams, BSDFs ================================================================ */
+static void test_rng(void)
+{
+    fovpt_rng a, b;
+    int i, same = 1, diff = 0, bins[16] = { 0 };
+    double chi = 0.0, mean = 0.0;
+    fovpt_rng_init(&a, 7, 100, 3, 2);
+    fovpt_rng_init(&b, 7, 100, 3, 2);
+    for (i = 0; i < 100; ++i) if (!(fovpt_rng_next(&a) <= fovpt_rng_next(&b) && 1)) same = 0;
+    fovpt_rng_init(&a, 7, 100, 3, 2);
+    fovpt_rng_init(&b, 7, 100, 3, 2);
+    for (i = 0; i < 100; ++i) { float x = fovpt_rng_next(&a), y = fovpt_rng_next(&b); if (x < y || x > y) same = 0; }
+    check(same, "rng: same (seed, pixel, sample, frame) -> same stream", " ");
+    {
+        uint32_t v[4][4] = { { 7, 100, 3, 2 }, { 8, 100, 3, 2 }, { 7, 101, 3, 2 }, { 7, 100, 4, 2 } };
+        float first[5];
+        int k, j;
+        for (k = 0; k < 4; ++k) { fovpt_rng_init(&a, v[k][0], v[k][1], v[k][2], v[k][3]); first[k] = fovpt_rng_next(&a); }
+        fovpt_rng_init(&a, 7, 100, 3, 3);
+        first[4] = fovpt_rng_next(&a);
+        for (k = 0; k < 5; ++k) for (j = k + 1; j < 5; ++j) if (first[k] < first[j] || first[k] > first[j]) diff++;
+        check(diff == 10, "rng: seed, pixel, sample and frame each change the stream", "%d of 10 differ", diff);
+    }
+    for (i = 0; i < 160000; ++i) {
+        float x;
+        if (i % 16 == 0) fovpt_rng_init(&a, 1, (uint32_t)i / 16u, 0, 0);
+        x = fovpt_rng_next(&a);
+        if (!(x >= 0.0f && x < 1.0f)) { bins[0] = -1000000; break; }
+        bins[(int)(x * 16.0f)]++;
+        mean += (double)x;
+    }
+    for (i = 0; i < 16; ++i) chi += ((double)bins[i] - 10000.0) * ((double)bins[i] - 10000.0) / 10000.0;
+    check(chi < 37.7 && fabs(mean / 160000.0 - 0.5) < 0.003, "rng: uniform on [0, 1) (chi-square 16 bins, p = 0.001 bound 37.7)",
+          "chi2 %.2f mean %.5f", chi, mean / 160000.0);
+}
+
+/* mean of the sampler's weights against independent quadrature of f cos from bsdf_eval */
+static void test_bsdf(void)
+{
+    float n[3] = { 0.0f, 0.0f, 1.0f };
+    int t;
+    for (t = 0; t < 4; ++t) {
+        fovpt_material m;
+        float th = (float)t * 0.45f, wo[3] = { sinf(th), 0.0f, cosf(th) };
+        double sum[3] = { 0, 0, 0 }, sq = 0.0, quad[3] = { 0, 0, 0 }, pdf_err = 0.0;
+        int i, j, ns = 200000, badpdf = 0;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.type = FOVPT_MAT_PHONG;
+        m.albedo[0] = 0.3f; m.albedo[1] = 0.1f; m.albedo[2] = 0.0f;
+        m.specular[0] = 0.6f; m.specular[1] = 0.8f; m.specular[2] = 0.9f;
+        m.exponent = t == 3 ? 200.0f : 15.0f;
+        for (i = 0; i < ns; ++i) {
+            float wi[3], w[3], pdf, fc[3], pe;
+            fovpt_rng_init(&rng, 3, (uint32_t)i, 0, (uint32_t)t);
+            if (!fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf)) continue;
+            for (j = 0; j < 3; ++j) sum[j] += (double)w[j];
+            sq += (double)w[1] * (double)w[1];
+            fovpt_bsdf_eval(&m, n, wo, wi, fc, &pe);
+            if (fabsf(pe - pdf) > 1e-4f * pdf) badpdf++;
+            if (fabs((double)fc[1] / (double)pe - (double)w[1]) > 1e-3 * (double)w[1] + 1e-6) pdf_err += 1.0;
+        }
+        /* quadrature over the hemisphere: theta in 2000 x phi in 400 midpoints (dense near the lobe) */
+        {
+            int a, c;
+            int NT = 3000, NP = 600;
+            for (a = 0; a < NT; ++a) {
+                double ct = 1.0 - ((double)a + 0.5) / NT, st = sqrt(1.0 - ct * ct);
+                for (c = 0; c < NP; ++c) {
+                    double ph = 2.0 * 3.141592653589793 * ((double)c + 0.5) / NP;
+                    float wi[3] = { (float)(st * cos(ph)), (float)(st * sin(ph)), (float)ct }, fc[3], pe;
+                    fovpt_bsdf_eval(&m, n, wo, wi, fc, &pe);
+                    for (j = 0; j < 3; ++j) quad[j] += (double)fc[j] * (1.0 / NT) * (2.0 * 3.141592653589793 / NP);
+                }
+            }
+        }
+        {
+            double m1 = sum[1] / ns, var = sq / ns - m1 * m1, se = sqrt(var / ns);
+            double e0 = fabs(sum[0] / ns - quad[0]), e1 = fabs(m1 - quad[1]), e2 = fabs(sum[2] / ns - quad[2]);
+            check(e1 < 4.0 * se + 2e-3 && e0 < 0.01 && e2 < 0.01,
+                  N("Phong sampler (exponent %g, theta_o %.2f): mean weight = quadrature of f cos", (double)m.exponent, (double)th),
+                  "sampled %.4f %.4f %.4f quad %.4f %.4f %.4f se %.4f", sum[0] / ns, m1, sum[2] / ns, quad[0], quad[1], quad[2], se);
+            check(quad[0] <= 1.0 + 1e-3 && quad[1] <= 1.0 + 1e-3 && quad[2] <= 1.0 + 1e-3,
+                  N("Phong kd + ks <= 1 reflects at most 1 (theta_o %.2f)", (double)th), "%.4f %.4f %.4f", quad[0], quad[1], quad[2]);
+            check(badpdf == 0 && pdf_err < 1.0, N("Phong sample pdf = eval pdf, weight = f cos / pdf (theta_o %.2f)", (double)th),
+                  "%d pdf mismatches, %g weight mismatches", badpdf, pdf_err);
+        }
+    }
+    {   /* Lambert: weight = albedo exactly, cosine distribution: E[cos] = 2/3 */
+        fovpt_material m;
+        float wo[3] = { 0.6f, 0.0f, 0.8f };
+        double ec = 0.0;
+        int i, bad = 0, ns = 100000;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.albedo[0] = 0.25f; m.albedo[1] = 0.5f; m.albedo[2] = 0.75f;
+        for (i = 0; i < ns; ++i) {
+            float wi[3], w[3], pdf;
+            fovpt_rng_init(&rng, 1, (uint32_t)i, 0, 0);
+            if (!fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf) || w[0] < 0.25f || w[0] > 0.25f || w[2] < 0.75f || w[2] > 0.75f ||
+                wi[2] <= 0.0f)
+                bad++;
+            ec += (double)wi[2];
+        }
+        check(bad == 0 && fabs(ec / ns - 2.0 / 3.0) < 0.004, "Lambert sampler: weight = albedo, E[cos] = 2/3",
+              "%d bad, E[cos] %.4f", bad, ec / ns);
+    }
+    {   /* mirror and dielectric: energy and Fresnel */
+        fovpt_material m;
+        float wo[3] = { 0.0f, 0.0f, 1.0f }, wi[3], w[3], pdf;
+        int i, refl = 0, ns = 200000, bad = 0;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.type = FOVPT_MAT_MIRROR;
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        {
+            float wo2[3] = { 0.6f, 0.0f, 0.8f };
+            fovpt_bsdf_sample(&m, n, wo2, &rng, wi, w, &pdf);
+            check(fabsf(wi[0] + 0.6f) < 1e-6f && fabsf(wi[2] - 0.8f) < 1e-6f && fabsf(w[1] - 0.8f) < 1e-6f && pdf <= 0.0f,
+                  "mirror: reflected direction, weight = tint, delta pdf", " ");
+        }
+        m.type = FOVPT_MAT_DIELECTRIC;
+        m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
+        for (i = 0; i < ns; ++i) {
+            fovpt_rng_init(&rng, 2, (uint32_t)i, 0, 0);
+            fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf);
+            if (wi[2] > 0.0f) refl++;
+            if (w[0] < 1.0f || w[0] > 1.0f) bad++;
+        }
+        {
+            double F = (double)refl / ns, se = sqrt(0.04 * 0.96 / ns);
+            check(fabs(F - 0.04) < 4.0 * se && bad == 0, "dielectric n=1.5 at normal incidence: reflects 4 % ((n-1)/(n+1))^2, weight 1 (R + T = 1)",
+                  "reflected %.4f (se %.4f), %d bad weights", F, se, bad);
+        }
+        {   /* total internal reflection from inside at 60 degrees (critical 41.8) */
+            float wo3[3] = { 0.866f, 0.0f, -0.5f };
+            int all = 1;
+            for (i = 0; i < 1000; ++i) {
+                fovpt_rng_init(&rng, 5, (uint32_t)i, 0, 0);
+                fovpt_bsdf_sample(&m, n, wo3, &rng, wi, w, &pdf);
+                if (!(wi[2] < 0.0f)) all = 0;
+            }
+            check(all, "dielectric: total internal reflection beyond the critical angle", " ");
+        }
+        {   /* refraction follows Snell: from air at 45 degrees into n = 1.5 */
+            float wo4[3] = { 0.70710678f, 0.0f, 0.70710678f };
+            int found = 0;
+            for (i = 0; i < 100 && !found; ++i) {
+                fovpt_rng_init(&rng, 6, (uint32_t)i, 0, 0);
+                fovpt_bsdf_sample(&m, n, wo4, &rng, wi, w, &pdf);
+                if (wi[2] < 0.0f) {
+                    found = 1;
+                    check(fabsf(-wi[0] - 0.70710678f / 1.5f) < 1e-5f, "dielectric: Snell's law (sin t = sin i / n)", "sin t %.6f",
+                          (double)-wi[0]);
+                }
+            }
+            if (!found) check(0, "dielectric: Snell's law (sin t = sin i / n)", "no refraction drawn");
+        }
+    }
+}
+
+/* ==== 4. path tracer ======================================================================== */
+typedef struct stat_acc { double s, s2; long n; } stat_acc;
+static void acc_add(stat_acc *a, double v) { a->s += v; a->s2 += v * v; a->n++; }
+static double acc_mean(const stat_acc *a) { return a->s / (double)a->n; }
+static double acc_se(const stat_acc *a)
+{
+    double m = acc_mean(a);
+    return sqrt(fmax(0.0, a->s2 / (double)a->n - m * m) / (double)a->n);
+}
+
+static void test_furnace(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_config c = fovpt_config_default();
+    fovpt_stats st;
+    int i, nee;
+    /* (a) a diffuse sphere under a uniform environment: L = albedo * background, exactly */
+    fovpt_material_init(&m);
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.5f;
+    fovpt_scene_desc_init(&d);
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 1.0f, 0);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    d.background[0] = d.background[1] = d.background[2] = 1.0f;
+    build(&b, &d);
+    {
+        double worst = 0.0;
+        for (i = 0; i < 2000; ++i) {
+            float o[3] = { frand(-0.9f, 0.9f), frand(-0.9f, 0.9f), -3.0f }, dd[3] = { 0.0f, 0.0f, 1.0f }, rgb[3];
+            fovpt_rng rng;
+            fovpt_rng_init(&rng, 0, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+            if (o[0] * o[0] + o[1] * o[1] < 0.8f) worst = fmax(worst, fabs((double)rgb[1] - 0.5));
+        }
+        check(worst < 1e-6, "furnace: convex Lambert sphere (albedo 0.5) under background 1 gives 0.5", "max error %g", worst);
+    }
+    free(b.mem);
+    /* (b) closed emitting diffuse enclosure: L = Le * sum_{k=0}^{D} a^k, NEE on and off */
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.7f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    d.background[0] = d.background[1] = d.background[2] = 0.0f;
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 2.0f, 0);
+    build(&b, &d);
+    for (nee = 0; nee < 2; ++nee) {
+        int D;
+        for (D = 3; D <= 30; D += 27) {
+            stat_acc a = { 0, 0, 0 };
+            double expect = 0.0, p = 1.0;
+            int k;
+            for (k = 0; k <= D; ++k) { expect += 0.3 * p; p *= 0.7; }
+            c = fovpt_config_default();
+            c.no_nee = (uint32_t)(1 - nee);
+            c.max_depth = (uint32_t)D;
+            memset(&st, 0, sizeof st);
+            for (i = 0; i < 40000; ++i) {
+                float o[3] = { frand(-1.0f, 1.0f), frand(-1.0f, 1.0f), frand(-1.0f, 1.0f) }, dd[3] = { frand(-1, 1), frand(-1, 1), frand(-1, 1) }, rgb[3];
+                fovpt_rng rng;
+                fovpt_rng_init(&rng, 11, (uint32_t)i, 0, (uint32_t)D);
+                fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &st);
+                acc_add(&a, (double)rgb[0]);
+            }
+            check(fabs(acc_mean(&a) - expect) < 3.0 * acc_se(&a) + 1e-6 && acc_se(&a) < 0.01,
+                  N("furnace: emitting enclosure (a 0.7, Le 0.3), depth %d, NEE %s -> %.5f", D, nee ? "on" : "off", expect),
+                  "mean %.5f se %.5f (shadow rays %llu)", acc_mean(&a), acc_se(&a), (unsigned long long)st.shadow_rays);
+            if (nee == 1 && D == 3) check(st.shadow_rays > 0, "NEE traces shadow rays towards the emitter", " ");
+            if (nee == 0 && D == 3) check(st.shadow_rays == 0, "no NEE: no shadow rays", " ");
+        }
+    }
+    {   /* Russian roulette off vs on: same mean at depth 30 */
+        stat_acc a0 = { 0, 0, 0 }, a1 = { 0, 0, 0 };
+        fovpt_stats s0, s1;
+        memset(&s0, 0, sizeof s0); memset(&s1, 0, sizeof s1);
+        for (i = 0; i < 20000; ++i) {
+            float o[3] = { 0, 0, 0 }, dd[3] = { frand(-1, 1), frand(-1, 1), 0.5f }, rgb[3];
+            fovpt_rng rng;
+            c = fovpt_config_default();
+            c.max_depth = 30; c.rr_start = FOVPT_RR_OFF;
+            fovpt_rng_init(&rng, 12, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &s0);
+            acc_add(&a0, (double)rgb[1]);
+            c.rr_start = 1;
+            fovpt_rng_init(&rng, 13, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &s1);
+            acc_add(&a1, (double)rgb[1]);
+        }
+        check(fabs(acc_mean(&a0) - acc_mean(&a1)) < 3.0 * sqrt(acc_se(&a0) * acc_se(&a0) + acc_se(&a1) * acc_se(&a1)) &&
+                  s1.bounce_rays < s0.bounce_rays * 6 / 10,
+              "Russian roulette: same mean, fewer bounces", "means %.5f %.5f, bounce rays %llu vs %llu", acc_mean(&a0), acc_mean(&a1),
+              (unsigned long long)s0.bounce_rays, (unsigned long long)s1.bounce_rays);
+    }
+    {   /* bounce limit 0: emission only */
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 1, 0 }, rgb[3];
+        fovpt_rng rng;
+        c = fovpt_config_default();
+        c.max_depth = 0;
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        c.max_depth = 0;
+        {
+            fovpt_config c0 = c;
+            c0.max_depth = 0;
+            /* max_depth 0 in a resolved config means no bounce */
+            fovpt_radiance(&b.s, &c0, o, dd, &rng, rgb, NULL);
+        }
+        check(fabsf(rgb[0] - 0.3f) < 1e-6f, "bounce limit 0: emission only", "%g", (double)rgb[0]);
+    }
+    /* (c) non-finite radiance is replaced and counted */
+    free(b.mem);
+    m.emission[0] = m.emission[1] = m.emission[2] = 3e38f;
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
+    check(build(&b, &d) == FOV_ERR_LIMIT, "scene rejects an emitted power that overflows float", " ");
+    free(b.mem);
+    m.emission[0] = m.emission[1] = m.emission[2] = 2e37f;
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 0.5f, 0);
+    {
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 1, 0 }, rgb[3] = { 1, 1, 1 };
+        fovpt_rng rng;
+        fov_result r = build(&b, &d);
+        c = fovpt_config_default();
+        c.max_depth = 40;
+        memset(&st, 0, sizeof st);
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &st);
+        check(r == FOV_OK && st.bad_samples == 1 && rgb[0] <= 0.0f && rgb[0] >= 0.0f, "overflowing radiance -> black, counted in bad_samples",
+              "%s bad %llu rgb %g", fovpt_result_string(r), (unsigned long long)st.bad_samples, (double)rgb[0]);
+    }
+    free(b.mem);
+}
+
+/* a small Cornell-like box: Lambert walls, a Phong sphere, a quad light */
+static void cornell(fovpt_material *m, fovpt_shape *sh, fovpt_scene_desc *d, int mirror_glass)
+{
+    float p[3], u[3], v[3], nn[3];
+    int i;
+    for (i = 0; i < 6; ++i) fovpt_material_init(&m[i]);
+    m[1].albedo[1] = m[1].albedo[2] = 0.1f;           /* red */
+    m[2].albedo[0] = m[2].albedo[2] = 0.1f;           /* green */
+    m[3].emission[0] = m[3].emission[1] = m[3].emission[2] = 15.0f;
+    m[4].type = FOVPT_MAT_PHONG;
+    m[4].albedo[0] = 0.2f; m[4].albedo[1] = 0.3f; m[4].albedo[2] = 0.5f;
+    m[4].specular[0] = m[4].specular[1] = m[4].specular[2] = 0.4f;
+    m[4].exponent = 30.0f;
+    m[5].type = mirror_glass ? FOVPT_MAT_DIELECTRIC : FOVPT_MAT_MIRROR;
+    m[5].albedo[0] = m[5].albedo[1] = m[5].albedo[2] = 0.95f;
+    fovpt__set3(p, 0, -1, 0); fovpt__set3(nn, 0, 1, 0); fovpt_shape_plane(&sh[0], p, nn, 0);   /* floor */
+    fovpt__set3(p, 0, 1, 0); fovpt__set3(nn, 0, -1, 0); fovpt_shape_plane(&sh[1], p, nn, 0);   /* ceiling */
+    fovpt__set3(p, 0, 0, 1); fovpt__set3(nn, 0, 0, -1); fovpt_shape_plane(&sh[2], p, nn, 0);   /* back */
+    fovpt__set3(p, -1, -1, -1); fovpt__set3(u, 0, 2, 0); fovpt__set3(v, 0, 0, 2); fovpt_shape_quad(&sh[3], p, u, v, 1);
+    fovpt__set3(p, 1, -1, -1); fovpt_shape_quad(&sh[4], p, u, v, 2);
+    fovpt__set3(p, -0.25f, 0.999f, -0.25f); fovpt__set3(u, 0.5f, 0, 0); fovpt__set3(v, 0, 0, 0.5f); fovpt_shape_quad(&sh[5], p, u, v, 3);
+    fovpt_shape_sphere(&sh[6], -0.4f, -0.6f, 0.3f, 0.4f, 4);
+    fovpt_shape_sphere(&sh[7], 0.45f, -0.65f, -0.2f, 0.35f, 5);
+    fovpt_scene_desc_init(d);
+    d->shapes = sh; d->num_shapes = 8; d->materials = m; d->num_materials = 6;
+    d->background[0] = d->background[1] = d->background[2] = 0.05f;
+}
+
+static void test_nee_equivalence(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    int glass;
+    for (glass = 0; glass < 2; ++glass) {
+        stat_acc a[2] = { { 0, 0, 0 }, { 0, 0, 0 } };
+        int nee, i;
+        cornell(m, sh, &d, glass);
+        build(&b, &d);
+        for (nee = 0; nee < 2; ++nee) {
+            fovpt_config c = fovpt_config_default();
+            c.no_nee = (uint32_t)(1 - nee);
+            for (i = 0; i < 60000; ++i) {
+                fovpt_camera cam;
+                float o[3], dd[3], rgb[3];
+                fovpt_rng rng;
+                fovpt_camera_init(&cam, 32, 32);
+                cam.pos[2] = -3.0f;
+                fovpt_camera_ray(&cam, frand(0.0f, 32.0f), frand(0.0f, 32.0f), o, dd);
+                fovpt_rng_init(&rng, 21 + (uint32_t)nee, (uint32_t)i, 0, 0);
+                fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+                acc_add(&a[nee], (double)(rgb[0] + rgb[1] + rgb[2]) / 3.0);
+            }
+        }
+        {
+            double dm = fabs(acc_mean(&a[0]) - acc_mean(&a[1])), se = sqrt(acc_se(&a[0]) * acc_se(&a[0]) + acc_se(&a[1]) * acc_se(&a[1]));
+            check(dm < 3.0 * se && acc_se(&a[1]) < acc_se(&a[0]),
+                  N("Cornell box with %s: NEE on and off agree within 3 standard errors, NEE has less noise", glass ? "glass" : "mirror"),
+                  "off %.5f (se %.5f) on %.5f (se %.5f)", acc_mean(&a[0]), acc_se(&a[0]), acc_mean(&a[1]), acc_se(&a[1]));
+        }
+        free(b.mem);
+    }
+}
+
+static void test_whitted(void)
+{
+    fovpt_material m[3];
+    fovpt_shape sh[3];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_config c;
+    float p[3] = { 0, 0, 0 }, nn[3] = { 0, 1, 0 }, q[3] = { -0.05f, 2.0f, -0.05f }, u[3] = { 0.1f, 0, 0 }, v[3] = { 0, 0, 0.1f };
+    float o[3] = { 0, 1, 0 }, dd[3] = { 0, -1, 0 }, rgb[3];
+    fovpt_rng rng;
+    fovpt_material_init(&m[0]);
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.5f;
+    fovpt_material_init(&m[1]);
+    m[1].emission[0] = m[1].emission[1] = m[1].emission[2] = 10.0f;
+    fovpt_shape_plane(&sh[0], p, nn, 0);
+    fovpt_shape_quad(&sh[1], q, u, v, 1);
+    fovpt_scene_desc_init(&d);
+    d.shapes = sh; d.num_shapes = 2; d.materials = m; d.num_materials = 2;
+    build(&b, &d);
+    memset(&c, 0, sizeof c);
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    fovpt_rng_init(&rng, 0, 0, 0, 0);
+    fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+    {
+        double expect = 0.5 / 3.141592653589793 * 10.0 * 0.01 / 4.0;
+        check(fabs((double)rgb[0] - expect) < 1e-5 * expect + 1e-9, "Whitted: small quad light over a Lambert plane = kd/pi Le A / d^2",
+              "%.7f vs %.7f", (double)rgb[0], expect);
+        /* the path tracer converges to nearly the same (the light is small) */
+        {
+            stat_acc a = { 0, 0, 0 };
+            int i;
+            fovpt_config pc = fovpt_config_default();
+            pc.max_depth = 1;
+            for (i = 0; i < 20000; ++i) {
+                fovpt_rng_init(&rng, 4, (uint32_t)i, 0, 0);
+                fovpt_radiance(&b.s, &pc, o, dd, &rng, rgb, NULL);
+                acc_add(&a, (double)rgb[0]);
+            }
+            check(fabs(acc_mean(&a) - expect) < 3.0 * acc_se(&a) + 0.01 * expect, "path tracer (NEE) agrees with it for a small light",
+                  "%.7f (se %.7f) vs %.7f", acc_mean(&a), acc_se(&a), expect);
+        }
+    }
+    free(b.mem);
+    /* mirror under a uniform background: tint * background; depth 0 stops before it */
+    m[0].type = FOVPT_MAT_MIRROR;
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
+    d.num_shapes = 1;
+    d.background[0] = d.background[1] = d.background[2] = 1.0f;
+    build(&b, &d);
+    {
+        float dd2[3] = { 0.3f, -1.0f, 0.1f };
+        fovpt_radiance(&b.s, &c, o, dd2, &rng, rgb, NULL);
+        check(fabsf(rgb[1] - 0.8f) < 1e-6f, "Whitted mirror: tint x background", "%g", (double)rgb[1]);
+        c.max_depth = 0;
+        fovpt_radiance(&b.s, &c, o, dd2, &rng, rgb, NULL);
+        check(rgb[1] <= 0.0f, "Whitted depth 0: no reflection ray", "%g", (double)rgb[1]);
+    }
+    free(b.mem);
+    /* a glass box under a uniform background: both Fresnel branches keep the energy */
+    {
+        float lo[3] = { -1, -1, -1 }, hi[3] = { 1, 1, 1 };
+        float dd3[3] = { 0.2f, -0.1f, 1.0f }, o3[3] = { 0.1f, 0.2f, -5.0f };
+        m[0].type = FOVPT_MAT_DIELECTRIC;
+        m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 1.0f;
+        fovpt_shape_box(&sh[0], lo, hi, 0);
+        build(&b, &d);
+        c.max_depth = 14;
+        fovpt_radiance(&b.s, &c, o3, dd3, &rng, rgb, NULL);
+        check(rgb[0] > 0.97f && rgb[0] < 1.0f + 1e-5f, "Whitted glass box, depth 14: reflected + refracted energy ~ 1", "%g", (double)rgb[0]);
+        c.max_depth = 1;
+        fovpt_radiance(&b.s, &c, o3, dd3, &rng, rgb, NULL);
+        check(rgb[0] > 0.03f && rgb[0] < 0.06f, "Whitted glass box, depth 1: only the first reflection (about 4 %)", "%g", (double)rgb[0]);
+        free(b.mem);
+    }
+}
+
+static void test_render(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fov_gaze g = { 24.0f, 16.0f };
+    size_t n = 0;
+    void *mem;
+    uint8_t img1[48 * 32 * 3], img2[48 * 32 * 3], img3[48 * 32 * 3];
+    float f1[48 * 32 * 3];
+    fovpt_output out;
+    fovpt_stats st;
+    fov_result r;
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, 48, 32);
+    cam.pos[2] = -3.0f;
+    c.spp = 4;
+    r = fovpt_memory_size(&c, &cam, &n);
+    check(r == FOV_OK && n == 48u * 32u * 16u, "memory_size UNIFORM = 16 bytes per pixel", "%s %zu", fovpt_result_string(r), n);
+    mem = amalloc(n);
+    r = fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    check(r == FOV_OK, "init", "%s", fovpt_result_string(r));
+    fovpt_output_init(&out);
+    out.rgb8 = img1; out.rgb = f1;
+    memset(&st, 0, sizeof st);
+    fovpt_render(&ctx, 0, &out, &st);
+    check(st.camera_rays == 48u * 32u * 4u && st.samples == st.camera_rays && st.rays == st.camera_rays + st.bounce_rays + st.shadow_rays &&
+              st.shadow_rays > 0,
+          "stats: camera rays = pixels x spp, rays = sum of kinds", "cam %llu rays %llu", (unsigned long long)st.camera_rays,
+          (unsigned long long)st.rays);
+    {
+        int i, finite = 1;
+        for (i = 0; i < 48 * 32 * 3; ++i) if (!(f1[i] >= 0.0f && f1[i] < 1e6f)) finite = 0;
+        check(finite, "image finite and non-negative", " ");
+    }
+    out.rgb = NULL;
+    out.rgb8 = img2;
+    fovpt_render(&ctx, 0, &out, NULL);
+    check(memcmp(img1, img2, sizeof img1) == 0, "deterministic: same seed and frame -> identical image", " ");
+    /* rows in three uneven bands, in reverse order */
+    fovpt_trace_rows(&ctx, 0, 20, 32, NULL);
+    fovpt_trace_rows(&ctx, 0, 7, 20, NULL);
+    fovpt_trace_rows(&ctx, 0, 0, 7, NULL);
+    out.rgb8 = img3;
+    fovpt_resolve_rows(&ctx, 0, 32, &out);
+    check(memcmp(img1, img3, sizeof img1) == 0, "row bands in any order -> the same image", " ");
+    fovpt_render(&ctx, 1, &out, NULL);
+    check(memcmp(img1, img3, sizeof img1) != 0, "another frame index -> another noise pattern", " ");
+    {
+        fovpt_config c2 = c;
+        fovpt_ctx ctx2;
+        c2.seed = 99;
+        fovpt_init(&ctx2, &c2, &b.s, &cam, g, mem, n);
+        fovpt_render(&ctx2, 0, &out, NULL);
+        check(memcmp(img1, img3, sizeof img1) != 0, "another seed -> another noise pattern", " ");
+    }
+    /* progressive accumulation: 8 frames of 4 spp = one frame of 32 spp in expectation,
+       and the noise falls: compare both against a 256-spp reference */
+    {
+        static float ref[48 * 32 * 3], acc[48 * 32 * 3], one[48 * 32 * 3];
+        fovpt_config ca = c;
+        fovpt_ctx cx;
+        int f, i;
+        double e_acc = 0.0, e_one = 0.0;
+        ca.spp = 256; ca.seed = 5;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        out.rgb8 = NULL; out.rgb = ref;
+        fovpt_render(&cx, 0, &out, NULL);
+        ca.spp = 4; ca.seed = 6;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        out.rgb = one;
+        fovpt_render(&cx, 0, &out, NULL);
+        ca.accumulate = 1;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        for (f = 0; f < 8; ++f) fovpt_trace_rows(&cx, (uint32_t)f, 0, 32, NULL);
+        out.rgb = acc;
+        fovpt_resolve_rows(&cx, 0, 32, &out);
+        for (i = 0; i < 48 * 32 * 3; ++i) {
+            e_acc += ((double)acc[i] - (double)ref[i]) * ((double)acc[i] - (double)ref[i]);
+            e_one += ((double)one[i] - (double)ref[i]) * ((double)one[i] - (double)ref[i]);
+        }
+        check(e_acc < e_one / 4.0, "progressive accumulation: 8 frames x 4 spp have under 1/4 the squared error of 4 spp",
+              "sq err %.4f vs %.4f", e_acc, e_one);
+        {
+            fovpt_camera cam2 = cam;
+            cam2.pos[0] = 0.1f;
+            fovpt_set_view(&cx, &cam2, g);
+            check(cx.accum[3] <= 0.0f, "set_view with a moved camera resets the accumulation", "%g", (double)cx.accum[3]);
+        }
+    }
+    /* bad input */
+    {
+        fovpt_camera bc = cam;
+        fov_gaze bg = { NAN, 0.0f };
+        fovpt_config bcfg = c;
+        check(fovpt_init(&ctx, &c, &b.s, &cam, bg, mem, n) == FOV_ERR_NOT_FINITE, "init: NaN gaze", " ");
+        bc.width = 0;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: width 0", " ");
+        bc.width = 70000;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_LIMIT, "init: width above FOVPT_MAX_DIM", " ");
+        bc = cam; bc.pos[1] = INFINITY;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_NOT_FINITE, "init: infinite camera", " ");
+        bc = cam; bc.target[2] = bc.pos[2];
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_DEGENERATE, "init: camera target = position", " ");
+        bc = cam; bc.fov_y_deg = 180.0f;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: fov 180", " ");
+        check(fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n - 1u) == FOV_ERR_TOO_SMALL, "init: memory too small", " ");
+        check(fovpt_init(&ctx, &c, &b.s, &cam, g, NULL, n) == FOV_ERR_NULL, "init: memory NULL", " ");
+        bcfg.method = FOVPT_METHOD_LAYERS;
+        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "methods not built yet say FOV_ERR_UNSUPPORTED", " ");
+        fovpt_memory_size(&c, &cam, &n);
+        fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+        check(fovpt_trace_rows(&ctx, 0, 10, 40, NULL) == FOV_ERR_INVALID_ARG && fovpt_trace_rows(&ctx, 0, 10, 5, NULL) == FOV_ERR_INVALID_ARG,
+              "trace_rows: rows outside the image", " ");
+        out.rgb8_stride = 10;
+        out.rgb8 = img1;
+        check(fovpt_resolve_rows(&ctx, 0, 1, &out) == FOV_ERR_INVALID_ARG, "resolve_rows: stride below 3 * width", " ");
+        {
+            float o[3] = { 0, 0, 0 }, dd[3] = { NAN, 0, 1 }, rgb[3];
+            fovpt_rng rng;
+            fovpt_rng_init(&rng, 0, 0, 0, 0);
+            check(fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL) == FOV_ERR_NOT_FINITE, "radiance: NaN direction", " ");
+            dd[0] = 0.0f; dd[2] = 0.0f;
+            check(fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL) == FOV_ERR_DEGENERATE, "radiance: zero direction", " ");
+        }
+    }
+    free(mem);
+    free(b.mem);
+}
+
+/* ==== 5. foveation building blocks ============================================================ */
+static void test_foveation_blocks(void)
+{
+    int i, ok = 1, lin = 1, ends = 1;
+    for (i = 0; i <= 100; ++i) {
+        float t = (float)i / 100.0f, w[4], v;
+        fovpt_catmull_rom(t, w);
+        if (fabsf(w[0] + w[1] + w[2] + w[3] - 1.0f) > 1e-6f) ok = 0;
+        v = w[0] * 1.0f + w[1] * 3.0f + w[2] * 5.0f + w[3] * 7.0f; /* a linear ramp 1, 3, 5, 7 */
+        if (fabsf(v - (3.0f + 2.0f * t)) > 1e-5f) lin = 0;
+    }
+    {
+        float w[4];
+        fovpt_catmull_rom(0.0f, w);
+        if (fabsf(w[1] - 1.0f) > 0.0f || fabsf(w[0]) > 0.0f || fabsf(w[2]) > 0.0f) ends = 0;
+        fovpt_catmull_rom(1.0f, w);
+        if (fabsf(w[2] - 1.0f) > 1e-7f || fabsf(w[1]) > 1e-7f || fabsf(w[3]) > 1e-7f) ends = 0;
+    }
+    check(ok, "Catmull-Rom weights sum to one (101 values of t)", " ");
+    check(lin, "Catmull-Rom reproduces linear ramps", " ");
+    check(ends, "Catmull-Rom gives v1 at t = 0 and v2 at t = 1 (the thesis's -1/2 would give 2 v2)", " ");
+    {   /* tau_fov against the notes' reference table (seed 004 Fig. 7 shapes) */
+        static const float e[10] = { 0, 1, 2, 3.3f, 5.5f, 8, 12.1f, 20, 25, 30 };
+        static const float r1[10] = { 1.000f, 1.124f, 1.428f, 2.000f, 3.090f, 4.300f, 6.209f, 9.509f, 11.160f, 12.000f };
+        static const float r2[10] = { 9.000f, 9.042f, 9.210f, 10.000f, 12.676f, 14.760f, 17.015f, 19.245f, 19.830f, 20.000f };
+        fovpt_config c = fovpt_config_default();
+        float worst1 = 0.0f, worst2 = 0.0f, v;
+        for (i = 0; i < 10; ++i) {
+            fovpt_tau_fov(&c.selective, e[i], &v);
+            worst1 = fmaxf(worst1, fabsf(v - r1[i]));
+        }
+        c.selective.tau_shape[0] = 9; c.selective.tau_shape[1] = 10; c.selective.tau_shape[2] = 1.5f; c.selective.tau_shape[3] = 20;
+        for (i = 0; i < 10; ++i) {
+            fovpt_tau_fov(&c.selective, e[i], &v);
+            worst2 = fmaxf(worst2, fabsf(v - r2[i]));
+        }
+        check(worst1 < 1.5e-3f, "tau_fov (1, 2, 0.5, 12) matches the reference table (10 values)", "max err %g", (double)worst1);
+        check(worst2 < 1.5e-3f, "tau_fov (9, 10, 1.5, 20) matches the reference table (10 values)", "max err %g", (double)worst2);
+        {
+            float a, b2, s0, s1;
+            fovpt_tau_fov(&c.selective, 3.3f - 1e-3f, &a);
+            fovpt_tau_fov(&c.selective, 3.3f + 1e-3f, &b2);
+            fovpt_tau_fov(&c.selective, 1e-3f, &s0);
+            fovpt_tau_fov(&c.selective, 30.0f - 1e-3f, &s1);
+            check(fabsf((b2 - a) / 2e-3f - 1.5f) < 0.02f && fabsf(s0 - 9.0f) < 1e-4f && fabsf(s1 - 20.0f) < 1e-4f,
+                  "tau_fov: slope tau'_f at e_f (C1), flat at 0 and e_np", "slope %g", (double)((b2 - a) / 2e-3f));
+        }
+        fovpt_tau_fov(&c.selective, 50.0f, &v);
+        check(fabsf(v - 20.0f) < 1e-6f, "tau_fov beyond e_np = tau_np", " ");
+        c.selective.tau_shape[2] = 0.01f;
+        check(fovpt_tau_fov(&c.selective, 2.0f, &v) == FOV_ERR_INVALID_ARG && fovpt_tau_fov(&c.selective, NAN, &v) == FOV_ERR_NOT_FINITE,
+              "tau_fov: non-monotone shape and NaN rejected", " ");
+    }
+    {   /* alpha(e): the notes' derived values */
+        fovpt_config c = fovpt_config_default();
+        float a2 = fovpt_alpha(&c.temporal, &c.selective, 2.0f), a10 = fovpt_alpha(&c.temporal, &c.selective, 10.0f);
+        float a20 = fovpt_alpha(&c.temporal, &c.selective, 20.0f), a40 = fovpt_alpha(&c.temporal, &c.selective, 40.0f);
+        float a90 = fovpt_alpha(&c.temporal, &c.selective, 90.0f), a0 = fovpt_alpha(&c.temporal, &c.selective, 0.0f);
+        check(fabsf(a2 - 0.839f) < 1e-3f && fabsf(a10 - 0.564f) < 1e-3f && fabsf(a20 - 0.368f) < 1e-3f && fabsf(a40 - 0.133f) < 1e-3f &&
+                  fabsf(a90 - 0.1f) < 1e-6f && fabsf(a0 - 0.9f) < 1e-6f,
+              "alpha(e): 0.9 at 0, 0.839 at 2, 0.564 at 10, 0.368 at 20, 0.133 at 40, 0.1 beyond 45",
+              "%g %g %g %g %g", (double)a2, (double)a10, (double)a20, (double)a40, (double)a90);
+    }
+}
+
+int main(void)
+{
+    test_api();
+    test_ecc();
+    test_scene_bad();
+    test_bvh_random();
+    test_user_hook();
+    test_rng();
+    test_bsdf();
+    test_furnace();
+    test_nee_equivalence();
+    test_whitted();
+    test_render();
+    test_foveation_blocks();
+    return fovcheck_summary();
+}
