@@ -52,8 +52,9 @@ WHAT IT DOES (the pipeline, in the order the data flows)
 STATUS (v0.1.0; the API below is complete and stable, some methods are not built yet)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
-   the random streams, progressive accumulation, UNIFORM rendering by rows, eccentricity.
-   Not yet: the methods LAYERS, ZONES, SELECTIVE and JIN and the temporal options:
+   the random streams, progressive accumulation, UNIFORM and LAYERS rendering by rows,
+   eccentricity, tau_fov and alpha(e).
+   Not yet: the methods ZONES, SELECTIVE and JIN and the temporal options:
    fovpt_memory_size / fovpt_init return FOV_ERR_UNSUPPORTED for them (their configs are
    validated already).
 
@@ -77,6 +78,23 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      Fresnel branches, explicit stack); no random numbers except the pixel jitter.
    - Degenerate triangles (zero area) are an error unless desc.skip_degenerate = 1.
    - Pixel jitter: uniform in the pixel (box filter), from the pixel's stream.
+   - LAYERS (seed 002 sec. 3.2-3.4). Lattice of layer n >= 1: pixels (gx + k d, gy + l d),
+     (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d); layer 0: (k d, l d), static. A
+     lattice point (pixel centre eccentricity e) is traced when
+        e <= min(r_n + blend/2 + a_n, r_0 + a_n)  (layer n >= 1; the r_0 term with a mask)
+        e <= r_0 + a_0                             (layer 0 with a mask; all points without)
+     with the apron a_n = (2 sqrt(2) d_n + 1) / f_px radians in degrees (f_px: the eye's
+     distance to the image in pixels), so every Catmull-Rom neighbour of a pixel that needs
+     the layer is traced (an angle between two pixels' rays is at most their distance / f).
+     Like the thesis, every layer covers its whole disk, including the finer layers' area.
+     Samples of a target pixel are jittered uniformly inside it. Untraced pixels: separable
+     Catmull-Rom over the 4 x 4 lattice neighbours (Eq. 3.17 fixed), neighbour indices
+     clamped at the image border; where a neighbour is not traced (mask border), the
+     bilinear weights of the 2 x 2 inner neighbours that are; results clamped to >= 0
+     (Catmull-Rom overshoots). Blending (Eq. 3.18) from the outside in: C = F_0, then for
+     n = 1 .. N-1: C = (1 - vb_n) C + vb_n F_n with vb_n = 1 at e <= r_n - blend/2, 0 at
+     e >= r_n + blend/2, smoothstep (or linear) between; continuous across every border.
+     Pixels beyond the mask radius are black (not traced, as in the thesis).
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -481,7 +499,13 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     fov_ecc_model ecc;
     float right[3], up[3], fwd[3];
     float tx0, tx1, ty0, ty1; /* image-plane tangents: x from tx0 to tx1, y from ty0 (top) */
-    float *accum;             /* 4 floats per pixel: rgb sum, weight */
+    float *accum;             /* UNIFORM: 4 floats per pixel: rgb sum, weight */
+    /* LAYERS: per layer a lattice grid of 4 floats per point (rgb sum, weight; weight 0 =
+       not traced): point (k, l) is pixel (ox + k d, oy + l d), k < nx, l < ny */
+    float *layer_buf[FOVPT_MAX_LAYERS];
+    uint32_t layer_ox[FOVPT_MAX_LAYERS], layer_oy[FOVPT_MAX_LAYERS];
+    uint32_t layer_nx[FOVPT_MAX_LAYERS], layer_ny[FOVPT_MAX_LAYERS];
+    float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
     void *mem;
     size_t mem_size;
 } fovpt_ctx;
@@ -497,6 +521,8 @@ typedef struct fovpt_stats {
     uint64_t rays;            /* every ray: camera + bounce + shadow */
     uint64_t camera_rays, bounce_rays, shadow_rays;
     uint64_t bad_samples;     /* non-finite radiance replaced by black */
+    uint64_t layer_targets[FOVPT_MAX_LAYERS]; /* LAYERS: lattice points traced per layer */
+    uint64_t layer_samples[FOVPT_MAX_LAYERS]; /* LAYERS: their samples (targets x spp) */
 } fovpt_stats;
 
 /* A random stream: counter-based, deterministic per (seed, pixel, sample, frame). */
@@ -2429,17 +2455,30 @@ FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m)
 }
 
 /* ---- context and rendering ------------------------------------------------------------------- */
+/* LAYERS: lattice grid size of layer n (covers the image for any gaze). */
+FOVPT__PRIV uint64_t fovpt__grid_cells(uint32_t w, uint32_t h, uint32_t d)
+{
+    return (uint64_t)(w / d + 2u) * (uint64_t)(h / d + 2u);
+}
+
 FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam, size_t *bytes)
 {
-    uint64_t px;
+    uint64_t px, total = 0;
+    uint32_t n;
     const fov_logger *lg = &c->logger;
-    if (c->method != FOVPT_METHOD_UNIFORM)
+    if (c->method != FOVPT_METHOD_UNIFORM && c->method != FOVPT_METHOD_LAYERS)
         FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "method not implemented in this version (see STATUS)");
     if (c->temporal.reuse || c->temporal.smooth)
         FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing not implemented in this version");
     px = (uint64_t)cam->width * cam->height;
-    if (px * 16u > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "context memory overflows size_t");
-    *bytes = fovpt__align((size_t)(px * 16u));
+    if (c->method == FOVPT_METHOD_UNIFORM) {
+        total = (px * 16u + 15u) & ~(uint64_t)15u;
+    } else {
+        for (n = 0; n < c->layers.count; ++n)
+            total += (fovpt__grid_cells(cam->width, cam->height, c->layers.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
+    }
+    if (total > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "context memory overflows size_t");
+    *bytes = (size_t)total;
     return FOV_OK;
 }
 
@@ -2456,11 +2495,15 @@ FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_came
     return fovpt__ctx_bytes(&c, cam, bytes);
 }
 
-/* The eccentricity model of a camera: the display's, or the camera's own frustum. */
-FOVPT__PRIV fov_result fovpt__ctx_ecc(fovpt_ctx *ctx)
+/* The eccentricity model of a camera: the display's, or the camera's own frustum; then the
+   per-layer lattice origins and traced radii (LAYERS). */
+FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
 {
     fov_display d = ctx->cfg.display;
     const fovpt_camera *cam = &ctx->cam;
+    const fovpt_layers_cfg *L = &ctx->cfg.layers;
+    fov_result e;
+    uint32_t n;
     int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f || d.pixel_pitch_mm < 0.0f ||
                 d.distance_mm > 0.0f || d.distance_mm < 0.0f;
     if (!given) {
@@ -2470,7 +2513,33 @@ FOVPT__PRIV fov_result fovpt__ctx_ecc(fovpt_ctx *ctx)
         d.axis_dx += -ctx->tx0 * fpx - 0.5f * (float)cam->width;
         d.axis_dy += ctx->ty0 * fpx - 0.5f * (float)cam->height;
     }
-    return fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
+    e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
+    if (e != FOV_OK) return e;
+    if (ctx->cfg.method == FOVPT_METHOD_LAYERS) {
+        float gxf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
+        int64_t gx = (int64_t)gxf, gy = (int64_t)gyf;
+        float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOVPT__DEG);
+        for (n = 0; n < L->count; ++n) {
+            int64_t d_ = (int64_t)L->layer[n].stride, ox = 0, oy = 0;
+            float apron = (2.8284271f * (float)L->layer[n].stride + 1.0f) * to_deg, tr;
+            if (n > 0) {
+                ox = ((gx % d_) + d_) % d_;
+                oy = ((gy % d_) + d_) % d_;
+                if (L->snap) ox = oy = 0;
+            }
+            ctx->layer_ox[n] = (uint32_t)ox;
+            ctx->layer_oy[n] = (uint32_t)oy;
+            ctx->layer_nx[n] = (uint32_t)(((int64_t)cam->width - ox + d_ - 1) / d_);
+            ctx->layer_ny[n] = (uint32_t)(((int64_t)cam->height - oy + d_ - 1) / d_);
+            if (n == 0) tr = r0 > 0.0f ? r0 + apron : FLT_MAX;
+            else {
+                tr = L->layer[n].radius_deg + 0.5f * L->blend_deg + apron;
+                if (r0 > 0.0f) tr = fovpt__minf(tr, r0 + apron);
+            }
+            ctx->layer_trace_deg[n] = tr;
+        }
+    }
+    return FOV_OK;
 }
 
 FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const fovpt_scene *scene,
@@ -2499,18 +2568,32 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     ctx->cam = *cam;
     ctx->gaze = gaze;
     ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
-    e = fovpt__ctx_ecc(ctx);
+    e = fovpt__ctx_view(ctx);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "eccentricity model (display)");
     ctx->mem = mem;
     ctx->mem_size = bytes;
-    ctx->accum = (float *)mem;
+    if (c.method == FOVPT_METHOD_UNIFORM) {
+        ctx->accum = (float *)mem;
+    } else {
+        unsigned char *p = (unsigned char *)mem;
+        uint32_t n;
+        for (n = 0; n < c.layers.count; ++n) {
+            ctx->layer_buf[n] = (float *)(void *)p;
+            p += fovpt__align((size_t)fovpt__grid_cells(cam->width, cam->height, c.layers.layer[n].stride) * 16u);
+        }
+    }
     return fovpt_reset(ctx);
 }
 
 FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
 {
+    uint32_t n;
     if (!ctx) return FOV_ERR_NULL;
     if (ctx->accum) FOV_MEMSET(ctx->accum, 0, (size_t)ctx->cam.width * ctx->cam.height * 16u);
+    for (n = 0; n < FOVPT_MAX_LAYERS; ++n)
+        if (ctx->layer_buf[n])
+            FOV_MEMSET(ctx->layer_buf[n], 0,
+                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height, ctx->cfg.layers.layer[n].stride) * 16u);
     return FOV_OK;
 }
 
@@ -2537,46 +2620,89 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
         if (t4[0] < ctx->tx0 || t4[0] > ctx->tx0 || t4[2] < ctx->ty0 || t4[2] > ctx->ty0 ||
             t4[1] < ctx->tx1 || t4[1] > ctx->tx1 || t4[3] < ctx->ty1 || t4[3] > ctx->ty1)
             moved = 1;
+        /* LAYERS: the lattices move with the gaze */
+        if (ctx->cfg.method == FOVPT_METHOD_LAYERS &&
+            (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y || gaze.y > ctx->gaze.y))
+            moved = 1;
     }
     ctx->cam = *cam;
     ctx->gaze = gaze;
     fovpt__copy3(ctx->right, r); fovpt__copy3(ctx->up, u); fovpt__copy3(ctx->fwd, f);
     ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
-    e = fovpt__ctx_ecc(ctx);
+    e = fovpt__ctx_view(ctx);
     if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "eccentricity model (display)");
     if (moved) return fovpt_reset(ctx);
     return FOV_OK;
 }
 
+/* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
+FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp, uint32_t sample0,
+                              float sum[3], fovpt_stats *st)
+{
+    uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
+    float t4[4];
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    sum[0] = sum[1] = sum[2] = 0.0f;
+    for (s = 0; s < spp; ++s) {
+        fovpt_rng rng;
+        float dir[3], rgb[3], jx, jy;
+        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
+        jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
+        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
+        st->camera_rays++;
+        (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, st);
+        sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
+    }
+    st->samples += spp;
+}
+
+FOVPT__PRIV void fovpt__store(float *acc, const float sum[3], uint32_t spp, uint32_t accumulate)
+{
+    if (accumulate) {
+        acc[0] += sum[0]; acc[1] += sum[1]; acc[2] += sum[2]; acc[3] += (float)spp;
+    } else {
+        acc[0] = sum[0]; acc[1] = sum[1]; acc[2] = sum[2]; acc[3] = (float)spp;
+    }
+}
+
 FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
 {
     fovpt_stats st;
-    uint32_t x, y, s, W, H;
-    float t4[4];
-    if (!ctx || !ctx->scene || !ctx->accum) return FOV_ERR_NULL;
+    uint32_t x, y, n, W, H;
+    if (!ctx || !ctx->scene || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
     W = ctx->cam.width; H = ctx->cam.height;
     if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
     FOV_MEMSET(&st, 0, sizeof st);
-    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
-    for (y = y0; y < y1; ++y) {
-        for (x = 0; x < W; ++x) {
-            float *acc = ctx->accum + 4u * ((size_t)y * W + x), sum[3] = { 0.0f, 0.0f, 0.0f };
-            uint32_t pix = y * W + x;
-            for (s = 0; s < ctx->cfg.spp; ++s) {
-                fovpt_rng rng;
-                float dir[3], rgb[3], jx, jy;
-                fovpt_rng_init(&rng, ctx->cfg.seed, pix, s, frame);
-                jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
-                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
-                st.camera_rays++;
-                (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, &st);
-                sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
+    if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                float sum[3];
+                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &st);
+                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp, ctx->cfg.accumulate);
             }
-            st.samples += ctx->cfg.spp;
-            if (ctx->cfg.accumulate) {
-                acc[0] += sum[0]; acc[1] += sum[1]; acc[2] += sum[2]; acc[3] += (float)ctx->cfg.spp;
-            } else {
-                acc[0] = sum[0]; acc[1] = sum[1]; acc[2] = sum[2]; acc[3] = (float)ctx->cfg.spp;
+    } else {
+        /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing) */
+        for (n = 0; n < ctx->cfg.layers.count; ++n) {
+            uint32_t d = ctx->cfg.layers.layer[n].stride, spp = ctx->cfg.layers.layer[n].spp, k, l;
+            uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
+            float tr = ctx->layer_trace_deg[n];
+            /* lattice rows whose pixel row lies in [y0, y1) */
+            uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
+            for (l = l0; l < ctx->layer_ny[n]; ++l) {
+                uint32_t py = oy + l * d;
+                if (py >= y1) break;
+                for (k = 0; k < nx; ++k) {
+                    uint32_t px = ox + k * d;
+                    float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
+                    if (fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f) > tr) {
+                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
+                        continue;
+                    }
+                    fovpt__pixel(ctx, frame, px, py, spp, n << 16, sum, &st);
+                    fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
+                    st.layer_targets[n]++;
+                    st.layer_samples[n] += spp;
+                }
             }
         }
     }
@@ -2584,6 +2710,10 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
     if (stats) {
         stats->samples += st.samples; stats->rays += st.rays; stats->camera_rays += st.camera_rays;
         stats->bounce_rays += st.bounce_rays; stats->shadow_rays += st.shadow_rays; stats->bad_samples += st.bad_samples;
+        for (n = 0; n < FOVPT_MAX_LAYERS; ++n) {
+            stats->layer_targets[n] += st.layer_targets[n];
+            stats->layer_samples[n] += st.layer_samples[n];
+        }
     }
     return FOV_OK;
 }
@@ -2597,19 +2727,97 @@ FOVPT__PRIV uint8_t fovpt__srgb8(float v)
     return (uint8_t)(e * 255.0f + 0.5f);
 }
 
+/* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (seed 002 Eq.
+   3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when unavailable. */
+FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y, float c[3])
+{
+    const float *buf = ctx->layer_buf[n];
+    uint32_t d = ctx->cfg.layers.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n];
+    int32_t kx, ky, i, j, ok = 1;
+    float fx, fy, wx[4], wy[4], acc[3] = { 0.0f, 0.0f, 0.0f };
+    int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n], ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
+    kx = rx >= 0 ? rx / (int32_t)d : -(((-rx) + (int32_t)d - 1) / (int32_t)d);
+    ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
+    fx = (float)(rx - kx * (int32_t)d) / (float)d;
+    fy = (float)(ry - ky * (int32_t)d) / (float)d;
+    fovpt_catmull_rom(fx, wx);
+    fovpt_catmull_rom(fy, wy);
+    for (j = 0; j < 4 && ok; ++j) {
+        int32_t lj = ky - 1 + j;
+        lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
+        for (i = 0; i < 4; ++i) {
+            int32_t ki = kx - 1 + i;
+            const float *a;
+            float w = wx[i] * wy[j];
+            ki = ki < 0 ? 0 : (ki >= (int32_t)nx ? (int32_t)nx - 1 : ki);
+            a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
+            if (!(a[3] > 0.0f)) {
+                if (w > 0.0f || w < 0.0f) { ok = 0; break; }
+                continue;
+            }
+            acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
+        }
+    }
+    if (!ok) { /* a neighbour is not traced: bilinear over the inner 2 x 2 that are */
+        float ws = 0.0f;
+        acc[0] = acc[1] = acc[2] = 0.0f;
+        for (j = 0; j < 2; ++j)
+            for (i = 0; i < 2; ++i) {
+                int32_t ki = kx + i, lj = ky + j;
+                const float *a;
+                float w = (i ? fx : 1.0f - fx) * (j ? fy : 1.0f - fy);
+                ki = ki < 0 ? 0 : (ki >= (int32_t)nx ? (int32_t)nx - 1 : ki);
+                lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
+                a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
+                if (!(a[3] > 0.0f) || !(w > 0.0f)) continue;
+                acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
+                ws += w;
+            }
+        if (!(ws > 0.0f)) return 0;
+        acc[0] /= ws; acc[1] /= ws; acc[2] /= ws;
+    }
+    c[0] = fovpt__maxf(acc[0], 0.0f); c[1] = fovpt__maxf(acc[1], 0.0f); c[2] = fovpt__maxf(acc[2], 0.0f);
+    return 1;
+}
+
+/* seed 002 Eq. 3.18 blend weight of layer n at eccentricity e */
+FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
+{
+    float t = (L->layer[n].radius_deg + 0.5f * L->blend_deg - e) / L->blend_deg;
+    t = fovpt__clampf(t, 0.0f, 1.0f);
+    return L->blend_linear ? t : t * t * (3.0f - 2.0f * t);
+}
+
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1, const fovpt_output *out)
 {
     uint32_t x, y, k, W;
-    if (!ctx || !out || !ctx->accum) return FOV_ERR_NULL;
+    if (!ctx || !out || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
     W = ctx->cam.width;
     if (y0 > y1 || y1 > ctx->cam.height) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
     if ((out->rgb_stride && out->rgb_stride < 3u * W) || (out->rgb8_stride && out->rgb8_stride < 3u * W))
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "output stride below 3 * width");
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
-            const float *acc = ctx->accum + 4u * ((size_t)y * W + x);
-            float c[3];
-            for (k = 0; k < 3; ++k) c[k] = acc[3] > 0.0f ? acc[k] / acc[3] : 0.0f;
+            float c[3] = { 0.0f, 0.0f, 0.0f };
+            if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
+                const float *acc = ctx->accum + 4u * ((size_t)y * W + x);
+                for (k = 0; k < 3; ++k) c[k] = acc[3] > 0.0f ? acc[k] / acc[3] : 0.0f;
+            } else {
+                const fovpt_layers_cfg *L = &ctx->cfg.layers;
+                float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), f[3];
+                uint32_t n, top = 0;
+                if (!(L->layer[0].radius_deg > 0.0f) || e <= L->layer[0].radius_deg) {
+                    /* the innermost layer with full weight: nothing below it is needed */
+                    for (n = L->count - 1u; n > 0; --n)
+                        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+                    if (!fovpt__layer_value(ctx, top, x, y, c)) c[0] = c[1] = c[2] = 0.0f;
+                    for (n = top + 1u; n < L->count; ++n) {
+                        float vb = fovpt__vb(L, n, e);
+                        if (!(vb > 0.0f) || !fovpt__layer_value(ctx, n, x, y, f)) continue;
+                        for (k = 0; k < 3; ++k) c[k] = (1.0f - vb) * c[k] + vb * f[k];
+                    }
+                }
+            }
             if (out->rgb) {
                 float *o = out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
                 o[0] = c[0]; o[1] = c[1]; o[2] = c[2];

@@ -1034,7 +1034,7 @@ static void test_render(void)
         check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: fov 180", " ");
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n - 1u) == FOV_ERR_TOO_SMALL, "init: memory too small", " ");
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, NULL, n) == FOV_ERR_NULL, "init: memory NULL", " ");
-        bcfg.method = FOVPT_METHOD_LAYERS;
+        bcfg.method = FOVPT_METHOD_ZONES;
         check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "methods not built yet say FOV_ERR_UNSUPPORTED", " ");
         fovpt_memory_size(&c, &cam, &n);
         fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
@@ -1121,6 +1121,196 @@ static void test_foveation_blocks(void)
     }
 }
 
+
+/* ==== 6. LAYERS (seed 002) ==================================================================== */
+typedef struct layers_fixture {
+    fovpt_material m[2];
+    fovpt_shape sh[2];
+    fovpt_scene_desc d;
+    scene_buf b;
+} layers_fixture;
+
+/* a large Lambert quad facing the camera, lit by a sphere light: a smooth image (Whitted) */
+static void smooth_scene(layers_fixture *F, int empty)
+{
+    float p[3] = { -50, -50, 5 }, u[3] = { 100, 0, 0 }, v[3] = { 0, 100, 0 };
+    fovpt_material_init(&F->m[0]);
+    fovpt_material_init(&F->m[1]);
+    F->m[1].emission[0] = 40.0f; F->m[1].emission[1] = 30.0f; F->m[1].emission[2] = 20.0f;
+    fovpt_shape_quad(&F->sh[0], p, u, v, 0);
+    fovpt_shape_sphere(&F->sh[1], 1.0f, 2.0f, -1.0f, 0.3f, 1); /* behind the camera */
+    fovpt_scene_desc_init(&F->d);
+    F->d.shapes = F->sh; F->d.num_shapes = empty ? 0u : 2u; F->d.materials = F->m; F->d.num_materials = 2;
+    F->d.background[0] = 0.3f; F->d.background[1] = 0.2f; F->d.background[2] = 0.1f;
+    build(&F->b, &F->d);
+}
+
+/* expected lattice counts, computed here from the documented rule with fovsdf's model */
+static void expected_targets(const fovpt_config *c, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt)
+{
+    fov_ecc_model em;
+    double f_px = 0.5 * cam->height / tan(0.5 * (double)cam->fov_y_deg * 3.141592653589793 / 180.0);
+    uint32_t n, x, y;
+    long gx = (long)floor((double)g.x), gy = (long)floor((double)g.y);
+    fovsdf_ecc_init(&em, NULL, cam->fov_y_deg, cam->width, cam->height, g);
+    for (n = 0; n < c->layers.count; ++n) {
+        long d = (long)c->layers.layer[n].stride, ox = 0, oy = 0;
+        double apron = (2.0 * sqrt(2.0) * (double)d + 1.0) / f_px * 180.0 / 3.141592653589793, tr;
+        double r0 = (double)c->layers.layer[0].radius_deg;
+        if (n > 0 && !c->layers.snap) { ox = ((gx % d) + d) % d; oy = ((gy % d) + d) % d; }
+        if (n == 0) tr = r0 > 0.0 ? r0 + apron : 1e30;
+        else {
+            tr = (double)c->layers.layer[n].radius_deg + 0.5 * (double)c->layers.blend_deg + apron;
+            if (r0 > 0.0 && r0 + apron < tr) tr = r0 + apron;
+        }
+        cnt[n] = 0;
+        for (y = 0; y < cam->height; ++y)
+            for (x = 0; x < cam->width; ++x)
+                if (((long)x - ox) % d == 0 && ((long)y - oy) % d == 0 &&
+                    (double)fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f) <= tr + 1e-4)
+                    cnt[n]++;
+    }
+}
+
+static void test_layers(void)
+{
+    layers_fixture F;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_stats st;
+    size_t n = 0, expect_bytes = 0;
+    void *mem;
+    uint32_t W = 160, H = 120, i, L;
+    fovpt_output out;
+    static float img[160 * 120 * 3], ref[160 * 120 * 3];
+    fov_gaze centre = { 80.3f, 60.7f }, corner = { 2.0f, 3.0f };
+    uint64_t rays_centre = 0, rays_corner = 0;
+    int gi;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 90.0f;
+    c.method = FOVPT_METHOD_LAYERS;
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    for (L = 0; L < 4; ++L) {
+        uint32_t d = c.layers.layer[L].stride;
+        expect_bytes += (((size_t)(W / d + 2u) * (H / d + 2u) * 16u + 15u) & ~(size_t)15u);
+    }
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == expect_bytes, "LAYERS memory = sum of lattice grids (W/d+2)(H/d+2) x 16 B",
+          "%zu vs %zu", n, expect_bytes);
+    mem = amalloc(n);
+    for (gi = 0; gi < 4; ++gi) {
+        fov_gaze g = gi % 2 ? corner : centre;
+        uint64_t expect[FOVPT_MAX_LAYERS], total = 0;
+        int ok = 1;
+        fovpt_config cc = c;
+        if (gi >= 2) cc.layers.layer[0].radius_deg = 45.0f; /* an occlusion mask */
+        fovpt_init(&ctx, &cc, &F.b.s, &cam, g, mem, n);
+        memset(&st, 0, sizeof st);
+        fovpt_trace_rows(&ctx, 0, 0, H, &st);
+        expected_targets(&cc, &cam, g, expect);
+        for (L = 0; L < 4; ++L) {
+            if (st.layer_targets[L] != expect[L] || st.layer_samples[L] != 4u * expect[L]) ok = 0;
+            total += 4u * expect[L];
+        }
+        check(ok && st.camera_rays == total,
+              N("LAYERS lattice counts per layer match the rule (gaze %s, %s); rays = spp x targets", gi % 2 ? "corner" : "centre",
+                gi >= 2 ? "mask 45 deg" : "no mask"),
+              "targets %llu %llu %llu %llu, expected %llu %llu %llu %llu", (unsigned long long)st.layer_targets[0],
+              (unsigned long long)st.layer_targets[1], (unsigned long long)st.layer_targets[2], (unsigned long long)st.layer_targets[3],
+              (unsigned long long)expect[0], (unsigned long long)expect[1], (unsigned long long)expect[2], (unsigned long long)expect[3]);
+        if (gi == 2) rays_centre = st.camera_rays;
+        if (gi == 3) rays_corner = st.camera_rays;
+        if (gi == 0) {
+            check(st.layer_targets[3] < st.layer_targets[2] * 4u && st.layer_targets[0] == (uint64_t)(W / 4u) * (H / 4u),
+                  "LAYERS: the background lattice covers the image at stride 4", "%llu", (unsigned long long)st.layer_targets[0]);
+        }
+    }
+    check(rays_corner < rays_centre, "LAYERS: a corner gaze with the mask traces fewer rays (layers leave the mask)",
+          "corner %llu centre %llu", (unsigned long long)rays_corner, (unsigned long long)rays_centre);
+    /* quality on a smooth image: LAYERS vs UNIFORM (both Whitted, 4 spp) per ring */
+    {
+        fovpt_config cu = c;
+        fov_ecc_model em;
+        double se[4] = { 0, 0, 0, 0 };
+        long cnt[4] = { 0, 0, 0, 0 };
+        float rings[4] = { 6.0f, 10.0f, 20.0f, 1000.0f };
+        uint32_t x, y;
+        void *mu;
+        size_t nu;
+        cu.method = FOVPT_METHOD_UNIFORM;
+        cu.spp = 4;
+        fovpt_memory_size(&cu, &cam, &nu);
+        mu = amalloc(nu);
+        fovpt_init(&ctx, &cu, &F.b.s, &cam, centre, mu, nu);
+        fovpt_output_init(&out);
+        out.rgb = ref;
+        fovpt_render(&ctx, 0, &out, NULL);
+        free(mu);
+        fovpt_init(&ctx, &c, &F.b.s, &cam, centre, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, centre);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+                int r = e < rings[0] ? 0 : e < rings[1] ? 1 : e < rings[2] ? 2 : 3;
+                for (i = 0; i < 3; ++i) {
+                    double dd = (double)img[3u * (y * W + x) + i] - (double)ref[3u * (y * W + x) + i];
+                    se[r] += dd * dd;
+                }
+                cnt[r] += 3;
+            }
+        for (i = 0; i < 4; ++i) {
+            double psnr = 10.0 * log10(1.0 / (se[i] / (double)cnt[i] + 1e-30));
+            check(psnr > 40.0, N("LAYERS on a smooth image: PSNR against UNIFORM > 40 dB in ring %u (fill + blend)", i),
+                  "%.1f dB", psnr);
+        }
+    }
+    /* constant image: every pixel inside the mask = the background, outside black */
+    {
+        layers_fixture E;
+        fovpt_config ce = c;
+        fov_ecc_model em;
+        uint32_t x, y, bad = 0;
+        int black_ok = 1;
+        smooth_scene(&E, 1);
+        ce.layers.layer[0].radius_deg = 45.0f;
+        fovpt_init(&ctx, &ce, &E.b.s, &cam, corner, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, corner);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f), *p = img + 3u * (y * W + x);
+                if (e < 44.9f && (fabsf(p[0] - 0.3f) > 1e-5f || fabsf(p[2] - 0.1f) > 1e-5f)) bad++;
+                if (e > 45.1f && (p[0] > 0.0f || p[1] > 0.0f)) black_ok = 0;
+            }
+        check(bad == 0, "LAYERS on a constant image reproduces it exactly (interpolation weights sum to 1)", "%u bad pixels", bad);
+        check(black_ok, "LAYERS: pixels beyond the occlusion mask are black", " ");
+        free(E.b.mem);
+    }
+    /* row bands: same image */
+    {
+        static uint8_t a8[160 * 120 * 3], b8[160 * 120 * 3];
+        fovpt_config cp = c;
+        cp.mode = FOVPT_MODE_PATH;
+        fovpt_init(&ctx, &cp, &F.b.s, &cam, centre, mem, n);
+        fovpt_output_init(&out);
+        out.rgb8 = a8;
+        fovpt_render(&ctx, 3, &out, NULL);
+        fovpt_trace_rows(&ctx, 3, 50, 120, NULL);
+        fovpt_trace_rows(&ctx, 3, 0, 50, NULL);
+        fovpt_resolve_rows(&ctx, 60, 120, &out);
+        out.rgb8 = b8;
+        fovpt_resolve_rows(&ctx, 0, 120, &out);
+        check(memcmp(a8, b8, sizeof a8) == 0, "LAYERS (path mode): row bands in any order -> the same image", " ");
+    }
+    free(mem);
+    free(F.b.mem);
+}
+
 int main(void)
 {
     test_api();
@@ -1135,5 +1325,6 @@ int main(void)
     test_whitted();
     test_render();
     test_foveation_blocks();
+    test_layers();
     return fovcheck_summary();
 }
