@@ -52,11 +52,10 @@ WHAT IT DOES (the pipeline, in the order the data flows)
 STATUS (v0.1.0; the API below is complete and stable, some methods are not built yet)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
-   the random streams, progressive accumulation, UNIFORM and LAYERS rendering by rows,
-   eccentricity, tau_fov and alpha(e).
-   Not yet: the methods ZONES, SELECTIVE and JIN and the temporal options:
-   fovpt_memory_size / fovpt_init return FOV_ERR_UNSUPPORTED for them (their configs are
-   validated already).
+   the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
+   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e).
+   Not yet: the temporal options (reuse, smoothing): fovpt_memory_size / fovpt_init return
+   FOV_ERR_UNSUPPORTED when they are switched on (their configs are validated already).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (seed 002 Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (Eq. 3.13)
@@ -95,6 +94,29 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      n = 1 .. N-1: C = (1 - vb_n) C + vb_n F_n with vb_n = 1 at e <= r_n - blend/2, 0 at
      e >= r_n + blend/2, smoothstep (or linear) between; continuous across every border.
      Pixels beyond the mask radius are black (not traced, as in the thesis).
+   - ZONES (seed 000 sec. 4.2): the thesis renders full frames and keeps every 2nd / 4th
+     pixel (nearest neighbour); here only the kept pixels are traced: static lattices of
+     stride 4 (everywhere), 2 (e <= middle_deg + overlap/2 + apron) and 1 (e <= inner_deg +
+     overlap/2 + apron), cfg.spp samples each, apron a_n = (sqrt(2) a d_n + 1) / f_px. The
+     coarse lattices are Lanczos-upsampled (a = 3 lobes, normalised weights) and the zones
+     blended linearly over overlap_px pixels (converted to degrees at the gaze) centred on
+     each border. Zone radii: inner 7.5 and middle 32.5 degrees (the thesis's conservative
+     15 and 65 degree fields read as diameters).
+   - SELECTIVE / JIN (seed 004 sec. 3.2, Jin et al. 2009). Presample: one ray through each
+     pixel centre (no jitter) gives the colour reference and the Table 1 attributes: object
+     ids (primitive ids), normals, shadow counts (occluded shadow rays: Whitted's light tests,
+     the path tracer's first NEE test) at the primary hit and, when it is a mirror or glass,
+     at the secondary hit; no textures, so the texture flags never differ. Subpixel NW, NE,
+     SW, SE is compared with the 3 neighbours on its side (image border: the pixel itself).
+     Discordance: ids or shadow counts differ, normals more than normal_tol_deg (10) apart;
+     tau_sel = min tau of the discordant attributes, else tau_col. Problematic when
+     (max - min) / (max + min) of a channel over the 4 linear colours exceeds
+     tau_fov(e) tau_sel (1.36, 1.02, 2.04) (JIN: tau_fov = 1). Problematic subpixels get
+     n_sd[zone] (JIN: 4, in every zone) stratified jittered samples: an m x m grid when n_sd
+     is a square, else n_sd columns; the subpixel is their mean. Other subpixels: bilinear
+     from the 4 pixel centres around the subpixel centre (9/16, 3/16, 3/16, 1/16; 004), or
+     the pixel's presample (JIN, fill_centre). The pixel is the mean of its 4 subpixels.
+     Beyond e_np: the presample only. Colours are linear radiance (the contrast is a ratio).
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -123,7 +145,8 @@ MEMORY
    The caller owns every byte. fovpt_scene_size() gives the bytes for a scene description
    (primitives, BVH nodes, build data, light table); fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
-   the progressive accumulator); fovpt_init() takes it as pointer and size. Images are
+   the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
+   (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 64 bytes per pixel); fovpt_init() takes it. Images are
    caller buffers with an explicit row stride. Stack use per entry point: below 2 KiB (BVH
    build: the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal: 4 bytes per
    depth level; Whitted: a branch stack of 2 * FOVPT_MAX_WHITTED entries).
@@ -144,7 +167,8 @@ THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
    context whose settings are read-only; fovpt_trace_rows on disjoint row ranges may run on
    as many threads as you like (each with its own fovpt_stats), then, after all of them,
-   fovpt_resolve_rows on disjoint rows. Results do not depend on the split.
+   fovpt_refine_rows (SELECTIVE, JIN) and after that fovpt_resolve_rows, each on disjoint
+   rows. Results do not depend on the split.
 
 NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
@@ -506,6 +530,9 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     uint32_t layer_ox[FOVPT_MAX_LAYERS], layer_oy[FOVPT_MAX_LAYERS];
     uint32_t layer_nx[FOVPT_MAX_LAYERS], layer_ny[FOVPT_MAX_LAYERS];
     float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
+    fovpt_layers_cfg lay;     /* LAYERS: cfg.layers; ZONES: the three zones as static layers */
+    uint32_t lanczos;         /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
+    void *pre;                /* SELECTIVE, JIN: presample records, 48 bytes per pixel */
     void *mem;
     size_t mem_size;
 } fovpt_ctx;
@@ -523,6 +550,9 @@ typedef struct fovpt_stats {
     uint64_t bad_samples;     /* non-finite radiance replaced by black */
     uint64_t layer_targets[FOVPT_MAX_LAYERS]; /* LAYERS: lattice points traced per layer */
     uint64_t layer_samples[FOVPT_MAX_LAYERS]; /* LAYERS: their samples (targets x spp) */
+    /* SELECTIVE, JIN: problematic subpixels and their extra samples, per zone (fovea,
+       parafovea, perifovea, near periphery; JIN counts everything in zone 0) */
+    uint64_t problematic[4], extra_samples[4];
 } fovpt_stats;
 
 /* A random stream: counter-based, deterministic per (seed, pixel, sample, frame). */
@@ -609,10 +639,15 @@ FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx);          /* clears accumulatio
 /* Phase 1: trace the samples of rows [y0, y1) for frame `frame` (any rows, any thread). */
 FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
                                       uint32_t y1, fovpt_stats *stats);
-/* Phase 2, after every row of the frame is traced: reconstruct rows [y0, y1) into out. */
+/* Phase 2 (SELECTIVE, JIN; nothing for the other methods), after every row of the frame is
+   traced: the subpixel tests and the extra samples of rows [y0, y1) (reads the presamples
+   of the rows above and below). */
+FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                       uint32_t y1, fovpt_stats *stats);
+/* Phase 3, after every row of the frame is refined: reconstruct rows [y0, y1) into out. */
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1,
                                         const fovpt_output *out);
-/* Both phases for the whole image. */
+/* All phases for the whole image. */
 FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
                                   fovpt_stats *stats);
 FOVPT_API void fovpt_output_init(fovpt_output *out);
@@ -2202,11 +2237,25 @@ FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d
 }
 
 /* ---- the path tracer (seed 002 Eq. 2.1, 3.4; one consistent estimator, see the doc block) -- */
+/* Seed 004 Table 1 attributes of a presample (this library has no textures: the texture
+   flags never differ). */
+typedef struct fovpt__attr {
+    uint32_t poid, soid;    /* primitive ids; FOVPT_PRIM_NONE: no hit, no secondary ray */
+    float pn[3], sn[3];     /* unit normals facing the incoming ray */
+    uint32_t psc, ssc;      /* shadow rays found occluded at the hit */
+} fovpt__attr;
+FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
+{
+    float sg = fovpt__dot(h->n, d) > 0.0f ? -1.0f : 1.0f;
+    *oid = h->prim;
+    n[0] = sg * h->n[0]; n[1] = sg * h->n[1]; n[2] = sg * h->n[2];
+}
+
 FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
-                             fovpt_rng *rng, float L[3], fovpt_stats *st)
+                             fovpt_rng *rng, float L[3], fovpt_stats *st, fovpt__attr *at)
 {
     float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f, prev_p[3] = { 0.0f, 0.0f, 0.0f };
-    int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0;
+    int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0;
     uint32_t bounce, k;
     fovpt_hit h;
     fovpt__copy3(o, org);
@@ -2222,6 +2271,12 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
             break;
         }
         m = &s->materials[h.material];
+        if (at && bounce == 0) {
+            fovpt__attr_hit(&h, d, &at->poid, at->pn);
+            sec = m->type == FOVPT_MAT_MIRROR || m->type == FOVPT_MAT_DIELECTRIC;
+        } else if (at && bounce == 1 && sec) {
+            fovpt__attr_hit(&h, d, &at->soid, at->sn);
+        }
         if (fovpt__emissive(m)) {
             float w = 1.0f;
             if (nee && !prev_delta && h.slot != FOVPT_PRIM_USER) {
@@ -2262,6 +2317,9 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                         float w = pl * pl / (pl * pl + pb * pb);
                         if (fovpt__finite(pl) && pl > 0.0f)
                             for (k = 0; k < 3; ++k) L[k] += beta[k] * fcos[k] * lm->emission[k] * w / pl;
+                    } else if (at) {
+                        if (bounce == 0) at->psc++;
+                        else if (bounce == 1 && sec) at->ssc++;
                     }
                 }
             }
@@ -2284,8 +2342,9 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
 
 /* ---- the Whitted-style tracer (seed 004; choices in the doc block) -------------------------- */
 FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
-                                float L[3], fovpt_stats *st)
+                                float L[3], fovpt_stats *st, fovpt__attr *at)
 {
+    int sec_done = 0;
     typedef struct { float o[3], d[3], w[3]; uint32_t depth; } branch;
     branch stack[2u * FOVPT_MAX_WHITTED + 2u];
     uint32_t sp = 0, k, li;
@@ -2304,9 +2363,12 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
         if (b.depth) st->bounce_rays++;
         if (!fovpt__hit(s, b.o, b.d, 0.0f, FLT_MAX, &h, 0)) {
             for (k = 0; k < 3; ++k) L[k] += b.w[k] * s->background[k];
+            if (b.depth == 1) sec_done = 1;
             continue;
         }
         m = &s->materials[h.material];
+        if (at && b.depth == 0) fovpt__attr_hit(&h, b.d, &at->poid, at->pn);
+        if (at && b.depth == 1 && !sec_done) fovpt__attr_hit(&h, b.d, &at->soid, at->sn);
         for (k = 0; k < 3; ++k) L[k] += b.w[k] * m->emission[k];
         wo[0] = -b.d[0]; wo[1] = -b.d[1]; wo[2] = -b.d[2];
         if (m->type == FOVPT_MAT_LAMBERT || m->type == FOVPT_MAT_PHONG) {
@@ -2338,11 +2400,17 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
                 fovpt__offset(h.p, h.n, vu, xo);
                 fovpt__sub3(sv, y, xo);
                 st->shadow_rays++;
-                if (fovpt_occluded(s, xo, sv, 0.0f, 1.0f - 1e-4f)) continue;
+                if (fovpt_occluded(s, xo, sv, 0.0f, 1.0f - 1e-4f)) {
+                    if (at && b.depth == 0) at->psc++;
+                    if (at && b.depth == 1 && !sec_done) at->ssc++;
+                    continue;
+                }
                 for (k = 0; k < 3; ++k) L[k] += b.w[k] * fcos[k] * lm->emission[k] * g;
             }
+            if (b.depth == 1) sec_done = 1;
             continue;
         }
+        if (b.depth == 1) sec_done = 1;
         if (b.depth >= c->max_depth) continue;
         if (m->type == FOVPT_MAT_MIRROR) {
             branch *nb = &stack[sp++];
@@ -2375,11 +2443,24 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
     }
 }
 
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
+                                      fovpt__attr *at);
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
                                     const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats)
 {
+    return fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
+}
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
+                                      fovpt__attr *at)
+{
     fovpt_stats local;
     fovpt_stats *st = stats ? stats : &local;
+    if (at) {
+        FOV_MEMSET(at, 0, sizeof *at);
+        at->poid = at->soid = FOVPT_PRIM_NONE;
+    }
     if (!s || !c || !org || !dir || !rng || !rgb) return FOV_ERR_NULL;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     if (!s->prims && !s->user_hit && s->num_prims) return FOV_ERR_INVALID_ARG;
@@ -2388,8 +2469,8 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c,
     if (c->mode >= (uint32_t)_FOVPT_MODE_NUM || c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         return FOV_ERR_INVALID_ARG;
-    if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st);
-    else fovpt__path(s, c, org, dir, rng, rgb, st);
+    if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
+    else fovpt__path(s, c, org, dir, rng, rgb, st, at);
     if (!fovpt__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
@@ -2461,21 +2542,40 @@ FOVPT__PRIV uint64_t fovpt__grid_cells(uint32_t w, uint32_t h, uint32_t d)
     return (uint64_t)(w / d + 2u) * (uint64_t)(h / d + 2u);
 }
 
+/* The layer table a method uses: LAYERS its own; ZONES (seed 000 ch. 4) three static
+   full-frame lattices of stride 4, 2, 1 (1/16, 1/4, all of the pixels) with the zone radii
+   (the blend width is set from the gaze's pixels per degree, fovpt__ctx_view). */
+FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
+{
+    if (c->method != FOVPT_METHOD_ZONES) { *o = c->layers; return; }
+    FOV_MEMSET(o, 0, sizeof *o);
+    o->count = 3;
+    o->layer[0].stride = 4; o->layer[0].spp = c->spp;
+    o->layer[1].stride = 2; o->layer[1].spp = c->spp; o->layer[1].radius_deg = c->zones.middle_deg;
+    o->layer[2].stride = 1; o->layer[2].spp = c->spp; o->layer[2].radius_deg = c->zones.inner_deg;
+    o->blend_deg = 1.0f;
+    o->blend_linear = 1; /* "we linearly interpolate a short overlapping boundary" */
+    o->snap = 1;         /* full-frame buffers: lattices do not move with the gaze */
+}
+
 FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam, size_t *bytes)
 {
     uint64_t px, total = 0;
     uint32_t n;
     const fov_logger *lg = &c->logger;
-    if (c->method != FOVPT_METHOD_UNIFORM && c->method != FOVPT_METHOD_LAYERS)
-        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "method not implemented in this version (see STATUS)");
+    if (c->method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
     if (c->temporal.reuse || c->temporal.smooth)
         FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing not implemented in this version");
     px = (uint64_t)cam->width * cam->height;
     if (c->method == FOVPT_METHOD_UNIFORM) {
         total = (px * 16u + 15u) & ~(uint64_t)15u;
+    } else if (c->method == FOVPT_METHOD_SELECTIVE || c->method == FOVPT_METHOD_JIN) {
+        total = ((px * 16u + 15u) & ~(uint64_t)15u) + px * 48u;
     } else {
-        for (n = 0; n < c->layers.count; ++n)
-            total += (fovpt__grid_cells(cam->width, cam->height, c->layers.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
+        fovpt_layers_cfg lay;
+        fovpt__lay(c, &lay);
+        for (n = 0; n < lay.count; ++n)
+            total += (fovpt__grid_cells(cam->width, cam->height, lay.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
     }
     if (total > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "context memory overflows size_t");
     *bytes = (size_t)total;
@@ -2501,7 +2601,7 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
 {
     fov_display d = ctx->cfg.display;
     const fovpt_camera *cam = &ctx->cam;
-    const fovpt_layers_cfg *L = &ctx->cfg.layers;
+    fovpt_layers_cfg *L = &ctx->lay;
     fov_result e;
     uint32_t n;
     int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f || d.pixel_pitch_mm < 0.0f ||
@@ -2515,13 +2615,17 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
     }
     e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
     if (e != FOV_OK) return e;
-    if (ctx->cfg.method == FOVPT_METHOD_LAYERS) {
+    if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
         float gxf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
-        int64_t gx = (int64_t)gxf, gy = (int64_t)gyf;
+        int32_t gx = (int32_t)gxf, gy = (int32_t)gyf; /* 32-bit: no 64-bit division helpers on MCUs */
         float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOVPT__DEG);
+        if (ctx->cfg.method == FOVPT_METHOD_ZONES) /* overlap_px at the gaze, in degrees */
+            L->blend_deg = ctx->cfg.zones.overlap_px / fovpt__maxf(fovpt_ecc_ppd(&ctx->ecc), 1e-6f);
         for (n = 0; n < L->count; ++n) {
-            int64_t d_ = (int64_t)L->layer[n].stride, ox = 0, oy = 0;
-            float apron = (2.8284271f * (float)L->layer[n].stride + 1.0f) * to_deg, tr;
+            int32_t d_ = (int32_t)L->layer[n].stride, ox = 0, oy = 0;
+            /* the filter's reach: 2 lattice cells (Catmull-Rom) or a (Lanczos), diagonally */
+            float reach = ctx->lanczos ? (float)ctx->lanczos : 2.0f;
+            float apron = (1.4142136f * reach * (float)L->layer[n].stride + 1.0f) * to_deg, tr;
             if (n > 0) {
                 ox = ((gx % d_) + d_) % d_;
                 oy = ((gy % d_) + d_) % d_;
@@ -2529,8 +2633,8 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
             }
             ctx->layer_ox[n] = (uint32_t)ox;
             ctx->layer_oy[n] = (uint32_t)oy;
-            ctx->layer_nx[n] = (uint32_t)(((int64_t)cam->width - ox + d_ - 1) / d_);
-            ctx->layer_ny[n] = (uint32_t)(((int64_t)cam->height - oy + d_ - 1) / d_);
+            ctx->layer_nx[n] = (uint32_t)(((int32_t)cam->width - ox + d_ - 1) / d_);
+            ctx->layer_ny[n] = (uint32_t)(((int32_t)cam->height - oy + d_ - 1) / d_);
             if (n == 0) tr = r0 > 0.0f ? r0 + apron : FLT_MAX;
             else {
                 tr = L->layer[n].radius_deg + 0.5f * L->blend_deg + apron;
@@ -2568,18 +2672,23 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     ctx->cam = *cam;
     ctx->gaze = gaze;
     ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
+    fovpt__lay(&c, &ctx->lay);
+    ctx->lanczos = c.method == FOVPT_METHOD_ZONES ? c.zones.lanczos_a : 0u;
     e = fovpt__ctx_view(ctx);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "eccentricity model (display)");
     ctx->mem = mem;
     ctx->mem_size = bytes;
     if (c.method == FOVPT_METHOD_UNIFORM) {
         ctx->accum = (float *)mem;
+    } else if (c.method == FOVPT_METHOD_SELECTIVE || c.method == FOVPT_METHOD_JIN) {
+        ctx->accum = (float *)mem;
+        ctx->pre = (unsigned char *)mem + fovpt__align((size_t)cam->width * cam->height * 16u);
     } else {
         unsigned char *p = (unsigned char *)mem;
         uint32_t n;
-        for (n = 0; n < c.layers.count; ++n) {
+        for (n = 0; n < ctx->lay.count; ++n) {
             ctx->layer_buf[n] = (float *)(void *)p;
-            p += fovpt__align((size_t)fovpt__grid_cells(cam->width, cam->height, c.layers.layer[n].stride) * 16u);
+            p += fovpt__align((size_t)fovpt__grid_cells(cam->width, cam->height, ctx->lay.layer[n].stride) * 16u);
         }
     }
     return fovpt_reset(ctx);
@@ -2593,7 +2702,7 @@ FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
     for (n = 0; n < FOVPT_MAX_LAYERS; ++n)
         if (ctx->layer_buf[n])
             FOV_MEMSET(ctx->layer_buf[n], 0,
-                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height, ctx->cfg.layers.layer[n].stride) * 16u);
+                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height, ctx->lay.layer[n].stride) * 16u);
     return FOV_OK;
 }
 
@@ -2621,7 +2730,7 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
             t4[1] < ctx->tx1 || t4[1] > ctx->tx1 || t4[3] < ctx->ty1 || t4[3] > ctx->ty1)
             moved = 1;
         /* LAYERS: the lattices move with the gaze */
-        if (ctx->cfg.method == FOVPT_METHOD_LAYERS &&
+        if (ctx->cfg.method != FOVPT_METHOD_UNIFORM &&
             (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y || gaze.y > ctx->gaze.y))
             moved = 1;
     }
@@ -2635,6 +2744,31 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     return FOV_OK;
 }
 
+/* SELECTIVE, JIN: a presample (48 bytes): colour reference and seed 004 Table 1 attributes */
+typedef struct fovpt__pre {
+    float col[3];
+    uint32_t poid, soid;
+    float pn[3], sn[3];
+    uint32_t sc;              /* primary shadow count | secondary << 16 */
+} fovpt__pre;
+
+FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
+{
+    uint32_t n;
+    s->rays = s->camera_rays + s->bounce_rays + s->shadow_rays;
+    if (!d) return;
+    d->samples += s->samples; d->rays += s->rays; d->camera_rays += s->camera_rays;
+    d->bounce_rays += s->bounce_rays; d->shadow_rays += s->shadow_rays; d->bad_samples += s->bad_samples;
+    for (n = 0; n < FOVPT_MAX_LAYERS; ++n) {
+        d->layer_targets[n] += s->layer_targets[n];
+        d->layer_samples[n] += s->layer_samples[n];
+    }
+    for (n = 0; n < 4; ++n) {
+        d->problematic[n] += s->problematic[n];
+        d->extra_samples[n] += s->extra_samples[n];
+    }
+}
+
 /* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
 FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp, uint32_t sample0,
                               float sum[3], fovpt_stats *st)
@@ -2645,7 +2779,7 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
     sum[0] = sum[1] = sum[2] = 0.0f;
     for (s = 0; s < spp; ++s) {
         fovpt_rng rng;
-        float dir[3], rgb[3], jx, jy;
+        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
         fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
         jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
@@ -2680,10 +2814,30 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &st);
                 fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp, ctx->cfg.accumulate);
             }
+    } else if (ctx->pre) {
+        /* SELECTIVE, JIN step 1 (seed 004 Fig. 4 A-3): one ray through each pixel centre,
+           colour reference and attributes */
+        float t4[4];
+        t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                fovpt__pre *P = (fovpt__pre *)ctx->pre + ((size_t)y * W + x);
+                fovpt__attr at;
+                fovpt_rng rng;
+                float dir[3];
+                fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
+                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+                st.camera_rays++;
+                st.samples++;
+                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, P->col, &st, &at);
+                P->poid = at.poid; P->soid = at.soid;
+                fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
+                P->sc = (at.psc > 65535u ? 65535u : at.psc) | ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
+            }
     } else {
-        /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing) */
-        for (n = 0; n < ctx->cfg.layers.count; ++n) {
-            uint32_t d = ctx->cfg.layers.layer[n].stride, spp = ctx->cfg.layers.layer[n].spp, k, l;
+        /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
+        for (n = 0; n < ctx->lay.count; ++n) {
+            uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
             uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
             float tr = ctx->layer_trace_deg[n];
             /* lattice rows whose pixel row lies in [y0, y1) */
@@ -2706,15 +2860,119 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
             }
         }
     }
-    st.rays = st.camera_rays + st.bounce_rays + st.shadow_rays;
-    if (stats) {
-        stats->samples += st.samples; stats->rays += st.rays; stats->camera_rays += st.camera_rays;
-        stats->bounce_rays += st.bounce_rays; stats->shadow_rays += st.shadow_rays; stats->bad_samples += st.bad_samples;
-        for (n = 0; n < FOVPT_MAX_LAYERS; ++n) {
-            stats->layer_targets[n] += st.layer_targets[n];
-            stats->layer_samples[n] += st.layer_samples[n];
+    fovpt__add_stats(stats, &st);
+    return FOV_OK;
+}
+
+/* ---- SELECTIVE and JIN: subpixel inspection and multisampling (seed 004 sec. 3.2) -------- */
+/* Step 1 of the two-step test: the threshold of the most sensitive discordant attribute
+   (Table 1), else tau_col. tau[]: col, poid, psn, psc, pte, soid, ssn, ssc, ste. */
+FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre *P, const fovpt__pre *const Q[3], float cos_tol)
+{
+    float m = FLT_MAX;
+    uint32_t k;
+    for (k = 0; k < 3; ++k) {
+        const fovpt__pre *q = Q[k];
+        if (P->poid != q->poid) m = fovpt__minf(m, sc->tau[1]);
+        else if (P->poid != FOVPT_PRIM_NONE && fovpt__dot(P->pn, q->pn) < cos_tol) m = fovpt__minf(m, sc->tau[2]);
+        if ((P->sc & 0xFFFFu) != (q->sc & 0xFFFFu)) m = fovpt__minf(m, sc->tau[3]);
+        if (P->soid != q->soid) m = fovpt__minf(m, sc->tau[5]);
+        else if (P->soid != FOVPT_PRIM_NONE && fovpt__dot(P->sn, q->sn) < cos_tol) m = fovpt__minf(m, sc->tau[6]);
+        if ((P->sc >> 16) != (q->sc >> 16)) m = fovpt__minf(m, sc->tau[7]);
+        /* texture flags (pte, ste): no textures, never discordant */
+    }
+    return m < FLT_MAX ? m : sc->tau[0];
+}
+/* Step 2: Mitchell's contrast (Imax - Imin) / (Imax + Imin) per channel over the pixel and
+   its three neighbours against tau * (1.36, 1.02, 2.04) (= 3.4 x Mitchell's 0.4, 0.3, 0.6). */
+FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3], float tau)
+{
+    static const float kc[3] = { 1.36f, 1.02f, 2.04f };
+    uint32_t c, k;
+    for (c = 0; c < 3; ++c) {
+        float mx = P->col[c], mn = P->col[c];
+        for (k = 0; k < 3; ++k) { mx = fovpt__maxf(mx, Q[k]->col[c]); mn = fovpt__minf(mn, Q[k]->col[c]); }
+        if (mx + mn > 0.0f && (mx - mn) > tau * kc[c] * (mx + mn)) return 1;
+    }
+    return 0;
+}
+
+FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
+{
+    fovpt_stats st;
+    uint32_t x, y, W, H, q;
+    const fovpt_selective_cfg *sc;
+    const fovpt__pre *pre;
+    float cos_tol, t4[4];
+    int jin;
+    if (!ctx) return FOV_ERR_NULL;
+    W = ctx->cam.width; H = ctx->cam.height;
+    if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if (!ctx->pre) return FOV_OK; /* nothing to refine for this method */
+    FOV_MEMSET(&st, 0, sizeof st);
+    sc = &ctx->cfg.selective;
+    pre = (const fovpt__pre *)ctx->pre;
+    jin = ctx->cfg.method == FOVPT_METHOD_JIN;
+    cos_tol = FOVPT__COS(sc->normal_tol_deg * FOVPT__DEG);
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    for (y = y0; y < y1; ++y) {
+        for (x = 0; x < W; ++x) {
+            const fovpt__pre *P = pre + ((size_t)y * W + x);
+            float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), tf = 1.0f, pix[3] = { 0.0f, 0.0f, 0.0f };
+            uint32_t zone = 0, nsd = 4, mx, my;
+            if (!jin) {
+                zone = e <= sc->e_deg[0] ? 0u : e <= sc->e_deg[1] ? 1u : e <= sc->e_deg[2] ? 2u : e <= sc->e_deg[3] ? 3u : 4u;
+                if (zone == 4u) { /* peripheral pixel region: the presample alone */
+                    fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), P->col, 1u, ctx->cfg.accumulate);
+                    continue;
+                }
+                nsd = sc->n_sd[zone];
+                (void)fovpt_tau_fov(sc, e, &tf);
+            }
+            /* stratum layout: m x m for a square count, else n columns x 1 row */
+            mx = 1; while ((mx + 1u) * (mx + 1u) <= nsd) ++mx;
+            if (mx * mx == nsd) my = mx; else { mx = nsd; my = 1; }
+            for (q = 0; q < 4; ++q) { /* NW, NE, SW, SE */
+                int32_t sx = (q & 1u) ? 1 : -1, sy = (q & 2u) ? 1 : -1;
+                int32_t nxp = (int32_t)x + sx, nyp = (int32_t)y + sy;
+                const fovpt__pre *Q[3];
+                float sub[3] = { 0.0f, 0.0f, 0.0f };
+                uint32_t k;
+                if (nxp < 0 || nxp >= (int32_t)W) nxp = (int32_t)x;
+                if (nyp < 0 || nyp >= (int32_t)H) nyp = (int32_t)y;
+                Q[0] = pre + ((size_t)y * W + (uint32_t)nxp);
+                Q[1] = pre + ((size_t)(uint32_t)nyp * W + x);
+                Q[2] = pre + ((size_t)(uint32_t)nyp * W + (uint32_t)nxp);
+                if (nsd > 0 && fovpt__contrast(P, Q, tf * fovpt__tau_sel(sc, P, Q, cos_tol))) {
+                    uint32_t s2;
+                    for (s2 = 0; s2 < nsd; ++s2) { /* stratified jittered samples in the subpixel */
+                        fovpt_rng rng;
+                        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, u, v;
+                        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 1u + q * 4096u + s2, frame);
+                        u = ((float)(s2 % mx) + fovpt_rng_next(&rng)) / (float)mx;
+                        v = ((float)(s2 / mx) + fovpt_rng_next(&rng)) / (float)my;
+                        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f * (float)(q & 1u) + 0.5f * u,
+                                       (float)y + 0.5f * (float)(q >> 1) + 0.5f * v, dir);
+                        st.camera_rays++;
+                        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, &st, NULL);
+                        for (k = 0; k < 3; ++k) sub[k] += rgb[k];
+                    }
+                    for (k = 0; k < 3; ++k) sub[k] /= (float)nsd;
+                    st.samples += nsd;
+                    st.problematic[zone]++;
+                    st.extra_samples[zone] += nsd;
+                } else if (jin || sc->fill_centre) {
+                    fovpt__copy3(sub, P->col); /* Jin et al.: the pixel-centre colour */
+                } else { /* 004: bilinear from the four pixel centres around the subpixel centre */
+                    for (k = 0; k < 3; ++k)
+                        sub[k] = 0.5625f * P->col[k] + 0.1875f * (Q[0]->col[k] + Q[1]->col[k]) + 0.0625f * Q[2]->col[k];
+                }
+                for (k = 0; k < 3; ++k) pix[k] += 0.25f * sub[k];
+            }
+            fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
         }
     }
+    fovpt__add_stats(stats, &st);
     return FOV_OK;
 }
 
@@ -2727,12 +2985,53 @@ FOVPT__PRIV uint8_t fovpt__srgb8(float v)
     return (uint8_t)(e * 255.0f + 0.5f);
 }
 
+FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
+{
+    float px;
+    if (fovpt__absf(x) < 1e-6f) return 1.0f;
+    if (fovpt__absf(x) >= a) return 0.0f;
+    px = FOVPT__PI * x;
+    return a * FOVPT__SIN(px) * FOVPT__SIN(px / a) / (px * px);
+}
+/* ZONES: Lanczos upsampling (seed 000 sec. 4.2) of lattice n at lattice position (kx + fx,
+   ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
+   untraced taps dropped (weights renormalised); 0 when nothing is traced nearby. */
+FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky, float fx, float fy, float c[3])
+{
+    const float *buf = ctx->layer_buf[n];
+    int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n], ny = (int32_t)ctx->layer_ny[n];
+    float acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f, wx[6], wy[6];
+    for (i = 0; i < 2 * a; ++i) {
+        wx[i] = fovpt__lanczos_w(fx - (float)(i - a + 1), (float)a);
+        wy[i] = fovpt__lanczos_w(fy - (float)(i - a + 1), (float)a);
+    }
+    for (j = 0; j < 2 * a; ++j) {
+        int32_t lj = ky - a + 1 + j;
+        if (!(wy[j] > 0.0f || wy[j] < 0.0f)) continue;
+        lj = lj < 0 ? 0 : (lj >= ny ? ny - 1 : lj);
+        for (i = 0; i < 2 * a; ++i) {
+            int32_t ki = kx - a + 1 + i;
+            const float *p;
+            float w = wx[i] * wy[j];
+            if (!(w > 0.0f || w < 0.0f)) continue;
+            ki = ki < 0 ? 0 : (ki >= nx ? nx - 1 : ki);
+            p = buf + 4u * ((size_t)lj * (size_t)nx + (size_t)ki);
+            if (!(p[3] > 0.0f)) continue;
+            acc[0] += w * p[0] / p[3]; acc[1] += w * p[1] / p[3]; acc[2] += w * p[2] / p[3];
+            ws += w;
+        }
+    }
+    if (!(ws > 0.05f)) return 0;
+    c[0] = fovpt__maxf(acc[0] / ws, 0.0f); c[1] = fovpt__maxf(acc[1] / ws, 0.0f); c[2] = fovpt__maxf(acc[2] / ws, 0.0f);
+    return 1;
+}
+
 /* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (seed 002 Eq.
    3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when unavailable. */
 FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y, float c[3])
 {
     const float *buf = ctx->layer_buf[n];
-    uint32_t d = ctx->cfg.layers.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n];
+    uint32_t d = ctx->lay.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n];
     int32_t kx, ky, i, j, ok = 1;
     float fx, fy, wx[4], wy[4], acc[3] = { 0.0f, 0.0f, 0.0f };
     int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n], ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
@@ -2740,6 +3039,7 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
     fx = (float)(rx - kx * (int32_t)d) / (float)d;
     fy = (float)(ry - ky * (int32_t)d) / (float)d;
+    if (ctx->lanczos) return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
     fovpt_catmull_rom(fx, wx);
     fovpt_catmull_rom(fy, wy);
     for (j = 0; j < 4 && ok; ++j) {
@@ -2799,11 +3099,11 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
             float c[3] = { 0.0f, 0.0f, 0.0f };
-            if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
+            if (ctx->accum) { /* UNIFORM, SELECTIVE, JIN */
                 const float *acc = ctx->accum + 4u * ((size_t)y * W + x);
                 for (k = 0; k < 3; ++k) c[k] = acc[3] > 0.0f ? acc[k] / acc[3] : 0.0f;
             } else {
-                const fovpt_layers_cfg *L = &ctx->cfg.layers;
+                const fovpt_layers_cfg *L = &ctx->lay;
                 float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), f[3];
                 uint32_t n, top = 0;
                 if (!(L->layer[0].radius_deg > 0.0f) || e <= L->layer[0].radius_deg) {
@@ -2836,6 +3136,8 @@ FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_ou
     fov_result e;
     if (!ctx || !out) return FOV_ERR_NULL;
     e = fovpt_trace_rows(ctx, frame, 0, ctx->cam.height, stats);
+    if (e != FOV_OK) return e;
+    e = fovpt_refine_rows(ctx, frame, 0, ctx->cam.height, stats);
     if (e != FOV_OK) return e;
     return fovpt_resolve_rows(ctx, 0, ctx->cam.height, out);
 }

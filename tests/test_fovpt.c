@@ -1034,8 +1034,8 @@ static void test_render(void)
         check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: fov 180", " ");
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n - 1u) == FOV_ERR_TOO_SMALL, "init: memory too small", " ");
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, NULL, n) == FOV_ERR_NULL, "init: memory NULL", " ");
-        bcfg.method = FOVPT_METHOD_ZONES;
-        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "methods not built yet say FOV_ERR_UNSUPPORTED", " ");
+        bcfg.temporal.reuse = 1;
+        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "features not built yet (temporal reuse) say FOV_ERR_UNSUPPORTED", " ");
         fovpt_memory_size(&c, &cam, &n);
         fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
         check(fovpt_trace_rows(&ctx, 0, 10, 40, NULL) == FOV_ERR_INVALID_ARG && fovpt_trace_rows(&ctx, 0, 10, 5, NULL) == FOV_ERR_INVALID_ARG,
@@ -1146,21 +1146,26 @@ static void smooth_scene(layers_fixture *F, int empty)
 }
 
 /* expected lattice counts, computed here from the documented rule with fovsdf's model */
+static void expected_targets_lay(const fovpt_layers_cfg *lay, double reach, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt);
 static void expected_targets(const fovpt_config *c, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt)
+{
+    expected_targets_lay(&c->layers, 2.0, cam, g, cnt);
+}
+static void expected_targets_lay(const fovpt_layers_cfg *lay, double reach, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt)
 {
     fov_ecc_model em;
     double f_px = 0.5 * cam->height / tan(0.5 * (double)cam->fov_y_deg * 3.141592653589793 / 180.0);
     uint32_t n, x, y;
     long gx = (long)floor((double)g.x), gy = (long)floor((double)g.y);
     fovsdf_ecc_init(&em, NULL, cam->fov_y_deg, cam->width, cam->height, g);
-    for (n = 0; n < c->layers.count; ++n) {
-        long d = (long)c->layers.layer[n].stride, ox = 0, oy = 0;
-        double apron = (2.0 * sqrt(2.0) * (double)d + 1.0) / f_px * 180.0 / 3.141592653589793, tr;
-        double r0 = (double)c->layers.layer[0].radius_deg;
-        if (n > 0 && !c->layers.snap) { ox = ((gx % d) + d) % d; oy = ((gy % d) + d) % d; }
+    for (n = 0; n < lay->count; ++n) {
+        long d = (long)lay->layer[n].stride, ox = 0, oy = 0;
+        double apron = (reach * sqrt(2.0) * (double)d + 1.0) / f_px * 180.0 / 3.141592653589793, tr;
+        double r0 = (double)lay->layer[0].radius_deg;
+        if (n > 0 && !lay->snap) { ox = ((gx % d) + d) % d; oy = ((gy % d) + d) % d; }
         if (n == 0) tr = r0 > 0.0 ? r0 + apron : 1e30;
         else {
-            tr = (double)c->layers.layer[n].radius_deg + 0.5 * (double)c->layers.blend_deg + apron;
+            tr = (double)lay->layer[n].radius_deg + 0.5 * (double)lay->blend_deg + apron;
             if (r0 > 0.0 && r0 + apron < tr) tr = r0 + apron;
         }
         cnt[n] = 0;
@@ -1311,6 +1316,273 @@ static void test_layers(void)
     free(F.b.mem);
 }
 
+/* ==== 7. ZONES (seed 000 ch. 4) ================================================================ */
+static void test_zones(void)
+{
+    layers_fixture F;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cu;
+    fovpt_ctx ctx;
+    fovpt_stats st, su;
+    size_t n = 0, nu = 0;
+    void *mem, *mu;
+    uint32_t W = 160, H = 120, i;
+    fovpt_output out;
+    static float img[160 * 120 * 3], ref[160 * 120 * 3];
+    fov_gaze g = { 70.2f, 50.9f };
+    fov_ecc_model em;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 90.0f;
+    c.method = FOVPT_METHOD_ZONES;
+    c.mode = FOVPT_MODE_WHITTED;
+    c.spp = 2;
+    c.zones.inner_deg = 10.0f;
+    c.zones.middle_deg = 25.0f;
+    fovpt_config_resolve(&c, &c);
+    {
+        size_t e = 0;
+        uint32_t k, ds[3] = { 4, 2, 1 };
+        for (k = 0; k < 3; ++k) e += ((size_t)(W / ds[k] + 2u) * (H / ds[k] + 2u) * 16u + 15u) & ~(size_t)15u;
+        check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == e, "ZONES memory = lattices of stride 4, 2, 1", "%zu vs %zu", n, e);
+    }
+    mem = amalloc(n);
+    fovpt_init(&ctx, &c, &F.b.s, &cam, g, mem, n);
+    memset(&st, 0, sizeof st);
+    fovpt_trace_rows(&ctx, 0, 0, H, &st);
+    {
+        fovpt_layers_cfg lay;
+        uint64_t expect[FOVPT_MAX_LAYERS];
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, g);
+        memset(&lay, 0, sizeof lay);
+        lay.count = 3;
+        lay.layer[0].stride = 4; lay.layer[1].stride = 2; lay.layer[2].stride = 1;
+        lay.layer[1].radius_deg = 25.0f; lay.layer[2].radius_deg = 10.0f;
+        lay.snap = 1;
+        lay.blend_deg = c.zones.overlap_px / fovsdf_ecc_ppd(&em);
+        expected_targets_lay(&lay, 3.0, &cam, g, expect);
+        check(st.layer_targets[0] == expect[0] && st.layer_targets[1] == expect[1] && st.layer_targets[2] == expect[2] &&
+                  expect[0] == (uint64_t)(W / 4u) * (H / 4u) && st.camera_rays == 2u * (expect[0] + expect[1] + expect[2]),
+              "ZONES: samples per zone match the rule (stride 4 everywhere, 2 and 1 inside the zones)",
+              "%llu %llu %llu vs %llu %llu %llu", (unsigned long long)st.layer_targets[0], (unsigned long long)st.layer_targets[1],
+              (unsigned long long)st.layer_targets[2], (unsigned long long)expect[0], (unsigned long long)expect[1],
+              (unsigned long long)expect[2]);
+    }
+    fovpt_output_init(&out);
+    out.rgb = img;
+    fovpt_resolve_rows(&ctx, 0, H, &out);
+    cu = c;
+    cu.method = FOVPT_METHOD_UNIFORM;
+    fovpt_memory_size(&cu, &cam, &nu);
+    mu = amalloc(nu);
+    fovpt_init(&ctx, &cu, &F.b.s, &cam, g, mu, nu);
+    memset(&su, 0, sizeof su);
+    out.rgb = ref;
+    fovpt_render(&ctx, 0, &out, &su);
+    check(st.camera_rays < su.camera_rays * 6u / 10u, "ZONES trace fewer camera rays than UNIFORM", "%llu vs %llu",
+          (unsigned long long)st.camera_rays, (unsigned long long)su.camera_rays);
+    {
+        double se[3] = { 0, 0, 0 };
+        long cnt[3] = { 0, 0, 0 };
+        uint32_t x, y;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+                int r = e < 10.0f ? 0 : e < 25.0f ? 1 : 2;
+                for (i = 0; i < 3; ++i) {
+                    double dd = (double)img[3u * (y * W + x) + i] - (double)ref[3u * (y * W + x) + i];
+                    se[r] += dd * dd;
+                }
+                cnt[r] += 3;
+            }
+        for (i = 0; i < 3; ++i) {
+            double psnr = 10.0 * log10(1.0 / (se[i] / (double)(cnt[i] ? cnt[i] : 1) + 1e-30));
+            check(cnt[i] > 0 && psnr > 40.0, N("ZONES on a smooth image: PSNR against UNIFORM > 40 dB in zone %u (Lanczos + blend)", i),
+                  "%.1f dB", psnr);
+        }
+    }
+    {   /* constant image reproduced */
+        layers_fixture E;
+        uint32_t x, bad = 0;
+        smooth_scene(&E, 1);
+        fovpt_init(&ctx, &c, &E.b.s, &cam, g, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        for (x = 0; x < W * H; ++x)
+            if (fabsf(img[3u * x] - 0.3f) > 1e-5f || fabsf(img[3u * x + 2u] - 0.1f) > 1e-5f) bad++;
+        check(bad == 0, "ZONES on a constant image reproduces it (normalised Lanczos weights)", "%u bad pixels", bad);
+        free(E.b.mem);
+    }
+    free(mu);
+    free(mem);
+    free(F.b.mem);
+}
+
+/* ==== 8. SELECTIVE and JIN (seed 004) ========================================================= */
+static fovpt__pre mkpre(float r, float g, float b, uint32_t poid, float nz, uint32_t psc, uint32_t soid)
+{
+    fovpt__pre p;
+    memset(&p, 0, sizeof p);
+    p.col[0] = r; p.col[1] = g; p.col[2] = b;
+    p.poid = poid; p.soid = soid;
+    p.pn[0] = sqrtf(fmaxf(0.0f, 1.0f - nz * nz)); p.pn[2] = nz;
+    p.sn[2] = 1.0f;
+    p.sc = psc;
+    return p;
+}
+
+static void test_selective_rules(void)
+{
+    fovpt_config c = fovpt_config_default();
+    const fovpt_selective_cfg *sc = &c.selective;
+    float ct = cosf(10.0f * 3.14159265f / 180.0f);
+    fovpt__pre P = mkpre(0.5f, 0.5f, 0.5f, 1, 1.0f, 0, FOVPT_PRIM_NONE), A = P, B = P, C = P;
+    const fovpt__pre *Q[3];
+    Q[0] = &A; Q[1] = &B; Q[2] = &C;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: no discordant attribute -> tau_col (0.02)", " ");
+    B.poid = 2;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.05f) < 1e-7f, "tau_sel: another object id -> tau_poid (0.05)", " ");
+    B = P;
+    C = mkpre(0.5f, 0.5f, 0.5f, 1, cosf(20.0f * 3.14159265f / 180.0f), 0, FOVPT_PRIM_NONE);
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.06f) < 1e-7f, "tau_sel: normals 20 degrees apart (tolerance 10) -> tau_psn (0.06)", " ");
+    C = mkpre(0.5f, 0.5f, 0.5f, 1, cosf(5.0f * 3.14159265f / 180.0f), 0, FOVPT_PRIM_NONE);
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: normals 5 degrees apart are concordant", " ");
+    A.sc = 1;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.06f) < 1e-7f, "tau_sel: another shadow count -> tau_psc (0.06)", " ");
+    B.soid = 7;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: several discordant -> the minimum (tau_soid 0.02)", " ");
+    /* contrast: channel thresholds tau * (1.36, 1.02, 2.04) */
+    A = B = C = P;
+    {
+        float t = 0.05f, g_below, g_above;
+        /* contrast (mx - mn)/(mx + mn) = k  <=>  mx = mn (1 + k) / (1 - k) */
+        g_below = 0.5f * (1.0f + 0.99f * t * 1.02f) / (1.0f - 0.99f * t * 1.02f);
+        g_above = 0.5f * (1.0f + 1.01f * t * 1.02f) / (1.0f - 1.01f * t * 1.02f);
+        A.col[1] = g_below;
+        check(!fovpt__contrast(&P, Q, t), "contrast: green just below tau x 1.02 is not problematic", " ");
+        A.col[1] = g_above;
+        check(fovpt__contrast(&P, Q, t), "contrast: green just above tau x 1.02 is problematic", " ");
+        A.col[1] = 0.5f;
+        C.col[2] = 0.5f * (1.0f + 1.5f * t * 1.02f) / (1.0f - 1.5f * t * 1.02f); /* 1.5x the green limit, below blue's 2.04 */
+        check(!fovpt__contrast(&P, Q, t), "contrast: blue uses the looser 2.04 factor", " ");
+        C.col[2] = 0.0f; C.col[0] = 0.0f; C.col[1] = 0.0f;
+        check(fovpt__contrast(&P, Q, t), "contrast: black next to grey is problematic", " ");
+        A = B = C = P;
+        P.col[0] = P.col[1] = P.col[2] = 0.0f;
+        A.col[0] = A.col[1] = A.col[2] = 0.0f; B.col[0] = B.col[1] = B.col[2] = 0.0f; C.col[0] = C.col[1] = C.col[2] = 0.0f;
+        check(!fovpt__contrast(&P, Q, t), "contrast: all black is not problematic (no division by zero)", " ");
+    }
+}
+
+static double ring_psnr(const float *a, const float *b, uint32_t W, uint32_t H, fov_gaze g, float fov, float lo, float hi)
+{
+    fov_ecc_model em;
+    double se = 0.0;
+    long cnt = 0;
+    uint32_t x, y, k;
+    fovsdf_ecc_init(&em, NULL, fov, W, H, g);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            if (e < lo || e >= hi) continue;
+            for (k = 0; k < 3; ++k) {
+                double va = fmin(1.0, (double)a[3u * (y * W + x) + k]), vb = fmin(1.0, (double)b[3u * (y * W + x) + k]);
+                se += (va - vb) * (va - vb);
+            }
+            cnt += 3;
+        }
+    return cnt ? 10.0 * log10(1.0 / (se / (double)cnt + 1e-12)) : 0.0;
+}
+
+static void test_selective_render(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cj, cr, c1;
+    fovpt_ctx ctx;
+    fovpt_stats ss, sj, s1;
+    fovpt_output out;
+    size_t n = 0, nmax = 0;
+    void *mem;
+    uint32_t W = 96, H = 72, z;
+    static float sel[96 * 72 * 3], jin[96 * 72 * 3], ref[96 * 72 * 3], one[96 * 72 * 3];
+    fov_gaze g = { 40.0f, 40.0f };
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = -3.0f;
+    cam.fov_y_deg = 50.0f;
+    c.method = FOVPT_METHOD_SELECTIVE;
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * 64u, "SELECTIVE memory = 64 bytes per pixel", "%zu", n);
+    cr = c; cr.method = FOVPT_METHOD_UNIFORM; cr.spp = 64;
+    fovpt_memory_size(&cr, &cam, &nmax);
+    mem = amalloc(n > nmax ? n : nmax);
+    fovpt_init(&ctx, &cr, &b.s, &cam, g, mem, nmax);
+    fovpt_output_init(&out);
+    out.rgb = ref;
+    fovpt_render(&ctx, 0, &out, NULL);
+    c1 = cr; c1.spp = 1; c1.seed = 3;
+    fovpt_init(&ctx, &c1, &b.s, &cam, g, mem, nmax);
+    memset(&s1, 0, sizeof s1);
+    out.rgb = one;
+    fovpt_render(&ctx, 0, &out, &s1);
+    memset(&ss, 0, sizeof ss);
+    fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    out.rgb = sel;
+    fovpt_render(&ctx, 0, &out, &ss);
+    cj = c; cj.method = FOVPT_METHOD_JIN;
+    memset(&sj, 0, sizeof sj);
+    fovpt_init(&ctx, &cj, &b.s, &cam, g, mem, n);
+    out.rgb = jin;
+    fovpt_render(&ctx, 0, &out, &sj);
+    {
+        int ok = 1;
+        for (z = 0; z < 4; ++z) if (ss.extra_samples[z] != c.selective.n_sd[z] * ss.problematic[z]) ok = 0;
+        check(ok && ss.problematic[0] > 0 && ss.camera_rays == (uint64_t)W * H + ss.extra_samples[0] + ss.extra_samples[1] +
+                                                                    ss.extra_samples[2] + ss.extra_samples[3],
+              "SELECTIVE: n_sd (9, 4, 2, 1) samples per problematic subpixel by zone; rays = presamples + extras",
+              "problematic %llu %llu %llu %llu extra %llu %llu %llu %llu", (unsigned long long)ss.problematic[0],
+              (unsigned long long)ss.problematic[1], (unsigned long long)ss.problematic[2], (unsigned long long)ss.problematic[3],
+              (unsigned long long)ss.extra_samples[0], (unsigned long long)ss.extra_samples[1], (unsigned long long)ss.extra_samples[2],
+              (unsigned long long)ss.extra_samples[3]);
+        check(sj.extra_samples[0] == 4u * sj.problematic[0] && sj.problematic[0] > ss.problematic[0] + ss.problematic[1],
+              "JIN: 4 samples per problematic subpixel everywhere, more problematic subpixels than SELECTIVE (tau_fov >= 1)",
+              "jin %llu problematic vs selective %llu", (unsigned long long)sj.problematic[0],
+              (unsigned long long)(ss.problematic[0] + ss.problematic[1] + ss.problematic[2] + ss.problematic[3]));
+    }
+    {
+        float e_f = c.selective.e_deg[0];
+        double pf_sel = ring_psnr(sel, ref, W, H, g, 50.0f, 0.0f, e_f), pf_jin = ring_psnr(jin, ref, W, H, g, 50.0f, 0.0f, e_f);
+        double pf_one = ring_psnr(one, ref, W, H, g, 50.0f, 0.0f, e_f);
+        double pn_sel = ring_psnr(sel, ref, W, H, g, 50.0f, 12.1f, 30.0f), pn_jin = ring_psnr(jin, ref, W, H, g, 50.0f, 12.1f, 30.0f);
+        printf("# SELECTIVE fovea %.2f dB, near periphery %.2f dB; JIN %.2f / %.2f dB; 1 spp fovea %.2f dB; rays sel %llu jin %llu\n",
+               pf_sel, pn_sel, pf_jin, pn_jin, pf_one, (unsigned long long)ss.camera_rays, (unsigned long long)sj.camera_rays);
+        check(pf_sel > pf_one + 3.0, "SELECTIVE fovea PSNR > 1 spp + 3 dB (against 64 spp)", "%.2f vs %.2f", pf_sel, pf_one);
+        check(pf_sel >= pf_jin - 0.5, "SELECTIVE fovea PSNR at least Jin's (9 vs 4 samples per subpixel)", "%.2f vs %.2f", pf_sel, pf_jin);
+        check(pn_jin >= pn_sel, "JIN beats SELECTIVE in the near periphery (seed 004's pattern)", "%.2f vs %.2f", pn_jin, pn_sel);
+        check(ss.camera_rays < sj.camera_rays, "SELECTIVE traces fewer rays than JIN", "%llu vs %llu", (unsigned long long)ss.camera_rays,
+              (unsigned long long)sj.camera_rays);
+    }
+    {   /* row-band invariance of the refine pass */
+        static float b2[96 * 72 * 3];
+        fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+        fovpt_trace_rows(&ctx, 0, 30, 72, NULL);
+        fovpt_trace_rows(&ctx, 0, 0, 30, NULL);
+        fovpt_refine_rows(&ctx, 0, 50, 72, NULL);
+        fovpt_refine_rows(&ctx, 0, 0, 50, NULL);
+        out.rgb = b2;
+        fovpt_resolve_rows(&ctx, 0, 72, &out);
+        check(memcmp(b2, sel, sizeof b2) == 0, "SELECTIVE: row bands in any order -> the same image", " ");
+    }
+    free(mem);
+    free(b.mem);
+}
+
 int main(void)
 {
     test_api();
@@ -1326,5 +1598,8 @@ int main(void)
     test_render();
     test_foveation_blocks();
     test_layers();
+    test_zones();
+    test_selective_rules();
+    test_selective_render();
     return fovcheck_summary();
 }
