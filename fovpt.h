@@ -53,9 +53,8 @@ STATUS (v0.1.0; the API below is complete and stable, some methods are not built
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
-   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e).
-   Not yet: the temporal options (reuse, smoothing): fovpt_memory_size / fovpt_init return
-   FOV_ERR_UNSUPPORTED when they are switched on (their configs are validated already).
+   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), temporal reuse and
+   smoothing (SELECTIVE and JIN only, as in seed 004; FOV_ERR_UNSUPPORTED with the others).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (seed 002 Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (Eq. 3.13)
@@ -117,6 +116,19 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      from the 4 pixel centres around the subpixel centre (9/16, 3/16, 3/16, 1/16; 004), or
      the pixel's presample (JIN, fill_centre). The pixel is the mean of its 4 subpixels.
      Beyond e_np: the presample only. Colours are linear radiance (the contrast is a ratio).
+   - Temporal (seed 004 steps 2 and 4), SELECTIVE and JIN. fovpt_set_view ends a frame.
+     History per frame and pixel: the raw colour (before smoothing, as in 004), the first-hit
+     distance, the colour reference, the reuse count. Reuse (central region): the pixel's
+     first hit v (centre ray) projects into the previous view at pixel q (nearest); reused
+     when 1. q's reuse count < n_reuse_max, 2./3. both rays hit, 4. |dist(v, previous
+     camera) - q's stored distance| <= eps_depth x that distance (the notes' inferred
+     disocclusion test, not the literal wording), 5. the two colour references pass the
+     contrast test with tau_reuse x tau_col (the previous frame's attributes are not kept,
+     so step 1 of the disparity test is skipped). A reused pixel copies q's colour and
+     gets count + 1. Smoothing: C* = sum_i a (1-a)^i C_i / sum of the weights used, i = 0 ..
+     n_tpi, a = fovpt_alpha(e), C_i = the raw colour at v's pixel in frame t-i when the
+     depths agree within eps_depth; rejected frames leave the normalisation; pixels whose
+     centre ray misses are not smoothed.
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -146,7 +158,8 @@ MEMORY
    (primitives, BVH nodes, build data, light table); fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
-   (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 64 bytes per pixel); fovpt_init() takes it. Images are
+   (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 68 bytes per pixel, plus 32 per pixel and frame
+   of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
    caller buffers with an explicit row stride. Stack use per entry point: below 2 KiB (BVH
    build: the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal: 4 bytes per
    depth level; Whitted: a branch stack of 2 * FOVPT_MAX_WHITTED entries).
@@ -515,6 +528,12 @@ typedef struct fovpt_config {
 
 /* ==== context, output, statistics ========================================================== */
 
+/* A camera's view for reprojection (temporal options). */
+typedef struct fovpt_view {
+    float pos[3], right[3], up[3], fwd[3];
+    float tan4[4];            /* x from tan4[0] to tan4[1], y from tan4[2] (top) to tan4[3] */
+} fovpt_view;
+
 typedef struct fovpt_ctx {    /* filled by fovpt_init */
     fovpt_config cfg;         /* resolved */
     const fovpt_scene *scene;
@@ -532,7 +551,12 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
     fovpt_layers_cfg lay;     /* LAYERS: cfg.layers; ZONES: the three zones as static layers */
     uint32_t lanczos;         /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
-    void *pre;                /* SELECTIVE, JIN: presample records, 48 bytes per pixel */
+    void *pre;                /* SELECTIVE, JIN: presample records, 52 bytes per pixel */
+    /* SELECTIVE, JIN with temporal options: a ring of frames, 8 floats per pixel (raw rgb,
+       first-hit distance or -1, colour reference rgb, reuse count), and their views */
+    float *hist[5];
+    fovpt_view hist_view[5];
+    uint32_t hist_slots, hist_cur, hist_valid;
     void *mem;
     size_t mem_size;
 } fovpt_ctx;
@@ -553,6 +577,7 @@ typedef struct fovpt_stats {
     /* SELECTIVE, JIN: problematic subpixels and their extra samples, per zone (fovea,
        parafovea, perifovea, near periphery; JIN counts everything in zone 0) */
     uint64_t problematic[4], extra_samples[4];
+    uint64_t reused;          /* temporal reuse: pixels copied from the previous frame */
 } fovpt_stats;
 
 /* A random stream: counter-based, deterministic per (seed, pixel, sample, frame). */
@@ -633,7 +658,9 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg,
                                 const fovpt_scene *scene, const fovpt_camera *cam,
                                 fov_gaze gaze, void *mem, size_t bytes);
 /* A new camera pose (same size) and gaze for the next frame; resets the accumulation when
-   the camera changed. */
+   the camera changed. With temporal options (SELECTIVE, JIN) it also ends the frame just
+   rendered: call it once between frames (even when nothing moved), it makes that frame
+   history for reuse and smoothing. */
 FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov_gaze gaze);
 FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx);          /* clears accumulation, history */
 /* Phase 1: trace the samples of rows [y0, y1) for frame `frame` (any rows, any thread). */
@@ -2243,6 +2270,7 @@ typedef struct fovpt__attr {
     uint32_t poid, soid;    /* primitive ids; FOVPT_PRIM_NONE: no hit, no secondary ray */
     float pn[3], sn[3];     /* unit normals facing the incoming ray */
     uint32_t psc, ssc;      /* shadow rays found occluded at the hit */
+    float pt;               /* distance of the primary hit (unit ray), -1: no hit */
 } fovpt__attr;
 FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
 {
@@ -2273,6 +2301,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         m = &s->materials[h.material];
         if (at && bounce == 0) {
             fovpt__attr_hit(&h, d, &at->poid, at->pn);
+            at->pt = h.t;
             sec = m->type == FOVPT_MAT_MIRROR || m->type == FOVPT_MAT_DIELECTRIC;
         } else if (at && bounce == 1 && sec) {
             fovpt__attr_hit(&h, d, &at->soid, at->sn);
@@ -2367,7 +2396,7 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
             continue;
         }
         m = &s->materials[h.material];
-        if (at && b.depth == 0) fovpt__attr_hit(&h, b.d, &at->poid, at->pn);
+        if (at && b.depth == 0) { fovpt__attr_hit(&h, b.d, &at->poid, at->pn); at->pt = h.t; }
         if (at && b.depth == 1 && !sec_done) fovpt__attr_hit(&h, b.d, &at->soid, at->sn);
         for (k = 0; k < 3; ++k) L[k] += b.w[k] * m->emission[k];
         wo[0] = -b.d[0]; wo[1] = -b.d[1]; wo[2] = -b.d[2];
@@ -2460,6 +2489,7 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (at) {
         FOV_MEMSET(at, 0, sizeof *at);
         at->poid = at->soid = FOVPT_PRIM_NONE;
+        at->pt = -1.0f;
     }
     if (!s || !c || !org || !dir || !rng || !rgb) return FOV_ERR_NULL;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
@@ -2558,19 +2588,27 @@ FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
     o->snap = 1;         /* full-frame buffers: lattices do not move with the gaze */
 }
 
+/* temporal ring: the current frame plus n_tpi (smoothing) or 1 (reuse only) previous ones */
+FOVPT__PRIV uint32_t fovpt__hist_slots(const fovpt_config *c)
+{
+    if (!c->temporal.reuse && !c->temporal.smooth) return 0;
+    return (c->temporal.smooth ? c->temporal.n_tpi : 1u) + 1u;
+}
+
 FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam, size_t *bytes)
 {
     uint64_t px, total = 0;
     uint32_t n;
     const fov_logger *lg = &c->logger;
     if (c->method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
-    if (c->temporal.reuse || c->temporal.smooth)
-        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing not implemented in this version");
+    if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
+        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing: SELECTIVE and JIN only (seed 004)");
     px = (uint64_t)cam->width * cam->height;
     if (c->method == FOVPT_METHOD_UNIFORM) {
         total = (px * 16u + 15u) & ~(uint64_t)15u;
     } else if (c->method == FOVPT_METHOD_SELECTIVE || c->method == FOVPT_METHOD_JIN) {
-        total = ((px * 16u + 15u) & ~(uint64_t)15u) + px * 48u;
+        total = ((px * 16u + 15u) & ~(uint64_t)15u) + ((px * 52u + 15u) & ~(uint64_t)15u);
+        total += (uint64_t)fovpt__hist_slots(c) * ((px * 32u + 15u) & ~(uint64_t)15u);
     } else {
         fovpt_layers_cfg lay;
         fovpt__lay(c, &lay);
@@ -2593,6 +2631,32 @@ FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_came
     e = fovpt__camera_setup(cam, r, u, f, t4);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
     return fovpt__ctx_bytes(&c, cam, bytes);
+}
+
+FOVPT__PRIV void fovpt__make_view(const fovpt_ctx *ctx, fovpt_view *v)
+{
+    fovpt__copy3(v->pos, ctx->cam.pos);
+    fovpt__copy3(v->right, ctx->right); fovpt__copy3(v->up, ctx->up); fovpt__copy3(v->fwd, ctx->fwd);
+    v->tan4[0] = ctx->tx0; v->tan4[1] = ctx->tx1; v->tan4[2] = ctx->ty0; v->tan4[3] = ctx->ty1;
+}
+/* The pixel of a view that sees world point p (0 when behind or off the image); its
+   distance from the view's pinhole in *dist. */
+FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, const float p[3], uint32_t *px, uint32_t *py,
+                               float *dist)
+{
+    float d[3], z, sx, sy, x, y;
+    fovpt__sub3(d, p, v->pos);
+    z = fovpt__dot(d, v->fwd);
+    if (!(z > 0.0f)) return 0;
+    sx = fovpt__dot(d, v->right) / z;
+    sy = fovpt__dot(d, v->up) / z;
+    x = (sx - v->tan4[0]) / (v->tan4[1] - v->tan4[0]) * (float)W;
+    y = (sy - v->tan4[2]) / (v->tan4[3] - v->tan4[2]) * (float)H;
+    if (!(x >= 0.0f && x < (float)W && y >= 0.0f && y < (float)H)) return 0;
+    *px = (uint32_t)x;
+    *py = (uint32_t)y;
+    *dist = fovpt__len(d);
+    return 1;
 }
 
 /* The eccentricity model of a camera: the display's, or the camera's own frustum; then the
@@ -2681,8 +2745,17 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     if (c.method == FOVPT_METHOD_UNIFORM) {
         ctx->accum = (float *)mem;
     } else if (c.method == FOVPT_METHOD_SELECTIVE || c.method == FOVPT_METHOD_JIN) {
+        size_t px = (size_t)cam->width * cam->height, off;
+        uint32_t k;
         ctx->accum = (float *)mem;
-        ctx->pre = (unsigned char *)mem + fovpt__align((size_t)cam->width * cam->height * 16u);
+        ctx->pre = (unsigned char *)mem + fovpt__align(px * 16u);
+        off = fovpt__align(px * 16u) + fovpt__align(px * 52u);
+        ctx->hist_slots = fovpt__hist_slots(&c);
+        for (k = 0; k < ctx->hist_slots; ++k) {
+            ctx->hist[k] = (float *)(void *)((unsigned char *)mem + off);
+            off += fovpt__align(px * 32u);
+        }
+        fovpt__make_view(ctx, &ctx->hist_view[0]);
     } else {
         unsigned char *p = (unsigned char *)mem;
         uint32_t n;
@@ -2698,6 +2771,7 @@ FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
 {
     uint32_t n;
     if (!ctx) return FOV_ERR_NULL;
+    ctx->hist_valid = 0;
     if (ctx->accum) FOV_MEMSET(ctx->accum, 0, (size_t)ctx->cam.width * ctx->cam.height * 16u);
     for (n = 0; n < FOVPT_MAX_LAYERS; ++n)
         if (ctx->layer_buf[n])
@@ -2740,6 +2814,12 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
     e = fovpt__ctx_view(ctx);
     if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "eccentricity model (display)");
+    if (ctx->hist_slots) { /* the frame just rendered becomes history; nothing is reset */
+        ctx->hist_cur = (ctx->hist_cur + 1u) % ctx->hist_slots;
+        if (ctx->hist_valid + 1u < ctx->hist_slots) ctx->hist_valid++;
+        fovpt__make_view(ctx, &ctx->hist_view[ctx->hist_cur]);
+        return FOV_OK;
+    }
     if (moved) return fovpt_reset(ctx);
     return FOV_OK;
 }
@@ -2750,6 +2830,7 @@ typedef struct fovpt__pre {
     uint32_t poid, soid;
     float pn[3], sn[3];
     uint32_t sc;              /* primary shadow count | secondary << 16 */
+    float t;                  /* primary hit distance, -1: no hit */
 } fovpt__pre;
 
 FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
@@ -2767,6 +2848,7 @@ FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
         d->problematic[n] += s->problematic[n];
         d->extra_samples[n] += s->extra_samples[n];
     }
+    d->reused += s->reused;
 }
 
 /* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
@@ -2833,6 +2915,7 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 P->poid = at.poid; P->soid = at.soid;
                 fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
                 P->sc = (at.psc > 65535u ? 65535u : at.psc) | ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
+                P->t = at.pt;
             }
     } else {
         /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
@@ -2897,6 +2980,35 @@ FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3
     return 0;
 }
 
+/* Seed 004 step 2: temporal pixel reuse test (conditions 1-5, see the doc block); on
+   success the previous frame's colour in rgb and the reuse count in cur[7]. */
+FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const fovpt__pre *P, float rgb[3], float *cur)
+{
+    uint32_t W = ctx->cam.width, H = ctx->cam.height, prev = (ctx->hist_cur + ctx->hist_slots - 1u) % ctx->hist_slots, qx, qy;
+    float dir[3], v[3], dist, t4[4], con;
+    const float *q;
+    const fovpt_temporal_cfg *tc = &ctx->cfg.temporal;
+    uint32_t c;
+    if (!(P->t > 0.0f)) return 0;                                         /* 2. p_cur hits */
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+    fovpt__madd3(v, ctx->cam.pos, P->t, dir);
+    if (!fovpt__project(&ctx->hist_view[prev], W, H, v, &qx, &qy, &dist)) return 0;
+    q = ctx->hist[prev] + 8u * ((size_t)qy * W + qx);
+    if (!(q[7] < (float)tc->n_reuse_max)) return 0;                        /* 1. reuse count */
+    if (!(q[3] > 0.0f)) return 0;                                         /* 3. p_reuse hits */
+    if (!(fovpt__absf(dist - q[3]) <= tc->eps_depth * q[3])) return 0;      /* 4. depth */
+    for (c = 0; c < 3; ++c) {                                             /* 5. colour test */
+        static const float kc[3] = { 1.36f, 1.02f, 2.04f };
+        float mx = fovpt__maxf(P->col[c], q[4 + c]), mn = fovpt__minf(P->col[c], q[4 + c]);
+        con = mx + mn > 0.0f ? (mx - mn) / (mx + mn) : 0.0f;
+        if (con > tc->tau_reuse * ctx->cfg.selective.tau[0] * kc[c]) return 0;
+    }
+    fovpt__copy3(rgb, q);
+    cur[7] = q[7] + 1.0f;
+    return 1;
+}
+
 FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
 {
     fovpt_stats st;
@@ -2920,12 +3032,27 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
             const fovpt__pre *P = pre + ((size_t)y * W + x);
             float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), tf = 1.0f, pix[3] = { 0.0f, 0.0f, 0.0f };
             uint32_t zone = 0, nsd = 4, mx, my;
+            float *cur = ctx->hist_slots ? ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x) : NULL;
+            if (cur) { /* the current frame's history record */
+                fovpt__copy3(cur + 4, P->col);
+                cur[3] = P->t;
+                cur[7] = 0.0f;
+            }
             if (!jin) {
                 zone = e <= sc->e_deg[0] ? 0u : e <= sc->e_deg[1] ? 1u : e <= sc->e_deg[2] ? 2u : e <= sc->e_deg[3] ? 3u : 4u;
                 if (zone == 4u) { /* peripheral pixel region: the presample alone */
                     fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), P->col, 1u, ctx->cfg.accumulate);
+                    if (cur) fovpt__copy3(cur, P->col);
                     continue;
                 }
+            }
+            if (cur && ctx->cfg.temporal.reuse && ctx->hist_valid > 0 && fovpt__reuse(ctx, x, y, P, pix, cur)) {
+                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
+                fovpt__copy3(cur, pix);
+                st.reused++;
+                continue;
+            }
+            if (!jin) {
                 nsd = sc->n_sd[zone];
                 (void)fovpt_tau_fov(sc, e, &tf);
             }
@@ -2970,6 +3097,7 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                 for (k = 0; k < 3; ++k) pix[k] += 0.25f * sub[k];
             }
             fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
+            if (cur) fovpt__copy3(cur, pix);
         }
     }
     fovpt__add_stats(stats, &st);
@@ -3088,6 +3216,36 @@ FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
     return L->blend_linear ? t : t * t * (3.0f - 2.0f * t);
 }
 
+/* Seed 004 step 4: truncated exponential smoothing over the frames that see the same
+   first hit (within eps_depth), weights alpha (1 - alpha)^i, alpha = fovpt_alpha(e);
+   rejected frames drop out of the normalisation. */
+FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, float c[3])
+{
+    uint32_t W = ctx->cam.width, H = ctx->cam.height, i, k;
+    const float *cur = ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x);
+    float a, w, ws, acc[3], dir[3], v[3], t4[4];
+    if (!(cur[3] > 0.0f) || ctx->hist_valid == 0) return; /* no first hit: nothing to follow */
+    a = fovpt_alpha(&ctx->cfg.temporal, &ctx->cfg.selective, fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f));
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+    fovpt__madd3(v, ctx->cam.pos, cur[3], dir);
+    w = a;
+    ws = a;
+    for (k = 0; k < 3; ++k) acc[k] = a * c[k];
+    for (i = 1; i <= ctx->hist_valid && i <= ctx->cfg.temporal.n_tpi; ++i) {
+        uint32_t slot = (ctx->hist_cur + ctx->hist_slots - i) % ctx->hist_slots, qx, qy;
+        float dist;
+        const float *q;
+        w *= 1.0f - a;
+        if (!fovpt__project(&ctx->hist_view[slot], W, H, v, &qx, &qy, &dist)) continue;
+        q = ctx->hist[slot] + 8u * ((size_t)qy * W + qx);
+        if (!(q[3] > 0.0f) || !(fovpt__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3])) continue;
+        for (k = 0; k < 3; ++k) acc[k] += w * q[k];
+        ws += w;
+    }
+    for (k = 0; k < 3; ++k) c[k] = acc[k] / ws;
+}
+
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1, const fovpt_output *out)
 {
     uint32_t x, y, k, W;
@@ -3102,6 +3260,7 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
             if (ctx->accum) { /* UNIFORM, SELECTIVE, JIN */
                 const float *acc = ctx->accum + 4u * ((size_t)y * W + x);
                 for (k = 0; k < 3; ++k) c[k] = acc[3] > 0.0f ? acc[k] / acc[3] : 0.0f;
+                if (ctx->hist_slots && ctx->cfg.temporal.smooth) fovpt__smooth(ctx, x, y, c);
             } else {
                 const fovpt_layers_cfg *L = &ctx->lay;
                 float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), f[3];

@@ -1,8 +1,9 @@
 /* bench_pt.c - fovpt benchmark: every method on the code-written scenes (bench/pt_scenes.h),
    gaze at the centre and near the top-left corner; writes bench/results/pt.csv.
 
-   make bench-pt            default run (5 scenes, 192x144, ground truth 128 spp)
-   make bench-pt FULL=1     adds 320x240... see --help: every scene, method and budget
+   make bench-pt            default run (5 scenes, 320x240, ground truth 512 spp path / 64
+                            Whitted; about 10-15 minutes on one busy core pair)
+   make bench-pt FULL=1     640x480, ground truth 1024 spp, every equal-budget row
    ./build/bench_pt [--quick] [--full] [--w W --h H] [--gt-spp N] [--out FILE] [--threads N]
 
    Columns (the first eleven are the issue's, in order):
@@ -127,7 +128,7 @@ static void psnr_fields(const float *a, const float *ref, const float *ecc, size
 
 int main(int argc, char **argv)
 {
-    uint32_t W = 192, H = 144, gt_spp = 128;
+    uint32_t W = 320, H = 240, gt_spp = 512;
     int full = 0, quick = 0, threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv;
@@ -143,7 +144,7 @@ int main(int argc, char **argv)
         else { fprintf(stderr, "usage: %s [--quick] [--full] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
     }
     if (quick) { W = 96; H = 72; gt_spp = 32; }
-    if (full) { W = 320; H = 240; gt_spp = 512; }
+    if (full) { W = 640; H = 480; gt_spp = 1024; }
     csv = fopen(out_path, "w");
     if (!csv) { fprintf(stderr, "cannot write %s\n", out_path); return 1; }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup\n");

@@ -1035,7 +1035,7 @@ static void test_render(void)
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n - 1u) == FOV_ERR_TOO_SMALL, "init: memory too small", " ");
         check(fovpt_init(&ctx, &c, &b.s, &cam, g, NULL, n) == FOV_ERR_NULL, "init: memory NULL", " ");
         bcfg.temporal.reuse = 1;
-        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "features not built yet (temporal reuse) say FOV_ERR_UNSUPPORTED", " ");
+        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "temporal reuse with UNIFORM: FOV_ERR_UNSUPPORTED (SELECTIVE, JIN only)", " ");
         fovpt_memory_size(&c, &cam, &n);
         fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
         check(fovpt_trace_rows(&ctx, 0, 10, 40, NULL) == FOV_ERR_INVALID_ARG && fovpt_trace_rows(&ctx, 0, 10, 5, NULL) == FOV_ERR_INVALID_ARG,
@@ -1518,7 +1518,7 @@ static void test_selective_render(void)
     c.method = FOVPT_METHOD_SELECTIVE;
     c.mode = FOVPT_MODE_WHITTED;
     fovpt_config_resolve(&c, &c);
-    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * 64u, "SELECTIVE memory = 64 bytes per pixel", "%zu", n);
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * 68u, "SELECTIVE memory = 68 bytes per pixel", "%zu", n);
     cr = c; cr.method = FOVPT_METHOD_UNIFORM; cr.spp = 64;
     fovpt_memory_size(&cr, &cam, &nmax);
     mem = amalloc(n > nmax ? n : nmax);
@@ -1583,6 +1583,149 @@ static void test_selective_render(void)
     free(b.mem);
 }
 
+/* ==== 9. temporal reuse and smoothing (seed 004 steps 2 and 4) ================================ */
+static void test_temporal(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cn;
+    fovpt_ctx ctx, cref;
+    fovpt_output out;
+    fovpt_stats st;
+    size_t n = 0, nn = 0;
+    void *mem, *mem2;
+    uint32_t W = 64, H = 48, f, i, maxf = 0, bg_reused = 0;
+    static float img[64 * 48 * 3], ref[64 * 48 * 3];
+    fov_gaze g = { 32.0f, 24.0f };
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = -3.0f;
+    c.method = FOVPT_METHOD_SELECTIVE;
+    c.mode = FOVPT_MODE_WHITTED;
+    c.temporal.reuse = 1;
+    fovpt_config_resolve(&c, &c);
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * (68u + 2u * 32u),
+          "reuse memory: 68 + 2 frames x 32 bytes per pixel", "%zu", n);
+    mem = amalloc(n);
+    fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    cn = c; cn.temporal.reuse = 0;
+    fovpt_memory_size(&cn, &cam, &nn);
+    mem2 = amalloc(nn);
+    fovpt_init(&cref, &cn, &b.s, &cam, g, mem2, nn);
+    fovpt_output_init(&out);
+    {
+        static float prev_ref[64 * 48 * 3];
+        double se_all = 0.0, se_prev_all = 0.0;
+        uint32_t exact_bad = 0;
+        for (f = 0; f < 8; ++f) {
+            double se = 0.0, se_prev = 0.0;
+            memset(&st, 0, sizeof st);
+            out.rgb = img;
+            fovpt_render(&ctx, f, &out, &st);
+            out.rgb = ref;
+            fovpt_render(&cref, f, &out, NULL);
+            for (i = 0; i < W * H; ++i) {
+                const float *h = ctx.hist[ctx.hist_cur] + 8u * i;
+                const fovpt__pre *P = (const fovpt__pre *)ctx.pre + i;
+                if (h[7] > (float)maxf) maxf = (uint32_t)h[7];
+                if (P->poid == FOVPT_PRIM_NONE && h[7] > 0.0f) bg_reused++;
+                /* frame 1, static view: a reused pixel is the previous frame's colour */
+                if (f == 1 && h[7] > 0.5f && (img[3u * i] < prev_ref[3u * i] || img[3u * i] > prev_ref[3u * i])) exact_bad++;
+            }
+            for (i = 0; i < W * H * 3u; ++i) {
+                double dd = fmin(1.0, (double)img[i]) - fmin(1.0, (double)ref[i]);
+                double dp = fmin(1.0, (double)prev_ref[i]) - fmin(1.0, (double)ref[i]);
+                se += dd * dd;
+                se_prev += dp * dp;
+            }
+            if (f == 0) check(st.reused == 0, "reuse: nothing reused in the first frame", "%llu", (unsigned long long)st.reused);
+            if (f == 1) check(st.reused > (uint64_t)W * H / 4u, "reuse: a static view reuses many pixels in the second frame", "%llu of %u",
+                              (unsigned long long)st.reused, W * H);
+            /* a reused colour is another frame's independent samples: in expectation it costs
+               what one frame of sampling noise costs (summed over frames 1-7: a few light-edge
+               pixels dominate single frames) */
+            if (f > 0) { se_all += se; se_prev_all += se_prev; }
+            memcpy(prev_ref, ref, sizeof prev_ref);
+            fovpt_set_view(&ctx, &cam, g);
+            fovpt_set_view(&cref, &cam, g);
+        }
+        check(exact_bad == 0, "reuse: reused pixels carry the previous frame's colour exactly (static view)", "%u differ", exact_bad);
+        check(10.0 * log10(se_prev_all / (se_all + 1e-30)) > -1.0,
+              "reuse vs no reuse: error within 1 dB of frame-to-frame sampling noise (frames 2-8 summed)", "%.2f dB",
+              10.0 * log10(se_prev_all / (se_all + 1e-30)));
+    }
+    check(maxf == 5, "reuse: a pixel is reused at most n_reuse_max = 5 frames in a row", "max %u", maxf);
+    check(bg_reused == 0, "reuse: pixels whose ray misses are never reused", "%u", bg_reused);
+    free(mem); free(mem2);
+    /* smoothing: static view, path-traced (noisy): the smoothed image is closer to a
+       converged one than the raw frame, most of all in the periphery (alpha 0.1 .. 0.2) */
+    {
+        fovpt_config cs = fovpt_config_default(), cg;
+        static float gt[64 * 48 * 3], raw[64 * 48 * 3];
+        double e_s = 0.0, e_r = 0.0;
+        fov_ecc_model em;
+        uint32_t x, y;
+        cs.method = FOVPT_METHOD_SELECTIVE;
+        cs.temporal.smooth = 1;
+        cam.fov_y_deg = 90.0f;
+        fovpt_config_resolve(&cs, &cs);
+        cg = fovpt_config_default(); cg.spp = 256; cg.seed = 99;
+        fovpt_memory_size(&cg, &cam, &nn);
+        mem2 = amalloc(nn);
+        fovpt_init(&cref, &cg, &b.s, &cam, g, mem2, nn);
+        out.rgb = gt;
+        fovpt_render(&cref, 0, &out, NULL);
+        free(mem2);
+        fovpt_memory_size(&cs, &cam, &n);
+        check(n == (size_t)W * H * (68u + 5u * 32u), "smoothing memory: 68 + 5 frames x 32 bytes per pixel", "%zu", n);
+        mem = amalloc(n);
+        fovpt_init(&ctx, &cs, &b.s, &cam, g, mem, n);
+        for (f = 0; f < 5; ++f) {
+            out.rgb = img;
+            fovpt_render(&ctx, f, &out, NULL);
+            if (f < 4) fovpt_set_view(&ctx, &cam, g);
+        }
+        /* the raw frame 4: accumulator without smoothing */
+        for (i = 0; i < W * H; ++i) for (x = 0; x < 3; ++x) raw[3u * i + x] = ctx.accum[4u * i + x] / ctx.accum[4u * i + 3u];
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, g);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                uint32_t k, idx = y * W + x;
+                if (fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f) < 30.0f) continue;
+                for (k = 0; k < 3; ++k) {
+                    double a = fmin(1.0, (double)img[3u * idx + k]) - fmin(1.0, (double)gt[3u * idx + k]);
+                    double r = fmin(1.0, (double)raw[3u * idx + k]) - fmin(1.0, (double)gt[3u * idx + k]);
+                    e_s += a * a; e_r += r * r;
+                }
+            }
+        check(e_s < 0.6 * e_r, "smoothing (alpha(e), 4 frames) lowers the squared error beyond 30 degrees by over 40 %",
+              "%.4f vs %.4f", e_s, e_r);
+        /* a moved camera: history whose first hit differs is rejected (no ghosting):
+           after a large jump the output equals the raw frame where depths disagree */
+        {
+            fovpt_camera moved = cam;
+            uint32_t same = 0, diff = 0;
+            moved.pos[0] = 0.6f;
+            moved.target[0] = 0.6f;
+            fovpt_set_view(&ctx, &moved, g);
+            out.rgb = img;
+            fovpt_render(&ctx, 9, &out, NULL);
+            for (i = 0; i < W * H; ++i) {
+                float r0 = ctx.accum[4u * i] / ctx.accum[4u * i + 3u];
+                if (fabsf(r0 - img[3u * i]) < 1e-6f) same++; else diff++;
+            }
+            check(same > 0 && diff > 0, "smoothing after a camera move: some pixels keep history, disoccluded ones do not",
+                  "same %u blended %u", same, diff);
+        }
+        free(mem);
+    }
+    free(b.mem);
+}
+
 int main(void)
 {
     test_api();
@@ -1601,5 +1744,6 @@ int main(void)
     test_zones();
     test_selective_rules();
     test_selective_render();
+    test_temporal();
     return fovcheck_summary();
 }
