@@ -154,7 +154,8 @@ CONFIGURATION (define before including the implementation)
    FOV_NO_ERROR_STRINGS compile out the result strings (fovpt_result_string returns "")
 
 MEMORY
-   The caller owns every byte. fovpt_scene_size() gives the bytes for a scene description
+   The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
+   are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, BVH nodes, build data, light table); fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
@@ -1695,7 +1696,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     if (e != FOV_OK) return e;
     if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene memory NULL");
     if (bytes < L.total) FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene memory smaller than fovpt_scene_size");
-    if (((uintptr_t)mem & 15u) != 0) FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene memory not 16-byte aligned");
+    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene memory not 8-byte aligned");
     FOV_MEMSET(s, 0, sizeof *s);
     prims = (fovpt__prim *)(void *)(base + L.prims);
     lights = (uint32_t *)(void *)(base + L.lights);
@@ -2730,7 +2731,7 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     if (e != FOV_OK) return e;
     if (need > 0 && !mem) FOVPT__FAIL(&c.logger, FOV_ERR_NULL, "context memory NULL");
     if (bytes < need) FOVPT__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "context memory smaller than fovpt_memory_size");
-    if (((uintptr_t)mem & 15u) != 0) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "context memory not 16-byte aligned");
+    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "context memory not 8-byte aligned");
     ctx->cfg = c;
     ctx->scene = scene;
     ctx->cam = *cam;
