@@ -33,9 +33,12 @@ $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
+# Embree (Debian libembree-dev) gives the reference ray throughput when it is installed
+EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lembree3)
+
 $(BUILD)/bench_pt: bench/bench_pt.c bench/pt_scenes.h fovpt.h
 	@mkdir -p $(BUILD)
-	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -Ibench $< -lm -pthread -o $@
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -Ibench $< -lm -pthread $(EMBREE) -o $@
 
 examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/pt_basic
 

@@ -151,6 +151,8 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
+   FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
+   FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
    FOV_NO_ERROR_STRINGS compile out the result strings (fovpt_result_string returns "")
 
 MEMORY

@@ -4,7 +4,8 @@
    make bench-pt            default run (5 scenes, 320x240, ground truth 512 spp path / 64
                             Whitted; about 10-15 minutes on one busy core pair)
    make bench-pt FULL=1     640x480, ground truth 1024 spp, every equal-budget row
-   ./build/bench_pt [--quick] [--full] [--w W --h H] [--gt-spp N] [--out FILE] [--threads N]
+   ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
+                    [--threads N]      (--throughput: only the fovpt / Embree ray-rate rows)
 
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
@@ -24,7 +25,14 @@
      perifovea, near periphery), psnr_all over the image; eccentricity from the camera's
      field of view (fovpt_ecc_*). An empty annulus gives nan.
    - speedup: time of uniform4 / time of the method (same scene and gaze).
-   Embree rows: not produced (libembree-dev is not installed here; see the report). */
+   Embree rows (built with -DPT_HAVE_EMBREE -lembree3, which the Makefile adds when
+   <embree3/rtcore.h> exists; Debian's libembree-dev): on the triangles of mesh100k alone,
+   the same ray set (every pixel-centre camera ray, plus one cosine-distributed bounce ray
+   from each camera hit, from a fixed-seed generator) is traced for the closest hit by
+   fovpt_intersect and by Embree 3 (rtcIntersect1, a device with threads=1), one thread
+   each, best of 5 runs interleaved (fovpt, Embree, fovpt, ...); rows fovpt_bvh and embree, budget rays_<N>, mode
+   closest_hit, speedup = Embree's time / this row's time; the hit agreement (same hit or
+   miss, |dt| <= 1e-4 t) is printed. */
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
@@ -36,6 +44,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#ifdef PT_HAVE_EMBREE
+#include <embree3/rtcore.h>
+#endif
 
 static double now_ms(void)
 {
@@ -126,22 +137,146 @@ static void psnr_fields(const float *a, const float *ref, const float *ecc, size
     }
 }
 
+/* ---- ray throughput on triangles: fovpt's BVH against Embree (one thread each) ---------- */
+static uint64_t g_rng = 0x243f6a8885a308d3ull;
+static float rnd01(void)
+{
+    g_rng ^= g_rng << 13; g_rng ^= g_rng >> 7; g_rng ^= g_rng << 17;
+    return (float)(g_rng >> 40) * (1.0f / 16777216.0f);
+}
+static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
+{
+    pt_scene S;
+    fovpt_scene tri;
+    fovpt_scene_desc d;
+    size_t bytes = 0, nr = 0, cap, i, agree = 0;
+    float *org, *dir, *t_pt;
+    void *mem;
+    uint32_t x, y, nprim;
+    double best_pt = 1e30, best_em = -1.0;
+    int rep;
+    if (pt_scene_make(&S, PT_SCENE_MESH) != 0) return;
+    S.cam.width = W; S.cam.height = H;
+    d = S.desc;
+    d.shapes = NULL; d.num_shapes = 0;          /* the triangles alone */
+    d.background[0] = d.background[1] = d.background[2] = 0.0f;
+    if (fovpt_scene_size(&d, &bytes) != FOV_OK) return;
+    mem = malloc(bytes + 16u);
+    if (fovpt_scene_build(&tri, &d, mem, bytes) != FOV_OK) return;
+    nprim = tri.num_prims;
+    cap = 2u * (size_t)W * H;
+    org = (float *)malloc(cap * 12u); dir = (float *)malloc(cap * 12u); t_pt = (float *)malloc(cap * 4u);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            fovpt_camera_ray(&S.cam, (float)x + 0.5f, (float)y + 0.5f, org + 3 * nr, dir + 3 * nr);
+            nr++;
+        }
+    for (i = 0, x = (uint32_t)nr; i < x; ++i) { /* one bounce ray per camera hit */
+        fovpt_hit h;
+        if (fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h)) {
+            float n[3], t1[3], b1[3], u1 = rnd01(), u2 = rnd01(), r = sqrtf(u1), ph = 6.2831853f * u2, lx, ly, lz;
+            float sg = (h.n[0] * dir[3 * i] + h.n[1] * dir[3 * i + 1] + h.n[2] * dir[3 * i + 2]) > 0.0f ? -1.0f : 1.0f;
+            int k;
+            for (k = 0; k < 3; ++k) n[k] = sg * h.n[k];
+            if (fabsf(n[0]) > 0.5f) { t1[0] = n[1]; t1[1] = -n[0]; t1[2] = 0.0f; } else { t1[0] = 0.0f; t1[1] = n[2]; t1[2] = -n[1]; }
+            { float l = sqrtf(t1[0] * t1[0] + t1[1] * t1[1] + t1[2] * t1[2]); t1[0] /= l; t1[1] /= l; t1[2] /= l; }
+            b1[0] = n[1] * t1[2] - n[2] * t1[1]; b1[1] = n[2] * t1[0] - n[0] * t1[2]; b1[2] = n[0] * t1[1] - n[1] * t1[0];
+            lx = r * cosf(ph); ly = r * sinf(ph); lz = sqrtf(1.0f - u1);
+            for (k = 0; k < 3; ++k) {
+                org[3 * nr + k] = h.p[k] + 1e-3f * n[k];
+                dir[3 * nr + k] = lx * t1[k] + ly * b1[k] + lz * n[k];
+            }
+            nr++;
+        }
+    }
+#ifndef PT_HAVE_EMBREE
+    for (rep = 0; rep < 5; ++rep) {
+        double t0 = now_ms(), t;
+        for (i = 0; i < nr; ++i) {
+            fovpt_hit h;
+            t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
+        }
+        t = now_ms() - t0;
+        if (t < best_pt) best_pt = t;
+    }
+#else
+    {
+        RTCDevice dev = rtcNewDevice("threads=1");
+        RTCScene sc = rtcNewScene(dev);
+        RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+        float *vb = (float *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, S.mesh.num_vertices);
+        unsigned *ib = (unsigned *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, S.mesh.num_triangles);
+        struct RTCIntersectContext ictx;
+        memcpy(vb, S.mesh.positions, 12u * S.mesh.num_vertices);
+        memcpy(ib, S.mesh.indices, 12u * S.mesh.num_triangles);
+        rtcCommitGeometry(g);
+        rtcAttachGeometry(sc, g);
+        rtcReleaseGeometry(g);
+        rtcCommitScene(sc);
+        rtcInitIntersectContext(&ictx);
+        best_em = 1e30;
+        for (rep = 0; rep < 5; ++rep) { /* interleaved, so load from other jobs hits both alike */
+            double t0 = now_ms(), t;
+            size_t ag = 0;
+            for (i = 0; i < nr; ++i) {
+                fovpt_hit h;
+                t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
+            }
+            t = now_ms() - t0;
+            if (t < best_pt) best_pt = t;
+            t0 = now_ms();
+            for (i = 0; i < nr; ++i) {
+                struct RTCRayHit rh;
+                float te;
+                rh.ray.org_x = org[3 * i]; rh.ray.org_y = org[3 * i + 1]; rh.ray.org_z = org[3 * i + 2];
+                rh.ray.dir_x = dir[3 * i]; rh.ray.dir_y = dir[3 * i + 1]; rh.ray.dir_z = dir[3 * i + 2];
+                rh.ray.tnear = 0.0f; rh.ray.tfar = 1e30f; rh.ray.time = 0.0f; rh.ray.mask = 0xFFFFFFFFu; rh.ray.id = 0; rh.ray.flags = 0;
+                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(sc, &ictx, &rh);
+                te = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
+                if ((te < 0.0f && t_pt[i] < 0.0f) || (te >= 0.0f && t_pt[i] >= 0.0f && fabsf(te - t_pt[i]) <= 1e-4f * te)) ag++;
+            }
+            t = now_ms() - t0;
+            if (t < best_em) best_em = t;
+            agree = ag;
+        }
+        rtcReleaseScene(sc);
+        rtcReleaseDevice(dev);
+    }
+#endif
+    printf("ray throughput on %u triangles, %zu rays (closest hit, one thread, best of 5 interleaved runs): fovpt %.2f Mrays/s", nprim, nr,
+           (double)nr / (best_pt * 1e3));
+    fprintf(csv, "mesh100k,fovpt_bvh,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,%.3f\n", nr, (double)nr / (best_pt * 1e-3),
+            best_pt, nr, W * H, best_em > 0.0 ? best_em / best_pt : 0.0);
+    if (best_em > 0.0) {
+        printf(", Embree %.2f Mrays/s (fovpt/Embree %.2f), hits agree on %.3f %% of the rays\n", (double)nr / (best_em * 1e3),
+               best_em / best_pt, 100.0 * (double)agree / (double)nr);
+        fprintf(csv, "mesh100k,embree,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,1.000\n", nr, (double)nr / (best_em * 1e-3),
+                best_em, nr, W * H);
+    } else {
+        printf(" (Embree: not built in; apt-get install libembree-dev)\n");
+    }
+    free(org); free(dir); free(t_pt); free(mem);
+    pt_scene_free(&S);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, threads = 2, i, sc, gi;
+    int full = 0, quick = 0, only_tp = 0, threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv;
     double t_start = now_ms();
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--full")) full = 1;
         else if (!strcmp(argv[i], "--quick")) quick = 1;
+        else if (!strcmp(argv[i], "--throughput")) only_tp = 1;
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) out_path = argv[++i];
-        else { fprintf(stderr, "usage: %s [--quick] [--full] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
+        else { fprintf(stderr, "usage: %s [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
     }
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
@@ -154,7 +289,7 @@ int main(int argc, char **argv)
         size_t np = (size_t)W * H;
         float *ref_p = (float *)malloc(np * 12u), *ref_w = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u);
         float *ecc = (float *)malloc(np * 4u);
-        if (quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) continue;
+        if ((quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) || only_tp) continue;
         if (pt_scene_make(&S, sc) != 0) { fprintf(stderr, "scene %s failed\n", pt_scene_names[sc]); return 1; }
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
@@ -225,7 +360,33 @@ int main(int argc, char **argv)
         pt_scene_free(&S);
         free(ref_p); free(ref_w); free(img); free(ecc);
     }
+    if (!quick) throughput_rows(csv, W, H);
     fclose(csv);
     printf("wrote %s (%.0f s)\n", out_path, (now_ms() - t_start) * 1e-3);
+    /* plots next to the CSV: pt_<scene>.png, speed-up over uniform4 against fovea PSNR (f1)
+       and near-periphery PSNR (f4), every method, both gazes */
+    if (!only_tp && system("command -v gnuplot > /dev/null 2>&1") == 0) {
+        FILE *gp = popen("gnuplot", "w");
+        const char *slash = strrchr(out_path, '/');
+        int dirlen = slash ? (int)(slash - out_path + 1) : 0;
+        if (gp) {
+            for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
+                const char *nm = pt_scene_names[sc];
+                if (quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) continue;
+                fprintf(gp, "set terminal pngcairo size 900,500; set output '%.*spt_%s.png'\n", dirlen, out_path, nm);
+                fprintf(gp, "set datafile separator ','; set grid; set key bottom right\n");
+                fprintf(gp, "set title '%s: speed-up over uniform 4 spp vs PSNR (%ux%u; default budgets)'\n", nm, W, H);
+                fprintf(gp, "set xlabel 'time of uniform4 / time of the method (same run, one thread)'; set ylabel 'PSNR (dB)'\n");
+                fprintf(gp, "plot '%s' every ::1 using ((strcol(1) eq '%s' && strcol(4) eq 'default') ? $15 : 1/0):7:(sprintf('%%s %%s', strcol(2), strcol(3))) "
+                            "with labels point pt 7 offset 0.5,0.5 font ',7' title 'fovea (f1)', "
+                            "'' every ::1 using ((strcol(1) eq '%s' && strcol(4) eq 'default') ? $15 : 1/0):10 with points pt 6 title 'near periphery (f4)'\n",
+                        out_path, nm, nm);
+            }
+            pclose(gp);
+            printf("plots next to %s: pt_<scene>.png\n", out_path);
+        }
+    } else if (!only_tp) {
+        printf("gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
+    }
     return 0;
 }
