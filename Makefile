@@ -1,8 +1,9 @@
 # fov - foveated rendering single-header libraries.
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures
 #   make test    the whole test suite (closing line: "N passed, N failed")
-#   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv);
-#                make bench-sdf FULL=1 runs the whole grid
+#   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
+#                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
+#                make bench-sdf FULL=1 / make bench-pt FULL=1 run the whole grid
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -12,7 +13,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test examples bench bench-sdf clean
+.PHONY: all demo test examples bench bench-sdf bench-pt clean
 
 all: examples
 
@@ -28,7 +29,18 @@ $(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h tests/commo
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes
+$(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+# Embree (Debian libembree-dev) gives the reference ray throughput when it is installed
+EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lembree3)
+
+$(BUILD)/bench_pt: bench/bench_pt.c bench/pt_scenes.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -Ibench $< -lm -pthread $(EMBREE) -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/pt_basic
 
 demo: $(BUILD)/sdf_scenes
 	./$(BUILD)/sdf_scenes --out out
@@ -40,7 +52,11 @@ bench-sdf: $(BUILD)/bench_sdf
 	@mkdir -p bench/results
 	./$(BUILD)/bench_sdf $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf
+bench-pt: $(BUILD)/bench_pt
+	@mkdir -p bench/results
+	nice ./$(BUILD)/bench_pt $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench: bench-sdf bench-pt
 
 clean:
 	rm -rf $(BUILD) out

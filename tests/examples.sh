@@ -28,5 +28,18 @@ if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. examples
 else
     bad "sdf_scenes build"
 fi
+if $CC -std=c99 -O2 $W -I. examples/pt_basic.c -lm -o build/examples/pt_basic; then ok "pt_basic builds with $W"; else bad "pt_basic build"; fi
+if [ -x build/examples/pt_basic ] && build/examples/pt_basic > build/examples/pt_basic.ppm 2>/dev/null \
+   && [ "$(head -c 15 build/examples/pt_basic.ppm)" = "$(printf 'P6\n320 240\n255')" ] \
+   && [ "$(stat -c %s build/examples/pt_basic.ppm)" -eq $((15 + 320 * 240 * 3)) ]; then
+    ok "pt_basic writes a 320x240 PPM"
+else
+    bad "pt_basic output"
+fi
+if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. -Ibench bench/bench_pt.c -lm -pthread -o build/examples/bench_pt; then
+    ok "bench_pt builds"
+else
+    bad "bench_pt build"
+fi
 echo "$P passed, $F failed"
 [ "$F" -eq 0 ]

@@ -51,7 +51,7 @@ WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror 
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # --- unit tests ---------------------------------------------------------------------------
-# three builds of each fovsdf test program: libm, FOV_NO_LIBM, sanitizers
+# three builds of each test program (fovsdf, fovpt): libm, FOV_NO_LIBM, sanitizers
 fovsdf_tests() {
     local name=$1 src=$2
     if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common -lm; then
@@ -71,6 +71,7 @@ fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
+fovsdf_tests unit_fovpt tests/test_fovpt.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

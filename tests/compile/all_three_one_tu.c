@@ -15,6 +15,7 @@
 /* again, reversed */
 #ifdef FOV_HAVE_FOVPT
 #include "fovpt.h"
+#include "tiny_pt.h"
 #endif
 #ifdef FOV_HAVE_FOVLP
 #include "fovlp.h"
@@ -34,6 +35,14 @@ int main(void)
         uint64_t evals = 0;
         int e = tiny_render(rgb, &evals);
         if (e != 0) return e;
+    }
+#endif
+#ifdef FOV_HAVE_FOVPT
+    {
+        static uint8_t rgb2[TINY_PT_W * TINY_PT_H * 3];
+        uint64_t rays = 0;
+        int e = tiny_pt_render(rgb2, &rays);
+        if (e != 0) return 100 + e;
     }
 #endif
     return 0;

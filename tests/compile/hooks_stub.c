@@ -69,16 +69,27 @@ int hooks_stub_render(void);
 #endif
 #ifdef FOV_HAVE_FOVPT
 #include "fovpt.h"
+#include "tiny_pt.h"
 #endif
 
 /* 0 on success */
 int hooks_stub_render(void)
 {
 #ifdef FOV_HAVE_FOVSDF
-    static uint8_t rgb[TINY_W * TINY_H * 3];
-    uint64_t evals = 0;
-    return tiny_render(rgb, &evals);
-#else
-    return 0;
+    {
+        static uint8_t rgb[TINY_W * TINY_H * 3];
+        uint64_t evals = 0;
+        int e = tiny_render(rgb, &evals);
+        if (e != 0) return e;
+    }
 #endif
+#ifdef FOV_HAVE_FOVPT
+    {
+        static uint8_t rgb2[TINY_PT_W * TINY_PT_H * 3];
+        uint64_t rays = 0;
+        int e = tiny_pt_render(rgb2, &rays);
+        if (e != 0) return 100 + e;
+    }
+#endif
+    return 0;
 }

@@ -1,0 +1,3412 @@
+/* fovpt.h - v0.1.0 - foveated path tracing: layers, zones, selective supersampling
+                     - MIT or public domain (see end of file)
+
+   Do this:
+      #define FOVPT_IMPLEMENTATION   (or #define FOV_IMPL for all fov headers)
+   before you include this file in *one* C or C++ file to create the implementation.
+
+QUICK START
+      #define FOVPT_IMPLEMENTATION
+      #include "fovpt.h"
+
+      fovpt_material mat[2];  fovpt_material_init(&mat[0]);  fovpt_material_init(&mat[1]);
+      mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 4.0f;   // a lamp
+      fovpt_shape sh[2];      fovpt_shape_sphere(&sh[0], 0,0,0, 1.0f, 0);    // grey ball
+                              fovpt_shape_sphere(&sh[1], 0,3,0, 0.5f, 1);    // the lamp
+      fovpt_scene_desc d;     fovpt_scene_desc_init(&d);
+      d.shapes = sh; d.num_shapes = 2; d.materials = mat; d.num_materials = 2;
+      size_t sb;  fovpt_scene_size(&d, &sb);          // caller memory for the scene + BVH
+      fovpt_scene scene;  fovpt_scene_build(&scene, &d, malloc(sb), sb);
+      fovpt_camera cam;   fovpt_camera_init(&cam, 320, 240);  cam.pos[2] = -4.0f;
+      fovpt_config cfg = fovpt_config_default();      // path tracing, 1 spp, NEE, RR
+      size_t cb;  fovpt_memory_size(&cfg, &cam, &cb);
+      fovpt_ctx ctx;  fov_gaze gaze = { 160.0f, 120.0f };
+      if (fovpt_init(&ctx, &cfg, &scene, &cam, gaze, malloc(cb), cb) != FOV_OK) ...
+      fovpt_output out;  fovpt_output_init(&out);  out.rgb8 = pixels;   // 320*240*3 bytes
+      fovpt_render(&ctx, 0, &out, NULL);              // frame 0; or trace/resolve by rows
+
+   See examples/pt_basic.c (planned, see STATUS).
+
+WHAT IT DOES (the pipeline, in the order the data flows)
+   1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
+      boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
+      (Wald 2007) over the bounded primitives; planes and the user hook are tested apart.
+      Fewer than bvh_min_prims bounded primitives: no BVH, a plain loop.
+   2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
+      counter-based integer hash, no state outside the stream).
+   3. Radiance (fovpt_radiance): Kajiya's rendering equation (seed 002 Eq. 2.1) estimated by
+      an iterative path tracer: BSDF sampling (Lambert, seed 002's two-lobe Phong, mirror,
+      dielectric with Fresnel), next-event estimation towards sampleable emitters combined
+      with BSDF hits by the power heuristic (Veach 1997), Russian roulette, a bounce limit.
+      Or a Whitted-style tracer (seed 004: depth 3, hard shadows, reflection, refraction).
+   4. Sampling pattern per method: UNIFORM (every pixel, spp samples: the non-foveated
+      renderer); LAYERS (seed 002 ch. 3: gaze-centred lattices of stride d per layer);
+      ZONES (seed 000 ch. 4: 1, 1/4, 1/16 ray density); SELECTIVE (seed 004: presample,
+      2x2-subpixel disparity test scaled by tau_fov(e), 9/4/2/1 extra samples); JIN (Jin et
+      al. 2009: 4 per problematic subpixel everywhere).
+   5. Resolve (fovpt_resolve_rows): progressive mean; LAYERS: Catmull-Rom fill of untraced
+      pixels (seed 002 Eq. 3.17 with its coefficient error fixed) and border blending (Eq.
+      3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
+      smoothing (seed 004 steps 2 and 4); 8-bit sRGB or float output.
+
+STATUS (v0.1.0; the API below is complete and stable, some methods are not built yet)
+   Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
+   path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
+   the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
+   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), temporal reuse and
+   smoothing (SELECTIVE and JIN only, as in seed 004; FOV_ERR_UNSUPPORTED with the others).
+
+CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
+   - Phong (seed 002 Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (Eq. 3.13)
+     with lobe-sampling energy updates and a clamp (Eq. 3.15-3.16): biased. Here one
+     estimator: the BRDF kd/pi + ks (a+2)/(2 pi) max(0, wr.wi)^a (wr = mirror of wo), sampled
+     from the mixture pD * cos/pi + pS * (a+1)/(2 pi) cos^a about wr with pS, pD from Eq.
+     3.9-3.12 (mean of ks, kd), weight f cos / mixture pdf (unbiased; no clamp).
+   - Emitters are two-sided (emission = material.emission on both faces) and add to the
+     surface's scattering. Sampleable by NEE: spheres (uniform on their area), quads and
+     triangles; emissive planes and boxes are found by BSDF sampling only (full weight).
+     A light is picked with probability proportional to area * mean(emission).
+   - Bounces: max_depth counts scattering events; emission seen after at most max_depth
+     bounces is counted (max_depth 0: emitters and background only). Default 8 (seed 002).
+   - Russian roulette from bounce rr_start (default 3): survival probability = max channel of
+     the path throughput, clamped to [0.05, 1]; survivors are divided by it (unbiased).
+   - Whitted mode: emitters are treated as point lights at their centre (sphere: the point
+     nearest the shading point), intensity emission * area * |cos| / d^2, hard shadows; an
+     ambient term background * kd; mirrors and dielectrics branch deterministically (both
+     Fresnel branches, explicit stack); no random numbers except the pixel jitter.
+   - Degenerate triangles (zero area) are an error unless desc.skip_degenerate = 1.
+   - Pixel jitter: uniform in the pixel (box filter), from the pixel's stream.
+   - LAYERS (seed 002 sec. 3.2-3.4). Lattice of layer n >= 1: pixels (gx + k d, gy + l d),
+     (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d); layer 0: (k d, l d), static. A
+     lattice point (pixel centre eccentricity e) is traced when
+        e <= min(r_n + blend/2 + a_n, r_0 + a_n)  (layer n >= 1; the r_0 term with a mask)
+        e <= r_0 + a_0                             (layer 0 with a mask; all points without)
+     with the apron a_n = (2 sqrt(2) d_n + 1) / f_px radians in degrees (f_px: the eye's
+     distance to the image in pixels), so every Catmull-Rom neighbour of a pixel that needs
+     the layer is traced (an angle between two pixels' rays is at most their distance / f).
+     Like the thesis, every layer covers its whole disk, including the finer layers' area.
+     Samples of a target pixel are jittered uniformly inside it. Untraced pixels: separable
+     Catmull-Rom over the 4 x 4 lattice neighbours (Eq. 3.17 fixed), neighbour indices
+     clamped at the image border; where a neighbour is not traced (mask border), the
+     bilinear weights of the 2 x 2 inner neighbours that are; results clamped to >= 0
+     (Catmull-Rom overshoots). Blending (Eq. 3.18) from the outside in: C = F_0, then for
+     n = 1 .. N-1: C = (1 - vb_n) C + vb_n F_n with vb_n = 1 at e <= r_n - blend/2, 0 at
+     e >= r_n + blend/2, smoothstep (or linear) between; continuous across every border.
+     Pixels beyond the mask radius are black (not traced, as in the thesis).
+   - ZONES (seed 000 sec. 4.2): the thesis renders full frames and keeps every 2nd / 4th
+     pixel (nearest neighbour); here only the kept pixels are traced: static lattices of
+     stride 4 (everywhere), 2 (e <= middle_deg + overlap/2 + apron) and 1 (e <= inner_deg +
+     overlap/2 + apron), cfg.spp samples each, apron a_n = (sqrt(2) a d_n + 1) / f_px. The
+     coarse lattices are Lanczos-upsampled (a = 3 lobes, normalised weights) and the zones
+     blended linearly over overlap_px pixels (converted to degrees at the gaze) centred on
+     each border. Zone radii: inner 7.5 and middle 32.5 degrees (the thesis's conservative
+     15 and 65 degree fields read as diameters).
+   - SELECTIVE / JIN (seed 004 sec. 3.2, Jin et al. 2009). Presample: one ray through each
+     pixel centre (no jitter) gives the colour reference and the Table 1 attributes: object
+     ids (primitive ids), normals, shadow counts (occluded shadow rays: Whitted's light tests,
+     the path tracer's first NEE test) at the primary hit and, when it is a mirror or glass,
+     at the secondary hit; no textures, so the texture flags never differ. Subpixel NW, NE,
+     SW, SE is compared with the 3 neighbours on its side (image border: the pixel itself).
+     Discordance: ids or shadow counts differ, normals more than normal_tol_deg (10) apart;
+     tau_sel = min tau of the discordant attributes, else tau_col. Problematic when
+     (max - min) / (max + min) of a channel over the 4 linear colours exceeds
+     tau_fov(e) tau_sel (1.36, 1.02, 2.04) (JIN: tau_fov = 1). Problematic subpixels get
+     n_sd[zone] (JIN: 4, in every zone) stratified jittered samples: an m x m grid when n_sd
+     is a square, else n_sd columns; the subpixel is their mean. Other subpixels: bilinear
+     from the 4 pixel centres around the subpixel centre (9/16, 3/16, 3/16, 1/16; 004), or
+     the pixel's presample (JIN, fill_centre). The pixel is the mean of its 4 subpixels.
+     Beyond e_np: the presample only. Colours are linear radiance (the contrast is a ratio).
+   - Temporal (seed 004 steps 2 and 4), SELECTIVE and JIN. fovpt_set_view ends a frame.
+     History per frame and pixel: the raw colour (before smoothing, as in 004), the first-hit
+     distance, the colour reference, the reuse count. Reuse (central region): the pixel's
+     first hit v (centre ray) projects into the previous view at pixel q (nearest); reused
+     when 1. q's reuse count < n_reuse_max, 2./3. both rays hit, 4. |dist(v, previous
+     camera) - q's stored distance| <= eps_depth x that distance (the notes' inferred
+     disocclusion test, not the literal wording), 5. the two colour references pass the
+     contrast test with tau_reuse x tau_col (the previous frame's attributes are not kept,
+     so step 1 of the disparity test is skipped). A reused pixel copies q's colour and
+     gets count + 1. Smoothing: C* = sum_i a (1-a)^i C_i / sum of the weights used, i = 0 ..
+     n_tpi, a = fovpt_alpha(e), C_i = the raw colour at v's pixel in frame t-i when the
+     depths agree within eps_depth; rejected frames leave the normalisation; pixels whose
+     centre ray misses are not smoothed.
+
+DOES NOT
+   - use a GPU API, start threads, allocate memory, or read or write files;
+   - keep any global or thread-local state;
+   - texture, instance or animate geometry (build a new scene instead).
+
+CONFIGURATION (define before including the implementation)
+   FOVPT_STATIC         all functions static (use it when two libraries embed this header)
+   FOV_DLL              export (FOVPT_IMPLEMENTATION) or import the API from a DLL
+   FOVPT_API            override the linkage of every public function
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
+   FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default 2^26)
+   FOVPT_MAX_BVH_DEPTH  BVH depth cap = traversal stack entries            (default 64)
+   FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
+   FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
+   FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
+   FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
+   FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
+   FOV_NO_ERROR_STRINGS compile out the result strings (fovpt_result_string returns "")
+
+MEMORY
+   The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
+   are). fovpt_scene_size() gives the bytes for a scene description
+   (primitives, BVH nodes, build data, light table); fovpt_scene_build() builds into them.
+   fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
+   the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
+   (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 68 bytes per pixel, plus 32 per pixel and frame
+   of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
+   caller buffers with an explicit row stride. Stack use per entry point: below 2 KiB (BVH
+   build: the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal: 4 bytes per
+   depth level; Whitted: a branch stack of 2 * FOVPT_MAX_WHITTED entries).
+
+ERRORS AND LOGGING
+   Every fallible function returns fov_result: FOV_OK (0) or a negative code;
+   fovpt_result_string() never returns NULL. Rejected before any work is done: NULL
+   pointers; zero, overflowing or over-cap sizes and counts; NaN or infinite vertices,
+   camera, gaze or parameters; degenerate triangles, spheres of radius <= 0, inverted boxes,
+   zero normals, quads of zero area (lights or not); indices out of range; a BVH deeper than
+   the cap (FOV_ERR_LIMIT); bad layer tables (radii not decreasing with the layer index,
+   stride < 1), and every out-of-range config field. Non-finite radiance (from a user hook,
+   say) is replaced by black and counted in fovpt_stats.bad_samples: images never hold NaN.
+   An optional fov_logger (desc.logger, cfg.logger) receives a message with each error
+   (messages with FOV_DEBUG; the code and line always).
+
+THREADING
+   No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
+   context whose settings are read-only; fovpt_trace_rows on disjoint row ranges may run on
+   as many threads as you like (each with its own fovpt_stats), then, after all of them,
+   fovpt_refine_rows (SELECTIVE, JIN) and after that fovpt_resolve_rows, each on disjoint
+   rows. Results do not depend on the split.
+
+NUMERICS
+   - float only. Secondary rays start at the hit point moved along the normal by
+     FOVPT_RAY_EPS * (1 + max |coordinate|) (default 1e-4): keep scenes of size 1e-2 .. 1e3
+     around the origin.
+   - Random streams are 32-bit integer hashes: identical on every target. Images are
+     identical across targets up to libm differences (tests/xtarget states the tolerance).
+
+PLATFORM NOTES
+   - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
+     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined.
+   - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
+   - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
+     __aeabi_d* routine is referenced (checked by tests/compile).
+
+LICENSE: see end of file.
+
+RECENT REVISION HISTORY
+   0.1.0 (2026-11-23) first release: geometry, BVH, path and Whitted tracers, UNIFORM method.
+*/
+
+#if defined(FOV_IMPL) && !defined(FOVPT_IMPLEMENTATION)
+#define FOVPT_IMPLEMENTATION
+#endif
+
+#ifndef FOVPT_H_INCLUDED
+#define FOVPT_H_INCLUDED
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FOVPT_VERSION_MAJOR 0
+#define FOVPT_VERSION_MINOR 1
+#define FOVPT_VERSION_PATCH 0
+#define FOVPT_VERSION_STRING "0.1.0"
+
+#ifndef FOVPT_MAX_LAYERS
+#define FOVPT_MAX_LAYERS 8
+#endif
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOVPT__UNUSED __attribute__((unused))
+#else
+#define FOVPT__UNUSED
+#endif
+
+#ifndef FOVPT_API
+#if defined(FOVPT_STATIC)
+#define FOVPT_API static FOVPT__UNUSED
+#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVPT_IMPLEMENTATION)
+#define FOVPT_API __declspec(dllexport)
+#elif defined(FOV_DLL) && defined(_WIN32)
+#define FOVPT_API __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOVPT_API __attribute__((visibility("default"))) extern
+#else
+#define FOVPT_API extern
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
+#ifndef FOV_COMMON_DEFINED
+#define FOV_COMMON_DEFINED
+/* Result codes of every fallible function in the fov headers. */
+typedef enum fov_result {
+    FOV_OK = 0,
+    FOV_ERR_INVALID_ARG = -1,  /* a parameter is out of its documented range */
+    FOV_ERR_TOO_SMALL = -2,    /* the memory or buffer passed is smaller than required */
+    FOV_ERR_LIMIT = -3,        /* a size is above a hard cap or overflows size_t */
+    FOV_ERR_NULL = -4,         /* a required pointer is NULL */
+    FOV_ERR_NOT_FINITE = -5,   /* NaN or infinity where a finite number is required */
+    FOV_ERR_DEGENERATE = -6,   /* degenerate geometry: camera, display, scene */
+    FOV_ERR_UNSUPPORTED = -7,  /* a valid request this build or version does not support */
+    _FOV_RESULT_FORCE_I32 = 0x7FFFFFFF
+} fov_result;
+
+typedef enum fov_log_level {
+    FOV_LOG_ERROR = 1,
+    FOV_LOG_WARN = 2,
+    FOV_LOG_INFO = 3,
+    _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
+} fov_log_level;
+
+/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
+   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
+                             uint32_t line, void *user);
+typedef struct fov_logger {
+    fov_log_func func;
+    void *user;
+} fov_logger;
+
+/* Gaze point in image pixels, continuous: pixel (i, j) covers [i, i+1) x [j, j+1), so its
+   centre is (i + 0.5, j + 0.5); y grows downwards. Must be finite; it may lie off-screen. */
+typedef struct fov_gaze {
+    float x, y;
+} fov_gaze;
+
+/* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
+   f (in pixels) from the image plane; the axis meets the image at its centre plus
+   (axis_dx, axis_dy) pixels. f comes from, in this order:
+     fov_y_deg > 0                      the image height subtends fov_y_deg at the eye
+                                        (an HMD, or a window whose view matches the camera)
+     pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
+     all zero                           the rendering camera's vertical field of view.
+   Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
+   through q and through the gaze point. This is the one definition all fov headers use. */
+typedef struct fov_display {
+    float fov_y_deg;
+    float pixel_pitch_mm;
+    float distance_mm;
+    float axis_dx, axis_dy;
+} fov_display;
+
+/* Precomputed eccentricity model (fill it with fovsdf_ecc_init / fovlp_ecc_init / ...). */
+typedef struct fov_ecc_model {
+    float cx, cy;    /* where the eye's axis meets the image, pixels */
+    float f_px;      /* eye to image plane, pixels */
+    float gx, gy;    /* the gaze point, pixels */
+    float g[3];      /* unit direction of the gaze ray */
+} fov_ecc_model;
+#endif /* FOV_COMMON_DEFINED */
+/* ---- end of the shared block ---- */
+
+/* ==== geometry and materials =============================================================== */
+
+typedef enum fovpt_shape_type {
+    FOVPT_SHAPE_SPHERE = 0, /* p = centre, r = radius (> 0) */
+    FOVPT_SHAPE_PLANE = 1,  /* p = a point on it, u = normal (non-zero; front side) */
+    FOVPT_SHAPE_QUAD = 2,   /* parallelogram p + s u + t v, s, t in [0, 1]; normal u x v */
+    FOVPT_SHAPE_BOX = 3,    /* axis-aligned, p = min corner, u = max corner (u >= p, not flat
+                               in more than one axis) */
+    _FOVPT_SHAPE_NUM,
+    _FOVPT_SHAPE_FORCE_U32 = 0x7FFFFFFF
+} fovpt_shape_type;
+
+typedef struct fovpt_shape {
+    uint32_t type;      /* fovpt_shape_type */
+    uint32_t material;  /* index into the scene's materials */
+    float p[3], u[3], v[3];
+    float r;
+} fovpt_shape;
+
+/* A triangle mesh: num_triangles triples of vertex indices (or, when indices is NULL,
+   consecutive vertex triples). Triangle k of the mesh reports the primitive id
+   num_shapes + (triangles of the meshes before it) + k. */
+typedef struct fovpt_mesh {
+    const float *positions;    /* 3 floats per vertex */
+    uint32_t num_vertices;
+    const uint32_t *indices;   /* 3 per triangle, or NULL */
+    uint32_t num_triangles;
+    uint32_t material;
+} fovpt_mesh;
+
+typedef enum fovpt_material_type {
+    FOVPT_MAT_LAMBERT = 0,    /* albedo kd: f = kd / pi */
+    FOVPT_MAT_PHONG = 1,      /* kd / pi + ks (a+2)/(2 pi) max(0, wr.wi)^a (seed 002 Eq. 3.7-3.8) */
+    FOVPT_MAT_MIRROR = 2,     /* perfect reflection tinted by albedo */
+    FOVPT_MAT_DIELECTRIC = 3, /* smooth glass of index ior, Fresnel-weighted, tinted by albedo */
+    _FOVPT_MAT_NUM,
+    _FOVPT_MAT_FORCE_U32 = 0x7FFFFFFF
+} fovpt_material_type;
+
+typedef struct fovpt_material {
+    uint32_t type;        /* fovpt_material_type */
+    float albedo[3];      /* kd (Lambert, Phong) or tint (mirror, dielectric), each in [0, 1] */
+    float specular[3];    /* ks (Phong), each in [0, 1]; kd + ks <= 1 conserves energy */
+    float exponent;       /* Phong a >= 0 */
+    float ior;            /* dielectric index of refraction > 0 (1.5 glass) */
+    float emission[3];    /* emitted radiance, >= 0, on both faces */
+} fovpt_material;
+
+/* User geometry (an SDF traced by fovsdf, for example). Called for every ray with the
+   current closest t as tmax; returns 1 and fills *t in (tmin, tmax), n (any length, facing
+   anywhere) and *material when it hits, else 0. Reported as primitive FOVPT_PRIM_USER. */
+typedef int (*fovpt_user_hit_fn)(const float org[3], const float dir[3], float tmin, float tmax,
+                                 float *t, float n[3], uint32_t *material, void *user);
+#define FOVPT_PRIM_USER 0xFFFFFFFEu
+#define FOVPT_PRIM_NONE 0xFFFFFFFFu
+
+typedef struct fovpt_scene_desc {
+    const fovpt_shape *shapes;       uint32_t num_shapes;
+    const fovpt_mesh *meshes;        uint32_t num_meshes;
+    const fovpt_material *materials; uint32_t num_materials;   /* at least 1 */
+    float background[3];       /* radiance of rays that leave the scene (>= 0) */
+    fovpt_user_hit_fn user_hit;      void *user;
+    uint32_t bvh_min_prims;    /* no BVH below this many bounded primitives       0: 8 */
+    uint32_t bvh_bins;         /* SAH bins per axis, 2 .. 32                      0: 12 */
+    uint32_t bvh_leaf;         /* primitives per leaf when SAH finds no better    0: 4
+                                  (1 .. 16; larger leaves only when SAH prefers them, up to 16) */
+    uint32_t bvh_max_depth;    /* depth cap, 2 .. FOVPT_MAX_BVH_DEPTH; deeper is an error
+                                                                       0: FOVPT_MAX_BVH_DEPTH */
+    uint32_t skip_degenerate;  /* 1: drop zero-area triangles instead of failing */
+    fov_logger logger;
+} fovpt_scene_desc;
+
+/* A built scene: everything lives in the caller's memory. Read-only after the build. */
+typedef struct fovpt_scene {
+    const void *prims;         /* internal primitive records */
+    const void *nodes;         /* BVH nodes (NULL: no BVH) */
+    const uint32_t *order;     /* primitive order of the BVH leaves */
+    const uint32_t *lights;    /* sampleable emitters (primitive slots) */
+    const float *light_cdf;    /* cumulative selection probability */
+    const float *light_area;
+    const fovpt_material *materials;
+    uint32_t num_prims, num_bounded, num_nodes, num_lights, num_materials, bvh_depth;
+    uint32_t num_skipped;      /* degenerate triangles dropped (skip_degenerate) */
+    float background[3];
+    fovpt_user_hit_fn user_hit;
+    void *user;
+    float bounds_lo[3], bounds_hi[3];  /* of the bounded primitives */
+} fovpt_scene;
+
+typedef struct fovpt_hit {
+    float t;
+    float p[3];        /* hit point */
+    float n[3];        /* unit geometric normal as defined by the shape (not flipped) */
+    uint32_t prim;     /* primitive id (see fovpt_mesh), FOVPT_PRIM_USER, or FOVPT_PRIM_NONE */
+    uint32_t material;
+    uint32_t slot;     /* internal primitive slot */
+} fovpt_hit;
+
+/* ==== camera ============================================================================== */
+
+/* Pinhole camera, the same convention as fovsdf_camera: pixel (i, j) centre looks along
+      fwd + ((i + 0.5) / width * 2 - 1) * tan(fov_y/2) * aspect * right
+          - ((j + 0.5) / height * 2 - 1) * tan(fov_y/2) * up
+   fwd = normalize(target - pos), right = normalize(fwd x up_hint), up = right x fwd.
+   An asymmetric frustum (OpenVR GetProjectionRaw) replaces the tangents: when any of
+   tan_left .. tan_top is non-zero, x runs from -tan_left to tan_right and y from tan_top
+   (row 0) down to -tan_bottom (all four > 0 ... as tangents of the half-angles). */
+typedef struct fovpt_camera {
+    float pos[3];
+    float target[3];
+    float up[3];            /* all zero: +y */
+    float fov_y_deg;        /* (0, 180); 0: 60 */
+    uint32_t width, height; /* 1 .. FOVPT_MAX_DIM */
+    float tan_left, tan_right, tan_bottom, tan_top; /* all 0: symmetric fov_y_deg */
+} fovpt_camera;
+
+/* ==== rendering settings =================================================================== */
+
+typedef enum fovpt_method {
+    FOVPT_METHOD_UNIFORM = 0,   /* every pixel, spp samples per frame (non-foveated) */
+    FOVPT_METHOD_LAYERS = 1,    /* seed 002: gaze-centred lattice layers */
+    FOVPT_METHOD_ZONES = 2,     /* seed 000 ch. 4: three zones at 1, 1/4, 1/16 density */
+    FOVPT_METHOD_SELECTIVE = 3, /* seed 004: selective foveated supersampling */
+    FOVPT_METHOD_JIN = 4,       /* Jin et al. 2009: 4 samples per problematic subpixel */
+    _FOVPT_METHOD_NUM,
+    _FOVPT_METHOD_FORCE_U32 = 0x7FFFFFFF
+} fovpt_method;
+
+typedef enum fovpt_mode {
+    FOVPT_MODE_PATH = 0,        /* Monte Carlo path tracing */
+    FOVPT_MODE_WHITTED = 1,     /* Whitted-style ray tracing (seed 004) */
+    _FOVPT_MODE_NUM,
+    _FOVPT_MODE_FORCE_U32 = 0x7FFFFFFF
+} fovpt_mode;
+
+#define FOVPT_RR_OFF 0xFFFFFFFFu
+
+/* Seed 002 layers. layer[0] is the background layer, the highest index the innermost one
+   (002 Eq. 3.2 indexing). Radii are eccentricities (degrees from the gaze, the shared model)
+   and must decrease with the index; layer[0].radius_deg is the occlusion mask (rays beyond
+   it are not traced; 0 = no mask). Lattice points of layer n: pixels (gx + k d, gy + l d)
+   with (gx, gy) the gaze pixel (snapped to multiples of d when snap = 1; layer 0 does not
+   move with the gaze) whose eccentricity is <= radius_deg + blend_deg / 2 (the blend band
+   needs both layers). */
+typedef struct fovpt_layer {
+    float radius_deg;
+    uint32_t stride;        /* d >= 1 */
+    uint32_t spp;           /* samples per target pixel >= 1 */
+} fovpt_layer;
+typedef struct fovpt_layers_cfg {
+    uint32_t count;         /* 2 .. FOVPT_MAX_LAYERS; 0: preset FOVPT_LAYERS_KTH_RADIUS */
+    fovpt_layer layer[FOVPT_MAX_LAYERS];
+    float blend_deg;        /* blend band width around each layer border; 0: 1 degree */
+    uint32_t blend_linear;  /* 1: linear vb profile; 0: smoothstep */
+    uint32_t snap;          /* 1: lattice origin snapped to multiples of d (no crawling) */
+} fovpt_layers_cfg;
+
+typedef enum fovpt_layers_preset_id {
+    FOVPT_LAYERS_KTH_RADIUS = 0,    /* 6/10/20 degrees read as radii, d = 1,2,3 + 4, 4 spp */
+    FOVPT_LAYERS_KTH_DIAMETER = 1,  /* 6/10/20 read as diameters: radii 3/5/10 */
+    _FOVPT_LAYERS_PRESET_NUM,
+    _FOVPT_LAYERS_PRESET_FORCE_U32 = 0x7FFFFFFF
+} fovpt_layers_preset_id;
+
+/* Seed 000 chapter 4 zones: inner (full density), middle (1/4: one ray per 2x2 pixels),
+   outer (1/16), Lanczos-upsampled, blended over an overlap. */
+typedef struct fovpt_zones_cfg {
+    float inner_deg;        /* 0: 7.5 (the thesis's 15 degrees read as a diameter) */
+    float middle_deg;       /* > inner_deg; 0: 32.5 (65 degrees as a diameter) */
+    float overlap_px;       /* linear blend width at each border, pixels; 0: 4 */
+    uint32_t lanczos_a;     /* Lanczos lobes, 2 or 3; 0: 3 */
+} fovpt_zones_cfg;
+
+/* Seed 004 selective foveated supersampling (also the JIN baseline). */
+typedef struct fovpt_selective_cfg {
+    float e_deg[5];         /* e_f, e_p, e_m, e_np, e_max; 0: 3.3, 5.5, 12.1, 30, 45 */
+    uint32_t n_sd[4];       /* samples per problematic subpixel by zone; 0: 9, 4, 2, 1 */
+    float tau_shape[4];     /* tau_fov shape (tau0, tau_f, tau'_f, tau_np); 0: 1, 2, 0.5, 12 */
+    float tau[9];           /* colour thresholds: col, poid, psn, psc, pte, soid, ssn, ssc,
+                               ste; 0: Fig. 6: 0.02, 0.05, 0.06, 0.06, 0.02, 0.02, 0.02, 0.06,
+                               0.02 */
+    float normal_tol_deg;   /* normals differing more are discordant; 0: 10 */
+    uint32_t fill_centre;   /* 1: non-problematic subpixels take the pixel colour (Jin);
+                               0: bilinear from the neighbours (004) */
+} fovpt_selective_cfg;
+
+/* Seed 004 temporal reuse (step 2) and smoothing (step 4); both off by default. */
+typedef struct fovpt_temporal_cfg {
+    uint32_t reuse;         /* 1: reuse pixels of the previous frame in the central region */
+    uint32_t n_reuse_max;   /* 1 .. 5; 0: 5 */
+    float tau_reuse;        /* > 0; 0: 1 */
+    float eps_depth;        /* relative first-hit distance tolerance; 0: 0.01 */
+    uint32_t smooth;        /* 1: eccentricity-dependent exponential smoothing */
+    uint32_t n_tpi;         /* previous frames blended, 1 .. 4; 0: 4 */
+    float alpha[6];         /* alpha at 0, e_f, e_p, e_m, e_np, e_max;
+                               0: 0.9, 0.8, 0.7, 0.5, 0.2, 0.1 */
+} fovpt_temporal_cfg;
+
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+typedef struct fovpt_config {
+    uint32_t method;        /* fovpt_method                                      0: uniform */
+    uint32_t mode;          /* fovpt_mode                                        0: path */
+    uint32_t spp;           /* UNIFORM samples per pixel per frame               0: 1 */
+    uint32_t max_depth;     /* bounces, <= FOVPT_MAX_BOUNCES      0: 8 (path), 3 (Whitted) */
+    uint32_t rr_start;      /* Russian roulette from this bounce; FOVPT_RR_OFF   0: 3 */
+    uint32_t no_nee;        /* 1: no next-event estimation (BSDF sampling only) */
+    uint32_t seed;          /* random stream seed (any value) */
+    uint32_t accumulate;    /* 1: trace_rows adds to the running mean (progressive) */
+    fovpt_layers_cfg layers;
+    fovpt_zones_cfg zones;
+    fovpt_selective_cfg selective;
+    fovpt_temporal_cfg temporal;
+    fov_display display;    /* for eccentricity; all zero: the camera's field of view */
+    fov_logger logger;
+} fovpt_config;
+
+/* ==== context, output, statistics ========================================================== */
+
+/* A camera's view for reprojection (temporal options). */
+typedef struct fovpt_view {
+    float pos[3], right[3], up[3], fwd[3];
+    float tan4[4];            /* x from tan4[0] to tan4[1], y from tan4[2] (top) to tan4[3] */
+} fovpt_view;
+
+typedef struct fovpt_ctx {    /* filled by fovpt_init */
+    fovpt_config cfg;         /* resolved */
+    const fovpt_scene *scene;
+    fovpt_camera cam;
+    fov_gaze gaze;
+    fov_ecc_model ecc;
+    float right[3], up[3], fwd[3];
+    float tx0, tx1, ty0, ty1; /* image-plane tangents: x from tx0 to tx1, y from ty0 (top) */
+    float *accum;             /* UNIFORM: 4 floats per pixel: rgb sum, weight */
+    /* LAYERS: per layer a lattice grid of 4 floats per point (rgb sum, weight; weight 0 =
+       not traced): point (k, l) is pixel (ox + k d, oy + l d), k < nx, l < ny */
+    float *layer_buf[FOVPT_MAX_LAYERS];
+    uint32_t layer_ox[FOVPT_MAX_LAYERS], layer_oy[FOVPT_MAX_LAYERS];
+    uint32_t layer_nx[FOVPT_MAX_LAYERS], layer_ny[FOVPT_MAX_LAYERS];
+    float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
+    fovpt_layers_cfg lay;     /* LAYERS: cfg.layers; ZONES: the three zones as static layers */
+    uint32_t lanczos;         /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
+    void *pre;                /* SELECTIVE, JIN: presample records, 52 bytes per pixel */
+    /* SELECTIVE, JIN with temporal options: a ring of frames, 8 floats per pixel (raw rgb,
+       first-hit distance or -1, colour reference rgb, reuse count), and their views */
+    float *hist[5];
+    fovpt_view hist_view[5];
+    uint32_t hist_slots, hist_cur, hist_valid;
+    void *mem;
+    size_t mem_size;
+} fovpt_ctx;
+
+/* Per-pixel outputs; every pointer may be NULL. Strides in elements per row; 0: packed. */
+typedef struct fovpt_output {
+    float *rgb;     uint32_t rgb_stride;    /* linear RGB, 3 floats per pixel */
+    uint8_t *rgb8;  uint32_t rgb8_stride;   /* sRGB-encoded 8-bit RGB, clamped */
+} fovpt_output;
+
+typedef struct fovpt_stats {
+    uint64_t samples;         /* camera samples */
+    uint64_t rays;            /* every ray: camera + bounce + shadow */
+    uint64_t camera_rays, bounce_rays, shadow_rays;
+    uint64_t bad_samples;     /* non-finite radiance replaced by black */
+    uint64_t layer_targets[FOVPT_MAX_LAYERS]; /* LAYERS: lattice points traced per layer */
+    uint64_t layer_samples[FOVPT_MAX_LAYERS]; /* LAYERS: their samples (targets x spp) */
+    /* SELECTIVE, JIN: problematic subpixels and their extra samples, per zone (fovea,
+       parafovea, perifovea, near periphery; JIN counts everything in zone 0) */
+    uint64_t problematic[4], extra_samples[4];
+    uint64_t reused;          /* temporal reuse: pixels copied from the previous frame */
+} fovpt_stats;
+
+/* A random stream: counter-based, deterministic per (seed, pixel, sample, frame). */
+typedef struct fovpt_rng {
+    uint32_t key, ctr;
+} fovpt_rng;
+
+/* ==== functions =========================================================================== */
+
+FOVPT_API const char *fovpt_result_string(fov_result r);    /* never NULL */
+FOVPT_API const char *fovpt_method_name(uint32_t method);   /* "uniform", ...; never NULL */
+
+FOVPT_API fovpt_config fovpt_config_default(void);
+/* Defaults filled in and every field validated (also the tables of the methods not used). */
+FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
+FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
+
+FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t height);
+/* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5). */
+FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3],
+                                      float dir[3]);
+
+FOVPT_API void fovpt_material_init(fovpt_material *m);   /* Lambert, albedo 0.8, ior 1.5 */
+FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, float r,
+                                  uint32_t material);
+FOVPT_API void fovpt_shape_plane(fovpt_shape *s, const float point[3], const float normal[3],
+                                 uint32_t material);
+FOVPT_API void fovpt_shape_quad(fovpt_shape *s, const float corner[3], const float u[3],
+                                const float v[3], uint32_t material);
+FOVPT_API void fovpt_shape_box(fovpt_shape *s, const float lo[3], const float hi[3],
+                               uint32_t material);
+FOVPT_API void fovpt_scene_desc_init(fovpt_scene_desc *d);
+
+/* Scene memory for a description (validates it completely), then the build. */
+FOVPT_API fov_result fovpt_scene_size(const fovpt_scene_desc *desc, size_t *bytes);
+FOVPT_API fov_result fovpt_scene_build(fovpt_scene *scene, const fovpt_scene_desc *desc,
+                                       void *mem, size_t bytes);
+
+/* Closest hit in (tmin, tmax): 1 and *hit filled, or 0 (also for bad input). dir need not be
+   unit length (t is in units of dir). _brute tests every primitive (the reference). */
+FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3],
+                              float tmin, float tmax, fovpt_hit *hit);
+FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3],
+                                    const float dir[3], float tmin, float tmax, fovpt_hit *hit);
+FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const float dir[3],
+                             float tmin, float tmax);
+
+FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint32_t sample,
+                              uint32_t frame);
+FOVPT_API float fovpt_rng_next(fovpt_rng *r);              /* uniform in [0, 1) */
+
+/* BSDF of a material at a surface with unit normal n (either side), unit wo (towards the
+   viewer). sample: draws wi; *weight = f cos / pdf (the throughput factor), *pdf (0 for a
+   delta lobe), returns 0 when the path ends (no valid direction). eval: f * cos(wi) and the
+   sampling pdf of wi (both 0 for delta materials). */
+FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const float wo[3],
+                                fovpt_rng *rng, float wi[3], float weight[3], float *pdf);
+FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const float wo[3],
+                               const float wi[3], float fcos[3], float *pdf);
+
+/* Radiance arriving at org from direction dir (the estimator of the path or Whitted mode of
+   a resolved config). Non-finite results are replaced by 0 (counted in stats). */
+FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *resolved,
+                                    const float org[3], const float dir[3], fovpt_rng *rng,
+                                    float rgb[3], fovpt_stats *stats);
+
+/* Eccentricity (the shared model; see fov_display): the same semantics as fovsdf_ecc_*. */
+FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *display,
+                                    float cam_fov_y_deg, uint32_t width, uint32_t height,
+                                    fov_gaze gaze);
+FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y); /* degrees */
+FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m);
+
+/* Context: working memory for a config and camera, then init (validates everything). */
+FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
+                                       size_t *bytes);
+FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg,
+                                const fovpt_scene *scene, const fovpt_camera *cam,
+                                fov_gaze gaze, void *mem, size_t bytes);
+/* A new camera pose (same size) and gaze for the next frame; resets the accumulation when
+   the camera changed. With temporal options (SELECTIVE, JIN) it also ends the frame just
+   rendered: call it once between frames (even when nothing moved), it makes that frame
+   history for reuse and smoothing. */
+FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov_gaze gaze);
+FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx);          /* clears accumulation, history */
+/* Phase 1: trace the samples of rows [y0, y1) for frame `frame` (any rows, any thread). */
+FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                      uint32_t y1, fovpt_stats *stats);
+/* Phase 2 (SELECTIVE, JIN; nothing for the other methods), after every row of the frame is
+   traced: the subpixel tests and the extra samples of rows [y0, y1) (reads the presamples
+   of the rows above and below). */
+FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                       uint32_t y1, fovpt_stats *stats);
+/* Phase 3, after every row of the frame is refined: reconstruct rows [y0, y1) into out. */
+FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1,
+                                        const fovpt_output *out);
+/* All phases for the whole image. */
+FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
+                                  fovpt_stats *stats);
+FOVPT_API void fovpt_output_init(fovpt_output *out);
+
+/* Foveation building blocks (exposed for tests and for callers with their own pipeline). */
+/* Catmull-Rom weights of v0..v3 at t in [0, 1] (seed 002 Eq. 3.17 with the t^3 coefficient
+   of v2 corrected to -3/2): they sum to 1, give v1 at t = 0 and v2 at t = 1. */
+FOVPT_API void fovpt_catmull_rom(float t, float w[4]);
+/* Seed 004 tau_fov(e): two quadratic Bezier curves (C1 spline) through (0, tau0),
+   (e_f, tau_f), (e_np, tau_np) with slope tau'_f at e_f and zero slope at both ends;
+   tau_np beyond e_np. FOV_ERR_INVALID_ARG (via *out = 0 and the return) when the shape
+   makes x(t) non-monotone. */
+FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *resolved, float e_deg, float *out);
+/* Seed 004 alpha(e): piecewise linear through the six nodes, clamped beyond e_max. */
+FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
+                            const fovpt_selective_cfg *resolved_s, float e_deg);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FOVPT_H_INCLUDED */
+
+/* ---- end of API; implementation below ---- */
+#ifdef __INTELLISENSE__
+#define FOVPT_IMPLEMENTATION
+#endif
+
+#if defined(FOVPT_IMPLEMENTATION) && !defined(FOVPT_IMPL_INCLUDED)
+#define FOVPT_IMPL_INCLUDED
+#include <float.h>
+#include <limits.h>
+
+/* ---- hooks ------------------------------------------------------------------------------ */
+#ifndef FOV_ASSERT
+#include <assert.h>
+#define FOV_ASSERT(c) assert(c)
+#endif
+
+#if defined(FOV_SQRTF) || defined(FOV_FLOORF) || defined(FOV_SINF) || defined(FOV_COSF) ||    \
+    defined(FOV_TANF) || defined(FOV_ATAN2F) || defined(FOV_EXPF) || defined(FOV_LOGF) ||      \
+    defined(FOV_POWF)
+#if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
+    !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
+    !defined(FOV_POWF)
+#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#endif
+#define FOVPT__HOOKED_MATH 1
+#endif
+
+#define FOVPT__PRIV static FOVPT__UNUSED
+
+/* Float tests without == (the library builds clean with -Wfloat-equal). */
+FOVPT__PRIV int fovpt__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOVPT__PRIV int fovpt__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+
+#if !defined(FOVPT__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#include <math.h>
+#define FOVPT__SQRT(x) sqrtf(x)
+#define FOVPT__FLOOR(x) floorf(x)
+#define FOVPT__SIN(x) sinf(x)
+#define FOVPT__COS(x) cosf(x)
+#define FOVPT__TAN(x) tanf(x)
+#define FOVPT__ATAN2(y, x) atan2f(y, x)
+#define FOVPT__EXP(x) expf(x)
+#define FOVPT__LOG(x) logf(x)
+#define FOVPT__POW(x, y) powf(x, y)
+#elif defined(FOVPT__HOOKED_MATH)
+#define FOVPT__SQRT(x) FOV_SQRTF(x)
+#define FOVPT__FLOOR(x) FOV_FLOORF(x)
+#define FOVPT__SIN(x) FOV_SINF(x)
+#define FOVPT__COS(x) FOV_COSF(x)
+#define FOVPT__TAN(x) FOV_TANF(x)
+#define FOVPT__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOVPT__EXP(x) FOV_EXPF(x)
+#define FOVPT__LOG(x) FOV_LOGF(x)
+#define FOVPT__POW(x, y) FOV_POWF(x, y)
+#else
+/* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
+   ranges the library uses; tests/test_fovpt.c checks them against libm). */
+#define FOVPT__SQRT(x) fovpt__sqrtf(x)
+#define FOVPT__FLOOR(x) fovpt__floorf(x)
+#define FOVPT__SIN(x) fovpt__sinf(x)
+#define FOVPT__COS(x) fovpt__cosf(x)
+#define FOVPT__TAN(x) (fovpt__sinf(x) / fovpt__cosf(x))
+#define FOVPT__ATAN2(y, x) fovpt__atan2f(y, x)
+#define FOVPT__EXP(x) fovpt__expf(x)
+#define FOVPT__LOG(x) fovpt__logf(x)
+#define FOVPT__POW(x, y) fovpt__powf(x, y)
+
+typedef union fovpt__bits { float f; uint32_t u; } fovpt__bits;
+
+FOVPT__PRIV float fovpt__sqrtf(float x)
+{
+#if defined(__wasm__) && defined(__clang__)
+    return __builtin_sqrtf(x); /* one f32.sqrt instruction */
+#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+#else
+    fovpt__bits b;
+    float y;
+    if (!(x > 0.0f)) return fovpt__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
+    y = b.f;
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = x * y;                          /* sqrt estimate; one Newton step on sqrt */
+    return 0.5f * (y + x / y);
+#endif
+}
+
+FOVPT__PRIV float fovpt__floorf(float x)
+{
+    float r;
+    if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
+    r = (float)(int32_t)x;
+    return r > x ? r - 1.0f : r;
+}
+
+/* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
+FOVPT__PRIV float fovpt__sin_k(float x)
+{
+    float x2 = x * x;
+    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
+                x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
+}
+FOVPT__PRIV float fovpt__cos_k(float x)
+{
+    float x2 = x * x;
+    return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
+                x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
+}
+/* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
+FOVPT__PRIV float fovpt__reduce(float x, int32_t *q)
+{
+    float k;
+    if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
+    k = fovpt__floorf(x * 0.63661977236758134f + 0.5f);
+    *q = (int32_t)k;
+    /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
+    return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
+}
+FOVPT__PRIV float fovpt__sinf(float x)
+{
+    int32_t q;
+    float r = fovpt__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovpt__sin_k(r);
+    case 1: return fovpt__cos_k(r);
+    case 2: return -fovpt__sin_k(r);
+    default: return -fovpt__cos_k(r);
+    }
+}
+FOVPT__PRIV float fovpt__cosf(float x)
+{
+    int32_t q;
+    float r = fovpt__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovpt__cos_k(r);
+    case 1: return -fovpt__sin_k(r);
+    case 2: return -fovpt__cos_k(r);
+    default: return fovpt__sin_k(r);
+    }
+}
+/* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
+FOVPT__PRIV float fovpt__atan01(float x)
+{
+    float off = 0.0f, z, z2;
+    if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
+    z = x;
+    z2 = z * z;
+    return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
+                 z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
+}
+FOVPT__PRIV float fovpt__atan2f(float y, float x)
+{
+    float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
+    if (fovpt__isnan(x) || fovpt__isnan(y)) return x + y;
+    if (fovpt__is0(ax) && fovpt__is0(ay)) return 0.0f;
+    a = ay <= ax ? fovpt__atan01(ay / ax) : 1.57079633f - fovpt__atan01(ax / ay);
+    if (x < 0.0f) a = 3.14159265f - a;
+    return y < 0.0f ? -a : a;
+}
+FOVPT__PRIV float fovpt__expf(float x)
+{
+    float k, r, p;
+    fovpt__bits b;
+    if (fovpt__isnan(x)) return x;
+    if (x > 88.7f) return FLT_MAX * 2.0f;
+    if (x < -103.0f) return 0.0f;
+    k = fovpt__floorf(x * 1.44269504f + 0.5f);
+    r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
+    p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
+        r * (8.3333333e-3f + r * 1.3888889e-3f)))));
+    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return p * b.f;
+}
+FOVPT__PRIV float fovpt__logf(float x)
+{
+    fovpt__bits b;
+    int32_t e;
+    float m, s, s2;
+    if (fovpt__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fovpt__is0(x)) return -FLT_MAX * 2.0f;
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    e = 0;
+    if (b.u < 0x00800000u) { b.f = x * 8388608.0f; e = -23; } /* subnormal */
+    e += (int32_t)((b.u >> 23) & 0xffu) - 127;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u; /* m in [1, 2) */
+    m = b.f;
+    if (m > 1.41421356f) { m *= 0.5f; e += 1; }
+    s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
+    s2 = s * s;
+    return (float)e * 0.693147181f +
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+}
+FOVPT__PRIV float fovpt__powf(float x, float y)
+{
+    if (fovpt__is0(y)) return 1.0f;
+    if (fovpt__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (x < 0.0f) {
+        float fy = fovpt__floorf(y);
+        float r;
+        if (fy < y || fy > y) return (x - x) / (x - x);
+        r = fovpt__expf(y * fovpt__logf(-x));
+        return ((int32_t)fovpt__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+    }
+    return fovpt__expf(y * fovpt__logf(x));
+}
+#endif
+
+#ifndef FOV_MEMSET
+#define FOV_MEMSET(p, v, n) fovpt__memset(p, v, n)
+FOVPT__PRIV void fovpt__memset(void *p, int v, size_t n)
+{
+    unsigned char *c = (unsigned char *)p;
+    while (n--) *c++ = (unsigned char)v;
+}
+#endif
+#ifndef FOV_MEMCPY
+#define FOV_MEMCPY(d, s, n) fovpt__memcpy(d, s, n)
+FOVPT__PRIV void fovpt__memcpy(void *d, const void *s, size_t n)
+{
+    unsigned char *a = (unsigned char *)d;
+    const unsigned char *b = (const unsigned char *)s;
+    while (n--) *a++ = *b++;
+}
+#endif
+
+
+#ifndef FOVPT_MAX_DIM
+#define FOVPT_MAX_DIM 65536u
+#endif
+#ifndef FOVPT_MAX_PRIMS
+#define FOVPT_MAX_PRIMS (1u << 26)
+#endif
+#ifndef FOVPT_MAX_BVH_DEPTH
+#define FOVPT_MAX_BVH_DEPTH 64
+#endif
+#ifndef FOVPT_MAX_BOUNCES
+#define FOVPT_MAX_BOUNCES 1024u
+#endif
+#ifndef FOVPT_MAX_SPP
+#define FOVPT_MAX_SPP 65536u
+#endif
+#ifndef FOVPT_MAX_WHITTED /* Whitted depth cap (the branch stack has 2x this many entries) */
+#define FOVPT_MAX_WHITTED 16u
+#endif
+#ifndef FOVPT_RAY_EPS
+#define FOVPT_RAY_EPS 1e-4f
+#endif
+#define FOVPT__BINS_MAX 32u
+#define FOVPT__LEAF_MAX 16u
+
+#define FOVPT__PI 3.14159265358979f
+#define FOVPT__DEG 0.0174532925199433f
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOVPT__PRIV int fovpt__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOVPT__PRIV int fovpt__finite3(const float v[3])
+{
+    return fovpt__finite(v[0]) && fovpt__finite(v[1]) && fovpt__finite(v[2]);
+}
+FOVPT__PRIV float fovpt__minf(float a, float b) { return a < b ? a : b; }
+FOVPT__PRIV float fovpt__maxf(float a, float b) { return a > b ? a : b; }
+FOVPT__PRIV float fovpt__absf(float a) { return a < 0.0f ? -a : a; }
+FOVPT__PRIV float fovpt__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOVPT__PRIV float fovpt__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOVPT__PRIV float fovpt__len(const float a[3]) { return FOVPT__SQRT(fovpt__dot(a, a)); }
+FOVPT__PRIV void fovpt__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+FOVPT__PRIV float fovpt__normalize(float v[3])
+{
+    float l = fovpt__len(v);
+    if (l > 0.0f && fovpt__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
+    return l;
+}
+FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
+FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
+FOVPT__PRIV void fovpt__sub3(float d[3], const float a[3], const float b[3])
+{
+    d[0] = a[0] - b[0]; d[1] = a[1] - b[1]; d[2] = a[2] - b[2];
+}
+FOVPT__PRIV void fovpt__madd3(float d[3], const float a[3], float s, const float b[3])
+{
+    d[0] = a[0] + s * b[0]; d[1] = a[1] + s * b[1]; d[2] = a[2] + s * b[2];
+}
+FOVPT__PRIV float fovpt__max3(const float v[3]) { return fovpt__maxf(v[0], fovpt__maxf(v[1], v[2])); }
+FOVPT__PRIV float fovpt__mean3(const float v[3]) { return (v[0] + v[1] + v[2]) * (1.0f / 3.0f); }
+FOVPT__PRIV int fovpt__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
+FOVPT__PRIV size_t fovpt__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+/* An orthonormal basis around unit n (Duff et al. 2017, branchless up to the sign). */
+FOVPT__PRIV void fovpt__basis(const float n[3], float t[3], float b[3])
+{
+    float sg = n[2] >= 0.0f ? 1.0f : -1.0f;
+    float a = -1.0f / (sg + n[2]);
+    float c = n[0] * n[1] * a;
+    fovpt__set3(t, 1.0f + sg * n[0] * n[0] * a, sg * c, -sg * n[0]);
+    fovpt__set3(b, c, sg + n[1] * n[1] * a, -n[1]);
+}
+
+#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+#define FOVPT__MSG(s) s
+#else
+#define FOVPT__MSG(s) ((const char *)0)
+#endif
+FOVPT__PRIV fov_result fovpt__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
+{
+    if (lg && lg->func) lg->func("fovpt", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOVPT__FAIL(lg, r, msg) return fovpt__err(lg, r, FOVPT__MSG(msg), (uint32_t)__LINE__)
+
+/* ---- results, names, configs ------------------------------------------------------------ */
+FOVPT_API const char *fovpt_result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+FOVPT_API const char *fovpt_method_name(uint32_t method)
+{
+    static const char *const names[] = { "uniform", "layers", "zones", "selective", "jin" };
+    return method < (uint32_t)_FOVPT_METHOD_NUM ? names[method] : "unknown";
+}
+
+FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *o, uint32_t preset)
+{
+    /* seed 002 sec. 3.1.3: 6, 10, 20 degrees; d = 4 (background), 3, 2, 1; 4 spp */
+    static const float rad[3] = { 20.0f, 10.0f, 6.0f };
+    uint32_t i;
+    if (!o) return FOV_ERR_NULL;
+    if (preset >= (uint32_t)_FOVPT_LAYERS_PRESET_NUM) return FOV_ERR_INVALID_ARG;
+    FOV_MEMSET(o, 0, sizeof *o);
+    o->count = 4;
+    o->layer[0].radius_deg = 0.0f; /* no occlusion mask */
+    o->layer[0].stride = 4;
+    o->layer[0].spp = 4;
+    for (i = 1; i < 4; ++i) {
+        o->layer[i].radius_deg = preset == FOVPT_LAYERS_KTH_DIAMETER ? 0.5f * rad[i - 1] : rad[i - 1];
+        o->layer[i].stride = 4u - i;
+        o->layer[i].spp = 4;
+    }
+    o->blend_deg = 1.0f;
+    return FOV_OK;
+}
+
+FOVPT__PRIV int fovpt__pos(float v) { return v > 0.0f && fovpt__finite(v); }
+FOVPT__PRIV int fovpt__bad_f(float v) { return !fovpt__finite(v); }
+
+FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out)
+{
+    fovpt_config c;
+    const fov_logger *lg;
+    uint32_t i;
+    if (!in || !out) return FOV_ERR_NULL;
+    c = *in;
+    lg = &c.logger;
+    if (c.method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
+    if (c.mode >= (uint32_t)_FOVPT_MODE_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mode");
+    if (c.spp == 0) c.spp = 1;
+    if (c.spp > FOVPT_MAX_SPP) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "spp above FOVPT_MAX_SPP");
+    if (c.max_depth == 0) c.max_depth = c.mode == FOVPT_MODE_WHITTED ? 3u : 8u;
+    if (c.max_depth > FOVPT_MAX_BOUNCES) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "max_depth above FOVPT_MAX_BOUNCES");
+    if (c.mode == FOVPT_MODE_WHITTED && c.max_depth > FOVPT_MAX_WHITTED)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "Whitted max_depth above FOVPT_MAX_WHITTED");
+    if (c.rr_start == 0) c.rr_start = 3;
+    if (c.no_nee > 1 || c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "no_nee / accumulate: 0 or 1");
+    /* layers (seed 002) */
+    if (c.layers.count == 0) {
+        float bd = c.layers.blend_deg;
+        uint32_t lin = c.layers.blend_linear, snap = c.layers.snap;
+        fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_RADIUS);
+        if (!(bd <= 0.0f && bd >= 0.0f)) c.layers.blend_deg = bd;
+        c.layers.blend_linear = lin;
+        c.layers.snap = snap;
+    }
+    if (c.layers.count < 2 || c.layers.count > FOVPT_MAX_LAYERS)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers.count: 2 .. FOVPT_MAX_LAYERS");
+    if (fovpt__bad_f(c.layers.blend_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "layers.blend_deg");
+    if (c.layers.blend_deg < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers.blend_deg < 0");
+    if (c.layers.blend_deg <= 0.0f) c.layers.blend_deg = 1.0f;
+    if (c.layers.blend_linear > 1 || c.layers.snap > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers flags: 0 or 1");
+    for (i = 0; i < c.layers.count; ++i) {
+        const fovpt_layer *L = &c.layers.layer[i];
+        if (fovpt__bad_f(L->radius_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "layer radius");
+        if (L->stride < 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer stride d < 1");
+        if (L->stride > 64) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "layer stride d > 64");
+        if (L->spp < 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer spp < 1");
+        if (L->spp > FOVPT_MAX_SPP) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "layer spp above FOVPT_MAX_SPP");
+        if (i == 0 && L->radius_deg < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mask radius < 0");
+        if (i > 0 && !(L->radius_deg > 0.0f && L->radius_deg < 180.0f))
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer radius not in (0, 180) degrees");
+        if (i > 1 && !(L->radius_deg < c.layers.layer[i - 1].radius_deg))
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer radii must decrease with the index (layer 0 outermost)");
+    }
+    if (c.layers.layer[0].radius_deg > 0.0f && !(c.layers.layer[1].radius_deg < c.layers.layer[0].radius_deg))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer 1 radius must lie inside the occlusion mask");
+    /* zones (seed 000) */
+    if (fovpt__bad_f(c.zones.inner_deg) || fovpt__bad_f(c.zones.middle_deg) || fovpt__bad_f(c.zones.overlap_px))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "zones");
+    if (c.zones.inner_deg <= 0.0f) c.zones.inner_deg = 7.5f;
+    if (c.zones.middle_deg <= 0.0f) c.zones.middle_deg = 32.5f;
+    if (c.zones.overlap_px <= 0.0f) c.zones.overlap_px = 4.0f;
+    if (c.zones.lanczos_a == 0) c.zones.lanczos_a = 3;
+    if (!(c.zones.middle_deg > c.zones.inner_deg) || c.zones.middle_deg >= 180.0f || c.zones.overlap_px > 64.0f ||
+        (c.zones.lanczos_a != 2 && c.zones.lanczos_a != 3))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "zones: inner < middle < 180, overlap <= 64 px, lanczos_a 2 or 3");
+    /* selective (seed 004) */
+    {
+        static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
+        static const uint32_t n_def[4] = { 9, 4, 2, 1 };
+        static const float ts_def[4] = { 1.0f, 2.0f, 0.5f, 12.0f };
+        static const float tau_def[9] = { 0.02f, 0.05f, 0.06f, 0.06f, 0.02f, 0.02f, 0.02f, 0.06f, 0.02f };
+        fovpt_selective_cfg *s = &c.selective;
+        int all0 = 1;
+        for (i = 0; i < 5; ++i) {
+            if (fovpt__bad_f(s->e_deg[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.e_deg");
+            if (s->e_deg[i] > 0.0f || s->e_deg[i] < 0.0f) all0 = 0;
+        }
+        if (all0) for (i = 0; i < 5; ++i) s->e_deg[i] = e_def[i];
+        for (i = 0; i < 5; ++i)
+            if (!(s->e_deg[i] > (i ? s->e_deg[i - 1] : 0.0f)) || s->e_deg[i] >= 180.0f)
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective.e_deg must increase, in (0, 180)");
+        if ((s->n_sd[0] | s->n_sd[1] | s->n_sd[2] | s->n_sd[3]) == 0)
+            for (i = 0; i < 4; ++i) s->n_sd[i] = n_def[i];
+        for (i = 0; i < 4; ++i)
+            if (s->n_sd[i] > 64) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "selective.n_sd > 64");
+        all0 = 1;
+        for (i = 0; i < 4; ++i) {
+            if (fovpt__bad_f(s->tau_shape[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.tau_shape");
+            if (s->tau_shape[i] > 0.0f || s->tau_shape[i] < 0.0f) all0 = 0;
+        }
+        if (all0) for (i = 0; i < 4; ++i) s->tau_shape[i] = ts_def[i];
+        for (i = 0; i < 9; ++i) {
+            if (fovpt__bad_f(s->tau[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.tau");
+            if (s->tau[i] < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective.tau < 0");
+            if (s->tau[i] <= 0.0f) s->tau[i] = tau_def[i];
+        }
+        if (fovpt__bad_f(s->normal_tol_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "normal_tol_deg");
+        if (s->normal_tol_deg <= 0.0f) s->normal_tol_deg = 10.0f;
+        if (s->normal_tol_deg > 180.0f || s->fill_centre > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective fill / normal_tol_deg");
+        {
+            /* tau_fov shape: positive, and x(t) monotone on both Bezier segments */
+            float t0 = s->tau_shape[0], tf = s->tau_shape[1], tp = s->tau_shape[2], tn = s->tau_shape[3];
+            float ef = s->e_deg[0], enp = s->e_deg[3];
+            if (!(t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
+                tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "tau_fov shape: tau'_f >= (tau_f-tau0)/e_f and >= (tau_np-tau_f)/(e_np-e_f), all > 0");
+        }
+    }
+    /* temporal (seed 004) */
+    {
+        static const float a_def[6] = { 0.9f, 0.8f, 0.7f, 0.5f, 0.2f, 0.1f };
+        fovpt_temporal_cfg *t = &c.temporal;
+        int all0 = 1;
+        if (t->reuse > 1 || t->smooth > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "temporal flags: 0 or 1");
+        if (t->n_reuse_max == 0) t->n_reuse_max = 5;
+        if (t->n_reuse_max > 5) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "n_reuse_max 1 .. 5");
+        if (fovpt__bad_f(t->tau_reuse) || fovpt__bad_f(t->eps_depth)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "temporal");
+        if (t->tau_reuse < 0.0f || t->eps_depth < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "temporal < 0");
+        if (t->tau_reuse <= 0.0f) t->tau_reuse = 1.0f;
+        if (t->eps_depth <= 0.0f) t->eps_depth = 0.01f;
+        if (t->n_tpi == 0) t->n_tpi = 4;
+        if (t->n_tpi > 4) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "n_tpi 1 .. 4");
+        for (i = 0; i < 6; ++i) {
+            if (fovpt__bad_f(t->alpha[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "temporal.alpha");
+            if (t->alpha[i] > 0.0f || t->alpha[i] < 0.0f) all0 = 0;
+        }
+        if (all0) for (i = 0; i < 6; ++i) t->alpha[i] = a_def[i];
+        for (i = 0; i < 6; ++i)
+            if (!(t->alpha[i] > 0.0f && t->alpha[i] <= 1.0f)) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "alpha in (0, 1]");
+    }
+    /* display */
+    if (fovpt__bad_f(c.display.fov_y_deg) || fovpt__bad_f(c.display.pixel_pitch_mm) ||
+        fovpt__bad_f(c.display.distance_mm) || fovpt__bad_f(c.display.axis_dx) || fovpt__bad_f(c.display.axis_dy))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "display");
+    *out = c;
+    return FOV_OK;
+}
+
+FOVPT_API fovpt_config fovpt_config_default(void)
+{
+    fovpt_config c;
+    FOV_MEMSET(&c, 0, sizeof c);
+    (void)fovpt_config_resolve(&c, &c);
+    return c;
+}
+
+/* ---- camera ------------------------------------------------------------------------------- */
+FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->target[2] = 1.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+/* Basis and image-plane tangents; validates the camera. */
+FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], float u[3], float f[3],
+                                           float tan4[4])
+{
+    float lf, lr, fy;
+    int asym;
+    if (!cam) return FOV_ERR_NULL;
+    if (cam->width == 0 || cam->height == 0) return FOV_ERR_INVALID_ARG;
+    if (cam->width > FOVPT_MAX_DIM || cam->height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
+    if (!fovpt__finite3(cam->pos) || !fovpt__finite3(cam->target) || !fovpt__finite3(cam->up) ||
+        !fovpt__finite(cam->fov_y_deg) || !fovpt__finite(cam->tan_left) || !fovpt__finite(cam->tan_right) ||
+        !fovpt__finite(cam->tan_bottom) || !fovpt__finite(cam->tan_top))
+        return FOV_ERR_NOT_FINITE;
+    fovpt__sub3(f, cam->target, cam->pos);
+    fovpt__copy3(u, cam->up);
+    if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
+    lf = fovpt__normalize(f);
+    if (!(lf > 0.0f) || !fovpt__finite(lf)) return FOV_ERR_DEGENERATE;
+    fovpt__normalize(u);
+    fovpt__cross(f, u, r);
+    lr = fovpt__normalize(r);
+    if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE;
+    fovpt__cross(r, f, u);
+    asym = fovpt__absf(cam->tan_left) > 0.0f || fovpt__absf(cam->tan_right) > 0.0f ||
+           fovpt__absf(cam->tan_bottom) > 0.0f || fovpt__absf(cam->tan_top) > 0.0f;
+    if (asym) {
+        if (!(cam->tan_left + cam->tan_right > 1e-6f) || !(cam->tan_bottom + cam->tan_top > 1e-6f) ||
+            cam->tan_left > 1e6f || cam->tan_right > 1e6f || cam->tan_top > 1e6f || cam->tan_bottom > 1e6f)
+            return FOV_ERR_INVALID_ARG;
+        tan4[0] = -cam->tan_left; tan4[1] = cam->tan_right;
+        tan4[2] = cam->tan_top; tan4[3] = -cam->tan_bottom;
+    } else {
+        float ty, tx;
+        fy = cam->fov_y_deg > 0.0f || cam->fov_y_deg < 0.0f ? cam->fov_y_deg : 60.0f;
+        if (!(fy > 0.0f && fy < 180.0f)) return FOV_ERR_INVALID_ARG;
+        ty = FOVPT__TAN(0.5f * fy * FOVPT__DEG);
+        tx = ty * (float)cam->width / (float)cam->height;
+        tan4[0] = -tx; tan4[1] = tx; tan4[2] = ty; tan4[3] = -ty;
+    }
+    return FOV_OK;
+}
+
+FOVPT__PRIV void fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
+                                uint32_t w, uint32_t h, float x, float y, float dir[3])
+{
+    float sx = tan4[0] + (tan4[1] - tan4[0]) * (x / (float)w);
+    float sy = tan4[2] + (tan4[3] - tan4[2]) * (y / (float)h);
+    dir[0] = f[0] + sx * r[0] + sy * u[0];
+    dir[1] = f[1] + sx * r[1] + sy * u[1];
+    dir[2] = f[2] + sx * r[2] + sy * u[2];
+    fovpt__normalize(dir);
+}
+
+FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
+{
+    float r[3], u[3], f[3], t4[4];
+    fov_result e;
+    if (!cam || !org || !dir) return FOV_ERR_NULL;
+    if (!fovpt__finite(x) || !fovpt__finite(y)) return FOV_ERR_NOT_FINITE;
+    e = fovpt__camera_setup(cam, r, u, f, t4);
+    if (e != FOV_OK) return e;
+    fovpt__copy3(org, cam->pos);
+    fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir);
+    return FOV_OK;
+}
+
+/* ---- materials, shapes, descriptions ------------------------------------------------------ */
+FOVPT_API void fovpt_material_init(fovpt_material *m)
+{
+    if (!m) return;
+    FOV_MEMSET(m, 0, sizeof *m);
+    m->albedo[0] = m->albedo[1] = m->albedo[2] = 0.8f;
+    m->exponent = 20.0f;
+    m->ior = 1.5f;
+}
+FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, float r, uint32_t material)
+{
+    if (!s) return;
+    FOV_MEMSET(s, 0, sizeof *s);
+    s->type = FOVPT_SHAPE_SPHERE;
+    fovpt__set3(s->p, cx, cy, cz);
+    s->r = r;
+    s->material = material;
+}
+FOVPT_API void fovpt_shape_plane(fovpt_shape *s, const float point[3], const float normal[3], uint32_t material)
+{
+    if (!s || !point || !normal) return;
+    FOV_MEMSET(s, 0, sizeof *s);
+    s->type = FOVPT_SHAPE_PLANE;
+    fovpt__copy3(s->p, point);
+    fovpt__copy3(s->u, normal);
+    s->material = material;
+}
+FOVPT_API void fovpt_shape_quad(fovpt_shape *s, const float corner[3], const float u[3], const float v[3],
+                                uint32_t material)
+{
+    if (!s || !corner || !u || !v) return;
+    FOV_MEMSET(s, 0, sizeof *s);
+    s->type = FOVPT_SHAPE_QUAD;
+    fovpt__copy3(s->p, corner);
+    fovpt__copy3(s->u, u);
+    fovpt__copy3(s->v, v);
+    s->material = material;
+}
+FOVPT_API void fovpt_shape_box(fovpt_shape *s, const float lo[3], const float hi[3], uint32_t material)
+{
+    if (!s || !lo || !hi) return;
+    FOV_MEMSET(s, 0, sizeof *s);
+    s->type = FOVPT_SHAPE_BOX;
+    fovpt__copy3(s->p, lo);
+    fovpt__copy3(s->u, hi);
+    s->material = material;
+}
+FOVPT_API void fovpt_scene_desc_init(fovpt_scene_desc *d)
+{
+    if (d) FOV_MEMSET(d, 0, sizeof *d);
+}
+
+/* ---- scene: internal records -------------------------------------------------------------- */
+/* One primitive. Triangle: a = v0, b = e1, c = e2. Sphere: a = centre, r. Quad: a = corner,
+   b = u, c = v, n = u x v / |u x v|. Box: a = lo, b = hi. Plane: a = point, n = unit normal. */
+typedef struct fovpt__prim {
+    uint32_t type, material, id, light; /* light: emitter slot + 1, 0 = not sampled */
+    float a[3], b[3], c[3], n[3];
+    float r;
+} fovpt__prim;
+#define FOVPT__TRI 7u
+
+typedef struct fovpt__node {
+    float lo[3];
+    uint32_t a;     /* leaf: first index into order; inner: left child (right = a + 1) */
+    float hi[3];
+    uint32_t n;     /* leaf: primitive count (>= 1); inner: 0 */
+} fovpt__node;
+
+typedef struct fovpt__layout {
+    size_t prims, nodes, order, lights, cdf, area, pbox, total;
+    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max;
+} fovpt__layout;
+
+FOVPT__PRIV int fovpt__tri_area2(const float *v0, const float *v1, const float *v2, float *area2)
+{
+    float e1[3], e2[3], c[3];
+    fovpt__sub3(e1, v1, v0);
+    fovpt__sub3(e2, v2, v0);
+    fovpt__cross(e1, e2, c);
+    *area2 = fovpt__len(c);
+    /* zero area, or below float resolution of the edge lengths */
+    return *area2 > 1e-12f * (fovpt__dot(e1, e1) + fovpt__dot(e2, e2)) && *area2 > 0.0f && fovpt__finite(*area2);
+}
+
+FOVPT__PRIV int fovpt__emissive(const fovpt_material *m) { return fovpt__nonzero3(m->emission); }
+
+/* Validates a description and computes the memory layout. */
+FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
+{
+    const fov_logger *lg;
+    uint32_t i, k;
+    uint64_t n_tris = 0, n_prims, n_bounded = 0, n_lights = 0, skipped = 0;
+    uint64_t sz;
+    if (!d) return FOV_ERR_NULL;
+    lg = &d->logger;
+    FOV_MEMSET(L, 0, sizeof *L);
+    if (!d->materials || d->num_materials == 0) FOVPT__FAIL(lg, FOV_ERR_NULL, "no materials");
+    if (d->num_materials > 65536u) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "more than 65536 materials");
+    if (d->num_shapes && !d->shapes) FOVPT__FAIL(lg, FOV_ERR_NULL, "shapes NULL with num_shapes > 0");
+    if (d->num_meshes && !d->meshes) FOVPT__FAIL(lg, FOV_ERR_NULL, "meshes NULL with num_meshes > 0");
+    if (d->num_shapes > FOVPT_MAX_PRIMS || d->num_meshes > FOVPT_MAX_PRIMS) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "counts above FOVPT_MAX_PRIMS");
+    if (!fovpt__finite3(d->background)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "background");
+    if (d->background[0] < 0.0f || d->background[1] < 0.0f || d->background[2] < 0.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "background < 0");
+    if (d->bvh_bins == 1 || d->bvh_bins > FOVPT__BINS_MAX) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_bins: 2 .. 32");
+    if (d->bvh_leaf > FOVPT__LEAF_MAX) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_leaf: 1 .. 16");
+    if (d->bvh_max_depth == 1 || d->bvh_max_depth > FOVPT_MAX_BVH_DEPTH)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_max_depth: 2 .. FOVPT_MAX_BVH_DEPTH");
+    if (d->skip_degenerate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "skip_degenerate: 0 or 1");
+    for (i = 0; i < d->num_materials; ++i) {
+        const fovpt_material *m = &d->materials[i];
+        if (m->type >= (uint32_t)_FOVPT_MAT_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "material type");
+        if (!fovpt__finite3(m->albedo) || !fovpt__finite3(m->specular) || !fovpt__finite3(m->emission) ||
+            !fovpt__finite(m->exponent) || !fovpt__finite(m->ior))
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "material value");
+        for (k = 0; k < 3; ++k) {
+            if (!(m->albedo[k] >= 0.0f && m->albedo[k] <= 1.0f) || !(m->specular[k] >= 0.0f && m->specular[k] <= 1.0f))
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "albedo / specular outside [0, 1]");
+            if (m->emission[k] < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "emission < 0");
+        }
+        if (m->exponent < 0.0f || m->exponent > 1e6f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "Phong exponent outside [0, 1e6]");
+        if (m->type == FOVPT_MAT_DIELECTRIC && !(m->ior > 0.0f && m->ior < 100.0f)) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "ior outside (0, 100)");
+    }
+    for (i = 0; i < d->num_shapes; ++i) {
+        const fovpt_shape *s = &d->shapes[i];
+        int em;
+        if (s->material >= d->num_materials) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "shape material index out of range");
+        em = fovpt__emissive(&d->materials[s->material]);
+        if (!fovpt__finite3(s->p) || !fovpt__finite3(s->u) || !fovpt__finite3(s->v) || !fovpt__finite(s->r))
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "shape value");
+        switch (s->type) {
+        case FOVPT_SHAPE_SPHERE:
+            if (!(s->r > 0.0f)) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "sphere radius <= 0");
+            if (!fovpt__finite(s->r * s->r * 16.0f)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "sphere radius too large");
+            ++n_bounded; n_lights += em ? 1u : 0u;
+            break;
+        case FOVPT_SHAPE_PLANE:
+            if (!(fovpt__dot(s->u, s->u) > 1e-30f)) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "plane normal zero");
+            break;
+        case FOVPT_SHAPE_QUAD: {
+            float c[3];
+            fovpt__cross(s->u, s->v, c);
+            if (!(fovpt__len(c) > 1e-12f * (fovpt__dot(s->u, s->u) + fovpt__dot(s->v, s->v))) || !fovpt__finite(fovpt__len(c)))
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, em ? "zero-area light (quad)" : "quad of zero area");
+            ++n_bounded; n_lights += em ? 1u : 0u;
+            break;
+        }
+        case FOVPT_SHAPE_BOX: {
+            int flat = 0;
+            for (k = 0; k < 3; ++k) {
+                if (s->u[k] < s->p[k]) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "box max < min");
+                if (!(s->u[k] > s->p[k])) ++flat;
+            }
+            if (flat > 1) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "box flat in two axes");
+            ++n_bounded;
+            break;
+        }
+        default: FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "shape type");
+        }
+    }
+    for (i = 0; i < d->num_meshes; ++i) {
+        const fovpt_mesh *m = &d->meshes[i];
+        uint64_t nv3 = (uint64_t)m->num_triangles * 3u;
+        int em;
+        if (m->num_triangles == 0) continue;
+        if (!m->positions) FOVPT__FAIL(lg, FOV_ERR_NULL, "mesh positions NULL");
+        if (m->material >= d->num_materials) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mesh material index out of range");
+        if (m->num_triangles > FOVPT_MAX_PRIMS || m->num_vertices > 3u * FOVPT_MAX_PRIMS)
+            FOVPT__FAIL(lg, FOV_ERR_LIMIT, "mesh counts above FOVPT_MAX_PRIMS");
+        if (!m->indices && nv3 > m->num_vertices) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "non-indexed mesh: fewer than 3 vertices per triangle");
+        for (k = 0; k < m->num_vertices; ++k)
+            if (!fovpt__finite3(m->positions + 3u * (size_t)k)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "mesh vertex NaN or infinite");
+        em = fovpt__emissive(&d->materials[m->material]);
+        for (k = 0; k < m->num_triangles; ++k) {
+            uint32_t i0, i1, i2;
+            float a2;
+            if (m->indices) {
+                i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u]; i2 = m->indices[3u * (size_t)k + 2u];
+                if (i0 >= m->num_vertices || i1 >= m->num_vertices || i2 >= m->num_vertices)
+                    FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mesh index out of range");
+            } else {
+                i0 = 3u * k; i1 = i0 + 1u; i2 = i0 + 2u;
+            }
+            if (!fovpt__tri_area2(m->positions + 3u * (size_t)i0, m->positions + 3u * (size_t)i1,
+                                  m->positions + 3u * (size_t)i2, &a2)) {
+                if (!d->skip_degenerate)
+                    FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, em ? "zero-area light (triangle)" : "degenerate (zero-area) triangle");
+                ++skipped;
+                continue;
+            }
+            ++n_tris;
+            n_lights += em ? 1u : 0u;
+        }
+    }
+    n_bounded += n_tris;
+    n_prims = (uint64_t)d->num_shapes + n_tris;
+    if (n_prims > FOVPT_MAX_PRIMS) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "primitives above FOVPT_MAX_PRIMS");
+    (void)skipped;
+    L->n_prims = (uint32_t)n_prims;
+    L->n_bounded = (uint32_t)n_bounded;
+    L->n_tris = (uint32_t)n_tris;
+    L->n_lights = (uint32_t)n_lights;
+    L->n_nodes_max = L->n_bounded ? 2u * L->n_bounded - 1u : 0u;
+    /* sizes in uint64_t, checked against SIZE_MAX */
+    sz = 0;
+    L->prims = 0;
+    sz += (uint64_t)fovpt__align(sizeof(fovpt__prim)) * 0u + (uint64_t)sizeof(fovpt__prim) * n_prims;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->nodes = (size_t)sz;
+    sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
+    L->order = (size_t)sz;
+    sz += 4u * (uint64_t)L->n_bounded;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->lights = (size_t)sz;
+    sz += 4u * n_lights;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->cdf = (size_t)sz;
+    sz += 4u * n_lights;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->area = (size_t)sz;
+    sz += 4u * n_lights;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid) */
+    sz += 36u * (uint64_t)L->n_bounded;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    if (sz > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene memory overflows size_t");
+    L->total = (size_t)sz;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_scene_size(const fovpt_scene_desc *desc, size_t *bytes)
+{
+    fovpt__layout L;
+    fov_result e;
+    if (!desc || !bytes) return FOV_ERR_NULL;
+    e = fovpt__plan(desc, &L);
+    if (e != FOV_OK) return e;
+    *bytes = L.total;
+    return FOV_OK;
+}
+
+FOVPT__PRIV void fovpt__prim_box(const fovpt__prim *p, float lo[3], float hi[3])
+{
+    uint32_t k;
+    for (k = 0; k < 3; ++k) {
+        switch (p->type) {
+        case FOVPT_SHAPE_SPHERE: lo[k] = p->a[k] - p->r; hi[k] = p->a[k] + p->r; break;
+        case FOVPT_SHAPE_QUAD: {
+            float x0 = p->a[k], x1 = p->a[k] + p->b[k], x2 = p->a[k] + p->c[k], x3 = x1 + p->c[k];
+            lo[k] = fovpt__minf(fovpt__minf(x0, x1), fovpt__minf(x2, x3));
+            hi[k] = fovpt__maxf(fovpt__maxf(x0, x1), fovpt__maxf(x2, x3));
+            break;
+        }
+        case FOVPT_SHAPE_BOX: lo[k] = p->a[k]; hi[k] = p->b[k]; break;
+        default: { /* triangle */
+            float x0 = p->a[k], x1 = p->a[k] + p->b[k], x2 = p->a[k] + p->c[k];
+            lo[k] = fovpt__minf(x0, fovpt__minf(x1, x2));
+            hi[k] = fovpt__maxf(x0, fovpt__maxf(x1, x2));
+            break;
+        }
+        }
+    }
+}
+
+FOVPT__PRIV float fovpt__half_area(const float lo[3], const float hi[3])
+{
+    float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+    if (!(dx >= 0.0f) || !(dy >= 0.0f) || !(dz >= 0.0f)) return 0.0f;
+    return dx * dy + dy * dz + dz * dx;
+}
+
+typedef struct fovpt__bin {
+    float lo[3], hi[3];
+    uint32_t n;
+} fovpt__bin;
+
+/* Binned SAH build (Wald 2007), iterative with an explicit work stack. */
+FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint32_t *order, float *pb,
+                                        const fovpt_scene_desc *d)
+{
+    typedef struct { uint32_t node, start, count, depth; } work;
+    work stack[FOVPT_MAX_BVH_DEPTH + 1];
+    const fov_logger *lg = &d->logger;
+    const fovpt__prim *prims = (const fovpt__prim *)s->prims;
+    uint32_t sp = 0, used = 1, max_depth = 0, i, k;
+    uint32_t bins = d->bvh_bins ? d->bvh_bins : 12u;
+    uint32_t leaf = d->bvh_leaf ? d->bvh_leaf : 4u;
+    uint32_t cap = d->bvh_max_depth ? d->bvh_max_depth : (uint32_t)FOVPT_MAX_BVH_DEPTH;
+    uint32_t nb = s->num_bounded;
+    for (i = 0; i < nb; ++i) {
+        float *q = pb + 9u * (size_t)i;
+        order[i] = i;
+        fovpt__prim_box(&prims[i], q, q + 3);
+        for (k = 0; k < 3; ++k) q[6 + k] = 0.5f * (q[k] + q[3 + k]);
+    }
+    stack[sp].node = 0; stack[sp].start = 0; stack[sp].count = nb; stack[sp].depth = 1; ++sp;
+    while (sp > 0) {
+        work w = stack[--sp];
+        fovpt__node *nd = &nodes[w.node];
+        float clo[3], chi[3], best_cost, leaf_cost, area;
+        uint32_t best_axis = 3, best_split = 0, mid;
+        for (k = 0; k < 3; ++k) { nd->lo[k] = clo[k] = FLT_MAX; nd->hi[k] = chi[k] = -FLT_MAX; }
+        for (i = w.start; i < w.start + w.count; ++i) {
+            const float *q = pb + 9u * (size_t)order[i];
+            for (k = 0; k < 3; ++k) {
+                nd->lo[k] = fovpt__minf(nd->lo[k], q[k]); nd->hi[k] = fovpt__maxf(nd->hi[k], q[3 + k]);
+                clo[k] = fovpt__minf(clo[k], q[6 + k]); chi[k] = fovpt__maxf(chi[k], q[6 + k]);
+            }
+        }
+        if (w.depth > max_depth) max_depth = w.depth;
+        area = fovpt__half_area(nd->lo, nd->hi);
+        leaf_cost = (float)w.count;
+        best_cost = FLT_MAX;
+        if (w.count > leaf) {
+            uint32_t axis;
+            for (axis = 0; axis < 3; ++axis) {
+                fovpt__bin bin[FOVPT__BINS_MAX];
+                float ext = chi[axis] - clo[axis], scale, rlo[3], rhi[3], ra[FOVPT__BINS_MAX];
+                uint32_t rn[FOVPT__BINS_MAX], b, cnt;
+                if (!(ext > 0.0f)) continue;
+                scale = (float)bins / ext;
+                for (b = 0; b < bins; ++b) {
+                    bin[b].n = 0;
+                    for (k = 0; k < 3; ++k) { bin[b].lo[k] = FLT_MAX; bin[b].hi[k] = -FLT_MAX; }
+                }
+                for (i = w.start; i < w.start + w.count; ++i) {
+                    const float *q = pb + 9u * (size_t)order[i];
+                    float fb = (q[6 + axis] - clo[axis]) * scale;
+                    b = fb >= (float)bins ? bins - 1u : (fb > 0.0f ? (uint32_t)fb : 0u);
+                    if (b >= bins) b = bins - 1u;
+                    bin[b].n++;
+                    for (k = 0; k < 3; ++k) {
+                        bin[b].lo[k] = fovpt__minf(bin[b].lo[k], q[k]); bin[b].hi[k] = fovpt__maxf(bin[b].hi[k], q[3 + k]);
+                    }
+                }
+                /* right sweep: areas and counts of bins b .. bins-1 */
+                for (k = 0; k < 3; ++k) { rlo[k] = FLT_MAX; rhi[k] = -FLT_MAX; }
+                cnt = 0;
+                for (b = bins - 1u; b > 0; --b) {
+                    for (k = 0; k < 3; ++k) { rlo[k] = fovpt__minf(rlo[k], bin[b].lo[k]); rhi[k] = fovpt__maxf(rhi[k], bin[b].hi[k]); }
+                    cnt += bin[b].n;
+                    rn[b] = cnt;
+                    ra[b] = fovpt__half_area(rlo, rhi);
+                }
+                for (k = 0; k < 3; ++k) { rlo[k] = FLT_MAX; rhi[k] = -FLT_MAX; }
+                cnt = 0;
+                for (b = 0; b + 1u < bins; ++b) { /* split after bin b */
+                    float cost;
+                    for (k = 0; k < 3; ++k) { rlo[k] = fovpt__minf(rlo[k], bin[b].lo[k]); rhi[k] = fovpt__maxf(rhi[k], bin[b].hi[k]); }
+                    cnt += bin[b].n;
+                    if (cnt == 0 || rn[b + 1u] == 0) continue;
+                    cost = fovpt__half_area(rlo, rhi) * (float)cnt + ra[b + 1u] * (float)rn[b + 1u];
+                    if (cost < best_cost) { best_cost = cost; best_axis = axis; best_split = b; }
+                }
+            }
+        }
+        /* SAH: traversal cost 1, intersection cost 1 per primitive */
+        if (w.count <= leaf || (w.count <= FOVPT__LEAF_MAX &&
+                                (best_axis == 3u || !(area > 0.0f) || 1.0f + best_cost / area >= leaf_cost))) {
+            nd->a = w.start; nd->n = w.count;
+            continue;
+        }
+        if (best_axis < 3u) {
+            float scale = (float)bins / (chi[best_axis] - clo[best_axis]);
+            uint32_t lo_i = w.start, hi_i = w.start + w.count;
+            while (lo_i < hi_i) {
+                const float *q = pb + 9u * (size_t)order[lo_i];
+                float fb = (q[6 + best_axis] - clo[best_axis]) * scale;
+                uint32_t b = fb >= (float)bins ? bins - 1u : (fb > 0.0f ? (uint32_t)fb : 0u);
+                if (b >= bins) b = bins - 1u;
+                if (b <= best_split) ++lo_i;
+                else { uint32_t t = order[lo_i]; order[lo_i] = order[--hi_i]; order[hi_i] = t; }
+            }
+            mid = lo_i - w.start;
+            if (mid == 0 || mid == w.count) mid = w.count / 2u; /* cannot happen; be safe */
+        } else {
+            mid = w.count / 2u; /* identical centroids: any split is as good */
+        }
+        if (w.depth + 1u > cap)
+            FOVPT__FAIL(lg, FOV_ERR_LIMIT, "BVH deeper than bvh_max_depth (FOVPT_MAX_BVH_DEPTH)");
+        FOV_ASSERT(used + 2u <= s->num_nodes);
+        nd->a = used; nd->n = 0;
+        stack[sp].node = used; stack[sp].start = w.start; stack[sp].count = mid; stack[sp].depth = w.depth + 1u; ++sp;
+        stack[sp].node = used + 1u; stack[sp].start = w.start + mid; stack[sp].count = w.count - mid; stack[sp].depth = w.depth + 1u; ++sp;
+        used += 2u;
+    }
+    s->num_nodes = used;
+    s->bvh_depth = max_depth;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d, void *mem, size_t bytes)
+{
+    fovpt__layout L;
+    fov_result e;
+    fovpt__prim *prims;
+    uint32_t i, k, np = 0, nl = 0, nb, skipped = 0;
+    unsigned char *base = (unsigned char *)mem;
+    uint32_t *lights;
+    float *cdf, *area, total = 0.0f;
+    if (!s || !d) return FOV_ERR_NULL;
+    e = fovpt__plan(d, &L);
+    if (e != FOV_OK) return e;
+    if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene memory NULL");
+    if (bytes < L.total) FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene memory smaller than fovpt_scene_size");
+    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene memory not 8-byte aligned");
+    FOV_MEMSET(s, 0, sizeof *s);
+    prims = (fovpt__prim *)(void *)(base + L.prims);
+    lights = (uint32_t *)(void *)(base + L.lights);
+    cdf = (float *)(void *)(base + L.cdf);
+    area = (float *)(void *)(base + L.area);
+    /* bounded primitives first (shapes, then triangles), planes last */
+    for (i = 0; i < d->num_shapes; ++i) {
+        const fovpt_shape *sh = &d->shapes[i];
+        fovpt__prim *p;
+        if (sh->type == FOVPT_SHAPE_PLANE) continue;
+        p = &prims[np++];
+        FOV_MEMSET(p, 0, sizeof *p);
+        p->type = sh->type; p->material = sh->material; p->id = i;
+        fovpt__copy3(p->a, sh->p); p->r = sh->r;
+        if (sh->type == FOVPT_SHAPE_QUAD) {
+            fovpt__copy3(p->b, sh->u); fovpt__copy3(p->c, sh->v);
+            fovpt__cross(sh->u, sh->v, p->n); fovpt__normalize(p->n);
+        } else if (sh->type == FOVPT_SHAPE_BOX) {
+            fovpt__copy3(p->b, sh->u);
+        }
+    }
+    {
+        uint32_t id = d->num_shapes;
+        for (i = 0; i < d->num_meshes; ++i) {
+            const fovpt_mesh *m = &d->meshes[i];
+            for (k = 0; k < m->num_triangles; ++k) {
+                uint32_t i0, i1, i2;
+                const float *v0, *v1, *v2;
+                float a2;
+                fovpt__prim *p;
+                if (m->indices) {
+                    i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u]; i2 = m->indices[3u * (size_t)k + 2u];
+                } else {
+                    i0 = 3u * k; i1 = i0 + 1u; i2 = i0 + 2u;
+                }
+                v0 = m->positions + 3u * (size_t)i0; v1 = m->positions + 3u * (size_t)i1; v2 = m->positions + 3u * (size_t)i2;
+                if (!fovpt__tri_area2(v0, v1, v2, &a2)) { ++skipped; continue; }
+                p = &prims[np++];
+                FOV_MEMSET(p, 0, sizeof *p);
+                p->type = FOVPT__TRI; p->material = m->material; p->id = id++;
+                fovpt__copy3(p->a, v0); fovpt__sub3(p->b, v1, v0); fovpt__sub3(p->c, v2, v0);
+                fovpt__cross(p->b, p->c, p->n); fovpt__normalize(p->n);
+                p->r = 0.5f * a2; /* area */
+            }
+        }
+    }
+    nb = np;
+    for (i = 0; i < d->num_shapes; ++i) {
+        const fovpt_shape *sh = &d->shapes[i];
+        fovpt__prim *p;
+        if (sh->type != FOVPT_SHAPE_PLANE) continue;
+        p = &prims[np++];
+        FOV_MEMSET(p, 0, sizeof *p);
+        p->type = FOVPT_SHAPE_PLANE; p->material = sh->material; p->id = i;
+        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__normalize(p->n);
+    }
+    FOV_ASSERT(np == L.n_prims && nb == L.n_bounded);
+    /* lights: sampleable emitters, picked by area * mean emission */
+    for (i = 0; i < nb; ++i) {
+        fovpt__prim *p = &prims[i];
+        const fovpt_material *m = &d->materials[p->material];
+        float a;
+        if (!fovpt__emissive(m) || p->type == FOVPT_SHAPE_BOX) continue;
+        if (p->type == FOVPT_SHAPE_SPHERE) a = 4.0f * FOVPT__PI * p->r * p->r;
+        else if (p->type == FOVPT_SHAPE_QUAD) { float c[3]; fovpt__cross(p->b, p->c, c); a = fovpt__len(c); }
+        else a = p->r;
+        lights[nl] = i;
+        area[nl] = a;
+        total += a * fovpt__mean3(m->emission);
+        cdf[nl] = total;
+        p->light = ++nl;
+    }
+    if (nl > 0) {
+        if (!(total > 0.0f) || !fovpt__finite(total)) FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "total emitted power not finite");
+        for (i = 0; i < nl; ++i) cdf[i] /= total;
+        cdf[nl - 1u] = 1.0f;
+    }
+    s->prims = prims;
+    s->order = (const uint32_t *)(void *)(base + L.order);
+    s->lights = lights;
+    s->light_cdf = cdf;
+    s->light_area = area;
+    s->materials = d->materials;
+    s->num_prims = np;
+    s->num_bounded = nb;
+    s->num_lights = nl;
+    s->num_materials = d->num_materials;
+    s->num_skipped = skipped;
+    fovpt__copy3(s->background, d->background);
+    s->user_hit = d->user_hit;
+    s->user = d->user;
+    for (k = 0; k < 3; ++k) { s->bounds_lo[k] = FLT_MAX; s->bounds_hi[k] = -FLT_MAX; }
+    for (i = 0; i < nb; ++i) {
+        float lo[3], hi[3];
+        fovpt__prim_box(&prims[i], lo, hi);
+        for (k = 0; k < 3; ++k) { s->bounds_lo[k] = fovpt__minf(s->bounds_lo[k], lo[k]); s->bounds_hi[k] = fovpt__maxf(s->bounds_hi[k], hi[k]); }
+    }
+    {
+        uint32_t minp = d->bvh_min_prims ? d->bvh_min_prims : 8u;
+        uint32_t *order = (uint32_t *)(void *)(base + L.order);
+        if (nb >= minp && nb > 0) {
+            s->num_nodes = L.n_nodes_max;
+            e = fovpt__build_bvh(s, (fovpt__node *)(void *)(base + L.nodes), order, (float *)(void *)(base + L.pbox), d);
+            if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
+            s->nodes = base + L.nodes;
+        } else {
+            for (i = 0; i < nb; ++i) order[i] = i;
+            s->nodes = NULL;
+            s->num_nodes = 0;
+        }
+    }
+    return FOV_OK;
+}
+
+/* ---- intersection ------------------------------------------------------------------------- */
+typedef struct fovpt__ray {
+    float o[3], d[3], inv[3];
+} fovpt__ray;
+
+/* Nearest t in (tmin, tmax) of one primitive, or a value >= tmax. */
+FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float tmin, float tmax)
+{
+    switch (p->type) {
+    case FOVPT__TRI: {
+        float pv[3], s[3], q[3], det, inv, u, v, t;
+        fovpt__cross(r->d, p->c, pv);
+        det = fovpt__dot(p->b, pv);
+        if (!(fovpt__absf(det) > 1e-30f)) return tmax;
+        inv = 1.0f / det;
+        fovpt__sub3(s, r->o, p->a);
+        u = fovpt__dot(s, pv) * inv;
+        if (!(u >= 0.0f && u <= 1.0f)) return tmax;
+        fovpt__cross(s, p->b, q);
+        v = fovpt__dot(r->d, q) * inv;
+        if (!(v >= 0.0f && u + v <= 1.0f)) return tmax;
+        t = fovpt__dot(p->c, q) * inv;
+        return (t > tmin && t < tmax) ? t : tmax;
+    }
+    case FOVPT_SHAPE_SPHERE: {
+        /* |o + t d - c|^2 = r^2 with the numerically stable form of the roots */
+        float oc[3], a, b, c, disc, sq, t0, t1, qq;
+        fovpt__sub3(oc, r->o, p->a);
+        a = fovpt__dot(r->d, r->d);
+        b = fovpt__dot(oc, r->d);
+        {   /* discriminant via the closest-approach distance (Hearn-Baker, Ray Tracing Gems ch. 7) */
+            float l[3];
+            fovpt__madd3(l, oc, -b / a, r->d);
+            disc = a * (p->r * p->r - fovpt__dot(l, l));
+        }
+        if (!(disc >= 0.0f)) return tmax;
+        c = fovpt__dot(oc, oc) - p->r * p->r;
+        sq = FOVPT__SQRT(disc);
+        qq = b > 0.0f ? -(b + sq) : -(b - sq);
+        t0 = c / qq;
+        t1 = qq / a;
+        if (t0 > t1) { float tt = t0; t0 = t1; t1 = tt; }
+        if (t0 > tmin && t0 < tmax) return t0;
+        if (t1 > tmin && t1 < tmax) return t1;
+        return tmax;
+    }
+    case FOVPT_SHAPE_QUAD: {
+        float dn = fovpt__dot(r->d, p->n), t, x[3], w[3], uu, uv, vv, wu, wv, det, s, tt;
+        if (!(fovpt__absf(dn) > 1e-30f)) return tmax;
+        fovpt__sub3(x, p->a, r->o);
+        t = fovpt__dot(x, p->n) / dn;
+        if (!(t > tmin && t < tmax)) return tmax;
+        fovpt__madd3(w, r->o, t, r->d);
+        fovpt__sub3(w, w, p->a);
+        uu = fovpt__dot(p->b, p->b); uv = fovpt__dot(p->b, p->c); vv = fovpt__dot(p->c, p->c);
+        wu = fovpt__dot(w, p->b); wv = fovpt__dot(w, p->c);
+        det = uu * vv - uv * uv;
+        s = (wu * vv - wv * uv) / det;
+        tt = (wv * uu - wu * uv) / det;
+        return (s >= 0.0f && s <= 1.0f && tt >= 0.0f && tt <= 1.0f) ? t : tmax;
+    }
+    case FOVPT_SHAPE_BOX: {
+        float t0 = tmin, t1 = tmax, tn = -FLT_MAX, tf = FLT_MAX;
+        uint32_t k;
+        for (k = 0; k < 3; ++k) {
+            float a = (p->a[k] - r->o[k]) * r->inv[k], b = (p->b[k] - r->o[k]) * r->inv[k];
+            if (a > b) { float tt = a; a = b; b = tt; }
+            tn = fovpt__maxf(tn, a); tf = fovpt__minf(tf, b);
+        }
+        if (!(tn <= tf)) return tmax;
+        if (tn > t0 && tn < t1) return tn;
+        if (tf > t0 && tf < t1) return tf;
+        return tmax;
+    }
+    case FOVPT_SHAPE_PLANE: {
+        float dn = fovpt__dot(r->d, p->n), x[3], t;
+        if (!(fovpt__absf(dn) > 1e-30f)) return tmax;
+        fovpt__sub3(x, p->a, r->o);
+        t = fovpt__dot(x, p->n) / dn;
+        return (t > tmin && t < tmax) ? t : tmax;
+    }
+    default: return tmax;
+    }
+}
+
+FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
+{
+    uint32_t k;
+    if (!fovpt__finite3(org) || !fovpt__finite3(dir) || !(fovpt__dot(dir, dir) > 0.0f)) return 0;
+    for (k = 0; k < 3; ++k) {
+        float d = dir[k];
+        r->o[k] = org[k];
+        r->d[k] = d;
+        if (fovpt__absf(d) < 1e-30f) d = d < 0.0f ? -1e-30f : 1e-30f;
+        r->inv[k] = 1.0f / d;
+    }
+    return 1;
+}
+
+FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax, float *tn_out)
+{
+    float tn = tmin, tf = tmax;
+    uint32_t k;
+    for (k = 0; k < 3; ++k) {
+        float a = (n->lo[k] - r->o[k]) * r->inv[k], b = (n->hi[k] - r->o[k]) * r->inv[k];
+        if (a > b) { float t = a; a = b; b = t; }
+        tn = a > tn ? a : tn;
+        tf = b < tf ? b : tf;
+    }
+    *tn_out = tn;
+    return tn <= tf;
+}
+
+/* Closest hit over bounded primitives (BVH or loop) and planes; returns the slot or NONE. */
+FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin, float *tmax,
+                                    int brute, int any, uint64_t *tests)
+{
+    const fovpt__prim *prims = (const fovpt__prim *)s->prims;
+    uint32_t best = FOVPT_PRIM_NONE, i;
+    float t;
+    (void)tests;
+    if (s->nodes && !brute) {
+        const fovpt__node *nodes = (const fovpt__node *)s->nodes;
+        uint32_t stack[FOVPT_MAX_BVH_DEPTH + 1], sp = 0, ni = 0;
+        float tn;
+        if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, &tn)) {
+            for (;;) {
+                const fovpt__node *nd = &nodes[ni];
+                if (nd->n) {
+                    for (i = nd->a; i < nd->a + nd->n; ++i) {
+                        uint32_t slot = s->order[i];
+                        t = fovpt__isect(&prims[slot], r, tmin, *tmax);
+                        if (t < *tmax) { *tmax = t; best = slot; if (any) return best; }
+                    }
+                } else {
+                    float t0, t1;
+                    int h0 = fovpt__box_hit(&nodes[nd->a], r, tmin, *tmax, &t0);
+                    int h1 = fovpt__box_hit(&nodes[nd->a + 1u], r, tmin, *tmax, &t1);
+                    if (h0 && h1) {
+                        uint32_t nearc = t0 <= t1 ? nd->a : nd->a + 1u;
+                        FOV_ASSERT(sp <= (uint32_t)FOVPT_MAX_BVH_DEPTH);
+                        stack[sp++] = nearc == nd->a ? nd->a + 1u : nd->a;
+                        ni = nearc;
+                        continue;
+                    }
+                    if (h0) { ni = nd->a; continue; }
+                    if (h1) { ni = nd->a + 1u; continue; }
+                }
+                /* pop, skipping nodes now beyond the closest hit */
+                for (;;) {
+                    if (sp == 0) { ni = FOVPT_PRIM_NONE; break; }
+                    ni = stack[--sp];
+                    if (fovpt__box_hit(&nodes[ni], r, tmin, *tmax, &tn)) break;
+                }
+                if (ni == FOVPT_PRIM_NONE) break;
+            }
+        }
+    } else {
+        for (i = 0; i < s->num_bounded; ++i) {
+            t = fovpt__isect(&prims[i], r, tmin, *tmax);
+            if (t < *tmax) { *tmax = t; best = i; if (any) return best; }
+        }
+    }
+    for (i = s->num_bounded; i < s->num_prims; ++i) {
+        t = fovpt__isect(&prims[i], r, tmin, *tmax);
+        if (t < *tmax) { *tmax = t; best = i; if (any) return best; }
+    }
+    return best;
+}
+
+FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float dir[3], float tmin, float tmax,
+                           fovpt_hit *h, int brute)
+{
+    fovpt__ray r;
+    float t = tmax, un[3];
+    uint32_t slot, umat = 0;
+    int user = 0;
+    if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
+    h->prim = FOVPT_PRIM_NONE;
+    if (!fovpt__ray_init(&r, org, dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
+    if (s->user_hit) {
+        float tu = t;
+        un[0] = un[1] = un[2] = 0.0f;
+        if (s->user_hit(org, dir, tmin, t, &tu, un, &umat, s->user) && tu > tmin && tu < t &&
+            umat < s->num_materials && fovpt__finite3(un) && fovpt__normalize(un) > 0.0f) {
+            t = tu;
+            user = 1;
+        }
+    }
+    if (!user && slot == FOVPT_PRIM_NONE) return 0;
+    h->t = t;
+    fovpt__madd3(h->p, org, t, dir);
+    if (user) {
+        fovpt__copy3(h->n, un);
+        h->prim = FOVPT_PRIM_USER;
+        h->material = umat;
+        h->slot = FOVPT_PRIM_USER;
+        return 1;
+    } else {
+        const fovpt__prim *p = (const fovpt__prim *)s->prims + slot;
+        h->prim = p->id;
+        h->material = p->material;
+        h->slot = slot;
+        if (p->type == FOVPT_SHAPE_SPHERE) {
+            fovpt__sub3(h->n, h->p, p->a);
+            fovpt__normalize(h->n);
+        } else if (p->type == FOVPT_SHAPE_BOX) {
+            /* the face: the axis where the hit is relatively closest to a slab */
+            float best = FLT_MAX;
+            uint32_t k, ax = 0;
+            float sg = 1.0f;
+            for (k = 0; k < 3; ++k) {
+                float ext = fovpt__maxf(p->b[k] - p->a[k], 1e-30f);
+                float d0 = fovpt__absf(h->p[k] - p->a[k]) / ext, d1 = fovpt__absf(h->p[k] - p->b[k]) / ext;
+                if (d0 < best) { best = d0; ax = k; sg = -1.0f; }
+                if (d1 < best) { best = d1; ax = k; sg = 1.0f; }
+            }
+            h->n[0] = h->n[1] = h->n[2] = 0.0f;
+            h->n[ax] = sg;
+        } else {
+            fovpt__copy3(h->n, p->n);
+        }
+    }
+    return 1;
+}
+
+FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3], float tmin,
+                              float tmax, fovpt_hit *hit)
+{
+    return fovpt__hit(s, org, dir, tmin, tmax, hit, 0);
+}
+FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3], const float dir[3], float tmin,
+                                    float tmax, fovpt_hit *hit)
+{
+    return fovpt__hit(s, org, dir, tmin, tmax, hit, 1);
+}
+FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const float dir[3], float tmin, float tmax)
+{
+    fovpt__ray r;
+    float t = tmax;
+    if (!s || !org || !dir || !s->prims) return 0;
+    if (!fovpt__ray_init(&r, org, dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
+    if (s->user_hit) {
+        float tu = tmax, un[3] = { 0.0f, 0.0f, 0.0f };
+        uint32_t um = 0;
+        if (s->user_hit(org, dir, tmin, tmax, &tu, un, &um, s->user) && tu > tmin && tu < tmax) return 1;
+    }
+    return 0;
+}
+
+/* ---- random streams ------------------------------------------------------------------------ */
+/* A 32-bit integer finaliser (lowbias32, C. Wellons' hash prospector): full avalanche. */
+FOVPT__PRIV uint32_t fovpt__mix(uint32_t x)
+{
+    x ^= x >> 16; x *= 0x7feb352du;
+    x ^= x >> 15; x *= 0x846ca68bu;
+    x ^= x >> 16;
+    return x;
+}
+FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint32_t sample, uint32_t frame)
+{
+    uint32_t k;
+    if (!r) return;
+    k = fovpt__mix(seed ^ 0x9e3779b9u);
+    k = fovpt__mix(k ^ pixel);
+    k = fovpt__mix(k + 0x85ebca6bu * sample);
+    k = fovpt__mix(k ^ (0xc2b2ae35u * (frame + 1u)));
+    r->key = k;
+    r->ctr = 0;
+}
+FOVPT_API float fovpt_rng_next(fovpt_rng *r)
+{
+    uint32_t x;
+    if (!r) return 0.0f;
+    x = fovpt__mix(fovpt__mix(r->key + 0x9e3779b9u * (r->ctr++)) ^ r->key);
+    return (float)(x >> 8) * (1.0f / 16777216.0f);
+}
+
+/* ---- BSDFs -------------------------------------------------------------------------------- */
+FOVPT__PRIV void fovpt__local(const float n[3], float x, float y, float z, float out[3])
+{
+    float t[3], b[3];
+    fovpt__basis(n, t, b);
+    out[0] = x * t[0] + y * b[0] + z * n[0];
+    out[1] = x * t[1] + y * b[1] + z * n[1];
+    out[2] = x * t[2] + y * b[2] + z * n[2];
+}
+FOVPT__PRIV void fovpt__cosine(const float n[3], float u1, float u2, float wi[3])
+{
+    float r = FOVPT__SQRT(u1), ph = 2.0f * FOVPT__PI * u2;
+    fovpt__local(n, r * FOVPT__COS(ph), r * FOVPT__SIN(ph), FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - u1)), wi);
+}
+FOVPT__PRIV void fovpt__reflect(const float n[3], const float wo[3], float wi[3])
+{
+    float c = 2.0f * fovpt__dot(n, wo);
+    wi[0] = c * n[0] - wo[0]; wi[1] = c * n[1] - wo[1]; wi[2] = c * n[2] - wo[2];
+}
+/* Phong lobe probabilities (seed 002 Eq. 3.9-3.12): pS = mean(ks) / (mean(ks) + mean(kd)). */
+FOVPT__PRIV float fovpt__phong_ps(const fovpt_material *m)
+{
+    float as = fovpt__mean3(m->specular), ad = fovpt__mean3(m->albedo);
+    return as + ad > 0.0f ? as / (as + ad) : 0.0f;
+}
+/* f cos and the mixture pdf of a Lambert or Phong material; ns faces wo. */
+FOVPT__PRIV void fovpt__eval_smooth(const fovpt_material *m, const float ns[3], const float wo[3], const float wi[3],
+                                    float fcos[3], float *pdf)
+{
+    float ci = fovpt__dot(ns, wi);
+    uint32_t k;
+    fcos[0] = fcos[1] = fcos[2] = 0.0f;
+    *pdf = 0.0f;
+    if (!(ci > 0.0f)) return;
+    if (m->type == FOVPT_MAT_LAMBERT) {
+        for (k = 0; k < 3; ++k) fcos[k] = m->albedo[k] * (ci / FOVPT__PI);
+        *pdf = ci / FOVPT__PI;
+    } else {
+        float wr[3], c, lobe = 0.0f, ps = fovpt__phong_ps(m), a = m->exponent;
+        fovpt__reflect(ns, wo, wr);
+        c = fovpt__dot(wr, wi);
+        if (c > 0.0f) lobe = FOVPT__POW(c, a) * (1.0f / (2.0f * FOVPT__PI));
+        for (k = 0; k < 3; ++k) fcos[k] = (m->albedo[k] / FOVPT__PI + m->specular[k] * (a + 2.0f) * lobe) * ci;
+        *pdf = (1.0f - ps) * ci / FOVPT__PI + ps * (a + 1.0f) * lobe;
+    }
+}
+FOVPT__PRIV float fovpt__fresnel(float cosi, float n1, float n2, float *cost)
+{
+    float eta = n1 / n2, s2 = eta * eta * (1.0f - cosi * cosi), ct, rs, rp;
+    if (s2 >= 1.0f) { *cost = 0.0f; return 1.0f; } /* total internal reflection */
+    ct = FOVPT__SQRT(1.0f - s2);
+    *cost = ct;
+    rs = (n1 * cosi - n2 * ct) / (n1 * cosi + n2 * ct);
+    rp = (n2 * cosi - n1 * ct) / (n2 * cosi + n1 * ct);
+    return 0.5f * (rs * rs + rp * rp);
+}
+
+FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const float wo[3], fovpt_rng *rng,
+                                float wi[3], float weight[3], float *pdf)
+{
+    float ns[3], u0, u1, u2;
+    uint32_t k;
+    if (!m || !n || !wo || !rng || !wi || !weight || !pdf) return 0;
+    weight[0] = weight[1] = weight[2] = 0.0f;
+    *pdf = 0.0f;
+    u0 = fovpt_rng_next(rng); u1 = fovpt_rng_next(rng); u2 = fovpt_rng_next(rng);
+    fovpt__copy3(ns, n);
+    if (fovpt__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
+    switch (m->type) {
+    case FOVPT_MAT_LAMBERT:
+        fovpt__cosine(ns, u1, u2, wi);
+        *pdf = fovpt__dot(ns, wi) / FOVPT__PI;
+        if (!(*pdf > 0.0f)) return 0;
+        fovpt__copy3(weight, m->albedo);
+        return 1;
+    case FOVPT_MAT_PHONG: {
+        float ps = fovpt__phong_ps(m), fcos[3];
+        if (!(fovpt__mean3(m->specular) + fovpt__mean3(m->albedo) > 0.0f)) return 0;
+        if (u0 < ps) { /* Phong lobe about the mirror direction: pdf (a+1)/(2 pi) cos^a */
+            float wr[3], ct = FOVPT__POW(u1, 1.0f / (m->exponent + 1.0f)), st, ph = 2.0f * FOVPT__PI * u2;
+            st = FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - ct * ct));
+            fovpt__reflect(ns, wo, wr);
+            fovpt__local(wr, st * FOVPT__COS(ph), st * FOVPT__SIN(ph), ct, wi);
+        } else {
+            fovpt__cosine(ns, u1, u2, wi);
+        }
+        fovpt__eval_smooth(m, ns, wo, wi, fcos, pdf);
+        if (!(*pdf > 0.0f)) return 0;
+        for (k = 0; k < 3; ++k) weight[k] = fcos[k] / *pdf;
+        return 1;
+    }
+    case FOVPT_MAT_MIRROR:
+        fovpt__reflect(ns, wo, wi);
+        fovpt__copy3(weight, m->albedo);
+        return 1;
+    case FOVPT_MAT_DIELECTRIC: {
+        float ci = fovpt__dot(n, wo), nn[3], n1, n2, cost, F;
+        int entering = ci > 0.0f;
+        if (entering) { fovpt__copy3(nn, n); n1 = 1.0f; n2 = m->ior; }
+        else { nn[0] = -n[0]; nn[1] = -n[1]; nn[2] = -n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci; }
+        F = fovpt__fresnel(ci, n1, n2, &cost);
+        if (u0 < F) {
+            fovpt__reflect(nn, wo, wi);
+        } else {
+            float eta = n1 / n2;
+            for (k = 0; k < 3; ++k) wi[k] = -eta * wo[k] + (eta * ci - cost) * nn[k];
+            fovpt__normalize(wi);
+        }
+        fovpt__copy3(weight, m->albedo);
+        return 1;
+    }
+    default: return 0;
+    }
+}
+
+FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const float wo[3], const float wi[3],
+                               float fcos[3], float *pdf)
+{
+    float ns[3];
+    if (!fcos || !pdf) return;
+    fcos[0] = fcos[1] = fcos[2] = 0.0f;
+    *pdf = 0.0f;
+    if (!m || !n || !wo || !wi) return;
+    if (m->type != FOVPT_MAT_LAMBERT && m->type != FOVPT_MAT_PHONG) return;
+    fovpt__copy3(ns, n);
+    if (fovpt__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
+    fovpt__eval_smooth(m, ns, wo, wi, fcos, pdf);
+}
+
+/* ---- lights -------------------------------------------------------------------------------- */
+FOVPT__PRIV float fovpt__light_pick_pdf(const fovpt_scene *s, uint32_t k)
+{
+    return k == 0 ? s->light_cdf[0] : s->light_cdf[k] - s->light_cdf[k - 1u];
+}
+/* Samples a point y (normal ny) on a light; returns the light index. */
+FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, float y[3], float ny[3])
+{
+    float u0 = fovpt_rng_next(rng), u1 = fovpt_rng_next(rng), u2 = fovpt_rng_next(rng);
+    uint32_t lo = 0, hi = s->num_lights - 1u;
+    const fovpt__prim *p;
+    while (lo < hi) { /* first k with cdf[k] > u0 */
+        uint32_t mid = (lo + hi) / 2u;
+        if (s->light_cdf[mid] > u0) hi = mid; else lo = mid + 1u;
+    }
+    p = (const fovpt__prim *)s->prims + s->lights[lo];
+    if (p->type == FOVPT_SHAPE_SPHERE) {
+        float z = 1.0f - 2.0f * u1, r = FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - z * z)), ph = 2.0f * FOVPT__PI * u2;
+        fovpt__set3(ny, r * FOVPT__COS(ph), r * FOVPT__SIN(ph), z);
+        fovpt__madd3(y, p->a, p->r, ny);
+    } else if (p->type == FOVPT_SHAPE_QUAD) {
+        fovpt__madd3(y, p->a, u1, p->b);
+        fovpt__madd3(y, y, u2, p->c);
+        fovpt__copy3(ny, p->n);
+    } else {
+        float su = FOVPT__SQRT(u1);
+        fovpt__madd3(y, p->a, su * (1.0f - u2), p->b);
+        fovpt__madd3(y, y, su * u2, p->c);
+        fovpt__copy3(ny, p->n);
+    }
+    return lo;
+}
+FOVPT__PRIV float fovpt__eps_at(const float p[3])
+{
+    return FOVPT_RAY_EPS * (1.0f + fovpt__maxf(fovpt__absf(p[0]), fovpt__maxf(fovpt__absf(p[1]), fovpt__absf(p[2]))));
+}
+/* p moved off the surface (normal n) to the side of direction d */
+FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d[3], float o[3])
+{
+    float e = fovpt__eps_at(p);
+    if (fovpt__dot(n, d) < 0.0f) e = -e;
+    fovpt__madd3(o, p, e, n);
+}
+
+/* ---- the path tracer (seed 002 Eq. 2.1, 3.4; one consistent estimator, see the doc block) -- */
+/* Seed 004 Table 1 attributes of a presample (this library has no textures: the texture
+   flags never differ). */
+typedef struct fovpt__attr {
+    uint32_t poid, soid;    /* primitive ids; FOVPT_PRIM_NONE: no hit, no secondary ray */
+    float pn[3], sn[3];     /* unit normals facing the incoming ray */
+    uint32_t psc, ssc;      /* shadow rays found occluded at the hit */
+    float pt;               /* distance of the primary hit (unit ray), -1: no hit */
+} fovpt__attr;
+FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
+{
+    float sg = fovpt__dot(h->n, d) > 0.0f ? -1.0f : 1.0f;
+    *oid = h->prim;
+    n[0] = sg * h->n[0]; n[1] = sg * h->n[1]; n[2] = sg * h->n[2];
+}
+
+FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
+                             fovpt_rng *rng, float L[3], fovpt_stats *st, fovpt__attr *at)
+{
+    float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f, prev_p[3] = { 0.0f, 0.0f, 0.0f };
+    int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0;
+    uint32_t bounce, k;
+    fovpt_hit h;
+    fovpt__copy3(o, org);
+    fovpt__copy3(d, dir);
+    fovpt__normalize(d);
+    L[0] = L[1] = L[2] = 0.0f;
+    for (bounce = 0;; ++bounce) {
+        const fovpt_material *m;
+        float wo[3], wi[3], wgt[3], pdf;
+        if (bounce) st->bounce_rays++;
+        if (!fovpt__hit(s, o, d, 0.0f, FLT_MAX, &h, 0)) {
+            for (k = 0; k < 3; ++k) L[k] += beta[k] * s->background[k];
+            break;
+        }
+        m = &s->materials[h.material];
+        if (at && bounce == 0) {
+            fovpt__attr_hit(&h, d, &at->poid, at->pn);
+            at->pt = h.t;
+            sec = m->type == FOVPT_MAT_MIRROR || m->type == FOVPT_MAT_DIELECTRIC;
+        } else if (at && bounce == 1 && sec) {
+            fovpt__attr_hit(&h, d, &at->soid, at->sn);
+        }
+        if (fovpt__emissive(m)) {
+            float w = 1.0f;
+            if (nee && !prev_delta && h.slot != FOVPT_PRIM_USER) {
+                const fovpt__prim *p = (const fovpt__prim *)s->prims + h.slot;
+                if (p->light) { /* power heuristic against the light-sampling pdf */
+                    float v[3], d2, cl, pl;
+                    fovpt__sub3(v, h.p, prev_p);
+                    d2 = fovpt__dot(v, v);
+                    cl = fovpt__absf(fovpt__dot(h.n, v)) / FOVPT__SQRT(d2);
+                    pl = cl > 0.0f ? fovpt__light_pick_pdf(s, p->light - 1u) * d2 / (s->light_area[p->light - 1u] * cl) : FLT_MAX;
+                    w = fovpt__finite(pl) ? prev_pdf * prev_pdf / (prev_pdf * prev_pdf + pl * pl) : 0.0f;
+                }
+            }
+            for (k = 0; k < 3; ++k) L[k] += beta[k] * m->emission[k] * w;
+        }
+        if (bounce >= c->max_depth) break;
+        wo[0] = -d[0]; wo[1] = -d[1]; wo[2] = -d[2];
+        if (nee && (m->type == FOVPT_MAT_LAMBERT || m->type == FOVPT_MAT_PHONG)) {
+            float y[3], ny[3], v[3], d2, dist, cl, fcos[3], pb, xo[3];
+            uint32_t li = fovpt__light_sample(s, rng, y, ny);
+            const fovpt__prim *lp = (const fovpt__prim *)s->prims + s->lights[li];
+            fovpt__sub3(v, y, h.p);
+            d2 = fovpt__dot(v, v);
+            dist = FOVPT__SQRT(d2);
+            if (dist > 0.0f) {
+                float vu[3];
+                vu[0] = v[0] / dist; vu[1] = v[1] / dist; vu[2] = v[2] / dist;
+                cl = fovpt__absf(fovpt__dot(ny, vu));
+                fovpt_bsdf_eval(m, h.n, wo, vu, fcos, &pb);
+                if (cl > 0.0f && (fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f)) {
+                    float sv[3];
+                    fovpt__offset(h.p, h.n, vu, xo);
+                    fovpt__sub3(sv, y, xo);
+                    st->shadow_rays++;
+                    if (!fovpt_occluded(s, xo, sv, 0.0f, 1.0f - 1e-4f)) {
+                        const fovpt_material *lm = &s->materials[lp->material];
+                        float pl = fovpt__light_pick_pdf(s, li) * d2 / (s->light_area[li] * cl);
+                        float w = pl * pl / (pl * pl + pb * pb);
+                        if (fovpt__finite(pl) && pl > 0.0f)
+                            for (k = 0; k < 3; ++k) L[k] += beta[k] * fcos[k] * lm->emission[k] * w / pl;
+                    } else if (at) {
+                        if (bounce == 0) at->psc++;
+                        else if (bounce == 1 && sec) at->ssc++;
+                    }
+                }
+            }
+        }
+        if (!fovpt_bsdf_sample(m, h.n, wo, rng, wi, wgt, &pdf)) break;
+        for (k = 0; k < 3; ++k) beta[k] *= wgt[k];
+        prev_pdf = pdf;
+        prev_delta = !(pdf > 0.0f);
+        fovpt__copy3(prev_p, h.p);
+        if (!(fovpt__max3(beta) > 0.0f)) break; /* zero throughput (seed 002) */
+        if (c->rr_start != FOVPT_RR_OFF && bounce + 1u >= c->rr_start) {
+            float q = fovpt__clampf(fovpt__max3(beta), 0.05f, 1.0f);
+            if (fovpt_rng_next(rng) >= q) break;
+            for (k = 0; k < 3; ++k) beta[k] /= q;
+        }
+        fovpt__offset(h.p, h.n, wi, o);
+        fovpt__copy3(d, wi);
+    }
+}
+
+/* ---- the Whitted-style tracer (seed 004; choices in the doc block) -------------------------- */
+FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
+                                float L[3], fovpt_stats *st, fovpt__attr *at)
+{
+    int sec_done = 0;
+    typedef struct { float o[3], d[3], w[3]; uint32_t depth; } branch;
+    branch stack[2u * FOVPT_MAX_WHITTED + 2u];
+    uint32_t sp = 0, k, li;
+    fovpt_hit h;
+    L[0] = L[1] = L[2] = 0.0f;
+    fovpt__copy3(stack[0].o, org);
+    fovpt__copy3(stack[0].d, dir);
+    fovpt__normalize(stack[0].d);
+    stack[0].w[0] = stack[0].w[1] = stack[0].w[2] = 1.0f;
+    stack[0].depth = 0;
+    sp = 1;
+    while (sp > 0) {
+        branch b = stack[--sp];
+        const fovpt_material *m;
+        float wo[3];
+        if (b.depth) st->bounce_rays++;
+        if (!fovpt__hit(s, b.o, b.d, 0.0f, FLT_MAX, &h, 0)) {
+            for (k = 0; k < 3; ++k) L[k] += b.w[k] * s->background[k];
+            if (b.depth == 1) sec_done = 1;
+            continue;
+        }
+        m = &s->materials[h.material];
+        if (at && b.depth == 0) { fovpt__attr_hit(&h, b.d, &at->poid, at->pn); at->pt = h.t; }
+        if (at && b.depth == 1 && !sec_done) fovpt__attr_hit(&h, b.d, &at->soid, at->sn);
+        for (k = 0; k < 3; ++k) L[k] += b.w[k] * m->emission[k];
+        wo[0] = -b.d[0]; wo[1] = -b.d[1]; wo[2] = -b.d[2];
+        if (m->type == FOVPT_MAT_LAMBERT || m->type == FOVPT_MAT_PHONG) {
+            for (k = 0; k < 3; ++k) L[k] += b.w[k] * m->albedo[k] * s->background[k]; /* ambient */
+            for (li = 0; li < s->num_lights; ++li) {
+                const fovpt__prim *lp = (const fovpt__prim *)s->prims + s->lights[li];
+                const fovpt_material *lm = &s->materials[lp->material];
+                float y[3], v[3], d2, dist, vu[3], g, fcos[3], pb, xo[3], sv[3];
+                if (lp->type == FOVPT_SHAPE_SPHERE) {
+                    float cx[3], dc;
+                    fovpt__sub3(cx, h.p, lp->a);
+                    dc = fovpt__normalize(cx);
+                    if (!(dc > lp->r)) continue; /* inside the light */
+                    fovpt__madd3(y, lp->a, lp->r, cx);
+                    g = FOVPT__PI * lp->r * lp->r / (dc * dc);
+                } else {
+                    if (lp->type == FOVPT_SHAPE_QUAD) { fovpt__madd3(y, lp->a, 0.5f, lp->b); fovpt__madd3(y, y, 0.5f, lp->c); }
+                    else { fovpt__madd3(y, lp->a, 1.0f / 3.0f, lp->b); fovpt__madd3(y, y, 1.0f / 3.0f, lp->c); }
+                    g = -1.0f;
+                }
+                fovpt__sub3(v, y, h.p);
+                d2 = fovpt__dot(v, v);
+                dist = FOVPT__SQRT(d2);
+                if (!(dist > 0.0f)) continue;
+                vu[0] = v[0] / dist; vu[1] = v[1] / dist; vu[2] = v[2] / dist;
+                if (g < 0.0f) g = s->light_area[li] * fovpt__absf(fovpt__dot(lp->n, vu)) / d2;
+                fovpt_bsdf_eval(m, h.n, wo, vu, fcos, &pb);
+                if (!(fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f) || !(g > 0.0f)) continue;
+                fovpt__offset(h.p, h.n, vu, xo);
+                fovpt__sub3(sv, y, xo);
+                st->shadow_rays++;
+                if (fovpt_occluded(s, xo, sv, 0.0f, 1.0f - 1e-4f)) {
+                    if (at && b.depth == 0) at->psc++;
+                    if (at && b.depth == 1 && !sec_done) at->ssc++;
+                    continue;
+                }
+                for (k = 0; k < 3; ++k) L[k] += b.w[k] * fcos[k] * lm->emission[k] * g;
+            }
+            if (b.depth == 1) sec_done = 1;
+            continue;
+        }
+        if (b.depth == 1) sec_done = 1;
+        if (b.depth >= c->max_depth) continue;
+        if (m->type == FOVPT_MAT_MIRROR) {
+            branch *nb = &stack[sp++];
+            fovpt__reflect(h.n, wo, nb->d);
+            fovpt__offset(h.p, h.n, nb->d, nb->o);
+            for (k = 0; k < 3; ++k) nb->w[k] = b.w[k] * m->albedo[k];
+            nb->depth = b.depth + 1u;
+        } else if (m->type == FOVPT_MAT_DIELECTRIC) {
+            float ci = fovpt__dot(h.n, wo), nn[3], n1, n2, cost, F;
+            branch *nb;
+            if (ci > 0.0f) { fovpt__copy3(nn, h.n); n1 = 1.0f; n2 = m->ior; }
+            else { nn[0] = -h.n[0]; nn[1] = -h.n[1]; nn[2] = -h.n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci; }
+            F = fovpt__fresnel(ci, n1, n2, &cost);
+            nb = &stack[sp++];
+            fovpt__reflect(nn, wo, nb->d);
+            fovpt__offset(h.p, h.n, nb->d, nb->o);
+            for (k = 0; k < 3; ++k) nb->w[k] = b.w[k] * m->albedo[k] * F;
+            nb->depth = b.depth + 1u;
+            if (F < 1.0f) {
+                float eta = n1 / n2;
+                nb = &stack[sp++];
+                for (k = 0; k < 3; ++k) nb->d[k] = -eta * wo[k] + (eta * ci - cost) * nn[k];
+                fovpt__normalize(nb->d);
+                fovpt__offset(h.p, h.n, nb->d, nb->o);
+                for (k = 0; k < 3; ++k) nb->w[k] = b.w[k] * m->albedo[k] * (1.0f - F);
+                nb->depth = b.depth + 1u;
+            }
+        }
+        FOV_ASSERT(sp <= 2u * FOVPT_MAX_WHITTED + 2u);
+    }
+}
+
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
+                                      fovpt__attr *at);
+FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                    const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats)
+{
+    return fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
+}
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
+                                      fovpt__attr *at)
+{
+    fovpt_stats local;
+    fovpt_stats *st = stats ? stats : &local;
+    if (at) {
+        FOV_MEMSET(at, 0, sizeof *at);
+        at->poid = at->soid = FOVPT_PRIM_NONE;
+        at->pt = -1.0f;
+    }
+    if (!s || !c || !org || !dir || !rng || !rgb) return FOV_ERR_NULL;
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    if (!s->prims && !s->user_hit && s->num_prims) return FOV_ERR_INVALID_ARG;
+    if (!fovpt__finite3(org) || !fovpt__finite3(dir)) return FOV_ERR_NOT_FINITE;
+    if (!(fovpt__dot(dir, dir) > 0.0f)) return FOV_ERR_DEGENERATE;
+    if (c->mode >= (uint32_t)_FOVPT_MODE_NUM || c->max_depth > FOVPT_MAX_BOUNCES ||
+        (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
+        return FOV_ERR_INVALID_ARG;
+    if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
+    else fovpt__path(s, c, org, dir, rng, rgb, st, at);
+    if (!fovpt__finite3(rgb)) {
+        rgb[0] = rgb[1] = rgb[2] = 0.0f;
+        st->bad_samples++;
+    }
+    return FOV_OK;
+}
+
+/* ---- eccentricity (the shared model, identical to fovsdf_ecc_*) ---------------------------- */
+FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                    uint32_t width, uint32_t height, fov_gaze gaze)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > FOVPT_MAX_DIM || height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
+    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y) || !fovpt__finite(cam_fov_y_deg) ||
+        !fovpt__finite(d->fov_y_deg) || !fovpt__finite(d->pixel_pitch_mm) ||
+        !fovpt__finite(d->distance_mm) || !fovpt__finite(d->axis_dx) || !fovpt__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVPT__TAN(0.5f * d->fov_y_deg * FOVPT__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fovpt__is0(d->pixel_pitch_mm) || !fovpt__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG;
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVPT__TAN(0.5f * cam_fov_y_deg * FOVPT__DEG);
+    }
+    if (!(f > 0.0f) || !fovpt__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fovpt__finite3(v) || !fovpt__finite(fovpt__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    fovpt__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    fovpt__cross(v, m->g, c);
+    s = fovpt__len(c);
+    co = fovpt__dot(v, m->g);
+    return FOVPT__ATAN2(s, co) * (180.0f / FOVPT__PI);
+}
+
+FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    return (m->f_px * m->f_px + r2) / m->f_px * FOVPT__DEG;
+}
+
+/* ---- context and rendering ------------------------------------------------------------------- */
+/* LAYERS: lattice grid size of layer n (covers the image for any gaze). */
+FOVPT__PRIV uint64_t fovpt__grid_cells(uint32_t w, uint32_t h, uint32_t d)
+{
+    return (uint64_t)(w / d + 2u) * (uint64_t)(h / d + 2u);
+}
+
+/* The layer table a method uses: LAYERS its own; ZONES (seed 000 ch. 4) three static
+   full-frame lattices of stride 4, 2, 1 (1/16, 1/4, all of the pixels) with the zone radii
+   (the blend width is set from the gaze's pixels per degree, fovpt__ctx_view). */
+FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
+{
+    if (c->method != FOVPT_METHOD_ZONES) { *o = c->layers; return; }
+    FOV_MEMSET(o, 0, sizeof *o);
+    o->count = 3;
+    o->layer[0].stride = 4; o->layer[0].spp = c->spp;
+    o->layer[1].stride = 2; o->layer[1].spp = c->spp; o->layer[1].radius_deg = c->zones.middle_deg;
+    o->layer[2].stride = 1; o->layer[2].spp = c->spp; o->layer[2].radius_deg = c->zones.inner_deg;
+    o->blend_deg = 1.0f;
+    o->blend_linear = 1; /* "we linearly interpolate a short overlapping boundary" */
+    o->snap = 1;         /* full-frame buffers: lattices do not move with the gaze */
+}
+
+/* temporal ring: the current frame plus n_tpi (smoothing) or 1 (reuse only) previous ones */
+FOVPT__PRIV uint32_t fovpt__hist_slots(const fovpt_config *c)
+{
+    if (!c->temporal.reuse && !c->temporal.smooth) return 0;
+    return (c->temporal.smooth ? c->temporal.n_tpi : 1u) + 1u;
+}
+
+FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam, size_t *bytes)
+{
+    uint64_t px, total = 0;
+    uint32_t n;
+    const fov_logger *lg = &c->logger;
+    if (c->method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
+    if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
+        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing: SELECTIVE and JIN only (seed 004)");
+    px = (uint64_t)cam->width * cam->height;
+    if (c->method == FOVPT_METHOD_UNIFORM) {
+        total = (px * 16u + 15u) & ~(uint64_t)15u;
+    } else if (c->method == FOVPT_METHOD_SELECTIVE || c->method == FOVPT_METHOD_JIN) {
+        total = ((px * 16u + 15u) & ~(uint64_t)15u) + ((px * 52u + 15u) & ~(uint64_t)15u);
+        total += (uint64_t)fovpt__hist_slots(c) * ((px * 32u + 15u) & ~(uint64_t)15u);
+    } else {
+        fovpt_layers_cfg lay;
+        fovpt__lay(c, &lay);
+        for (n = 0; n < lay.count; ++n)
+            total += (fovpt__grid_cells(cam->width, cam->height, lay.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
+    }
+    if (total > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "context memory overflows size_t");
+    *bytes = (size_t)total;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam, size_t *bytes)
+{
+    fovpt_config c;
+    float r[3], u[3], f[3], t4[4];
+    fov_result e;
+    if (!cfg || !cam || !bytes) return FOV_ERR_NULL;
+    e = fovpt_config_resolve(cfg, &c);
+    if (e != FOV_OK) return e;
+    e = fovpt__camera_setup(cam, r, u, f, t4);
+    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
+    return fovpt__ctx_bytes(&c, cam, bytes);
+}
+
+FOVPT__PRIV void fovpt__make_view(const fovpt_ctx *ctx, fovpt_view *v)
+{
+    fovpt__copy3(v->pos, ctx->cam.pos);
+    fovpt__copy3(v->right, ctx->right); fovpt__copy3(v->up, ctx->up); fovpt__copy3(v->fwd, ctx->fwd);
+    v->tan4[0] = ctx->tx0; v->tan4[1] = ctx->tx1; v->tan4[2] = ctx->ty0; v->tan4[3] = ctx->ty1;
+}
+/* The pixel of a view that sees world point p (0 when behind or off the image); its
+   distance from the view's pinhole in *dist. */
+FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, const float p[3], uint32_t *px, uint32_t *py,
+                               float *dist)
+{
+    float d[3], z, sx, sy, x, y;
+    fovpt__sub3(d, p, v->pos);
+    z = fovpt__dot(d, v->fwd);
+    if (!(z > 0.0f)) return 0;
+    sx = fovpt__dot(d, v->right) / z;
+    sy = fovpt__dot(d, v->up) / z;
+    x = (sx - v->tan4[0]) / (v->tan4[1] - v->tan4[0]) * (float)W;
+    y = (sy - v->tan4[2]) / (v->tan4[3] - v->tan4[2]) * (float)H;
+    if (!(x >= 0.0f && x < (float)W && y >= 0.0f && y < (float)H)) return 0;
+    *px = (uint32_t)x;
+    *py = (uint32_t)y;
+    *dist = fovpt__len(d);
+    return 1;
+}
+
+/* The eccentricity model of a camera: the display's, or the camera's own frustum; then the
+   per-layer lattice origins and traced radii (LAYERS). */
+FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
+{
+    fov_display d = ctx->cfg.display;
+    const fovpt_camera *cam = &ctx->cam;
+    fovpt_layers_cfg *L = &ctx->lay;
+    fov_result e;
+    uint32_t n;
+    int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f || d.pixel_pitch_mm < 0.0f ||
+                d.distance_mm > 0.0f || d.distance_mm < 0.0f;
+    if (!given) {
+        /* the camera frustum: f = H / (ty0 - ty1); the axis at the image point of tangent 0 */
+        float fpx = (float)cam->height / (ctx->ty0 - ctx->ty1);
+        d.fov_y_deg = 2.0f * FOVPT__ATAN2(0.5f * (float)cam->height, fpx) / FOVPT__DEG;
+        d.axis_dx += -ctx->tx0 * fpx - 0.5f * (float)cam->width;
+        d.axis_dy += ctx->ty0 * fpx - 0.5f * (float)cam->height;
+    }
+    e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
+    if (e != FOV_OK) return e;
+    if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
+        float gxf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
+        int32_t gx = (int32_t)gxf, gy = (int32_t)gyf; /* 32-bit: no 64-bit division helpers on MCUs */
+        float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOVPT__DEG);
+        if (ctx->cfg.method == FOVPT_METHOD_ZONES) /* overlap_px at the gaze, in degrees */
+            L->blend_deg = ctx->cfg.zones.overlap_px / fovpt__maxf(fovpt_ecc_ppd(&ctx->ecc), 1e-6f);
+        for (n = 0; n < L->count; ++n) {
+            int32_t d_ = (int32_t)L->layer[n].stride, ox = 0, oy = 0;
+            /* the filter's reach: 2 lattice cells (Catmull-Rom) or a (Lanczos), diagonally */
+            float reach = ctx->lanczos ? (float)ctx->lanczos : 2.0f;
+            float apron = (1.4142136f * reach * (float)L->layer[n].stride + 1.0f) * to_deg, tr;
+            if (n > 0) {
+                ox = ((gx % d_) + d_) % d_;
+                oy = ((gy % d_) + d_) % d_;
+                if (L->snap) ox = oy = 0;
+            }
+            ctx->layer_ox[n] = (uint32_t)ox;
+            ctx->layer_oy[n] = (uint32_t)oy;
+            ctx->layer_nx[n] = (uint32_t)(((int32_t)cam->width - ox + d_ - 1) / d_);
+            ctx->layer_ny[n] = (uint32_t)(((int32_t)cam->height - oy + d_ - 1) / d_);
+            if (n == 0) tr = r0 > 0.0f ? r0 + apron : FLT_MAX;
+            else {
+                tr = L->layer[n].radius_deg + 0.5f * L->blend_deg + apron;
+                if (r0 > 0.0f) tr = fovpt__minf(tr, r0 + apron);
+            }
+            ctx->layer_trace_deg[n] = tr;
+        }
+    }
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const fovpt_scene *scene,
+                                const fovpt_camera *cam, fov_gaze gaze, void *mem, size_t bytes)
+{
+    fovpt_config c;
+    float t4[4];
+    size_t need;
+    fov_result e;
+    if (!ctx || !cfg || !scene || !cam) return FOV_ERR_NULL;
+    e = fovpt_config_resolve(cfg, &c);
+    if (e != FOV_OK) return e;
+    if (!scene->prims && scene->num_prims) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
+    if (!scene->materials) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
+    FOV_MEMSET(ctx, 0, sizeof *ctx);
+    e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4);
+    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
+    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y)) FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "gaze");
+    e = fovpt__ctx_bytes(&c, cam, &need);
+    if (e != FOV_OK) return e;
+    if (need > 0 && !mem) FOVPT__FAIL(&c.logger, FOV_ERR_NULL, "context memory NULL");
+    if (bytes < need) FOVPT__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "context memory smaller than fovpt_memory_size");
+    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "context memory not 8-byte aligned");
+    ctx->cfg = c;
+    ctx->scene = scene;
+    ctx->cam = *cam;
+    ctx->gaze = gaze;
+    ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
+    fovpt__lay(&c, &ctx->lay);
+    ctx->lanczos = c.method == FOVPT_METHOD_ZONES ? c.zones.lanczos_a : 0u;
+    e = fovpt__ctx_view(ctx);
+    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "eccentricity model (display)");
+    ctx->mem = mem;
+    ctx->mem_size = bytes;
+    if (c.method == FOVPT_METHOD_UNIFORM) {
+        ctx->accum = (float *)mem;
+    } else if (c.method == FOVPT_METHOD_SELECTIVE || c.method == FOVPT_METHOD_JIN) {
+        size_t px = (size_t)cam->width * cam->height, off;
+        uint32_t k;
+        ctx->accum = (float *)mem;
+        ctx->pre = (unsigned char *)mem + fovpt__align(px * 16u);
+        off = fovpt__align(px * 16u) + fovpt__align(px * 52u);
+        ctx->hist_slots = fovpt__hist_slots(&c);
+        for (k = 0; k < ctx->hist_slots; ++k) {
+            ctx->hist[k] = (float *)(void *)((unsigned char *)mem + off);
+            off += fovpt__align(px * 32u);
+        }
+        fovpt__make_view(ctx, &ctx->hist_view[0]);
+    } else {
+        unsigned char *p = (unsigned char *)mem;
+        uint32_t n;
+        for (n = 0; n < ctx->lay.count; ++n) {
+            ctx->layer_buf[n] = (float *)(void *)p;
+            p += fovpt__align((size_t)fovpt__grid_cells(cam->width, cam->height, ctx->lay.layer[n].stride) * 16u);
+        }
+    }
+    return fovpt_reset(ctx);
+}
+
+FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
+{
+    uint32_t n;
+    if (!ctx) return FOV_ERR_NULL;
+    ctx->hist_valid = 0;
+    if (ctx->accum) FOV_MEMSET(ctx->accum, 0, (size_t)ctx->cam.width * ctx->cam.height * 16u);
+    for (n = 0; n < FOVPT_MAX_LAYERS; ++n)
+        if (ctx->layer_buf[n])
+            FOV_MEMSET(ctx->layer_buf[n], 0,
+                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height, ctx->lay.layer[n].stride) * 16u);
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov_gaze gaze)
+{
+    float r[3], u[3], f[3], t4[4];
+    fov_result e;
+    fovpt_camera old;
+    int moved;
+    if (!ctx || !cam) return FOV_ERR_NULL;
+    e = fovpt__camera_setup(cam, r, u, f, t4);
+    if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "camera");
+    if (cam->width != ctx->cam.width || cam->height != ctx->cam.height)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "camera size differs from fovpt_init's");
+    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y)) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "gaze");
+    old = ctx->cam;
+    moved = 0;
+    {
+        uint32_t k;
+        for (k = 0; k < 3; ++k)
+            if (old.pos[k] < cam->pos[k] || old.pos[k] > cam->pos[k] || old.target[k] < cam->target[k] ||
+                old.target[k] > cam->target[k] || old.up[k] < cam->up[k] || old.up[k] > cam->up[k])
+                moved = 1;
+        if (t4[0] < ctx->tx0 || t4[0] > ctx->tx0 || t4[2] < ctx->ty0 || t4[2] > ctx->ty0 ||
+            t4[1] < ctx->tx1 || t4[1] > ctx->tx1 || t4[3] < ctx->ty1 || t4[3] > ctx->ty1)
+            moved = 1;
+        /* LAYERS: the lattices move with the gaze */
+        if (ctx->cfg.method != FOVPT_METHOD_UNIFORM &&
+            (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y || gaze.y > ctx->gaze.y))
+            moved = 1;
+    }
+    ctx->cam = *cam;
+    ctx->gaze = gaze;
+    fovpt__copy3(ctx->right, r); fovpt__copy3(ctx->up, u); fovpt__copy3(ctx->fwd, f);
+    ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
+    e = fovpt__ctx_view(ctx);
+    if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "eccentricity model (display)");
+    if (ctx->hist_slots) { /* the frame just rendered becomes history; nothing is reset */
+        ctx->hist_cur = (ctx->hist_cur + 1u) % ctx->hist_slots;
+        if (ctx->hist_valid + 1u < ctx->hist_slots) ctx->hist_valid++;
+        fovpt__make_view(ctx, &ctx->hist_view[ctx->hist_cur]);
+        return FOV_OK;
+    }
+    if (moved) return fovpt_reset(ctx);
+    return FOV_OK;
+}
+
+/* SELECTIVE, JIN: a presample (48 bytes): colour reference and seed 004 Table 1 attributes */
+typedef struct fovpt__pre {
+    float col[3];
+    uint32_t poid, soid;
+    float pn[3], sn[3];
+    uint32_t sc;              /* primary shadow count | secondary << 16 */
+    float t;                  /* primary hit distance, -1: no hit */
+} fovpt__pre;
+
+FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
+{
+    uint32_t n;
+    s->rays = s->camera_rays + s->bounce_rays + s->shadow_rays;
+    if (!d) return;
+    d->samples += s->samples; d->rays += s->rays; d->camera_rays += s->camera_rays;
+    d->bounce_rays += s->bounce_rays; d->shadow_rays += s->shadow_rays; d->bad_samples += s->bad_samples;
+    for (n = 0; n < FOVPT_MAX_LAYERS; ++n) {
+        d->layer_targets[n] += s->layer_targets[n];
+        d->layer_samples[n] += s->layer_samples[n];
+    }
+    for (n = 0; n < 4; ++n) {
+        d->problematic[n] += s->problematic[n];
+        d->extra_samples[n] += s->extra_samples[n];
+    }
+    d->reused += s->reused;
+}
+
+/* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
+FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp, uint32_t sample0,
+                              float sum[3], fovpt_stats *st)
+{
+    uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
+    float t4[4];
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    sum[0] = sum[1] = sum[2] = 0.0f;
+    for (s = 0; s < spp; ++s) {
+        fovpt_rng rng;
+        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
+        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
+        jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
+        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
+        st->camera_rays++;
+        (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, st);
+        sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
+    }
+    st->samples += spp;
+}
+
+FOVPT__PRIV void fovpt__store(float *acc, const float sum[3], uint32_t spp, uint32_t accumulate)
+{
+    if (accumulate) {
+        acc[0] += sum[0]; acc[1] += sum[1]; acc[2] += sum[2]; acc[3] += (float)spp;
+    } else {
+        acc[0] = sum[0]; acc[1] = sum[1]; acc[2] = sum[2]; acc[3] = (float)spp;
+    }
+}
+
+FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
+{
+    fovpt_stats st;
+    uint32_t x, y, n, W, H;
+    if (!ctx || !ctx->scene || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
+    W = ctx->cam.width; H = ctx->cam.height;
+    if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    FOV_MEMSET(&st, 0, sizeof st);
+    if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                float sum[3];
+                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &st);
+                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp, ctx->cfg.accumulate);
+            }
+    } else if (ctx->pre) {
+        /* SELECTIVE, JIN step 1 (seed 004 Fig. 4 A-3): one ray through each pixel centre,
+           colour reference and attributes */
+        float t4[4];
+        t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                fovpt__pre *P = (fovpt__pre *)ctx->pre + ((size_t)y * W + x);
+                fovpt__attr at;
+                fovpt_rng rng;
+                float dir[3];
+                fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
+                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+                st.camera_rays++;
+                st.samples++;
+                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, P->col, &st, &at);
+                P->poid = at.poid; P->soid = at.soid;
+                fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
+                P->sc = (at.psc > 65535u ? 65535u : at.psc) | ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
+                P->t = at.pt;
+            }
+    } else {
+        /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
+        for (n = 0; n < ctx->lay.count; ++n) {
+            uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
+            uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
+            float tr = ctx->layer_trace_deg[n];
+            /* lattice rows whose pixel row lies in [y0, y1) */
+            uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
+            for (l = l0; l < ctx->layer_ny[n]; ++l) {
+                uint32_t py = oy + l * d;
+                if (py >= y1) break;
+                for (k = 0; k < nx; ++k) {
+                    uint32_t px = ox + k * d;
+                    float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
+                    if (fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f) > tr) {
+                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
+                        continue;
+                    }
+                    fovpt__pixel(ctx, frame, px, py, spp, n << 16, sum, &st);
+                    fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
+                    st.layer_targets[n]++;
+                    st.layer_samples[n] += spp;
+                }
+            }
+        }
+    }
+    fovpt__add_stats(stats, &st);
+    return FOV_OK;
+}
+
+/* ---- SELECTIVE and JIN: subpixel inspection and multisampling (seed 004 sec. 3.2) -------- */
+/* Step 1 of the two-step test: the threshold of the most sensitive discordant attribute
+   (Table 1), else tau_col. tau[]: col, poid, psn, psc, pte, soid, ssn, ssc, ste. */
+FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre *P, const fovpt__pre *const Q[3], float cos_tol)
+{
+    float m = FLT_MAX;
+    uint32_t k;
+    for (k = 0; k < 3; ++k) {
+        const fovpt__pre *q = Q[k];
+        if (P->poid != q->poid) m = fovpt__minf(m, sc->tau[1]);
+        else if (P->poid != FOVPT_PRIM_NONE && fovpt__dot(P->pn, q->pn) < cos_tol) m = fovpt__minf(m, sc->tau[2]);
+        if ((P->sc & 0xFFFFu) != (q->sc & 0xFFFFu)) m = fovpt__minf(m, sc->tau[3]);
+        if (P->soid != q->soid) m = fovpt__minf(m, sc->tau[5]);
+        else if (P->soid != FOVPT_PRIM_NONE && fovpt__dot(P->sn, q->sn) < cos_tol) m = fovpt__minf(m, sc->tau[6]);
+        if ((P->sc >> 16) != (q->sc >> 16)) m = fovpt__minf(m, sc->tau[7]);
+        /* texture flags (pte, ste): no textures, never discordant */
+    }
+    return m < FLT_MAX ? m : sc->tau[0];
+}
+/* Step 2: Mitchell's contrast (Imax - Imin) / (Imax + Imin) per channel over the pixel and
+   its three neighbours against tau * (1.36, 1.02, 2.04) (= 3.4 x Mitchell's 0.4, 0.3, 0.6). */
+FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3], float tau)
+{
+    static const float kc[3] = { 1.36f, 1.02f, 2.04f };
+    uint32_t c, k;
+    for (c = 0; c < 3; ++c) {
+        float mx = P->col[c], mn = P->col[c];
+        for (k = 0; k < 3; ++k) { mx = fovpt__maxf(mx, Q[k]->col[c]); mn = fovpt__minf(mn, Q[k]->col[c]); }
+        if (mx + mn > 0.0f && (mx - mn) > tau * kc[c] * (mx + mn)) return 1;
+    }
+    return 0;
+}
+
+/* Seed 004 step 2: temporal pixel reuse test (conditions 1-5, see the doc block); on
+   success the previous frame's colour in rgb and the reuse count in cur[7]. */
+FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const fovpt__pre *P, float rgb[3], float *cur)
+{
+    uint32_t W = ctx->cam.width, H = ctx->cam.height, prev = (ctx->hist_cur + ctx->hist_slots - 1u) % ctx->hist_slots, qx, qy;
+    float dir[3], v[3], dist, t4[4], con;
+    const float *q;
+    const fovpt_temporal_cfg *tc = &ctx->cfg.temporal;
+    uint32_t c;
+    if (!(P->t > 0.0f)) return 0;                                         /* 2. p_cur hits */
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+    fovpt__madd3(v, ctx->cam.pos, P->t, dir);
+    if (!fovpt__project(&ctx->hist_view[prev], W, H, v, &qx, &qy, &dist)) return 0;
+    q = ctx->hist[prev] + 8u * ((size_t)qy * W + qx);
+    if (!(q[7] < (float)tc->n_reuse_max)) return 0;                        /* 1. reuse count */
+    if (!(q[3] > 0.0f)) return 0;                                         /* 3. p_reuse hits */
+    if (!(fovpt__absf(dist - q[3]) <= tc->eps_depth * q[3])) return 0;      /* 4. depth */
+    for (c = 0; c < 3; ++c) {                                             /* 5. colour test */
+        static const float kc[3] = { 1.36f, 1.02f, 2.04f };
+        float mx = fovpt__maxf(P->col[c], q[4 + c]), mn = fovpt__minf(P->col[c], q[4 + c]);
+        con = mx + mn > 0.0f ? (mx - mn) / (mx + mn) : 0.0f;
+        if (con > tc->tau_reuse * ctx->cfg.selective.tau[0] * kc[c]) return 0;
+    }
+    fovpt__copy3(rgb, q);
+    cur[7] = q[7] + 1.0f;
+    return 1;
+}
+
+FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
+{
+    fovpt_stats st;
+    uint32_t x, y, W, H, q;
+    const fovpt_selective_cfg *sc;
+    const fovpt__pre *pre;
+    float cos_tol, t4[4];
+    int jin;
+    if (!ctx) return FOV_ERR_NULL;
+    W = ctx->cam.width; H = ctx->cam.height;
+    if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if (!ctx->pre) return FOV_OK; /* nothing to refine for this method */
+    FOV_MEMSET(&st, 0, sizeof st);
+    sc = &ctx->cfg.selective;
+    pre = (const fovpt__pre *)ctx->pre;
+    jin = ctx->cfg.method == FOVPT_METHOD_JIN;
+    cos_tol = FOVPT__COS(sc->normal_tol_deg * FOVPT__DEG);
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    for (y = y0; y < y1; ++y) {
+        for (x = 0; x < W; ++x) {
+            const fovpt__pre *P = pre + ((size_t)y * W + x);
+            float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), tf = 1.0f, pix[3] = { 0.0f, 0.0f, 0.0f };
+            uint32_t zone = 0, nsd = 4, mx, my;
+            float *cur = ctx->hist_slots ? ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x) : NULL;
+            if (cur) { /* the current frame's history record */
+                fovpt__copy3(cur + 4, P->col);
+                cur[3] = P->t;
+                cur[7] = 0.0f;
+            }
+            if (!jin) {
+                zone = e <= sc->e_deg[0] ? 0u : e <= sc->e_deg[1] ? 1u : e <= sc->e_deg[2] ? 2u : e <= sc->e_deg[3] ? 3u : 4u;
+                if (zone == 4u) { /* peripheral pixel region: the presample alone */
+                    fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), P->col, 1u, ctx->cfg.accumulate);
+                    if (cur) fovpt__copy3(cur, P->col);
+                    continue;
+                }
+            }
+            if (cur && ctx->cfg.temporal.reuse && ctx->hist_valid > 0 && fovpt__reuse(ctx, x, y, P, pix, cur)) {
+                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
+                fovpt__copy3(cur, pix);
+                st.reused++;
+                continue;
+            }
+            if (!jin) {
+                nsd = sc->n_sd[zone];
+                (void)fovpt_tau_fov(sc, e, &tf);
+            }
+            /* stratum layout: m x m for a square count, else n columns x 1 row */
+            mx = 1; while ((mx + 1u) * (mx + 1u) <= nsd) ++mx;
+            if (mx * mx == nsd) my = mx; else { mx = nsd; my = 1; }
+            for (q = 0; q < 4; ++q) { /* NW, NE, SW, SE */
+                int32_t sx = (q & 1u) ? 1 : -1, sy = (q & 2u) ? 1 : -1;
+                int32_t nxp = (int32_t)x + sx, nyp = (int32_t)y + sy;
+                const fovpt__pre *Q[3];
+                float sub[3] = { 0.0f, 0.0f, 0.0f };
+                uint32_t k;
+                if (nxp < 0 || nxp >= (int32_t)W) nxp = (int32_t)x;
+                if (nyp < 0 || nyp >= (int32_t)H) nyp = (int32_t)y;
+                Q[0] = pre + ((size_t)y * W + (uint32_t)nxp);
+                Q[1] = pre + ((size_t)(uint32_t)nyp * W + x);
+                Q[2] = pre + ((size_t)(uint32_t)nyp * W + (uint32_t)nxp);
+                if (nsd > 0 && fovpt__contrast(P, Q, tf * fovpt__tau_sel(sc, P, Q, cos_tol))) {
+                    uint32_t s2;
+                    for (s2 = 0; s2 < nsd; ++s2) { /* stratified jittered samples in the subpixel */
+                        fovpt_rng rng;
+                        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, u, v;
+                        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 1u + q * 4096u + s2, frame);
+                        u = ((float)(s2 % mx) + fovpt_rng_next(&rng)) / (float)mx;
+                        v = ((float)(s2 / mx) + fovpt_rng_next(&rng)) / (float)my;
+                        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f * (float)(q & 1u) + 0.5f * u,
+                                       (float)y + 0.5f * (float)(q >> 1) + 0.5f * v, dir);
+                        st.camera_rays++;
+                        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, &st, NULL);
+                        for (k = 0; k < 3; ++k) sub[k] += rgb[k];
+                    }
+                    for (k = 0; k < 3; ++k) sub[k] /= (float)nsd;
+                    st.samples += nsd;
+                    st.problematic[zone]++;
+                    st.extra_samples[zone] += nsd;
+                } else if (jin || sc->fill_centre) {
+                    fovpt__copy3(sub, P->col); /* Jin et al.: the pixel-centre colour */
+                } else { /* 004: bilinear from the four pixel centres around the subpixel centre */
+                    for (k = 0; k < 3; ++k)
+                        sub[k] = 0.5625f * P->col[k] + 0.1875f * (Q[0]->col[k] + Q[1]->col[k]) + 0.0625f * Q[2]->col[k];
+                }
+                for (k = 0; k < 3; ++k) pix[k] += 0.25f * sub[k];
+            }
+            fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
+            if (cur) fovpt__copy3(cur, pix);
+        }
+    }
+    fovpt__add_stats(stats, &st);
+    return FOV_OK;
+}
+
+FOVPT__PRIV uint8_t fovpt__srgb8(float v)
+{
+    float e;
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    e = v <= 0.0031308f ? 12.92f * v : 1.055f * FOVPT__POW(v, 1.0f / 2.4f) - 0.055f;
+    return (uint8_t)(e * 255.0f + 0.5f);
+}
+
+FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
+{
+    float px;
+    if (fovpt__absf(x) < 1e-6f) return 1.0f;
+    if (fovpt__absf(x) >= a) return 0.0f;
+    px = FOVPT__PI * x;
+    return a * FOVPT__SIN(px) * FOVPT__SIN(px / a) / (px * px);
+}
+/* ZONES: Lanczos upsampling (seed 000 sec. 4.2) of lattice n at lattice position (kx + fx,
+   ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
+   untraced taps dropped (weights renormalised); 0 when nothing is traced nearby. */
+FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky, float fx, float fy, float c[3])
+{
+    const float *buf = ctx->layer_buf[n];
+    int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n], ny = (int32_t)ctx->layer_ny[n];
+    float acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f, wx[6], wy[6];
+    for (i = 0; i < 2 * a; ++i) {
+        wx[i] = fovpt__lanczos_w(fx - (float)(i - a + 1), (float)a);
+        wy[i] = fovpt__lanczos_w(fy - (float)(i - a + 1), (float)a);
+    }
+    for (j = 0; j < 2 * a; ++j) {
+        int32_t lj = ky - a + 1 + j;
+        if (!(wy[j] > 0.0f || wy[j] < 0.0f)) continue;
+        lj = lj < 0 ? 0 : (lj >= ny ? ny - 1 : lj);
+        for (i = 0; i < 2 * a; ++i) {
+            int32_t ki = kx - a + 1 + i;
+            const float *p;
+            float w = wx[i] * wy[j];
+            if (!(w > 0.0f || w < 0.0f)) continue;
+            ki = ki < 0 ? 0 : (ki >= nx ? nx - 1 : ki);
+            p = buf + 4u * ((size_t)lj * (size_t)nx + (size_t)ki);
+            if (!(p[3] > 0.0f)) continue;
+            acc[0] += w * p[0] / p[3]; acc[1] += w * p[1] / p[3]; acc[2] += w * p[2] / p[3];
+            ws += w;
+        }
+    }
+    if (!(ws > 0.05f)) return 0;
+    c[0] = fovpt__maxf(acc[0] / ws, 0.0f); c[1] = fovpt__maxf(acc[1] / ws, 0.0f); c[2] = fovpt__maxf(acc[2] / ws, 0.0f);
+    return 1;
+}
+
+/* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (seed 002 Eq.
+   3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when unavailable. */
+FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y, float c[3])
+{
+    const float *buf = ctx->layer_buf[n];
+    uint32_t d = ctx->lay.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n];
+    int32_t kx, ky, i, j, ok = 1;
+    float fx, fy, wx[4], wy[4], acc[3] = { 0.0f, 0.0f, 0.0f };
+    int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n], ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
+    kx = rx >= 0 ? rx / (int32_t)d : -(((-rx) + (int32_t)d - 1) / (int32_t)d);
+    ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
+    fx = (float)(rx - kx * (int32_t)d) / (float)d;
+    fy = (float)(ry - ky * (int32_t)d) / (float)d;
+    if (ctx->lanczos) return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
+    fovpt_catmull_rom(fx, wx);
+    fovpt_catmull_rom(fy, wy);
+    for (j = 0; j < 4 && ok; ++j) {
+        int32_t lj = ky - 1 + j;
+        lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
+        for (i = 0; i < 4; ++i) {
+            int32_t ki = kx - 1 + i;
+            const float *a;
+            float w = wx[i] * wy[j];
+            ki = ki < 0 ? 0 : (ki >= (int32_t)nx ? (int32_t)nx - 1 : ki);
+            a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
+            if (!(a[3] > 0.0f)) {
+                if (w > 0.0f || w < 0.0f) { ok = 0; break; }
+                continue;
+            }
+            acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
+        }
+    }
+    if (!ok) { /* a neighbour is not traced: bilinear over the inner 2 x 2 that are */
+        float ws = 0.0f;
+        acc[0] = acc[1] = acc[2] = 0.0f;
+        for (j = 0; j < 2; ++j)
+            for (i = 0; i < 2; ++i) {
+                int32_t ki = kx + i, lj = ky + j;
+                const float *a;
+                float w = (i ? fx : 1.0f - fx) * (j ? fy : 1.0f - fy);
+                ki = ki < 0 ? 0 : (ki >= (int32_t)nx ? (int32_t)nx - 1 : ki);
+                lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
+                a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
+                if (!(a[3] > 0.0f) || !(w > 0.0f)) continue;
+                acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
+                ws += w;
+            }
+        if (!(ws > 0.0f)) return 0;
+        acc[0] /= ws; acc[1] /= ws; acc[2] /= ws;
+    }
+    c[0] = fovpt__maxf(acc[0], 0.0f); c[1] = fovpt__maxf(acc[1], 0.0f); c[2] = fovpt__maxf(acc[2], 0.0f);
+    return 1;
+}
+
+/* seed 002 Eq. 3.18 blend weight of layer n at eccentricity e */
+FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
+{
+    float t = (L->layer[n].radius_deg + 0.5f * L->blend_deg - e) / L->blend_deg;
+    t = fovpt__clampf(t, 0.0f, 1.0f);
+    return L->blend_linear ? t : t * t * (3.0f - 2.0f * t);
+}
+
+/* Seed 004 step 4: truncated exponential smoothing over the frames that see the same
+   first hit (within eps_depth), weights alpha (1 - alpha)^i, alpha = fovpt_alpha(e);
+   rejected frames drop out of the normalisation. */
+FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, float c[3])
+{
+    uint32_t W = ctx->cam.width, H = ctx->cam.height, i, k;
+    const float *cur = ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x);
+    float a, w, ws, acc[3], dir[3], v[3], t4[4];
+    if (!(cur[3] > 0.0f) || ctx->hist_valid == 0) return; /* no first hit: nothing to follow */
+    a = fovpt_alpha(&ctx->cfg.temporal, &ctx->cfg.selective, fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f));
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+    fovpt__madd3(v, ctx->cam.pos, cur[3], dir);
+    w = a;
+    ws = a;
+    for (k = 0; k < 3; ++k) acc[k] = a * c[k];
+    for (i = 1; i <= ctx->hist_valid && i <= ctx->cfg.temporal.n_tpi; ++i) {
+        uint32_t slot = (ctx->hist_cur + ctx->hist_slots - i) % ctx->hist_slots, qx, qy;
+        float dist;
+        const float *q;
+        w *= 1.0f - a;
+        if (!fovpt__project(&ctx->hist_view[slot], W, H, v, &qx, &qy, &dist)) continue;
+        q = ctx->hist[slot] + 8u * ((size_t)qy * W + qx);
+        if (!(q[3] > 0.0f) || !(fovpt__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3])) continue;
+        for (k = 0; k < 3; ++k) acc[k] += w * q[k];
+        ws += w;
+    }
+    for (k = 0; k < 3; ++k) c[k] = acc[k] / ws;
+}
+
+FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1, const fovpt_output *out)
+{
+    uint32_t x, y, k, W;
+    if (!ctx || !out || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
+    W = ctx->cam.width;
+    if (y0 > y1 || y1 > ctx->cam.height) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if ((out->rgb_stride && out->rgb_stride < 3u * W) || (out->rgb8_stride && out->rgb8_stride < 3u * W))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "output stride below 3 * width");
+    for (y = y0; y < y1; ++y) {
+        for (x = 0; x < W; ++x) {
+            float c[3] = { 0.0f, 0.0f, 0.0f };
+            if (ctx->accum) { /* UNIFORM, SELECTIVE, JIN */
+                const float *acc = ctx->accum + 4u * ((size_t)y * W + x);
+                for (k = 0; k < 3; ++k) c[k] = acc[3] > 0.0f ? acc[k] / acc[3] : 0.0f;
+                if (ctx->hist_slots && ctx->cfg.temporal.smooth) fovpt__smooth(ctx, x, y, c);
+            } else {
+                const fovpt_layers_cfg *L = &ctx->lay;
+                float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), f[3];
+                uint32_t n, top = 0;
+                if (!(L->layer[0].radius_deg > 0.0f) || e <= L->layer[0].radius_deg) {
+                    /* the innermost layer with full weight: nothing below it is needed */
+                    for (n = L->count - 1u; n > 0; --n)
+                        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+                    if (!fovpt__layer_value(ctx, top, x, y, c)) c[0] = c[1] = c[2] = 0.0f;
+                    for (n = top + 1u; n < L->count; ++n) {
+                        float vb = fovpt__vb(L, n, e);
+                        if (!(vb > 0.0f) || !fovpt__layer_value(ctx, n, x, y, f)) continue;
+                        for (k = 0; k < 3; ++k) c[k] = (1.0f - vb) * c[k] + vb * f[k];
+                    }
+                }
+            }
+            if (out->rgb) {
+                float *o = out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
+                o[0] = c[0]; o[1] = c[1]; o[2] = c[2];
+            }
+            if (out->rgb8) {
+                uint8_t *o = out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
+                o[0] = fovpt__srgb8(c[0]); o[1] = fovpt__srgb8(c[1]); o[2] = fovpt__srgb8(c[2]);
+            }
+        }
+    }
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out, fovpt_stats *stats)
+{
+    fov_result e;
+    if (!ctx || !out) return FOV_ERR_NULL;
+    e = fovpt_trace_rows(ctx, frame, 0, ctx->cam.height, stats);
+    if (e != FOV_OK) return e;
+    e = fovpt_refine_rows(ctx, frame, 0, ctx->cam.height, stats);
+    if (e != FOV_OK) return e;
+    return fovpt_resolve_rows(ctx, 0, ctx->cam.height, out);
+}
+
+FOVPT_API void fovpt_output_init(fovpt_output *out)
+{
+    if (out) FOV_MEMSET(out, 0, sizeof *out);
+}
+
+/* ---- foveation building blocks --------------------------------------------------------------- */
+FOVPT_API void fovpt_catmull_rom(float t, float w[4])
+{
+    /* seed 002 Eq. 3.17, t^3 coefficient of v2 = -3/2 (the thesis prints -1/2) */
+    float t2 = t * t, t3 = t2 * t;
+    if (!w) return;
+    w[0] = -0.5f * t3 + t2 - 0.5f * t;
+    w[1] = 1.5f * t3 - 2.5f * t2 + 1.0f;
+    w[2] = -1.5f * t3 + 2.0f * t2 + 0.5f * t;
+    w[3] = 0.5f * t3 - 0.5f * t2;
+}
+
+/* y of a quadratic Bezier (x0,y0) (x1,y1) (x2,y2) at x = e, x monotone on [0, 1]. */
+FOVPT__PRIV float fovpt__bezier_y(float x0, float y0, float x1, float y1, float x2, float y2, float e)
+{
+    float A = x0 - 2.0f * x1 + x2, B = 2.0f * (x1 - x0), C = x0 - e, t, u;
+    if (fovpt__absf(A) <= 1e-6f * (fovpt__absf(B) + 1e-30f)) {
+        t = B > 0.0f || B < 0.0f ? -C / B : 0.0f;
+    } else {
+        float disc = fovpt__maxf(0.0f, B * B - 4.0f * A * C), sq = FOVPT__SQRT(disc);
+        float q = -0.5f * (B + (B < 0.0f ? -sq : sq));
+        float r0 = q / A, r1 = (q > 0.0f || q < 0.0f) ? C / q : r0;
+        t = (r0 >= -1e-4f && r0 <= 1.0001f) ? r0 : r1;
+    }
+    t = fovpt__clampf(t, 0.0f, 1.0f);
+    u = 1.0f - t;
+    return u * u * y0 + 2.0f * t * u * y1 + t * t * y2;
+}
+
+FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *s, float e, float *out)
+{
+    float t0, tf, tp, tn, ef, enp;
+    if (!s || !out) return FOV_ERR_NULL;
+    *out = 0.0f;
+    t0 = s->tau_shape[0]; tf = s->tau_shape[1]; tp = s->tau_shape[2]; tn = s->tau_shape[3];
+    ef = s->e_deg[0]; enp = s->e_deg[3];
+    if (!fovpt__finite(e) || !fovpt__finite(t0) || !fovpt__finite(tf) || !fovpt__finite(tp) || !fovpt__finite(tn) ||
+        !fovpt__finite(ef) || !fovpt__finite(enp))
+        return FOV_ERR_NOT_FINITE;
+    if (!(ef > 0.0f && enp > ef && t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
+        tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))
+        return FOV_ERR_INVALID_ARG;
+    if (e <= 0.0f) *out = t0;
+    else if (e <= ef) *out = fovpt__bezier_y(0.0f, t0, ef - (tf - t0) / tp, t0, ef, tf, e);
+    else if (e < enp) *out = fovpt__bezier_y(ef, tf, ef + (tn - tf) / tp, tn, enp, tn, e);
+    else *out = tn;
+    return FOV_OK;
+}
+
+FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *t, const fovpt_selective_cfg *s, float e)
+{
+    float x[6];
+    uint32_t i;
+    if (!t || !s || !fovpt__finite(e)) return 0.0f;
+    x[0] = 0.0f;
+    for (i = 0; i < 5; ++i) x[i + 1u] = s->e_deg[i];
+    if (e <= 0.0f) return t->alpha[0];
+    for (i = 0; i < 5; ++i)
+        if (e <= x[i + 1u]) {
+            float w = (e - x[i]) / (x[i + 1u] - x[i]);
+            return t->alpha[i] + w * (t->alpha[i + 1u] - t->alpha[i]);
+        }
+    return t->alpha[5];
+}
+
+#endif /* FOVPT_IMPLEMENTATION */
+
+/*
+------------------------------------------------------------------------------
+This software is available under 2 licenses -- choose whichever you prefer.
+------------------------------------------------------------------------------
+ALTERNATIVE A - MIT License
+Copyright (c) 2026 the fov authors
+Permission is hereby granted, free of charge, to any person obtaining a copy of
+this software and associated documentation files (the "Software"), to deal in
+the Software without restriction, including without limitation the rights to
+use, copy, modify, merge, publish, distribute, sublicense, and/or sell copies
+of the Software, and to permit persons to whom the Software is furnished to do
+so, subject to the following conditions:
+The above copyright notice and this permission notice shall be included in all
+copies or substantial portions of the Software.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+SOFTWARE.
+------------------------------------------------------------------------------
+ALTERNATIVE B - Public Domain (www.unlicense.org)
+This is free and unencumbered software released into the public domain.
+Anyone is free to copy, modify, publish, use, compile, sell, or distribute this
+software, either in source code form or as a compiled binary, for any purpose,
+commercial or non-commercial, and by any means.
+In jurisdictions that recognize copyright laws, the author or authors of this
+software dedicate any and all copyright interest in the software to the public
+domain. We make this dedication in ways that are consistent with the intent of
+the ruling in that jurisdiction. THE SOFTWARE IS PROVIDED "AS IS", WITHOUT
+WARRANTY OF ANY KIND, EXPRESS OR IMPLIED.
+------------------------------------------------------------------------------
+*/

@@ -1,0 +1,1749 @@
+/*
+ * test_fovpt.c - unit and property tests of fovpt.h.
+ *
+ * Build and run from the repository root (tests/run_all.sh builds it three ways: libm,
+ * -DFOV_NO_LIBM, sanitizers):
+ *   gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
+ *       -Werror -I. -Itests/common tests/test_fovpt.c -lm -o build/tests/test_fovpt
+ *
+ * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
+ * Expected values come from analytic formulas, brute force or independent quadrature done
+ * here (in double), or from the notes' reference tables; never from the code under test.
+ *
+ * Sections:
+ *   1. API, configs, shared block, eccentricity against fovsdf.
+ *   2. Scenes: bad input with exact codes, BVH against brute force on random scenes and
+ *      rays, depth cap, the no-BVH path, the user hook.
+ *   3. Random streams and BSDF samplers (energy, pdf consistency, Fresnel).
+ *   4. Path tracer: furnace tests, NEE on/off, Russian roulette, bounce limit, Whitted,
+ *      determinism, row splits, non-finite radiance.
+ *   5. Foveation building blocks: Catmull-Rom, tau_fov reference values, alpha(e), presets.
+ */
+#define FOV_IMPL
+#include "fovsdf.h"
+#include "fovpt.h"
+#include "fovcheck.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char g_name[200];
+#if defined(__GNUC__) || defined(__clang__)
+#define T_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define T_PRINTF(a, b)
+#endif
+static const char *N(const char *fmt, ...) T_PRINTF(1, 2);
+static const char *N(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(g_name, sizeof g_name, fmt, ap);
+    va_end(ap);
+    return g_name;
+}
+
+/* a test-side generator (independent of the library's streams) */
+static uint64_t g_rs = 0x9e3779b97f4a7c15ull;
+static double urand(void)
+{
+    g_rs ^= g_rs << 13; g_rs ^= g_rs >> 7; g_rs ^= g_rs << 17;
+    return (double)(g_rs >> 11) * (1.0 / 9007199254740992.0);
+}
+static float frand(float a, float b) { return a + (b - a) * (float)urand(); }
+
+/* malloc: 16-byte aligned on the hosts the tests run on (glibc, x86-64) */
+static void *amalloc(size_t n) { return malloc(n + 16u); }
+
+static int g_log_count;
+static int32_t g_log_code;
+static void logger(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line, void *user)
+{
+    (void)tag; (void)level; (void)msg; (void)line; (void)user;
+    g_log_count++;
+    g_log_code = code;
+}
+
+/* ==== 1. API ================================================================================= */
+static char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    long n;
+    char *b;
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b = (char *)malloc((size_t)n + 1u);
+    if (b && fread(b, 1, (size_t)n, f) != (size_t)n) { free(b); b = NULL; }
+    if (b) b[n] = 0;
+    fclose(f);
+    return b;
+}
+static const char *block(const char *text, size_t *len)
+{
+    const char *a = strstr(text, "/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */");
+    const char *e = a ? strstr(a, "/* ---- end of the shared block ---- */") : NULL;
+    if (!a || !e) return NULL;
+    *len = (size_t)(e - a);
+    return a;
+}
+
+static void test_api(void)
+{
+    int r;
+    fovpt_config c = fovpt_config_default(), o;
+    memset(&o, 0, sizeof o);
+    check(strcmp(fovpt_result_string(FOV_OK), "ok") == 0 || strlen(fovpt_result_string(FOV_OK)) == 0, "result_string ok", " ");
+    {
+        int ok = 1;
+        for (r = -10; r <= 2; ++r) if (!fovpt_result_string((fov_result)r)) ok = 0;
+        check(ok, "result_string never NULL (-10 .. 2)", " ");
+    }
+    check(strcmp(fovpt_method_name(FOVPT_METHOD_LAYERS), "layers") == 0 && strcmp(fovpt_method_name(99), "unknown") == 0,
+          "method names", " ");
+    check(c.spp == 1 && c.max_depth == 8 && c.rr_start == 3 && c.method == 0 && c.mode == 0, "config defaults (spp 1, depth 8, rr 3)",
+          "spp %u depth %u rr %u", c.spp, c.max_depth, c.rr_start);
+    check(c.layers.count == 4 && fabsf(c.layers.layer[3].radius_deg - 6.0f) < 1e-6f && c.layers.layer[1].stride == 3 &&
+              c.layers.layer[0].stride == 4 && c.layers.layer[2].spp == 4,
+          "config defaults: seed 002 layers", " ");
+    check(fabsf(c.selective.e_deg[3] - 30.0f) < 1e-6f && c.selective.n_sd[0] == 9 && fabsf(c.selective.tau[1] - 0.05f) < 1e-7f &&
+              fabsf(c.temporal.alpha[4] - 0.2f) < 1e-7f && c.temporal.n_reuse_max == 5,
+          "config defaults: seed 004 tables", " ");
+    {
+        fovpt_config w;
+        memset(&w, 0, sizeof w);
+        w.mode = FOVPT_MODE_WHITTED;
+        check(fovpt_config_resolve(&w, &o) == FOV_OK && o.max_depth == 3, "Whitted default depth 3", "%u", o.max_depth);
+    }
+    /* bad configs */
+#define BADCFG(field_stmt, code, name)                                                  \
+    do {                                                                                \
+        fovpt_config b = fovpt_config_default();                                        \
+        b.logger.func = logger;                                                         \
+        g_log_count = 0;                                                                \
+        field_stmt;                                                                     \
+        r = (int)fovpt_config_resolve(&b, &o);                                          \
+        check(r == (int)(code) && g_log_count == 1, N("config rejects %s", name), "got %d (%s), log %d", r, \
+              fovpt_result_string((fov_result)r), g_log_count);                        \
+    } while (0)
+    BADCFG(b.method = 99, FOV_ERR_INVALID_ARG, "method 99");
+    BADCFG(b.mode = 5, FOV_ERR_INVALID_ARG, "mode 5");
+    BADCFG(b.spp = 70000, FOV_ERR_LIMIT, "spp 70000");
+    BADCFG(b.max_depth = 5000, FOV_ERR_LIMIT, "max_depth 5000");
+    BADCFG((b.mode = 1, b.max_depth = 40), FOV_ERR_LIMIT, "Whitted depth 40");
+    BADCFG(b.layers.layer[2].radius_deg = 30.0f, FOV_ERR_INVALID_ARG, "layer radii not decreasing");
+    BADCFG(b.layers.layer[1].stride = 0, FOV_ERR_INVALID_ARG, "layer stride d < 1");
+    BADCFG(b.layers.layer[3].spp = 0, FOV_ERR_INVALID_ARG, "layer spp 0");
+    BADCFG(b.layers.layer[3].radius_deg = NAN, FOV_ERR_NOT_FINITE, "layer radius NaN");
+    BADCFG(b.layers.count = 1, FOV_ERR_INVALID_ARG, "one layer");
+    BADCFG(b.layers.count = FOVPT_MAX_LAYERS + 1, FOV_ERR_INVALID_ARG, "too many layers");
+    BADCFG(b.layers.layer[0].radius_deg = 15.0f, FOV_ERR_INVALID_ARG, "mask inside layer 1");
+    BADCFG(b.layers.blend_deg = INFINITY, FOV_ERR_NOT_FINITE, "blend inf");
+    BADCFG(b.zones.middle_deg = 5.0f, FOV_ERR_INVALID_ARG, "zones middle < inner");
+    BADCFG(b.selective.e_deg[2] = 4.0f, FOV_ERR_INVALID_ARG, "e_deg not increasing");
+    BADCFG(b.selective.tau_shape[2] = 0.1f, FOV_ERR_INVALID_ARG, "tau_fov shape non-monotone");
+    BADCFG(b.temporal.n_tpi = 5, FOV_ERR_INVALID_ARG, "n_tpi 5");
+    BADCFG(b.temporal.alpha[2] = 1.5f, FOV_ERR_INVALID_ARG, "alpha 1.5");
+    BADCFG(b.display.fov_y_deg = NAN, FOV_ERR_NOT_FINITE, "display NaN");
+    check(fovpt_config_resolve(NULL, &o) == FOV_ERR_NULL && fovpt_config_resolve(&c, NULL) == FOV_ERR_NULL, "config NULL", " ");
+    {
+        fovpt_layers_cfg L;
+        check(fovpt_layers_preset(&L, FOVPT_LAYERS_KTH_DIAMETER) == FOV_OK && fabsf(L.layer[1].radius_deg - 10.0f) < 1e-6f &&
+                  fabsf(L.layer[3].radius_deg - 3.0f) < 1e-6f && L.layer[3].stride == 1 && L.layer[0].stride == 4,
+              "preset: 6/10/20 as diameters -> radii 3/5/10, d = 4,3,2,1", " ");
+        check(fovpt_layers_preset(&L, FOVPT_LAYERS_KTH_RADIUS) == FOV_OK && fabsf(L.layer[1].radius_deg - 20.0f) < 1e-6f &&
+                  fabsf(L.layer[2].radius_deg - 10.0f) < 1e-6f && L.layer[2].stride == 2,
+              "preset: 6/10/20 as radii", " ");
+        check(fovpt_layers_preset(&L, 7) == FOV_ERR_INVALID_ARG && fovpt_layers_preset(NULL, 0) == FOV_ERR_NULL, "preset bad id", " ");
+    }
+    /* the shared block is byte-for-byte the same as fovsdf.h's */
+    {
+        char *a = read_file("fovsdf.h"), *b = read_file("fovpt.h");
+        size_t la = 0, lb = 0;
+        const char *ba = a ? block(a, &la) : NULL, *bb = b ? block(b, &lb) : NULL;
+        check(ba && bb && la == lb && memcmp(ba, bb, la) == 0, "shared block identical to fovsdf.h's",
+              "found %d %d, lengths %zu %zu", ba != NULL, bb != NULL, la, lb);
+        free(a); free(b);
+    }
+}
+
+static void test_ecc(void)
+{
+    int i, same = 1, codes = 1;
+    float worst = 0.0f;
+    for (i = 0; i < 2000; ++i) {
+        fov_ecc_model a, b;
+        fov_display d;
+        fov_gaze g;
+        uint32_t w = 1u + (uint32_t)(urand() * 2000.0), h = 1u + (uint32_t)(urand() * 2000.0);
+        float fov = frand(1.0f, 179.0f);
+        fov_result ra, rb;
+        memset(&d, 0, sizeof d);
+        if (i % 3 == 1) d.fov_y_deg = frand(10.0f, 170.0f);
+        if (i % 3 == 2) { d.pixel_pitch_mm = frand(0.05f, 0.5f); d.distance_mm = frand(100.0f, 1000.0f); }
+        d.axis_dx = frand(-50.0f, 50.0f);
+        d.axis_dy = frand(-50.0f, 50.0f);
+        g.x = frand(-100.0f, (float)w + 100.0f);
+        g.y = frand(-100.0f, (float)h + 100.0f);
+        if (i % 97 == 0) g.x = NAN;
+        if (i % 89 == 0) w = 0;
+        ra = fovsdf_ecc_init(&a, &d, fov, w, h, g);
+        rb = fovpt_ecc_init(&b, &d, fov, w, h, g);
+        if (ra != rb) { codes = 0; continue; }
+        if (ra != FOV_OK) continue;
+        {
+            int k;
+            for (k = 0; k < 5; ++k) {
+                float x = frand(0.0f, (float)w), y = frand(0.0f, (float)h);
+                float ea = fovsdf_ecc_deg(&a, x, y), eb = fovpt_ecc_deg(&b, x, y);
+                if (fabsf(ea - eb) > worst) worst = fabsf(ea - eb);
+            }
+            if (fabsf(fovsdf_ecc_ppd(&a) - fovpt_ecc_ppd(&b)) > 1e-6f * fovsdf_ecc_ppd(&a)) same = 0;
+        }
+    }
+    check(codes, "ecc_init: same result codes as fovsdf_ecc_init (2000 random displays)", " ");
+    check(worst <= 0.0f && same, "ecc_deg / ecc_ppd identical to fovsdf's", "max |diff| %g deg", (double)worst);
+}
+
+/* ==== 2. scenes ============================================================================== */
+typedef struct scene_buf {
+    fovpt_scene s;
+    void *mem;
+} scene_buf;
+static fov_result build(scene_buf *b, const fovpt_scene_desc *d)
+{
+    size_t n = 0;
+    fov_result r = fovpt_scene_size(d, &n);
+    b->mem = NULL;
+    if (r != FOV_OK) return r;
+    b->mem = amalloc(n + 16u);
+    return fovpt_scene_build(&b->s, d, b->mem, n);
+}
+
+static void random_scene(fovpt_shape *sh, uint32_t ns, float *pos, uint32_t ntri, int clustered)
+{
+    uint32_t i, k;
+    for (i = 0; i < ns; ++i) {
+        float c[3], u[3], v[3];
+        uint32_t t = (uint32_t)(urand() * 4.0);
+        for (k = 0; k < 3; ++k) c[k] = clustered ? frand(-1.0f, 1.0f) * (i % 2 ? 0.1f : 5.0f) : frand(-5.0f, 5.0f);
+        if (t == 0) fovpt_shape_sphere(&sh[i], c[0], c[1], c[2], frand(0.05f, 0.6f), i % 3);
+        else if (t == 1) {
+            for (k = 0; k < 3; ++k) { u[k] = frand(-1.0f, 1.0f); v[k] = frand(-1.0f, 1.0f); }
+            fovpt_shape_quad(&sh[i], c, u, v, i % 3);
+        } else if (t == 2) {
+            float hi[3];
+            for (k = 0; k < 3; ++k) hi[k] = c[k] + frand(0.05f, 1.0f);
+            fovpt_shape_box(&sh[i], c, hi, i % 3);
+        } else {
+            float n[3] = { frand(-1, 1), frand(-1, 1), frand(-1, 1) };
+            for (k = 0; k < 3; ++k) c[k] *= 3.0f;
+            if (i % 7 == 0) fovpt_shape_plane(&sh[i], c, n, i % 3);
+            else fovpt_shape_sphere(&sh[i], c[0], c[1], c[2], frand(0.01f, 0.3f), 0);
+        }
+    }
+    for (i = 0; i < ntri; ++i) {
+        float c[3];
+        for (k = 0; k < 3; ++k) c[k] = clustered ? frand(-0.5f, 0.5f) : frand(-5.0f, 5.0f);
+        for (k = 0; k < 9; ++k) pos[9u * i + k] = c[k % 3] + frand(-0.4f, 0.4f);
+    }
+}
+
+static void test_bvh_random(void)
+{
+    int sc;
+    for (sc = 0; sc < 12; ++sc) {
+        uint32_t ns = 5u + (uint32_t)(urand() * 200.0), nt = (uint32_t)(urand() * 3000.0), i, mism = 0, hits = 0;
+        fovpt_shape *sh = (fovpt_shape *)malloc(sizeof(fovpt_shape) * ns);
+        float *pos = (float *)malloc(sizeof(float) * 9u * (nt + 1u));
+        fovpt_material m[3];
+        fovpt_mesh mesh;
+        fovpt_scene_desc d;
+        scene_buf b;
+        fov_result r;
+        random_scene(sh, ns, pos, nt, sc % 3 == 2);
+        fovpt_material_init(&m[0]); fovpt_material_init(&m[1]); fovpt_material_init(&m[2]);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = pos; mesh.num_vertices = 3u * nt; mesh.num_triangles = nt; mesh.material = 1;
+        fovpt_scene_desc_init(&d);
+        d.shapes = sh; d.num_shapes = ns; d.meshes = &mesh; d.num_meshes = 1; d.materials = m; d.num_materials = 3;
+        d.bvh_leaf = 1u + (uint32_t)sc % 4u;
+        d.bvh_bins = sc % 2 ? 8u : 0u;
+        d.skip_degenerate = 1;
+        r = build(&b, &d);
+        if (!check(r == FOV_OK && b.s.nodes != NULL, N("random scene %d builds a BVH (%u shapes, %u triangles)", sc, ns, nt),
+                   "%s", fovpt_result_string(r))) { free(sh); free(pos); free(b.mem); continue; }
+        for (i = 0; i < 3000; ++i) {
+            float o[3], dd[3];
+            fovpt_hit h1, h2;
+            int a1, a2;
+            uint32_t k;
+            for (k = 0; k < 3; ++k) { o[k] = frand(-8.0f, 8.0f); dd[k] = frand(-1.0f, 1.0f); }
+            if (i % 50 == 0) { dd[0] = 0.0f; dd[1] = 0.0f; } /* axis-parallel rays */
+            {
+                float lim = i % 5 == 0 ? frand(0.1f, 10.0f) : FLT_MAX;
+                a1 = fovpt_intersect(&b.s, o, dd, 0.0f, lim, &h1);
+                a2 = fovpt_intersect_brute(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+                if (i % 5 != 0) {
+                    if (a1 != a2 || (a1 && (!(h1.t <= h2.t && h1.t >= h2.t) || h1.prim != h2.prim))) mism++;
+                } else if (a1 ? (!a2 || h1.t < h2.t || h1.t > h2.t) : (a2 && h2.t < lim)) {
+                    mism++; /* within a limited range: the global closest hit, or none before lim */
+                }
+            }
+            hits += (uint32_t)a1;
+        }
+        check(mism == 0 && hits > 100, N("random scene %d: BVH = brute force on 3000 rays (t, primitive)", sc),
+              "%u mismatches, %u hits, depth %u, nodes %u", mism, hits, b.s.bvh_depth, b.s.num_nodes);
+        free(sh); free(pos); free(b.mem);
+    }
+}
+
+static void test_scene_bad(void)
+{
+    fovpt_material m[2];
+    fovpt_shape sh[2];
+    float pos[9] = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+    uint32_t idx[3] = { 0, 1, 2 };
+    fovpt_mesh mesh;
+    fovpt_scene_desc d;
+    scene_buf b;
+    size_t n;
+    fov_result r;
+    fovpt_material_init(&m[0]); fovpt_material_init(&m[1]);
+    m[1].emission[0] = 1.0f;
+#define RESET()                                                                                  \
+    do {                                                                                         \
+        fovpt_scene_desc_init(&d);                                                               \
+        fovpt_material_init(&m[0]); fovpt_material_init(&m[1]); m[1].emission[0] = 1.0f;        \
+        fovpt_shape_sphere(&sh[0], 0, 0, 0, 1, 0);                                               \
+        fovpt_shape_sphere(&sh[1], 0, 2, 0, 0.5f, 1);                                            \
+        memset(&mesh, 0, sizeof mesh);                                                           \
+        pos[0] = 0; pos[1] = 0; pos[2] = 0; pos[3] = 1; pos[4] = 0; pos[5] = 0;                  \
+        pos[6] = 0; pos[7] = 1; pos[8] = 0; idx[0] = 0; idx[1] = 1; idx[2] = 2;                 \
+        mesh.positions = pos; mesh.num_vertices = 3; mesh.indices = idx; mesh.num_triangles = 1; \
+        d.shapes = sh; d.num_shapes = 2; d.meshes = &mesh; d.num_meshes = 1;                     \
+        d.materials = m; d.num_materials = 2; d.logger.func = logger;                            \
+        g_log_count = 0;                                                                         \
+    } while (0)
+#define BAD(stmt, code, name)                                                                     \
+    do {                                                                                          \
+        RESET();                                                                                  \
+        stmt;                                                                                     \
+        r = fovpt_scene_size(&d, &n);                                                             \
+        check(r == (code) && g_log_count >= 1 && g_log_code == (int32_t)(code), N("scene rejects %s", name), \
+              "got %d (%s)", (int)r, fovpt_result_string(r));                                     \
+    } while (0)
+    RESET();
+    r = build(&b, &d);
+    check(r == FOV_OK && b.s.num_prims == 3 && b.s.num_lights == 1 && b.s.nodes == NULL, "valid 3-primitive scene: no BVH, one light",
+          "%s prims %u lights %u", fovpt_result_string(r), b.s.num_prims, b.s.num_lights);
+    free(b.mem);
+    BAD(pos[3] = 0.0f, FOV_ERR_DEGENERATE, "degenerate triangle (two equal vertices)");
+    BAD((pos[3] = 2.0f, pos[4] = 2.0f, pos[6] = 1.0f, pos[7] = 1.0f), FOV_ERR_DEGENERATE, "degenerate triangle (collinear)");
+    BAD(pos[4] = NAN, FOV_ERR_NOT_FINITE, "NaN vertex");
+    BAD(pos[8] = -INFINITY, FOV_ERR_NOT_FINITE, "infinite vertex");
+    BAD(idx[2] = 3, FOV_ERR_INVALID_ARG, "index out of range");
+    BAD(mesh.num_triangles = 0xFFFFFFFFu, FOV_ERR_LIMIT, "overflowing triangle count");
+    BAD((mesh.indices = NULL, mesh.num_triangles = 2), FOV_ERR_INVALID_ARG, "non-indexed mesh short of vertices");
+    BAD(d.num_shapes = 0xFFFFFFF0u, FOV_ERR_LIMIT, "overflowing shape count");
+    BAD(sh[0].r = 0.0f, FOV_ERR_DEGENERATE, "sphere radius 0");
+    BAD(sh[1].r = -1.0f, FOV_ERR_DEGENERATE, "light sphere radius < 0 (zero-area light)");
+    BAD(sh[0].p[1] = INFINITY, FOV_ERR_NOT_FINITE, "infinite sphere centre");
+    BAD(sh[0].material = 2, FOV_ERR_INVALID_ARG, "material index out of range");
+    BAD(mesh.material = 9, FOV_ERR_INVALID_ARG, "mesh material out of range");
+    {
+        float c[3] = { 0, 0, 0 }, u[3] = { 1, 0, 0 }, v[3] = { 2, 0, 0 };
+        BAD(fovpt_shape_quad(&sh[1], c, u, v, 1), FOV_ERR_DEGENERATE, "zero-area light (quad)");
+    }
+    BAD((mesh.material = 1, pos[6] = 2.0f, pos[7] = 0.0f), FOV_ERR_DEGENERATE, "zero-area light (triangle)");
+    {
+        float lo[3] = { 0, 0, 0 }, hi[3] = { 1, -1, 1 };
+        BAD(fovpt_shape_box(&sh[0], lo, hi, 0), FOV_ERR_DEGENERATE, "inverted box");
+    }
+    {
+        float p[3] = { 0, 0, 0 }, nz[3] = { 0, 0, 0 };
+        BAD(fovpt_shape_plane(&sh[0], p, nz, 0), FOV_ERR_DEGENERATE, "plane with zero normal");
+    }
+    BAD(sh[0].type = 9, FOV_ERR_INVALID_ARG, "shape type 9");
+    BAD(d.materials = NULL, FOV_ERR_NULL, "NULL materials");
+    BAD(d.shapes = NULL, FOV_ERR_NULL, "NULL shapes with a count");
+    BAD(m[0].albedo[1] = 1.5f, FOV_ERR_INVALID_ARG, "albedo 1.5");
+    BAD(m[0].emission[2] = NAN, FOV_ERR_NOT_FINITE, "NaN emission");
+    BAD(m[0].type = 11, FOV_ERR_INVALID_ARG, "material type 11");
+    BAD((m[0].type = FOVPT_MAT_DIELECTRIC, m[0].ior = 0.0f), FOV_ERR_INVALID_ARG, "ior 0");
+    BAD(d.background[0] = NAN, FOV_ERR_NOT_FINITE, "NaN background");
+    BAD(d.bvh_bins = 1, FOV_ERR_INVALID_ARG, "bvh_bins 1");
+    BAD(d.bvh_leaf = 17, FOV_ERR_INVALID_ARG, "bvh_leaf 17");
+    fovpt_material_init(&m[0]);
+    /* skip_degenerate */
+    RESET();
+    pos[3] = 0.0f;
+    d.skip_degenerate = 1;
+    r = build(&b, &d);
+    check(r == FOV_OK && b.s.num_skipped == 1 && b.s.num_prims == 2, "skip_degenerate drops the zero-area triangle",
+          "%s skipped %u", fovpt_result_string(r), b.s.num_skipped);
+    free(b.mem);
+    /* memory */
+    RESET();
+    r = fovpt_scene_size(&d, &n);
+    {
+        unsigned char *mem = (unsigned char *)amalloc(n + 32u);
+        check(fovpt_scene_build(&b.s, &d, mem, n - 1u) == FOV_ERR_TOO_SMALL, "scene memory too small", " ");
+        check(fovpt_scene_build(&b.s, &d, NULL, n) == FOV_ERR_NULL, "scene memory NULL", " ");
+        check(fovpt_scene_build(&b.s, &d, mem + 4, n) == FOV_ERR_INVALID_ARG, "scene memory misaligned", " ");
+        check(fovpt_scene_size(NULL, &n) == FOV_ERR_NULL && fovpt_scene_size(&d, NULL) == FOV_ERR_NULL, "scene_size NULL", " ");
+        free(mem);
+    }
+    /* over-deep BVH: spheres at exponentially growing distances, one per leaf */
+    {
+        fovpt_shape ex[40];
+        uint32_t i, mism = 0;
+        for (i = 0; i < 40; ++i) fovpt_shape_sphere(&ex[i], ldexpf(1.0f, (int)i), 0.0f, 0.0f, 0.25f, 0);
+        fovpt_scene_desc_init(&d);
+        d.shapes = ex; d.num_shapes = 40; d.materials = m; d.num_materials = 1; d.bvh_leaf = 1; d.bvh_max_depth = 8;
+        d.logger.func = logger;
+        g_log_count = 0;
+        r = build(&b, &d);
+        check(r == FOV_ERR_LIMIT && g_log_count == 1, "over-deep BVH (cap 8) is FOV_ERR_LIMIT", "%s", fovpt_result_string(r));
+        free(b.mem);
+        d.bvh_max_depth = 0;
+        r = build(&b, &d);
+        for (i = 0; i < 2000 && r == FOV_OK; ++i) {
+            float o[3] = { -1.0f, frand(-0.3f, 0.3f), frand(-0.3f, 0.3f) }, dd[3] = { 1.0f, frand(-0.01f, 0.01f), frand(-0.01f, 0.01f) };
+            fovpt_hit h1, h2;
+            int a1 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h1), a2 = fovpt_intersect_brute(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+            if (a1 != a2 || (a1 && h1.prim != h2.prim)) mism++;
+        }
+        check(r == FOV_OK && b.s.bvh_depth > 8 && mism == 0, "deep BVH within the default cap: same hits as brute force",
+              "%s depth %u mismatches %u", fovpt_result_string(r), b.s.bvh_depth, mism);
+        free(b.mem);
+    }
+}
+
+/* user hook: a sphere of radius 1 at (0, 0, 5) */
+static int hook_sphere(const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3],
+                       uint32_t *material, void *user)
+{
+    double oc[3] = { (double)org[0], (double)org[1], (double)org[2] - 5.0 }, a, b, c, disc, t0;
+    int k;
+    (void)user;
+    a = (double)dir[0] * (double)dir[0] + (double)dir[1] * (double)dir[1] + (double)dir[2] * (double)dir[2];
+    b = oc[0] * (double)dir[0] + oc[1] * (double)dir[1] + oc[2] * (double)dir[2];
+    c = oc[0] * oc[0] + oc[1] * oc[1] + oc[2] * oc[2] - 1.0;
+    disc = b * b - a * c;
+    if (disc < 0.0) return 0;
+    t0 = (-b - sqrt(disc)) / a;
+    if (t0 <= (double)tmin) t0 = (-b + sqrt(disc)) / a;
+    if (!(t0 > (double)tmin && t0 < (double)tmax)) return 0;
+    *t = (float)t0;
+    for (k = 0; k < 3; ++k) n[k] = (float)(oc[k] + t0 * (double)dir[k]);
+    *material = 0;
+    return 1;
+}
+static int hook_nan(const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3],
+                    uint32_t *material, void *user)
+{
+    (void)org; (void)dir; (void)tmax; (void)user;
+    *t = tmin + 1.0f;
+    n[0] = NAN; n[1] = 0.0f; n[2] = 1.0f;
+    *material = 0;
+    return 1;
+}
+
+static void test_user_hook(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    scene_buf a, b;
+    int i, bad = 0;
+    fovpt_material_init(&m);
+    fovpt_scene_desc_init(&d);
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 5.0f, 1.0f, 0);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    build(&a, &d);
+    d.num_shapes = 0; d.shapes = NULL; d.user_hit = hook_sphere;
+    build(&b, &d);
+    for (i = 0; i < 1000; ++i) {
+        float o[3] = { frand(-1.5f, 1.5f), frand(-1.5f, 1.5f), 0.0f }, dd[3] = { frand(-0.1f, 0.1f), frand(-0.1f, 0.1f), 1.0f };
+        fovpt_hit h1, h2;
+        int a1 = fovpt_intersect(&a.s, o, dd, 0.0f, FLT_MAX, &h1), a2 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+        if (a1 != a2) { if (fabsf(o[0] * o[0] + o[1] * o[1] - 1.0f) > 0.05f) bad++; continue; }
+        if (a1 && (fabsf(h1.t - h2.t) > 1e-4f || h2.prim != FOVPT_PRIM_USER || fabsf(h1.n[0] - h2.n[0]) > 1e-3f)) bad++;
+    }
+    check(bad == 0, "user hook sphere = built-in sphere (t, normal; prim FOVPT_PRIM_USER)", "%d bad", bad);
+    free(b.mem);
+    d.user_hit = hook_nan;
+    build(&b, &d);
+    {
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 0, 1 };
+        fovpt_hit h;
+        check(fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h) == 0, "user hook with a NaN normal is ignored", " ");
+    }
+    free(a.mem); free(b.mem);
+}
+
+/* ==== 3. random streams, BSDFs ================================================================ */
+static void test_rng(void)
+{
+    fovpt_rng a, b;
+    int i, same = 1, diff = 0, bins[16] = { 0 };
+    double chi = 0.0, mean = 0.0;
+    fovpt_rng_init(&a, 7, 100, 3, 2);
+    fovpt_rng_init(&b, 7, 100, 3, 2);
+    for (i = 0; i < 100; ++i) if (!(fovpt_rng_next(&a) <= fovpt_rng_next(&b) && 1)) same = 0;
+    fovpt_rng_init(&a, 7, 100, 3, 2);
+    fovpt_rng_init(&b, 7, 100, 3, 2);
+    for (i = 0; i < 100; ++i) { float x = fovpt_rng_next(&a), y = fovpt_rng_next(&b); if (x < y || x > y) same = 0; }
+    check(same, "rng: same (seed, pixel, sample, frame) -> same stream", " ");
+    {
+        uint32_t v[4][4] = { { 7, 100, 3, 2 }, { 8, 100, 3, 2 }, { 7, 101, 3, 2 }, { 7, 100, 4, 2 } };
+        float first[5];
+        int k, j;
+        for (k = 0; k < 4; ++k) { fovpt_rng_init(&a, v[k][0], v[k][1], v[k][2], v[k][3]); first[k] = fovpt_rng_next(&a); }
+        fovpt_rng_init(&a, 7, 100, 3, 3);
+        first[4] = fovpt_rng_next(&a);
+        for (k = 0; k < 5; ++k) for (j = k + 1; j < 5; ++j) if (first[k] < first[j] || first[k] > first[j]) diff++;
+        check(diff == 10, "rng: seed, pixel, sample and frame each change the stream", "%d of 10 differ", diff);
+    }
+    for (i = 0; i < 160000; ++i) {
+        float x;
+        if (i % 16 == 0) fovpt_rng_init(&a, 1, (uint32_t)i / 16u, 0, 0);
+        x = fovpt_rng_next(&a);
+        if (!(x >= 0.0f && x < 1.0f)) { bins[0] = -1000000; break; }
+        bins[(int)(x * 16.0f)]++;
+        mean += (double)x;
+    }
+    for (i = 0; i < 16; ++i) chi += ((double)bins[i] - 10000.0) * ((double)bins[i] - 10000.0) / 10000.0;
+    check(chi < 37.7 && fabs(mean / 160000.0 - 0.5) < 0.003, "rng: uniform on [0, 1) (chi-square 16 bins, p = 0.001 bound 37.7)",
+          "chi2 %.2f mean %.5f", chi, mean / 160000.0);
+}
+
+/* mean of the sampler's weights against independent quadrature of f cos from bsdf_eval */
+static void test_bsdf(void)
+{
+    float n[3] = { 0.0f, 0.0f, 1.0f };
+    int t;
+    for (t = 0; t < 4; ++t) {
+        fovpt_material m;
+        float th = (float)t * 0.45f, wo[3] = { sinf(th), 0.0f, cosf(th) };
+        double sum[3] = { 0, 0, 0 }, sq = 0.0, quad[3] = { 0, 0, 0 }, pdf_err = 0.0;
+        int i, j, ns = 200000, badpdf = 0;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.type = FOVPT_MAT_PHONG;
+        m.albedo[0] = 0.3f; m.albedo[1] = 0.1f; m.albedo[2] = 0.0f;
+        m.specular[0] = 0.6f; m.specular[1] = 0.8f; m.specular[2] = 0.9f;
+        m.exponent = t == 3 ? 200.0f : 15.0f;
+        for (i = 0; i < ns; ++i) {
+            float wi[3], w[3], pdf, fc[3], pe;
+            fovpt_rng_init(&rng, 3, (uint32_t)i, 0, (uint32_t)t);
+            if (!fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf)) continue;
+            for (j = 0; j < 3; ++j) sum[j] += (double)w[j];
+            sq += (double)w[1] * (double)w[1];
+            fovpt_bsdf_eval(&m, n, wo, wi, fc, &pe);
+            if (fabsf(pe - pdf) > 1e-4f * pdf) badpdf++;
+            if (fabs((double)fc[1] / (double)pe - (double)w[1]) > 1e-3 * (double)w[1] + 1e-6) pdf_err += 1.0;
+        }
+        /* quadrature over the hemisphere: theta in 2000 x phi in 400 midpoints (dense near the lobe) */
+        {
+            int a, c;
+            int NT = 3000, NP = 600;
+            for (a = 0; a < NT; ++a) {
+                double ct = 1.0 - ((double)a + 0.5) / NT, st = sqrt(1.0 - ct * ct);
+                for (c = 0; c < NP; ++c) {
+                    double ph = 2.0 * 3.141592653589793 * ((double)c + 0.5) / NP;
+                    float wi[3] = { (float)(st * cos(ph)), (float)(st * sin(ph)), (float)ct }, fc[3], pe;
+                    fovpt_bsdf_eval(&m, n, wo, wi, fc, &pe);
+                    for (j = 0; j < 3; ++j) quad[j] += (double)fc[j] * (1.0 / NT) * (2.0 * 3.141592653589793 / NP);
+                }
+            }
+        }
+        {
+            double m1 = sum[1] / ns, var = sq / ns - m1 * m1, se = sqrt(var / ns);
+            double e0 = fabs(sum[0] / ns - quad[0]), e1 = fabs(m1 - quad[1]), e2 = fabs(sum[2] / ns - quad[2]);
+            check(e1 < 4.0 * se + 2e-3 && e0 < 0.01 && e2 < 0.01,
+                  N("Phong sampler (exponent %g, theta_o %.2f): mean weight = quadrature of f cos", (double)m.exponent, (double)th),
+                  "sampled %.4f %.4f %.4f quad %.4f %.4f %.4f se %.4f", sum[0] / ns, m1, sum[2] / ns, quad[0], quad[1], quad[2], se);
+            check(quad[0] <= 1.0 + 1e-3 && quad[1] <= 1.0 + 1e-3 && quad[2] <= 1.0 + 1e-3,
+                  N("Phong kd + ks <= 1 reflects at most 1 (theta_o %.2f)", (double)th), "%.4f %.4f %.4f", quad[0], quad[1], quad[2]);
+            check(badpdf == 0 && pdf_err < 1.0, N("Phong sample pdf = eval pdf, weight = f cos / pdf (theta_o %.2f)", (double)th),
+                  "%d pdf mismatches, %g weight mismatches", badpdf, pdf_err);
+        }
+    }
+    {   /* Lambert: weight = albedo exactly, cosine distribution: E[cos] = 2/3 */
+        fovpt_material m;
+        float wo[3] = { 0.6f, 0.0f, 0.8f };
+        double ec = 0.0;
+        int i, bad = 0, ns = 100000;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.albedo[0] = 0.25f; m.albedo[1] = 0.5f; m.albedo[2] = 0.75f;
+        for (i = 0; i < ns; ++i) {
+            float wi[3], w[3], pdf;
+            fovpt_rng_init(&rng, 1, (uint32_t)i, 0, 0);
+            if (!fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf) || w[0] < 0.25f || w[0] > 0.25f || w[2] < 0.75f || w[2] > 0.75f ||
+                wi[2] <= 0.0f)
+                bad++;
+            ec += (double)wi[2];
+        }
+        check(bad == 0 && fabs(ec / ns - 2.0 / 3.0) < 0.004, "Lambert sampler: weight = albedo, E[cos] = 2/3",
+              "%d bad, E[cos] %.4f", bad, ec / ns);
+    }
+    {   /* mirror and dielectric: energy and Fresnel */
+        fovpt_material m;
+        float wo[3] = { 0.0f, 0.0f, 1.0f }, wi[3], w[3], pdf;
+        int i, refl = 0, ns = 200000, bad = 0;
+        fovpt_rng rng;
+        fovpt_material_init(&m);
+        m.type = FOVPT_MAT_MIRROR;
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        {
+            float wo2[3] = { 0.6f, 0.0f, 0.8f };
+            fovpt_bsdf_sample(&m, n, wo2, &rng, wi, w, &pdf);
+            check(fabsf(wi[0] + 0.6f) < 1e-6f && fabsf(wi[2] - 0.8f) < 1e-6f && fabsf(w[1] - 0.8f) < 1e-6f && pdf <= 0.0f,
+                  "mirror: reflected direction, weight = tint, delta pdf", " ");
+        }
+        m.type = FOVPT_MAT_DIELECTRIC;
+        m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
+        for (i = 0; i < ns; ++i) {
+            fovpt_rng_init(&rng, 2, (uint32_t)i, 0, 0);
+            fovpt_bsdf_sample(&m, n, wo, &rng, wi, w, &pdf);
+            if (wi[2] > 0.0f) refl++;
+            if (w[0] < 1.0f || w[0] > 1.0f) bad++;
+        }
+        {
+            double F = (double)refl / ns, se = sqrt(0.04 * 0.96 / ns);
+            check(fabs(F - 0.04) < 4.0 * se && bad == 0, "dielectric n=1.5 at normal incidence: reflects 4 % ((n-1)/(n+1))^2, weight 1 (R + T = 1)",
+                  "reflected %.4f (se %.4f), %d bad weights", F, se, bad);
+        }
+        {   /* total internal reflection from inside at 60 degrees (critical 41.8) */
+            float wo3[3] = { 0.866f, 0.0f, -0.5f };
+            int all = 1;
+            for (i = 0; i < 1000; ++i) {
+                fovpt_rng_init(&rng, 5, (uint32_t)i, 0, 0);
+                fovpt_bsdf_sample(&m, n, wo3, &rng, wi, w, &pdf);
+                if (!(wi[2] < 0.0f)) all = 0;
+            }
+            check(all, "dielectric: total internal reflection beyond the critical angle", " ");
+        }
+        {   /* refraction follows Snell: from air at 45 degrees into n = 1.5 */
+            float wo4[3] = { 0.70710678f, 0.0f, 0.70710678f };
+            int found = 0;
+            for (i = 0; i < 100 && !found; ++i) {
+                fovpt_rng_init(&rng, 6, (uint32_t)i, 0, 0);
+                fovpt_bsdf_sample(&m, n, wo4, &rng, wi, w, &pdf);
+                if (wi[2] < 0.0f) {
+                    found = 1;
+                    check(fabsf(-wi[0] - 0.70710678f / 1.5f) < 1e-5f, "dielectric: Snell's law (sin t = sin i / n)", "sin t %.6f",
+                          (double)-wi[0]);
+                }
+            }
+            if (!found) check(0, "dielectric: Snell's law (sin t = sin i / n)", "no refraction drawn");
+        }
+    }
+}
+
+/* ==== 4. path tracer ======================================================================== */
+typedef struct stat_acc { double s, s2; long n; } stat_acc;
+static void acc_add(stat_acc *a, double v) { a->s += v; a->s2 += v * v; a->n++; }
+static double acc_mean(const stat_acc *a) { return a->s / (double)a->n; }
+static double acc_se(const stat_acc *a)
+{
+    double m = acc_mean(a);
+    return sqrt(fmax(0.0, a->s2 / (double)a->n - m * m) / (double)a->n);
+}
+
+static void test_furnace(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_config c = fovpt_config_default();
+    fovpt_stats st;
+    int i, nee;
+    /* (a) a diffuse sphere under a uniform environment: L = albedo * background, exactly */
+    fovpt_material_init(&m);
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.5f;
+    fovpt_scene_desc_init(&d);
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 1.0f, 0);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    d.background[0] = d.background[1] = d.background[2] = 1.0f;
+    build(&b, &d);
+    {
+        double worst = 0.0;
+        for (i = 0; i < 2000; ++i) {
+            float o[3] = { frand(-0.9f, 0.9f), frand(-0.9f, 0.9f), -3.0f }, dd[3] = { 0.0f, 0.0f, 1.0f }, rgb[3];
+            fovpt_rng rng;
+            fovpt_rng_init(&rng, 0, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+            if (o[0] * o[0] + o[1] * o[1] < 0.8f) worst = fmax(worst, fabs((double)rgb[1] - 0.5));
+        }
+        check(worst < 1e-6, "furnace: convex Lambert sphere (albedo 0.5) under background 1 gives 0.5", "max error %g", worst);
+    }
+    free(b.mem);
+    /* (b) closed emitting diffuse enclosure: L = Le * sum_{k=0}^{D} a^k, NEE on and off */
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.7f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    d.background[0] = d.background[1] = d.background[2] = 0.0f;
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 2.0f, 0);
+    build(&b, &d);
+    for (nee = 0; nee < 2; ++nee) {
+        int D;
+        for (D = 3; D <= 30; D += 27) {
+            stat_acc a = { 0, 0, 0 };
+            double expect = 0.0, p = 1.0;
+            int k;
+            for (k = 0; k <= D; ++k) { expect += 0.3 * p; p *= 0.7; }
+            c = fovpt_config_default();
+            c.no_nee = (uint32_t)(1 - nee);
+            c.max_depth = (uint32_t)D;
+            memset(&st, 0, sizeof st);
+            for (i = 0; i < 40000; ++i) {
+                float o[3] = { frand(-1.0f, 1.0f), frand(-1.0f, 1.0f), frand(-1.0f, 1.0f) }, dd[3] = { frand(-1, 1), frand(-1, 1), frand(-1, 1) }, rgb[3];
+                fovpt_rng rng;
+                fovpt_rng_init(&rng, 11, (uint32_t)i, 0, (uint32_t)D);
+                fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &st);
+                acc_add(&a, (double)rgb[0]);
+            }
+            check(fabs(acc_mean(&a) - expect) < 3.0 * acc_se(&a) + 1e-6 && acc_se(&a) < 0.01,
+                  N("furnace: emitting enclosure (a 0.7, Le 0.3), depth %d, NEE %s -> %.5f", D, nee ? "on" : "off", expect),
+                  "mean %.5f se %.5f (shadow rays %llu)", acc_mean(&a), acc_se(&a), (unsigned long long)st.shadow_rays);
+            if (nee == 1 && D == 3) check(st.shadow_rays > 0, "NEE traces shadow rays towards the emitter", " ");
+            if (nee == 0 && D == 3) check(st.shadow_rays == 0, "no NEE: no shadow rays", " ");
+        }
+    }
+    {   /* Russian roulette off vs on: same mean at depth 30 */
+        stat_acc a0 = { 0, 0, 0 }, a1 = { 0, 0, 0 };
+        fovpt_stats s0, s1;
+        memset(&s0, 0, sizeof s0); memset(&s1, 0, sizeof s1);
+        for (i = 0; i < 20000; ++i) {
+            float o[3] = { 0, 0, 0 }, dd[3] = { frand(-1, 1), frand(-1, 1), 0.5f }, rgb[3];
+            fovpt_rng rng;
+            c = fovpt_config_default();
+            c.max_depth = 30; c.rr_start = FOVPT_RR_OFF;
+            fovpt_rng_init(&rng, 12, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &s0);
+            acc_add(&a0, (double)rgb[1]);
+            c.rr_start = 1;
+            fovpt_rng_init(&rng, 13, (uint32_t)i, 0, 0);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &s1);
+            acc_add(&a1, (double)rgb[1]);
+        }
+        check(fabs(acc_mean(&a0) - acc_mean(&a1)) < 3.0 * sqrt(acc_se(&a0) * acc_se(&a0) + acc_se(&a1) * acc_se(&a1)) &&
+                  s1.bounce_rays < s0.bounce_rays * 6 / 10,
+              "Russian roulette: same mean, fewer bounces", "means %.5f %.5f, bounce rays %llu vs %llu", acc_mean(&a0), acc_mean(&a1),
+              (unsigned long long)s0.bounce_rays, (unsigned long long)s1.bounce_rays);
+    }
+    {   /* bounce limit 0: emission only */
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 1, 0 }, rgb[3];
+        fovpt_rng rng;
+        c = fovpt_config_default();
+        c.max_depth = 0;
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        c.max_depth = 0;
+        {
+            fovpt_config c0 = c;
+            c0.max_depth = 0;
+            /* max_depth 0 in a resolved config means no bounce */
+            fovpt_radiance(&b.s, &c0, o, dd, &rng, rgb, NULL);
+        }
+        check(fabsf(rgb[0] - 0.3f) < 1e-6f, "bounce limit 0: emission only", "%g", (double)rgb[0]);
+    }
+    /* (c) non-finite radiance is replaced and counted */
+    free(b.mem);
+    m.emission[0] = m.emission[1] = m.emission[2] = 3e38f;
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 1.0f;
+    check(build(&b, &d) == FOV_ERR_LIMIT, "scene rejects an emitted power that overflows float", " ");
+    free(b.mem);
+    m.emission[0] = m.emission[1] = m.emission[2] = 2e37f;
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 0.5f, 0);
+    {
+        float o[3] = { 0, 0, 0 }, dd[3] = { 0, 1, 0 }, rgb[3] = { 1, 1, 1 };
+        fovpt_rng rng;
+        fov_result r = build(&b, &d);
+        c = fovpt_config_default();
+        c.max_depth = 40;
+        memset(&st, 0, sizeof st);
+        fovpt_rng_init(&rng, 0, 0, 0, 0);
+        fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &st);
+        check(r == FOV_OK && st.bad_samples == 1 && rgb[0] <= 0.0f && rgb[0] >= 0.0f, "overflowing radiance -> black, counted in bad_samples",
+              "%s bad %llu rgb %g", fovpt_result_string(r), (unsigned long long)st.bad_samples, (double)rgb[0]);
+    }
+    free(b.mem);
+}
+
+/* a small Cornell-like box: Lambert walls, a Phong sphere, a quad light */
+static void cornell(fovpt_material *m, fovpt_shape *sh, fovpt_scene_desc *d, int mirror_glass)
+{
+    float p[3], u[3], v[3], nn[3];
+    int i;
+    for (i = 0; i < 6; ++i) fovpt_material_init(&m[i]);
+    m[1].albedo[1] = m[1].albedo[2] = 0.1f;           /* red */
+    m[2].albedo[0] = m[2].albedo[2] = 0.1f;           /* green */
+    m[3].emission[0] = m[3].emission[1] = m[3].emission[2] = 15.0f;
+    m[4].type = FOVPT_MAT_PHONG;
+    m[4].albedo[0] = 0.2f; m[4].albedo[1] = 0.3f; m[4].albedo[2] = 0.5f;
+    m[4].specular[0] = m[4].specular[1] = m[4].specular[2] = 0.4f;
+    m[4].exponent = 30.0f;
+    m[5].type = mirror_glass ? FOVPT_MAT_DIELECTRIC : FOVPT_MAT_MIRROR;
+    m[5].albedo[0] = m[5].albedo[1] = m[5].albedo[2] = 0.95f;
+    fovpt__set3(p, 0, -1, 0); fovpt__set3(nn, 0, 1, 0); fovpt_shape_plane(&sh[0], p, nn, 0);   /* floor */
+    fovpt__set3(p, 0, 1, 0); fovpt__set3(nn, 0, -1, 0); fovpt_shape_plane(&sh[1], p, nn, 0);   /* ceiling */
+    fovpt__set3(p, 0, 0, 1); fovpt__set3(nn, 0, 0, -1); fovpt_shape_plane(&sh[2], p, nn, 0);   /* back */
+    fovpt__set3(p, -1, -1, -1); fovpt__set3(u, 0, 2, 0); fovpt__set3(v, 0, 0, 2); fovpt_shape_quad(&sh[3], p, u, v, 1);
+    fovpt__set3(p, 1, -1, -1); fovpt_shape_quad(&sh[4], p, u, v, 2);
+    fovpt__set3(p, -0.25f, 0.999f, -0.25f); fovpt__set3(u, 0.5f, 0, 0); fovpt__set3(v, 0, 0, 0.5f); fovpt_shape_quad(&sh[5], p, u, v, 3);
+    fovpt_shape_sphere(&sh[6], -0.4f, -0.6f, 0.3f, 0.4f, 4);
+    fovpt_shape_sphere(&sh[7], 0.45f, -0.65f, -0.2f, 0.35f, 5);
+    fovpt_scene_desc_init(d);
+    d->shapes = sh; d->num_shapes = 8; d->materials = m; d->num_materials = 6;
+    d->background[0] = d->background[1] = d->background[2] = 0.05f;
+}
+
+static void test_nee_equivalence(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    int glass;
+    for (glass = 0; glass < 2; ++glass) {
+        stat_acc a[2] = { { 0, 0, 0 }, { 0, 0, 0 } };
+        int nee, i;
+        cornell(m, sh, &d, glass);
+        build(&b, &d);
+        for (nee = 0; nee < 2; ++nee) {
+            fovpt_config c = fovpt_config_default();
+            c.no_nee = (uint32_t)(1 - nee);
+            for (i = 0; i < 60000; ++i) {
+                fovpt_camera cam;
+                float o[3], dd[3], rgb[3];
+                fovpt_rng rng;
+                fovpt_camera_init(&cam, 32, 32);
+                cam.pos[2] = -3.0f;
+                fovpt_camera_ray(&cam, frand(0.0f, 32.0f), frand(0.0f, 32.0f), o, dd);
+                fovpt_rng_init(&rng, 21 + (uint32_t)nee, (uint32_t)i, 0, 0);
+                fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+                acc_add(&a[nee], (double)(rgb[0] + rgb[1] + rgb[2]) / 3.0);
+            }
+        }
+        {
+            double dm = fabs(acc_mean(&a[0]) - acc_mean(&a[1])), se = sqrt(acc_se(&a[0]) * acc_se(&a[0]) + acc_se(&a[1]) * acc_se(&a[1]));
+            check(dm < 3.0 * se && acc_se(&a[1]) < acc_se(&a[0]),
+                  N("Cornell box with %s: NEE on and off agree within 3 standard errors, NEE has less noise", glass ? "glass" : "mirror"),
+                  "off %.5f (se %.5f) on %.5f (se %.5f)", acc_mean(&a[0]), acc_se(&a[0]), acc_mean(&a[1]), acc_se(&a[1]));
+        }
+        free(b.mem);
+    }
+}
+
+static void test_whitted(void)
+{
+    fovpt_material m[3];
+    fovpt_shape sh[3];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_config c;
+    float p[3] = { 0, 0, 0 }, nn[3] = { 0, 1, 0 }, q[3] = { -0.05f, 2.0f, -0.05f }, u[3] = { 0.1f, 0, 0 }, v[3] = { 0, 0, 0.1f };
+    float o[3] = { 0, 1, 0 }, dd[3] = { 0, -1, 0 }, rgb[3];
+    fovpt_rng rng;
+    fovpt_material_init(&m[0]);
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.5f;
+    fovpt_material_init(&m[1]);
+    m[1].emission[0] = m[1].emission[1] = m[1].emission[2] = 10.0f;
+    fovpt_shape_plane(&sh[0], p, nn, 0);
+    fovpt_shape_quad(&sh[1], q, u, v, 1);
+    fovpt_scene_desc_init(&d);
+    d.shapes = sh; d.num_shapes = 2; d.materials = m; d.num_materials = 2;
+    build(&b, &d);
+    memset(&c, 0, sizeof c);
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    fovpt_rng_init(&rng, 0, 0, 0, 0);
+    fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+    {
+        double expect = 0.5 / 3.141592653589793 * 10.0 * 0.01 / 4.0;
+        check(fabs((double)rgb[0] - expect) < 1e-5 * expect + 1e-9, "Whitted: small quad light over a Lambert plane = kd/pi Le A / d^2",
+              "%.7f vs %.7f", (double)rgb[0], expect);
+        /* the path tracer converges to nearly the same (the light is small) */
+        {
+            stat_acc a = { 0, 0, 0 };
+            int i;
+            fovpt_config pc = fovpt_config_default();
+            pc.max_depth = 1;
+            for (i = 0; i < 20000; ++i) {
+                fovpt_rng_init(&rng, 4, (uint32_t)i, 0, 0);
+                fovpt_radiance(&b.s, &pc, o, dd, &rng, rgb, NULL);
+                acc_add(&a, (double)rgb[0]);
+            }
+            check(fabs(acc_mean(&a) - expect) < 3.0 * acc_se(&a) + 0.01 * expect, "path tracer (NEE) agrees with it for a small light",
+                  "%.7f (se %.7f) vs %.7f", acc_mean(&a), acc_se(&a), expect);
+        }
+    }
+    free(b.mem);
+    /* mirror under a uniform background: tint * background; depth 0 stops before it */
+    m[0].type = FOVPT_MAT_MIRROR;
+    m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.8f;
+    d.num_shapes = 1;
+    d.background[0] = d.background[1] = d.background[2] = 1.0f;
+    build(&b, &d);
+    {
+        float dd2[3] = { 0.3f, -1.0f, 0.1f };
+        fovpt_radiance(&b.s, &c, o, dd2, &rng, rgb, NULL);
+        check(fabsf(rgb[1] - 0.8f) < 1e-6f, "Whitted mirror: tint x background", "%g", (double)rgb[1]);
+        c.max_depth = 0;
+        fovpt_radiance(&b.s, &c, o, dd2, &rng, rgb, NULL);
+        check(rgb[1] <= 0.0f, "Whitted depth 0: no reflection ray", "%g", (double)rgb[1]);
+    }
+    free(b.mem);
+    /* a glass box under a uniform background: both Fresnel branches keep the energy */
+    {
+        float lo[3] = { -1, -1, -1 }, hi[3] = { 1, 1, 1 };
+        float dd3[3] = { 0.2f, -0.1f, 1.0f }, o3[3] = { 0.1f, 0.2f, -5.0f };
+        m[0].type = FOVPT_MAT_DIELECTRIC;
+        m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 1.0f;
+        fovpt_shape_box(&sh[0], lo, hi, 0);
+        build(&b, &d);
+        c.max_depth = 14;
+        fovpt_radiance(&b.s, &c, o3, dd3, &rng, rgb, NULL);
+        check(rgb[0] > 0.97f && rgb[0] < 1.0f + 1e-5f, "Whitted glass box, depth 14: reflected + refracted energy ~ 1", "%g", (double)rgb[0]);
+        c.max_depth = 1;
+        fovpt_radiance(&b.s, &c, o3, dd3, &rng, rgb, NULL);
+        check(rgb[0] > 0.03f && rgb[0] < 0.06f, "Whitted glass box, depth 1: only the first reflection (about 4 %)", "%g", (double)rgb[0]);
+        free(b.mem);
+    }
+}
+
+static void test_render(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fov_gaze g = { 24.0f, 16.0f };
+    size_t n = 0;
+    void *mem;
+    uint8_t img1[48 * 32 * 3], img2[48 * 32 * 3], img3[48 * 32 * 3];
+    float f1[48 * 32 * 3];
+    fovpt_output out;
+    fovpt_stats st;
+    fov_result r;
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, 48, 32);
+    cam.pos[2] = -3.0f;
+    c.spp = 4;
+    r = fovpt_memory_size(&c, &cam, &n);
+    check(r == FOV_OK && n == 48u * 32u * 16u, "memory_size UNIFORM = 16 bytes per pixel", "%s %zu", fovpt_result_string(r), n);
+    mem = amalloc(n);
+    r = fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    check(r == FOV_OK, "init", "%s", fovpt_result_string(r));
+    fovpt_output_init(&out);
+    out.rgb8 = img1; out.rgb = f1;
+    memset(&st, 0, sizeof st);
+    fovpt_render(&ctx, 0, &out, &st);
+    check(st.camera_rays == 48u * 32u * 4u && st.samples == st.camera_rays && st.rays == st.camera_rays + st.bounce_rays + st.shadow_rays &&
+              st.shadow_rays > 0,
+          "stats: camera rays = pixels x spp, rays = sum of kinds", "cam %llu rays %llu", (unsigned long long)st.camera_rays,
+          (unsigned long long)st.rays);
+    {
+        int i, finite = 1;
+        for (i = 0; i < 48 * 32 * 3; ++i) if (!(f1[i] >= 0.0f && f1[i] < 1e6f)) finite = 0;
+        check(finite, "image finite and non-negative", " ");
+    }
+    out.rgb = NULL;
+    out.rgb8 = img2;
+    fovpt_render(&ctx, 0, &out, NULL);
+    check(memcmp(img1, img2, sizeof img1) == 0, "deterministic: same seed and frame -> identical image", " ");
+    /* rows in three uneven bands, in reverse order */
+    fovpt_trace_rows(&ctx, 0, 20, 32, NULL);
+    fovpt_trace_rows(&ctx, 0, 7, 20, NULL);
+    fovpt_trace_rows(&ctx, 0, 0, 7, NULL);
+    out.rgb8 = img3;
+    fovpt_resolve_rows(&ctx, 0, 32, &out);
+    check(memcmp(img1, img3, sizeof img1) == 0, "row bands in any order -> the same image", " ");
+    fovpt_render(&ctx, 1, &out, NULL);
+    check(memcmp(img1, img3, sizeof img1) != 0, "another frame index -> another noise pattern", " ");
+    {
+        fovpt_config c2 = c;
+        fovpt_ctx ctx2;
+        c2.seed = 99;
+        fovpt_init(&ctx2, &c2, &b.s, &cam, g, mem, n);
+        fovpt_render(&ctx2, 0, &out, NULL);
+        check(memcmp(img1, img3, sizeof img1) != 0, "another seed -> another noise pattern", " ");
+    }
+    /* progressive accumulation: 8 frames of 4 spp = one frame of 32 spp in expectation,
+       and the noise falls: compare both against a 256-spp reference */
+    {
+        static float ref[48 * 32 * 3], acc[48 * 32 * 3], one[48 * 32 * 3];
+        fovpt_config ca = c;
+        fovpt_ctx cx;
+        int f, i;
+        double e_acc = 0.0, e_one = 0.0;
+        ca.spp = 256; ca.seed = 5;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        out.rgb8 = NULL; out.rgb = ref;
+        fovpt_render(&cx, 0, &out, NULL);
+        ca.spp = 4; ca.seed = 6;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        out.rgb = one;
+        fovpt_render(&cx, 0, &out, NULL);
+        ca.accumulate = 1;
+        fovpt_init(&cx, &ca, &b.s, &cam, g, mem, n);
+        for (f = 0; f < 8; ++f) fovpt_trace_rows(&cx, (uint32_t)f, 0, 32, NULL);
+        out.rgb = acc;
+        fovpt_resolve_rows(&cx, 0, 32, &out);
+        for (i = 0; i < 48 * 32 * 3; ++i) {
+            e_acc += ((double)acc[i] - (double)ref[i]) * ((double)acc[i] - (double)ref[i]);
+            e_one += ((double)one[i] - (double)ref[i]) * ((double)one[i] - (double)ref[i]);
+        }
+        check(e_acc < e_one / 4.0, "progressive accumulation: 8 frames x 4 spp have under 1/4 the squared error of 4 spp",
+              "sq err %.4f vs %.4f", e_acc, e_one);
+        {
+            fovpt_camera cam2 = cam;
+            cam2.pos[0] = 0.1f;
+            fovpt_set_view(&cx, &cam2, g);
+            check(cx.accum[3] <= 0.0f, "set_view with a moved camera resets the accumulation", "%g", (double)cx.accum[3]);
+        }
+    }
+    /* bad input */
+    {
+        fovpt_camera bc = cam;
+        fov_gaze bg = { NAN, 0.0f };
+        fovpt_config bcfg = c;
+        check(fovpt_init(&ctx, &c, &b.s, &cam, bg, mem, n) == FOV_ERR_NOT_FINITE, "init: NaN gaze", " ");
+        bc.width = 0;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: width 0", " ");
+        bc.width = 70000;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_LIMIT, "init: width above FOVPT_MAX_DIM", " ");
+        bc = cam; bc.pos[1] = INFINITY;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_NOT_FINITE, "init: infinite camera", " ");
+        bc = cam; bc.target[2] = bc.pos[2];
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_DEGENERATE, "init: camera target = position", " ");
+        bc = cam; bc.fov_y_deg = 180.0f;
+        check(fovpt_init(&ctx, &c, &b.s, &bc, g, mem, n) == FOV_ERR_INVALID_ARG, "init: fov 180", " ");
+        check(fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n - 1u) == FOV_ERR_TOO_SMALL, "init: memory too small", " ");
+        check(fovpt_init(&ctx, &c, &b.s, &cam, g, NULL, n) == FOV_ERR_NULL, "init: memory NULL", " ");
+        bcfg.temporal.reuse = 1;
+        check(fovpt_memory_size(&bcfg, &cam, &n) == FOV_ERR_UNSUPPORTED, "temporal reuse with UNIFORM: FOV_ERR_UNSUPPORTED (SELECTIVE, JIN only)", " ");
+        fovpt_memory_size(&c, &cam, &n);
+        fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+        check(fovpt_trace_rows(&ctx, 0, 10, 40, NULL) == FOV_ERR_INVALID_ARG && fovpt_trace_rows(&ctx, 0, 10, 5, NULL) == FOV_ERR_INVALID_ARG,
+              "trace_rows: rows outside the image", " ");
+        out.rgb8_stride = 10;
+        out.rgb8 = img1;
+        check(fovpt_resolve_rows(&ctx, 0, 1, &out) == FOV_ERR_INVALID_ARG, "resolve_rows: stride below 3 * width", " ");
+        {
+            float o[3] = { 0, 0, 0 }, dd[3] = { NAN, 0, 1 }, rgb[3];
+            fovpt_rng rng;
+            fovpt_rng_init(&rng, 0, 0, 0, 0);
+            check(fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL) == FOV_ERR_NOT_FINITE, "radiance: NaN direction", " ");
+            dd[0] = 0.0f; dd[2] = 0.0f;
+            check(fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL) == FOV_ERR_DEGENERATE, "radiance: zero direction", " ");
+        }
+    }
+    free(mem);
+    free(b.mem);
+}
+
+/* ==== 5. foveation building blocks ============================================================ */
+static void test_foveation_blocks(void)
+{
+    int i, ok = 1, lin = 1, ends = 1;
+    for (i = 0; i <= 100; ++i) {
+        float t = (float)i / 100.0f, w[4], v;
+        fovpt_catmull_rom(t, w);
+        if (fabsf(w[0] + w[1] + w[2] + w[3] - 1.0f) > 1e-6f) ok = 0;
+        v = w[0] * 1.0f + w[1] * 3.0f + w[2] * 5.0f + w[3] * 7.0f; /* a linear ramp 1, 3, 5, 7 */
+        if (fabsf(v - (3.0f + 2.0f * t)) > 1e-5f) lin = 0;
+    }
+    {
+        float w[4];
+        fovpt_catmull_rom(0.0f, w);
+        if (fabsf(w[1] - 1.0f) > 0.0f || fabsf(w[0]) > 0.0f || fabsf(w[2]) > 0.0f) ends = 0;
+        fovpt_catmull_rom(1.0f, w);
+        if (fabsf(w[2] - 1.0f) > 1e-7f || fabsf(w[1]) > 1e-7f || fabsf(w[3]) > 1e-7f) ends = 0;
+    }
+    check(ok, "Catmull-Rom weights sum to one (101 values of t)", " ");
+    check(lin, "Catmull-Rom reproduces linear ramps", " ");
+    check(ends, "Catmull-Rom gives v1 at t = 0 and v2 at t = 1 (the thesis's -1/2 would give 2 v2)", " ");
+    {   /* tau_fov against the notes' reference table (seed 004 Fig. 7 shapes) */
+        static const float e[10] = { 0, 1, 2, 3.3f, 5.5f, 8, 12.1f, 20, 25, 30 };
+        static const float r1[10] = { 1.000f, 1.124f, 1.428f, 2.000f, 3.090f, 4.300f, 6.209f, 9.509f, 11.160f, 12.000f };
+        static const float r2[10] = { 9.000f, 9.042f, 9.210f, 10.000f, 12.676f, 14.760f, 17.015f, 19.245f, 19.830f, 20.000f };
+        fovpt_config c = fovpt_config_default();
+        float worst1 = 0.0f, worst2 = 0.0f, v;
+        for (i = 0; i < 10; ++i) {
+            fovpt_tau_fov(&c.selective, e[i], &v);
+            worst1 = fmaxf(worst1, fabsf(v - r1[i]));
+        }
+        c.selective.tau_shape[0] = 9; c.selective.tau_shape[1] = 10; c.selective.tau_shape[2] = 1.5f; c.selective.tau_shape[3] = 20;
+        for (i = 0; i < 10; ++i) {
+            fovpt_tau_fov(&c.selective, e[i], &v);
+            worst2 = fmaxf(worst2, fabsf(v - r2[i]));
+        }
+        check(worst1 < 1.5e-3f, "tau_fov (1, 2, 0.5, 12) matches the reference table (10 values)", "max err %g", (double)worst1);
+        check(worst2 < 1.5e-3f, "tau_fov (9, 10, 1.5, 20) matches the reference table (10 values)", "max err %g", (double)worst2);
+        {
+            float a, b2, s0, s1;
+            fovpt_tau_fov(&c.selective, 3.3f - 1e-3f, &a);
+            fovpt_tau_fov(&c.selective, 3.3f + 1e-3f, &b2);
+            fovpt_tau_fov(&c.selective, 1e-3f, &s0);
+            fovpt_tau_fov(&c.selective, 30.0f - 1e-3f, &s1);
+            check(fabsf((b2 - a) / 2e-3f - 1.5f) < 0.02f && fabsf(s0 - 9.0f) < 1e-4f && fabsf(s1 - 20.0f) < 1e-4f,
+                  "tau_fov: slope tau'_f at e_f (C1), flat at 0 and e_np", "slope %g", (double)((b2 - a) / 2e-3f));
+        }
+        fovpt_tau_fov(&c.selective, 50.0f, &v);
+        check(fabsf(v - 20.0f) < 1e-6f, "tau_fov beyond e_np = tau_np", " ");
+        c.selective.tau_shape[2] = 0.01f;
+        check(fovpt_tau_fov(&c.selective, 2.0f, &v) == FOV_ERR_INVALID_ARG && fovpt_tau_fov(&c.selective, NAN, &v) == FOV_ERR_NOT_FINITE,
+              "tau_fov: non-monotone shape and NaN rejected", " ");
+    }
+    {   /* alpha(e): the notes' derived values */
+        fovpt_config c = fovpt_config_default();
+        float a2 = fovpt_alpha(&c.temporal, &c.selective, 2.0f), a10 = fovpt_alpha(&c.temporal, &c.selective, 10.0f);
+        float a20 = fovpt_alpha(&c.temporal, &c.selective, 20.0f), a40 = fovpt_alpha(&c.temporal, &c.selective, 40.0f);
+        float a90 = fovpt_alpha(&c.temporal, &c.selective, 90.0f), a0 = fovpt_alpha(&c.temporal, &c.selective, 0.0f);
+        check(fabsf(a2 - 0.839f) < 1e-3f && fabsf(a10 - 0.564f) < 1e-3f && fabsf(a20 - 0.368f) < 1e-3f && fabsf(a40 - 0.133f) < 1e-3f &&
+                  fabsf(a90 - 0.1f) < 1e-6f && fabsf(a0 - 0.9f) < 1e-6f,
+              "alpha(e): 0.9 at 0, 0.839 at 2, 0.564 at 10, 0.368 at 20, 0.133 at 40, 0.1 beyond 45",
+              "%g %g %g %g %g", (double)a2, (double)a10, (double)a20, (double)a40, (double)a90);
+    }
+}
+
+
+/* ==== 6. LAYERS (seed 002) ==================================================================== */
+typedef struct layers_fixture {
+    fovpt_material m[2];
+    fovpt_shape sh[2];
+    fovpt_scene_desc d;
+    scene_buf b;
+} layers_fixture;
+
+/* a large Lambert quad facing the camera, lit by a sphere light: a smooth image (Whitted) */
+static void smooth_scene(layers_fixture *F, int empty)
+{
+    float p[3] = { -50, -50, 5 }, u[3] = { 100, 0, 0 }, v[3] = { 0, 100, 0 };
+    fovpt_material_init(&F->m[0]);
+    fovpt_material_init(&F->m[1]);
+    F->m[1].emission[0] = 40.0f; F->m[1].emission[1] = 30.0f; F->m[1].emission[2] = 20.0f;
+    fovpt_shape_quad(&F->sh[0], p, u, v, 0);
+    fovpt_shape_sphere(&F->sh[1], 1.0f, 2.0f, -1.0f, 0.3f, 1); /* behind the camera */
+    fovpt_scene_desc_init(&F->d);
+    F->d.shapes = F->sh; F->d.num_shapes = empty ? 0u : 2u; F->d.materials = F->m; F->d.num_materials = 2;
+    F->d.background[0] = 0.3f; F->d.background[1] = 0.2f; F->d.background[2] = 0.1f;
+    build(&F->b, &F->d);
+}
+
+/* expected lattice counts, computed here from the documented rule with fovsdf's model */
+static void expected_targets_lay(const fovpt_layers_cfg *lay, double reach, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt);
+static void expected_targets(const fovpt_config *c, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt)
+{
+    expected_targets_lay(&c->layers, 2.0, cam, g, cnt);
+}
+static void expected_targets_lay(const fovpt_layers_cfg *lay, double reach, const fovpt_camera *cam, fov_gaze g, uint64_t *cnt)
+{
+    fov_ecc_model em;
+    double f_px = 0.5 * cam->height / tan(0.5 * (double)cam->fov_y_deg * 3.141592653589793 / 180.0);
+    uint32_t n, x, y;
+    long gx = (long)floor((double)g.x), gy = (long)floor((double)g.y);
+    fovsdf_ecc_init(&em, NULL, cam->fov_y_deg, cam->width, cam->height, g);
+    for (n = 0; n < lay->count; ++n) {
+        long d = (long)lay->layer[n].stride, ox = 0, oy = 0;
+        double apron = (reach * sqrt(2.0) * (double)d + 1.0) / f_px * 180.0 / 3.141592653589793, tr;
+        double r0 = (double)lay->layer[0].radius_deg;
+        if (n > 0 && !lay->snap) { ox = ((gx % d) + d) % d; oy = ((gy % d) + d) % d; }
+        if (n == 0) tr = r0 > 0.0 ? r0 + apron : 1e30;
+        else {
+            tr = (double)lay->layer[n].radius_deg + 0.5 * (double)lay->blend_deg + apron;
+            if (r0 > 0.0 && r0 + apron < tr) tr = r0 + apron;
+        }
+        cnt[n] = 0;
+        for (y = 0; y < cam->height; ++y)
+            for (x = 0; x < cam->width; ++x)
+                if (((long)x - ox) % d == 0 && ((long)y - oy) % d == 0 &&
+                    (double)fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f) <= tr + 1e-4)
+                    cnt[n]++;
+    }
+}
+
+static void test_layers(void)
+{
+    layers_fixture F;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_stats st;
+    size_t n = 0, expect_bytes = 0;
+    void *mem;
+    uint32_t W = 160, H = 120, i, L;
+    fovpt_output out;
+    static float img[160 * 120 * 3], ref[160 * 120 * 3];
+    fov_gaze centre = { 80.3f, 60.7f }, corner = { 2.0f, 3.0f };
+    uint64_t rays_centre = 0, rays_corner = 0;
+    int gi;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 90.0f;
+    c.method = FOVPT_METHOD_LAYERS;
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    for (L = 0; L < 4; ++L) {
+        uint32_t d = c.layers.layer[L].stride;
+        expect_bytes += (((size_t)(W / d + 2u) * (H / d + 2u) * 16u + 15u) & ~(size_t)15u);
+    }
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == expect_bytes, "LAYERS memory = sum of lattice grids (W/d+2)(H/d+2) x 16 B",
+          "%zu vs %zu", n, expect_bytes);
+    mem = amalloc(n);
+    for (gi = 0; gi < 4; ++gi) {
+        fov_gaze g = gi % 2 ? corner : centre;
+        uint64_t expect[FOVPT_MAX_LAYERS], total = 0;
+        int ok = 1;
+        fovpt_config cc = c;
+        if (gi >= 2) cc.layers.layer[0].radius_deg = 45.0f; /* an occlusion mask */
+        fovpt_init(&ctx, &cc, &F.b.s, &cam, g, mem, n);
+        memset(&st, 0, sizeof st);
+        fovpt_trace_rows(&ctx, 0, 0, H, &st);
+        expected_targets(&cc, &cam, g, expect);
+        for (L = 0; L < 4; ++L) {
+            if (st.layer_targets[L] != expect[L] || st.layer_samples[L] != 4u * expect[L]) ok = 0;
+            total += 4u * expect[L];
+        }
+        check(ok && st.camera_rays == total,
+              N("LAYERS lattice counts per layer match the rule (gaze %s, %s); rays = spp x targets", gi % 2 ? "corner" : "centre",
+                gi >= 2 ? "mask 45 deg" : "no mask"),
+              "targets %llu %llu %llu %llu, expected %llu %llu %llu %llu", (unsigned long long)st.layer_targets[0],
+              (unsigned long long)st.layer_targets[1], (unsigned long long)st.layer_targets[2], (unsigned long long)st.layer_targets[3],
+              (unsigned long long)expect[0], (unsigned long long)expect[1], (unsigned long long)expect[2], (unsigned long long)expect[3]);
+        if (gi == 2) rays_centre = st.camera_rays;
+        if (gi == 3) rays_corner = st.camera_rays;
+        if (gi == 0) {
+            check(st.layer_targets[3] < st.layer_targets[2] * 4u && st.layer_targets[0] == (uint64_t)(W / 4u) * (H / 4u),
+                  "LAYERS: the background lattice covers the image at stride 4", "%llu", (unsigned long long)st.layer_targets[0]);
+        }
+    }
+    check(rays_corner < rays_centre, "LAYERS: a corner gaze with the mask traces fewer rays (layers leave the mask)",
+          "corner %llu centre %llu", (unsigned long long)rays_corner, (unsigned long long)rays_centre);
+    /* quality on a smooth image: LAYERS vs UNIFORM (both Whitted, 4 spp) per ring */
+    {
+        fovpt_config cu = c;
+        fov_ecc_model em;
+        double se[4] = { 0, 0, 0, 0 };
+        long cnt[4] = { 0, 0, 0, 0 };
+        float rings[4] = { 6.0f, 10.0f, 20.0f, 1000.0f };
+        uint32_t x, y;
+        void *mu;
+        size_t nu;
+        cu.method = FOVPT_METHOD_UNIFORM;
+        cu.spp = 4;
+        fovpt_memory_size(&cu, &cam, &nu);
+        mu = amalloc(nu);
+        fovpt_init(&ctx, &cu, &F.b.s, &cam, centre, mu, nu);
+        fovpt_output_init(&out);
+        out.rgb = ref;
+        fovpt_render(&ctx, 0, &out, NULL);
+        free(mu);
+        fovpt_init(&ctx, &c, &F.b.s, &cam, centre, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, centre);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+                int r = e < rings[0] ? 0 : e < rings[1] ? 1 : e < rings[2] ? 2 : 3;
+                for (i = 0; i < 3; ++i) {
+                    double dd = (double)img[3u * (y * W + x) + i] - (double)ref[3u * (y * W + x) + i];
+                    se[r] += dd * dd;
+                }
+                cnt[r] += 3;
+            }
+        for (i = 0; i < 4; ++i) {
+            double psnr = 10.0 * log10(1.0 / (se[i] / (double)cnt[i] + 1e-30));
+            check(psnr > 40.0, N("LAYERS on a smooth image: PSNR against UNIFORM > 40 dB in ring %u (fill + blend)", i),
+                  "%.1f dB", psnr);
+        }
+    }
+    /* constant image: every pixel inside the mask = the background, outside black */
+    {
+        layers_fixture E;
+        fovpt_config ce = c;
+        fov_ecc_model em;
+        uint32_t x, y, bad = 0;
+        int black_ok = 1;
+        smooth_scene(&E, 1);
+        ce.layers.layer[0].radius_deg = 45.0f;
+        fovpt_init(&ctx, &ce, &E.b.s, &cam, corner, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, corner);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f), *p = img + 3u * (y * W + x);
+                if (e < 44.9f && (fabsf(p[0] - 0.3f) > 1e-5f || fabsf(p[2] - 0.1f) > 1e-5f)) bad++;
+                if (e > 45.1f && (p[0] > 0.0f || p[1] > 0.0f)) black_ok = 0;
+            }
+        check(bad == 0, "LAYERS on a constant image reproduces it exactly (interpolation weights sum to 1)", "%u bad pixels", bad);
+        check(black_ok, "LAYERS: pixels beyond the occlusion mask are black", " ");
+        free(E.b.mem);
+    }
+    /* row bands: same image */
+    {
+        static uint8_t a8[160 * 120 * 3], b8[160 * 120 * 3];
+        fovpt_config cp = c;
+        cp.mode = FOVPT_MODE_PATH;
+        fovpt_init(&ctx, &cp, &F.b.s, &cam, centre, mem, n);
+        fovpt_output_init(&out);
+        out.rgb8 = a8;
+        fovpt_render(&ctx, 3, &out, NULL);
+        fovpt_trace_rows(&ctx, 3, 50, 120, NULL);
+        fovpt_trace_rows(&ctx, 3, 0, 50, NULL);
+        fovpt_resolve_rows(&ctx, 60, 120, &out);
+        out.rgb8 = b8;
+        fovpt_resolve_rows(&ctx, 0, 120, &out);
+        check(memcmp(a8, b8, sizeof a8) == 0, "LAYERS (path mode): row bands in any order -> the same image", " ");
+    }
+    free(mem);
+    free(F.b.mem);
+}
+
+/* ==== 7. ZONES (seed 000 ch. 4) ================================================================ */
+static void test_zones(void)
+{
+    layers_fixture F;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cu;
+    fovpt_ctx ctx;
+    fovpt_stats st, su;
+    size_t n = 0, nu = 0;
+    void *mem, *mu;
+    uint32_t W = 160, H = 120, i;
+    fovpt_output out;
+    static float img[160 * 120 * 3], ref[160 * 120 * 3];
+    fov_gaze g = { 70.2f, 50.9f };
+    fov_ecc_model em;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 90.0f;
+    c.method = FOVPT_METHOD_ZONES;
+    c.mode = FOVPT_MODE_WHITTED;
+    c.spp = 2;
+    c.zones.inner_deg = 10.0f;
+    c.zones.middle_deg = 25.0f;
+    fovpt_config_resolve(&c, &c);
+    {
+        size_t e = 0;
+        uint32_t k, ds[3] = { 4, 2, 1 };
+        for (k = 0; k < 3; ++k) e += ((size_t)(W / ds[k] + 2u) * (H / ds[k] + 2u) * 16u + 15u) & ~(size_t)15u;
+        check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == e, "ZONES memory = lattices of stride 4, 2, 1", "%zu vs %zu", n, e);
+    }
+    mem = amalloc(n);
+    fovpt_init(&ctx, &c, &F.b.s, &cam, g, mem, n);
+    memset(&st, 0, sizeof st);
+    fovpt_trace_rows(&ctx, 0, 0, H, &st);
+    {
+        fovpt_layers_cfg lay;
+        uint64_t expect[FOVPT_MAX_LAYERS];
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, g);
+        memset(&lay, 0, sizeof lay);
+        lay.count = 3;
+        lay.layer[0].stride = 4; lay.layer[1].stride = 2; lay.layer[2].stride = 1;
+        lay.layer[1].radius_deg = 25.0f; lay.layer[2].radius_deg = 10.0f;
+        lay.snap = 1;
+        lay.blend_deg = c.zones.overlap_px / fovsdf_ecc_ppd(&em);
+        expected_targets_lay(&lay, 3.0, &cam, g, expect);
+        check(st.layer_targets[0] == expect[0] && st.layer_targets[1] == expect[1] && st.layer_targets[2] == expect[2] &&
+                  expect[0] == (uint64_t)(W / 4u) * (H / 4u) && st.camera_rays == 2u * (expect[0] + expect[1] + expect[2]),
+              "ZONES: samples per zone match the rule (stride 4 everywhere, 2 and 1 inside the zones)",
+              "%llu %llu %llu vs %llu %llu %llu", (unsigned long long)st.layer_targets[0], (unsigned long long)st.layer_targets[1],
+              (unsigned long long)st.layer_targets[2], (unsigned long long)expect[0], (unsigned long long)expect[1],
+              (unsigned long long)expect[2]);
+    }
+    fovpt_output_init(&out);
+    out.rgb = img;
+    fovpt_resolve_rows(&ctx, 0, H, &out);
+    cu = c;
+    cu.method = FOVPT_METHOD_UNIFORM;
+    fovpt_memory_size(&cu, &cam, &nu);
+    mu = amalloc(nu);
+    fovpt_init(&ctx, &cu, &F.b.s, &cam, g, mu, nu);
+    memset(&su, 0, sizeof su);
+    out.rgb = ref;
+    fovpt_render(&ctx, 0, &out, &su);
+    check(st.camera_rays < su.camera_rays * 6u / 10u, "ZONES trace fewer camera rays than UNIFORM", "%llu vs %llu",
+          (unsigned long long)st.camera_rays, (unsigned long long)su.camera_rays);
+    {
+        double se[3] = { 0, 0, 0 };
+        long cnt[3] = { 0, 0, 0 };
+        uint32_t x, y;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+                int r = e < 10.0f ? 0 : e < 25.0f ? 1 : 2;
+                for (i = 0; i < 3; ++i) {
+                    double dd = (double)img[3u * (y * W + x) + i] - (double)ref[3u * (y * W + x) + i];
+                    se[r] += dd * dd;
+                }
+                cnt[r] += 3;
+            }
+        for (i = 0; i < 3; ++i) {
+            double psnr = 10.0 * log10(1.0 / (se[i] / (double)(cnt[i] ? cnt[i] : 1) + 1e-30));
+            check(cnt[i] > 0 && psnr > 40.0, N("ZONES on a smooth image: PSNR against UNIFORM > 40 dB in zone %u (Lanczos + blend)", i),
+                  "%.1f dB", psnr);
+        }
+    }
+    {   /* constant image reproduced */
+        layers_fixture E;
+        uint32_t x, bad = 0;
+        smooth_scene(&E, 1);
+        fovpt_init(&ctx, &c, &E.b.s, &cam, g, mem, n);
+        out.rgb = img;
+        fovpt_render(&ctx, 0, &out, NULL);
+        for (x = 0; x < W * H; ++x)
+            if (fabsf(img[3u * x] - 0.3f) > 1e-5f || fabsf(img[3u * x + 2u] - 0.1f) > 1e-5f) bad++;
+        check(bad == 0, "ZONES on a constant image reproduces it (normalised Lanczos weights)", "%u bad pixels", bad);
+        free(E.b.mem);
+    }
+    free(mu);
+    free(mem);
+    free(F.b.mem);
+}
+
+/* ==== 8. SELECTIVE and JIN (seed 004) ========================================================= */
+static fovpt__pre mkpre(float r, float g, float b, uint32_t poid, float nz, uint32_t psc, uint32_t soid)
+{
+    fovpt__pre p;
+    memset(&p, 0, sizeof p);
+    p.col[0] = r; p.col[1] = g; p.col[2] = b;
+    p.poid = poid; p.soid = soid;
+    p.pn[0] = sqrtf(fmaxf(0.0f, 1.0f - nz * nz)); p.pn[2] = nz;
+    p.sn[2] = 1.0f;
+    p.sc = psc;
+    return p;
+}
+
+static void test_selective_rules(void)
+{
+    fovpt_config c = fovpt_config_default();
+    const fovpt_selective_cfg *sc = &c.selective;
+    float ct = cosf(10.0f * 3.14159265f / 180.0f);
+    fovpt__pre P = mkpre(0.5f, 0.5f, 0.5f, 1, 1.0f, 0, FOVPT_PRIM_NONE), A = P, B = P, C = P;
+    const fovpt__pre *Q[3];
+    Q[0] = &A; Q[1] = &B; Q[2] = &C;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: no discordant attribute -> tau_col (0.02)", " ");
+    B.poid = 2;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.05f) < 1e-7f, "tau_sel: another object id -> tau_poid (0.05)", " ");
+    B = P;
+    C = mkpre(0.5f, 0.5f, 0.5f, 1, cosf(20.0f * 3.14159265f / 180.0f), 0, FOVPT_PRIM_NONE);
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.06f) < 1e-7f, "tau_sel: normals 20 degrees apart (tolerance 10) -> tau_psn (0.06)", " ");
+    C = mkpre(0.5f, 0.5f, 0.5f, 1, cosf(5.0f * 3.14159265f / 180.0f), 0, FOVPT_PRIM_NONE);
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: normals 5 degrees apart are concordant", " ");
+    A.sc = 1;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.06f) < 1e-7f, "tau_sel: another shadow count -> tau_psc (0.06)", " ");
+    B.soid = 7;
+    check(fabsf(fovpt__tau_sel(sc, &P, Q, ct) - 0.02f) < 1e-7f, "tau_sel: several discordant -> the minimum (tau_soid 0.02)", " ");
+    /* contrast: channel thresholds tau * (1.36, 1.02, 2.04) */
+    A = B = C = P;
+    {
+        float t = 0.05f, g_below, g_above;
+        /* contrast (mx - mn)/(mx + mn) = k  <=>  mx = mn (1 + k) / (1 - k) */
+        g_below = 0.5f * (1.0f + 0.99f * t * 1.02f) / (1.0f - 0.99f * t * 1.02f);
+        g_above = 0.5f * (1.0f + 1.01f * t * 1.02f) / (1.0f - 1.01f * t * 1.02f);
+        A.col[1] = g_below;
+        check(!fovpt__contrast(&P, Q, t), "contrast: green just below tau x 1.02 is not problematic", " ");
+        A.col[1] = g_above;
+        check(fovpt__contrast(&P, Q, t), "contrast: green just above tau x 1.02 is problematic", " ");
+        A.col[1] = 0.5f;
+        C.col[2] = 0.5f * (1.0f + 1.5f * t * 1.02f) / (1.0f - 1.5f * t * 1.02f); /* 1.5x the green limit, below blue's 2.04 */
+        check(!fovpt__contrast(&P, Q, t), "contrast: blue uses the looser 2.04 factor", " ");
+        C.col[2] = 0.0f; C.col[0] = 0.0f; C.col[1] = 0.0f;
+        check(fovpt__contrast(&P, Q, t), "contrast: black next to grey is problematic", " ");
+        A = B = C = P;
+        P.col[0] = P.col[1] = P.col[2] = 0.0f;
+        A.col[0] = A.col[1] = A.col[2] = 0.0f; B.col[0] = B.col[1] = B.col[2] = 0.0f; C.col[0] = C.col[1] = C.col[2] = 0.0f;
+        check(!fovpt__contrast(&P, Q, t), "contrast: all black is not problematic (no division by zero)", " ");
+    }
+}
+
+static double ring_psnr(const float *a, const float *b, uint32_t W, uint32_t H, fov_gaze g, float fov, float lo, float hi)
+{
+    fov_ecc_model em;
+    double se = 0.0;
+    long cnt = 0;
+    uint32_t x, y, k;
+    fovsdf_ecc_init(&em, NULL, fov, W, H, g);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            float e = fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            if (e < lo || e >= hi) continue;
+            for (k = 0; k < 3; ++k) {
+                double va = fmin(1.0, (double)a[3u * (y * W + x) + k]), vb = fmin(1.0, (double)b[3u * (y * W + x) + k]);
+                se += (va - vb) * (va - vb);
+            }
+            cnt += 3;
+        }
+    return cnt ? 10.0 * log10(1.0 / (se / (double)cnt + 1e-12)) : 0.0;
+}
+
+static void test_selective_render(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cj, cr, c1;
+    fovpt_ctx ctx;
+    fovpt_stats ss, sj, s1;
+    fovpt_output out;
+    size_t n = 0, nmax = 0;
+    void *mem;
+    uint32_t W = 96, H = 72, z;
+    static float sel[96 * 72 * 3], jin[96 * 72 * 3], ref[96 * 72 * 3], one[96 * 72 * 3];
+    fov_gaze g = { 40.0f, 40.0f };
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = -3.0f;
+    cam.fov_y_deg = 50.0f;
+    c.method = FOVPT_METHOD_SELECTIVE;
+    c.mode = FOVPT_MODE_WHITTED;
+    fovpt_config_resolve(&c, &c);
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * 68u, "SELECTIVE memory = 68 bytes per pixel", "%zu", n);
+    cr = c; cr.method = FOVPT_METHOD_UNIFORM; cr.spp = 64;
+    fovpt_memory_size(&cr, &cam, &nmax);
+    mem = amalloc(n > nmax ? n : nmax);
+    fovpt_init(&ctx, &cr, &b.s, &cam, g, mem, nmax);
+    fovpt_output_init(&out);
+    out.rgb = ref;
+    fovpt_render(&ctx, 0, &out, NULL);
+    c1 = cr; c1.spp = 1; c1.seed = 3;
+    fovpt_init(&ctx, &c1, &b.s, &cam, g, mem, nmax);
+    memset(&s1, 0, sizeof s1);
+    out.rgb = one;
+    fovpt_render(&ctx, 0, &out, &s1);
+    memset(&ss, 0, sizeof ss);
+    fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    out.rgb = sel;
+    fovpt_render(&ctx, 0, &out, &ss);
+    cj = c; cj.method = FOVPT_METHOD_JIN;
+    memset(&sj, 0, sizeof sj);
+    fovpt_init(&ctx, &cj, &b.s, &cam, g, mem, n);
+    out.rgb = jin;
+    fovpt_render(&ctx, 0, &out, &sj);
+    {
+        int ok = 1;
+        for (z = 0; z < 4; ++z) if (ss.extra_samples[z] != c.selective.n_sd[z] * ss.problematic[z]) ok = 0;
+        check(ok && ss.problematic[0] > 0 && ss.camera_rays == (uint64_t)W * H + ss.extra_samples[0] + ss.extra_samples[1] +
+                                                                    ss.extra_samples[2] + ss.extra_samples[3],
+              "SELECTIVE: n_sd (9, 4, 2, 1) samples per problematic subpixel by zone; rays = presamples + extras",
+              "problematic %llu %llu %llu %llu extra %llu %llu %llu %llu", (unsigned long long)ss.problematic[0],
+              (unsigned long long)ss.problematic[1], (unsigned long long)ss.problematic[2], (unsigned long long)ss.problematic[3],
+              (unsigned long long)ss.extra_samples[0], (unsigned long long)ss.extra_samples[1], (unsigned long long)ss.extra_samples[2],
+              (unsigned long long)ss.extra_samples[3]);
+        check(sj.extra_samples[0] == 4u * sj.problematic[0] && sj.problematic[0] > ss.problematic[0] + ss.problematic[1],
+              "JIN: 4 samples per problematic subpixel everywhere, more problematic subpixels than SELECTIVE (tau_fov >= 1)",
+              "jin %llu problematic vs selective %llu", (unsigned long long)sj.problematic[0],
+              (unsigned long long)(ss.problematic[0] + ss.problematic[1] + ss.problematic[2] + ss.problematic[3]));
+    }
+    {
+        float e_f = c.selective.e_deg[0];
+        double pf_sel = ring_psnr(sel, ref, W, H, g, 50.0f, 0.0f, e_f), pf_jin = ring_psnr(jin, ref, W, H, g, 50.0f, 0.0f, e_f);
+        double pf_one = ring_psnr(one, ref, W, H, g, 50.0f, 0.0f, e_f);
+        double pn_sel = ring_psnr(sel, ref, W, H, g, 50.0f, 12.1f, 30.0f), pn_jin = ring_psnr(jin, ref, W, H, g, 50.0f, 12.1f, 30.0f);
+        printf("# SELECTIVE fovea %.2f dB, near periphery %.2f dB; JIN %.2f / %.2f dB; 1 spp fovea %.2f dB; rays sel %llu jin %llu\n",
+               pf_sel, pn_sel, pf_jin, pn_jin, pf_one, (unsigned long long)ss.camera_rays, (unsigned long long)sj.camera_rays);
+        check(pf_sel > pf_one + 3.0, "SELECTIVE fovea PSNR > 1 spp + 3 dB (against 64 spp)", "%.2f vs %.2f", pf_sel, pf_one);
+        check(pf_sel >= pf_jin - 0.5, "SELECTIVE fovea PSNR at least Jin's (9 vs 4 samples per subpixel)", "%.2f vs %.2f", pf_sel, pf_jin);
+        check(pn_jin >= pn_sel, "JIN beats SELECTIVE in the near periphery (seed 004's pattern)", "%.2f vs %.2f", pn_jin, pn_sel);
+        check(ss.camera_rays < sj.camera_rays, "SELECTIVE traces fewer rays than JIN", "%llu vs %llu", (unsigned long long)ss.camera_rays,
+              (unsigned long long)sj.camera_rays);
+    }
+    {   /* row-band invariance of the refine pass */
+        static float b2[96 * 72 * 3];
+        fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+        fovpt_trace_rows(&ctx, 0, 30, 72, NULL);
+        fovpt_trace_rows(&ctx, 0, 0, 30, NULL);
+        fovpt_refine_rows(&ctx, 0, 50, 72, NULL);
+        fovpt_refine_rows(&ctx, 0, 0, 50, NULL);
+        out.rgb = b2;
+        fovpt_resolve_rows(&ctx, 0, 72, &out);
+        check(memcmp(b2, sel, sizeof b2) == 0, "SELECTIVE: row bands in any order -> the same image", " ");
+    }
+    free(mem);
+    free(b.mem);
+}
+
+/* ==== 9. temporal reuse and smoothing (seed 004 steps 2 and 4) ================================ */
+static void test_temporal(void)
+{
+    fovpt_material m[6];
+    fovpt_shape sh[8];
+    fovpt_scene_desc d;
+    scene_buf b;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), cn;
+    fovpt_ctx ctx, cref;
+    fovpt_output out;
+    fovpt_stats st;
+    size_t n = 0, nn = 0;
+    void *mem, *mem2;
+    uint32_t W = 64, H = 48, f, i, maxf = 0, bg_reused = 0;
+    static float img[64 * 48 * 3], ref[64 * 48 * 3];
+    fov_gaze g = { 32.0f, 24.0f };
+    cornell(m, sh, &d, 0);
+    build(&b, &d);
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = -3.0f;
+    c.method = FOVPT_METHOD_SELECTIVE;
+    c.mode = FOVPT_MODE_WHITTED;
+    c.temporal.reuse = 1;
+    fovpt_config_resolve(&c, &c);
+    check(fovpt_memory_size(&c, &cam, &n) == FOV_OK && n == (size_t)W * H * (68u + 2u * 32u),
+          "reuse memory: 68 + 2 frames x 32 bytes per pixel", "%zu", n);
+    mem = amalloc(n);
+    fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n);
+    cn = c; cn.temporal.reuse = 0;
+    fovpt_memory_size(&cn, &cam, &nn);
+    mem2 = amalloc(nn);
+    fovpt_init(&cref, &cn, &b.s, &cam, g, mem2, nn);
+    fovpt_output_init(&out);
+    {
+        static float prev_ref[64 * 48 * 3];
+        double se_all = 0.0, se_prev_all = 0.0;
+        uint32_t exact_bad = 0;
+        for (f = 0; f < 8; ++f) {
+            double se = 0.0, se_prev = 0.0;
+            memset(&st, 0, sizeof st);
+            out.rgb = img;
+            fovpt_render(&ctx, f, &out, &st);
+            out.rgb = ref;
+            fovpt_render(&cref, f, &out, NULL);
+            for (i = 0; i < W * H; ++i) {
+                const float *h = ctx.hist[ctx.hist_cur] + 8u * i;
+                const fovpt__pre *P = (const fovpt__pre *)ctx.pre + i;
+                if (h[7] > (float)maxf) maxf = (uint32_t)h[7];
+                if (P->poid == FOVPT_PRIM_NONE && h[7] > 0.0f) bg_reused++;
+                /* frame 1, static view: a reused pixel is the previous frame's colour */
+                if (f == 1 && h[7] > 0.5f && (img[3u * i] < prev_ref[3u * i] || img[3u * i] > prev_ref[3u * i])) exact_bad++;
+            }
+            for (i = 0; i < W * H * 3u; ++i) {
+                double dd = fmin(1.0, (double)img[i]) - fmin(1.0, (double)ref[i]);
+                double dp = fmin(1.0, (double)prev_ref[i]) - fmin(1.0, (double)ref[i]);
+                se += dd * dd;
+                se_prev += dp * dp;
+            }
+            if (f == 0) check(st.reused == 0, "reuse: nothing reused in the first frame", "%llu", (unsigned long long)st.reused);
+            if (f == 1) check(st.reused > (uint64_t)W * H / 4u, "reuse: a static view reuses many pixels in the second frame", "%llu of %u",
+                              (unsigned long long)st.reused, W * H);
+            /* a reused colour is another frame's independent samples: in expectation it costs
+               what one frame of sampling noise costs (summed over frames 1-7: a few light-edge
+               pixels dominate single frames) */
+            if (f > 0) { se_all += se; se_prev_all += se_prev; }
+            memcpy(prev_ref, ref, sizeof prev_ref);
+            fovpt_set_view(&ctx, &cam, g);
+            fovpt_set_view(&cref, &cam, g);
+        }
+        check(exact_bad == 0, "reuse: reused pixels carry the previous frame's colour exactly (static view)", "%u differ", exact_bad);
+        check(10.0 * log10(se_prev_all / (se_all + 1e-30)) > -1.0,
+              "reuse vs no reuse: error within 1 dB of frame-to-frame sampling noise (frames 2-8 summed)", "%.2f dB",
+              10.0 * log10(se_prev_all / (se_all + 1e-30)));
+    }
+    check(maxf == 5, "reuse: a pixel is reused at most n_reuse_max = 5 frames in a row", "max %u", maxf);
+    check(bg_reused == 0, "reuse: pixels whose ray misses are never reused", "%u", bg_reused);
+    free(mem); free(mem2);
+    /* smoothing: static view, path-traced (noisy): the smoothed image is closer to a
+       converged one than the raw frame, most of all in the periphery (alpha 0.1 .. 0.2) */
+    {
+        fovpt_config cs = fovpt_config_default(), cg;
+        static float gt[64 * 48 * 3], raw[64 * 48 * 3];
+        double e_s = 0.0, e_r = 0.0;
+        fov_ecc_model em;
+        uint32_t x, y;
+        cs.method = FOVPT_METHOD_SELECTIVE;
+        cs.temporal.smooth = 1;
+        cam.fov_y_deg = 90.0f;
+        fovpt_config_resolve(&cs, &cs);
+        cg = fovpt_config_default(); cg.spp = 256; cg.seed = 99;
+        fovpt_memory_size(&cg, &cam, &nn);
+        mem2 = amalloc(nn);
+        fovpt_init(&cref, &cg, &b.s, &cam, g, mem2, nn);
+        out.rgb = gt;
+        fovpt_render(&cref, 0, &out, NULL);
+        free(mem2);
+        fovpt_memory_size(&cs, &cam, &n);
+        check(n == (size_t)W * H * (68u + 5u * 32u), "smoothing memory: 68 + 5 frames x 32 bytes per pixel", "%zu", n);
+        mem = amalloc(n);
+        fovpt_init(&ctx, &cs, &b.s, &cam, g, mem, n);
+        for (f = 0; f < 5; ++f) {
+            out.rgb = img;
+            fovpt_render(&ctx, f, &out, NULL);
+            if (f < 4) fovpt_set_view(&ctx, &cam, g);
+        }
+        /* the raw frame 4: accumulator without smoothing */
+        for (i = 0; i < W * H; ++i) for (x = 0; x < 3; ++x) raw[3u * i + x] = ctx.accum[4u * i + x] / ctx.accum[4u * i + 3u];
+        fovsdf_ecc_init(&em, NULL, 90.0f, W, H, g);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                uint32_t k, idx = y * W + x;
+                if (fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f) < 30.0f) continue;
+                for (k = 0; k < 3; ++k) {
+                    double a = fmin(1.0, (double)img[3u * idx + k]) - fmin(1.0, (double)gt[3u * idx + k]);
+                    double r = fmin(1.0, (double)raw[3u * idx + k]) - fmin(1.0, (double)gt[3u * idx + k]);
+                    e_s += a * a; e_r += r * r;
+                }
+            }
+        check(e_s < 0.6 * e_r, "smoothing (alpha(e), 4 frames) lowers the squared error beyond 30 degrees by over 40 %",
+              "%.4f vs %.4f", e_s, e_r);
+        /* a moved camera: history whose first hit differs is rejected (no ghosting):
+           after a large jump the output equals the raw frame where depths disagree */
+        {
+            fovpt_camera moved = cam;
+            uint32_t same = 0, diff = 0;
+            moved.pos[0] = 0.6f;
+            moved.target[0] = 0.6f;
+            fovpt_set_view(&ctx, &moved, g);
+            out.rgb = img;
+            fovpt_render(&ctx, 9, &out, NULL);
+            for (i = 0; i < W * H; ++i) {
+                float r0 = ctx.accum[4u * i] / ctx.accum[4u * i + 3u];
+                if (fabsf(r0 - img[3u * i]) < 1e-6f) same++; else diff++;
+            }
+            check(same > 0 && diff > 0, "smoothing after a camera move: some pixels keep history, disoccluded ones do not",
+                  "same %u blended %u", same, diff);
+        }
+        free(mem);
+    }
+    free(b.mem);
+}
+
+int main(void)
+{
+    test_api();
+    test_ecc();
+    test_scene_bad();
+    test_bvh_random();
+    test_user_hook();
+    test_rng();
+    test_bsdf();
+    test_furnace();
+    test_nee_equivalence();
+    test_whitted();
+    test_render();
+    test_foveation_blocks();
+    test_layers();
+    test_zones();
+    test_selective_rules();
+    test_selective_render();
+    test_temporal();
+    return fovcheck_summary();
+}
