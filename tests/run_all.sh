@@ -69,6 +69,7 @@ fovsdf_tests scene_fovsdf tests/test_fovsdf_scene.c
 fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
 # fovlp.h (the function above is generic apart from its name)
 fovsdf_tests unit_fovlp tests/test_fovlp.c
+fovsdf_tests taa_fovlp tests/test_fovlp_taa.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi
