@@ -28,7 +28,11 @@ $(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h tests/commo
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes
+$(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf
 
 demo: $(BUILD)/sdf_scenes
 	./$(BUILD)/sdf_scenes --out out
