@@ -1,8 +1,9 @@
 # fov - foveated rendering single-header libraries.
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures
 #   make test    the whole test suite (closing line: "N passed, N failed")
-#   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv);
-#                make bench-sdf FULL=1 runs the whole grid
+#   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
+#                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv);
+#                make bench-sdf FULL=1 / make bench-lp FULL=1 run the whole grid
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -12,7 +13,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test examples bench bench-sdf clean
+.PHONY: all demo test examples bench bench-sdf bench-lp clean
 
 all: examples
 
@@ -44,7 +45,15 @@ bench-sdf: $(BUILD)/bench_sdf
 	@mkdir -p bench/results
 	./$(BUILD)/bench_sdf $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf
+$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h tests/common/fovmetrics.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
+
+bench-lp: $(BUILD)/bench_lp
+	@mkdir -p bench/results
+	./$(BUILD)/bench_lp $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench: bench-sdf bench-lp
 
 clean:
 	rm -rf $(BUILD) out

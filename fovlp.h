@@ -53,11 +53,15 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
    6. Sampling: LP texel (u, v) is shaded at LP coordinate (u + ou, v + ov), disc pixel (i, j)
       at (i + ou, j + ov); (ou, ov) = (0.5, 0.5), or with TAA the scaled Halton (2, 3) point
       of the frame (eq. 3.11). One more sample sits on the gaze point itself (the centre).
-   7. Reconstruction, per screen pixel: the disc sample inside the disc; elsewhere bilinear
-      interpolation of the LP samples at the pixel's (u, v), with the angle wrapping
-      (v = h is v = 0: no seam), taps whose sample was not shaded left out (weights
-      renormalised), and inside the innermost ring a blend towards the centre sample (no
-      singularity at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13).
+   7. Reconstruction, per screen pixel (fovlp__pixel): the disc sample inside the disc;
+      elsewhere bilinear interpolation of the LP samples at the pixel's (u, v) (eq. 3.8), at
+      the positions actually shaded, with the angle wrapping (v = h is v = 0: no seam), taps
+      whose sample was not shaded left out (weights renormalised; none left: the nearest
+      shaded sample inwards). Between the disc edge and the innermost LP ring: linear along
+      the radius from the nearest disc pixel to the ring (no step at the disc edge). Inside
+      the innermost ring without a disc: a blend towards the centre sample (no singularity
+      at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
+      fovlp_blend_rows).
    8. TAA in screen space (thesis 3.4): reprojection with the previous and current camera and
       the shaded depth, depth rejection, history blend 1/age with the age capped at 20
       (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg, history reset on a
@@ -436,7 +440,8 @@ typedef struct fovlp_taa_stats {
 FOVLP_API const char *fovlp_result_string(fov_result r);   /* never NULL */
 FOVLP_API const char *fovlp_preset_name(uint32_t preset);  /* "Fov", ...; never NULL */
 
-/* Config: defaults, presets (Table 5.1) and the effective values with validation. */
+/* Config: defaults, presets (Table 5.1; an unknown preset gives the defaults) and the
+   effective values with validation. */
 FOVLP_API fovlp_config fovlp_config_default(void);   /* width = height = 0: set them */
 FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint32_t height);
 FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *out);
@@ -1066,7 +1071,6 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         float x = FOVLP__LOG(fovlp__maxf(r_ref, 2.0f)) / L_diag;
         float t = fovlp__clampf(fovlp__pow(fovlp__minf(x, 1.0f), c->alpha), 1e-3f, 1.0f);
         float k = L_diag * fovlp__pow(t, 1.0f / c->alpha - 1.0f) / (FOVLP__TWO_PI * c->alpha);
-        if (c->alpha < 1.0f) k = L_diag * FOVLP__POW(t, 1.0f / c->alpha - 1.0f) / (FOVLP__TWO_PI * c->alpha);
         asp = fovlp__clampf(k * (1.0f - G_diag), 1.0f / 65536.0f, 65536.0f);
     }
     g->lp_aspect = asp;

@@ -23,6 +23,9 @@
 #include "fovsdf.h"
 #include "tiny_scene.h"
 #endif
+#ifdef FOV_HAVE_FOVLP
+#include "tiny_lp.h"
+#endif
 
 int main(void)
 {
@@ -35,6 +38,9 @@ int main(void)
         int e = tiny_render(rgb, &evals);
         if (e != 0) return e;
     }
+#endif
+#ifdef FOV_HAVE_FOVLP
+    if (tiny_lp() != 0) return tiny_lp();
 #endif
     return 0;
 }

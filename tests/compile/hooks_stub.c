@@ -66,6 +66,7 @@ int hooks_stub_render(void);
 #endif
 #ifdef FOV_HAVE_FOVLP
 #include "fovlp.h"
+#include "tiny_lp.h"
 #endif
 #ifdef FOV_HAVE_FOVPT
 #include "fovpt.h"
@@ -77,8 +78,11 @@ int hooks_stub_render(void)
 #ifdef FOV_HAVE_FOVSDF
     static uint8_t rgb[TINY_W * TINY_H * 3];
     uint64_t evals = 0;
-    return tiny_render(rgb, &evals);
-#else
-    return 0;
+    int r = tiny_render(rgb, &evals);
+    if (r != 0) return r;
 #endif
+#ifdef FOV_HAVE_FOVLP
+    if (tiny_lp() != 0) return tiny_lp();
+#endif
+    return 0;
 }
