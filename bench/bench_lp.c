@@ -1,7 +1,7 @@
 /* bench_lp.c - fovlp.h: shaded samples, wall time and error per eccentricity ring (make bench-lp).
 
-   Shading is fovsdf's (examples/lp_sdf_shade.h: one primary ray, normal, Lambert and shadows
-   per sample) on its built-in scenes; everything runs in this one process on one thread, so
+   Shading is fovsdf's (examples/lp_sdf_shade.h: one primary ray, normal, Lambert, and with
+   --shadows soft shadows, per sample) on its built-in scenes; everything runs in this one process on one thread, so
    the time ratios are measured side by side. For every scene and configuration (preset and
    sigma):
      samples_pct   shaded samples (LP texels on the screen + disc pixels + 1) / pixels * 100,
@@ -17,16 +17,18 @@
      flicker_ratio mean |frame-to-frame change| beyond diag/3 from the gaze, over the last
                    half of the frames, of the TAA output / of the raw jittered reconstruction
    then: psnr_fovea_1f, psnr_all_1f, ssim_fovea_1f (a single frame without TAA), flicker_taa,
-   flicker_raw, time_fov_ms, time_full_ms, lp_w, lp_h, r_g, width, height, runs, frames, and per
+   flicker_raw, time_fov_ms, time_full_ms, lp_w, lp_h, r_g, width, height, runs, frames, shading, and per
    ring (20 rings of equal eccentricity from 0 to the farthest corner, the thesis's protocol)
    rmse_rK, psnr_rK, ssim_rK for K = 1..20 (TAA output).
    Writes bench/results/lp.csv and, with gnuplot, bench/results/lp_<scene>.png (PSNR per ring)
    and bench/results/lp_speed.png (speed-up against the sample ratio).
 
-   usage: bench_lp [--full] [--hd] [--runs N] [--frames N] [--scenes a,b] [--out FILE]
-   Default grid (about 10 minutes on this machine at 640x360): all six scenes, the four
-   presets of Table 5.1 plus C Fov at sigma 1.7 and 2.0 (Table 5.4). --full: every preset at
-   sigma x {0.8, 1, 1.25, 1.5} of its own. --hd: 1280x720. */
+   usage: bench_lp [--full] [--hd] [--shadows] [--runs N] [--frames N] [--scenes a,b]
+                   [--out FILE]
+   Default grid (640x360, shading without shadow rays as bench-sdf does; about 10 minutes on
+   an idle 2-core machine): all six scenes, the four presets of Table 5.1 plus C Fov at sigma
+   1.7 and 2.0 (Table 5.4). --full: every preset at sigma x {0.8, 1, 1.25, 1.5} of its own.
+   --hd: 1280x720. --shadows: with soft shadows (several times slower on the lit scenes). */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
 #define FOVLP_IMPLEMENTATION
@@ -84,7 +86,7 @@ typedef struct cfg_t {
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
-    int full = 0, runs = 5, frames = 20, a, ncfg = 0, c;
+    int full = 0, runs = 5, frames = 20, a, ncfg = 0, c, shadows = 0;
     const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/lp.csv";
     cfg_t cfgs[64];
     FILE *csv;
@@ -100,6 +102,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--frames") && a + 1 < argc) frames = atoi(argv[++a]);
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
+        else if (!strcmp(argv[a], "--shadows")) shadows = 1;
         else { fprintf(stderr, "unknown argument %s (see the comment at the top of bench_lp.c)\n", argv[a]); return 2; }
     }
     if (runs < 1) runs = 1;
@@ -141,7 +144,7 @@ int main(int argc, char **argv)
     if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
     fprintf(csv, "scene,mode,sigma,alpha,a_g,samples_pct,speedup,psnr_fovea,psnr_all,ssim_fovea,flicker_ratio,"
                  "psnr_fovea_1f,psnr_all_1f,ssim_fovea_1f,flicker_taa,flicker_raw,time_fov_ms,time_full_ms,lp_w,lp_h,r_g,"
-                 "width,height,runs,frames");
+                 "width,height,runs,frames,shading");
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",rmse_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",psnr_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",ssim_r%d", a);
@@ -162,6 +165,7 @@ int main(int argc, char **argv)
         fov_ecc_model em;
         uint32_t x, y, k;
         if (!strstr(scenes, nm)) continue;
+        if (!shadows) scfg.shading = FOVSDF_SHADE_NO_SHADOWS;
         fovsdf_builtin_size(id, &bytes);
         mem = malloc(bytes);
         fovsdf_builtin_init(id, &bi, mem, bytes);
@@ -263,11 +267,11 @@ int main(int argc, char **argv)
             fovm_psnr(gt_disp, disp, (int)W, (int)H, 3, &pa);
             fovm_ssim_sel(gt_disp, disp, (int)W, (int)H, 3, 0, &fov_sel, &sf, &cntsel);
             fovm_ecc_rings(gt_disp, disp, (int)W, (int)H, 3, ecc, NRINGS, max_ecc * 1.0001, FOVM_FLIP_DEFAULT_PPD, rings);
-            fprintf(csv, "%s,%s,%.3f,%.2f,%.3f,%.3f,%.4f,%.3f,%.3f,%.5f,%.5f,%.3f,%.3f,%.5f,%.6f,%.6f,%.3f,%.3f,%u,%u,%.2f,%u,%u,%d,%d",
+            fprintf(csv, "%s,%s,%.3f,%.2f,%.3f,%.3f,%.4f,%.3f,%.3f,%.5f,%.5f,%.3f,%.3f,%.5f,%.6f,%.6f,%.3f,%.3f,%u,%u,%.2f,%u,%u,%d,%d,%s",
                     nm, fovlp_preset_name(cfgs[c].preset), (double)lc.sigma, (double)lc.alpha, (double)lc.gaze_angle,
                     (double)cnt.shaded_pct, t_full / t_fov, pf, pa, sf, fl_r > 0.0 ? fl_t / fl_r : 0.0, pf1, pa1, sf1,
                     nfl ? fl_t / (double)nfl : 0.0, nfl ? fl_r / (double)nfl : 0.0, t_fov, t_full, lp.geo.lp_w, lp.geo.lp_h,
-                    (double)lp.geo.r_g, W, H, runs, frames);
+                    (double)lp.geo.r_g, W, H, runs, frames, shadows ? "full" : "no_shadows");
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", sqrt(rings[a].mse));
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.3f", rings[a].psnr);
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", rings[a].ssim);
@@ -306,9 +310,9 @@ int main(int argc, char **argv)
                             int n = 0, r;
                             char *p = strtok(line, ",\n");
                             while (p && n < 128) { tok[n++] = p; p = strtok(NULL, ",\n"); }
-                            if (n < 25 + 3 * NRINGS) continue;
+                            if (n < 26 + 3 * NRINGS) continue;
                             fprintf(o, "\"%s sigma %s\"\n", tok[1], tok[2]);
-                            for (r = 0; r < NRINGS; ++r) fprintf(o, "%d %s\n", r + 1, tok[25 + NRINGS + r]);
+                            for (r = 0; r < NRINGS; ++r) fprintf(o, "%d %s\n", r + 1, tok[26 + NRINGS + r]);
                             fprintf(o, "\n\n");
                             row++;
                         }
