@@ -2,8 +2,9 @@
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures
 #   make test    the whole test suite (closing line: "N passed, N failed")
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
+#                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv;
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
-#                make bench-sdf FULL=1 / make bench-pt FULL=1 run the whole grid
+#                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -13,7 +14,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test examples bench bench-sdf bench-pt clean
+.PHONY: all demo test examples bench bench-sdf bench-lp bench-pt clean
 
 all: examples
 
@@ -40,7 +41,11 @@ $(BUILD)/bench_pt: bench/bench_pt.c bench/pt_scenes.h fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -Ibench $< -lm -pthread $(EMBREE) -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/pt_basic
+$(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 
 demo: $(BUILD)/sdf_scenes
 	./$(BUILD)/sdf_scenes --out out
@@ -56,7 +61,15 @@ bench-pt: $(BUILD)/bench_pt
 	@mkdir -p bench/results
 	nice ./$(BUILD)/bench_pt $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf bench-pt
+$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h tests/common/fovmetrics.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
+
+bench-lp: $(BUILD)/bench_lp
+	@mkdir -p bench/results
+	./$(BUILD)/bench_lp $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench: bench-sdf bench-lp bench-pt
 
 clean:
 	rm -rf $(BUILD) out

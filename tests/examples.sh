@@ -41,5 +41,22 @@ if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. -Ibench 
 else
     bad "bench_pt build"
 fi
+# fovlp + fovsdf: frames written, and frame 0 matches a full-resolution render in the gaze disc
+if $CC -std=c99 -O2 $W -I. examples/lp_sdf.c -lm -o build/examples/lp_sdf; then
+    ok "lp_sdf builds with $W"
+    rm -rf build/examples/lp; mkdir -p build/examples/lp
+    for taa in "" "--no-taa"; do
+        out=$(build/examples/lp_sdf --width 160 --height 90 --frames 3 --check --out build/examples/lp $taa 2>&1)
+        if echo "$out" | grep -q '^PASS lp_sdf check'; then ok "lp_sdf --check $taa: $(echo "$out" | grep '^check:')"; else bad "lp_sdf --check $taa: $(echo "$out" | tail -3 | tr '\n' ' ')"; fi
+    done
+    n=0
+    for i in 000 001 002; do
+        f=build/examples/lp/lp_primitives_$i.ppm
+        [ -f "$f" ] && [ "$(head -c 14 "$f")" = "$(printf 'P6\n160 90\n255')" ] && [ "$(stat -c %s "$f")" -eq $((14 + 160 * 90 * 3)) ] && n=$((n + 1))
+    done
+    if [ "$n" -eq 3 ]; then ok "lp_sdf writes 3 numbered 160x90 frames"; else bad "lp_sdf wrote $n of 3 frames"; fi
+else
+    bad "lp_sdf build"
+fi
 echo "$P passed, $F failed"
 [ "$F" -eq 0 ]

@@ -51,8 +51,8 @@ WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror 
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # --- unit tests ---------------------------------------------------------------------------
-# three builds of each test program (fovsdf, fovpt): libm, FOV_NO_LIBM, sanitizers
-fovsdf_tests() {
+# three builds of each library test program: libm, FOV_NO_LIBM, sanitizers
+three_builds() {
     local name=$1 src=$2
     if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common -lm; then
         run_section "$name" "build/tests/test_$name"
@@ -64,14 +64,17 @@ fovsdf_tests() {
         run_section "${name}_sanitizers" "build/tests/test_${name}_san"
     fi
 }
-fovsdf_tests unit_fovsdf tests/test_fovsdf.c
-fovsdf_tests scene_fovsdf tests/test_fovsdf_scene.c
-fovsdf_tests accel_fovsdf tests/test_fovsdf_accel.c
+three_builds unit_fovsdf tests/test_fovsdf.c
+three_builds scene_fovsdf tests/test_fovsdf_scene.c
+three_builds accel_fovsdf tests/test_fovsdf_accel.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
-fovsdf_tests unit_fovpt tests/test_fovpt.c
+three_builds unit_fovpt tests/test_fovpt.c
+# fovlp.h
+three_builds unit_fovlp tests/test_fovlp.c
+three_builds taa_fovlp tests/test_fovlp_taa.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

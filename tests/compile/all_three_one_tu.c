@@ -24,6 +24,9 @@
 #include "fovsdf.h"
 #include "tiny_scene.h"
 #endif
+#ifdef FOV_HAVE_FOVLP
+#include "tiny_lp.h"
+#endif
 
 int main(void)
 {
@@ -44,6 +47,9 @@ int main(void)
         int e = tiny_pt_render(rgb2, &rays);
         if (e != 0) return 100 + e;
     }
+#endif
+#ifdef FOV_HAVE_FOVLP
+    if (tiny_lp() != 0) return tiny_lp();
 #endif
     return 0;
 }

@@ -66,6 +66,7 @@ int hooks_stub_render(void);
 #endif
 #ifdef FOV_HAVE_FOVLP
 #include "fovlp.h"
+#include "tiny_lp.h"
 #endif
 #ifdef FOV_HAVE_FOVPT
 #include "fovpt.h"
@@ -90,6 +91,9 @@ int hooks_stub_render(void)
         int e = tiny_pt_render(rgb2, &rays);
         if (e != 0) return 100 + e;
     }
+#endif
+#ifdef FOV_HAVE_FOVLP
+    if (tiny_lp() != 0) return tiny_lp();
 #endif
     return 0;
 }

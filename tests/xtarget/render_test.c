@@ -11,6 +11,8 @@
      default          stdio (hosted and wasm32-wasi)
      XT_SEMIHOSTING   xt_write() from m4_startup.c (ARM semihosting, QEMU mps2-an386)
    XT_EXTERNAL_IMPL   do not compile the implementation here (link it from another file).
+   XT_FOVLP           also render fovlp.h's scenes (lp_render_test.h; run.sh sets it when
+                      fovlp.h exists).
    Under XT_SEMIHOSTING, FOV_ASSERT reports through xt_assert_fail() (m4_startup.c).
 
    Dump format (one item per line):
@@ -143,12 +145,19 @@ done:
     return (int)r;
 }
 
+#ifdef XT_FOVLP
+#include "lp_render_test.h" /* fovlp.h: scenes 20-22 in the same dump format */
+#endif
+
 int main(void)
 {
     int status = 0;
     xt_puts("fovxt 1 "); xt_putu(XT_W); xt_putc(' '); xt_putu(XT_H); xt_endl();
     if (xt_scene(FOVSDF_SCENE_PRIMITIVES) != 0) status = 1;
     if (xt_scene(FOVSDF_SCENE_THIN) != 0) status = 1;
+#ifdef XT_FOVLP
+    if (xt_lp_scenes() != 0) status = 1;
+#endif
     xt_puts("done "); xt_puti(status); xt_endl();
 #ifndef XT_SEMIHOSTING
     (void)fflush(stdout);

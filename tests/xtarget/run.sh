@@ -15,6 +15,9 @@
 #   FOVSDF_SCENE_THIN at 96x54, 1 spp, classic tracer, fovsdf_config_default(), from static
 #   memory (no malloc; the fovsdf_builtin_size() query is checked against it), and dumps the
 #   8-bit sRGB image, hit mask, depth (float bits) and evaluation counts as text on stdout.
+#   When fovlp.h exists it also dumps three fovlp reconstructions (lp_render_test.h: C Fov,
+#   K Fov, C Fov with 4 TAA frames, of a triangle-wave image) as scenes 20-22, compared the
+#   same way (PSNR >= 50 dB).
 #   Builds, all with -O2 -ffp-contract=off:
 #     native            gcc, hosted, libm: the reference
 #     native-nolibm     gcc, hosted, -DFOV_NO_LIBM (the built-in approximations alone)
@@ -58,6 +61,8 @@ IS_CI=0
 START=$(date +%s)
 
 COMMON=(-O2 -ffp-contract=off -Wall -Wextra -I. -I"$T")
+# fovlp.h present: render_test.c also renders its scenes (tests/xtarget/lp_render_test.h)
+[ -f fovlp.h ] && COMMON+=(-DXT_FOVLP)
 M4FLAGS=(-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard)
 PSNR_MIN=50
 # fovpt (pt-* targets): path tracing amplifies last-ulp libm differences into other paths

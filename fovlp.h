@@ -1,0 +1,1960 @@
+/* fovlp.h - v0.1.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+                      - MIT or public domain (see end of file)
+
+   Do this:
+      #define FOVLP_IMPLEMENTATION   (or #define FOV_IMPL for all fov headers)
+   before you include this file in *one* C or C++ file to create the implementation.
+
+QUICK START (the library never renders: you shade the positions it hands out)
+      #define FOVLP_IMPLEMENTATION
+      #include "fovlp.h"
+
+      fovlp_config cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 1920, 1080);
+      size_t bytes;  fovlp_memory_size(&cfg, &bytes);         // a few KiB of tables
+      fovlp_ctx ctx; fovlp_init(&ctx, &cfg, malloc(bytes), bytes);
+      fovlp_geometry g = ctx.geo;                              // g.samples = sample slots
+      float *srgb = malloc(g.samples * 3 * sizeof(float));    // one colour per sample slot
+      float *img  = malloc(1920 * 1080 * 3 * sizeof(float));
+      for (;;) {                                               // every frame
+          fov_gaze gaze = { eye_x, eye_y };
+          fovlp_begin_frame(&ctx, gaze, NULL);                 // camera: only for TAA
+          fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), my_shade, my_user, srgb, NULL, NULL);
+          fovlp_reconstruct_rows(&ctx, srgb, NULL, 0, 1080, img, 0, NULL);
+      }
+   my_shade(x, y, rgb, depth, user) colours the screen point (x, y) (continuous pixel
+   coordinates, pixel centres at +0.5) with any renderer. Instead of the callback you can ask
+   for the positions as an array (fovlp_samples) and write each sample's colour to
+   srgb[3 * index]. Split the sample rows and the screen rows over threads as you like.
+   examples/lp_sdf.c renders fovsdf.h's scenes through this library.
+
+THE PIPELINE (in the order the data flows; Andersson & Hansson 2020, "Performance
+Optimizations for Foveated Real-Time Raytracing", LU-CS-EX 2020-64, = "the thesis"; it builds
+on Meng et al. 2018, "Kernel Foveated Rendering")
+   1. Buffer size (thesis eq. 3.6): h = round(sqrt(W H / lp_aspect) / sigma),
+      w = round(h lp_aspect); so w h = W H / sigma^2 log-polar (LP) texels before culling.
+      lp_aspect 0 picks the aspect that makes the radial and angular sample spacings equal at
+      match_deg eccentricity (thesis section 5.1 tuning, closed form: spacing ratio
+      radial/angular = L h t^(1/alpha - 1) / (2 pi alpha w_C), t = (log r / L)^alpha).
+   2. Normaliser (eq. 3.10): L = log(screen diagonal) (thesis; the default), or
+      L = log(distance from the gaze to the farthest corner) (Meng et al.), FOVLP_NORM_CORNER.
+      Both in pixels; L >= log 2 (tiny screens).
+   3. Gaze disc (composite foveation, eqs. 3.3-3.5): r_G = f tan(a_G) pixels with f the eye
+      distance in pixels of the eccentricity model (a_G in radians), G = K(log r_G / L),
+      u_G = w G / (1 - G), w_C = w + u_G. Pixels whose centre lies within r_G of the gaze are
+      shaded 1:1 (one sample per pixel); the LP buffer covers r >= r_G.
+   4. Kernel (eq. 3.2): K(x) = x^alpha. Screen -> LP (eq. 3.8/3.9):
+         u = K(log(max(r, 1)) / L) w_C - u_G,   v = atan2(dy, dx) h / (2 pi), in [0, h)
+      LP -> screen (eq. 3.7): rho = exp(L Kinv((u + u_G) / w_C)), x = gx + rho cos(2 pi v / h),
+      y = gy + rho sin(2 pi v / h). K sits in the screen -> LP direction, as the thesis's ray
+      counts require (notes 1.5): alpha > 1 moves samples to the periphery.
+   5. Culling: only the LP columns u < u_max = K(log r_max / L) w_C - u_G (r_max: the farthest
+      corner from the gaze) are dispatched; an LP texel whose sample falls off-screen is never
+      shaded; nor is a disc pixel outside the circle.
+   6. Sampling: LP texel (u, v) is shaded at LP coordinate (u + ou, v + ov), disc pixel (i, j)
+      at (i + ou, j + ov); (ou, ov) = (0.5, 0.5), or with TAA the scaled Halton (2, 3) point
+      of the frame (eq. 3.11). One more sample sits on the gaze point itself (the centre).
+   7. Reconstruction, per screen pixel (fovlp__pixel): the disc sample inside the disc;
+      elsewhere bilinear interpolation of the LP samples at the pixel's (u, v) (eq. 3.8), at
+      the positions actually shaded, with the angle wrapping (v = h is v = 0: no seam), taps
+      whose sample was not shaded left out (weights renormalised; none left: the nearest
+      shaded sample inwards). Between the disc edge and the innermost LP ring: linear along
+      the radius from the nearest disc pixel to the ring (no step at the disc edge). Inside
+      the innermost ring without a disc: a blend towards the centre sample (no singularity
+      at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
+      fovlp_blend_rows).
+   8. TAA in screen space (thesis 3.4): reprojection with the previous and current camera and
+      the shaded depth, depth rejection, history blend 1/age with the age capped at 20
+      (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg, history reset on a
+      gaze jump.
+
+CHOICES WHERE THE THESIS IS OPEN OR WRONG (each is tested in tests/test_fovlp.c)
+   - atan vs atan2: eq. 3.9's arctan(y'/x') + [y' < 0] 2 pi is only right as atan2; we use
+     atan2 wrapped to [0, 2 pi).
+   - log(r_G + 1) vs log r_G: eq. 3.4 writes log(r_G + 1) but eq. 3.8 uses log r, so the LP
+     buffer would start 1 px outside the disc. Default FOVLP_EDGE_LOG_R: log r_G in both
+     places (u = 0 lands exactly on r_G). FOVLP_EDGE_THESIS keeps the thesis's formula.
+   - The centre: log r < 0 inside 1 px; we clamp r >= 1 px in the mapping, and reconstruct
+     the inside of the innermost sample ring by blending towards a sample at the gaze point.
+   - The angle seam: the thesis's clamped bilinear sampler has a seam along the +x ray; we
+     wrap v modulo h.
+   - Texel positions: the thesis reconstructs as if every sample sat at its texel centre even
+     when jittered (the image shifts with the jitter; its "twist" fix only corrects the
+     mean). We interpolate at the positions actually shaded, so every frame is registered
+     and the jitter only adds information. The eq. 3.11 scaling is kept so the offsets
+     average to the texel centre.
+   - Halton start index: 1 (Karis 2014; index 0 gives the point (0, 0) and a scaled y of
+     1.04 texels). Scales with 16 phases: 1.062241 (x), 1.08 (y).
+   - a_G in radians (the only reading that makes the thesis's presets consistent).
+   - The viewing distance, when the display gives no geometry: the thesis's
+     d = diagonal / tan 60 degrees (eq. 5.1 with max_view_angle 60 degrees).
+   - Unused LP width (how much wider the buffer is): the thesis does not say; the buffer is
+     w x h as eq. 3.6 gives, and the columns beyond u_max are not dispatched.
+   - Gaussian blend: on screen pixels of the reconstruction; t rises linearly from 0 at
+     blend_start (default diag / 6, the thesis) to 1 at blend_end (default diag / 2, ours).
+   - TAA age order: age = min(age + 1, max_age) first, then out = lerp(history, current,
+     1 / age); a rejection sets age = 1 before the blend (so the output is the current
+     frame). Depth rejection: |d_prev - d_expected| > depth_tol * max(both) (default 2 %,
+     the thesis gives no threshold). A still camera rejects nothing (thesis). Beyond
+     periphery * diagonal from the gaze a moving camera's history that fails the depth test
+     is kept (the thesis), blended with an age of at most 2 (history weight <= 1/2, ours),
+     and the stored age is reset to 1 (the thesis's "update the age variable to 1"), so a
+     ghost there fades as 1/(k+1) over the next k frames.
+   - A gaze jump larger than reset_deg (default 2 degrees) resets the history.
+   - Jitter is off while the camera moves (thesis), unless taa.jitter_moving.
+   - Off-screen gaze: clamped to the screen rectangle (a warning through the logger).
+
+DOES NOT
+   - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
+     threads, allocate memory, or read or write files;
+   - keep any global or thread-local state.
+
+CONFIGURATION (define before including the implementation)
+   FOVLP_STATIC         all functions static (use it when two libraries embed this header)
+   FOV_DLL              export (FOVLP_IMPLEMENTATION) or import the API from a DLL
+   FOVLP_API            override the linkage of every public function
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops)
+   FOVLP_MAX_DIM        hard cap on the screen width and height          (default 65536)
+   FOVLP_MAX_LP_DIM     hard cap on the LP buffer width and height       (default 65536)
+   FOVLP_MAX_SAMPLES    hard cap on the sample slots (LP + disc + 1)     (default 2^28)
+   FOV_NO_ERROR_STRINGS compile out the result strings (fovlp_result_string returns "")
+   FOV_DEBUG            pass a message text with each error to the logger
+
+MEMORY
+   The caller owns every byte. fovlp_memory_size() gives the context's working memory for a
+   config (the per-frame tables: (w + 2 h) floats); fovlp_init() takes it. The sample buffer
+   (ctx.geo.samples slots of 3 floats, optional depth: 1 float) and every image (screen
+   size, explicit row stride) are caller buffers; TAA history (colour, depth, age) too, two
+   copies that you swap every frame. Stack use: below 1 KiB in every entry point.
+
+ERRORS AND LOGGING
+   Every fallible function returns fov_result: FOV_OK (0) or a negative code.
+   fovlp_result_string() never returns NULL. Bad input (NULL pointers, zero, over-cap or
+   overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
+   gaze disc that covers the screen) is rejected with an error code before any work is done;
+   nothing asserts on data. An optional fov_logger in the config receives each error (and a
+   warning when an off-screen gaze is clamped).
+
+THREADING
+   fovlp_begin_frame writes the context; between two begin_frame calls the context is
+   read-only, so fovlp_samples / fovlp_shade_rows (sample rows) and fovlp_reconstruct_rows
+   / fovlp_blend_rows / fovlp_taa_rows (screen rows) can run on disjoint rows from many
+   threads. fovlp_blend_rows and fovlp_taa_rows read the rows above and below theirs from
+   their input image: finish the input image first.
+
+NUMERICS
+   - Float only (no double anywhere); integers for frame counters and the Halton sequence.
+   - Forward then inverse mapping round-trips within 1e-3 px relative to the radius (measured
+     by the tests at 8K with libm and FOV_NO_LIBM).
+   - Sample positions come from per-frame tables (exp along u, cos/sin along v), so shading
+     and reconstruction agree bit for bit on which samples exist.
+
+PLATFORM NOTES
+   - Freestanding: with FOV_NO_LIBM (or all math hooks) and FOV_ASSERT defined the
+     implementation includes only <stddef.h>, <stdint.h>, <float.h> and <limits.h>.
+   - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
+   - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
+     object file references no __aeabi_d* routine (checked by tests/compile/run.sh).
+
+LICENSE: see end of file.
+
+RECENT REVISION HISTORY
+   0.1.0 (2026-11-23) first version: mappings, presets, gaze disc, sampling, reconstruction,
+                      Gaussian blend, TAA.
+*/
+
+#if defined(FOV_IMPL) && !defined(FOVLP_IMPLEMENTATION)
+#define FOVLP_IMPLEMENTATION
+#endif
+
+#ifndef FOVLP_H_INCLUDED
+#define FOVLP_H_INCLUDED
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define FOVLP_VERSION_MAJOR 0
+#define FOVLP_VERSION_MINOR 1
+#define FOVLP_VERSION_PATCH 0
+#define FOVLP_VERSION_STRING "0.1.0"
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOVLP__UNUSED __attribute__((unused))
+#else
+#define FOVLP__UNUSED
+#endif
+
+#ifndef FOVLP_API
+#if defined(FOVLP_STATIC)
+#define FOVLP_API static FOVLP__UNUSED
+#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVLP_IMPLEMENTATION)
+#define FOVLP_API __declspec(dllexport)
+#elif defined(FOV_DLL) && defined(_WIN32)
+#define FOVLP_API __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOVLP_API __attribute__((visibility("default"))) extern
+#else
+#define FOVLP_API extern
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
+#ifndef FOV_COMMON_DEFINED
+#define FOV_COMMON_DEFINED
+/* Result codes of every fallible function in the fov headers. */
+typedef enum fov_result {
+    FOV_OK = 0,
+    FOV_ERR_INVALID_ARG = -1,  /* a parameter is out of its documented range */
+    FOV_ERR_TOO_SMALL = -2,    /* the memory or buffer passed is smaller than required */
+    FOV_ERR_LIMIT = -3,        /* a size is above a hard cap or overflows size_t */
+    FOV_ERR_NULL = -4,         /* a required pointer is NULL */
+    FOV_ERR_NOT_FINITE = -5,   /* NaN or infinity where a finite number is required */
+    FOV_ERR_DEGENERATE = -6,   /* degenerate geometry: camera, display, scene */
+    FOV_ERR_UNSUPPORTED = -7,  /* a valid request this build or version does not support */
+    _FOV_RESULT_FORCE_I32 = 0x7FFFFFFF
+} fov_result;
+
+typedef enum fov_log_level {
+    FOV_LOG_ERROR = 1,
+    FOV_LOG_WARN = 2,
+    FOV_LOG_INFO = 3,
+    _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
+} fov_log_level;
+
+/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
+   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
+                             uint32_t line, void *user);
+typedef struct fov_logger {
+    fov_log_func func;
+    void *user;
+} fov_logger;
+
+/* Gaze point in image pixels, continuous: pixel (i, j) covers [i, i+1) x [j, j+1), so its
+   centre is (i + 0.5, j + 0.5); y grows downwards. Must be finite; it may lie off-screen. */
+typedef struct fov_gaze {
+    float x, y;
+} fov_gaze;
+
+/* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
+   f (in pixels) from the image plane; the axis meets the image at its centre plus
+   (axis_dx, axis_dy) pixels. f comes from, in this order:
+     fov_y_deg > 0                      the image height subtends fov_y_deg at the eye
+                                        (an HMD, or a window whose view matches the camera)
+     pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
+     all zero                           the rendering camera's vertical field of view.
+   Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
+   through q and through the gaze point. This is the one definition all fov headers use. */
+typedef struct fov_display {
+    float fov_y_deg;
+    float pixel_pitch_mm;
+    float distance_mm;
+    float axis_dx, axis_dy;
+} fov_display;
+
+/* Precomputed eccentricity model (fill it with fovsdf_ecc_init / fovlp_ecc_init / ...). */
+typedef struct fov_ecc_model {
+    float cx, cy;    /* where the eye's axis meets the image, pixels */
+    float f_px;      /* eye to image plane, pixels */
+    float gx, gy;    /* the gaze point, pixels */
+    float g[3];      /* unit direction of the gaze ray */
+} fov_ecc_model;
+#endif /* FOV_COMMON_DEFINED */
+/* ---- end of the shared block ---- */
+
+/* ==== settings ============================================================================ */
+
+typedef enum fovlp_norm {
+    FOVLP_NORM_DIAGONAL = 0,  /* L = log(screen diagonal), fixed (thesis eq. 3.10) */
+    FOVLP_NORM_CORNER = 1,    /* L = log(farthest corner from the gaze) (Meng et al. 2018) */
+    _FOVLP_NORM_NUM,
+    _FOVLP_NORM_FORCE_U32 = 0x7FFFFFFF
+} fovlp_norm;
+
+typedef enum fovlp_edge {
+    FOVLP_EDGE_LOG_R = 0,     /* G = K(log r_G / L): the LP buffer starts exactly at r_G */
+    FOVLP_EDGE_THESIS = 1,    /* G = K(log(r_G + 1) / L) as printed in eq. 3.4 */
+    _FOVLP_EDGE_NUM,
+    _FOVLP_EDGE_FORCE_U32 = 0x7FFFFFFF
+} fovlp_edge;
+
+typedef enum fovlp_clamp {
+    FOVLP_CLAMP_NONE = 0,     /* depth rejection only (the thesis) */
+    FOVLP_CLAMP_AABB = 1,     /* history clamped to the min/max box of the current 3x3
+                                 neighbourhood in YCoCg (Karis 2014) */
+    FOVLP_CLAMP_VARIANCE = 2, /* history clipped towards the neighbourhood mean, box
+                                 mean +- clip_gamma * standard deviation, in YCoCg */
+    _FOVLP_CLAMP_NUM,
+    _FOVLP_CLAMP_FORCE_U32 = 0x7FFFFFFF
+} fovlp_clamp;
+
+typedef enum fovlp_preset {
+    FOVLP_PRESET_FOV = 0,     /* sigma 0.75, alpha 1, no disc,   lp_aspect 1.2  (Table 5.1) */
+    FOVLP_PRESET_K_FOV = 1,   /* sigma 1.0,  alpha 3, no disc,   lp_aspect 0.70 */
+    FOVLP_PRESET_C_FOV = 2,   /* sigma 1.4,  alpha 1, a_G 0.20,  lp_aspect 0.33 */
+    FOVLP_PRESET_C_K_FOV = 3, /* sigma 1.3,  alpha 2, a_G 0.15,  lp_aspect 0.35 */
+    _FOVLP_PRESET_NUM,
+    _FOVLP_PRESET_FORCE_U32 = 0x7FFFFFFF
+} fovlp_preset;
+
+/* Temporal anti-aliasing. All zero: TAA off. */
+typedef struct fovlp_taa_config {
+    uint32_t enable;        /* 1: jitter and history (fovlp_taa_rows)               0: off */
+    uint32_t phases;        /* Halton (2, 3) points cycled, 1 .. 256                0: 16 */
+    uint32_t halton_start;  /* index of the first Halton point                      0: 1 */
+    uint32_t max_age;       /* age cap, 1 .. 255 (history weight 1 - 1/age)        0: 20 */
+    uint32_t clamp;         /* fovlp_clamp                                   0: none */
+    float clip_gamma;       /* VARIANCE: box half-size in standard deviations       0: 1.0 */
+    float depth_tol;        /* relative depth difference that rejects history      0: 0.02 */
+    float reset_deg;        /* gaze jump (degrees) that resets the history          0: 2.0 */
+    float periphery;        /* beyond periphery * diagonal from the gaze a moving camera
+                               keeps its history and resets the age (>= 1: never)  0: 1/3 */
+    uint32_t jitter_moving; /* 1: keep jittering while the camera moves (thesis: off) */
+} fovlp_taa_config;
+
+/* A zero-filled config means "all defaults" (listed per field) apart from width and height,
+   which are required. The defaults are the thesis's C Fov mode with the aspect matched. */
+typedef struct fovlp_config {
+    uint32_t width, height; /* screen in pixels, 1 .. FOVLP_MAX_DIM (required) */
+    float sigma;            /* buffer compression (> 0; < 1 gives more samples)     0: 1.4 */
+    float alpha;            /* kernel exponent K(x) = x^alpha, (0, 16]              0: 1.0 */
+    float gaze_angle;       /* a_G, radians, [0, 1.5) (0 after defaults: no disc)   0: 0.20 */
+    uint32_t no_disc;       /* 1: no gaze disc (plain log-polar, the Fov / K Fov modes) */
+    float lp_aspect;        /* LP buffer width / height (> 0); 0: matched spacing at match_deg */
+    float match_deg;        /* eccentricity where lp_aspect 0 matches the radial and angular
+                               sample spacing, (0, 89)                              0: 15 */
+    uint32_t norm;          /* fovlp_norm                                         0: diagonal */
+    uint32_t edge;          /* fovlp_edge                                         0: log r_G */
+    float cam_fov_y_deg;    /* used when display is all zero: the field of view of the image
+                               height at the eye; 0: the thesis's viewing distance
+                               d = diagonal / tan 60 degrees */
+    fov_display display;    /* viewing geometry (eccentricity, r_G); see fov_display */
+    uint32_t blend;         /* 1: Gaussian blend in the periphery (fovlp_blend_rows) */
+    float blend_start;      /* fraction of the diagonal where the blend starts      0: 1/6 */
+    float blend_end;        /* fraction of the diagonal where it is complete        0: 1/2 */
+    fovlp_taa_config taa;
+    fov_logger logger;      /* optional diagnostics */
+} fovlp_config;
+
+/* Derived geometry (eqs. 3.3-3.6, 3.10), for the config and the current gaze. */
+typedef struct fovlp_geometry {
+    uint32_t width, height; /* screen */
+    uint32_t lp_w, lp_h;    /* LP buffer w x h (eq. 3.6) */
+    float lp_aspect;        /* the aspect used (given or matched) */
+    float L;                /* normaliser (eq. 3.10), for the current gaze */
+    float f_px;             /* eye to image distance, pixels (the eccentricity model) */
+    float r_g;              /* gaze disc radius, pixels (0: no disc) */
+    float G, u_g, w_c;      /* eq. 3.4, 3.5 */
+    float u_max;            /* LP columns the screen needs from the current gaze */
+    uint32_t lp_cols;       /* columns dispatched: min(lp_w, ceil(u_max)), >= 1 */
+    uint32_t disc_side;     /* S: disc buffer side; the disc has S x S slots (0: no disc) */
+    uint32_t disc_x0, disc_y0, disc_w, disc_h; /* the current disc square on the screen */
+    uint32_t lp_slots;      /* lp_w * lp_h: slot of texel (u, v) is v * lp_w + u */
+    uint32_t disc_offset;   /* slot of disc pixel (x, y) = disc_offset + (y - disc_y0) * S +
+                               (x - disc_x0) */
+    uint32_t centre_slot;   /* slot of the sample on the gaze point */
+    uint32_t samples;       /* slots in a sample buffer: lp_slots + S * S + 1 */
+} fovlp_geometry;
+
+/* Pinhole camera for TAA reprojection, the same model as fovsdf_camera: screen point (x, y)
+   looks along fwd + ((x / W) 2 - 1) tan_half_y (W / H) right - ((y / H) 2 - 1) tan_half_y up;
+   depth = distance along the unit ray. right, up, fwd: orthonormal (fovsdf_ctx has them). */
+typedef struct fovlp_camera {
+    float pos[3];
+    float right[3], up[3], fwd[3];
+    float tan_half_y;       /* tan(vertical field of view / 2), > 0 */
+} fovlp_camera;
+
+/* The per-frame context (transparent, like fovsdf_ctx). fovlp_init fills it; fovlp_begin_frame
+   updates it; read-only between begin_frame calls. */
+typedef struct fovlp_ctx {
+    fovlp_config cfg;       /* resolved: defaults filled in */
+    fovlp_geometry geo;     /* for the current gaze */
+    fov_ecc_model ecc;      /* the shared eccentricity model, for the current gaze */
+    fov_gaze gaze;          /* current gaze (clamped to the screen) */
+    fov_gaze prev_gaze;
+    fovlp_camera cam, prev_cam;
+    uint32_t have_cam;      /* bit 0: cam valid, bit 1: prev_cam valid */
+    uint32_t frame;         /* frames begun since init or fovlp_reset_history */
+    uint32_t in_frame;      /* 1 after the first begin_frame */
+    uint32_t history_valid; /* TAA: 1 when the history passed to fovlp_taa_rows is usable */
+    uint32_t moving;        /* 1 when cam differs from prev_cam */
+    float jit_u, jit_v;     /* sample offset inside a texel / pixel this frame (0.5: centre) */
+    float L_diag;           /* log(diagonal), the fixed normaliser of the sizes */
+    float *rho;             /* lp_w radii of the columns' samples (this frame) */
+    float *cs, *sn;         /* lp_h cos/sin of the rows' sample angles (this frame) */
+    void *mem;
+    size_t mem_size;
+} fovlp_ctx;
+
+/* A sample to shade: screen position and its slot in the sample buffer. */
+typedef struct fovlp_sample {
+    float x, y;
+    uint32_t slot;
+} fovlp_sample;
+
+/* Shading callback: colour (linear RGB, 3 floats) and, when depth is not NULL, the depth
+   (distance along the unit ray, for TAA) of the screen point (x, y). */
+typedef void (*fovlp_shade_fn)(float x, float y, float rgb[3], float *depth, void *user);
+
+/* Sample counts of the current frame (fovlp_count_samples). */
+typedef struct fovlp_counts {
+    uint64_t lp_dispatched;   /* lp_cols * lp_h */
+    uint64_t lp_shaded;       /* LP texels whose sample is on the screen */
+    uint64_t disc_dispatched; /* disc_w * disc_h */
+    uint64_t disc_shaded;     /* disc pixels inside the circle */
+    uint64_t shaded;          /* lp_shaded + disc_shaded + 1 (the centre sample) */
+    float dispatched_pct;     /* (lp_dispatched + disc_dispatched) / (W H) * 100 */
+    float shaded_pct;         /* shaded / (W H) * 100 */
+} fovlp_counts;
+
+/* TAA buffers of one frame. Screen-size, tightly packed (3 floats per pixel for colour).
+   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame).
+   cur_rgb/cur_depth: this frame's reconstruction (fovlp_reconstruct_rows with out_depth). */
+typedef struct fovlp_taa_io {
+    const float *cur_rgb;
+    const float *cur_depth;
+    const float *prev_rgb;
+    const float *prev_depth;
+    const uint8_t *prev_age;
+    float *out_rgb;
+    float *out_depth;
+    uint8_t *out_age;
+} fovlp_taa_io;
+
+typedef struct fovlp_taa_stats {
+    uint64_t pixels;
+    uint64_t rejected;      /* history rejected (off-screen or depth) */
+    uint64_t kept_periphery;/* peripheral rule applied */
+} fovlp_taa_stats;
+
+/* ==== functions =========================================================================== */
+
+FOVLP_API const char *fovlp_result_string(fov_result r);   /* never NULL */
+FOVLP_API const char *fovlp_preset_name(uint32_t preset);  /* "Fov", ...; never NULL */
+
+/* Config: defaults, presets (Table 5.1; an unknown preset gives the defaults) and the
+   effective values with validation. */
+FOVLP_API fovlp_config fovlp_config_default(void);   /* width = height = 0: set them */
+FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint32_t height);
+FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *out);
+/* Geometry of a config for a gaze point, without a context (sizes, u_G, used columns). */
+FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze,
+                                        fovlp_geometry *out);
+
+/* Eccentricity (the shared model; the same semantics as fovsdf_ecc_*). */
+FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *display,
+                                    float cam_fov_y_deg, uint32_t width, uint32_t height,
+                                    fov_gaze gaze);
+FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y); /* degrees */
+FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m);
+
+/* Context: memory size query, init, and per frame begin_frame. cam may be NULL (no
+   reprojection: TAA treats the camera as still). Resets the history on a gaze jump. */
+FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes);
+FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *mem,
+                                size_t mem_size);
+FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
+FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
+
+/* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). */
+FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u,
+                                        float *v);
+FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, float *x,
+                                        float *y);
+/* LP texels per screen pixel area at a screen point (the Jacobian of the mapping; 1 inside
+   the disc), and the sample spacings in pixels, radial and angular, at radius r. */
+FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y);
+FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px,
+                                   float *angular_px);
+
+/* Sampling. Sample rows: lp_h LP rows, then disc_h disc rows, then one row holding the
+   centre sample; split them over threads freely. */
+FOVLP_API uint32_t fovlp_sample_rows(const fovlp_ctx *ctx);
+/* Array form: the samples of rows [r0, r1) into out (cap entries); *count = the number of
+   samples (also when out is NULL, a count-only query; FOV_ERR_TOO_SMALL when cap is short). */
+FOVLP_API fov_result fovlp_samples(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1,
+                                   fovlp_sample *out, size_t cap, size_t *count);
+/* Callback form: shades rows [r0, r1) into rgb (3 floats per slot) and depth (1 per slot;
+   may be NULL); slots that are not shaded are set to 0. shaded (may be NULL) is added to. */
+FOVLP_API fov_result fovlp_shade_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1,
+                                      fovlp_shade_fn fn, void *user, float *rgb, float *depth,
+                                      uint64_t *shaded);
+FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out);
+
+/* Reconstruction of screen rows [y0, y1) from the shaded samples into out_rgb (row stride in
+   floats, 0: 3 W); out_depth (W floats per row, may be NULL) gets the depth of the nearest
+   sample (needs sample_depth). */
+FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
+                                            const float *sample_depth, uint32_t y0,
+                                            uint32_t y1, float *out_rgb, uint32_t out_stride,
+                                            float *out_depth);
+/* Tile form: the tile [x0, x1) x [y0, y1). */
+FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *sample_rgb,
+                                            const float *sample_depth, uint32_t x0,
+                                            uint32_t y0, uint32_t x1, uint32_t y1,
+                                            float *out_rgb, uint32_t out_stride,
+                                            float *out_depth);
+/* Gaussian blend in the periphery (eq. 3.13) of a reconstructed image (tightly packed),
+   rows [y0, y1) into out (must not alias in). Copies when cfg.blend is 0. */
+FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in_rgb, uint32_t y0,
+                                      uint32_t y1, float *out_rgb);
+/* TAA resolve of screen rows [y0, y1) (see fovlp_taa_io). stats may be NULL. */
+FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io, uint32_t y0,
+                                    uint32_t y1, fovlp_taa_stats *stats);
+/* The scaled Halton (2, 3) offset of a phase (eq. 3.11), in texels; for tests and tools. */
+FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float *ou,
+                                  float *ov);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FOVLP_H_INCLUDED */
+
+/* ---- end of API; implementation below ---- */
+#ifdef __INTELLISENSE__
+#define FOVLP_IMPLEMENTATION
+#endif
+
+#if defined(FOVLP_IMPLEMENTATION) && !defined(FOVLP_IMPL_INCLUDED)
+#define FOVLP_IMPL_INCLUDED
+
+#include <float.h>
+#include <limits.h>
+
+/* ---- hooks ------------------------------------------------------------------------------ */
+#ifndef FOV_ASSERT
+#include <assert.h>
+#define FOV_ASSERT(c) assert(c)
+#endif
+
+#if defined(FOV_SQRTF) || defined(FOV_FLOORF) || defined(FOV_SINF) || defined(FOV_COSF) ||    \
+    defined(FOV_TANF) || defined(FOV_ATAN2F) || defined(FOV_EXPF) || defined(FOV_LOGF) ||      \
+    defined(FOV_POWF)
+#if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
+    !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
+    !defined(FOV_POWF)
+#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#endif
+#define FOVLP__HOOKED_MATH 1
+#endif
+
+#define FOVLP__PRIV static FOVLP__UNUSED
+
+/* Float tests without == (the library builds clean with -Wfloat-equal). */
+FOVLP__PRIV int fovlp__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOVLP__PRIV int fovlp__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+
+#if !defined(FOVLP__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#include <math.h>
+#define FOVLP__SQRT(x) sqrtf(x)
+#define FOVLP__FLOOR(x) floorf(x)
+#define FOVLP__SIN(x) sinf(x)
+#define FOVLP__COS(x) cosf(x)
+#define FOVLP__TAN(x) tanf(x)
+#define FOVLP__ATAN2(y, x) atan2f(y, x)
+#define FOVLP__EXP(x) expf(x)
+#define FOVLP__LOG(x) logf(x)
+#define FOVLP__POW(x, y) powf(x, y)
+#elif defined(FOVLP__HOOKED_MATH)
+#define FOVLP__SQRT(x) FOV_SQRTF(x)
+#define FOVLP__FLOOR(x) FOV_FLOORF(x)
+#define FOVLP__SIN(x) FOV_SINF(x)
+#define FOVLP__COS(x) FOV_COSF(x)
+#define FOVLP__TAN(x) FOV_TANF(x)
+#define FOVLP__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOVLP__EXP(x) FOV_EXPF(x)
+#define FOVLP__LOG(x) FOV_LOGF(x)
+#define FOVLP__POW(x, y) FOV_POWF(x, y)
+#else
+/* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
+   ranges the library uses; tests/test_fovlp.c checks them against libm). */
+#define FOVLP__SQRT(x) fovlp__sqrtf(x)
+#define FOVLP__FLOOR(x) fovlp__floorf(x)
+#define FOVLP__SIN(x) fovlp__sinf(x)
+#define FOVLP__COS(x) fovlp__cosf(x)
+#define FOVLP__TAN(x) (fovlp__sinf(x) / fovlp__cosf(x))
+#define FOVLP__ATAN2(y, x) fovlp__atan2f(y, x)
+#define FOVLP__EXP(x) fovlp__expf(x)
+#define FOVLP__LOG(x) fovlp__logf(x)
+#define FOVLP__POW(x, y) fovlp__powf(x, y)
+
+typedef union fovlp__bits { float f; uint32_t u; } fovlp__bits;
+
+FOVLP__PRIV float fovlp__sqrtf(float x)
+{
+#if defined(__wasm__) && defined(__clang__)
+    return __builtin_sqrtf(x); /* one f32.sqrt instruction */
+#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+#else
+    fovlp__bits b;
+    float y;
+    if (!(x > 0.0f)) return fovlp__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
+    y = b.f;
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = x * y;                          /* sqrt estimate; one Newton step on sqrt */
+    return 0.5f * (y + x / y);
+#endif
+}
+
+FOVLP__PRIV float fovlp__floorf(float x)
+{
+    float r;
+    if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
+    r = (float)(int32_t)x;
+    return r > x ? r - 1.0f : r;
+}
+
+/* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
+FOVLP__PRIV float fovlp__sin_k(float x)
+{
+    float x2 = x * x;
+    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
+                x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
+}
+FOVLP__PRIV float fovlp__cos_k(float x)
+{
+    float x2 = x * x;
+    return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
+                x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
+}
+/* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
+FOVLP__PRIV float fovlp__reduce(float x, int32_t *q)
+{
+    float k;
+    if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
+    k = fovlp__floorf(x * 0.63661977236758134f + 0.5f);
+    *q = (int32_t)k;
+    /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
+    return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
+}
+FOVLP__PRIV float fovlp__sinf(float x)
+{
+    int32_t q;
+    float r = fovlp__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovlp__sin_k(r);
+    case 1: return fovlp__cos_k(r);
+    case 2: return -fovlp__sin_k(r);
+    default: return -fovlp__cos_k(r);
+    }
+}
+FOVLP__PRIV float fovlp__cosf(float x)
+{
+    int32_t q;
+    float r = fovlp__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fovlp__cos_k(r);
+    case 1: return -fovlp__sin_k(r);
+    case 2: return -fovlp__cos_k(r);
+    default: return fovlp__sin_k(r);
+    }
+}
+/* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
+FOVLP__PRIV float fovlp__atan01(float x)
+{
+    float off = 0.0f, z, z2;
+    if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
+    z = x;
+    z2 = z * z;
+    return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
+                 z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
+}
+FOVLP__PRIV float fovlp__atan2f(float y, float x)
+{
+    float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
+    if (fovlp__isnan(x) || fovlp__isnan(y)) return x + y;
+    if (fovlp__is0(ax) && fovlp__is0(ay)) return 0.0f;
+    a = ay <= ax ? fovlp__atan01(ay / ax) : 1.57079633f - fovlp__atan01(ax / ay);
+    if (x < 0.0f) a = 3.14159265f - a;
+    return y < 0.0f ? -a : a;
+}
+FOVLP__PRIV float fovlp__expf(float x)
+{
+    float k, r, p;
+    fovlp__bits b;
+    if (fovlp__isnan(x)) return x;
+    if (x > 88.7f) return FLT_MAX * 2.0f;
+    if (x < -103.0f) return 0.0f;
+    k = fovlp__floorf(x * 1.44269504f + 0.5f);
+    r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
+    p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
+        r * (8.3333333e-3f + r * 1.3888889e-3f)))));
+    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return p * b.f;
+}
+FOVLP__PRIV float fovlp__logf(float x)
+{
+    fovlp__bits b;
+    int32_t e;
+    float m, s, s2;
+    if (fovlp__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fovlp__is0(x)) return -FLT_MAX * 2.0f;
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    e = 0;
+    if (b.u < 0x00800000u) { b.f = x * 8388608.0f; e = -23; } /* subnormal */
+    e += (int32_t)((b.u >> 23) & 0xffu) - 127;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u; /* m in [1, 2) */
+    m = b.f;
+    if (m > 1.41421356f) { m *= 0.5f; e += 1; }
+    s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
+    s2 = s * s;
+    return (float)e * 0.693147181f +
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+}
+FOVLP__PRIV float fovlp__powf(float x, float y)
+{
+    if (fovlp__is0(y)) return 1.0f;
+    if (fovlp__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (x < 0.0f) {
+        float fy = fovlp__floorf(y);
+        float r;
+        if (fy < y || fy > y) return (x - x) / (x - x);
+        r = fovlp__expf(y * fovlp__logf(-x));
+        return ((int32_t)fovlp__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+    }
+    return fovlp__expf(y * fovlp__logf(x));
+}
+#endif
+
+#ifndef FOV_MEMSET
+#define FOV_MEMSET(p, v, n) fovlp__memset(p, v, n)
+FOVLP__PRIV void fovlp__memset(void *p, int v, size_t n)
+{
+    unsigned char *c = (unsigned char *)p;
+    while (n--) *c++ = (unsigned char)v;
+}
+#endif
+#ifndef FOV_MEMCPY
+#define FOV_MEMCPY(d, s, n) fovlp__memcpy(d, s, n)
+FOVLP__PRIV void fovlp__memcpy(void *d, const void *s, size_t n)
+{
+    unsigned char *a = (unsigned char *)d;
+    const unsigned char *b = (const unsigned char *)s;
+    while (n--) *a++ = *b++;
+}
+#endif
+
+
+#ifndef FOVLP_MAX_DIM
+#define FOVLP_MAX_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_LP_DIM
+#define FOVLP_MAX_LP_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_SAMPLES
+#define FOVLP_MAX_SAMPLES 268435456u
+#endif
+
+#define FOVLP__PI 3.14159265358979f
+#define FOVLP__TWO_PI 6.28318530717959f
+#define FOVLP__DEG 0.0174532925199433f
+#define FOVLP__LOG2 0.693147181f
+#define FOVLP__MAX_PHASES 256u
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOVLP__PRIV int fovlp__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOVLP__PRIV int fovlp__finite3(const float v[3])
+{
+    return fovlp__finite(v[0]) && fovlp__finite(v[1]) && fovlp__finite(v[2]);
+}
+FOVLP__PRIV int fovlp__neq(float a, float b) { return a < b || a > b; }
+FOVLP__PRIV float fovlp__minf(float a, float b) { return a < b ? a : b; }
+FOVLP__PRIV float fovlp__maxf(float a, float b) { return a > b ? a : b; }
+FOVLP__PRIV float fovlp__absf(float a) { return a < 0.0f ? -a : a; }
+FOVLP__PRIV float fovlp__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOVLP__PRIV float fovlp__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOVLP__PRIV float fovlp__len(const float a[3]) { return FOVLP__SQRT(fovlp__dot(a, a)); }
+FOVLP__PRIV void fovlp__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+FOVLP__PRIV float fovlp__normalize(float v[3])
+{
+    float l = fovlp__len(v);
+    if (l > 0.0f && fovlp__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
+    return l;
+}
+/* uint64 -> float without the compiler runtime's 64-bit conversion helper */
+FOVLP__PRIV float fovlp__u64f(uint64_t x)
+{
+    return (float)(uint32_t)(x >> 32) * 4294967296.0f + (float)(uint32_t)(x & 0xFFFFFFFFu);
+}
+FOVLP__PRIV size_t fovlp__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+/* K(x) = x^alpha for x >= 0 (eq. 3.2); alpha 1 exactly without a pow. */
+FOVLP__PRIV float fovlp__pow(float x, float a)
+{
+    if (!(x > 0.0f)) return 0.0f;
+    if (!fovlp__neq(a, 1.0f)) return x;
+    return FOVLP__POW(x, a);
+}
+FOVLP__PRIV uint32_t fovlp__ceil_u(float x, uint32_t cap)
+{
+    float c;
+    if (!(x > 0.0f)) return 0;
+    if (x >= (float)cap) return cap;
+    c = FOVLP__FLOOR(x);
+    return (uint32_t)c + (c < x ? 1u : 0u);
+}
+
+#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+#define FOVLP__MSG(s) s
+#else
+#define FOVLP__MSG(s) ((const char *)0)
+#endif
+FOVLP__PRIV fov_result fovlp__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
+{
+    if (lg && lg->func) lg->func("fovlp", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOVLP__FAIL(lg, r, msg) return fovlp__err(lg, r, FOVLP__MSG(msg), (uint32_t)__LINE__)
+
+/* ---- results, configs, presets ---------------------------------------------------------- */
+FOVLP_API const char *fovlp_result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or geometry";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+FOVLP_API const char *fovlp_preset_name(uint32_t preset)
+{
+    static const char *const names[] = { "Fov", "K Fov", "C Fov", "C K Fov" };
+    return preset < (uint32_t)_FOVLP_PRESET_NUM ? names[preset] : "unknown";
+}
+
+/* Fills the defaults of the zero fields and validates everything except width/height. */
+FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
+{
+    fovlp_config c = *in;
+    const fov_logger *lg = &in->logger;
+    const fovlp_taa_config *t = &c.taa;
+    if (!fovlp__finite(c.sigma) || !fovlp__finite(c.alpha) || !fovlp__finite(c.gaze_angle) ||
+        !fovlp__finite(c.lp_aspect) || !fovlp__finite(c.match_deg) ||
+        !fovlp__finite(c.cam_fov_y_deg) || !fovlp__finite(c.blend_start) ||
+        !fovlp__finite(c.blend_end) || !fovlp__finite(c.display.fov_y_deg) ||
+        !fovlp__finite(c.display.pixel_pitch_mm) || !fovlp__finite(c.display.distance_mm) ||
+        !fovlp__finite(c.display.axis_dx) || !fovlp__finite(c.display.axis_dy) ||
+        !fovlp__finite(t->clip_gamma) || !fovlp__finite(t->depth_tol) ||
+        !fovlp__finite(t->reset_deg) || !fovlp__finite(t->periphery))
+        FOVLP__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
+    if (c.sigma < 0.0f || c.alpha < 0.0f || c.gaze_angle < 0.0f || c.lp_aspect < 0.0f ||
+        c.match_deg < 0.0f || c.cam_fov_y_deg < 0.0f || c.blend_start < 0.0f || c.blend_end < 0.0f ||
+        t->clip_gamma < 0.0f || t->depth_tol < 0.0f || t->reset_deg < 0.0f || t->periphery < 0.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter (sigma, alpha, a_G, ...)");
+    if (fovlp__is0(c.sigma)) c.sigma = 1.4f;
+    if (c.sigma < 1e-3f) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "config: sigma below 1e-3 (buffer too large)");
+    if (fovlp__is0(c.alpha)) c.alpha = 1.0f;
+    if (c.alpha > 16.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: alpha must be in (0, 16]");
+    if (c.no_disc > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: no_disc must be 0 or 1");
+    if (c.no_disc) c.gaze_angle = 0.0f;
+    else if (fovlp__is0(c.gaze_angle)) c.gaze_angle = 0.20f;
+    if (c.gaze_angle >= 1.5f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: gaze_angle must be below 1.5 rad");
+    if (fovlp__is0(c.match_deg)) c.match_deg = 15.0f;
+    if (c.match_deg >= 89.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: match_deg must be in (0, 89)");
+    if (c.lp_aspect > 65536.0f || (c.lp_aspect > 0.0f && c.lp_aspect < 1.0f / 65536.0f))
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: lp_aspect out of range");
+    if (c.norm >= (uint32_t)_FOVLP_NORM_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown norm");
+    if (c.edge >= (uint32_t)_FOVLP_EDGE_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown edge");
+    if (c.cam_fov_y_deg >= 180.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cam_fov_y_deg must be in (0, 180)");
+    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
+        c.display.distance_mm < 0.0f || fovlp__is0(c.display.pixel_pitch_mm) != fovlp__is0(c.display.distance_mm))
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
+    if (c.blend > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend must be 0 or 1");
+    if (fovlp__is0(c.blend_start)) c.blend_start = 1.0f / 6.0f;
+    if (fovlp__is0(c.blend_end)) c.blend_end = 0.5f;
+    if (!(c.blend_end > c.blend_start)) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend_end must exceed blend_start");
+    if (c.taa.enable > 1 || c.taa.jitter_moving > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa flags must be 0 or 1");
+    if (c.taa.phases == 0) c.taa.phases = 16;
+    if (c.taa.phases > FOVLP__MAX_PHASES) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.phases must be 1 .. 256");
+    if (c.taa.halton_start == 0) c.taa.halton_start = 1;
+    if (c.taa.halton_start > 0x00FFFFFFu) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.halton_start above 2^24");
+    if (c.taa.max_age == 0) c.taa.max_age = 20;
+    if (c.taa.max_age > 255) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.max_age must be 1 .. 255");
+    if (c.taa.clamp >= (uint32_t)_FOVLP_CLAMP_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown taa.clamp");
+    if (fovlp__is0(c.taa.clip_gamma)) c.taa.clip_gamma = 1.0f;
+    if (fovlp__is0(c.taa.depth_tol)) c.taa.depth_tol = 0.02f;
+    if (fovlp__is0(c.taa.reset_deg)) c.taa.reset_deg = 2.0f;
+    if (fovlp__is0(c.taa.periphery)) c.taa.periphery = 1.0f / 3.0f;
+    *out = c;
+    return FOV_OK;
+}
+
+FOVLP_API fovlp_config fovlp_config_default(void)
+{
+    fovlp_config c;
+    FOV_MEMSET(&c, 0, sizeof c);
+    (void)fovlp__resolve(&c, &c);
+    return c;
+}
+
+FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint32_t height)
+{
+    /* Table 5.1 of the thesis */
+    static const float tab[4][4] = {
+        { 0.75f, 1.0f, 0.0f, 1.2f }, { 1.0f, 3.0f, 0.0f, 0.70f },
+        { 1.4f, 1.0f, 0.20f, 0.33f }, { 1.3f, 2.0f, 0.15f, 0.35f } };
+    fovlp_config c = fovlp_config_default();
+    c.width = width;
+    c.height = height;
+    if (preset < (uint32_t)_FOVLP_PRESET_NUM) {
+        c.sigma = tab[preset][0];
+        c.alpha = tab[preset][1];
+        c.gaze_angle = tab[preset][2];
+        c.no_disc = c.gaze_angle > 0.0f ? 0u : 1u;
+        c.lp_aspect = tab[preset][3];
+    }
+    return c;
+}
+
+FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *out)
+{
+    fov_result r;
+    fovlp_config c;
+    if (!in || !out) return FOV_ERR_NULL;
+    if (in->width == 0 || in->height == 0)
+        FOVLP__FAIL(&in->logger, FOV_ERR_INVALID_ARG, "config: width and height must be >= 1");
+    if (in->width > FOVLP_MAX_DIM || in->height > FOVLP_MAX_DIM)
+        FOVLP__FAIL(&in->logger, FOV_ERR_LIMIT, "config: width or height above FOVLP_MAX_DIM");
+    r = fovlp__resolve(in, &c);
+    if (r != FOV_OK) return r;
+    *out = c;
+    return FOV_OK;
+}
+
+/* ---- eccentricity (the shared model; identical to fovsdf_ecc_*) --------------------------- */
+FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                    uint32_t width, uint32_t height, fov_gaze gaze)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > FOVLP_MAX_DIM || height > FOVLP_MAX_DIM) return FOV_ERR_LIMIT;
+    if (!fovlp__finite(gaze.x) || !fovlp__finite(gaze.y) || !fovlp__finite(cam_fov_y_deg) ||
+        !fovlp__finite(d->fov_y_deg) || !fovlp__finite(d->pixel_pitch_mm) ||
+        !fovlp__finite(d->distance_mm) || !fovlp__finite(d->axis_dx) || !fovlp__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVLP__TAN(0.5f * d->fov_y_deg * FOVLP__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fovlp__is0(d->pixel_pitch_mm) || !fovlp__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by only one of pitch, distance */
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOVLP__TAN(0.5f * cam_fov_y_deg * FOVLP__DEG);
+    }
+    if (!(f > 0.0f) || !fovlp__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fovlp__finite3(v) || !fovlp__finite(fovlp__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    fovlp__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    fovlp__cross(v, m->g, c);
+    s = fovlp__len(c);
+    co = fovlp__dot(v, m->g);
+    return FOVLP__ATAN2(s, co) * (180.0f / FOVLP__PI);
+}
+
+FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    return (m->f_px * m->f_px + r2) / m->f_px * FOVLP__DEG;
+}
+
+/* ---- geometry (eqs. 3.3-3.6, 3.10) -------------------------------------------------------- */
+/* The camera field of view handed to the eccentricity model when the display is all zero:
+   cfg.cam_fov_y_deg, else the thesis's viewing distance d = diagonal / tan 60 degrees. */
+FOVLP__PRIV float fovlp__view_fov(const fovlp_config *c)
+{
+    float diag, d;
+    if (c->cam_fov_y_deg > 0.0f) return c->cam_fov_y_deg;
+    diag = FOVLP__SQRT((float)c->width * (float)c->width + (float)c->height * (float)c->height);
+    d = diag / 1.73205081f;
+    return 2.0f * FOVLP__ATAN2(0.5f * (float)c->height, d) / FOVLP__DEG;
+}
+
+FOVLP__PRIV fov_gaze fovlp__clamp_gaze(const fovlp_config *c, fov_gaze g, int *clamped)
+{
+    fov_gaze o;
+    o.x = fovlp__clampf(g.x, 0.0f, (float)c->width);
+    o.y = fovlp__clampf(g.y, 0.0f, (float)c->height);
+    *clamped = fovlp__neq(o.x, g.x) || fovlp__neq(o.y, g.y);
+    return o;
+}
+
+FOVLP__PRIV float fovlp__far_corner(const fovlp_config *c, fov_gaze g)
+{
+    float dx = fovlp__maxf(g.x, (float)c->width - g.x), dy = fovlp__maxf(g.y, (float)c->height - g.y);
+    return FOVLP__SQRT(dx * dx + dy * dy);
+}
+
+/* Sizes (fixed for a config) and the gaze-dependent part. c must be resolved with valid
+   width/height; ecc must be initialised for gaze (gives f_px). */
+FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, float f_px,
+                                       fovlp_geometry *g)
+{
+    const fov_logger *lg = &c->logger;
+    float W = (float)c->width, H = (float)c->height;
+    float diag = FOVLP__SQRT(W * W + H * H);
+    float L_diag = FOVLP__LOG(fovlp__maxf(diag, 2.0f));
+    float L, r_g, G, G_diag, asp, hf, wf, rmax, xm;
+    uint32_t S;
+    size_t slots, lp;
+    FOV_MEMSET(g, 0, sizeof *g);
+    g->width = c->width;
+    g->height = c->height;
+    g->f_px = f_px;
+    /* eq. 3.3: the gaze disc radius */
+    r_g = c->gaze_angle > 0.0f ? f_px * FOVLP__TAN(c->gaze_angle) : 0.0f;
+    if (!fovlp__finite(r_g)) FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "geometry: gaze disc radius not finite");
+    /* eq. 3.4 with the diagonal normaliser, for the sizes */
+    xm = c->edge == FOVLP_EDGE_THESIS ? r_g + 1.0f : r_g;
+    G_diag = r_g > 0.0f ? fovlp__pow(FOVLP__LOG(fovlp__maxf(xm, 1.0f)) / L_diag, c->alpha) : 0.0f;
+    if (G_diag >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
+    /* eq. 3.6, or the aspect that matches the spacings at match_deg (section 5.1 tuning) */
+    asp = c->lp_aspect;
+    if (!(asp > 0.0f)) {
+        float r_ref = f_px * FOVLP__TAN(c->match_deg * FOVLP__DEG);
+        float x = FOVLP__LOG(fovlp__maxf(r_ref, 2.0f)) / L_diag;
+        float t = fovlp__clampf(fovlp__pow(fovlp__minf(x, 1.0f), c->alpha), 1e-3f, 1.0f);
+        float k = L_diag * fovlp__pow(t, 1.0f / c->alpha - 1.0f) / (FOVLP__TWO_PI * c->alpha);
+        asp = fovlp__clampf(k * (1.0f - G_diag), 1.0f / 65536.0f, 65536.0f);
+    }
+    g->lp_aspect = asp;
+    hf = FOVLP__FLOOR(FOVLP__SQRT(W * H / asp) / c->sigma + 0.5f);
+    if (!(hf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer height above FOVLP_MAX_LP_DIM");
+    if (hf < 1.0f) hf = 1.0f;
+    wf = FOVLP__FLOOR(hf * asp + 0.5f);
+    if (!(wf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer width above FOVLP_MAX_LP_DIM");
+    if (wf < 1.0f) wf = 1.0f;
+    g->lp_w = (uint32_t)wf;
+    g->lp_h = (uint32_t)hf;
+    /* disc buffer: covers the square of any gaze position */
+    S = 0;
+    if (r_g > 0.0f) {
+        float s = 2.0f * r_g + 2.0f, m = fovlp__maxf(W, H);
+        S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
+    }
+    g->disc_side = S;
+    lp = (size_t)g->lp_w * (size_t)g->lp_h;
+    slots = lp + (size_t)S * (size_t)S + 1u;
+    if (lp / g->lp_w != g->lp_h || slots > (size_t)FOVLP_MAX_SAMPLES || slots < lp)
+        FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: sample slots above FOVLP_MAX_SAMPLES");
+    g->lp_slots = (uint32_t)lp;
+    g->disc_offset = (uint32_t)lp;
+    g->centre_slot = (uint32_t)(lp + (size_t)S * (size_t)S);
+    g->samples = (uint32_t)slots;
+    /* the gaze-dependent part */
+    rmax = fovlp__far_corner(c, gaze);
+    L = c->norm == FOVLP_NORM_CORNER ? FOVLP__LOG(fovlp__maxf(rmax, 2.0f)) : L_diag;
+    g->L = L;
+    g->r_g = r_g;
+    G = r_g > 0.0f ? fovlp__pow(FOVLP__LOG(fovlp__maxf(xm, 1.0f)) / L, c->alpha) : 0.0f;
+    if (G >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
+    g->G = G;
+    g->u_g = (float)g->lp_w * G / (1.0f - G);
+    g->w_c = (float)g->lp_w + g->u_g;
+    g->u_max = fovlp__pow(FOVLP__LOG(fovlp__maxf(rmax, 1.0f)) / L, c->alpha) * g->w_c - g->u_g;
+    g->lp_cols = fovlp__ceil_u(g->u_max, g->lp_w);
+    if (g->lp_cols < 1) g->lp_cols = 1;
+    if (S > 0) {
+        float x0 = fovlp__maxf(0.0f, FOVLP__FLOOR(gaze.x - r_g));
+        float y0 = fovlp__maxf(0.0f, FOVLP__FLOOR(gaze.y - r_g));
+        uint32_t x1 = fovlp__ceil_u(gaze.x + r_g, c->width), y1 = fovlp__ceil_u(gaze.y + r_g, c->height);
+        g->disc_x0 = (uint32_t)x0;
+        g->disc_y0 = (uint32_t)y0;
+        g->disc_w = x1 > g->disc_x0 ? x1 - g->disc_x0 : 0;
+        g->disc_h = y1 > g->disc_y0 ? y1 - g->disc_y0 : 0;
+        if (g->disc_w > S) g->disc_w = S;
+        if (g->disc_h > S) g->disc_h = S;
+    }
+    return FOV_OK;
+}
+
+FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovlp_config *c,
+                                    fov_ecc_model *ecc, fov_gaze *gz, fovlp_geometry *g)
+{
+    fov_result r;
+    int clamped;
+    if (!cfg) return FOV_ERR_NULL;
+    r = fovlp_config_resolve(cfg, c);
+    if (r != FOV_OK) return r;
+    if (!fovlp__finite(gaze.x) || !fovlp__finite(gaze.y))
+        FOVLP__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "gaze is NaN or infinite");
+    *gz = fovlp__clamp_gaze(c, gaze, &clamped);
+    if (clamped && c->logger.func)
+        c->logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK, FOVLP__MSG("gaze off-screen: clamped"),
+                       (uint32_t)__LINE__, c->logger.user);
+    r = fovlp_ecc_init(ecc, &c->display, fovlp__view_fov(c), c->width, c->height, *gz);
+    if (r != FOV_OK) FOVLP__FAIL(&c->logger, r, "display geometry rejected by the eccentricity model");
+    return fovlp__geometry(c, *gz, ecc->f_px, g);
+}
+
+FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, fovlp_geometry *out)
+{
+    fovlp_config c;
+    fov_ecc_model e;
+    fov_gaze gz;
+    if (!cfg || !out) return FOV_ERR_NULL;
+    return fovlp__setup(cfg, gaze, &c, &e, &gz, out);
+}
+
+/* ---- context ------------------------------------------------------------------------------ */
+FOVLP__PRIV size_t fovlp__mem_bytes(const fovlp_geometry *g)
+{
+    return fovlp__align(sizeof(float) * (size_t)g->lp_w) + 2u * fovlp__align(sizeof(float) * (size_t)g->lp_h);
+}
+
+FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes)
+{
+    fovlp_geometry g;
+    fov_gaze gz;
+    fov_result r;
+    if (!cfg || !bytes) return FOV_ERR_NULL;
+    gz.x = 0.5f * (float)cfg->width;
+    gz.y = 0.5f * (float)cfg->height;
+    r = fovlp_geometry_get(cfg, gz, &g);
+    if (r != FOV_OK) return r;
+    *bytes = fovlp__mem_bytes(&g) + 16u; /* + alignment slack */
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *mem, size_t mem_size)
+{
+    fovlp_config c;
+    fov_ecc_model e;
+    fov_gaze gz;
+    fovlp_geometry g;
+    fov_result r;
+    size_t need;
+    unsigned char *p;
+    if (!ctx || !cfg) return FOV_ERR_NULL;
+    gz.x = 0.5f * (float)cfg->width;
+    gz.y = 0.5f * (float)cfg->height;
+    r = fovlp__setup(cfg, gz, &c, &e, &gz, &g);
+    if (r != FOV_OK) return r;
+    need = fovlp__mem_bytes(&g) + 16u;
+    if (!mem) FOVLP__FAIL(&c.logger, FOV_ERR_NULL, "init: memory is NULL (size it with fovlp_memory_size)");
+    if (mem_size < need) FOVLP__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "init: memory smaller than fovlp_memory_size");
+    FOV_MEMSET(ctx, 0, sizeof *ctx);
+    ctx->cfg = c;
+    ctx->geo = g;
+    ctx->ecc = e;
+    ctx->gaze = gz;
+    ctx->prev_gaze = gz;
+    ctx->L_diag = FOVLP__LOG(fovlp__maxf(FOVLP__SQRT((float)c.width * (float)c.width +
+                                                     (float)c.height * (float)c.height), 2.0f));
+    p = (unsigned char *)mem;
+    p += (16u - (size_t)((uintptr_t)p & 15u)) & 15u;
+    ctx->rho = (float *)(void *)p;
+    p += fovlp__align(sizeof(float) * (size_t)g.lp_w);
+    ctx->cs = (float *)(void *)p;
+    p += fovlp__align(sizeof(float) * (size_t)g.lp_h);
+    ctx->sn = (float *)(void *)p;
+    ctx->mem = mem;
+    ctx->mem_size = mem_size;
+    ctx->jit_u = ctx->jit_v = 0.5f;
+    return FOV_OK;
+}
+
+FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx)
+{
+    if (!ctx) return;
+    ctx->frame = 0;
+    ctx->history_valid = 0;
+}
+
+/* Radical inverse of n in base b (Halton), from integers. */
+FOVLP__PRIV float fovlp__halton(uint32_t n, uint32_t b)
+{
+    float f = 1.0f, r = 0.0f, inv = 1.0f / (float)b;
+    while (n > 0) {
+        f *= inv;
+        r += f * (float)(n % b);
+        n /= b;
+    }
+    return r;
+}
+
+FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float *ou, float *ov)
+{
+    fovlp_config c;
+    fov_result r;
+    uint32_t k, n;
+    float m2 = 0.0f, m3 = 0.0f;
+    if (!cfg || !ou || !ov) return FOV_ERR_NULL;
+    r = fovlp__resolve(cfg, &c);
+    if (r != FOV_OK) return r;
+    n = c.taa.phases;
+    /* eq. 3.11: scale so the offsets of one cycle average to the texel centre */
+    for (k = 0; k < n; ++k) {
+        m2 += fovlp__halton(c.taa.halton_start + k, 2);
+        m3 += fovlp__halton(c.taa.halton_start + k, 3);
+    }
+    m2 /= (float)n;
+    m3 /= (float)n;
+    k = c.taa.halton_start + phase % n;
+    *ou = m2 > 0.0f ? fovlp__halton(k, 2) * (0.5f / m2) : 0.5f;
+    *ov = m3 > 0.0f ? fovlp__halton(k, 3) * (0.5f / m3) : 0.5f;
+    return FOV_OK;
+}
+
+FOVLP__PRIV int fovlp__cam_ok(const fovlp_camera *c)
+{
+    return fovlp__finite3(c->pos) && fovlp__finite3(c->right) && fovlp__finite3(c->up) &&
+           fovlp__finite3(c->fwd) && fovlp__finite(c->tan_half_y);
+}
+FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
+{
+    int i;
+    for (i = 0; i < 3; ++i)
+        if (fovlp__neq(a->pos[i], b->pos[i]) || fovlp__neq(a->right[i], b->right[i]) ||
+            fovlp__neq(a->up[i], b->up[i]) || fovlp__neq(a->fwd[i], b->fwd[i]))
+            return 1;
+    return fovlp__neq(a->tan_half_y, b->tan_half_y);
+}
+
+FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam)
+{
+    fovlp_config c;
+    fov_ecc_model e;
+    fov_gaze gz;
+    fovlp_geometry g;
+    fov_result r;
+    uint32_t i, moving = 0, jump = 0;
+    float ou = 0.5f, ov = 0.5f;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!ctx->rho || !ctx->cs || !ctx->sn) return FOV_ERR_INVALID_ARG; /* not initialised */
+    if (cam) {
+        if (!fovlp__cam_ok(cam)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "begin_frame: camera not finite");
+        if (!(cam->tan_half_y > 0.0f) || fovlp__len(cam->fwd) < 0.5f || fovlp__len(cam->right) < 0.5f ||
+            fovlp__len(cam->up) < 0.5f)
+            FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE, "begin_frame: degenerate camera");
+    }
+    r = fovlp__setup(&ctx->cfg, gaze, &c, &e, &gz, &g);
+    if (r != FOV_OK) return r;
+    if (g.lp_w != ctx->geo.lp_w || g.lp_h != ctx->geo.lp_h || g.samples != ctx->geo.samples)
+        FOVLP__FAIL(&c.logger, FOV_ERR_DEGENERATE, "begin_frame: sizes changed (context modified?)");
+    /* gaze jump: reset the history */
+    if (ctx->in_frame) {
+        float a = fovlp_ecc_deg(&e, ctx->gaze.x, ctx->gaze.y);
+        if (!(a <= c.taa.reset_deg)) jump = 1;
+    }
+    ctx->prev_gaze = ctx->in_frame ? ctx->gaze : gz;
+    ctx->prev_cam = ctx->cam;
+    ctx->have_cam = (ctx->have_cam & 1u) ? 2u : 0u;
+    if (cam) { ctx->cam = *cam; ctx->have_cam |= 1u; }
+    if ((ctx->have_cam & 3u) == 3u) moving = (uint32_t)fovlp__cam_differs(&ctx->cam, &ctx->prev_cam);
+    if (jump) ctx->frame = 0;
+    ctx->history_valid = (ctx->frame > 0 && c.taa.enable) ? 1u : 0u;
+    ctx->moving = moving;
+    ctx->gaze = gz;
+    ctx->ecc = e;
+    ctx->geo = g;
+    /* jitter (eq. 3.11), off while moving unless asked for */
+    if (c.taa.enable && (!moving || c.taa.jitter_moving)) {
+        r = fovlp_jitter(&c, ctx->frame, &ou, &ov);
+        if (r != FOV_OK) return r;
+    }
+    ctx->jit_u = ou;
+    ctx->jit_v = ov;
+    /* per-frame tables: eq. 3.7 split into its u part (radius) and v part (angle) */
+    for (i = 0; i < g.lp_w; ++i) {
+        float t = ((float)i + ou + g.u_g) / g.w_c;
+        ctx->rho[i] = FOVLP__EXP(g.L * fovlp__pow(t, 1.0f / c.alpha));
+    }
+    for (i = 0; i < g.lp_h; ++i) {
+        float a = FOVLP__TWO_PI * ((float)i + ov) / (float)g.lp_h;
+        ctx->cs[i] = FOVLP__COS(a);
+        ctx->sn[i] = FOVLP__SIN(a);
+    }
+    ctx->in_frame = 1;
+    ctx->frame = ctx->frame + 1u < 0x7FFFFFFFu ? ctx->frame + 1u : 1u;
+    return FOV_OK;
+}
+
+/* ---- mappings ----------------------------------------------------------------------------- */
+/* Screen -> continuous LP coordinates (eqs. 3.8, 3.9 with atan2 and the r >= 1 clamp). */
+FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u, float *v)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    float r = FOVLP__SQRT(dx * dx + dy * dy);
+    float a = FOVLP__ATAN2(dy, dx);
+    if (a < 0.0f) a += FOVLP__TWO_PI;
+    *u = fovlp__pow(FOVLP__LOG(fovlp__maxf(r, 1.0f)) / g->L, ctx->cfg.alpha) * g->w_c - g->u_g;
+    *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
+    if (*v >= (float)g->lp_h) *v -= (float)g->lp_h;
+}
+
+FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u, float *v)
+{
+    if (!ctx || !u || !v) return FOV_ERR_NULL;
+    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
+    if (!fovlp__finite(x) || !fovlp__finite(y)) return FOV_ERR_NOT_FINITE;
+    fovlp__to_lp(ctx, x - ctx->gaze.x, y - ctx->gaze.y, u, v);
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, float *x, float *y)
+{
+    const fovlp_geometry *g;
+    float t, rho, a;
+    if (!ctx || !x || !y) return FOV_ERR_NULL;
+    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
+    if (!fovlp__finite(u) || !fovlp__finite(v)) return FOV_ERR_NOT_FINITE;
+    g = &ctx->geo;
+    t = (u + g->u_g) / g->w_c;                  /* eq. 3.5: u_C / w_C */
+    if (t < 0.0f) return FOV_ERR_INVALID_ARG;   /* inside the disc / centre */
+    rho = FOVLP__EXP(g->L * fovlp__pow(t, 1.0f / ctx->cfg.alpha));   /* eq. 3.7 */
+    a = FOVLP__TWO_PI * v / (float)g->lp_h;
+    *x = ctx->gaze.x + rho * FOVLP__COS(a);
+    *y = ctx->gaze.y + rho * FOVLP__SIN(a);
+    return FOV_OK;
+}
+
+FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y)
+{
+    const fovlp_geometry *g;
+    float dx, dy, r, q, dudr, dvds;
+    if (!ctx || !ctx->in_frame || !fovlp__finite(x) || !fovlp__finite(y)) return 0.0f;
+    g = &ctx->geo;
+    dx = x - ctx->gaze.x; dy = y - ctx->gaze.y;
+    r = FOVLP__SQRT(dx * dx + dy * dy);
+    if (g->r_g > 0.0f && r < g->r_g) return 1.0f;
+    r = fovlp__maxf(r, 1.0f);
+    q = FOVLP__LOG(r) / g->L;
+    /* du/dr = alpha q^(alpha-1) w_C / (L r); dv/ds = h / (2 pi r) */
+    dudr = ctx->cfg.alpha * fovlp__pow(q, ctx->cfg.alpha - 1.0f) * g->w_c / (g->L * r);
+    if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) dudr = g->w_c / (g->L * r);
+    dvds = (float)g->lp_h / (FOVLP__TWO_PI * r);
+    return dudr * dvds;
+}
+
+FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px, float *angular_px)
+{
+    const fovlp_geometry *g;
+    float q, dudr;
+    if (!ctx || !radial_px || !angular_px) return FOV_ERR_NULL;
+    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
+    if (!fovlp__finite(r)) return FOV_ERR_NOT_FINITE;
+    g = &ctx->geo;
+    if (g->r_g > 0.0f && r < g->r_g) { *radial_px = *angular_px = 1.0f; return FOV_OK; }
+    r = fovlp__maxf(r, 1.0f);
+    q = FOVLP__LOG(r) / g->L;
+    dudr = ctx->cfg.alpha * fovlp__pow(q, ctx->cfg.alpha - 1.0f) * g->w_c / (g->L * r);
+    if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) dudr = g->w_c / (g->L * r);
+    *radial_px = dudr > 0.0f ? 1.0f / dudr : FLT_MAX;
+    *angular_px = FOVLP__TWO_PI * r / (float)g->lp_h;
+    return FOV_OK;
+}
+
+/* ---- sampling ----------------------------------------------------------------------------- */
+/* Position of LP texel (u, v)'s sample this frame; 1 when it is shaded (dispatched column and
+   on the screen). Shading and reconstruction both call this, so they agree bit for bit. */
+FOVLP__PRIV int fovlp__lp_pos(const fovlp_ctx *ctx, uint32_t u, uint32_t v, float *x, float *y)
+{
+    float r = ctx->rho[u];
+    *x = ctx->gaze.x + r * ctx->cs[v];
+    *y = ctx->gaze.y + r * ctx->sn[v];
+    return u < ctx->geo.lp_cols && *x >= 0.0f && *x < (float)ctx->geo.width && *y >= 0.0f &&
+           *y < (float)ctx->geo.height;
+}
+/* Disc pixel (i, j) (screen pixel) is shaded when its centre lies inside the circle. */
+FOVLP__PRIV int fovlp__in_disc(const fovlp_ctx *ctx, uint32_t i, uint32_t j)
+{
+    float dx = (float)i + 0.5f - ctx->gaze.x, dy = (float)j + 0.5f - ctx->gaze.y;
+    return ctx->geo.r_g > 0.0f && dx * dx + dy * dy < ctx->geo.r_g * ctx->geo.r_g;
+}
+FOVLP__PRIV void fovlp__centre_pos(const fovlp_ctx *ctx, float *x, float *y)
+{
+    float W = (float)ctx->geo.width, H = (float)ctx->geo.height;
+    *x = ctx->gaze.x < W ? ctx->gaze.x : W - 0.5f;
+    *y = ctx->gaze.y < H ? ctx->gaze.y : H - 0.5f;
+}
+
+FOVLP_API uint32_t fovlp_sample_rows(const fovlp_ctx *ctx)
+{
+    if (!ctx || !ctx->in_frame) return 0;
+    return ctx->geo.lp_h + ctx->geo.disc_h + 1u;
+}
+
+/* Visits the samples of rows [r0, r1); emit(slot, x, y, shaded) for every slot of the rows. */
+typedef struct fovlp__visit {
+    fovlp_sample *out;
+    size_t cap, n;
+    fovlp_shade_fn fn;
+    void *user;
+    float *rgb, *depth;
+    uint64_t shaded;
+    int overflow;
+} fovlp__visit;
+
+FOVLP__PRIV void fovlp__emit(fovlp__visit *vi, uint32_t slot, float x, float y, int on)
+{
+    if (vi->fn) {
+        float *c = vi->rgb + (size_t)slot * 3u;
+        if (on) {
+            float d = 0.0f;
+            c[0] = c[1] = c[2] = 0.0f;
+            vi->fn(x, y, c, vi->depth ? &d : (float *)0, vi->user);
+            if (vi->depth) vi->depth[slot] = d;
+            vi->shaded++;
+        } else {
+            c[0] = c[1] = c[2] = 0.0f;
+            if (vi->depth) vi->depth[slot] = 0.0f;
+        }
+        return;
+    }
+    if (!on) return;
+    if (vi->out) {
+        if (vi->n < vi->cap) {
+            vi->out[vi->n].x = x;
+            vi->out[vi->n].y = y;
+            vi->out[vi->n].slot = slot;
+        } else {
+            vi->overflow = 1;
+        }
+    }
+    vi->n++;
+}
+
+FOVLP__PRIV void fovlp__visit_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1, fovlp__visit *vi)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    uint32_t r, u;
+    for (r = r0; r < r1; ++r) {
+        if (r < g->lp_h) {
+            uint32_t base = r * g->lp_w;
+            for (u = 0; u < g->lp_w; ++u) {
+                float x, y;
+                int on = fovlp__lp_pos(ctx, u, r, &x, &y);
+                if (u >= g->lp_cols && !vi->fn) break;
+                fovlp__emit(vi, base + u, x, y, on);
+            }
+        } else if (r < g->lp_h + g->disc_h) {
+            uint32_t k = r - g->lp_h, j = g->disc_y0 + k, i;
+            uint32_t base = g->disc_offset + k * g->disc_side;
+            for (i = 0; i < g->disc_side; ++i) {
+                uint32_t px = g->disc_x0 + i;
+                int on = i < g->disc_w && fovlp__in_disc(ctx, px, j);
+                if (i >= g->disc_w && !vi->fn) break;
+                fovlp__emit(vi, base + i, (float)px + ctx->jit_u, (float)j + ctx->jit_v, on);
+            }
+        } else {
+            float x, y;
+            fovlp__centre_pos(ctx, &x, &y);
+            fovlp__emit(vi, g->centre_slot, x, y, 1);
+        }
+    }
+}
+
+FOVLP__PRIV fov_result fovlp__rows_ok(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1)
+{
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (r0 > r1 || r1 > fovlp_sample_rows(ctx))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "sample rows out of range");
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_samples(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1,
+                                   fovlp_sample *out, size_t cap, size_t *count)
+{
+    fovlp__visit vi;
+    fov_result r;
+    if (!ctx || !count) return FOV_ERR_NULL;
+    r = fovlp__rows_ok(ctx, r0, r1);
+    if (r != FOV_OK) return r;
+    FOV_MEMSET(&vi, 0, sizeof vi);
+    vi.out = out;
+    vi.cap = out ? cap : 0;
+    fovlp__visit_rows(ctx, r0, r1, &vi);
+    *count = vi.n;
+    if (vi.overflow) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_TOO_SMALL, "samples: output array too small");
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_shade_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1,
+                                      fovlp_shade_fn fn, void *user, float *rgb, float *depth,
+                                      uint64_t *shaded)
+{
+    fovlp__visit vi;
+    fov_result r;
+    if (!ctx || !fn || !rgb) return FOV_ERR_NULL;
+    r = fovlp__rows_ok(ctx, r0, r1);
+    if (r != FOV_OK) return r;
+    FOV_MEMSET(&vi, 0, sizeof vi);
+    vi.fn = fn;
+    vi.user = user;
+    vi.rgb = rgb;
+    vi.depth = depth;
+    fovlp__visit_rows(ctx, r0, r1, &vi);
+    if (shaded) *shaded += vi.shaded;
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out)
+{
+    const fovlp_geometry *g;
+    uint32_t u, v;
+    float area;
+    if (!ctx || !out) return FOV_ERR_NULL;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    g = &ctx->geo;
+    FOV_MEMSET(out, 0, sizeof *out);
+    out->lp_dispatched = (uint64_t)g->lp_cols * g->lp_h;
+    for (v = 0; v < g->lp_h; ++v)
+        for (u = 0; u < g->lp_cols; ++u) {
+            float x, y;
+            out->lp_shaded += (uint64_t)fovlp__lp_pos(ctx, u, v, &x, &y);
+        }
+    out->disc_dispatched = (uint64_t)g->disc_w * g->disc_h;
+    for (v = 0; v < g->disc_h; ++v)
+        for (u = 0; u < g->disc_w; ++u) out->disc_shaded += (uint64_t)fovlp__in_disc(ctx, g->disc_x0 + u, g->disc_y0 + v);
+    out->shaded = out->lp_shaded + out->disc_shaded + 1u;
+    area = (float)g->width * (float)g->height;
+    out->dispatched_pct = fovlp__u64f(out->lp_dispatched + out->disc_dispatched) / area * 100.0f;
+    out->shaded_pct = fovlp__u64f(out->shaded) / area * 100.0f;
+    return FOV_OK;
+}
+
+/* ---- reconstruction ----------------------------------------------------------------------- */
+/* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
+   out. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
+FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
+                                   float uc, float vc, float rgb[3], float *depth)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    float su = uc - ctx->jit_u, sv = vc - ctx->jit_v, fu, fv, wsum = 0.0f, wbest = -1.0f;
+    float fl_u, fl_v;
+    int32_t i0, j0, di, dj;
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    *depth = 0.0f;
+    if (su < 0.0f) su = 0.0f;                          /* inside the first column */
+    if (su > (float)g->lp_w - 1.0f) su = (float)g->lp_w - 1.0f;
+    fl_u = FOVLP__FLOOR(su);
+    fl_v = FOVLP__FLOOR(sv);
+    fu = su - fl_u;
+    fv = sv - fl_v;
+    i0 = (int32_t)fl_u;
+    j0 = (int32_t)fl_v;
+    for (dj = 0; dj < 2; ++dj) {
+        int32_t j = j0 + dj;
+        float wv = dj ? fv : 1.0f - fv;
+        /* the angle wraps: row -1 is row h-1, row h is row 0 */
+        while (j < 0) j += (int32_t)g->lp_h;
+        while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
+        for (di = 0; di < 2; ++di) {
+            int32_t i = i0 + di;
+            float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y;
+            size_t slot;
+            if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
+            if (!fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
+            slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
+            rgb[0] += w * srgb[3 * slot];
+            rgb[1] += w * srgb[3 * slot + 1];
+            rgb[2] += w * srgb[3 * slot + 2];
+            wsum += w;
+            if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
+        }
+    }
+    if (wsum > 1e-6f) {
+        rgb[0] /= wsum; rgb[1] /= wsum; rgb[2] /= wsum;
+        return wsum;
+    }
+    /* no shaded tap (near the screen border or the last column): the nearest shaded sample
+       inwards along the two rows */
+    for (i0 = i0 < (int32_t)g->lp_w ? i0 : (int32_t)g->lp_w - 1; i0 >= 0; --i0) {
+        for (dj = 0; dj < 2; ++dj) {
+            int32_t j = j0 + (fv >= 0.5f ? 1 - dj : dj);
+            float x, y;
+            size_t slot;
+            while (j < 0) j += (int32_t)g->lp_h;
+            while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
+            if (!fovlp__lp_pos(ctx, (uint32_t)i0, (uint32_t)j, &x, &y)) continue;
+            slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i0;
+            rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
+            *depth = sdep ? sdep[slot] : 0.0f;
+            return 1.0f;
+        }
+    }
+    return 0.0f;
+}
+
+/* One screen pixel (the pipeline's step 7). */
+FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
+                              uint32_t px, uint32_t py, float rgb[3], float *depth)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    const float *cen = srgb + 3u * (size_t)g->centre_slot;
+    float cdep = sdep ? sdep[g->centre_slot] : 0.0f;
+    float dx = (float)px + 0.5f - ctx->gaze.x, dy = (float)py + 0.5f - ctx->gaze.y;
+    float uc, vc, r;
+    /* the gaze disc: its own sample, 1:1 */
+    if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
+        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_side + (px - g->disc_x0);
+        rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
+        *depth = sdep ? sdep[slot] : 0.0f;
+        return;
+    }
+    fovlp__to_lp(ctx, dx, dy, &uc, &vc);
+    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, rgb, depth) > 0.0f)) {
+        rgb[0] = cen[0]; rgb[1] = cen[1]; rgb[2] = cen[2];
+        *depth = cdep;
+        return;
+    }
+    r = FOVLP__SQRT(dx * dx + dy * dy);
+    /* between the disc and the innermost LP ring: interpolate along the radius between the
+       nearest disc pixel inwards and the ring (no step at the disc edge) */
+    if (g->r_g > 0.0f && r < ctx->rho[0] && r > 0.0f) {
+        float qx = ctx->gaze.x + dx / r * fovlp__maxf(g->r_g - 0.75f, 0.0f);
+        float qy = ctx->gaze.y + dy / r * fovlp__maxf(g->r_g - 0.75f, 0.0f);
+        if (qx >= 0.0f && qy >= 0.0f && qx < (float)g->width && qy < (float)g->height) {
+            uint32_t ix = (uint32_t)qx, iy = (uint32_t)qy;
+            if (fovlp__in_disc(ctx, ix, iy) && ix >= g->disc_x0 && iy >= g->disc_y0 &&
+                ix - g->disc_x0 < g->disc_w && iy - g->disc_y0 < g->disc_h) {
+                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_side + (ix - g->disc_x0);
+                float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
+                float rin = FOVLP__SQRT(ex * ex + ey * ey);
+                float t = ctx->rho[0] > rin ? fovlp__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
+                const float *q = srgb + 3u * slot;
+                rgb[0] = q[0] + (rgb[0] - q[0]) * t;
+                rgb[1] = q[1] + (rgb[1] - q[1]) * t;
+                rgb[2] = q[2] + (rgb[2] - q[2]) * t;
+                if (t < 0.5f) *depth = sdep ? sdep[slot] : 0.0f;
+            }
+        }
+        return;
+    }
+    /* inside the innermost sample ring (plain log-polar): blend towards the centre sample */
+    if (!(g->r_g > 0.0f) && r < ctx->rho[0]) {
+        float t = r / ctx->rho[0];
+        rgb[0] = cen[0] + (rgb[0] - cen[0]) * t;
+        rgb[1] = cen[1] + (rgb[1] - cen[1]) * t;
+        rgb[2] = cen[2] + (rgb[2] - cen[2]) * t;
+        if (t < 0.5f) *depth = cdep;
+    }
+}
+
+FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *sample_rgb,
+                                            const float *sample_depth, uint32_t x0, uint32_t y0,
+                                            uint32_t x1, uint32_t y1, float *out_rgb,
+                                            uint32_t out_stride, float *out_depth)
+{
+    uint32_t x, y, stride;
+    if (!ctx || !sample_rgb || !out_rgb) return FOV_ERR_NULL;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (x0 > x1 || y0 > y1 || x1 > ctx->geo.width || y1 > ctx->geo.height)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: rows or tile out of range");
+    stride = out_stride ? out_stride : 3u * ctx->geo.width;
+    if (stride < 3u * ctx->geo.width) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: stride below 3 * width");
+    for (y = y0; y < y1; ++y)
+        for (x = x0; x < x1; ++x) {
+            float c[3], d;
+            float *o = out_rgb + (size_t)y * stride + 3u * (size_t)x;
+            fovlp__pixel(ctx, sample_rgb, sample_depth, x, y, c, &d);
+            o[0] = c[0]; o[1] = c[1]; o[2] = c[2];
+            if (out_depth) out_depth[(size_t)y * ctx->geo.width + x] = d;
+        }
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
+                                            const float *sample_depth, uint32_t y0, uint32_t y1,
+                                            float *out_rgb, uint32_t out_stride, float *out_depth)
+{
+    if (!ctx) return FOV_ERR_NULL;
+    return fovlp_reconstruct_tile(ctx, sample_rgb, sample_depth, 0, y0, ctx->geo.width, y1,
+                                  out_rgb, out_stride, out_depth);
+}
+
+/* ---- Gaussian blend in the periphery (eq. 3.13) --------------------------------------------- */
+FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uint32_t y0, uint32_t y1,
+                                      float *out)
+{
+    static const float k[3] = { 0.25f, 0.5f, 0.25f }; /* separable 1/16 [1 2 1; 2 4 2; 1 2 1] */
+    uint32_t W, H, x, y;
+    float diag, s, e;
+    if (!ctx || !in || !out) return FOV_ERR_NULL;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    W = ctx->geo.width; H = ctx->geo.height;
+    if (y0 > y1 || y1 > H) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: rows out of range");
+    if (in == out) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: out must not alias in");
+    diag = FOVLP__SQRT((float)W * (float)W + (float)H * (float)H);
+    s = ctx->cfg.blend_start * diag;
+    e = ctx->cfg.blend_end * diag;
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t o = 3u * ((size_t)y * W + x);
+            float dx = (float)x + 0.5f - ctx->gaze.x, dy = (float)y + 0.5f - ctx->gaze.y;
+            float t = ctx->cfg.blend ? fovlp__clampf((FOVLP__SQRT(dx * dx + dy * dy) - s) / (e - s), 0.0f, 1.0f) : 0.0f;
+            float gsum[3] = { 0.0f, 0.0f, 0.0f };
+            int32_t a, b, ch;
+            if (!(t > 0.0f)) { out[o] = in[o]; out[o + 1] = in[o + 1]; out[o + 2] = in[o + 2]; continue; }
+            for (b = -1; b <= 1; ++b)
+                for (a = -1; a <= 1; ++a) {
+                    int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
+                    size_t q;
+                    xx = xx < 0 ? 0 : (xx >= (int32_t)W ? (int32_t)W - 1 : xx);   /* clamp at borders */
+                    yy = yy < 0 ? 0 : (yy >= (int32_t)H ? (int32_t)H - 1 : yy);
+                    q = 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
+                    for (ch = 0; ch < 3; ++ch) gsum[ch] += k[a + 1] * k[b + 1] * in[q + (size_t)ch];
+                }
+            for (a = 0; a < 3; ++a) out[o + (size_t)a] = in[o + (size_t)a] + (gsum[a] - in[o + (size_t)a]) * t;
+        }
+    return FOV_OK;
+}
+
+/* ---- temporal anti-aliasing (thesis section 3.4, eq. 3.12) ---------------------------------- */
+FOVLP__PRIV void fovlp__to_ycocg(const float c[3], float o[3])
+{
+    o[0] = 0.25f * c[0] + 0.5f * c[1] + 0.25f * c[2];
+    o[1] = 0.5f * c[0] - 0.5f * c[2];
+    o[2] = -0.25f * c[0] + 0.5f * c[1] - 0.25f * c[2];
+}
+FOVLP__PRIV void fovlp__from_ycocg(const float c[3], float o[3])
+{
+    o[0] = c[0] + c[1] - c[2];
+    o[1] = c[0] + c[2];
+    o[2] = c[0] - c[1] - c[2];
+}
+
+/* Clamp (AABB) or clip (variance) the history colour h against the current 3x3
+   neighbourhood of (x, y), in YCoCg (Karis 2014; Salvi 2016 for the variance box). */
+FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
+                                      float h[3])
+{
+    uint32_t W = ctx->geo.width, H = ctx->geo.height;
+    float mn[3], mx[3], m1[3] = { 0.0f, 0.0f, 0.0f }, m2[3] = { 0.0f, 0.0f, 0.0f }, hy[3];
+    int32_t a, b, ch;
+    float n = 0.0f;
+    mn[0] = mn[1] = mn[2] = FLT_MAX;
+    mx[0] = mx[1] = mx[2] = -FLT_MAX;
+    for (b = -1; b <= 1; ++b)
+        for (a = -1; a <= 1; ++a) {
+            int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
+            float q[3];
+            if (xx < 0 || yy < 0 || xx >= (int32_t)W || yy >= (int32_t)H) continue;
+            fovlp__to_ycocg(cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx), q);
+            for (ch = 0; ch < 3; ++ch) {
+                mn[ch] = fovlp__minf(mn[ch], q[ch]);
+                mx[ch] = fovlp__maxf(mx[ch], q[ch]);
+                m1[ch] += q[ch];
+                m2[ch] += q[ch] * q[ch];
+            }
+            n += 1.0f;
+        }
+    fovlp__to_ycocg(h, hy);
+    if (ctx->cfg.taa.clamp == FOVLP_CLAMP_AABB) {
+        for (ch = 0; ch < 3; ++ch) hy[ch] = fovlp__clampf(hy[ch], mn[ch], mx[ch]);
+    } else {
+        float scale = 0.0f, d[3];
+        for (ch = 0; ch < 3; ++ch) {
+            float mu = m1[ch] / n, var = fovlp__maxf(m2[ch] / n - mu * mu, 0.0f);
+            float ext = ctx->cfg.taa.clip_gamma * FOVLP__SQRT(var) + 1e-6f;
+            d[ch] = hy[ch] - mu;
+            scale = fovlp__maxf(scale, fovlp__absf(d[ch]) / ext);
+            m1[ch] = mu;
+        }
+        if (scale > 1.0f)
+            for (ch = 0; ch < 3; ++ch) hy[ch] = m1[ch] + d[ch] / scale;
+    }
+    fovlp__from_ycocg(hy, h);
+}
+
+/* Bilinear fetch of the previous colour at continuous (hx, hy), borders clamped. */
+FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx, float hy, float o[3])
+{
+    float sx = fovlp__clampf(hx - 0.5f, 0.0f, (float)W - 1.0f), sy = fovlp__clampf(hy - 0.5f, 0.0f, (float)H - 1.0f);
+    float fx = FOVLP__FLOOR(sx), fy = FOVLP__FLOOR(sy), ax = sx - fx, ay = sy - fy;
+    uint32_t x0 = (uint32_t)fx, y0 = (uint32_t)fy;
+    uint32_t x1 = x0 + 1u < W ? x0 + 1u : x0, y1 = y0 + 1u < H ? y0 + 1u : y0;
+    const float *p00 = img + 3u * ((size_t)y0 * W + x0), *p10 = img + 3u * ((size_t)y0 * W + x1);
+    const float *p01 = img + 3u * ((size_t)y1 * W + x0), *p11 = img + 3u * ((size_t)y1 * W + x1);
+    int ch;
+    for (ch = 0; ch < 3; ++ch) {
+        float t0 = p00[ch] + (p10[ch] - p00[ch]) * ax, t1 = p01[ch] + (p11[ch] - p01[ch]) * ax;
+        o[ch] = t0 + (t1 - t0) * ay;
+    }
+}
+
+FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io, uint32_t y0,
+                                    uint32_t y1, fovlp_taa_stats *stats)
+{
+    const fovlp_config *c;
+    uint32_t W, H, x, y, reproject;
+    float diag, asp, per;
+    if (!ctx || !io) return FOV_ERR_NULL;
+    c = &ctx->cfg;
+    if (!ctx->in_frame) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!c->taa.enable) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: cfg.taa.enable is 0");
+    if (!io->cur_rgb || !io->out_rgb || !io->out_age) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: cur_rgb, out_rgb and out_age are required");
+    if (ctx->history_valid && (!io->prev_rgb || !io->prev_age))
+        FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: prev_rgb and prev_age are required after the first frame");
+    W = ctx->geo.width; H = ctx->geo.height;
+    if (y0 > y1 || y1 > H) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: rows out of range");
+    reproject = ctx->history_valid && ctx->moving;
+    if (reproject && (!io->cur_depth || !io->prev_depth))
+        FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: a moving camera needs cur_depth and prev_depth");
+    diag = FOVLP__SQRT((float)W * (float)W + (float)H * (float)H);
+    per = c->taa.periphery * diag;
+    asp = (float)W / (float)H;
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            const float *cur = io->cur_rgb + 3u * i;
+            float dc = io->cur_depth ? io->cur_depth[i] : 0.0f;
+            float hist[3], hx = (float)x + 0.5f, hy = (float)y + 0.5f, w;
+            uint32_t age, reject = 0, periph = 0, ch;
+            if (stats) stats->pixels++;
+            if (io->out_depth) io->out_depth[i] = dc;
+            if (!ctx->history_valid) {
+                io->out_rgb[3 * i] = cur[0]; io->out_rgb[3 * i + 1] = cur[1]; io->out_rgb[3 * i + 2] = cur[2];
+                io->out_age[i] = 1;
+                continue;
+            }
+            if (reproject) {
+                /* world point of this pixel, then its place in the previous frame */
+                const fovlp_camera *a = &ctx->cam, *p = &ctx->prev_cam;
+                float sxn = (hx / (float)W * 2.0f - 1.0f) * a->tan_half_y * asp;
+                float syn = (hy / (float)H * 2.0f - 1.0f) * a->tan_half_y;
+                float d[3], wp[3], rel[3], z;
+                for (ch = 0; ch < 3; ++ch) d[ch] = a->fwd[ch] + sxn * a->right[ch] - syn * a->up[ch];
+                fovlp__normalize(d);
+                for (ch = 0; ch < 3; ++ch) { wp[ch] = a->pos[ch] + dc * d[ch]; rel[ch] = wp[ch] - p->pos[ch]; }
+                z = fovlp__dot(rel, p->fwd);
+                if (!(z > 1e-6f) || !fovlp__finite(dc)) {
+                    reject = 1;
+                } else {
+                    float px = fovlp__dot(rel, p->right) / (z * p->tan_half_y * asp);
+                    float py = fovlp__dot(rel, p->up) / (z * p->tan_half_y);
+                    hx = (px + 1.0f) * 0.5f * (float)W;
+                    hy = (1.0f - py) * 0.5f * (float)H;
+                    if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
+                        reject = 1;
+                    } else {
+                        float expect = fovlp__len(rel);
+                        float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
+                        if (fovlp__absf(hd - expect) > c->taa.depth_tol * fovlp__maxf(hd, expect)) {
+                            float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
+                            if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
+                            else reject = 1;
+                        }
+                    }
+                }
+            }
+            if (reject) {
+                age = 1;
+                hist[0] = hist[1] = hist[2] = 0.0f;
+                if (stats) stats->rejected++;
+            } else {
+                uint32_t pa = io->prev_age[(size_t)(uint32_t)hy * W + (uint32_t)hx];
+                age = pa + 1u < c->taa.max_age ? pa + 1u : c->taa.max_age;
+                if (age < 1) age = 1;
+                if (periph && age > 2) age = 2; /* the kept history weighs at most 1/2 */
+                fovlp__fetch(io->prev_rgb, W, H, hx, hy, hist);
+                if (c->taa.clamp != FOVLP_CLAMP_NONE) fovlp__clamp_history(ctx, io->cur_rgb, x, y, hist);
+                if (periph && stats) stats->kept_periphery++;
+            }
+            w = 1.0f / (float)age;
+            for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = hist[ch] + (cur[ch] - hist[ch]) * w;
+            io->out_age[i] = (uint8_t)(periph ? 1u : age);
+        }
+    return FOV_OK;
+}
+
+#endif /* FOVLP_IMPLEMENTATION */
+
+/*
+------------------------------------------------------------------------------
+This software is available under 2 licenses -- choose whichever you prefer.
+------------------------------------------------------------------------------
+ALTERNATIVE A - MIT License
+Copyright (c) 2026 the fov authors
+Permission is hereby granted, free of charge, to any person obtaining a copy of
+this software and associated documentation files (the "Software"), to deal in
+the Software without restriction, including without limitation the rights to
+use, copy, modify, merge, publish, distribute, sublicense, and/or sell copies
+of the Software, and to permit persons to whom the Software is furnished to do
+so, subject to the following conditions:
+The above copyright notice and this permission notice shall be included in all
+copies or substantial portions of the Software.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+SOFTWARE.
+------------------------------------------------------------------------------
+ALTERNATIVE B - Public Domain (www.unlicense.org)
+This is free and unencumbered software released into the public domain.
+Anyone is free to copy, modify, publish, use, compile, sell, or distribute this
+software, either in source code form or as a compiled binary, for any purpose,
+commercial or non-commercial, and by any means.
+In jurisdictions that recognize copyright laws, the author or authors of this
+software dedicate any and all copyright interest in the software to the public
+domain. We make this dedication for the benefit of the public at large and to
+the detriment of our heirs and successors. We intend this dedication to be an
+overt act of relinquishment in perpetuity of all present and future rights to
+this software under copyright law.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER IN AN
+ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
+WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
+------------------------------------------------------------------------------
+*/

@@ -1,0 +1,2 @@
+/* the C++ build of fovlp.c */
+#include "fovlp.c"
