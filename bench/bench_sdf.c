@@ -28,7 +28,9 @@
    PSNR).
 
    usage: bench_sdf [--full] [--hd] [--runs N] [--threads N] [--scenes a,b] [--shadows]
-                    [--out FILE] [--plots-only]   (--plots-only: redraw the plots of FILE)
+                    [--out FILE] [--plots-only] [--fov-grid]
+   --plots-only: redraw the plots of FILE; --fov-grid: classic, fipr and cone_fov only, every
+   fovea and refresh, 1 and 16 spp, gaze at the centre and the corner.
    Default grid (about 11 minutes on 2 cores at 640x360): every method at 1 spp with the gaze at
    the centre (fipr and cone_fov with the 7.5-degree fovea, refresh 1), classic, cone and ipr
    at 4 and 16 spp, and cone_fov at 16 spp beside classic at 16 spp. --full: every method at
@@ -99,7 +101,7 @@ static void progress(int done, int total, const char *what)
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360;
-    int plots_only = 0, full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
+    int plots_only = 0, fov_grid = 0, full = 0, runs = 5, nthreads = (int)sysconf(_SC_NPROCESSORS_ONLN), shadows = 0, a, njobs = 0, done = 0;
     const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/sdf.csv";
     static job_t jobs[4096];
     const float foveas[5] = { 2.5f, 5.0f, 7.5f, 10.0f, 15.0f };
@@ -118,6 +120,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--plots-only")) plots_only = 1;
+        else if (!strcmp(argv[a], "--fov-grid")) fov_grid = 1;
         else { fprintf(stderr, "unknown option %s (see the comment at the top of bench_sdf.c)\n", argv[a]); return 2; }
     }
     if (runs < 1) runs = 1;
@@ -126,7 +129,7 @@ int main(int argc, char **argv)
     for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
         const char *nm = fovsdf_builtin_name(id), *p = strstr(scenes, nm);
         if (!p || (p != scenes && p[-1] != ',') || (p[strlen(nm)] != ',' && p[strlen(nm)] != 0)) continue;
-        for (g = 0; g < (full ? 2u : 1u); ++g)
+        for (g = 0; g < (full || fov_grid ? 2u : 1u); ++g)
             for (s = 0; s < 3; ++s)
                 for (m = 0; m < (uint32_t)_FOVSDF_METHOD_NUM; ++m)
                     for (fi = 0; fi < 5; ++fi)
@@ -139,7 +142,9 @@ int main(int argc, char **argv)
                                        m == FOVSDF_METHOD_IPR || (m == FOVSDF_METHOD_CONE_FOV && spps[s] == 16)) &&
                                       fi == 2 && ri == 0;
                             if (!foveated(m) && (fi != 2 || ri != 0)) continue;
-                            if (!(full || def) || njobs >= 4096) continue;
+                            if (fov_grid) /* classic and the foveated methods over fovea x refresh, 1 and 16 spp */
+                                def = spps[s] != 4 && (foveated(m) || m == FOVSDF_METHOD_CLASSIC);
+                            if (!((full && !fov_grid) || def) || njobs >= 4096) continue;
                             jobs[njobs].scene = id; jobs[njobs].method = m; jobs[njobs].spp = spps[s]; jobs[njobs].corner = g;
                             jobs[njobs].fovea = foveated(m) ? foveas[fi] : 0.0f;
                             jobs[njobs].refresh = foveated(m) ? refreshes[ri] : 1u;
@@ -288,13 +293,14 @@ plots: /* speed-up against PSNR per scene */
     if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
         FILE *gp = popen("gnuplot", "w");
         const char *slash = strrchr(outpath, '/');
-        int dirlen = slash ? (int)(slash - outpath + 1) : 0;
+        const char *dot = strrchr(outpath, '.');
+        int stem = dot && (!slash || dot > slash) ? (int)(dot - outpath) : (int)strlen(outpath);
         if (gp) {
             for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
                 const char *nm = fovsdf_builtin_name(id);
                 if (!strstr(scenes, nm)) continue;
-                /* next to the CSV: bench/results/sdf_<scene>.png for the default --out */
-                fprintf(gp, "set terminal pngcairo size 800,500 noenhanced; set output '%.*ssdf_%s.png'\n", dirlen, outpath, nm);
+                /* next to the CSV, named after it: bench/results/sdf.csv -> sdf_<scene>.png */
+                fprintf(gp, "set terminal pngcairo size 800,500 noenhanced; set output '%.*s_%s.png'\n", stem, outpath, nm);
                 fprintf(gp, "set datafile separator ','; set key off; set grid; set logscale x 2\n");
                 fprintf(gp, "set title '%s: speed-up against classic vs error (%ux%u)'\n", nm, W, H);
                 fprintf(gp, "set xlabel 'time ratio classic / method (same run)'; set ylabel 'PSNR against ground truth (dB)'\n");
@@ -302,7 +308,7 @@ plots: /* speed-up against PSNR per scene */
                         outpath, nm);
             }
             pclose(gp);
-            fprintf(stderr, "plots next to %s: sdf_<scene>.png\n", outpath);
+            fprintf(stderr, "plots: %.*s_<scene>.png\n", stem, outpath);
         }
     } else {
         fprintf(stderr, "gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
