@@ -33,68 +33,7 @@ void xt_assert_fail(const char *expr, int line);
 #define XT_CTX_MEM (XT_W * XT_H * 68u + 64u)
 #endif
 
-#ifdef XT_SEMIHOSTING
-void xt_write(const void *buf, size_t n);
-static void xt_out(const char *s, size_t n) { xt_write(s, n); }
-#else
-#include <stdio.h>
-static void xt_out(const char *s, size_t n) { (void)fwrite(s, 1, n, stdout); }
-#endif
-
-/* ---- a small line buffer; every line is flushed whole ---- */
-static char xt_line[XT_W * 9 + 64];
-static size_t xt_len;
-
-static void xt_flush(void)
-{
-    if (xt_len > 0) xt_out(xt_line, xt_len);
-    xt_len = 0;
-}
-
-static void xt_putc(char c)
-{
-    if (xt_len == sizeof xt_line) xt_flush();
-    xt_line[xt_len++] = c;
-}
-
-static void xt_puts(const char *s)
-{
-    while (*s) xt_putc(*s++);
-}
-
-static void xt_putu(uint64_t v)
-{
-    char tmp[24];
-    int n = 0;
-    do { tmp[n++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u);
-    while (n > 0) xt_putc(tmp[--n]);
-}
-
-static void xt_puti(int32_t v)
-{
-    if (v < 0) { xt_putc('-'); xt_putu((uint64_t)(-(int64_t)v)); }
-    else xt_putu((uint64_t)v);
-}
-
-static void xt_puthex(uint32_t v, int digits)
-{
-    static const char hex[] = "0123456789abcdef";
-    int i;
-    for (i = digits - 1; i >= 0; i--) xt_putc(hex[(v >> (4 * i)) & 15u]);
-}
-
-static void xt_endl(void)
-{
-    xt_putc('\n');
-    xt_flush();
-}
-
-static uint32_t xt_float_bits(float f)
-{
-    union { float f; uint32_t u; } cv;
-    cv.f = f;
-    return cv.u;
-}
+#include "xt_out.h"
 
 /* ---- static memory ---- */
 static uint64_t xt_scene_mem[XT_SCENE_MEM / 8u];
