@@ -742,6 +742,13 @@ FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *ctx, float px, float p
                                         float ro[3], float rd[3]);
 FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], const float rd[3],
                                    float t_start, fovsdf_hit *hit, fovsdf_stats *stats);
+/* One sample, exactly as a pixel's: the camera ray through image point (px, py) marched from
+   the camera with the context's tracer (head-start methods: their finishing tracer), shaded as
+   fovsdf_render_rows shades a sample (hit refinement, normal, lights, shadows or sky). For
+   renderers that choose their own sample positions (fovlp.h's log-polar samples). t gets the
+   hit distance (t_max for a miss), material the hit's id (-1 for a miss); both may be NULL. */
+FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *ctx, float px, float py, float rgb[3],
+                                         float *t, int32_t *material, fovsdf_stats *stats);
 /* March one ray through a scene without a context, with explicit parameters (a ray tracer:
    classic, relaxed, autorelaxed or bv2018; per-image methods such as CONE are rejected). */
 FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *params,
@@ -3138,6 +3145,25 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
     acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
     fovsdf__put(c, o, x, y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), (uint32_t)(st->evals - e0),
                 known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
+}
+
+FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3], float *t,
+                                         int32_t *material, fovsdf_stats *stats)
+{
+    fovsdf__marcher m;
+    fovsdf__smp r;
+    fovsdf_stats local;
+    if (!c || !rgb) return FOV_ERR_NULL;
+    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
+    FOV_MEMSET(&local, 0, sizeof local);
+    fovsdf__marcher_from_ctx(c, &m, c->origin);
+    m.verify_start = 0; /* from the camera */
+    fovsdf__sample(c, &m, px, py, 0.0f, 0, NULL, 0.0f, 0.0f, &r, &local);
+    rgb[0] = r.col[0]; rgb[1] = r.col[1]; rgb[2] = r.col[2];
+    if (t) *t = r.hit ? r.t : c->t_max;
+    if (material) *material = r.mat;
+    if (stats) fovsdf_stats_add(stats, &local);
+    return FOV_OK;
 }
 
 FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x0, uint32_t y0,

@@ -1,8 +1,6 @@
 /* lp_sdf_shade.h - the glue between fovlp.h and fovsdf.h used by examples/lp_sdf.c and
-   bench/bench_lp.c: a fovlp_shade_fn that shades a screen point with fovsdf's public API
-   (fovsdf_camera_ray, fovsdf_trace, fovsdf_distance for the material, fovsdf_normal,
-   fovsdf_shade or fovsdf_sky), the same steps fovsdf_render_rows takes for one sample, and
-   the conversion of a fovsdf context's camera into a fovlp_camera for TAA reprojection.
+   bench/bench_lp.c: a fovlp_shade_fn that shades a screen point with fovsdf_shade_point
+   (the same sample fovsdf_render_rows takes), and the conversion of a fovsdf context's camera into a fovlp_camera for TAA reprojection.
    Include after fovsdf.h and fovlp.h. */
 #ifndef LP_SDF_SHADE_H
 #define LP_SDF_SHADE_H
@@ -12,29 +10,17 @@ typedef struct lpsdf_user {
     fovsdf_stats stats;   /* one per thread */
 } lpsdf_user;
 
-/* Linear RGB and the hit distance (t_max for a miss) of screen point (x, y). */
+/* Linear RGB and the hit distance (t_max for a miss) of screen point (x, y): one fovsdf
+   sample, shaded exactly as fovsdf_render_rows shades one (fovsdf_shade_point). */
 static void lpsdf_shade(float x, float y, float rgb[3], float *depth, void *user)
 {
     lpsdf_user *u = (lpsdf_user *)user;
-    const fovsdf_ctx *c = u->sdf;
-    float ro[3], rd[3];
-    fovsdf_hit h;
-    if (fovsdf_camera_ray(c, x, y, ro, rd) != FOV_OK || fovsdf_trace(c, ro, rd, 0.0f, &h, &u->stats) != FOV_OK) {
+    float t;
+    if (fovsdf_shade_point(u->sdf, x, y, rgb, &t, NULL, &u->stats) != FOV_OK) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
-        if (depth) *depth = c->t_max;
-        return;
+        t = u->sdf->t_max;
     }
-    if (h.kind != FOVSDF_MISS) {
-        float p[3], n[3], hn = 0.5f * c->pixel_angle * h.t;
-        int32_t mat = 0;
-        p[0] = ro[0] + rd[0] * h.t; p[1] = ro[1] + rd[1] * h.t; p[2] = ro[2] + rd[2] * h.t;
-        (void)fovsdf_distance(c, p, &mat, &u->stats);
-        fovsdf_normal(c, p, hn > 1e-4f ? hn : 1e-4f, n, &u->stats);
-        fovsdf_shade(c, p, n, rd, mat, rgb, &u->stats);
-    } else {
-        fovsdf_sky(c, rd, rgb);
-    }
-    if (depth) *depth = h.t;
+    if (depth) *depth = t;
 }
 
 static fovlp_camera lpsdf_camera(const fovsdf_ctx *c)

@@ -1184,6 +1184,45 @@ static void tiny_sizes(void)
           "%u of %u renders failed; %s", bad, runs, where);
 }
 
+/* fovsdf_shade_point at the pixel centres gives the 1-spp render's pixels bit for bit, for a
+   plain tracer and for a head-start method's finishing tracer; bad input is refused. */
+static void shade_point_tests(void)
+{
+    fovsdf_builtin bi;
+    void *mem = load_builtin(FOVSDF_SCENE_TEMPLE, 48, 32, &bi);
+    static float img[48 * 32 * 3], dep[48 * 32];
+    uint32_t m, x, y, same = 0, dsame = 0;
+    fov_gaze gz = { 24.0f, 16.0f };
+    fov_result e1, e2;
+    for (m = 0; m < 2; ++m) {
+        fovsdf_config c = fovsdf_config_default();
+        fovsdf_ctx k;
+        fovsdf_output o;
+        c.method = m ? FOVSDF_METHOD_BV2018 : FOVSDF_METHOD_CLASSIC;
+        fovsdf_init(&k, &c, &bi.scene, &bi.camera, gz, NULL, 0);
+        fovsdf_output_init(&o);
+        o.rgb = img; o.depth = dep;
+        fovsdf_render_rows(&k, 0, 32, &o, NULL);
+        for (y = 0; y < 32; ++y)
+            for (x = 0; x < 48; ++x) {
+                float rgb[3], t;
+                int32_t mat;
+                fovsdf_shade_point(&k, (float)x + 0.5f, (float)y + 0.5f, rgb, &t, &mat, NULL);
+                same += memcmp(rgb, img + 3 * (y * 48 + x), sizeof rgb) == 0;
+                dsame += t == dep[y * 48 + x];
+            }
+        if (m == 0) {
+            float rgb[3];
+            e1 = fovsdf_shade_point(&k, NAN, 1.0f, rgb, NULL, NULL, NULL);
+            e2 = fovsdf_shade_point(&k, 1.0f, 1.0f, NULL, NULL, NULL, NULL);
+        }
+    }
+    check(same == 2u * 48u * 32u && dsame == 2u * 48u * 32u && e1 == FOV_ERR_NOT_FINITE && e2 == FOV_ERR_NULL,
+          "shade_point_equals_render", "%u of %u colours and %u depths equal; errors %d %d", same, 2u * 48u * 32u, dsame,
+          (int)e1, (int)e2);
+    free(mem);
+}
+
 int main(void)
 {
     acuity_tests();
@@ -1205,6 +1244,7 @@ int main(void)
     fov_quality();
     mask_blur_tests();
     tiny_sizes();
+    shade_point_tests();
     bad_params();
     cone_vs_classic();
     cone_property();
