@@ -1,5 +1,6 @@
 # fov - foveated rendering single-header libraries.
-#   make demo    render the built-in scenes with every tracer into out/ and print the figures
+#   make demo    render the built-in scenes with every tracer into out/ and print the figures,
+#                then a fovlp frame sequence (out/lp/) and a fovpt image (out/pt_basic.ppm)
 #   make test    the whole test suite (closing line: "N passed, N failed")
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv;
@@ -47,8 +48,12 @@ $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 
 examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 
-demo: $(BUILD)/sdf_scenes
+demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	./$(BUILD)/sdf_scenes --out out
+	@mkdir -p out/lp
+	./$(BUILD)/lp_sdf --frames 8 --out out/lp
+	./$(BUILD)/pt_basic > out/pt_basic.ppm
+	@echo "images: out/ (fovsdf scenes per tracer), out/lp/ (fovlp frames), out/pt_basic.ppm (fovpt)"
 
 test:
 	@bash tests/run_all.sh
