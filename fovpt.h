@@ -1841,18 +1841,21 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
 {
     switch (p->type) {
     case FOVPT__TRI: {
-        float pv[3], s[3], q[3], det, inv, u, v, t;
+        /* Moller-Trumbore with the division deferred: u and v scaled by |det| are tested
+           against |det| (sign flips are exact), t = dot(e2, q) / det only for a hit inside */
+        float pv[3], s[3], q[3], det, ad, sg, u, v, t;
         fovpt__cross(r->d, p->c, pv);
         det = fovpt__dot(p->b, pv);
         if (!(fovpt__absf(det) > 1e-30f)) return tmax;
-        inv = 1.0f / det;
+        sg = det < 0.0f ? -1.0f : 1.0f;
+        ad = det * sg;
         fovpt__sub3(s, r->o, p->a);
-        u = fovpt__dot(s, pv) * inv;
-        if (!(u >= 0.0f && u <= 1.0f)) return tmax;
+        u = fovpt__dot(s, pv) * sg;
+        if (!(u >= 0.0f && u <= ad)) return tmax;
         fovpt__cross(s, p->b, q);
-        v = fovpt__dot(r->d, q) * inv;
-        if (!(v >= 0.0f && u + v <= 1.0f)) return tmax;
-        t = fovpt__dot(p->c, q) * inv;
+        v = fovpt__dot(r->d, q) * sg;
+        if (!(v >= 0.0f && u + v <= ad)) return tmax;
+        t = fovpt__dot(p->c, q) / det;
         return (t > tmin && t < tmax) ? t : tmax;
     }
     case FOVPT_SHAPE_SPHERE: {
@@ -1977,7 +1980,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         /* Moller-Trumbore on the leaf-ordered copy: the same operations on the
                            same floats as fovpt__isect, so the same hits as brute force */
                         const float *v0 = s->leaf_tris + 9u * (size_t)i, *e1 = v0 + 3, *e2 = v0 + 6;
-                        float pv[3], sv[3], q[3], det, inv, u, v;
+                        float pv[3], sv[3], q[3], det, ad, sg, u, v;
                         fovpt__cross(r->d, e2, pv);
                         det = fovpt__dot(e1, pv);
                         if (!(fovpt__absf(det) > 1e-30f)) {
@@ -1987,14 +1990,15 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                             t = fovpt__isect(p, r, tmin, *tmax);
                             if (!(t < *tmax)) continue;
                         } else {
-                            inv = 1.0f / det;
+                            sg = det < 0.0f ? -1.0f : 1.0f;
+                            ad = det * sg;
                             fovpt__sub3(sv, r->o, v0);
-                            u = fovpt__dot(sv, pv) * inv;
-                            if (!(u >= 0.0f && u <= 1.0f)) continue;
+                            u = fovpt__dot(sv, pv) * sg;
+                            if (!(u >= 0.0f && u <= ad)) continue;
                             fovpt__cross(sv, e1, q);
-                            v = fovpt__dot(r->d, q) * inv;
-                            if (!(v >= 0.0f && u + v <= 1.0f)) continue;
-                            t = fovpt__dot(e2, q) * inv;
+                            v = fovpt__dot(r->d, q) * sg;
+                            if (!(v >= 0.0f && u + v <= ad)) continue;
+                            t = fovpt__dot(e2, q) / det;
                             if (!(t > tmin && t < *tmax)) continue;
                         }
                         *tmax = t; best = s->order[i];
