@@ -164,8 +164,8 @@ MEMORY
    (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 68 bytes per pixel, plus 32 per pixel and frame
    of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
    caller buffers with an explicit row stride. Stack use per entry point: below 2 KiB (BVH
-   build: the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal: 4 bytes per
-   depth level; Whitted: a branch stack of 2 * FOVPT_MAX_WHITTED entries).
+   build: the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal: 8 bytes per
+   depth level, node and entry distance; Whitted: a branch stack of 2 * FOVPT_MAX_WHITTED entries).
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
@@ -203,6 +203,9 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   unreleased         faster BVH traversal (sign-picked slabs, siblings tested together, far
+                      child pushed with its entry distance, leaf-ordered triangles, deferred
+                      division): 0.39x -> 0.45x of Embree's single-thread rays/s; same hits.
    0.1.0 (2026-11-23) first release: geometry, BVH, path and Whitted tracers, UNIFORM method.
 */
 
