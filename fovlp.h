@@ -1601,9 +1601,9 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 
 /* ---- reconstruction ----------------------------------------------------------------------- */
 /* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
-   out. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
+   out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
 FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
-                                   float uc, float vc, float rgb[3], float *depth)
+                                   float uc, float vc, float edge, float rgb[3], float *depth)
 {
     const fovlp_geometry *g = &ctx->geo;
     float su = uc - ctx->jit_u, sv = vc - ctx->jit_v, fu, fv, wsum = 0.0f, wbest = -1.0f;
@@ -1613,11 +1613,11 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
     float in_r = fovlp__minf(fovlp__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
                              fovlp__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
-    int all_on;
+    int all_on, clamped = 0;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     *depth = 0.0f;
-    if (su < 0.0f) su = 0.0f;                          /* inside the first column */
-    if (su > (float)g->lp_w - 1.0f) su = (float)g->lp_w - 1.0f;
+    if (su < 0.0f) { su = 0.0f; clamped = 1; }         /* inside the first column */
+    if (su > (float)g->lp_w - 1.0f) { su = (float)g->lp_w - 1.0f; clamped = 1; }
     /* floor by truncation: su in [0, lp_w - 1], sv in (-1, lp_h) */
     i0 = (int32_t)su;
     j0 = (int32_t)sv;
@@ -1626,9 +1626,15 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
     fl_v = (float)j0;
     fu = su - fl_u;
     fv = sv - fl_v;
-    /* all four taps shaded for sure when their ring lies inside the screen (the circle of
-       radius rho[i0 + 1] around the gaze within the screen, with a margin): skip the tests */
-    all_on = i0 + 1 < (int32_t)g->lp_cols && ctx->rho[i0 + 1] < in_r;
+    /* all four taps shaded for sure (skip their tests) when their ring lies inside the screen
+       (the circle of radius rho[i0 + 1] around the gaze within it, with a margin), or when
+       the pixel is farther from the screen border than the taps can be from the pixel: their
+       radii bracket the pixel's (su not clamped), so a tap is within the ring step plus one
+       angle step at radius rho[i0 + 1] of it (with 1 % and 0.01 px to spare) */
+    all_on = i0 + 1 < (int32_t)g->lp_cols &&
+             (ctx->rho[i0 + 1] < in_r ||
+              (clamped == 0 && ((ctx->rho[i0 + 1] - ctx->rho[i0]) +
+                                ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge));
     for (dj = 0; dj < 2; ++dj) {
         int32_t j = j0 + dj;
         float wv = dj ? fv : 1.0f - fv;
@@ -1680,7 +1686,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     const float *cen = srgb + 3u * (size_t)g->centre_slot;
     float cdep = sdep ? sdep[g->centre_slot] : 0.0f;
     float dx = (float)px + 0.5f - ctx->gaze.x, dy = (float)py + 0.5f - ctx->gaze.y;
-    float uc, vc, r, r2;
+    float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
         size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_side + (px - g->disc_x0);
@@ -1690,7 +1696,9 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     }
     r2 = dx * dx + dy * dy;
     fovlp__to_lp_fast(ctx, dx, dy, r2, &uc, &vc);
-    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, rgb, depth) > 0.0f)) {
+    edge = fovlp__minf(fovlp__minf((float)px + 0.5f, (float)g->width - (float)px - 0.5f),
+                       fovlp__minf((float)py + 0.5f, (float)g->height - (float)py - 0.5f));
+    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, edge, rgb, depth) > 0.0f)) {
         rgb[0] = cen[0]; rgb[1] = cen[1]; rgb[2] = cen[2];
         *depth = cdep;
         return;
