@@ -54,7 +54,9 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       at (i + ou, j + ov); (ou, ov) = (0.5, 0.5), or with TAA the scaled Halton (2, 3) point
       of the frame (eq. 3.11). One more sample sits on the gaze point itself (the centre).
    7. Reconstruction, per screen pixel (fovlp__pixel): the disc sample inside the disc;
-      elsewhere bilinear interpolation of the LP samples at the pixel's (u, v) (eq. 3.8), at
+      elsewhere bilinear interpolation of the LP samples at the pixel's (u, v) (eq. 3.8; the
+      angle from a polynomial atan, fovlp__to_lp_fast, within 2e-6 h of atan2; the on-screen
+      test of the four taps skipped when their ring lies inside the screen), at
       the positions actually shaded, with the angle wrapping (v = h is v = 0: no seam), taps
       whose sample was not shaded left out (weights renormalised; none left: the nearest
       shaded sample inwards). Between the disc edge and the innermost LP ring: linear along
@@ -1339,6 +1341,33 @@ FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u
     if (*v >= (float)g->lp_h) *v -= (float)g->lp_h;
 }
 
+/* The reconstruction's mapping (step 7; fovlp__to_lp stays the reference): the same u, with
+   the angle from a polynomial atan instead of the libm / hook atan2: reduced to |z| <= tan(pi/8)
+   by the octant and atan z = z - z^3/3 + ... + z^13/13, truncation error below 2e-7 rad
+   (z^15/15), about 4 float ulps of 2 pi. On x86-64 glibc this costs about a quarter of atan2f.
+   With alpha = 1 there is no pow; dx, dy are finite (the gaze is). Tolerance (tested in
+   tests/test_fovlp.c against fovlp_screen_to_lp): |du| <= 1e-4 (u + 1), |dv| <= 2e-6 h (v
+   texels, wrapped). */
+FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, float r2, float *u, float *v)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    float ax = dx < 0.0f ? -dx : dx, ay = dy < 0.0f ? -dy : dy, z, z2, off = 0.0f, a, q;
+    int swap = ay > ax;
+    z = swap ? (ax > 0.0f ? ax / ay : 0.0f) : (ay > 0.0f ? ay / ax : 0.0f);   /* in [0, 1] */
+    if (z > 0.41421356f) { off = 0.78539816f; z = (z - 1.0f) / (z + 1.0f); }
+    z2 = z * z;
+    a = off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
+              z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
+    if (swap) a = 1.57079633f - a;
+    if (dx < 0.0f) a = 3.14159265f - a;
+    if (dy < 0.0f) a = FOVLP__TWO_PI - a;                  /* [0, 2 pi) */
+    q = FOVLP__LOG(fovlp__maxf(FOVLP__SQRT(r2), 1.0f)) / g->L;
+    *u = fovlp__pow(q, ctx->cfg.alpha) * g->w_c - g->u_g;
+    *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
+    if (*v >= (float)g->lp_h) *v -= (float)g->lp_h;
+    if (*v < 0.0f) *v = 0.0f;
+}
+
 FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u, float *v)
 {
     if (!ctx || !u || !v) return FOV_ERR_NULL;
@@ -1572,24 +1601,40 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 
 /* ---- reconstruction ----------------------------------------------------------------------- */
 /* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
-   out. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
+   out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
 FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
-                                   float uc, float vc, float rgb[3], float *depth)
+                                   float uc, float vc, float edge, float rgb[3], float *depth)
 {
     const fovlp_geometry *g = &ctx->geo;
     float su = uc - ctx->jit_u, sv = vc - ctx->jit_v, fu, fv, wsum = 0.0f, wbest = -1.0f;
     float fl_u, fl_v;
+    /* radius of the largest circle around the gaze inside the screen, less a margin for the
+       rounding of gaze + rho cos (the exact test would accept every tap inside it) */
+    float in_r = fovlp__minf(fovlp__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
+                             fovlp__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
+    int all_on, clamped = 0;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     *depth = 0.0f;
-    if (su < 0.0f) su = 0.0f;                          /* inside the first column */
-    if (su > (float)g->lp_w - 1.0f) su = (float)g->lp_w - 1.0f;
-    fl_u = FOVLP__FLOOR(su);
-    fl_v = FOVLP__FLOOR(sv);
+    if (su < 0.0f) { su = 0.0f; clamped = 1; }         /* inside the first column */
+    if (su > (float)g->lp_w - 1.0f) { su = (float)g->lp_w - 1.0f; clamped = 1; }
+    /* floor by truncation: su in [0, lp_w - 1], sv in (-1, lp_h) */
+    i0 = (int32_t)su;
+    j0 = (int32_t)sv;
+    if ((float)j0 > sv) --j0;
+    fl_u = (float)i0;
+    fl_v = (float)j0;
     fu = su - fl_u;
     fv = sv - fl_v;
-    i0 = (int32_t)fl_u;
-    j0 = (int32_t)fl_v;
+    /* all four taps shaded for sure (skip their tests) when their ring lies inside the screen
+       (the circle of radius rho[i0 + 1] around the gaze within it, with a margin), or when
+       the pixel is farther from the screen border than the taps can be from the pixel: their
+       radii bracket the pixel's (su not clamped), so a tap is within the ring step plus one
+       angle step at radius rho[i0 + 1] of it (with 1 % and 0.01 px to spare) */
+    all_on = i0 + 1 < (int32_t)g->lp_cols &&
+             (ctx->rho[i0 + 1] < in_r ||
+              (clamped == 0 && ((ctx->rho[i0 + 1] - ctx->rho[i0]) +
+                                ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge));
     for (dj = 0; dj < 2; ++dj) {
         int32_t j = j0 + dj;
         float wv = dj ? fv : 1.0f - fv;
@@ -1601,7 +1646,7 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
             float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y;
             size_t slot;
             if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
-            if (!fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
+            if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
             slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
             rgb[0] += w * srgb[3 * slot];
             rgb[1] += w * srgb[3 * slot + 1];
@@ -1641,7 +1686,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     const float *cen = srgb + 3u * (size_t)g->centre_slot;
     float cdep = sdep ? sdep[g->centre_slot] : 0.0f;
     float dx = (float)px + 0.5f - ctx->gaze.x, dy = (float)py + 0.5f - ctx->gaze.y;
-    float uc, vc, r;
+    float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
         size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_side + (px - g->disc_x0);
@@ -1649,13 +1694,17 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
         *depth = sdep ? sdep[slot] : 0.0f;
         return;
     }
-    fovlp__to_lp(ctx, dx, dy, &uc, &vc);
-    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, rgb, depth) > 0.0f)) {
+    r2 = dx * dx + dy * dy;
+    fovlp__to_lp_fast(ctx, dx, dy, r2, &uc, &vc);
+    edge = fovlp__minf(fovlp__minf((float)px + 0.5f, (float)g->width - (float)px - 0.5f),
+                       fovlp__minf((float)py + 0.5f, (float)g->height - (float)py - 0.5f));
+    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, edge, rgb, depth) > 0.0f)) {
         rgb[0] = cen[0]; rgb[1] = cen[1]; rgb[2] = cen[2];
         *depth = cdep;
         return;
     }
-    r = FOVLP__SQRT(dx * dx + dy * dy);
+    if (!(r2 < ctx->rho[0] * ctx->rho[0] * 1.0001f)) return;  /* beyond the innermost ring */
+    r = FOVLP__SQRT(r2);
     /* between the disc and the innermost LP ring: interpolate along the radius between the
        nearest disc pixel inwards and the ring (no step at the disc edge) */
     if (g->r_g > 0.0f && r < ctx->rho[0] && r > 0.0f) {

@@ -323,6 +323,62 @@ static void test_round_trip(void)
         }
 }
 
+/* the reconstruction's own mapping (fovlp__to_lp_fast: polynomial atan, no atan2 call)
+   agrees with the reference fovlp_screen_to_lp within the tolerance stated in the header:
+   |du| <= 1e-4 (|u| + 1), |dv| <= 2e-6 h (wrapped); pixel centres on the axes through the
+   gaze included. The comparator rejects an error ten times the tolerance (it can fail). */
+static int fast_map_ok(float du, float dv, float u, float h)
+{
+    dv = fabsf(dv);
+    if (dv > 0.5f * h) dv = h - dv;
+    return fabsf(du) <= 1e-4f * (fabsf(u) + 1.0f) && dv <= 2e-6f * h;
+}
+static void test_fast_mapping(void)
+{
+    static const uint32_t sizes[3][2] = { { 321, 181 }, { 1920, 1080 }, { 7680, 4320 } };
+    int s, p, g;
+    for (s = 0; s < 3; ++s)
+        for (p = 0; p < 4; ++p)
+            for (g = 0; g < 2; ++g) {
+                fovlp_config c = fovlp_config_preset((uint32_t)p, sizes[s][0], sizes[s][1]);
+                lp_env e;
+                float worst_u = 0.0f, worst_v = 0.0f, h;
+                int k, bad = 0;
+                char name[160];
+                fov_gaze gz;
+                env_init(&e, &c);
+                /* a gaze on a pixel centre (pixels on the axes: dx or dy exactly 0), and off it */
+                gz.x = g ? 0.37f * (float)c.width : (float)(c.width / 2u) + 0.5f;
+                gz.y = g ? 0.61f * (float)c.height : (float)(c.height / 3u) + 0.5f;
+                fovlp_begin_frame(&e.ctx, gz, NULL);
+                h = (float)e.ctx.geo.lp_h;
+                for (k = 0; k < 6000; ++k) {
+                    uint32_t px = (uint32_t)(frand() * (float)c.width) % c.width;
+                    uint32_t py = (uint32_t)(frand() * (float)c.height) % c.height;
+                    float x, y, dx, dy, u = 0, v = 0, uf = 0, vf = 0, dv;
+                    if (k % 4 == 0) px = (uint32_t)gz.x;        /* the vertical axis when g = 0 */
+                    if (k % 4 == 1) py = (uint32_t)gz.y;        /* the horizontal axis */
+                    x = (float)px + 0.5f; y = (float)py + 0.5f;
+                    dx = x - e.ctx.gaze.x; dy = y - e.ctx.gaze.y;
+                    fovlp_screen_to_lp(&e.ctx, x, y, &u, &v);
+                    fovlp__to_lp_fast(&e.ctx, dx, dy, dx * dx + dy * dy, &uf, &vf);
+                    dv = fabsf(vf - v);
+                    if (dv > 0.5f * h) dv = h - dv;
+                    worst_u = fmaxf(worst_u, fabsf(uf - u) / (fabsf(u) + 1.0f));
+                    worst_v = fmaxf(worst_v, dv / h);
+                    bad += !fast_map_ok(uf - u, vf - v, u, h) || !(vf >= 0.0f && vf < h);
+                }
+                snprintf(name, sizeof name, "fast mapping: %s %ux%u gaze %s matches screen_to_lp (|du| <= 1e-4 (u+1), |dv| <= 2e-6 h)",
+                         fovlp_preset_name((uint32_t)p), c.width, c.height, g ? "off-centre" : "on a pixel centre");
+                check(bad == 0, name, "%d outside; worst du/(u+1) %g, dv/h %g", bad, (double)worst_u, (double)worst_v);
+                if (s == 0 && p == 0 && g == 0)
+                    check(!fast_map_ok(0.0f, 2e-5f * h, 1.0f, h) && !fast_map_ok(1e-3f * 2.0f, 0.0f, 1.0f, h) &&
+                              fast_map_ok(0.0f, h - 1e-6f * h, 1.0f, h),
+                          "fast mapping: the comparator rejects 10x the tolerance and wraps v", "h %g", (double)h);
+                env_free(&e);
+            }
+}
+
 /* the angle convention: atan2 wrapped to [0, 2 pi); v grows from +x towards +y */
 static void test_angles(void)
 {
@@ -814,6 +870,7 @@ int main(void)
     test_angles();
     test_density();
     test_aspect_match();
+    test_fast_mapping();
     test_ray_counts();
     test_sampling();
     test_reconstruction();
