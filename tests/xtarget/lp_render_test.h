@@ -95,21 +95,7 @@ done:
     xt_puts("status "); xt_puti((int32_t)r); xt_putc(' '); xt_puts(step); xt_endl();
     xt_puts("stats evals "); xt_putu(shaded);
     xt_puts(" primary 0 rays 0 hits 0 exhausted 0"); xt_endl();
-    xt_puts("rgb"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W * 3; x++) xt_puthex(xt_rgb[y * XT_W * 3 + x], 2);
-        xt_endl();
-    }
-    xt_puts("hit"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W; x++) xt_putc(xt_hit[y * XT_W + x] ? '1' : '0');
-        xt_endl();
-    }
-    xt_puts("depth"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W; x++) xt_puthex(xt_float_bits(xt_depth[y * XT_W + x]), 8);
-        xt_endl();
-    }
+    xt_dump_image(xt_rgb, xt_hit, xt_depth, XT_W, XT_H);
     xt_puts("end"); xt_endl();
     return (int)r;
 }

@@ -35,6 +35,7 @@ void xt_assert_fail(const char *expr, int line);
 #define XT_ARENA 24576u
 #define XT_STACK_PAINT 16384u
 
+#define XT_NO_DUMP_IMAGE
 #include "xt_out.h"
 
 static uint64_t xt_build_mem[65536 / 8];  /* start-up only: the builtin's build memory */
@@ -82,7 +83,7 @@ typedef struct xt_state {
 /* One pass over the frame, band by band; section 0: rgb, 1: hit, 2: depth (printed). */
 static fov_result xt_pass(const xt_state *s, int section, fovsdf_stats *st)
 {
-    uint32_t y0, y, x;
+    uint32_t y0, y;
     for (y0 = 0; y0 < XT_H; y0 += XT_BAND) {
         fovsdf_output o;
         uint32_t y1 = y0 + XT_BAND < XT_H ? y0 + XT_BAND : XT_H;
@@ -93,13 +94,9 @@ static fov_result xt_pass(const xt_state *s, int section, fovsdf_stats *st)
         r = fovsdf_render_rows(s->ctx, y0, y1, &o, st);
         if (r != FOV_OK) return r;
         for (y = 0; y < y1 - y0; y++) {
-            if (section == 0)
-                for (x = 0; x < XT_W * 3; x++) xt_puthex(s->rgb[y * XT_W * 3 + x], 2);
-            else if (section == 1)
-                for (x = 0; x < XT_W; x++) xt_putc(s->hit[y * XT_W + x] ? '1' : '0');
-            else
-                for (x = 0; x < XT_W; x++) xt_puthex(xt_float_bits(s->depth[y * XT_W + x]), 8);
-            xt_endl();
+            if (section == 0) xt_row_rgb(s->rgb + y * XT_W * 3, XT_W);
+            else if (section == 1) xt_row_hit(s->hit + y * XT_W, XT_W);
+            else xt_row_depth(s->depth + y * XT_W, XT_W);
         }
     }
     return FOV_OK;

@@ -72,7 +72,7 @@ static int xt_scene(uint32_t id)
     size_t bytes = 0, ctx_bytes = 0;
     fov_result r = FOV_OK;
     const char *step = "ok";
-    uint32_t x, y;
+    uint32_t y;
 
     for (y = 0; y < XT_W * XT_H; y++) { xt_hit[y] = 0; xt_depth[y] = 0.0f; }
     for (y = 0; y < XT_W * XT_H * 3; y++) xt_rgb[y] = 0;
@@ -126,21 +126,7 @@ done:
     xt_puts(" hits "); xt_putu(st.hits);
     xt_puts(" exhausted "); xt_putu(st.exhausted);
     xt_endl();
-    xt_puts("rgb"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W * 3; x++) xt_puthex(xt_rgb[y * XT_W * 3 + x], 2);
-        xt_endl();
-    }
-    xt_puts("hit"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W; x++) xt_putc(xt_hit[y * XT_W + x] ? '1' : '0');
-        xt_endl();
-    }
-    xt_puts("depth"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W; x++) xt_puthex(xt_float_bits(xt_depth[y * XT_W + x]), 8);
-        xt_endl();
-    }
+    xt_dump_image(xt_rgb, xt_hit, xt_depth, XT_W, XT_H);
     xt_puts("end"); xt_endl();
     return (int)r;
 }

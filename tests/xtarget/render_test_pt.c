@@ -126,11 +126,7 @@ done:
     xt_puts(" hits "); xt_putu(st.bounce_rays);
     xt_puts(" exhausted "); xt_putu(st.bad_samples);
     xt_endl();
-    xt_puts("rgb"); xt_endl();
-    for (y = 0; y < XT_H; y++) {
-        for (x = 0; x < XT_W * 3; x++) xt_puthex(xt_rgb[y * XT_W * 3 + x], 2);
-        xt_endl();
-    }
+    xt_dump_image(xt_rgb, NULL, NULL, XT_W, XT_H);
     /* the BVH on this target: the closest hit of every pixel-centre ray */
     xt_puts("hit"); xt_endl();
     for (y = 0; y < XT_H; y++) {

@@ -66,4 +66,40 @@ static uint32_t xt_float_bits(float f)
     return cv.u;
 }
 
+/* One image row of the dump format (render_test.c): hex sRGB bytes, 0/1 hits, hex float bits. */
+static void xt_row_rgb(const uint8_t *row, uint32_t w)
+{
+    uint32_t x;
+    for (x = 0; x < w * 3u; x++) xt_puthex(row[x], 2);
+    xt_endl();
+}
+static void xt_row_hit(const uint8_t *row, uint32_t w)
+{
+    uint32_t x;
+    for (x = 0; x < w; x++) xt_putc(row[x] ? '1' : '0');
+    xt_endl();
+}
+static void xt_row_depth(const float *row, uint32_t w)
+{
+    uint32_t x;
+    for (x = 0; x < w; x++) xt_puthex(xt_float_bits(row[x]), 8);
+    xt_endl();
+}
+#ifndef XT_NO_DUMP_IMAGE /* a program that streams rows defines it (mem_test.c) */
+/* The rgb, hit and depth sections of a whole w x h image (hit or depth NULL: section left out). */
+static void xt_dump_image(const uint8_t *rgb, const uint8_t *hit, const float *depth, uint32_t w, uint32_t h)
+{
+    uint32_t y;
+    xt_puts("rgb"); xt_endl();
+    for (y = 0; y < h; y++) xt_row_rgb(rgb + (size_t)y * w * 3u, w);
+    if (hit) {
+        xt_puts("hit"); xt_endl();
+        for (y = 0; y < h; y++) xt_row_hit(hit + (size_t)y * w, w);
+    }
+    if (depth) {
+        xt_puts("depth"); xt_endl();
+        for (y = 0; y < h; y++) xt_row_depth(depth + (size_t)y * w, w);
+    }
+}
+#endif
 #endif
