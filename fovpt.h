@@ -25,7 +25,14 @@ QUICK START
       fovpt_output out;  fovpt_output_init(&out);  out.rgb8 = pixels;   // 320*240*3 bytes
       fovpt_render(&ctx, 0, &out, NULL);              // frame 0; or trace/resolve by rows
 
-   See examples/pt_basic.c (planned, see STATUS).
+   See examples/pt_basic.c for a complete program.
+
+   Stereo, per-eye gaze: one context per eye (both seeds render the eyes independently).
+      fovpt_camera eye[2];  fovpt_camera_eyes(&head, 0.064f, eye);   // ipd in scene units
+      fov_gaze g[2];        fovpt_gaze_from_point(&eye[0], gaze_target, &g[0]);   // the 3D
+                            fovpt_gaze_from_point(&eye[1], gaze_target, &g[1]);   // vergence point
+      fovpt_init(&ctx[0], &cfg, &scene, &eye[0], g[0], mem0, cb);   // and eye[1], g[1]
+   Each eye's eccentricity is then measured from its own gaze point with its own camera.
 
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
@@ -49,12 +56,13 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
       smoothing (seed 004 steps 2 and 4); 8-bit sRGB or float output.
 
-STATUS (v0.1.0; the API below is complete and stable, some methods are not built yet)
+STATUS (v0.1.0 + unreleased changes below)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
-   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), temporal reuse and
-   smoothing (SELECTIVE and JIN only, as in seed 004; FOV_ERR_UNSUPPORTED with the others).
+   SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), per-eye cameras and gaze,
+   temporal reuse and smoothing (SELECTIVE and JIN only, as in seed 004;
+   FOV_ERR_UNSUPPORTED with the others).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (seed 002 Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (Eq. 3.13)
@@ -203,7 +211,10 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   unreleased         faster BVH traversal (sign-picked slabs, siblings tested together, far
+   unreleased         per-eye gaze: fovpt_gaze_from_point (a 3D gaze target or direction
+                      to an eye's gaze point), fovpt_camera_eyes (two eye cameras from a
+                      head camera and the interpupillary distance);
+                      faster BVH traversal (sign-picked slabs, siblings tested together, far
                       child pushed with its entry distance, leaf-ordered triangles, deferred
                       division; SAH defaults 16 bins, leaf 2, traversal cost 1.5):
                       0.38x -> 0.49x of Embree's single-thread rays/s; same hits.
@@ -607,6 +618,20 @@ FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t hei
 /* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5). */
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3],
                                       float dir[3]);
+/* Per-eye gaze. The image point of world point p seen by this camera (pixels, continuous;
+   it may lie off-screen): the gaze to pass to fovpt_init / fovpt_set_view when an eye
+   tracker gives a 3D gaze target (the vergence point). For a gaze direction d of this eye,
+   pass p = cam->pos + d. FOV_ERR_INVALID_ARG when p is not in front of the camera (its depth
+   along the view axis <= 1e-6 of its distance) or projects beyond +-2^24 pixels. */
+FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3],
+                                           fov_gaze *gaze);
+/* Stereo: the two eye cameras of a head camera, eyes[0] left and eyes[1] right: positions
+   head->pos -/+ ipd/2 along the head's image-right axis, view axes parallel (targets moved
+   alike), the same up, size, field of view and tangents (set each eye's asymmetric tangents
+   afterwards if the headset gives them, e.g. OpenVR GetProjectionRaw). ipd in scene units,
+   finite, >= 0. Both seeds render the eyes independently: one context per eye, each with
+   its own gaze (fovpt_gaze_from_point of the same 3D target). */
+FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovpt_camera eyes[2]);
 
 FOVPT_API void fovpt_material_init(fovpt_material *m);   /* Lambert, albedo 0.8, ior 1.5 */
 FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, float r,
@@ -1294,6 +1319,50 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
     if (e != FOV_OK) return e;
     fovpt__copy3(org, cam->pos);
     fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir);
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3], fov_gaze *gaze)
+{
+    float r[3], u[3], f[3], t4[4], d[3], z, sx, sy, x, y;
+    fov_result e;
+    if (!cam || !p || !gaze) return FOV_ERR_NULL;
+    if (!fovpt__finite3(p)) return FOV_ERR_NOT_FINITE;
+    e = fovpt__camera_setup(cam, r, u, f, t4);
+    if (e != FOV_OK) return e;
+    /* invert fovpt__primary: direction f + sx r + sy u through (x, y) */
+    fovpt__sub3(d, p, cam->pos);
+    z = fovpt__dot(d, f);
+    if (!(z > 1e-6f * fovpt__len(d))) return FOV_ERR_INVALID_ARG;
+    sx = fovpt__dot(d, r) / z;
+    sy = fovpt__dot(d, u) / z;
+    x = (float)cam->width * ((sx - t4[0]) / (t4[1] - t4[0]));
+    y = (float)cam->height * ((sy - t4[2]) / (t4[3] - t4[2]));
+    if (!(fovpt__absf(x) <= 16777216.0f) || !(fovpt__absf(y) <= 16777216.0f)) return FOV_ERR_INVALID_ARG;
+    gaze->x = x;
+    gaze->y = y;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovpt_camera eyes[2])
+{
+    float r[3], u[3], f[3], t4[4];
+    fov_result e;
+    int k, i;
+    if (!head || !eyes) return FOV_ERR_NULL;
+    if (!fovpt__finite(ipd)) return FOV_ERR_NOT_FINITE;
+    if (!(ipd >= 0.0f)) return FOV_ERR_INVALID_ARG;
+    e = fovpt__camera_setup(head, r, u, f, t4);
+    if (e != FOV_OK) return e;
+    for (i = 0; i < 2; ++i) {
+        float s = (i == 0 ? -0.5f : 0.5f) * ipd;
+        eyes[i] = *head;
+        for (k = 0; k < 3; ++k) {
+            eyes[i].pos[k] = head->pos[k] + s * r[k];
+            eyes[i].target[k] = head->target[k] + s * r[k];
+        }
+        if (!fovpt__finite3(eyes[i].pos) || !fovpt__finite3(eyes[i].target)) return FOV_ERR_NOT_FINITE;
+    }
     return FOV_OK;
 }
 

@@ -210,6 +210,101 @@ static void test_ecc(void)
     check(worst <= 0.0f && same, "ecc_deg / ecc_ppd identical to fovsdf's", "max |diff| %g deg", (double)worst);
 }
 
+/* Per-eye gaze: fovpt_gaze_from_point is the inverse of fovpt_camera_ray (round trip on
+   random cameras, symmetric and asymmetric), analytic values on the default camera,
+   fovpt_camera_eyes' geometry and vergence, bad input. */
+static void test_eyes(void)
+{
+    fovpt_camera c, e[2];
+    fov_gaze g, gl, gr;
+    float p[3], o[3], dir[3];
+    double worst = 0.0;
+    int i, k, codes = 1;
+    for (i = 0; i < 2000; ++i) {
+        double d[3], len = 0.0, cosang = 0.0;
+        fovpt_camera_init(&c, 1u + (uint32_t)(urand() * 1500.0), 1u + (uint32_t)(urand() * 1500.0));
+        for (k = 0; k < 3; ++k) { c.pos[k] = frand(-5.0f, 5.0f); c.target[k] = frand(-5.0f, 5.0f); c.up[k] = frand(-1.0f, 1.0f); }
+        c.fov_y_deg = frand(5.0f, 150.0f);
+        if (i % 2) { c.tan_left = frand(0.1f, 2.0f); c.tan_right = frand(0.1f, 2.0f); c.tan_bottom = frand(0.1f, 2.0f); c.tan_top = frand(0.1f, 2.0f); }
+        if (fovpt_camera_ray(&c, 0.5f, 0.5f, o, dir) != FOV_OK) continue;
+        /* a point in front: along the ray through a random image point, at a random depth */
+        fovpt_camera_ray(&c, frand(-0.5f, 1.5f) * (float)c.width, frand(-0.5f, 1.5f) * (float)c.height, o, dir);
+        { float t = frand(0.1f, 50.0f); for (k = 0; k < 3; ++k) p[k] = o[k] + t * dir[k]; }
+        if (fovpt_gaze_from_point(&c, p, &g) != FOV_OK) { codes = 0; continue; }
+        fovpt_camera_ray(&c, g.x, g.y, o, dir);
+        for (k = 0; k < 3; ++k) { d[k] = (double)p[k] - (double)c.pos[k]; len += d[k] * d[k]; }
+        {   /* 1 - cos of the angle, both directions normalised in double */
+            double ld = sqrt((double)dir[0] * (double)dir[0] + (double)dir[1] * (double)dir[1] + (double)dir[2] * (double)dir[2]);
+            for (k = 0; k < 3; ++k) cosang += d[k] / sqrt(len) * ((double)dir[k] / ld);
+        }
+        if (1.0 - cosang > worst) worst = 1.0 - cosang;
+    }
+    check(codes && worst < 1e-9, "gaze_from_point: the camera ray through the gaze passes through the point (2000 random cameras)",
+          "codes %d, max 1 - cos %g", codes, worst);
+    /* default camera: 320x240, 60 degrees, at the origin looking along +z */
+    fovpt_camera_init(&c, 320, 240);
+    p[0] = 0.0f; p[1] = 5.0f * (float)tan(30.0 * 3.14159265358979323846 / 180.0); p[2] = 5.0f;
+    fovpt_gaze_from_point(&c, p, &g);
+    check(fabsf(g.x - 160.0f) < 1e-3f && fabsf(g.y) < 1e-3f, "gaze_from_point: a point on the upper edge of the view -> (160, 0)",
+          "(%g, %g)", (double)g.x, (double)g.y);
+    p[1] = 0.0f;
+    fovpt_gaze_from_point(&c, p, &g);
+    check(fabsf(g.x - 160.0f) < 1e-3f && fabsf(g.y - 120.0f) < 1e-3f, "gaze_from_point: a point on the axis -> the image centre",
+          "(%g, %g)", (double)g.x, (double)g.y);
+    p[2] = -1.0f;
+    check(fovpt_gaze_from_point(&c, p, &g) == FOV_ERR_INVALID_ARG, "gaze_from_point: a point behind the camera", " ");
+    p[2] = 0.0f;
+    check(fovpt_gaze_from_point(&c, p, &g) == FOV_ERR_INVALID_ARG, "gaze_from_point: the camera position", " ");
+    p[0] = 1.0f; p[2] = 1e-9f;
+    check(fovpt_gaze_from_point(&c, p, &g) == FOV_ERR_INVALID_ARG, "gaze_from_point: a point in the camera plane", " ");
+    p[0] = NAN;
+    check(fovpt_gaze_from_point(&c, p, &g) == FOV_ERR_NOT_FINITE, "gaze_from_point: NaN point", " ");
+    p[0] = 0.0f; p[2] = 1.0f;
+    check(fovpt_gaze_from_point(NULL, p, &g) == FOV_ERR_NULL && fovpt_gaze_from_point(&c, NULL, &g) == FOV_ERR_NULL &&
+              fovpt_gaze_from_point(&c, p, NULL) == FOV_ERR_NULL, "gaze_from_point: NULL", " ");
+    c.width = 0;
+    check(fovpt_gaze_from_point(&c, p, &g) == FOV_ERR_INVALID_ARG, "gaze_from_point: bad camera", " ");
+    /* eyes: 64 mm apart, vergence on a point 2 units ahead of the head */
+    fovpt_camera_init(&c, 320, 240);
+    c.pos[0] = 1.0f; c.pos[1] = 2.0f; c.pos[2] = 3.0f; c.target[0] = 1.0f; c.target[1] = 2.0f; c.target[2] = 4.0f;
+    check(fovpt_camera_eyes(&c, 0.064f, e) == FOV_OK, "camera_eyes", " ");
+    {
+        double sep = 0.0, mid = 0.0, axis = 0.0, xw;
+        for (k = 0; k < 3; ++k) {
+            double dd = (double)e[1].pos[k] - (double)e[0].pos[k];
+            sep += dd * dd;
+            mid = fmax(mid, fabs(0.5 * ((double)e[0].pos[k] + (double)e[1].pos[k]) - (double)c.pos[k]));
+            axis = fmax(axis, fabs(((double)e[0].target[k] - (double)e[0].pos[k]) - ((double)c.target[k] - (double)c.pos[k])));
+            axis = fmax(axis, fabs(((double)e[1].target[k] - (double)e[1].pos[k]) - ((double)c.target[k] - (double)c.pos[k])));
+        }
+        check(fabs(sqrt(sep) - 0.064) < 1e-6 && mid < 1e-6 && axis < 1e-6 && fabs((double)e[1].pos[1] - 2.0) < 1e-6 &&
+                  fabs((double)e[1].pos[2] - 3.0) < 1e-6,
+              "camera_eyes: eyes ipd apart across the view, centred on the head, axes parallel", "sep %g mid %g axis %g", sqrt(sep), mid, axis);
+        p[0] = 1.0f; p[1] = 2.0f; p[2] = 5.0f;
+        fovpt_gaze_from_point(&e[0], p, &gl);
+        fovpt_gaze_from_point(&e[1], p, &gr);
+        /* the left eye sees the point 0.032 to its right at depth 2: x = 160 + 160 (0.016 / tan_x) */
+        xw = 160.0 + 160.0 * (0.016 / (tan(30.0 * 3.14159265358979323846 / 180.0) * 320.0 / 240.0));
+        check(fabs((double)gl.x - xw) < 1e-3 && fabs((double)gr.x - (320.0 - xw)) < 1e-3 && fabs((double)gl.y - 120.0) < 1e-3 &&
+                  fabs((double)gr.y - 120.0) < 1e-3,
+              "camera_eyes + gaze_from_point: vergence puts each eye's gaze inwards by the analytic disparity",
+              "left (%g, %g) right (%g, %g), expected x %g / %g", (double)gl.x, (double)gl.y, (double)gr.x, (double)gr.y, xw, 320.0 - xw);
+    }
+    fovpt_camera_eyes(&c, 0.0f, e);
+    check(!memcmp(&e[0], &c, sizeof c) && !memcmp(&e[1], &c, sizeof c), "camera_eyes: ipd 0 gives the head camera twice", " ");
+    check(fovpt_camera_eyes(&c, NAN, e) == FOV_ERR_NOT_FINITE && fovpt_camera_eyes(&c, -0.1f, e) == FOV_ERR_INVALID_ARG &&
+              fovpt_camera_eyes(NULL, 0.1f, e) == FOV_ERR_NULL && fovpt_camera_eyes(&c, 0.1f, NULL) == FOV_ERR_NULL &&
+              fovpt_camera_eyes(&c, 1e38f, e) == FOV_OK,
+          "camera_eyes: NaN, negative ipd and NULL", " ");
+    {
+        fovpt_camera far = c;
+        far.pos[0] = far.target[0] = 3e38f;
+        check(fovpt_camera_eyes(&far, 3e38f, e) == FOV_ERR_NOT_FINITE, "camera_eyes: an eye position that overflows", " ");
+    }
+    c.target[2] = 3.0f;
+    check(fovpt_camera_eyes(&c, 0.1f, e) == FOV_ERR_DEGENERATE, "camera_eyes: degenerate head camera", " ");
+}
+
 /* ==== 2. scenes ============================================================================== */
 typedef struct scene_buf {
     fovpt_scene s;
@@ -676,16 +771,20 @@ static void test_furnace(void)
     d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
     d.background[0] = d.background[1] = d.background[2] = 1.0f;
     build(&b, &d);
+    memset(&st, 0, sizeof st);
     {
         double worst = 0.0;
         for (i = 0; i < 2000; ++i) {
             float o[3] = { frand(-0.9f, 0.9f), frand(-0.9f, 0.9f), -3.0f }, dd[3] = { 0.0f, 0.0f, 1.0f }, rgb[3];
             fovpt_rng rng;
             fovpt_rng_init(&rng, 0, (uint32_t)i, 0, 0);
-            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, NULL);
+            fovpt_radiance(&b.s, &c, o, dd, &rng, rgb, &st);
             if (o[0] * o[0] + o[1] * o[1] < 0.8f) worst = fmax(worst, fabs((double)rgb[1] - 0.5));
         }
         check(worst < 1e-6, "furnace: convex Lambert sphere (albedo 0.5) under background 1 gives 0.5", "max error %g", worst);
+        check(c.no_nee == 0 && b.s.num_lights == 0 && st.shadow_rays == 0 && st.bounce_rays > 0,
+              "no emitters: NEE on but no shadow rays traced", "lights %u, shadow rays %llu, bounce rays %llu", b.s.num_lights,
+              (unsigned long long)st.shadow_rays, (unsigned long long)st.bounce_rays);
     }
     free(b.mem);
     /* (b) closed emitting diffuse enclosure: L = Le * sum_{k=0}^{D} a^k, NEE on and off */
@@ -1730,6 +1829,7 @@ int main(void)
 {
     test_api();
     test_ecc();
+    test_eyes();
     test_scene_bad();
     test_bvh_random();
     test_user_hook();
