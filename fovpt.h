@@ -217,7 +217,10 @@ RECENT REVISION HISTORY
                       faster BVH traversal (sign-picked slabs, siblings tested together, far
                       child pushed with its entry distance, leaf-ordered triangles, deferred
                       division; SAH defaults 16 bins, leaf 2, traversal cost 1.5):
-                      0.38x -> 0.49x of Embree's single-thread rays/s; same hits.
+                      0.38x -> 0.49x of Embree's single-thread rays/s; same hits. Tried
+                      and not kept: an SSE test of both children's boxes in one 4-lane pass
+                      (a 64-byte node with the child boxes side by side; same hits): callgrind
+                      instructions -19 %, CPU time unchanged in interleaved runs against Embree.
    0.1.0 (2026-11-23) first release: geometry, BVH, path and Whitted tracers, UNIFORM method.
 */
 

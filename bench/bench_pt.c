@@ -2,35 +2,52 @@
    gaze at the centre and near the top-left corner; writes bench/results/pt.csv.
 
    make bench-pt            default run (5 scenes, 320x240, ground truth 512 spp path / 64
-                            Whitted; about 10-15 minutes on one busy core pair)
-   make bench-pt FULL=1     640x480, ground truth 1024 spp, every equal-budget row
+                            Whitted; every method and budget; about 10-15 minutes here)
+   make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
-                    [--threads N]      (--throughput: only the fovpt / Embree ray-rate rows)
+                    [--threads N] [--temporal]
+                    (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
+                    pt_temporal.csv, written beside FILE)
 
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
-     mode,rays,camera_rays,speedup
-   - method: uniform1 / uniform4 (the non-foveated renderer at 1 and 4 spp, seed 002's
+     mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea
+   - method: uniform4 / uniform1 (the non-foveated renderer at 4 and 1 spp; seed 002's
      regular system uses 4), layers (seed 002, 6/10/20 deg as radii), layers_diam (as
-     diameters), zones (seed 000 ch. 4), selective (seed 004), jin (Jin et al. 2009);
-     uniform_eq rows: UNIFORM at the spp that matches the ray count of the method named in
-     `budget` (equal ray budget; equal time is the same here: one tracer, one core).
+     diameters), zones (seed 000 ch. 4), whitted1 (UNIFORM Whitted, 1 spp), selective (seed
+     004), jin (Jin et al. 2009).
+   - budget: which budget the row was given.
+       default          the method's own settings (the rows above).
+       eqrays_<m>       method uniform_eq: UNIFORM at the spp whose camera rays match method
+                        <m>'s (equal ray budget).
+       eqtime_uniform4  methods layers, layers_diam, zones (all their samples scaled by one
+                        factor) and layers_fovea, layers_diam_fovea (only the innermost
+                        layer's samples raised): the time of uniform4 in the same run
+                        (equal time; calibrated from the default row as a timed pilot,
+                        corrected once along the secant when more than 8 % off; the
+                        measured time is in time_ms, the target in budget_time_ms).
+       eqtime_<m>       method uniform_eqt: UNIFORM at the spp whose time matches method
+                        <m>'s (spp = time of <m> / time of uniform1 or whitted1, rounded).
    - mode: path (path tracing, max depth 8, NEE) for uniform/layers/zones; whitted (depth 3)
      for selective/jin/whitted1 (seed 004 is a Whitted ray tracer); each against the ground
      truth of its own mode: UNIFORM at --gt-spp samples (path) or 64 (Whitted).
    - rays_per_s: all rays (camera, bounce, shadow) / time, ONE thread (per core);
-     time_ms: wall time of the method on one thread (trace + refine + resolve).
+     time_ms: CPU time of the one thread that renders the method (trace + refine + resolve;
+     thread CPU time, so other jobs on the shared cores do not stretch it).
    - psnr_f1..f4: PSNR (peak 1, sRGB-encoded clamped values) over the annuli of eccentricity
      [0, 3.3), [3.3, 5.5), [5.5, 12.1), [12.1, 30) degrees (seed 004's fovea, parafovea,
      perifovea, near periphery), psnr_all over the image; eccentricity from the camera's
      field of view (fovpt_ecc_*). An empty annulus gives nan.
-   - speedup: time of uniform4 / time of the method (same scene and gaze).
+   - speedup: time of uniform4 / time of the row (same scene and gaze).
+   - budget_time_ms: the time the row was matched to (eq rows; nan for default rows).
+   - spp_fovea: samples per target pixel in the fovea (UNIFORM, ZONES: spp; LAYERS: the
+     innermost layer's); 0 where not fixed (SELECTIVE, JIN: 1 + adaptive extra samples).
    Embree rows (built with -DPT_HAVE_EMBREE -lembree3, which the Makefile adds when
    <embree3/rtcore.h> exists; Debian's libembree-dev): on the triangles of mesh100k alone,
    the same ray set (every pixel-centre camera ray, plus one cosine-distributed bounce ray
    from each camera hit, from a fixed-seed generator) is traced for the closest hit by
    fovpt_intersect and by Embree 3 (rtcIntersect1, a device with threads=1), one thread
-   each, best of 5 runs interleaved (fovpt, Embree, fovpt, ...); rows fovpt_bvh and embree, budget rays_<N>, mode
+   each, best of 5 runs interleaved (fovpt, Embree, fovpt, ...; thread CPU time); rows fovpt_bvh and embree, budget rays_<N>, mode
    closest_hit, speedup = Embree's time / this row's time; the hit agreement (same hit or
    miss, |dt| <= 1e-4 t) is printed. */
 #define _POSIX_C_SOURCE 200809L
@@ -52,6 +69,14 @@ static double now_ms(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
+}
+/* CPU time of the calling thread: the time of a one-thread run on a core of its own, not
+   stretched when other jobs share the cores (this machine's two cores are shared) */
+static double cpu_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
@@ -81,9 +106,10 @@ static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rg
     if (fovpt_init(&ctx, cfg, &S->scene, &S->cam, g, mem, n) != FOV_OK) { free(mem); return -1.0; }
     fovpt_output_init(&out);
     out.rgb = rgb;
-    t0 = now_ms();
+    t0 = threads <= 1 ? cpu_ms() : now_ms();
     if (threads <= 1) {
         fovpt_render(&ctx, 0, &out, st);
+        t = cpu_ms() - t0;
     } else {
         pthread_t th[16];
         job jobs[16];
@@ -103,8 +129,8 @@ static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rg
         }
         fovpt_refine_rows(&ctx, 0, 0, H, st);
         fovpt_resolve_rows(&ctx, 0, H, &out);
+        t = now_ms() - t0;
     }
-    t = now_ms() - t0;
     free(mem);
     return t;
 }
@@ -191,12 +217,12 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
     }
 #ifndef PT_HAVE_EMBREE
     for (rep = 0; rep < 5; ++rep) {
-        double t0 = now_ms(), t;
+        double t0 = cpu_ms(), t;
         for (i = 0; i < nr; ++i) {
             fovpt_hit h;
             t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
         }
-        t = now_ms() - t0;
+        t = cpu_ms() - t0;
         if (t < best_pt) best_pt = t;
     }
 #else
@@ -216,15 +242,15 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
         rtcInitIntersectContext(&ictx);
         best_em = 1e30;
         for (rep = 0; rep < 5; ++rep) { /* interleaved, so load from other jobs hits both alike */
-            double t0 = now_ms(), t;
+            double t0 = cpu_ms(), t;
             size_t ag = 0;
             for (i = 0; i < nr; ++i) {
                 fovpt_hit h;
                 t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
             }
-            t = now_ms() - t0;
+            t = cpu_ms() - t0;
             if (t < best_pt) best_pt = t;
-            t0 = now_ms();
+            t0 = cpu_ms();
             for (i = 0; i < nr; ++i) {
                 struct RTCRayHit rh;
                 float te;
@@ -236,7 +262,7 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
                 te = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
                 if ((te < 0.0f && t_pt[i] < 0.0f) || (te >= 0.0f && t_pt[i] >= 0.0f && fabsf(te - t_pt[i]) <= 1e-4f * te)) ag++;
             }
-            t = now_ms() - t0;
+            t = cpu_ms() - t0;
             if (t < best_em) best_em = t;
             agree = ag;
         }
@@ -246,12 +272,12 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
 #endif
     printf("ray throughput on %u triangles, %zu rays (closest hit, one thread, best of 5 interleaved runs): fovpt %.2f Mrays/s", nprim, nr,
            (double)nr / (best_pt * 1e3));
-    fprintf(csv, "mesh100k,fovpt_bvh,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,%.3f\n", nr, (double)nr / (best_pt * 1e-3),
+    fprintf(csv, "mesh100k,fovpt_bvh,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,%.3f,nan,0\n", nr, (double)nr / (best_pt * 1e-3),
             best_pt, nr, W * H, best_em > 0.0 ? best_em / best_pt : 0.0);
     if (best_em > 0.0) {
         printf(", Embree %.2f Mrays/s (fovpt/Embree %.2f), hits agree on %.3f %% of the rays\n", (double)nr / (best_em * 1e3),
                best_em / best_pt, 100.0 * (double)agree / (double)nr);
-        fprintf(csv, "mesh100k,embree,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,1.000\n", nr, (double)nr / (best_em * 1e-3),
+        fprintf(csv, "mesh100k,embree,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,1.000,nan,0\n", nr, (double)nr / (best_em * 1e-3),
                 best_em, nr, W * H);
     } else {
         printf(" (Embree: not built in; apt-get install libembree-dev)\n");
@@ -260,10 +286,228 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
     pt_scene_free(&S);
 }
 
+/* ---- temporal options of SELECTIVE (seed 004 steps 2 and 4): flicker and the alpha sweep --
+   Per scene, gaze at the centre, SELECTIVE in Whitted mode, TF frames each:
+   - a moving view (turning 0.1 degree per frame about the vertical, about a third of a
+     pixel): PSNR per visual field of the last frame against UNIFORM Whitted at 64 spp of the
+     last frame's view (seed 004 Table 3 compares against a high-spp reference);
+   - a static view: flicker = per pixel and channel the standard deviation over frames
+     n_tpi + 1 .. TF - 1 (history full) of the sRGB value, root-mean-square over a field.
+   Options: off, reuse, smoothing with alpha(e) (the seed's curve), smoothing with a fixed
+   alpha (0.1 .. 0.9, Table 3's sweep), reuse + smoothing. Writes pt_temporal.csv beside
+   pt.csv. */
+#define TF 10u
+static void turn_cam(const fovpt_camera *c0, float deg, fovpt_camera *c)
+{
+    float dx = c0->target[0] - c0->pos[0], dz = c0->target[2] - c0->pos[2];
+    float a = deg * 3.14159265f / 180.0f, ca = cosf(a), sa = sinf(a);
+    *c = *c0;
+    c->target[0] = c0->pos[0] + dx * ca + dz * sa;
+    c->target[2] = c0->pos[2] - dx * sa + dz * ca;
+}
+static double temporal_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int moving, float *img, double *var, uint64_t *reused)
+{
+    size_t n = 0, np = (size_t)S->cam.width * S->cam.height, i;
+    void *mem;
+    fovpt_ctx ctx;
+    fovpt_output out;
+    fovpt_stats st;
+    fovpt_camera cam;
+    double *mean = NULL, t = 0.0;
+    uint32_t f, k0 = c->temporal.smooth ? 5u : 1u, cnt = 0; /* static view: frames from n_tpi + 1 */
+    *reused = 0;
+    if (fovpt_memory_size(c, &S->cam, &n) != FOV_OK) return -1.0;
+    mem = malloc(n + 16u);
+    if (fovpt_init(&ctx, c, &S->scene, &S->cam, g, mem, n) != FOV_OK) { free(mem); return -1.0; }
+    if (!moving) { mean = (double *)calloc(np * 3u, sizeof(double)); for (i = 0; i < np * 3u; ++i) var[i] = 0.0; }
+    fovpt_output_init(&out);
+    out.rgb = img;
+    for (f = 0; f < TF; ++f) {
+        double t0;
+        turn_cam(&S->cam, moving ? 0.1f * (float)f : 0.0f, &cam);
+        if (f > 0) fovpt_set_view(&ctx, &cam, g);
+        memset(&st, 0, sizeof st);
+        t0 = cpu_ms();
+        fovpt_render(&ctx, f, &out, &st);
+        t += cpu_ms() - t0;
+        *reused += st.reused;
+        if (!moving && f >= k0) { /* Welford, on sRGB values */
+            ++cnt;
+            for (i = 0; i < np * 3u; ++i) {
+                double v = srgb(img[i]), d = v - mean[i];
+                mean[i] += d / cnt;
+                var[i] += d * (v - mean[i]);
+            }
+        }
+    }
+    if (!moving) { for (i = 0; i < np * 3u; ++i) var[i] = cnt > 1 ? var[i] / (cnt - 1u) : 0.0; free(mean); }
+    free(mem);
+    return t / TF;
+}
+static void temporal_rows(const char *path, uint32_t W, uint32_t H, int quick, int threads)
+{
+    static const char *const opt[] = { "off", "reuse", "smooth_alpha_e", "smooth", "smooth", "smooth", "smooth", "smooth", "reuse_smooth" };
+    static const float fixed[] = { 0, 0, 0, 0.1f, 0.3f, 0.5f, 0.7f, 0.9f, 0 };
+    FILE *csv = fopen(path, "w");
+    int sc, o;
+    size_t np = (size_t)W * H, i;
+    float *img = (float *)malloc(np * 12u), *ref = (float *)malloc(np * 12u), *ecc = (float *)malloc(np * 4u);
+    double *var = (double *)malloc(np * 3u * sizeof(double));
+    if (!csv) { fprintf(stderr, "cannot write %s\n", path); return; }
+    fprintf(csv, "scene,option,alpha,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flicker_f1,flicker_f2,flicker_f3,flicker_f4,flicker_all,"
+                 "reused_pct,time_ms\n");
+    printf("temporal options (SELECTIVE, Whitted, %u frames; PSNR of the last frame of a turning view, flicker on a static view):\n", TF);
+    for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
+        pt_scene S;
+        fov_gaze g;
+        fov_ecc_model em;
+        fovpt_config c;
+        fovpt_stats st;
+        fovpt_camera last;
+        uint32_t x, y;
+        if (quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) continue;
+        if (pt_scene_make(&S, sc) != 0) continue;
+        S.cam.width = W; S.cam.height = H;
+        g.x = 0.5f * (float)W; g.y = 0.5f * (float)H;
+        fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+        /* reference: the last frame's view */
+        turn_cam(&S.cam, 0.1f * (float)(TF - 1u), &last);
+        {
+            pt_scene R = S;
+            R.cam = last;
+            c = fovpt_config_default(); c.mode = FOVPT_MODE_WHITTED; c.spp = 64; c.seed = 777;
+            render(&R, &c, g, ref, &st, threads);
+        }
+        for (o = 0; o < (int)(sizeof opt / sizeof opt[0]); ++o) {
+            double ps[5], fl[5], t;
+            char al[16];
+            uint64_t reused, reused_s;
+            int f, k;
+            c = fovpt_config_default();
+            c.mode = FOVPT_MODE_WHITTED;
+            c.method = FOVPT_METHOD_SELECTIVE;
+            c.temporal.reuse = (o == 1 || o == 8) ? 1u : 0u;
+            c.temporal.smooth = o >= 2 && o != 1 ? 1u : 0u;
+            if (fixed[o] > 0.0f) for (k = 0; k < 6; ++k) c.temporal.alpha[k] = fixed[o];
+            t = temporal_seq(&S, &c, g, 1, img, var, &reused);
+            psnr_fields(img, ref, ecc, np, ps);
+            temporal_seq(&S, &c, g, 0, img, var, &reused_s);
+            for (f = 0; f < 5; ++f) {
+                static const double lo[5] = { 0.0, 3.3, 5.5, 12.1, -1.0 }, hi[5] = { 3.3, 5.5, 12.1, 30.0, 1e9 };
+                double sum = 0.0;
+                size_t cnt = 0;
+                for (i = 0; i < np; ++i) {
+                    if (ecc[i] < lo[f] || ecc[i] >= hi[f]) continue;
+                    sum += var[3 * i] + var[3 * i + 1] + var[3 * i + 2];
+                    cnt += 3;
+                }
+                fl[f] = cnt ? sqrt(sum / (double)cnt) : NAN;
+            }
+            if (fixed[o] > 0.0f) snprintf(al, sizeof al, "%.1f", (double)fixed[o]);
+            else snprintf(al, sizeof al, "%s", c.temporal.smooth ? "alpha_e" : "none");
+            fprintf(csv, "%s,%s,%s,%.2f,%.2f,%.2f,%.2f,%.2f,%.5f,%.5f,%.5f,%.5f,%.5f,%.2f,%.2f\n", pt_scene_names[sc], opt[o], al, ps[0], ps[1],
+                    ps[2], ps[3], ps[4], fl[0], fl[1], fl[2], fl[3], fl[4], 100.0 * (double)reused / ((double)np * TF), t);
+            printf("  %-9s %-15s alpha %-7s PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  flicker f1..f4 %.4f %.4f %.4f %.4f all %.4f  reused %5.1f %%  %.1f ms/frame\n",
+                   pt_scene_names[sc], opt[o], al, ps[0], ps[1], ps[2], ps[3], ps[4], fl[0],
+                   fl[1], fl[2], fl[3], fl[4], 100.0 * (double)reused / ((double)np * TF), t);
+            fflush(stdout);
+        }
+        pt_scene_free(&S);
+    }
+    fclose(csv);
+    free(img); free(ref); free(ecc); free(var);
+}
+
+/* ---- the methods of the default rows, equal-time calibration, CSV rows ------------------ */
+static const char *const names[] = { "uniform4", "uniform1", "layers", "layers_diam", "zones", "whitted1", "selective", "jin" };
+
+static void method_cfg(fovpt_config *c, int m)
+{
+    *c = fovpt_config_default();
+    switch (m) {
+    case 0: c->spp = 4; break;
+    case 1: c->spp = 1; break;
+    case 2: c->method = FOVPT_METHOD_LAYERS; fovpt_layers_preset(&c->layers, FOVPT_LAYERS_KTH_RADIUS); break;
+    case 3: c->method = FOVPT_METHOD_LAYERS; fovpt_layers_preset(&c->layers, FOVPT_LAYERS_KTH_DIAMETER); break;
+    case 4: c->method = FOVPT_METHOD_ZONES; c->spp = 4; break;
+    case 5: c->mode = FOVPT_MODE_WHITTED; c->spp = 1; break;
+    case 6: c->mode = FOVPT_MODE_WHITTED; c->method = FOVPT_METHOD_SELECTIVE; break;
+    default: c->mode = FOVPT_MODE_WHITTED; c->method = FOVPT_METHOD_JIN; break;
+    }
+}
+
+/* samples per target pixel in the fovea: UNIFORM, ZONES cfg.spp; LAYERS the innermost
+   layer's; 0 = not a fixed number (SELECTIVE, JIN: 1 + the extra samples of problematic
+   subpixels) */
+static uint32_t fovea_spp(const fovpt_config *c)
+{
+    if (c->method == FOVPT_METHOD_LAYERS) return c->layers.layer[c->layers.count - 1u].spp;
+    if (c->method == FOVPT_METHOD_UNIFORM || c->method == FOVPT_METHOD_ZONES) return c->spp ? c->spp : 1u;
+    return 0;
+}
+
+static uint32_t spp_of(double v)
+{
+    if (!(v >= 1.0)) return 1u;
+    if (v > 65536.0) return 65536u;
+    return (uint32_t)(v + 0.5);
+}
+
+/* Method m (LAYERS, LAYERS diameter or ZONES) with the time t_target: its samples scaled by
+   x, all layers alike (fov_only = 0: x multiplies every spp) or the innermost layer only
+   (fov_only = 1: x is its spp). The first x comes from the pilot (the default row: time
+   t_pilot, sample counts sp), assuming time proportional to samples; when the measured time
+   is more than 8 % off, x is corrected once along the secant through the two measurements.
+   Returns the measured time; c and st are those of the returned run. */
+static double eqtime_render(pt_scene *S, int m, int fov_only, double t_target, double t_pilot, const fovpt_stats *sp, fov_gaze g,
+                            float *img, fovpt_config *c, fovpt_stats *st)
+{
+    fovpt_config base;
+    double x0, t0 = t_pilot, x1, t1 = t_pilot;
+    uint32_t l, n;
+    int it;
+    method_cfg(&base, m);
+    n = base.layers.count;
+    if (!fov_only) {
+        x0 = 1.0;
+        x1 = t_target / t_pilot;
+    } else {
+        double tot = 0.0, in = (double)sp->layer_samples[n - 1u];
+        for (l = 0; l < n; ++l) tot += (double)sp->layer_samples[l];
+        x0 = (double)base.layers.layer[n - 1u].spp;
+        x1 = x0 * (1.0 + (t_target / t_pilot - 1.0) * tot / (in > 0.0 ? in : 1.0));
+    }
+    for (it = 0; it < 2; ++it) {
+        double xn;
+        *c = base;
+        if (m == 4) c->spp = spp_of(4.0 * x1);
+        else if (fov_only) c->layers.layer[n - 1u].spp = spp_of(x1);
+        else
+            for (l = 0; l < n; ++l) c->layers.layer[l].spp = spp_of((double)base.layers.layer[l].spp * x1);
+        t1 = render(S, c, g, img, st, 1);
+        if (fabs(t1 / t_target - 1.0) <= 0.08 || it == 1) break;
+        xn = (t1 > t0 && x1 != x0) ? x1 + (t_target - t1) * (x1 - x0) / (t1 - t0) : x1 * t_target / t1;
+        x0 = x1; t0 = t1; x1 = xn;
+    }
+    return t1;
+}
+
+static void row(FILE *csv, const char *scene, const char *method, const char *gaze, const char *budget, const fovpt_stats *st, double t,
+                const double ps[5], int whitted, double t_u4, double budget_t, uint32_t spp_f)
+{
+    fprintf(csv, "%s,%s,%s,%s,%.0f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%s,%llu,%llu,%.3f,", scene, method, gaze, budget,
+            (double)st->rays / (t * 1e-3), t, ps[0], ps[1], ps[2], ps[3], ps[4], whitted ? "whitted" : "path",
+            (unsigned long long)st->rays, (unsigned long long)st->camera_rays, t_u4 / t);
+    if (budget_t > 0.0) fprintf(csv, "%.2f,%u\n", budget_t, spp_f);
+    else fprintf(csv, "nan,%u\n", spp_f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, only_tp = 0, threads = 2, i, sc, gi;
+    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv;
     double t_start = now_ms();
@@ -271,25 +515,34 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--full")) full = 1;
         else if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--throughput")) only_tp = 1;
+        else if (!strcmp(argv[i], "--temporal")) only_temporal = 1;
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) out_path = argv[++i];
-        else { fprintf(stderr, "usage: %s [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
+        else { fprintf(stderr, "usage: %s [--quick] [--full] [--throughput] [--temporal] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
     }
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
+    if (only_temporal) { /* pt_temporal.csv beside --out only */
+        char tpath[1024];
+        const char *sl = strrchr(out_path, '/');
+        snprintf(tpath, sizeof tpath, "%.*spt_temporal.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+        temporal_rows(tpath, W, H, quick, threads);
+        printf("wrote %s (%.0f s)\n", tpath, (now_ms() - t_start) * 1e-3);
+        return 0;
+    }
     csv = fopen(out_path, "w");
     if (!csv) { fprintf(stderr, "cannot write %s\n", out_path); return 1; }
-    fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup\n");
+    fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
     printf("fovpt benchmark: %ux%u, ground truth %u spp (path) / 64 spp (Whitted), one thread per method\n", W, H, gt_spp);
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
         pt_scene S;
         size_t np = (size_t)W * H;
         float *ref_p = (float *)malloc(np * 12u), *ref_w = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u);
         float *ecc = (float *)malloc(np * 4u);
-        if ((quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) || only_tp) continue;
+        if ((quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) || only_tp || only_temporal) continue;
         if (pt_scene_make(&S, sc) != 0) { fprintf(stderr, "scene %s failed\n", pt_scene_names[sc]); return 1; }
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
@@ -297,9 +550,10 @@ int main(int argc, char **argv)
             fovpt_config base = fovpt_config_default(), c;
             fovpt_stats st;
             fov_ecc_model em;
-            double t_u4 = 0.0, t;
+            double t_u4 = 0.0, t, t_m[8], f1_u4 = 0.0;
+            fovpt_stats st_m[8];
+            const char *nm = pt_scene_names[sc], *gz = gi ? "corner" : "centre";
             uint32_t x, y, m;
-            static const char *const names[] = { "uniform4", "uniform1", "layers", "layers_diam", "zones", "whitted1", "selective", "jin" };
             uint64_t cam_rays[8];
             g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
             g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
@@ -314,25 +568,15 @@ int main(int argc, char **argv)
             for (m = 0; m < 8; ++m) {
                 double ps[5];
                 int whitted = m >= 5;
-                c = base;
-                if (whitted) c.mode = FOVPT_MODE_WHITTED;
-                switch (m) {
-                case 0: c.spp = 4; break;
-                case 1: c.spp = 1; break;
-                case 2: c.method = FOVPT_METHOD_LAYERS; break;
-                case 3: c.method = FOVPT_METHOD_LAYERS; fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_DIAMETER); break;
-                case 4: c.method = FOVPT_METHOD_ZONES; c.spp = 4; break;
-                case 5: c.spp = 1; break;
-                case 6: c.method = FOVPT_METHOD_SELECTIVE; break;
-                default: c.method = FOVPT_METHOD_JIN; break;
-                }
+                method_cfg(&c, (int)m);
                 t = render(&S, &c, g, img, &st, 1);
                 if (m == 0) t_u4 = t;
+                t_m[m] = t;
+                st_m[m] = st;
                 cam_rays[m] = st.camera_rays;
                 psnr_fields(img, whitted ? ref_w : ref_p, ecc, np, ps);
-                fprintf(csv, "%s,%s,%s,default,%.0f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%s,%llu,%llu,%.3f\n", pt_scene_names[sc], names[m],
-                        gi ? "corner" : "centre", (double)st.rays / (t * 1e-3), t, ps[0], ps[1], ps[2], ps[3], ps[4],
-                        whitted ? "whitted" : "path", (unsigned long long)st.rays, (unsigned long long)st.camera_rays, t_u4 / t);
+                if (m == 0) f1_u4 = ps[0];
+                row(csv, nm, names[m], gz, "default", &st, t, ps, whitted, t_u4, -1.0, fovea_spp(&c));
                 printf("  %-12s %9.1f ms %6.2f Mrays/s  PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  speedup %.2f\n", names[m], t,
                        (double)st.rays / (t * 1e3), ps[0], ps[1], ps[2], ps[3], ps[4], t_u4 / t);
             }
@@ -341,19 +585,50 @@ int main(int argc, char **argv)
                 double ps[5];
                 uint32_t spp = (uint32_t)((double)cam_rays[m] / (double)np + 0.5);
                 int whitted = m >= 5;
+                char bud[64];
                 if (m == 5) continue;
-                if (!full && m == 3) continue;
                 if (spp < 1) spp = 1;
-                c = base;
+                method_cfg(&c, whitted ? 5 : 1);
                 c.spp = spp;
-                if (whitted) c.mode = FOVPT_MODE_WHITTED;
                 t = render(&S, &c, g, img, &st, 1);
                 psnr_fields(img, whitted ? ref_w : ref_p, ecc, np, ps);
-                fprintf(csv, "%s,uniform_eq,%s,eqrays_%s,%.0f,%.2f,%.2f,%.2f,%.2f,%.2f,%.2f,%s,%llu,%llu,%.3f\n", pt_scene_names[sc],
-                        gi ? "corner" : "centre", names[m], (double)st.rays / (t * 1e-3), t, ps[0], ps[1], ps[2], ps[3], ps[4],
-                        whitted ? "whitted" : "path", (unsigned long long)st.rays, (unsigned long long)st.camera_rays, t_u4 / t);
+                snprintf(bud, sizeof bud, "eqrays_%s", names[m]);
+                row(csv, nm, "uniform_eq", gz, bud, &st, t, ps, whitted, t_u4, t_m[m], spp);
                 printf("  uniform_eq(%s, %u spp) %8.1f ms PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f\n", names[m], spp, t, ps[0], ps[1],
                        ps[2], ps[3], ps[4]);
+            }
+            /* equal time, 1: each foveated path method gets uniform4's time (samples scaled by
+               a timed pilot, the default row, and corrected once by the measured time) */
+            for (m = 2; m <= 4; ++m) {
+                int fov_only;
+                for (fov_only = 0; fov_only < (m == 4 ? 1 : 2); ++fov_only) {
+                    double ps[5];
+                    char mname[64];
+                    t = eqtime_render(&S, (int)m, fov_only, t_u4, t_m[m], &st_m[m], g, img, &c, &st);
+                    psnr_fields(img, ref_p, ecc, np, ps);
+                    snprintf(mname, sizeof mname, "%s%s", names[m], fov_only ? "_fovea" : "");
+                    row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
+                    printf("  %-12s at uniform4's time (%.1f ms): %8.1f ms, fovea spp %u, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
+                           " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
+                }
+            }
+            /* equal time, 2: UNIFORM at the spp whose time matches each foveated method's */
+            for (m = 2; m < 8; ++m) {
+                double ps[5];
+                int whitted = m >= 5;
+                double unit = whitted ? t_m[5] : t_m[1];
+                uint32_t spp = (uint32_t)(t_m[m] / unit + 0.5);
+                char bud[64];
+                if (m == 5) continue;
+                if (spp < 1) spp = 1;
+                method_cfg(&c, whitted ? 5 : 1);
+                c.spp = spp;
+                t = render(&S, &c, g, img, &st, 1);
+                psnr_fields(img, whitted ? ref_w : ref_p, ecc, np, ps);
+                snprintf(bud, sizeof bud, "eqtime_%s", names[m]);
+                row(csv, nm, "uniform_eqt", gz, bud, &st, t, ps, whitted, t_u4, t_m[m], spp);
+                printf("  uniform_eqt(%s, %u spp) %8.1f ms (method %.1f ms) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f\n", names[m], spp, t,
+                       t_m[m], ps[0], ps[1], ps[2], ps[3], ps[4]);
             }
             fflush(csv);
         }
@@ -361,6 +636,12 @@ int main(int argc, char **argv)
         free(ref_p); free(ref_w); free(img); free(ecc);
     }
     if (!quick) throughput_rows(csv, W, H);
+    if (!only_tp) {
+        char tpath[1024];
+        const char *sl = strrchr(out_path, '/');
+        snprintf(tpath, sizeof tpath, "%.*spt_temporal.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+        temporal_rows(tpath, W, H, quick, threads);
+    }
     fclose(csv);
     printf("wrote %s (%.0f s)\n", out_path, (now_ms() - t_start) * 1e-3);
     /* plots next to the CSV: pt_<scene>.png, speed-up over uniform4 against fovea PSNR (f1)

@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""pt_tables.py - the README's fovpt tables from bench/results/pt.csv (make bench-pt).
+
+usage: python3 bench/pt_tables.py [bench/results/pt.csv]
+Prints markdown:
+  1. default budgets: speed-up over uniform4 and fovea / near-periphery PSNR per method;
+  2. equal time: fovea PSNR (f1) of each foveated method given uniform4's time, minus
+     uniform4's f1 (dB), with the measured time / target time; and of SELECTIVE / JIN minus
+     UNIFORM Whitted at the spp of the same time;
+  3. equal ray budget: the same gains against UNIFORM at the method's camera-ray count;
+  4. the closest-hit throughput rows (fovpt against Embree);
+  5. from pt_temporal.csv beside it: PSNR and flicker per temporal option of SELECTIVE.
+"""
+import os
+import csv
+import math
+import sys
+
+
+def f(v):
+    try:
+        return float(v)
+    except ValueError:
+        return math.nan
+
+
+def fmt_db(v):
+    return "n/a" if math.isnan(v) else "%.1f" % v
+
+
+def main():
+    path = sys.argv[1] if len(sys.argv) > 1 else "bench/results/pt.csv"
+    with open(path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    idx = {}
+    scenes, gazes = [], []
+    for r in rows:
+        idx[(r["scene"], r["gaze"], r["method"], r["budget"])] = r
+        if r["mode"] != "closest_hit":
+            if r["scene"] not in scenes:
+                scenes.append(r["scene"])
+            if r["gaze"] not in gazes:
+                gazes.append(r["gaze"])
+
+    def get(sc, gz, m, b="default"):
+        return idx.get((sc, gz, m, b))
+
+    # 1. default budgets
+    meths = ["layers", "layers_diam", "zones", "selective", "jin"]
+    print("| scene | gaze | " + " | ".join(m + ": speed-up, f1/f4 dB" for m in meths) + " | uniform4 f1/f4 |")
+    print("|---|---|" + "---|" * len(meths) + "---|")
+    for sc in scenes:
+        for gz in gazes:
+            u = get(sc, gz, "uniform4")
+            if not u:
+                continue
+            cells = []
+            for m in meths:
+                r = get(sc, gz, m)
+                cells.append("%.1fx, %s/%s" % (f(r["speedup"]), fmt_db(f(r["psnr_f1"])), fmt_db(f(r["psnr_f4"]))) if r else "")
+            print("| %s | %s | %s | %s/%s |" % (sc, gz, " | ".join(cells), fmt_db(f(u["psnr_f1"])), fmt_db(f(u["psnr_f4"]))))
+    print()
+
+    # 2. equal time
+    eq = ["layers", "layers_fovea", "layers_diam", "layers_diam_fovea", "zones"]
+    print("Equal time: fovea PSNR gain (dB) over uniform4 at uniform4's time (time / target), and of "
+          "selective / jin over UNIFORM Whitted at the spp of the method's time")
+    print()
+    print("| scene | gaze | uniform4 f1 dB | " + " | ".join(eq) + " | selective vs uniform | jin vs uniform |")
+    print("|---|---|---:|" + "---:|" * len(eq) + "---:|---:|")
+    gains = {m: [] for m in eq + ["selective", "jin"]}
+    skipped = []
+    for sc in scenes:
+        for gz in gazes:
+            u = get(sc, gz, "uniform4")
+            if not u:
+                continue
+            cells = []
+            row_gains = {}
+            for m in eq:
+                r = get(sc, gz, m, "eqtime_uniform4")
+                if not r:
+                    cells.append("")
+                    continue
+                g = f(r["psnr_f1"]) - f(u["psnr_f1"])
+                row_gains[m] = g
+                cells.append("%+.1f (%.2f)" % (g, f(r["time_ms"]) / f(r["budget_time_ms"])))
+            for m in ["selective", "jin"]:
+                r, q = get(sc, gz, m), get(sc, gz, "uniform_eqt", "eqtime_" + m)
+                if not r or not q:
+                    cells.append("")
+                    continue
+                g = f(r["psnr_f1"]) - f(q["psnr_f1"])
+                row_gains[m] = g
+                cells.append("%+.1f (%s spp, %.2f)" % (g, q["spp_fovea"], f(q["time_ms"]) / f(r["time_ms"])))
+            print("| %s | %s | %s | %s |" % (sc, gz, fmt_db(f(u["psnr_f1"])), " | ".join(cells)))
+            if f(u["psnr_f1"]) >= 90.0:  # the fovea sees only the background: every method is exact there
+                skipped.append((sc, gz))
+            else:
+                for m, g in row_gains.items():
+                    gains[m].append(g)
+    print()
+    summ = []
+    for m, v in gains.items():
+        v = [x for x in v if not math.isnan(x)]
+        if v:
+            summ.append("%s %+.1f..%+.1f (mean %+.1f)" % (m, min(v), max(v), sum(v) / len(v)))
+    print("Fovea gain at equal time, min..max over scenes and gazes%s: " % (
+        " (without %s: the fovea sees only the background)" % ", ".join(a + " " + b for a, b in skipped) if skipped else "") + "; ".join(summ))
+    print()
+
+    # 3. equal ray budget
+    print("Equal ray budget: fovea PSNR gain (dB) of each method over UNIFORM at its camera-ray count")
+    print()
+    em = ["layers", "layers_diam", "zones", "selective", "jin"]
+    print("| scene | gaze | " + " | ".join(em) + " |")
+    print("|---|---|" + "---:|" * len(em))
+    for sc in scenes:
+        for gz in gazes:
+            cells = []
+            for m in em:
+                r, q = get(sc, gz, m), get(sc, gz, "uniform_eq", "eqrays_" + m)
+                cells.append("%+.1f" % (f(r["psnr_f1"]) - f(q["psnr_f1"])) if r and q else "")
+            if any(cells):
+                print("| %s | %s | %s |" % (sc, gz, " | ".join(cells)))
+    print()
+
+    # 4. throughput
+    tp = [r for r in rows if r["mode"] == "closest_hit"]
+    if tp:
+        print("| closest hit (%s) | rays | Mrays/s | time ms | Embree time / time |" % tp[0]["scene"])
+        print("|---|---:|---:|---:|---:|")
+        for r in tp:
+            print("| %s | %s | %.2f | %.1f | %.3f |" % (r["method"], r["rays"], f(r["rays_per_s"]) * 1e-6, f(r["time_ms"]),
+                                                    f(r["speedup"])))
+
+    # 5. temporal options
+    tpath = os.path.join(os.path.dirname(path), "pt_temporal.csv")
+    if os.path.exists(tpath):
+        with open(tpath, newline="") as fh:
+            trows = list(csv.DictReader(fh))
+        print()
+        print("| scene | option | alpha | PSNR f1 / f2 / f3 / f4 dB (turning view, last frame) | "
+              "flicker f1 / f2 / f3 / f4 (static view, sRGB std) | reused % |")
+        print("|---|---|---|---|---|---:|")
+        for r in trows:
+            print("| %s | %s | %s | %s / %s / %s / %s | %.4f / %.4f / %.4f / %.4f | %s |" % (
+                r["scene"], r["option"], r["alpha"], fmt_db(f(r["psnr_f1"])), fmt_db(f(r["psnr_f2"])), fmt_db(f(r["psnr_f3"])),
+                fmt_db(f(r["psnr_f4"])), f(r["flicker_f1"]), f(r["flicker_f2"]), f(r["flicker_f3"]), f(r["flicker_f4"]), r["reused_pct"]))
+
+
+if __name__ == "__main__":
+    main()
