@@ -72,6 +72,10 @@ if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
 three_builds unit_fovpt tests/test_fovpt.c
+# the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
+if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -I. -Itests/common -lm; then
+    run_section unit_fovpt_nosimd build/tests/test_fovpt_nosimd
+fi
 # fovlp.h
 three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c

@@ -373,6 +373,45 @@ static void test_bvh_random(void)
         r = build(&b, &d);
         if (!check(r == FOV_OK && b.s.nodes != NULL, N("random scene %d builds a BVH (%u shapes, %u triangles)", sc, ns, nt),
                    "%s", fovpt_result_string(r))) { free(sh); free(pos); free(b.mem); continue; }
+        {   /* the 4-wide tree: every leaf slot in exactly one leaf, every child box inside its
+               parent's, 2..4 children per inner node, one node per 1-3 binary inner nodes */
+            static uint32_t seen[4000], stackn[4000];
+            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, k, j;
+            const fovpt__node4 *n4 = (const fovpt__node4 *)b.s.nodes4;
+            const fovpt__node *n2 = (const fovpt__node *)b.s.nodes;
+            memset(seen, 0, sizeof seen);
+            for (k = 0; k < b.s.num_nodes; ++k) ninner += n2[k].n == 0u;
+            stackn[sp++] = 0;
+            while (sp > 0 && bad == 0) {
+                uint32_t ni = stackn[--sp], real = 0;
+                const fovpt__node4 *q = &n4[ni];
+                ++visited;
+                for (j = 0; j < 4; ++j) {
+                    uint32_t c = q->child[j];
+                    if (q->b[0][j] > q->b[3][j]) continue; /* empty slot */
+                    ++real;
+                    if (c & FOVPT__LEAF4) {
+                        uint32_t f = (c & ~FOVPT__LEAF4) >> 5, n = c & 31u, t;
+                        for (t = f; t < f + n; ++t) if (t >= b.s.num_bounded || seen[t]++) bad++;
+                    } else {
+                        const fovpt__node4 *cq = &n4[c];
+                        uint32_t cj, kk;
+                        if (c >= b.s.num_nodes4) { bad++; continue; }
+                        for (cj = 0; cj < 4; ++cj) {
+                            if (cq->b[0][cj] > cq->b[3][cj]) continue;
+                            for (kk = 0; kk < 3; ++kk)
+                                if (cq->b[kk][cj] < q->b[kk][j] || cq->b[3 + kk][cj] > q->b[3 + kk][j]) bad++;
+                        }
+                        stackn[sp++] = c;
+                    }
+                }
+                if (real < 2u && !(ni == 0 && b.s.num_nodes == 1u)) bad++;
+            }
+            for (k = 0; k < b.s.num_bounded; ++k) if (seen[k] != 1u) bad++;
+            check(bad == 0 && visited == b.s.num_nodes4 && 3u * b.s.num_nodes4 >= ninner && b.s.num_nodes4 <= ninner,
+                  N("random scene %d: 4-wide BVH covers every primitive once, boxes nested, 2-4 children", sc),
+                  "bad %u, visited %u of %u nodes4, binary inner %u", bad, visited, b.s.num_nodes4, ninner);
+        }
         for (i = 0; i < 3000; ++i) {
             float o[3], dd[3];
             fovpt_hit h1, h2;
