@@ -422,7 +422,8 @@ typedef struct fovlp_counts {
 } fovlp_counts;
 
 /* TAA buffers of one frame. Screen-size, tightly packed (3 floats per pixel for colour).
-   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame).
+   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame;
+   out_* equal to cur_rgb or prev_* is FOV_ERR_INVALID_ARG).
    cur_rgb/cur_depth: this frame's reconstruction (fovlp_reconstruct_rows with out_depth). */
 typedef struct fovlp_taa_io {
     const float *cur_rgb;
@@ -470,7 +471,9 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
 FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
 
-/* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). */
+/* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). Any finite
+   screen point maps; lp_to_screen gives FOV_ERR_LIMIT for a u so large that the point lies
+   beyond the float range. */
 FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u,
                                         float *v);
 FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, float *x,
@@ -497,7 +500,7 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 
 /* Reconstruction of screen rows [y0, y1) from the shaded samples into out_rgb (row stride in
    floats, 0: 3 W); out_depth (W floats per row, may be NULL) gets the depth of the nearest
-   sample (needs sample_depth). */
+   sample (needs sample_depth: FOV_ERR_NULL without). */
 FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
                                             const float *sample_depth, uint32_t y0,
                                             uint32_t y1, float *out_rgb, uint32_t out_stride,
@@ -1261,6 +1264,12 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
     k = c.taa.halton_start + phase % n;
     *ou = m2 > 0.0f ? fovlp__halton(k, 2) * (0.5f / m2) : 0.5f;
     *ov = m3 > 0.0f ? fovlp__halton(k, 3) * (0.5f / m3) : 0.5f;
+    /* the scaling can push an offset to 1 or beyond for some (phases, halton_start), e.g.
+       3 phases from index 2: a sample must stay inside its texel / pixel (a disc sample at
+       x = W would be off the screen), so offsets are clamped to [0, 1) (the cycle's mean is
+       then slightly below 0.5 for those configurations; the defaults never clamp) */
+    if (*ou > 0.99999994f) *ou = 0.99999994f;
+    if (*ov > 0.99999994f) *ov = 0.99999994f;
     return FOV_OK;
 }
 
@@ -1343,8 +1352,15 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
 FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u, float *v)
 {
     const fovlp_geometry *g = &ctx->geo;
-    float r = FOVLP__SQRT(dx * dx + dy * dy);
+    float r2 = dx * dx + dy * dy, r;
     float a = FOVLP__ATAN2(dy, dx);
+    if (fovlp__finite(r2)) {
+        r = FOVLP__SQRT(r2);
+    } else { /* beyond ~1.8e19 px: scale first (fovlp_screen_to_lp takes any finite point) */
+        float m = fovlp__maxf(fovlp__absf(dx), fovlp__absf(dy)), sx = dx / m, sy = dy / m;
+        r = m * FOVLP__SQRT(sx * sx + sy * sy);
+        if (!fovlp__finite(r)) r = 3.4028235e38f;
+    }
     if (a < 0.0f) a += FOVLP__TWO_PI;
     *u = fovlp__pow(FOVLP__LOG(fovlp__maxf(r, 1.0f)) / g->L, ctx->cfg.alpha) * g->w_c - g->u_g;
     *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
@@ -1401,6 +1417,10 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
     a = FOVLP__TWO_PI * v / (float)g->lp_h;
     *x = ctx->gaze.x + rho * FOVLP__COS(a);
     *y = ctx->gaze.y + rho * FOVLP__SIN(a);
+    if (!fovlp__finite(*x) || !fovlp__finite(*y)) {   /* u far beyond the buffer */
+        *x = ctx->gaze.x; *y = ctx->gaze.y;
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "lp_to_screen: the point lies beyond the float range");
+    }
     return FOV_OK;
 }
 
@@ -1755,6 +1775,7 @@ FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *s
     uint32_t x, y, stride;
     if (!ctx || !sample_rgb || !out_rgb) return FOV_ERR_NULL;
     if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (out_depth && !sample_depth) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "reconstruct: out_depth needs sample_depth");
     if (x0 > x1 || y0 > y1 || x1 > ctx->geo.width || y1 > ctx->geo.height)
         FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: rows or tile out of range");
     stride = out_stride ? out_stride : 3u * ctx->geo.width;
@@ -1902,6 +1923,10 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     if (!io->cur_rgb || !io->out_rgb || !io->out_age) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: cur_rgb, out_rgb and out_age are required");
     if (ctx->history_valid && (!io->prev_rgb || !io->prev_age))
         FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: prev_rgb and prev_age are required after the first frame");
+    if ((const float *)io->out_rgb == io->cur_rgb || (const float *)io->out_rgb == io->prev_rgb ||
+        (io->out_depth && (const float *)io->out_depth == io->prev_depth) ||
+        (const uint8_t *)io->out_age == io->prev_age)   /* neighbourhoods and reprojection read them */
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: out_* must not alias cur_rgb or prev_* (swap buffers)");
     W = ctx->geo.width; H = ctx->geo.height;
     if (y0 > y1 || y1 > H) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: rows out of range");
     reproject = ctx->history_valid && ctx->moving;

@@ -257,6 +257,19 @@ static void test_bad_input(void)
                   fovlp_screen_to_lp(&e.ctx, 1, INFINITY, &u, &v) == FOV_ERR_NOT_FINITE &&
                   fovlp_lp_to_screen(&e.ctx, -1e9f, 1, &u, &v) == FOV_ERR_INVALID_ARG,
               "bad input: NaN/inf points in the mappings, LP point inside the disc", " ");
+        {   /* finite but huge: screen_to_lp stays finite, lp_to_screen says LIMIT (not inf) */
+            float uu = -1.0f, vv = -1.0f, xx = 0.0f, yy = 0.0f;
+            fov_result r1 = fovlp_screen_to_lp(&e.ctx, 3e38f, -3e38f, &uu, &vv);
+            fov_result r2 = fovlp_lp_to_screen(&e.ctx, 1e30f, 3.0f, &xx, &yy);
+            check(r1 == FOV_OK && isfinite(uu) && isfinite(vv) && uu > 0.0f && r2 == FOV_ERR_LIMIT && isfinite(xx) && isfinite(yy),
+                  "bad input: mappings of points near the float range stay finite (LIMIT beyond)", "u %g v %g (%d), x %g y %g (%d)",
+                  (double)uu, (double)vv, (int)r1, (double)xx, (double)yy, (int)r2);
+        }
+        {
+            float dimg[320];
+            check(fovlp_reconstruct_rows(&e.ctx, e.srgb, NULL, 0, 1, img, 0, dimg) == FOV_ERR_NULL,
+                  "bad input: out_depth without sample_depth", " ");
+        }
         {
             fovlp_taa_io io;
             memset(&io, 0, sizeof io);
@@ -628,6 +641,22 @@ static void test_sampling(void)
         c.taa.halton_start = 16;
         fovlp_jitter(&c, 0, &ou, &ov);
         check(fabsf(ou - 0.0625f * 0.5f / 0.5f) > 0.0f, "jitter: a settable start index", " ");
+        {   /* every (phases, start) keeps every offset inside [0, 1): a disc sample of the last
+               column must not land at x = W (3 phases from index 2 scale 0.5 to exactly 1) */
+            uint32_t ph, st, worst_ph = 0, worst_st = 0;
+            float worst = 0.0f;
+            for (ph = 1; ph <= 64; ++ph)
+                for (st = 0; st <= 40; ++st) {
+                    c.taa.phases = ph; c.taa.halton_start = st;
+                    for (k = 0; k < ph; ++k)
+                        if (fovlp_jitter(&c, k, &ou, &ov) == FOV_OK) {
+                            float m = fmaxf(ou, ov);
+                            if (m > worst || !(ou >= 0.0f && ov >= 0.0f)) { worst = m; worst_ph = ph; worst_st = st; }
+                        }
+                }
+            check(worst < 1.0f, "jitter: offsets stay in [0, 1) for phases 1..64, start 0..40", "max %.9g at phases %u start %u",
+                  (double)worst, worst_ph, worst_st);
+        }
     }
 }
 

@@ -164,6 +164,22 @@ static void test_still(void)
     fovlp_reset_history(&e.ctx);
     frame(&e, gz, NULL, shade_pattern, NULL, NULL);
     check(e.ctx.history_valid == 0, "TAA: fovlp_reset_history starts afresh", " ");
+    frame(&e, gz, NULL, shade_pattern, NULL, NULL);
+    {   /* in-place resolves would read pixels this call already overwrote: refused */
+        fovlp_taa_io io;
+        int kk, ok = 1;
+        for (kk = 0; kk < 4; ++kk) {
+            io.cur_rgb = e.cur; io.cur_depth = e.cdep;
+            io.prev_rgb = e.hist[e.ping]; io.prev_depth = e.hdep[e.ping]; io.prev_age = e.age[e.ping];
+            io.out_rgb = e.hist[1 - e.ping]; io.out_depth = e.hdep[1 - e.ping]; io.out_age = e.age[1 - e.ping];
+            if (kk == 0) io.out_rgb = e.cur;
+            if (kk == 1) io.out_rgb = e.hist[e.ping];
+            if (kk == 2) io.out_depth = e.hdep[e.ping];
+            if (kk == 3) io.out_age = e.age[e.ping];
+            if (fovlp_taa_rows(&e.ctx, &io, 0, H, NULL) != FOV_ERR_INVALID_ARG) ok = 0;
+        }
+        check(ok, "TAA: out_rgb / out_depth / out_age aliasing cur_rgb or prev_* is refused", " ");
+    }
     env_free(&e);
     env_free(&en);
     free(gt); free(prev_t); free(prev_r);
