@@ -360,13 +360,15 @@ typedef struct fovlp_geometry {
     float G, u_g, w_c;      /* eq. 3.4, 3.5 */
     float u_max;            /* LP columns the screen needs from the current gaze */
     uint32_t lp_cols;       /* columns dispatched: min(lp_w, ceil(u_max)), >= 1 */
-    uint32_t disc_side;     /* S: disc buffer side; the disc has S x S slots (0: no disc) */
+    uint32_t disc_side;     /* S: side of the square around the disc, any gaze (0: no disc) */
+    uint32_t disc_cols, disc_rows; /* the disc buffer: min(S, W) x min(S, H) slots (a strip
+                               screen does not pay for a square of its long side) */
     uint32_t disc_x0, disc_y0, disc_w, disc_h; /* the current disc square on the screen */
     uint32_t lp_slots;      /* lp_w * lp_h: slot of texel (u, v) is v * lp_w + u */
-    uint32_t disc_offset;   /* slot of disc pixel (x, y) = disc_offset + (y - disc_y0) * S +
-                               (x - disc_x0) */
+    uint32_t disc_offset;   /* slot of disc pixel (x, y) = disc_offset + (y - disc_y0) *
+                               disc_cols + (x - disc_x0) */
     uint32_t centre_slot;   /* slot of the sample on the gaze point */
-    uint32_t samples;       /* slots in a sample buffer: lp_slots + S * S + 1 */
+    uint32_t samples;       /* slots in a sample buffer: lp_slots + disc_cols disc_rows + 1 */
 } fovlp_geometry;
 
 /* Pinhole camera for TAA reprojection, the same model as fovsdf_camera: screen point (x, y)
@@ -1104,13 +1106,15 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
     }
     g->disc_side = S;
+    g->disc_cols = S < c->width ? S : c->width;
+    g->disc_rows = S < c->height ? S : c->height;
     lp = (size_t)g->lp_w * (size_t)g->lp_h;
-    slots = lp + (size_t)S * (size_t)S + 1u;
+    slots = lp + (size_t)g->disc_cols * (size_t)g->disc_rows + 1u;
     if (lp / g->lp_w != g->lp_h || slots > (size_t)FOVLP_MAX_SAMPLES || slots < lp)
         FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: sample slots above FOVLP_MAX_SAMPLES");
     g->lp_slots = (uint32_t)lp;
     g->disc_offset = (uint32_t)lp;
-    g->centre_slot = (uint32_t)(lp + (size_t)S * (size_t)S);
+    g->centre_slot = (uint32_t)(lp + (size_t)g->disc_cols * (size_t)g->disc_rows);
     g->samples = (uint32_t)slots;
     /* the gaze-dependent part */
     rmax = fovlp__far_corner(c, gaze);
@@ -1133,8 +1137,8 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         g->disc_y0 = (uint32_t)y0;
         g->disc_w = x1 > g->disc_x0 ? x1 - g->disc_x0 : 0;
         g->disc_h = y1 > g->disc_y0 ? y1 - g->disc_y0 : 0;
-        if (g->disc_w > S) g->disc_w = S;
-        if (g->disc_h > S) g->disc_h = S;
+        if (g->disc_w > g->disc_cols) g->disc_w = g->disc_cols;
+        if (g->disc_h > g->disc_rows) g->disc_h = g->disc_rows;
     }
     return FOV_OK;
 }
@@ -1545,8 +1549,8 @@ FOVLP__PRIV void fovlp__visit_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r
             }
         } else if (r < g->lp_h + g->disc_h) {
             uint32_t k = r - g->lp_h, j = g->disc_y0 + k, i;
-            uint32_t base = g->disc_offset + k * g->disc_side;
-            for (i = 0; i < g->disc_side; ++i) {
+            uint32_t base = g->disc_offset + k * g->disc_cols;
+            for (i = 0; i < g->disc_cols; ++i) {
                 uint32_t px = g->disc_x0 + i;
                 int on = i < g->disc_w && fovlp__in_disc(ctx, px, j);
                 if (i >= g->disc_w && !vi->fn) break;
@@ -1719,7 +1723,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
-        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_side + (px - g->disc_x0);
+        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_cols + (px - g->disc_x0);
         rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
         *depth = sdep ? sdep[slot] : 0.0f;
         return;
@@ -1744,7 +1748,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
             uint32_t ix = (uint32_t)qx, iy = (uint32_t)qy;
             if (fovlp__in_disc(ctx, ix, iy) && ix >= g->disc_x0 && iy >= g->disc_y0 &&
                 ix - g->disc_x0 < g->disc_w && iy - g->disc_y0 < g->disc_h) {
-                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_side + (ix - g->disc_x0);
+                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_cols + (ix - g->disc_x0);
                 float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
                 float rin = FOVLP__SQRT(ex * ex + ey * ey);
                 float t = ctx->rho[0] > rin ? fovlp__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;

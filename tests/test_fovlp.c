@@ -789,6 +789,28 @@ static void test_reconstruction(void)
               "8K: geometry, memory ((w + 2h) floats of tables) and fewer slots than pixels", "%ux%u, %zu bytes, %u slots",
               g.lp_w, g.lp_h, bytes, g.samples);
     }
+    /* strip screens: the disc buffer is min(S, W) x min(S, H), not a square of the long side */
+    {
+        static const uint32_t dims[5][2] = { { 65536, 1 }, { 65536, 16 }, { 20000, 8 }, { 7680, 64 }, { 7680, 1080 } };
+        int k, ok = 1;
+        double worst = 0.0;
+        for (k = 0; k < 5; ++k) {
+            fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, dims[k][0], dims[k][1]);
+            fovlp_geometry g;
+            fov_gaze gz;
+            double ratio;
+            gz.x = 0.5f * (float)dims[k][0]; gz.y = 0.5f * (float)dims[k][1];
+            if (fovlp_geometry_get(&c, gz, &g) != FOV_OK) { ok = 0; continue; }
+            ratio = (double)g.samples / ((double)dims[k][0] * (double)dims[k][1]);
+            if (g.disc_cols != (g.disc_side < dims[k][0] ? g.disc_side : dims[k][0]) ||
+                g.disc_rows != (g.disc_side < dims[k][1] ? g.disc_side : dims[k][1]) ||
+                g.samples != g.lp_slots + g.disc_cols * g.disc_rows + 1u || g.disc_w > g.disc_cols || g.disc_h > g.disc_rows)
+                ok = 0;
+            if (ratio > worst) worst = ratio;
+        }
+        check(ok && worst < 4.0, "strip screens (65536x1 .. 7680x1080): disc buffer min(S,W) x min(S,H), slots < 4 per pixel",
+              "worst %.2f slots per pixel", worst);
+    }
     /* rows and tiles: any split gives the same image */
     {
         uint32_t W = 160, H = 90, y;
