@@ -856,7 +856,7 @@ FOVLP_API const char *fovlp_result_string(fov_result r)
     case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
     case FOV_ERR_NULL: return "a required pointer is NULL";
     case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
-    case FOV_ERR_DEGENERATE: return "degenerate camera, display or geometry";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
     case FOV_ERR_UNSUPPORTED: return "not supported by this build";
     default: return "unknown result code";
     }
