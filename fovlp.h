@@ -138,7 +138,11 @@ ERRORS AND LOGGING
    overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
    gaze disc that covers the screen) is rejected with an error code before any work is done;
    nothing asserts on data. An optional fov_logger in the config receives each error (and a
-   warning when an off-screen gaze is clamped).
+   warning when an off-screen gaze is clamped). Bad data from the caller's shading does not
+   spread: fovlp_taa_rows never writes a NaN or infinite colour into the history (a
+   non-finite current colour keeps the history or gives 0, a non-finite fetched or clamped
+   history is rejected, a NaN depth fails the depth test); the reconstruction itself passes
+   the shaded values through as they are.
 
 THREADING
    fovlp_begin_frame writes the context; between two begin_frame calls the context is
@@ -1949,7 +1953,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (stats) stats->pixels++;
             if (io->out_depth) io->out_depth[i] = dc;
             if (!ctx->history_valid) {
-                io->out_rgb[3 * i] = cur[0]; io->out_rgb[3 * i + 1] = cur[1]; io->out_rgb[3 * i + 2] = cur[2];
+                /* a non-finite colour from the caller's shading never enters the history */
+                for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = fovlp__finite(cur[ch]) ? cur[ch] : 0.0f;
                 io->out_age[i] = 1;
                 continue;
             }
@@ -1975,7 +1980,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     } else {
                         float expect = fovlp__len(rel);
                         float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
-                        if (fovlp__absf(hd - expect) > c->taa.depth_tol * fovlp__maxf(hd, expect)) {
+                        if (!(fovlp__absf(hd - expect) <= c->taa.depth_tol * fovlp__maxf(hd, expect))) { /* NaN: differs */
                             float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
                             if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
                             else reject = 1;
@@ -1994,10 +1999,22 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                 if (periph && age > 2) age = 2; /* the kept history weighs at most 1/2 */
                 fovlp__fetch(io->prev_rgb, W, H, hx, hy, hist);
                 if (c->taa.clamp != FOVLP_CLAMP_NONE) fovlp__clamp_history(ctx, io->cur_rgb, x, y, hist);
-                if (periph && stats) stats->kept_periphery++;
+                if (!fovlp__finite(hist[0]) || !fovlp__finite(hist[1]) || !fovlp__finite(hist[2])) {
+                    /* a NaN / inf neighbour in this frame's colours (the caller's shading) */
+                    age = 1; periph = 0;
+                    hist[0] = hist[1] = hist[2] = 0.0f;
+                    if (stats) stats->rejected++;
+                } else if (periph && stats) {
+                    stats->kept_periphery++;
+                }
             }
             w = 1.0f / (float)age;
-            for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = hist[ch] + (cur[ch] - hist[ch]) * w;
+            for (ch = 0; ch < 3; ++ch) {
+                /* a non-finite current colour: keep the history (or 0 without one), so one bad
+                   sample cannot spread through the bilinear fetch and the clamp frame by frame */
+                float cc = fovlp__finite(cur[ch]) ? cur[ch] : (age > 1 ? hist[ch] : 0.0f);
+                io->out_rgb[3 * i + ch] = hist[ch] + (cc - hist[ch]) * w;
+            }
             io->out_age[i] = (uint8_t)(periph ? 1u : age);
         }
     return FOV_OK;
