@@ -1874,6 +1874,42 @@ static void test_layers_tiny(void)
     free(smem);
 }
 
+/* a failed fovpt_set_view leaves the view as it was (review finding: it kept the new camera) */
+static void test_set_view_atomic(void)
+{
+    layers_fixture F;
+    fovpt_camera cam, cam2;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output out;
+    size_t cb = 0;
+    void *cmem;
+    static float before[24 * 16 * 3], after[24 * 16 * 3];
+    fov_gaze g = { 0.0f, 0.0f }, far = { 3e38f, 0.0f };
+    fov_result r;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, 24, 16);
+    c.method = FOVPT_METHOD_LAYERS;
+    c.display.axis_dx = -3e38f;   /* legal; with a gaze at 3e38 the gaze ray overflows */
+    fovpt_memory_size(&c, &cam, &cb);
+    cmem = amalloc(cb);
+    r = fovpt_init(&ctx, &c, &F.b.s, &cam, g, cmem, cb);
+    fovpt_output_init(&out);
+    out.rgb = before;
+    if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, NULL);
+    cam2 = cam;
+    cam2.pos[0] += 0.5f;
+    {
+        fov_result rs = fovpt_set_view(&ctx, &cam2, far);
+        out.rgb = after;
+        if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, NULL);
+        check(r == FOV_OK && rs != FOV_OK && memcmp(before, after, sizeof before) == 0,
+              "set_view that fails (gaze ray overflows) leaves the view unchanged: same image", "init/render %d, set_view %d", (int)r, (int)rs);
+    }
+    free(cmem);
+    free(F.b.mem);
+}
+
 int main(void)
 {
     test_api();
@@ -1891,6 +1927,7 @@ int main(void)
     test_foveation_blocks();
     test_layers();
     test_layers_tiny();
+    test_set_view_atomic();
     test_zones();
     test_selective_rules();
     test_selective_render();
