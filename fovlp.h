@@ -138,7 +138,11 @@ ERRORS AND LOGGING
    overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
    gaze disc that covers the screen) is rejected with an error code before any work is done;
    nothing asserts on data. An optional fov_logger in the config receives each error (and a
-   warning when an off-screen gaze is clamped).
+   warning when an off-screen gaze is clamped). Bad data from the caller's shading does not
+   spread: fovlp_taa_rows never writes a NaN or infinite colour into the history (a
+   non-finite current colour keeps the history or gives 0, a non-finite fetched or clamped
+   history is rejected, a NaN depth fails the depth test); the reconstruction itself passes
+   the shaded values through as they are.
 
 THREADING
    fovlp_begin_frame writes the context; between two begin_frame calls the context is
@@ -252,6 +256,10 @@ typedef struct fov_gaze {
                                         (an HMD, or a window whose view matches the camera)
      pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
      all zero                           the rendering camera's vertical field of view.
+   All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
+   off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
+   image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -356,13 +364,15 @@ typedef struct fovlp_geometry {
     float G, u_g, w_c;      /* eq. 3.4, 3.5 */
     float u_max;            /* LP columns the screen needs from the current gaze */
     uint32_t lp_cols;       /* columns dispatched: min(lp_w, ceil(u_max)), >= 1 */
-    uint32_t disc_side;     /* S: disc buffer side; the disc has S x S slots (0: no disc) */
+    uint32_t disc_side;     /* S: side of the square around the disc, any gaze (0: no disc) */
+    uint32_t disc_cols, disc_rows; /* the disc buffer: min(S, W) x min(S, H) slots (a strip
+                               screen does not pay for a square of its long side) */
     uint32_t disc_x0, disc_y0, disc_w, disc_h; /* the current disc square on the screen */
     uint32_t lp_slots;      /* lp_w * lp_h: slot of texel (u, v) is v * lp_w + u */
-    uint32_t disc_offset;   /* slot of disc pixel (x, y) = disc_offset + (y - disc_y0) * S +
-                               (x - disc_x0) */
+    uint32_t disc_offset;   /* slot of disc pixel (x, y) = disc_offset + (y - disc_y0) *
+                               disc_cols + (x - disc_x0) */
     uint32_t centre_slot;   /* slot of the sample on the gaze point */
-    uint32_t samples;       /* slots in a sample buffer: lp_slots + S * S + 1 */
+    uint32_t samples;       /* slots in a sample buffer: lp_slots + disc_cols disc_rows + 1 */
 } fovlp_geometry;
 
 /* Pinhole camera for TAA reprojection, the same model as fovsdf_camera: screen point (x, y)
@@ -418,7 +428,8 @@ typedef struct fovlp_counts {
 } fovlp_counts;
 
 /* TAA buffers of one frame. Screen-size, tightly packed (3 floats per pixel for colour).
-   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame).
+   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame;
+   out_* equal to cur_rgb or prev_* is FOV_ERR_INVALID_ARG).
    cur_rgb/cur_depth: this frame's reconstruction (fovlp_reconstruct_rows with out_depth). */
 typedef struct fovlp_taa_io {
     const float *cur_rgb;
@@ -466,7 +477,9 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
 FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
 
-/* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). */
+/* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). Any finite
+   screen point maps; lp_to_screen gives FOV_ERR_LIMIT for a u so large that the point lies
+   beyond the float range. */
 FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u,
                                         float *v);
 FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, float *x,
@@ -493,7 +506,7 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 
 /* Reconstruction of screen rows [y0, y1) from the shaded samples into out_rgb (row stride in
    floats, 0: 3 W); out_depth (W floats per row, may be NULL) gets the depth of the nearest
-   sample (needs sample_depth). */
+   sample (needs sample_depth: FOV_ERR_NULL without). */
 FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
                                             const float *sample_depth, uint32_t y0,
                                             uint32_t y1, float *out_rgb, uint32_t out_stride,
@@ -847,7 +860,7 @@ FOVLP_API const char *fovlp_result_string(fov_result r)
     case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
     case FOV_ERR_NULL: return "a required pointer is NULL";
     case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
-    case FOV_ERR_DEGENERATE: return "degenerate camera, display or geometry";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
     case FOV_ERR_UNSUPPORTED: return "not supported by this build";
     default: return "unknown result code";
     }
@@ -991,7 +1004,13 @@ FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *d, floa
     m->gx = gaze.x;
     m->gy = gaze.y;
     v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovlp__finite3(v) || !fovlp__finite(fovlp__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    if (!fovlp__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fovlp__finite(fovlp__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
     fovlp__normalize(v);
     m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
     return FOV_OK;
@@ -1091,13 +1110,15 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
     }
     g->disc_side = S;
+    g->disc_cols = S < c->width ? S : c->width;
+    g->disc_rows = S < c->height ? S : c->height;
     lp = (size_t)g->lp_w * (size_t)g->lp_h;
-    slots = lp + (size_t)S * (size_t)S + 1u;
+    slots = lp + (size_t)g->disc_cols * (size_t)g->disc_rows + 1u;
     if (lp / g->lp_w != g->lp_h || slots > (size_t)FOVLP_MAX_SAMPLES || slots < lp)
         FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: sample slots above FOVLP_MAX_SAMPLES");
     g->lp_slots = (uint32_t)lp;
     g->disc_offset = (uint32_t)lp;
-    g->centre_slot = (uint32_t)(lp + (size_t)S * (size_t)S);
+    g->centre_slot = (uint32_t)(lp + (size_t)g->disc_cols * (size_t)g->disc_rows);
     g->samples = (uint32_t)slots;
     /* the gaze-dependent part */
     rmax = fovlp__far_corner(c, gaze);
@@ -1120,8 +1141,8 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         g->disc_y0 = (uint32_t)y0;
         g->disc_w = x1 > g->disc_x0 ? x1 - g->disc_x0 : 0;
         g->disc_h = y1 > g->disc_y0 ? y1 - g->disc_y0 : 0;
-        if (g->disc_w > S) g->disc_w = S;
-        if (g->disc_h > S) g->disc_h = S;
+        if (g->disc_w > g->disc_cols) g->disc_w = g->disc_cols;
+        if (g->disc_h > g->disc_rows) g->disc_h = g->disc_rows;
     }
     return FOV_OK;
 }
@@ -1251,6 +1272,12 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
     k = c.taa.halton_start + phase % n;
     *ou = m2 > 0.0f ? fovlp__halton(k, 2) * (0.5f / m2) : 0.5f;
     *ov = m3 > 0.0f ? fovlp__halton(k, 3) * (0.5f / m3) : 0.5f;
+    /* the scaling can push an offset to 1 or beyond for some (phases, halton_start), e.g.
+       3 phases from index 2: a sample must stay inside its texel / pixel (a disc sample at
+       x = W would be off the screen), so offsets are clamped to [0, 1) (the cycle's mean is
+       then slightly below 0.5 for those configurations; the defaults never clamp) */
+    if (*ou > 0.99999994f) *ou = 0.99999994f;
+    if (*ov > 0.99999994f) *ov = 0.99999994f;
     return FOV_OK;
 }
 
@@ -1333,8 +1360,15 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
 FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u, float *v)
 {
     const fovlp_geometry *g = &ctx->geo;
-    float r = FOVLP__SQRT(dx * dx + dy * dy);
+    float r2 = dx * dx + dy * dy, r;
     float a = FOVLP__ATAN2(dy, dx);
+    if (fovlp__finite(r2)) {
+        r = FOVLP__SQRT(r2);
+    } else { /* beyond ~1.8e19 px: scale first (fovlp_screen_to_lp takes any finite point) */
+        float m = fovlp__maxf(fovlp__absf(dx), fovlp__absf(dy)), sx = dx / m, sy = dy / m;
+        r = m * FOVLP__SQRT(sx * sx + sy * sy);
+        if (!fovlp__finite(r)) r = 3.4028235e38f;
+    }
     if (a < 0.0f) a += FOVLP__TWO_PI;
     *u = fovlp__pow(FOVLP__LOG(fovlp__maxf(r, 1.0f)) / g->L, ctx->cfg.alpha) * g->w_c - g->u_g;
     *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
@@ -1391,6 +1425,10 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
     a = FOVLP__TWO_PI * v / (float)g->lp_h;
     *x = ctx->gaze.x + rho * FOVLP__COS(a);
     *y = ctx->gaze.y + rho * FOVLP__SIN(a);
+    if (!fovlp__finite(*x) || !fovlp__finite(*y)) {   /* u far beyond the buffer */
+        *x = ctx->gaze.x; *y = ctx->gaze.y;
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "lp_to_screen: the point lies beyond the float range");
+    }
     return FOV_OK;
 }
 
@@ -1515,8 +1553,8 @@ FOVLP__PRIV void fovlp__visit_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r
             }
         } else if (r < g->lp_h + g->disc_h) {
             uint32_t k = r - g->lp_h, j = g->disc_y0 + k, i;
-            uint32_t base = g->disc_offset + k * g->disc_side;
-            for (i = 0; i < g->disc_side; ++i) {
+            uint32_t base = g->disc_offset + k * g->disc_cols;
+            for (i = 0; i < g->disc_cols; ++i) {
                 uint32_t px = g->disc_x0 + i;
                 int on = i < g->disc_w && fovlp__in_disc(ctx, px, j);
                 if (i >= g->disc_w && !vi->fn) break;
@@ -1689,7 +1727,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
-        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_side + (px - g->disc_x0);
+        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_cols + (px - g->disc_x0);
         rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
         *depth = sdep ? sdep[slot] : 0.0f;
         return;
@@ -1714,7 +1752,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
             uint32_t ix = (uint32_t)qx, iy = (uint32_t)qy;
             if (fovlp__in_disc(ctx, ix, iy) && ix >= g->disc_x0 && iy >= g->disc_y0 &&
                 ix - g->disc_x0 < g->disc_w && iy - g->disc_y0 < g->disc_h) {
-                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_side + (ix - g->disc_x0);
+                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_cols + (ix - g->disc_x0);
                 float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
                 float rin = FOVLP__SQRT(ex * ex + ey * ey);
                 float t = ctx->rho[0] > rin ? fovlp__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
@@ -1745,6 +1783,7 @@ FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *s
     uint32_t x, y, stride;
     if (!ctx || !sample_rgb || !out_rgb) return FOV_ERR_NULL;
     if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (out_depth && !sample_depth) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "reconstruct: out_depth needs sample_depth");
     if (x0 > x1 || y0 > y1 || x1 > ctx->geo.width || y1 > ctx->geo.height)
         FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: rows or tile out of range");
     stride = out_stride ? out_stride : 3u * ctx->geo.width;
@@ -1892,6 +1931,10 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     if (!io->cur_rgb || !io->out_rgb || !io->out_age) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: cur_rgb, out_rgb and out_age are required");
     if (ctx->history_valid && (!io->prev_rgb || !io->prev_age))
         FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: prev_rgb and prev_age are required after the first frame");
+    if ((const float *)io->out_rgb == io->cur_rgb || (const float *)io->out_rgb == io->prev_rgb ||
+        (io->out_depth && (const float *)io->out_depth == io->prev_depth) ||
+        (const uint8_t *)io->out_age == io->prev_age)   /* neighbourhoods and reprojection read them */
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: out_* must not alias cur_rgb or prev_* (swap buffers)");
     W = ctx->geo.width; H = ctx->geo.height;
     if (y0 > y1 || y1 > H) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: rows out of range");
     reproject = ctx->history_valid && ctx->moving;
@@ -1910,7 +1953,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (stats) stats->pixels++;
             if (io->out_depth) io->out_depth[i] = dc;
             if (!ctx->history_valid) {
-                io->out_rgb[3 * i] = cur[0]; io->out_rgb[3 * i + 1] = cur[1]; io->out_rgb[3 * i + 2] = cur[2];
+                /* a non-finite colour from the caller's shading never enters the history */
+                for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = fovlp__finite(cur[ch]) ? cur[ch] : 0.0f;
                 io->out_age[i] = 1;
                 continue;
             }
@@ -1936,7 +1980,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     } else {
                         float expect = fovlp__len(rel);
                         float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
-                        if (fovlp__absf(hd - expect) > c->taa.depth_tol * fovlp__maxf(hd, expect)) {
+                        if (!(fovlp__absf(hd - expect) <= c->taa.depth_tol * fovlp__maxf(hd, expect))) { /* NaN: differs */
                             float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
                             if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
                             else reject = 1;
@@ -1955,10 +1999,22 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                 if (periph && age > 2) age = 2; /* the kept history weighs at most 1/2 */
                 fovlp__fetch(io->prev_rgb, W, H, hx, hy, hist);
                 if (c->taa.clamp != FOVLP_CLAMP_NONE) fovlp__clamp_history(ctx, io->cur_rgb, x, y, hist);
-                if (periph && stats) stats->kept_periphery++;
+                if (!fovlp__finite(hist[0]) || !fovlp__finite(hist[1]) || !fovlp__finite(hist[2])) {
+                    /* a NaN / inf neighbour in this frame's colours (the caller's shading) */
+                    age = 1; periph = 0;
+                    hist[0] = hist[1] = hist[2] = 0.0f;
+                    if (stats) stats->rejected++;
+                } else if (periph && stats) {
+                    stats->kept_periphery++;
+                }
             }
             w = 1.0f / (float)age;
-            for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = hist[ch] + (cur[ch] - hist[ch]) * w;
+            for (ch = 0; ch < 3; ++ch) {
+                /* a non-finite current colour: keep the history (or 0 without one), so one bad
+                   sample cannot spread through the bilinear fetch and the clamp frame by frame */
+                float cc = fovlp__finite(cur[ch]) ? cur[ch] : (age > 1 ? hist[ch] : 0.0f);
+                io->out_rgb[3 * i + ch] = hist[ch] + (cc - hist[ch]) * w;
+            }
             io->out_age[i] = (uint8_t)(periph ? 1u : age);
         }
     return FOV_OK;

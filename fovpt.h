@@ -88,7 +88,9 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Degenerate triangles (zero area) are an error unless desc.skip_degenerate = 1.
    - Pixel jitter: uniform in the pixel (box filter), from the pixel's stream.
    - LAYERS (seed 002 sec. 3.2-3.4). Lattice of layer n >= 1: pixels (gx + k d, gy + l d),
-     (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d); layer 0: (k d, l d), static. A
+     (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d), the first one on the image taken
+     as the origin, clamped to column W - 1 / row H - 1 so that a stride wider than the image
+     with the gaze off it still leaves one point; layer 0: (k d, l d), static. A
      lattice point (pixel centre eccentricity e) is traced when
         e <= min(r_n + blend/2 + a_n, r_0 + a_n)  (layer n >= 1; the r_0 term with a mask)
         e <= r_0 + a_0                             (layer 0 with a mask; all points without)
@@ -103,7 +105,9 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      (Catmull-Rom overshoots). Blending (Eq. 3.18) from the outside in: C = F_0, then for
      n = 1 .. N-1: C = (1 - vb_n) C + vb_n F_n with vb_n = 1 at e <= r_n - blend/2, 0 at
      e >= r_n + blend/2, smoothstep (or linear) between; continuous across every border.
-     Pixels beyond the mask radius are black (not traced, as in the thesis).
+     Pixels beyond the mask radius are black (not traced, as in the thesis). Where the
+     innermost full-weight layer has no traced neighbour, the next layer outwards that has
+     one gives C (the outermost layer is traced wherever the mask lets it).
    - ZONES (seed 000 sec. 4.2): the thesis renders full frames and keeps every 2nd / 4th
      pixel (nearest neighbour); here only the kept pixels are traced: static lattices of
      stride 4 (everywhere), 2 (e <= middle_deg + overlap/2 + apron) and 1 (e <= inner_deg +
@@ -324,6 +328,10 @@ typedef struct fov_gaze {
                                         (an HMD, or a window whose view matches the camera)
      pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
      all zero                           the rendering camera's vertical field of view.
+   All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
+   off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
+   image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -1046,6 +1054,15 @@ FOVPT__PRIV float fovpt__normalize(float v[3])
     if (l > 0.0f && fovpt__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
     return l;
 }
+/* Brings a direction whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1 before normalising; other vectors
+   are untouched, bit for bit. For user input of "any length" (camera vectors, plane and
+   hook normals). */
+FOVPT__PRIV void fovpt__prescale(float v[3])
+{
+    float m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
+    if (m > 0.0f && fovpt__finite(m) && (m < 1e-15f || m > 1e15f)) { v[0] /= m; v[1] /= m; v[2] /= m; }
+}
 FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
 FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
 FOVPT__PRIV void fovpt__sub3(float d[3], const float a[3], const float b[3])
@@ -1300,6 +1317,8 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
     if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
+    fovpt__prescale(f);   /* a view vector of 1e-25 or an up hint of 1e-30 is valid */
+    fovpt__prescale(u);
     lf = fovpt__normalize(f);
     if (!(lf > 0.0f) || !fovpt__finite(lf)) return FOV_ERR_DEGENERATE;
     fovpt__normalize(u);
@@ -1544,7 +1563,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
         case FOVPT_SHAPE_PLANE:
-            if (!(fovpt__dot(s->u, s->u) > 1e-30f)) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "plane normal zero");
+            if (!(fovpt__absf(s->u[0]) > 0.0f || fovpt__absf(s->u[1]) > 0.0f || fovpt__absf(s->u[2]) > 0.0f))
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "plane normal zero");
             break;
         case FOVPT_SHAPE_QUAD: {
             float c[3];
@@ -1919,7 +1939,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p = &prims[np++];
         FOV_MEMSET(p, 0, sizeof *p);
         p->type = FOVPT_SHAPE_PLANE; p->material = sh->material; p->id = i;
-        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__normalize(p->n);
+        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__prescale(p->n); fovpt__normalize(p->n);
     }
     FOV_ASSERT(np == L.n_prims && nb == L.n_bounded);
     /* lights: sampleable emitters, picked by area * mean emission */
@@ -2275,7 +2295,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         float tu = t;
         un[0] = un[1] = un[2] = 0.0f;
         if (s->user_hit(org, dir, tmin, t, &tu, un, &umat, s->user) && tu > tmin && tu < t &&
-            umat < s->num_materials && fovpt__finite3(un) && fovpt__normalize(un) > 0.0f) {
+            umat < s->num_materials && fovpt__finite3(un) && (fovpt__prescale(un), fovpt__normalize(un) > 0.0f)) {
             t = tu;
             user = 1;
         }
@@ -2820,7 +2840,13 @@ FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *d, floa
     m->gx = gaze.x;
     m->gy = gaze.y;
     v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovpt__finite3(v) || !fovpt__finite(fovpt__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    if (!fovpt__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fovpt__finite(fovpt__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fovpt__maxf(fovpt__maxf(fovpt__absf(v[0]), fovpt__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
     fovpt__normalize(v);
     m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
     return FOV_OK;
@@ -2974,6 +3000,10 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
                 ox = ((gx % d_) + d_) % d_;
                 oy = ((gy % d_) + d_) % d_;
                 if (L->snap) ox = oy = 0;
+                /* a stride wider than the image with the gaze off it could leave the layer
+                   without a lattice point: keep at least one (column W - 1 / row H - 1) */
+                if (ox > (int32_t)cam->width - 1) ox = (int32_t)cam->width - 1;
+                if (oy > (int32_t)cam->height - 1) oy = (int32_t)cam->height - 1;
             }
             ctx->layer_ox[n] = (uint32_t)ox;
             ctx->layer_oy[n] = (uint32_t)oy;
@@ -3088,12 +3118,26 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
             (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y || gaze.y > ctx->gaze.y))
             moved = 1;
     }
-    ctx->cam = *cam;
-    ctx->gaze = gaze;
-    fovpt__copy3(ctx->right, r); fovpt__copy3(ctx->up, u); fovpt__copy3(ctx->fwd, f);
-    ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
-    e = fovpt__ctx_view(ctx);
-    if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "eccentricity model (display)");
+    {
+        /* a failed call leaves the view as it was (fovpt__ctx_view fails, if at all, in
+           fovpt_ecc_init, before it touches the layer tables) */
+        fov_gaze g0 = ctx->gaze;
+        fov_ecc_model ecc0 = ctx->ecc;
+        float r0[3], u0[3], f0[3], tt[4];
+        fovpt__copy3(r0, ctx->right); fovpt__copy3(u0, ctx->up); fovpt__copy3(f0, ctx->fwd);
+        tt[0] = ctx->tx0; tt[1] = ctx->tx1; tt[2] = ctx->ty0; tt[3] = ctx->ty1;
+        ctx->cam = *cam;
+        ctx->gaze = gaze;
+        fovpt__copy3(ctx->right, r); fovpt__copy3(ctx->up, u); fovpt__copy3(ctx->fwd, f);
+        ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
+        e = fovpt__ctx_view(ctx);
+        if (e != FOV_OK) {
+            ctx->cam = old; ctx->gaze = g0; ctx->ecc = ecc0;
+            fovpt__copy3(ctx->right, r0); fovpt__copy3(ctx->up, u0); fovpt__copy3(ctx->fwd, f0);
+            ctx->tx0 = tt[0]; ctx->tx1 = tt[1]; ctx->ty0 = tt[2]; ctx->ty1 = tt[3];
+            FOVPT__FAIL(&ctx->cfg.logger, e, "set_view: gaze or display geometry (the view is unchanged)");
+        }
+    }
     if (ctx->hist_slots) { /* the frame just rendered becomes history; nothing is reset */
         ctx->hist_cur = (ctx->hist_cur + 1u) % ctx->hist_slots;
         if (ctx->hist_valid + 1u < ctx->hist_slots) ctx->hist_valid++;
@@ -3443,6 +3487,7 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     int32_t kx, ky, i, j, ok = 1;
     float fx, fy, wx[4], wy[4], acc[3] = { 0.0f, 0.0f, 0.0f };
     int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n], ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
+    if (nx == 0 || ny == 0) return 0;   /* no lattice point (never, see fovpt__ctx_view) */
     kx = rx >= 0 ? rx / (int32_t)d : -(((-rx) + (int32_t)d - 1) / (int32_t)d);
     ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
     fx = (float)(rx - kx * (int32_t)d) / (float)d;
@@ -3549,7 +3594,14 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                     /* the innermost layer with full weight: nothing below it is needed */
                     for (n = L->count - 1u; n > 0; --n)
                         if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
-                    if (!fovpt__layer_value(ctx, top, x, y, c)) c[0] = c[1] = c[2] = 0.0f;
+                    if (!fovpt__layer_value(ctx, top, x, y, c)) {
+                        /* not available (untraced neighbours): the next layer outwards that
+                           has a value (the background layer covers every pixel) */
+                        uint32_t m;
+                        int got = 0;
+                        for (m = top + 1u; m < L->count && !got; ++m) got = fovpt__layer_value(ctx, m, x, y, c);
+                        if (!got) c[0] = c[1] = c[2] = 0.0f;
+                    }
                     for (n = top + 1u; n < L->count; ++n) {
                         float vb = fovpt__vb(L, n, e);
                         if (!(vb > 0.0f) || !fovpt__layer_value(ctx, n, x, y, f)) continue;

@@ -269,6 +269,10 @@ typedef struct fov_gaze {
                                         (an HMD, or a window whose view matches the camera)
      pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
      all zero                           the rendering camera's vertical field of view.
+   All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
+   off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
+   image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -1428,7 +1432,13 @@ FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *d, fl
     m->gx = gaze.x;
     m->gy = gaze.y;
     v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovsdf__finite3(v) || !fovsdf__finite(fovsdf__dot(v, v))) return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__finite(fovsdf__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fovsdf__maxf(fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
     fovsdf__normalize(v);
     m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
     return FOV_OK;

@@ -257,6 +257,19 @@ static void test_bad_input(void)
                   fovlp_screen_to_lp(&e.ctx, 1, INFINITY, &u, &v) == FOV_ERR_NOT_FINITE &&
                   fovlp_lp_to_screen(&e.ctx, -1e9f, 1, &u, &v) == FOV_ERR_INVALID_ARG,
               "bad input: NaN/inf points in the mappings, LP point inside the disc", " ");
+        {   /* finite but huge: screen_to_lp stays finite, lp_to_screen says LIMIT (not inf) */
+            float uu = -1.0f, vv = -1.0f, xx = 0.0f, yy = 0.0f;
+            fov_result r1 = fovlp_screen_to_lp(&e.ctx, 3e38f, -3e38f, &uu, &vv);
+            fov_result r2 = fovlp_lp_to_screen(&e.ctx, 1e30f, 3.0f, &xx, &yy);
+            check(r1 == FOV_OK && isfinite(uu) && isfinite(vv) && uu > 0.0f && r2 == FOV_ERR_LIMIT && isfinite(xx) && isfinite(yy),
+                  "bad input: mappings of points near the float range stay finite (LIMIT beyond)", "u %g v %g (%d), x %g y %g (%d)",
+                  (double)uu, (double)vv, (int)r1, (double)xx, (double)yy, (int)r2);
+        }
+        {
+            float dimg[320];
+            check(fovlp_reconstruct_rows(&e.ctx, e.srgb, NULL, 0, 1, img, 0, dimg) == FOV_ERR_NULL,
+                  "bad input: out_depth without sample_depth", " ");
+        }
         {
             fovlp_taa_io io;
             memset(&io, 0, sizeof io);
@@ -628,6 +641,22 @@ static void test_sampling(void)
         c.taa.halton_start = 16;
         fovlp_jitter(&c, 0, &ou, &ov);
         check(fabsf(ou - 0.0625f * 0.5f / 0.5f) > 0.0f, "jitter: a settable start index", " ");
+        {   /* every (phases, start) keeps every offset inside [0, 1): a disc sample of the last
+               column must not land at x = W (3 phases from index 2 scale 0.5 to exactly 1) */
+            uint32_t ph, st, worst_ph = 0, worst_st = 0;
+            float worst = 0.0f;
+            for (ph = 1; ph <= 64; ++ph)
+                for (st = 0; st <= 40; ++st) {
+                    c.taa.phases = ph; c.taa.halton_start = st;
+                    for (k = 0; k < ph; ++k)
+                        if (fovlp_jitter(&c, k, &ou, &ov) == FOV_OK) {
+                            float m = fmaxf(ou, ov);
+                            if (m > worst || !(ou >= 0.0f && ov >= 0.0f)) { worst = m; worst_ph = ph; worst_st = st; }
+                        }
+                }
+            check(worst < 1.0f, "jitter: offsets stay in [0, 1) for phases 1..64, start 0..40", "max %.9g at phases %u start %u",
+                  (double)worst, worst_ph, worst_st);
+        }
     }
 }
 
@@ -759,6 +788,28 @@ static void test_reconstruction(void)
         check(ok8 && bytes <= (g.lp_w + 2u * g.lp_h) * 4u + 64u && g.samples < 7680u * 4320u,
               "8K: geometry, memory ((w + 2h) floats of tables) and fewer slots than pixels", "%ux%u, %zu bytes, %u slots",
               g.lp_w, g.lp_h, bytes, g.samples);
+    }
+    /* strip screens: the disc buffer is min(S, W) x min(S, H), not a square of the long side */
+    {
+        static const uint32_t dims[5][2] = { { 65536, 1 }, { 65536, 16 }, { 20000, 8 }, { 7680, 64 }, { 7680, 1080 } };
+        int k, ok = 1;
+        double worst = 0.0;
+        for (k = 0; k < 5; ++k) {
+            fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, dims[k][0], dims[k][1]);
+            fovlp_geometry g;
+            fov_gaze gz;
+            double ratio;
+            gz.x = 0.5f * (float)dims[k][0]; gz.y = 0.5f * (float)dims[k][1];
+            if (fovlp_geometry_get(&c, gz, &g) != FOV_OK) { ok = 0; continue; }
+            ratio = (double)g.samples / ((double)dims[k][0] * (double)dims[k][1]);
+            if (g.disc_cols != (g.disc_side < dims[k][0] ? g.disc_side : dims[k][0]) ||
+                g.disc_rows != (g.disc_side < dims[k][1] ? g.disc_side : dims[k][1]) ||
+                g.samples != g.lp_slots + g.disc_cols * g.disc_rows + 1u || g.disc_w > g.disc_cols || g.disc_h > g.disc_rows)
+                ok = 0;
+            if (ratio > worst) worst = ratio;
+        }
+        check(ok && worst < 4.0, "strip screens (65536x1 .. 7680x1080): disc buffer min(S,W) x min(S,H), slots < 4 per pixel",
+              "worst %.2f slots per pixel", worst);
     }
     /* rows and tiles: any split gives the same image */
     {

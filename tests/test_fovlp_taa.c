@@ -164,6 +164,22 @@ static void test_still(void)
     fovlp_reset_history(&e.ctx);
     frame(&e, gz, NULL, shade_pattern, NULL, NULL);
     check(e.ctx.history_valid == 0, "TAA: fovlp_reset_history starts afresh", " ");
+    frame(&e, gz, NULL, shade_pattern, NULL, NULL);
+    {   /* in-place resolves would read pixels this call already overwrote: refused */
+        fovlp_taa_io io;
+        int kk, ok = 1;
+        for (kk = 0; kk < 4; ++kk) {
+            io.cur_rgb = e.cur; io.cur_depth = e.cdep;
+            io.prev_rgb = e.hist[e.ping]; io.prev_depth = e.hdep[e.ping]; io.prev_age = e.age[e.ping];
+            io.out_rgb = e.hist[1 - e.ping]; io.out_depth = e.hdep[1 - e.ping]; io.out_age = e.age[1 - e.ping];
+            if (kk == 0) io.out_rgb = e.cur;
+            if (kk == 1) io.out_rgb = e.hist[e.ping];
+            if (kk == 2) io.out_depth = e.hdep[e.ping];
+            if (kk == 3) io.out_age = e.age[e.ping];
+            if (fovlp_taa_rows(&e.ctx, &io, 0, H, NULL) != FOV_ERR_INVALID_ARG) ok = 0;
+        }
+        check(ok, "TAA: out_rgb / out_depth / out_age aliasing cur_rgb or prev_* is refused", " ");
+    }
     env_free(&e);
     env_free(&en);
     free(gt); free(prev_t); free(prev_r);
@@ -313,6 +329,52 @@ static void test_age(void)
     env_free(&e);
 }
 
+/* ---- a caller's shading that returns NaN / inf now and then ---------------------------- */
+typedef struct bad_shade { int frame; } bad_shade;
+static void shade_bad(float x, float y, float rgb[3], float *depth, void *user)
+{
+    const bad_shade *b = (const bad_shade *)user;
+    volatile float zero = 0.0f;
+    rgb[0] = rgb[1] = rgb[2] = 0.5f;
+    if (depth) *depth = 2.0f;
+    if ((b->frame == 0 || b->frame == 10) && fabsf(x - 160.5f) < 1.0f && fabsf(y - 90.5f) < 1.0f) rgb[1] = zero / zero;
+    if (b->frame == 20 && x < 40.0f && y < 30.0f) rgb[2] = 1.0f / zero;   /* a peripheral inf */
+    if (b->frame == 25 && depth && x > 280.0f) *depth = zero / zero;      /* NaN depths */
+}
+static void test_bad_samples(void)
+{
+    uint32_t clamp;
+    for (clamp = 0; clamp < 3; ++clamp) {
+        fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+        taa_env e;
+        fov_gaze gz = { 160.0f, 90.0f };
+        bad_shade b;
+        int nonfinite = 0;
+        uint32_t i, far = 0;
+        double worst = 0.0;
+        c.taa.enable = 1;
+        c.taa.clamp = clamp;
+        env_init(&e, &c);
+        for (b.frame = 0; b.frame < 40; ++b.frame) {
+            const float *o = frame(&e, gz, NULL, shade_bad, &b, NULL);
+            for (i = 0; i < W * H * 3; ++i) {
+                if (!isfinite(o[i])) nonfinite++;
+                if (b.frame == 39) {
+                    double d = fabs((double)o[i] - 0.5);
+                    if (d > worst) worst = d;
+                    if (d > 1e-3) far++;
+                }
+            }
+        }
+        printf("# clamp %u: non-finite %d, worst %.5f, off %u\n", clamp, nonfinite, worst, far);
+        check(nonfinite == 0 && worst < 0.05 && far < 16,
+              "TAA: NaN / inf colours and NaN depths from the shading never reach the output and fade (clamp none, aabb, variance)",
+              "clamp %u: %d non-finite values over 40 frames; frame 39: worst |out - 0.5| %.4f, %u values off by > 1e-3",
+              clamp, nonfinite, worst, far);
+        env_free(&e);
+    }
+}
+
 #ifdef FOV_NO_LIBM
 #define MODE "FOV_NO_LIBM"
 #else
@@ -325,5 +387,6 @@ int main(void)
     test_still();
     test_moving();
     test_age();
+    test_bad_samples();
     return fovcheck_summary();
 }

@@ -589,6 +589,74 @@ static int hook_nan(const float org[3], const float dir[3], float tmin, float tm
     return 1;
 }
 
+/* the hook sphere with its normal scaled by *(const float *)user ("any length") */
+static int hook_sphere_scaled(const float org[3], const float dir[3], float tmin, float tmax, float *t, float n[3],
+                              uint32_t *material, void *user)
+{
+    int k, r = hook_sphere(org, dir, tmin, tmax, t, n, material, NULL);
+    for (k = 0; k < 3; ++k) n[k] *= *(const float *)user;
+    return r;
+}
+
+/* vectors of "any length" whose squares under/overflow: hook normals, plane normals, camera
+   view and up vectors (review finding: dropped hits, black shading, DEGENERATE cameras) */
+static void test_any_length(void)
+{
+    static const float scales[4] = { 1e-25f, 1e-19f, 1e19f, 1e25f };
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    scene_buf a, b;
+    int k, i, bad = 0, cams = 0, planes = 0;
+    fovpt_material_init(&m);
+    fovpt_scene_desc_init(&d);
+    fovpt_shape_sphere(&sh, 0.0f, 0.0f, 5.0f, 1.0f, 0);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    build(&a, &d);
+    for (k = 0; k < 4; ++k) {
+        float sc = scales[k];
+        d.num_shapes = 0; d.shapes = NULL; d.user_hit = hook_sphere_scaled; d.user = &sc;
+        build(&b, &d);
+        for (i = 0; i < 200; ++i) {
+            float o[3] = { frand(-0.7f, 0.7f), frand(-0.7f, 0.7f), 0.0f }, dd[3] = { 0.0f, 0.0f, 1.0f };
+            fovpt_hit h1, h2;
+            int a1 = fovpt_intersect(&a.s, o, dd, 0.0f, FLT_MAX, &h1), a2 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+            if (a1 != a2 || !a1 || fabsf(h1.n[0] - h2.n[0]) > 1e-3f || fabsf(h1.n[2] - h2.n[2]) > 1e-3f) bad++;
+        }
+        free(b.mem);
+        d.user_hit = NULL; d.user = NULL;
+        {   /* a camera whose view vector and up hint are scaled alike gives the same rays */
+            fovpt_camera c0, c1;
+            float o0[3], d0[3], o1[3], d1[3];
+            fovpt_camera_init(&c0, 16, 9);
+            c0.pos[0] = 0.0f; c0.pos[1] = 0.0f; c0.pos[2] = 0.0f;
+            c0.target[0] = 0.3f; c0.target[1] = 0.2f; c0.target[2] = 1.0f;
+            c0.up[0] = 0.0f; c0.up[1] = 1.0f; c0.up[2] = 0.0f;
+            c1 = c0;
+            c1.target[0] *= sc; c1.target[1] *= sc; c1.target[2] *= sc; c1.up[1] = sc;
+            if (fovpt_camera_ray(&c0, 3.5f, 7.25f, o0, d0) == FOV_OK && fovpt_camera_ray(&c1, 3.5f, 7.25f, o1, d1) == FOV_OK &&
+                fabsf(d0[0] - d1[0]) < 1e-5f && fabsf(d0[1] - d1[1]) < 1e-5f && fabsf(d0[2] - d1[2]) < 1e-5f)
+                cams++;
+        }
+        {   /* a plane normal of any non-zero length */
+            fovpt_shape pl;
+            float pp[3] = { 0.0f, -1.0f, 0.0f }, pn[3] = { 0.0f, sc, 0.0f }, o[3] = { 0.0f, 0.0f, 0.0f }, dd[3] = { 0.0f, -1.0f, 0.2f };
+            fovpt_hit h;
+            fovpt_shape_plane(&pl, pp, pn, 0);
+            d.shapes = &pl; d.num_shapes = 1;
+            if (build(&b, &d) == FOV_OK) {
+                int hit = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h);
+                if (hit && fabsf(h.t - 1.0f) < 1e-4f && fabsf(h.n[1] - 1.0f) < 1e-5f) planes++;
+            }
+            free(b.mem);
+        }
+    }
+    check(bad == 0, "user hook normals scaled by 1e-25 .. 1e25 shade as the unit normal", "%d of 800 hits differ", bad);
+    check(cams == 4, "camera view vector and up hint scaled by 1e-25 .. 1e25: same rays", "%d of 4", cams);
+    check(planes == 4, "plane normals of length 1e-25 .. 1e25: accepted, hit with the unit normal", "%d of 4", planes);
+    free(a.mem);
+}
+
 static void test_user_hook(void)
 {
     fovpt_material m;
@@ -1301,6 +1369,8 @@ static void expected_targets_lay(const fovpt_layers_cfg *lay, double reach, cons
         double apron = (reach * sqrt(2.0) * (double)d + 1.0) / f_px * 180.0 / 3.141592653589793, tr;
         double r0 = (double)lay->layer[0].radius_deg;
         if (n > 0 && !lay->snap) { ox = ((gx % d) + d) % d; oy = ((gy % d) + d) % d; }
+        if (ox > (long)cam->width - 1) ox = (long)cam->width - 1;    /* at least one lattice point */
+        if (oy > (long)cam->height - 1) oy = (long)cam->height - 1;
         if (n == 0) tr = r0 > 0.0 ? r0 + apron : 1e30;
         else {
             tr = (double)lay->layer[n].radius_deg + 0.5 * (double)lay->blend_deg + apron;
@@ -1864,6 +1934,120 @@ static void test_temporal(void)
     free(b.mem);
 }
 
+/* LAYERS on images smaller than a layer's stride, the gaze off the image, empty scene: every
+   pixel must be the background (a layer without a lattice point read before its buffer and
+   left black pixels; review finding). Random layer tables, strides up to 64. */
+static void test_layers_tiny(void)
+{
+    fovpt_material mat;
+    fovpt_scene_desc d;
+    fovpt_scene sc;
+    size_t sb = 0;
+    void *smem;
+    int k, inits = 0, bad_cfg = 0;
+    uint32_t worst = 0;
+    fovpt_material_init(&mat);
+    fovpt_scene_desc_init(&d);
+    d.materials = &mat; d.num_materials = 1;
+    d.background[0] = d.background[1] = d.background[2] = 0.5f;
+    fovpt_scene_size(&d, &sb);
+    smem = amalloc(sb);
+    fovpt_scene_build(&sc, &d, smem, sb);
+    for (k = 0; k < 150; ++k) {
+        fovpt_camera cam;
+        fovpt_config c = fovpt_config_default();
+        fovpt_ctx ctx;
+        fovpt_output out;
+        size_t cb = 0;
+        void *cmem;
+        float *img;
+        uint32_t W = 1u + (uint32_t)(urand() * 60.0), H = 1u + (uint32_t)(urand() * 8.0), n, i, wrong = 0;
+        fov_gaze g;
+        if (k & 1) { uint32_t t = W; W = H; H = t; }
+        g.x = frand(-2.0f * (float)W, 3.0f * (float)W);
+        g.y = frand(-2.0f * (float)H, 3.0f * (float)H);
+        fovpt_camera_init(&cam, W, H);
+        c.method = FOVPT_METHOD_LAYERS;
+        c.layers.count = 2u + (uint32_t)(urand() * 3.0);
+        for (n = 0; n < c.layers.count; ++n) {
+            /* layer 0 outermost (radius: the occlusion mask, 0 = none), radii decreasing */
+            c.layers.layer[n].radius_deg = n == 0 ? ((k & 2) ? 150.0f : 0.0f) : 120.0f / (float)n;
+            c.layers.layer[n].stride = 1u + (uint32_t)(urand() * 64.0);
+            c.layers.layer[n].spp = 1;
+        }
+        if (fovpt_memory_size(&c, &cam, &cb) != FOV_OK) { bad_cfg++; continue; }
+        cmem = amalloc(cb);
+        img = (float *)malloc(sizeof(float) * 3u * W * H);
+        if (fovpt_init(&ctx, &c, &sc, &cam, g, cmem, cb) == FOV_OK) {
+            fov_ecc_model em;
+            inits++;
+            fovpt_output_init(&out);
+            out.rgb = img;
+            fovsdf_ecc_init(&em, NULL, cam.fov_y_deg, W, H, g);
+            if (fovpt_render(&ctx, 0, &out, NULL) != FOV_OK) wrong = W * H;
+            else
+                for (i = 0; i < 3u * W * H; ++i) {
+                    /* beyond the occlusion mask (layer 0's radius) the image is black by design */
+                    float e = fovsdf_ecc_deg(&em, (float)((i / 3u) % W) + 0.5f, (float)((i / 3u) / W) + 0.5f);
+                    float r0 = c.layers.layer[0].radius_deg, want = r0 > 0.0f && e > r0 + 1e-3f ? 0.0f : 0.5f;
+                    if (r0 > 0.0f && fabsf(e - r0) <= 1e-3f) continue;   /* on the border: either */
+                    wrong += !(fabsf(img[i] - want) <= 1e-5f);
+                }
+        } else {
+            bad_cfg++;
+        }
+        if (wrong > worst) worst = wrong;
+        if (wrong && getenv("DBG")) {
+            printf("# k %d: %ux%u gaze (%g, %g) count %u:", k, W, H, (double)g.x, (double)g.y, c.layers.count);
+            for (n = 0; n < c.layers.count; ++n) printf(" [r %g d %u o %u,%u n %ux%u]", (double)c.layers.layer[n].radius_deg, c.layers.layer[n].stride,
+                                                          ctx.layer_ox[n], ctx.layer_oy[n], ctx.layer_nx[n], ctx.layer_ny[n]);
+            printf(" wrong %u img0 %g\n", wrong, (double)img[0]);
+        }
+        free(img);
+        free(cmem);
+    }
+    check(inits >= 100 && worst == 0,
+          "layers: strides up to 64 on images of 1..60 x 1..8, gaze off the image, empty scene: background inside the mask, black beyond",
+          "%d of 150 configs ran (%d refused); worst %u wrong values", inits, bad_cfg, worst);
+    free(smem);
+}
+
+/* a failed fovpt_set_view leaves the view as it was (review finding: it kept the new camera) */
+static void test_set_view_atomic(void)
+{
+    layers_fixture F;
+    fovpt_camera cam, cam2;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output out;
+    size_t cb = 0;
+    void *cmem;
+    static float before[24 * 16 * 3], after[24 * 16 * 3];
+    fov_gaze g = { 0.0f, 0.0f }, far = { 3e38f, 0.0f };
+    fov_result r;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, 24, 16);
+    c.method = FOVPT_METHOD_LAYERS;
+    c.display.axis_dx = -3e38f;   /* legal; with a gaze at 3e38 the gaze ray overflows */
+    fovpt_memory_size(&c, &cam, &cb);
+    cmem = amalloc(cb);
+    r = fovpt_init(&ctx, &c, &F.b.s, &cam, g, cmem, cb);
+    fovpt_output_init(&out);
+    out.rgb = before;
+    if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, NULL);
+    cam2 = cam;
+    cam2.pos[0] += 0.5f;
+    {
+        fov_result rs = fovpt_set_view(&ctx, &cam2, far);
+        out.rgb = after;
+        if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, NULL);
+        check(r == FOV_OK && rs != FOV_OK && memcmp(before, after, sizeof before) == 0,
+              "set_view that fails (gaze ray overflows) leaves the view unchanged: same image", "init/render %d, set_view %d", (int)r, (int)rs);
+    }
+    free(cmem);
+    free(F.b.mem);
+}
+
 int main(void)
 {
     test_api();
@@ -1872,6 +2056,7 @@ int main(void)
     test_scene_bad();
     test_bvh_random();
     test_user_hook();
+    test_any_length();
     test_rng();
     test_bsdf();
     test_furnace();
@@ -1880,6 +2065,8 @@ int main(void)
     test_render();
     test_foveation_blocks();
     test_layers();
+    test_layers_tiny();
+    test_set_view_atomic();
     test_zones();
     test_selective_rules();
     test_selective_render();

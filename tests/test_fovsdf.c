@@ -396,6 +396,33 @@ static void test_sizes(void)
                FOV_ERR_LIMIT);
     expect_res("ecc_init_height_above_max_dim", fovsdf_ecc_init(&em, NULL, 60.0f, 64, FOVSDF_MAX_DIM + 1u, b.gaze),
                FOV_ERR_LIMIT);
+    { /* a finite gaze however far off-screen is valid (the shared block says so): the model
+         keeps its direction; eccentricities against a double-precision reference */
+        static const float far[4][2] = { { 3e38f, -3e38f }, { 2e19f, 0.0f }, { -1e30f, 1e30f }, { 0.0f, 5e25f } };
+        int k, ok_codes = 1, ok_deg = 1;
+        double worst = 0.0;
+        for (k = 0; k < 4; k++) {
+            fov_gaze gf = gaze_at(far[k][0], far[k][1]);
+            fovsdf_ctx fctx;
+            int x, y;
+            if (fovsdf_ecc_init(&em, NULL, 60.0f, 64, 36, gf) != FOV_OK ||
+                fovsdf_init(&fctx, &b.cfg, &b.sc, &b.cam, gf, NULL, 0) != FOV_OK) { ok_codes = 0; continue; }
+            for (y = 0; y < 36; y += 7)
+                for (x = 0; x < 64; x += 9) {
+                    /* the gaze ray's direction: (gx - cx, gy - cy, f) scaled, in double */
+                    double f = 18.0 / tan(30.0 * 3.14159265358979323846 / 180.0), gx = (double)far[k][0] - 32.0, gy = (double)far[k][1] - 18.0;
+                    double sc = fabs(gx) > fabs(gy) ? fabs(gx) : fabs(gy), g0 = gx / sc, g1 = gy / sc, g2 = f / sc;
+                    double v0 = x + 0.5 - 32.0, v1 = y + 0.5 - 18.0, v2 = f;
+                    double c = (v0 * g0 + v1 * g1 + v2 * g2) / sqrt((v0 * v0 + v1 * v1 + v2 * v2) * (g0 * g0 + g1 * g1 + g2 * g2));
+                    double ref = acos(c < -1.0 ? -1.0 : c > 1.0 ? 1.0 : c) * 180.0 / 3.14159265358979323846;
+                    double got = (double)fovsdf_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f), e = fabs(got - ref);
+                    if (!(e <= 0.01)) ok_deg = 0;
+                    if (e > worst || e != e) worst = e;
+                }
+        }
+        check(ok_codes, "far_offscreen_gaze_accepted", "ecc_init and init with gazes up to 3e38 px off the screen");
+        check(ok_deg, "far_offscreen_gaze_ecc_deg", "worst |ecc - double reference| = %g deg (limit 0.01)", worst);
+    }
     cam = b.cam; cam.width = 0;
     expect_res("memory_size_width_0", fovsdf_memory_size(&b.cfg, &cam, &bytes), FOV_ERR_INVALID_ARG);
     cam = b.cam; cam.height = FOVSDF_MAX_DIM + 1u;

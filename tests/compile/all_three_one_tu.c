@@ -51,5 +51,16 @@ int main(void)
 #ifdef FOV_HAVE_FOVLP
     if (tiny_lp() != 0) return tiny_lp();
 #endif
+#if defined(FOV_HAVE_FOVSDF) && defined(FOV_HAVE_FOVLP) && defined(FOV_HAVE_FOVPT)
+    { /* the shared result codes read the same in every header */
+        int code;
+        for (code = -16; code <= 16; ++code) {
+            const char *a = fovsdf_result_string((fov_result)code), *b = fovlp_result_string((fov_result)code),
+                       *c = fovpt_result_string((fov_result)code);
+            while (*a && *a == *b && *a == *c) { ++a; ++b; ++c; }
+            if (*a != *b || *a != *c) return 200;
+        }
+    }
+#endif
     return 0;
 }
