@@ -1172,6 +1172,16 @@ FOVSDF__PRIV float fovsdf__normalize(float v[3])
     if (l > 0.0f && fovsdf__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
     return l;
 }
+/* Brings a direction whose length would underflow or overflow in the squares (components
+   below 1e-15 or above 1e15) to a largest component of 1 first; other vectors are left
+   untouched (bit for bit). */
+FOVSDF__PRIV void fovsdf__prescale(float v[3])
+{
+    float m = fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__maxf(fovsdf__absf(v[1]), fovsdf__absf(v[2])));
+    if (m > 0.0f && fovsdf__finite(m) && (m < 1e-15f || m > 1e15f)) {
+        v[0] /= m; v[1] /= m; v[2] /= m;
+    }
+}
 FOVSDF__PRIV size_t fovsdf__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
 
 #if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
@@ -1360,6 +1370,8 @@ FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[
     f[2] = cam->target[2] - cam->pos[2];
     u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
     if (fovsdf__is0(u[0]) && fovsdf__is0(u[1]) && fovsdf__is0(u[2])) u[1] = 1.0f;
+    fovsdf__prescale(f); /* a tiny (1e-30) or huge (1e30) up hint or view vector is valid */
+    fovsdf__prescale(u);
     lf = fovsdf__normalize(f);
     if (!(lf > 0.0f) || !fovsdf__finite(lf) || !fovsdf__finite3(f)) return FOV_ERR_DEGENERATE;
     if (!(fovsdf__normalize(u) > 0.0f) || !fovsdf__finite3(u)) return FOV_ERR_DEGENERATE;
