@@ -135,7 +135,9 @@ ERRORS AND LOGGING
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done; nothing asserts on data. An optional
-   fov_logger in the config receives a message with each error.
+   fov_logger in the config receives a message with each error. Non-finite values from your
+   callbacks never reach the image: a NaN or infinite distance ends the ray as a miss, a NaN
+   or infinite albedo channel is taken as 0.
 
 THREADING
    No function keeps state between calls except in the objects you pass. fovsdf_init fills a
@@ -178,6 +180,10 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   unreleased         a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
+                      valid (was FOV_ERR_DEGENERATE: the squared length under/overflowed);
+                      a NaN or infinite albedo from the callback is taken as 0 (was a NaN
+                      pixel).
    0.2.0 (2026-11-23) FIPR and CONE_FOV (foveated head starts, periphery refresh, mask output,
                       fovsdf_mask_blur), tile output buffers (fovsdf_output.origin_x/y),
                       fovsdf_program_compact; fovsdf_output gained fields (zero them with
@@ -2761,7 +2767,13 @@ FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t 
         { 0.80f, 0.80f, 0.80f }, { 0.0f, 0.0f, 0.0f }, { 0.85f, 0.30f, 0.25f }, { 0.30f, 0.55f, 0.85f },
         { 0.90f, 0.75f, 0.30f }, { 0.35f, 0.75f, 0.40f }, { 0.70f, 0.45f, 0.80f }, { 0.92f, 0.90f, 0.85f }
     };
-    if (c->scene.albedo) { c->scene.albedo(p, mat, rgb, c->scene.user); return; }
+    if (c->scene.albedo) {
+        int i;
+        c->scene.albedo(p, mat, rgb, c->scene.user);
+        for (i = 0; i < 3; ++i)
+            if (!fovsdf__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
+        return;
+    }
     if (mat == 1) { /* checkerboard on x/z, unit squares */
         int32_t ix = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
         int32_t iz = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));

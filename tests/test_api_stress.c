@@ -206,6 +206,13 @@ static void lp_shade(float x, float y, float rgb[3], float *depth, void *user)
     if (depth) *depth = 2.0f + sinf(0.05f * x) * cosf(0.07f * y);
 }
 
+static void lp_shade_const(float x, float y, float rgb[3], float *depth, void *user)
+{
+    (void)x; (void)y; (void)user;
+    rgb[0] = rgb[1] = rgb[2] = 0.8f;
+    if (depth) *depth = 2.0f;
+}
+
 typedef struct lp_env {
     fovlp_ctx ctx;
     void *mem;
@@ -284,6 +291,31 @@ static void lp_frame_checks(lp_env *e, const char *tag_in, float *img, float *de
           "%zu of %u values NaN, unwritten or outside the shaded range", count_bad(img, 3u * (size_t)W * H, 0.049f, 0.951f), 3u * W * H);
     check(count_bad(dep, (size_t)W * H, 0.99f, 3.01f) == 0, N("%s_reconstruct_depth", tag),
           "%zu depths outside [1, 3]", count_bad(dep, (size_t)W * H, 0.99f, 3.01f));
+    /* the same image from odd tiles in reverse order (threads may split it any way) */
+    {
+        float *img2 = img_alloc(3u * W * H), *dep2 = img_alloc((size_t)W * H);
+        uint32_t tx, ty, tw = W / 3u + 1u, th = H / 2u + 1u, diff = 0;
+        size_t q;
+        r = FOV_OK;
+        for (ty = H; ty-- > 0 && r == FOV_OK;)
+            if (ty % th == 0)
+                for (tx = W; tx-- > 0 && r == FOV_OK;)
+                    if (tx % tw == 0)
+                        r = fovlp_reconstruct_tile(c, e->srgb, e->sdep, tx, ty, tx + tw < W ? tx + tw : W,
+                                                   ty + th < H ? ty + th : H, img2, 0, dep2);
+        for (q = 0; q < 3u * (size_t)W * H; ++q) diff += memcmp(&img[q], &img2[q], sizeof(float)) != 0;
+        for (q = 0; q < (size_t)W * H; ++q) diff += memcmp(&dep[q], &dep2[q], sizeof(float)) != 0;
+        check(r == FOV_OK && diff == 0 && canary_ok(img2, 3u * W * H), N("%s_tiles_equal_rows", tag), "r %d, %u values differ", (int)r, diff);
+        free(img2); free(dep2);
+    }
+    /* a constant scene reconstructs to that constant everywhere (renormalised convex weights:
+       an unshaded slot mixed in would pull a pixel down) */
+    r = fovlp_shade_rows(c, 0, rows, lp_shade_const, NULL, e->srgb, e->sdep, NULL);
+    if (r == FOV_OK) r = fovlp_reconstruct_rows(c, e->srgb, e->sdep, 0, H, img, 0, dep);
+    check(r == FOV_OK && count_bad(img, 3u * (size_t)W * H, 0.8f - 1e-5f, 0.8f + 1e-5f) == 0 &&
+              count_bad(dep, (size_t)W * H, 2.0f, 2.0f) == 0,
+          N("%s_reconstruct_constant", tag), "r %d: %zu values differ from the constant 0.8, %zu depths from 2", (int)r,
+          count_bad(img, 3u * (size_t)W * H, 0.8f - 1e-5f, 0.8f + 1e-5f), count_bad(dep, (size_t)W * H, 2.0f, 2.0f));
 }
 
 static const uint32_t g_sizes[][2] = { { 1, 1 }, { 2, 1 }, { 1, 3 }, { 7, 13 }, { 33, 31 }, { 97, 5 } };
@@ -813,24 +845,47 @@ static void case_pt_scenes(void)
     fovpt_camera_init(&cam, 16, 12);
     cam.pos[2] = -5.0f;
 
-    /* zero primitives: the background everywhere (an independent expectation) */
+    /* zero primitives: the background everywhere (an independent expectation), for every
+       method (the Catmull-Rom, Lanczos and bilinear fills of a constant are that constant),
+       mode, odd sizes and gazes off the screen */
     d = pt_desc(mats, 1);
     d.background[0] = 0.25f; d.background[1] = 0.5f; d.background[2] = 0.75f;
     r = pt_build(&e, &d);
     check(r == FOV_OK && e.scene.num_prims == 0, "pt_empty_scene", "r %d", (int)r);
-    if (r == FOV_OK && pt_init(&e, &cfg, &cam, g) == FOV_OK) {
-        float *img = img_alloc(3u * 16 * 12);
-        fovpt_output out;
-        size_t i, bad = 0;
-        fovpt_output_init(&out);
-        out.rgb = img;
-        r = fovpt_render(&e.ctx, 0, &out, NULL);
-        for (i = 0; i < 16u * 12u; ++i)
-            bad += fabsf(img[3 * i] - 0.25f) > 1e-6f || fabsf(img[3 * i + 1] - 0.5f) > 1e-6f || fabsf(img[3 * i + 2] - 0.75f) > 1e-6f;
-        check(r == FOV_OK && bad == 0 && canary_ok(img, 3u * 16 * 12), "pt_empty_scene_background", "r %d, %zu pixels differ", (int)r, bad);
-        free(img);
-    } else {
-        check(0, "pt_empty_scene_background", "init failed");
+    {
+        uint32_t m, si, k;
+        for (m = 0; m < (uint32_t)_FOVPT_METHOD_NUM && r == FOV_OK; ++m)
+            for (si = 0; si < NSIZES; ++si)
+                for (k = 0; k < 3; ++k) {
+                    uint32_t W = g_sizes[si][0], H = g_sizes[si][1];
+                    fovpt_config c2 = fovpt_config_default();
+                    fovpt_camera cm;
+                    fov_gaze gz;
+                    float *img = img_alloc(3u * W * H);
+                    fovpt_output out;
+                    size_t i, bad = 0;
+                    fov_result r2;
+                    c2.method = m;
+                    c2.mode = k == 1 ? 1u : 0u;
+                    /* no occlusion mask: every pixel belongs to some layer */
+                    if (m == FOVPT_METHOD_LAYERS) { fovpt_layers_preset(&c2.layers, FOVPT_LAYERS_KTH_RADIUS); c2.layers.layer[0].radius_deg = 0.0f; }
+                    fovpt_camera_init(&cm, W, H);
+                    cm.pos[2] = -5.0f;
+                    gz.x = k == 0 ? 0.5f * (float)W : -1e4f;
+                    gz.y = k == 2 ? 1e6f : 0.5f * (float)H;
+                    free(e.cmem); e.cmem = NULL;
+                    r2 = pt_init(&e, &c2, &cm, gz);
+                    fovpt_output_init(&out);
+                    out.rgb = img;
+                    if (r2 == FOV_OK) r2 = fovpt_render(&e.ctx, 0, &out, NULL);
+                    for (i = 0; i < (size_t)W * H; ++i)
+                        bad += fabsf(img[3 * i] - 0.25f) > 1e-5f || fabsf(img[3 * i + 1] - 0.5f) > 1e-5f ||
+                               fabsf(img[3 * i + 2] - 0.75f) > 1e-5f || img[3 * i] != img[3 * i];
+                    check(r2 == FOV_OK && bad == 0 && canary_ok(img, 3u * W * H),
+                          N("pt_empty_scene_background_%s_%ux%u_%u", fovpt_method_name(m), W, H, k),
+                          "r %d, %zu of %u pixels differ from the background", (int)r2, bad, W * H);
+                    free(img);
+                }
     }
     pt_free(&e);
 
@@ -1359,6 +1414,25 @@ static void case_pt_fuzz(void)
             check(0, N("%s_init", tag), "r %d (%s) method %u %ux%u gaze %g %g", (int)r, fovpt_result_string(r), cfg.method, W, H,
                   (double)g.x, (double)g.y);
         } else {
+            /* phases row by row, rows in reverse order, against fovpt_render (the frame of a
+               fresh context each) */
+            {
+                float *a = img_alloc(3u * W * H), *b = img_alloc(3u * W * H);
+                fovpt_output oa, ob;
+                uint32_t y, diff = 0;
+                size_t q;
+                fovpt_output_init(&oa); oa.rgb = a;
+                fovpt_output_init(&ob); ob.rgb = b;
+                r = fovpt_render(&e.ctx, 0, &oa, NULL);
+                if (r == FOV_OK) r = fovpt_reset(&e.ctx);
+                for (y = H; y-- > 0 && r == FOV_OK;) r = fovpt_trace_rows(&e.ctx, 0, y, y + 1u, NULL);
+                for (y = H; y-- > 0 && r == FOV_OK;) r = fovpt_refine_rows(&e.ctx, 0, y, y + 1u, NULL);
+                for (y = H; y-- > 0 && r == FOV_OK;) r = fovpt_resolve_rows(&e.ctx, y, y + 1u, &ob);
+                for (q = 0; q < 3u * (size_t)W * H; ++q) diff += memcmp(&a[q], &b[q], sizeof(float)) != 0;
+                check(r == FOV_OK && diff == 0, N("%s_rows_reversed_equal", tag), "r %d, %u values differ", (int)r, diff);
+                free(a); free(b);
+                r = fovpt_reset(&e.ctx);
+            }
             pt_render_check(&e, tag, 0.0f, 1e4f);
             /* the next frame: a moved camera and gaze */
             cam.pos[0] += 0.1f;
@@ -1736,6 +1810,67 @@ static void case_sdf_bad_input(void)
     free(mem);
 }
 
+/* hostile scene fields and callbacks: NaN lights, sky, ambient, Lipschitz bound, t_max are
+   rejected; a NaN albedo or distance from the user's callbacks never reaches the image */
+static float unit_sphere(const float p[3], void *u) { (void)u; return sqrtf(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.0f; }
+static float nan_sphere(const float p[3], void *u) { (void)u; return p[0] > 0.3f ? f_nan() : unit_sphere(p, u); }
+static void nan_albedo(const float p[3], int32_t m, float rgb[3], void *u)
+{
+    (void)m; (void)u;
+    rgb[0] = p[1] > 0.0f ? f_nan() : 0.5f;
+    rgb[1] = p[1] > 0.0f ? 0.5f : f_inf();
+    rgb[2] = -f_inf();
+}
+static void case_sdf_scene(void)
+{
+    int i;
+    for (i = 0; i < 15; ++i) {
+        fovsdf_scene sc;
+        fovsdf_camera cam;
+        fovsdf_ctx ctx;
+        fovsdf_config cfg = fovsdf_config_default();
+        fov_gaze g = { 8.0f, 6.0f };
+        float *rgb = img_alloc(3u * 16 * 12);
+        fovsdf_output out;
+        fov_result r, want = FOV_ERR_NOT_FINITE;
+        tlog t;
+        fovsdf_scene_init(&sc);
+        sc.dist = unit_sphere;
+        fovsdf_camera_init(&cam, 16, 12);
+        cam.pos[2] = -4.0f;
+        switch (i) {
+        case 0: want = FOV_OK; break;
+        case 1: sc.ambient[1] = f_nan(); break;
+        case 2: sc.lights[0].color[0] = f_inf(); break;
+        case 3: sc.lights[0].v[0] = sc.lights[0].v[1] = sc.lights[0].v[2] = 0.0f; want = FOV_OK; break;  /* no light */
+        case 4: sc.lights[0].v[1] = f_nan(); break;
+        case 5: sc.num_lights = FOVSDF_MAX_LIGHTS + 1u; want = FOV_ERR_LIMIT; break;
+        case 6: sc.lights[0].type = 7; want = FOV_ERR_INVALID_ARG; break;
+        case 7: sc.lipschitz = f_nan(); break;
+        case 8: sc.lipschitz = -2.0f; want = FOV_ERR_INVALID_ARG; break;
+        case 9: sc.t_max = f_nan(); break;
+        case 10: sc.sky_zenith[2] = f_inf(); break;
+        case 11: sc.lights[0].type = FOVSDF_LIGHT_POINT; sc.lights[0].range = f_nan(); break;
+        case 12: sc.lights[0].shadow_k = f_nan(); break;
+        case 13: sc.albedo = nan_albedo; want = FOV_OK; break;
+        default: sc.dist = nan_sphere; sc.albedo = nan_albedo; want = FOV_OK; break;
+        }
+        cfg.logger = mk_logger(&t);
+        r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
+        if (want != FOV_OK) {
+            expect_logged(N("sdf_scene_bad_%d", i), r, want, &t);
+        } else {
+            fovsdf_output_init(&out);
+            out.rgb = rgb;
+            if (r == FOV_OK) r = fovsdf_render_rows(&ctx, 0, 12, &out, NULL);
+            check(r == FOV_OK && count_bad(rgb, 3u * 16 * 12, 0.0f, 1e3f) == 0 && canary_ok(rgb, 3u * 16 * 12),
+                  N("sdf_scene_ok_%d_finite", i), "r %d, %zu values NaN, infinite or negative", (int)r,
+                  count_bad(rgb, 3u * 16 * 12, 0.0f, 1e3f));
+        }
+        free(rgb);
+    }
+}
+
 /* programs with degenerate nodes: cycles, self references, zero sizes, NaN parameters */
 static float sdf_eval_range(const fovsdf_program *p, float *out_min)
 {
@@ -1943,7 +2078,7 @@ int main(int argc, char **argv)
         { "sdf_bad_input", case_sdf_bad_input }, { "sdf_programs", case_sdf_programs },
         { "cross", case_cross },             { "pt_fuzz", case_pt_fuzz },
         { "pt_user_hook", case_pt_user_hook }, { "lp_fuzz", case_lp_fuzz },
-        { "pt_temporal", case_pt_temporal },
+        { "pt_temporal", case_pt_temporal }, { "sdf_scene", case_sdf_scene },
     };
     size_t i;
     for (i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
