@@ -1606,6 +1606,40 @@ static void case_pt_fill_fuzz(void)
         free(img);
         free(e.cmem); e.cmem = NULL;
     }
+    /* SELECTIVE / JIN with temporal reuse and smoothing over moving frames: still the
+       background everywhere */
+    for (it = 0; it < 40; ++it) {
+        uint32_t W = 1u + (uint32_t)(urand() * 40.0), H = 1u + (uint32_t)(urand() * 30.0), f;
+        fovpt_config cfg = fovpt_config_default();
+        fovpt_camera cam;
+        fov_gaze g;
+        fov_result r;
+        float *img = img_alloc(3u * W * H);
+        fovpt_output out;
+        size_t i, bad = 0;
+        cfg.method = it % 2 ? FOVPT_METHOD_SELECTIVE : FOVPT_METHOD_JIN;
+        cfg.temporal.reuse = 1; cfg.temporal.smooth = 1;
+        cfg.temporal.n_tpi = 1u + (uint32_t)(urand() * 4.0);
+        cfg.accumulate = it % 3 == 0 ? 1u : 0u;
+        fovpt_camera_init(&cam, W, H);
+        g.x = frand(-1.0f * (float)W, 2.0f * (float)W);
+        g.y = frand(-1.0f * (float)H, 2.0f * (float)H);
+        r = pt_init(&e, &cfg, &cam, g);
+        fovpt_output_init(&out);
+        out.rgb = img;
+        for (f = 0; f < 6 && r == FOV_OK; ++f) {
+            r = fovpt_render(&e.ctx, f, &out, NULL);
+            for (i = 0; i < (size_t)W * H && r == FOV_OK; ++i)
+                bad += fabsf(img[3 * i] - 0.25f) > 1e-5f || fabsf(img[3 * i + 1] - 0.5f) > 1e-5f ||
+                       fabsf(img[3 * i + 2] - 0.75f) > 1e-5f || img[3 * i] != img[3 * i];
+            cam.pos[0] += f == 2 ? 1e3f : 0.1f;
+            g.x += frand(-3.0f, 3.0f);
+            if (r == FOV_OK) r = fovpt_set_view(&e.ctx, &cam, g);
+        }
+        check(r == FOV_OK && bad == 0 && canary_ok(img, 3u * W * H), N("pt_fill_temporal_%d", it), "r %d, %zu pixel-frames differ", (int)r, bad);
+        free(img);
+        free(e.cmem); e.cmem = NULL;
+    }
     pt_free(&e);
 }
 
