@@ -183,7 +183,7 @@ RECENT REVISION HISTORY
    unreleased         a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
                       valid (was FOV_ERR_DEGENERATE: the squared length under/overflowed);
                       a NaN or infinite albedo from the callback is taken as 0 (was a NaN
-                      pixel).
+                      pixel); a failed fovsdf_init leaves an existing context unchanged.
    0.2.0 (2026-11-23) FIPR and CONE_FOV (foveated head starts, periphery refresh, mask output,
                       fovsdf_mask_blur), tile output buffers (fovsdf_output.origin_x/y),
                       fovsdf_program_compact; fovsdf_output gained fields (zero them with
@@ -722,7 +722,8 @@ FOVSDF_API float fovsdf_u01(uint32_t seed, uint32_t x, uint32_t y, uint32_t fram
 /* Working memory for a config and camera (0 for the tracers of this version). */
 FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam,
                                          size_t *bytes);
-/* Validates everything and fills ctx. mem may be NULL when the size is 0. */
+/* Validates everything and fills ctx (a failed call leaves ctx unchanged, so a context can
+   be re-initialised in place and kept when that fails). mem may be NULL when the size is 0. */
 FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
                                   const fovsdf_scene *scene, const fovsdf_camera *cam,
                                   fov_gaze gaze, void *mem, size_t mem_size);
@@ -2939,7 +2940,8 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     const fov_logger *lg = cfg ? &cfg->logger : 0;
     fov_result r;
     size_t need;
-    float tanh, fov;
+    float tanh, fov, rt[3], up[3], fw[3];
+    fov_ecc_model em;
     if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
     if (cfg) {
         r = fovsdf_config_resolve(cfg, &c);
@@ -2954,19 +2956,24 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
     fov = fovsdf__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
-    r = fovsdf_camera_basis(cam, ctx->right, ctx->up, ctx->fwd);
+    r = fovsdf_camera_basis(cam, rt, up, fw);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
     r = fovsdf_memory_size(&c, cam, &need);
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
+    r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze too far off the image (about 1e19 pixels) or display geometry");
+    /* everything is valid: only now is ctx written (a failed call leaves it as it was) */
+    ctx->right[0] = rt[0]; ctx->right[1] = rt[1]; ctx->right[2] = rt[2];
+    ctx->up[0] = up[0]; ctx->up[1] = up[1]; ctx->up[2] = up[2];
+    ctx->fwd[0] = fw[0]; ctx->fwd[1] = fw[1]; ctx->fwd[2] = fw[2];
+    ctx->ecc = em;
     ctx->cfg = c;
     ctx->scene = *scene;
     if (fovsdf__is0(ctx->scene.lipschitz)) ctx->scene.lipschitz = 1.0f;
     ctx->cam = *cam;
     ctx->cam.fov_y_deg = fov;
     ctx->gaze = gaze;
-    r = fovsdf_ecc_init(&ctx->ecc, &c.display, fov, cam->width, cam->height, gaze);
-    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze or display geometry");
     ctx->origin[0] = cam->pos[0] + ctx->right[0] * cam->eye_offset;
     ctx->origin[1] = cam->pos[1] + ctx->right[1] * cam->eye_offset;
     ctx->origin[2] = cam->pos[2] + ctx->right[2] * cam->eye_offset;

@@ -1897,6 +1897,39 @@ static void case_sdf_bad_input(void)
         r = fovsdf_init(&ctx, &c, &bi.scene, &cam, gb, NULL, 0);
         expect_logged(N("sdf_gaze_bad_%d", i), r, FOV_ERR_NOT_FINITE, &t);
     }
+    /* a failed re-initialisation leaves a working context exactly as it was */
+    {
+        float *a = img_alloc(3u * 9 * 7), *b = img_alloc(3u * 9 * 7);
+        fovsdf_output out;
+        uint32_t diff = 0;
+        size_t q;
+        int ok = 1;
+        fovsdf_output_init(&out);
+        c = cfg;
+        c.method = FOVSDF_METHOD_FIPR;
+        r = fovsdf_init(&ctx, &c, &bi.scene, &cam, g, NULL, 0);
+        out.rgb = a;
+        if (r == FOV_OK) r = fovsdf_render_rows(&ctx, 0, 7, &out, NULL);
+        ok &= r == FOV_OK;
+        for (i = 0; i < 4; ++i) {
+            fovsdf_config c3 = fovsdf_config_default();
+            fov_gaze g3 = g;
+            c2 = cam;
+            switch (i) {
+            case 0: g3.x = 2e19f; break;                               /* rejected by the eccentricity model */
+            case 1: c2.pos[0] = c2.target[0]; c2.pos[1] = c2.target[1]; c2.pos[2] = c2.target[2]; break;
+            case 2: c3.display.axis_dx = 1e30f; break;                 /* ditto, through the display */
+            default: c2.width = 0; break;
+            }
+            r = fovsdf_init(&ctx, &c3, &bi.scene, &c2, g3, NULL, 0);
+            ok &= r != FOV_OK;
+        }
+        out.rgb = b;
+        r = fovsdf_render_rows(&ctx, 0, 7, &out, NULL);
+        for (q = 0; q < 3u * 9u * 7u; ++q) diff += memcmp(&a[q], &b[q], sizeof(float)) != 0;
+        check(ok && r == FOV_OK && diff == 0, "sdf_failed_init_keeps_ctx", "ok %d r %d, %u values differ after failed re-inits", ok, (int)r, diff);
+        free(a); free(b);
+    }
     /* method-specific values and enums */
     for (i = 0; i < 14; ++i) {
         fov_result want = FOV_ERR_INVALID_ARG;
