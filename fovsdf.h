@@ -135,7 +135,9 @@ ERRORS AND LOGGING
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done; nothing asserts on data. An optional
-   fov_logger in the config receives a message with each error.
+   fov_logger in the config receives a message with each error. Non-finite values from your
+   callbacks never reach the image: a NaN or infinite distance ends the ray as a miss, a NaN
+   or infinite albedo channel is taken as 0.
 
 THREADING
    No function keeps state between calls except in the objects you pass. fovsdf_init fills a
@@ -178,6 +180,10 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   unreleased         a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
+                      valid (was FOV_ERR_DEGENERATE: the squared length under/overflowed);
+                      a NaN or infinite albedo from the callback is taken as 0 (was a NaN
+                      pixel); a failed fovsdf_init leaves an existing context unchanged.
    0.2.0 (2026-11-23) FIPR and CONE_FOV (foveated head starts, periphery refresh, mask output,
                       fovsdf_mask_blur), tile output buffers (fovsdf_output.origin_x/y),
                       fovsdf_program_compact; fovsdf_output gained fields (zero them with
@@ -720,7 +726,8 @@ FOVSDF_API float fovsdf_u01(uint32_t seed, uint32_t x, uint32_t y, uint32_t fram
 /* Working memory for a config and camera (0 for the tracers of this version). */
 FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam,
                                          size_t *bytes);
-/* Validates everything and fills ctx. mem may be NULL when the size is 0. */
+/* Validates everything and fills ctx (a failed call leaves ctx unchanged, so a context can
+   be re-initialised in place and kept when that fails). mem may be NULL when the size is 0. */
 FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
                                   const fovsdf_scene *scene, const fovsdf_camera *cam,
                                   fov_gaze gaze, void *mem, size_t mem_size);
@@ -1176,6 +1183,16 @@ FOVSDF__PRIV float fovsdf__normalize(float v[3])
     if (l > 0.0f && fovsdf__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
     return l;
 }
+/* Brings a direction whose length would underflow or overflow in the squares (components
+   below 1e-15 or above 1e15) to a largest component of 1 first; other vectors are left
+   untouched (bit for bit). */
+FOVSDF__PRIV void fovsdf__prescale(float v[3])
+{
+    float m = fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__maxf(fovsdf__absf(v[1]), fovsdf__absf(v[2])));
+    if (m > 0.0f && fovsdf__finite(m) && (m < 1e-15f || m > 1e15f)) {
+        v[0] /= m; v[1] /= m; v[2] /= m;
+    }
+}
 FOVSDF__PRIV size_t fovsdf__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
 
 #if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
@@ -1364,6 +1381,8 @@ FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[
     f[2] = cam->target[2] - cam->pos[2];
     u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
     if (fovsdf__is0(u[0]) && fovsdf__is0(u[1]) && fovsdf__is0(u[2])) u[1] = 1.0f;
+    fovsdf__prescale(f); /* a tiny (1e-30) or huge (1e30) up hint or view vector is valid */
+    fovsdf__prescale(u);
     lf = fovsdf__normalize(f);
     if (!(lf > 0.0f) || !fovsdf__finite(lf) || !fovsdf__finite3(f)) return FOV_ERR_DEGENERATE;
     if (!(fovsdf__normalize(u) > 0.0f) || !fovsdf__finite3(u)) return FOV_ERR_DEGENERATE;
@@ -2759,7 +2778,13 @@ FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t 
         { 0.80f, 0.80f, 0.80f }, { 0.0f, 0.0f, 0.0f }, { 0.85f, 0.30f, 0.25f }, { 0.30f, 0.55f, 0.85f },
         { 0.90f, 0.75f, 0.30f }, { 0.35f, 0.75f, 0.40f }, { 0.70f, 0.45f, 0.80f }, { 0.92f, 0.90f, 0.85f }
     };
-    if (c->scene.albedo) { c->scene.albedo(p, mat, rgb, c->scene.user); return; }
+    if (c->scene.albedo) {
+        int i;
+        c->scene.albedo(p, mat, rgb, c->scene.user);
+        for (i = 0; i < 3; ++i)
+            if (!fovsdf__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
+        return;
+    }
     if (mat == 1) { /* checkerboard on x/z, unit squares */
         int32_t ix = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
         int32_t iz = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
@@ -2925,7 +2950,8 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     const fov_logger *lg = cfg ? &cfg->logger : 0;
     fov_result r;
     size_t need;
-    float tanh, fov;
+    float tanh, fov, rt[3], up[3], fw[3];
+    fov_ecc_model em;
     if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
     if (cfg) {
         r = fovsdf_config_resolve(cfg, &c);
@@ -2940,19 +2966,24 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
     fov = fovsdf__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
-    r = fovsdf_camera_basis(cam, ctx->right, ctx->up, ctx->fwd);
+    r = fovsdf_camera_basis(cam, rt, up, fw);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
     r = fovsdf_memory_size(&c, cam, &need);
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
+    r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze too far off the image (about 1e19 pixels) or display geometry");
+    /* everything is valid: only now is ctx written (a failed call leaves it as it was) */
+    ctx->right[0] = rt[0]; ctx->right[1] = rt[1]; ctx->right[2] = rt[2];
+    ctx->up[0] = up[0]; ctx->up[1] = up[1]; ctx->up[2] = up[2];
+    ctx->fwd[0] = fw[0]; ctx->fwd[1] = fw[1]; ctx->fwd[2] = fw[2];
+    ctx->ecc = em;
     ctx->cfg = c;
     ctx->scene = *scene;
     if (fovsdf__is0(ctx->scene.lipschitz)) ctx->scene.lipschitz = 1.0f;
     ctx->cam = *cam;
     ctx->cam.fov_y_deg = fov;
     ctx->gaze = gaze;
-    r = fovsdf_ecc_init(&ctx->ecc, &c.display, fov, cam->width, cam->height, gaze);
-    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze or display geometry");
     ctx->origin[0] = cam->pos[0] + ctx->right[0] * cam->eye_offset;
     ctx->origin[1] = cam->pos[1] + ctx->right[1] * cam->eye_offset;
     ctx->origin[2] = cam->pos[2] + ctx->right[2] * cam->eye_offset;
