@@ -1029,10 +1029,11 @@ FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y)
 
 FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m)
 {
-    float rx, ry, r2;
+    float rx, ry, r2, ppd;
     if (!m) return 0.0f;
     rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    return (m->f_px * m->f_px + r2) / m->f_px * FOVLP__DEG;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVLP__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
 }
 
 /* ---- geometry (eqs. 3.3-3.6, 3.10) -------------------------------------------------------- */
@@ -1557,8 +1558,12 @@ FOVLP__PRIV void fovlp__visit_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r
             for (i = 0; i < g->disc_cols; ++i) {
                 uint32_t px = g->disc_x0 + i;
                 int on = i < g->disc_w && fovlp__in_disc(ctx, px, j);
+                float sx = (float)px + ctx->jit_u, sy = (float)j + ctx->jit_v;
                 if (i >= g->disc_w && !vi->fn) break;
-                fovlp__emit(vi, base + i, (float)px + ctx->jit_u, (float)j + ctx->jit_v, on);
+                /* inside its pixel even where px + offset rounds up to px + 1 in float */
+                if (sx >= (float)px + 1.0f) sx = ((float)px + 1.0f) * (1.0f - 1.1920929e-7f);
+                if (sy >= (float)j + 1.0f) sy = ((float)j + 1.0f) * (1.0f - 1.1920929e-7f);
+                fovlp__emit(vi, base + i, sx, sy, on);
             }
         } else {
             float x, y;

@@ -2865,10 +2865,11 @@ FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y)
 
 FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m)
 {
-    float rx, ry, r2;
+    float rx, ry, r2, ppd;
     if (!m) return 0.0f;
     rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    return (m->f_px * m->f_px + r2) / m->f_px * FOVPT__DEG;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVPT__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
 }
 
 /* ---- context and rendering ------------------------------------------------------------------- */

@@ -1478,10 +1478,11 @@ FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
 {
     /* d(angle)/d(pixels) along the radial direction at the gaze: f / (f^2 + r^2) radians per
        pixel, with r the gaze's distance from the axis; its inverse in pixels per degree. */
-    float rx, ry, r2;
+    float rx, ry, r2, ppd;
     if (!m) return 0.0f;
     rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    return (m->f_px * m->f_px + r2) / m->f_px * FOVSDF__DEG;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVSDF__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
 }
 
 /* ---- scene builder ------------------------------------------------------------------------ */
