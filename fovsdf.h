@@ -776,8 +776,8 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *ctx, const float p[3], float h, 
 FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], const float l[3],
                                     float t_start, float t_end, float k, fovsdf_stats *stats);
 /* The IPR neighbour minimum filter on a caller image: out(x, y) = the minimum of in over the
-   (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies). out must not
-   alias in. */
+   (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies; radius above
+   64: FOV_ERR_LIMIT, the cost grows with its square). out must not alias in. */
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
 /* FIPR's pass 5, optional (the thesis's study found it made the foveation more visible, so
    nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied only where
@@ -3330,7 +3330,7 @@ FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h,
     uint32_t x, y;
     if (!in || !out) return FOV_ERR_NULL;
     if (w == 0 || h == 0 || radius < 0) return FOV_ERR_INVALID_ARG;
-    if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
+    if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM || radius > 64) return FOV_ERR_LIMIT;
     if (in == out) return FOV_ERR_INVALID_ARG;
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {

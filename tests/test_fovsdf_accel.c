@@ -446,6 +446,15 @@ static void min_filter_tests(void)
     check(r == FOV_ERR_INVALID_ARG, "min_filter_negative_radius", "got %d", (int)r);
     r = fovsdf_min_filter(in, 37, 23, 1, in);
     check(r == FOV_ERR_INVALID_ARG, "min_filter_in_place_rejected", "got %d", (int)r);
+    r = fovsdf_min_filter(in, 37, 23, 65, out);
+    check(r == FOV_ERR_LIMIT, "min_filter_radius_above_64_limit", "got %d", (int)r);
+    r = fovsdf_min_filter(in, 37, 23, 64, out);   /* the window covers the image: its minimum */
+    {
+        float mn = in[0];
+        for (i = 1; i < 37u * 23u; ++i) mn = in[i] < mn ? in[i] : mn;
+        for (i = 0, bad = 0; i < 37u * 23u; ++i) bad += !(out[i] <= mn && out[i] >= mn);
+        check(r == FOV_OK && bad == 0, "min_filter_radius_64_whole_image", "got %d, %d values differ", (int)r, bad);
+    }
 }
 
 static void ipr_bad_params(void)
