@@ -2778,7 +2778,9 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
                                     const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats)
 {
-    return fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
+    fov_result r = fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
+    if (r != FOV_OK && c) FOVPT__FAIL(&c->logger, r, "radiance: scene, ray or config rejected");
+    return r;
 }
 FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
                                       const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,

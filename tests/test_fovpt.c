@@ -889,6 +889,18 @@ static void test_furnace(void)
             if (o[0] * o[0] + o[1] * o[1] < 0.8f) worst = fmax(worst, fabs((double)rgb[1] - 0.5));
         }
         check(worst < 1e-6, "furnace: convex Lambert sphere (albedo 0.5) under background 1 gives 0.5", "max error %g", worst);
+        {   /* a rejected ray is logged through the config's logger */
+            float o[3] = { NAN, 0.0f, 0.0f }, dd[3] = { 0.0f, 0.0f, 1.0f }, rgb[3];
+            fovpt_config cl = c;
+            fovpt_rng rng;
+            fov_result rr;
+            fovpt_rng_init(&rng, 0, 0, 0, 0);
+            cl.logger.func = logger;
+            g_log_count = 0;
+            rr = fovpt_radiance(&b.s, &cl, o, dd, &rng, rgb, NULL);
+            check(rr == FOV_ERR_NOT_FINITE && g_log_count == 1 && g_log_code == (int32_t)FOV_ERR_NOT_FINITE && rgb[0] == 0.0f,
+                  "radiance: a NaN origin is FOV_ERR_NOT_FINITE, logged once, colour 0", "r %d, %d log calls", (int)rr, g_log_count);
+        }
         check(c.no_nee == 0 && b.s.num_lights == 0 && st.shadow_rays == 0 && st.bounce_rays > 0,
               "no emitters: NEE on but no shadow rays traced", "lights %u, shadow rays %llu, bounce rays %llu", b.s.num_lights,
               (unsigned long long)st.shadow_rays, (unsigned long long)st.bounce_rays);
