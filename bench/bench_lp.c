@@ -26,7 +26,9 @@
    hits_pct_full, hits_pct_fov (primary rays that hit), eval_ratio (evals_full / evals_fov: the
    speed-up if time were evaluations); and psnr_fovea_ref (the TAA output against 256 samples
    per pixel, a 16 x 16 grid, fovea pixels only), psnr_gt_fovea_ref (the 16-spp ground truth
-   itself against that reference: the measurement's own error in the fovea).
+   itself against that reference: the measurement's own error in the fovea); prims_px_full,
+   prims_smp_fov: primitive evaluations of fovsdf's built-in programs (the part of the
+   distance evaluations not skipped by bounds) per pixel and per shaded sample.
    Writes bench/results/lp.csv and, with gnuplot, bench/results/lp_<scene>.png (PSNR per ring)
    and bench/results/lp_speed.png (speed-up against the sample ratio). Then, per scene of
    --moving-scenes, a moving camera and gaze sequence (see moving_seq) into
@@ -383,7 +385,7 @@ int main(int argc, char **argv)
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",psnr_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",ssim_r%d", a);
     fprintf(csv, ",evals_full,evals_fov,evals_px_full,evals_smp_fov,hits_pct_full,hits_pct_fov,eval_ratio,"
-                 "psnr_fovea_ref,psnr_gt_fovea_ref");
+                 "psnr_fovea_ref,psnr_gt_fovea_ref,prims_px_full,prims_smp_fov");
     fprintf(csv, "\n");
     fprintf(stderr, "bench-lp: %ux%u, %d configurations per scene, median of %d runs, %d TAA frames, one thread\n", W, H,
             ncfg, runs, frames);
@@ -521,11 +523,12 @@ int main(int argc, char **argv)
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", sqrt(rings[a].mse));
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.3f", rings[a].psnr);
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", rings[a].ssim);
-            fprintf(csv, ",%llu,%llu,%.3f,%.3f,%.2f,%.2f,%.4f,%.3f,%.3f\n", (unsigned long long)st_full.evals,
+            fprintf(csv, ",%llu,%llu,%.3f,%.3f,%.2f,%.2f,%.4f,%.3f,%.3f", (unsigned long long)st_full.evals,
                     (unsigned long long)st_fov.evals, (double)st_full.evals / (double)npx,
                     (double)st_fov.evals / (double)cnt.shaded, 100.0 * (double)st_full.hits / (double)st_full.rays,
                     100.0 * (double)st_fov.hits / (double)st_fov.rays, (double)st_full.evals / (double)st_fov.evals,
                     p_ref, p_gt_ref);
+            fprintf(csv, ",%.2f,%.2f\n", (double)st_full.prims / (double)npx, (double)st_fov.prims / (double)cnt.shaded);
             fflush(csv);
             fprintf(stderr, "  %s %-7s sigma %.2f: %5.1f %% samples, speed-up %.2f (ideal %.2f), fovea %.1f dB (1 frame %.1f), all %.1f dB, flicker ratio %.3f\n",
                     nm, fovlp_preset_name(cfgs[c].preset), (double)lc.sigma, (double)cnt.shaded_pct, t_full / t_fov,
