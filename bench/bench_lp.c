@@ -36,6 +36,7 @@
 
    usage: bench_lp [--full] [--hd] [--shadows] [--runs N] [--frames N] [--scenes a,b]
                    [--moving-scenes a,b] [--moving-frames N] [--out FILE]
+          bench_lp --fovea-study [--scenes a,b]   what limits the fovea's PSNR (see fovea_study)
    Default grid (640x360, shading without shadow rays as bench-sdf does, 3 timing runs; about
    10 minutes on a 2-core machine): five scenes (atrium, whose fovea is flat, only with
    --full), the four presets of Table 5.1 plus C Fov at sigma 1.7 and 2.0 (Table 5.4); the
@@ -93,15 +94,17 @@ static double median(double *v, int n)
 
 /* Reference image, box filtered: grid 0: n Halton (2, 3) points 1..n moved so that their
    mean is the pixel centre (Halton 1..16 alone average (0.471, 0.463): an image shifted by
-   1/30 pixel); grid 1: an n x n grid of cell centres. With mask, only the pixels whose
+   1/30 pixel); grid 1: an n x n grid of cell centres; grid 2: Halton 1..n as they are. With mask, only the pixels whose
    mask value is below lim (the others are left 0). */
 static void gt_image(lpsdf_user *user, uint32_t W, uint32_t H, const float *mask, float lim, uint32_t n, int grid,
                      float *out)
 {
     float sx = 0.0f, sy = 0.0f, inv;
-    uint32_t x, y, k, j, ns = grid ? n * n : n;
+    uint32_t x, y, k, j, ns = grid == 1 ? n * n : n;
     inv = 1.0f / (float)ns;
-    if (!grid) {
+    if (grid == 2) {
+        grid = 0; /* unmoved Halton points: sx = sy = 0 */
+    } else if (!grid) {
         for (k = 1; k <= n; ++k) { sx += halton(k, 2); sy += halton(k, 3); }
         sx = 0.5f - sx / (float)n;
         sy = 0.5f - sy / (float)n;
@@ -300,10 +303,94 @@ static void moving_seq(FILE *mcsv, uint32_t id, const fovsdf_config *scfg, uint3
     free(smp); free(sdep); free(cur); free(cdep); free(ref); free(refd); free(od); free(mem);
 }
 
+/* --fovea-study: what limits the fovea's PSNR (C Fov, still camera, gaze at the centre,
+   fovea pixels only): ground truths of 16 samples (Halton unmoved / centred) against 256 (16 x
+   16 grid), and the TAA output after 16 and 20 frames (and with variance clipping) against
+   each. Prints to stderr; writes nothing. */
+static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint32_t H)
+{
+    fovsdf_builtin bi;
+    fovsdf_ctx sdf;
+    lpsdf_user user;
+    size_t bytes = 0, npx = (size_t)W * H, i;
+    void *mem;
+    fov_gaze gaze;
+    fov_ecc_model em;
+    float *ecc = (float *)malloc(npx * sizeof(float)), *im[4], *tmp = (float *)malloc(npx * 3 * sizeof(float));
+    const char *nm = fovsdf_builtin_name(id);
+    fovm_sel sel;
+    double p = 0.0;
+    long cnt;
+    int k, v;
+    fovsdf_builtin_size(id, &bytes);
+    mem = malloc(bytes);
+    fovsdf_builtin_init(id, &bi, mem, bytes);
+    bi.camera.width = W;
+    bi.camera.height = H;
+    gaze.x = 0.5f * (float)W;
+    gaze.y = 0.5f * (float)H;
+    fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
+    memset(&user, 0, sizeof user);
+    user.sdf = &sdf;
+    fovlp_ecc_init(&em, NULL, bi.camera.fov_y_deg, W, H, gaze);
+    for (i = 0; i < npx; ++i) ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
+    sel = fovm_sel_band(ecc, 0.0, 5.0);
+    for (k = 0; k < 4; ++k) im[k] = (float *)malloc(npx * 3 * sizeof(float));
+    gt_image(&user, W, H, ecc, 5.0f, 16, 1, tmp); to_disp(tmp, im[0], npx * 3);  /* 256 spp */
+    gt_image(&user, W, H, ecc, 5.0f, 16, 2, tmp); to_disp(tmp, im[1], npx * 3);  /* 16 unmoved */
+    gt_image(&user, W, H, ecc, 5.0f, 16, 0, tmp); to_disp(tmp, im[2], npx * 3);  /* 16 centred */
+    fovm_psnr_sel(im[0], im[1], (int)W, (int)H, 3, &sel, &p, &cnt);
+    fprintf(stderr, "  %s fovea: 16 spp, Halton 1..16 unmoved, against 256 spp: %.2f dB\n", nm, p);
+    fovm_psnr_sel(im[0], im[2], (int)W, (int)H, 3, &sel, &p, &cnt);
+    fprintf(stderr, "  %s fovea: 16 spp, Halton 1..16 centred (the ground truth), against 256 spp: %.2f dB\n", nm, p);
+    for (v = 0; v < 3; ++v) {
+        fovlp_config lc = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+        fovlp_ctx lp;
+        void *lm;
+        float *smp, *sd, *cur, *cd, *hist[2], *hd[2];
+        uint8_t *ag[2];
+        int f, ping = 0, nfr = v == 0 ? 16 : 20;
+        fovlp_camera cam = lpsdf_camera(&sdf);
+        lc.cam_fov_y_deg = bi.camera.fov_y_deg;
+        lc.taa.enable = 1;
+        lc.taa.clamp = v == 2 ? (uint32_t)FOVLP_CLAMP_VARIANCE : 0u;
+        fovlp_memory_size(&lc, &bytes);
+        lm = malloc(bytes);
+        fovlp_init(&lp, &lc, lm, bytes);
+        smp = (float *)malloc((size_t)lp.geo.samples * 3 * sizeof(float));
+        sd = (float *)malloc((size_t)lp.geo.samples * sizeof(float));
+        cur = (float *)malloc(npx * 3 * sizeof(float));
+        cd = (float *)malloc(npx * sizeof(float));
+        for (f = 0; f < 2; ++f) { hist[f] = (float *)malloc(npx * 3 * sizeof(float)); hd[f] = (float *)malloc(npx * sizeof(float)); ag[f] = (uint8_t *)malloc(npx); }
+        for (f = 0; f < nfr; ++f) {
+            fovlp_taa_io io;
+            fovlp_begin_frame(&lp, gaze, &cam);
+            fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, smp, sd, NULL);
+            fovlp_reconstruct_rows(&lp, smp, sd, 0, H, cur, 0, cd);
+            io.cur_rgb = cur; io.cur_depth = cd;
+            io.prev_rgb = hist[ping]; io.prev_depth = hd[ping]; io.prev_age = ag[ping];
+            io.out_rgb = hist[1 - ping]; io.out_depth = hd[1 - ping]; io.out_age = ag[1 - ping];
+            fovlp_taa_rows(&lp, &io, 0, H, NULL);
+            ping = 1 - ping;
+        }
+        to_disp(hist[ping], im[3], npx * 3);
+        fprintf(stderr, "  %s fovea: C Fov TAA after %d still frames%s against", nm, nfr, v == 2 ? ", variance clipping" : "");
+        for (k = 0; k < 3; ++k) {
+            fovm_psnr_sel(im[k], im[3], (int)W, (int)H, 3, &sel, &p, &cnt);
+            fprintf(stderr, " %s %.2f dB", k == 0 ? "256 spp" : (k == 1 ? ", 16 unmoved" : ", 16 centred"), p);
+        }
+        fprintf(stderr, "\n");
+        for (f = 0; f < 2; ++f) { free(hist[f]); free(hd[f]); free(ag[f]); }
+        free(lm); free(smp); free(sd); free(cur); free(cd);
+    }
+    for (k = 0; k < 4; ++k) free(im[k]);
+    free(ecc); free(tmp); free(mem);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
-    int full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
+    int study = 0, full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
     const char *scenes = NULL, *outpath = "bench/results/lp.csv", *mscenes = NULL;
     char mpath[600];
     cfg_t cfgs[64];
@@ -321,6 +408,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
+        else if (!strcmp(argv[a], "--fovea-study")) study = 1;
         else if (!strcmp(argv[a], "--moving-scenes") && a + 1 < argc) mscenes = argv[++a];
         else if (!strcmp(argv[a], "--moving-frames") && a + 1 < argc) mframes = atoi(argv[++a]);
         else { fprintf(stderr, "unknown argument %s (see the comment at the top of bench_lp.c)\n", argv[a]); return 2; }
@@ -328,6 +416,13 @@ int main(int argc, char **argv)
     if (!scenes) scenes = full ? "primitives,columns,temple,atrium,thin,fractals" : "primitives,columns,temple,thin,fractals";
     if (!mscenes) mscenes = full ? scenes : "primitives,columns";
     if (mframes < 3) mframes = 3;
+    if (study) {
+        fovsdf_config scfg = fovsdf_config_default();
+        scfg.shading = shadows ? scfg.shading : FOVSDF_SHADE_NO_SHADOWS;
+        for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id)
+            if (strstr(scenes, fovsdf_builtin_name(id))) fovea_study(id, &scfg, W, H);
+        return 0;
+    }
     if (runs < 1) runs = 1;
     if (runs > 15) runs = 15;
     if (frames < 4) frames = 4;
