@@ -103,12 +103,14 @@ CHOICES WHERE THE THESIS IS OPEN OR WRONG (each is tested in tests/test_fovlp.c)
    - Moving camera (ours): the thesis's depth test alone lets history through that does not
      belong to the pixel (the kept peripheral history, and bilinear history fetched across a
      depth edge), which ghosts: tests/test_fovlp_taa.c measures |out - truth| beyond diag/3
-     at about 2x that of no TAA, and bench-lp's moving sequence ring RMSE up to 1.75x (a
-     six-frame columns run). So while the camera moves (history reprojected) and taa.clamp is
-     NONE, the history is variance-clipped in YCoCg (box mean +- clip_gamma standard
-     deviations of the current 3x3 neighbourhood); with a still camera nothing is clamped,
-     since the history is registered exactly and clamping would undo the convergence of
-     sub-pixel detail (thin wires: fovea 29 dB instead of 38.6 dB with clamping always on).
+     at about 2x that of no TAA, and bench-lp's moving sequence ring RMSE up to 1.65x that
+     of no TAA on the columns scene (1.02x with the clip; bench/results/lp_moving.csv). So
+     while the camera moves (history reprojected) and taa.clamp is NONE, the history is
+     variance-clipped in YCoCg (box mean +- clip_gamma standard deviations of the current
+     3x3 neighbourhood); with a still camera nothing is clamped, since the history is
+     registered exactly and clamping would undo the convergence of sub-pixel detail (thin
+     wires: fovea 29.6 dB instead of 38.8 dB against 256 spp with clipping always on;
+     bench_lp --fovea-study).
      taa.thesis_moving = 1 restores the thesis's behaviour.
    - A gaze jump larger than reset_deg (default 2 degrees) resets the history.
    - Jitter is off while the camera moves (thesis), unless taa.jitter_moving.
