@@ -3,7 +3,8 @@
 #                then a fovlp frame sequence (out/lp/) and a fovpt image (out/pt_basic.ppm)
 #   make test    the whole test suite (closing line: "N passed, N failed")
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
-#                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv;
+#                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
+#                          moving camera and gaze, bench/results/lp_moving.csv;
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid
 #   make examples, make clean

@@ -224,7 +224,12 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   unreleased         4-wide BVH for the traversal (collapsed from the binary SAH tree; SSE
+   unreleased         review fixes: a LAYERS layer whose stride exceeds the image with the
+                      gaze off it keeps one lattice point (it read before its buffer); hook
+                      and plane normals and camera vectors of any length; a failed
+                      fovpt_set_view leaves the view unchanged; fovpt_radiance logs; any
+                      finite gaze accepted (shared eccentricity model);
+                      4-wide BVH for the traversal (collapsed from the binary SAH tree; SSE
                       four-box test on x86): callgrind 64.5M -> 40.3M instructions on the
                       throughput loop, 0.49 -> 0.59-0.62x of Embree's single thread, same hits;
                       per-eye gaze: fovpt_gaze_from_point (a 3D gaze target or direction

@@ -12,22 +12,36 @@
                    alternating (full, foveated) so both see the same machine load
      psnr_fovea, psnr_all, ssim_fovea   the TAA output of a still camera after --frames frames
                    (default 20: the age cap) against the ground truth, 16 samples per
-                   pixel (Halton (2,3) points 1..16 in the pixel, box filtered), sRGB;
-                   fovea = eccentricity < 5 degrees (fovlp_ecc_deg)
+                   pixel (Halton (2,3) points 1..16 moved by (0.029, 0.037) px so that their
+                   mean is the pixel centre, box filtered), sRGB; fovea = eccentricity < 5
+                   degrees (fovlp_ecc_deg)
      flicker_ratio mean |frame-to-frame change| beyond diag/3 from the gaze, over the last
                    half of the frames, of the TAA output / of the raw jittered reconstruction
    then: psnr_fovea_1f, psnr_all_1f, ssim_fovea_1f (a single frame without TAA), flicker_taa,
    flicker_raw, time_fov_ms, time_full_ms, lp_w, lp_h, r_g, width, height, runs, frames, shading, and per
    ring (20 rings of equal eccentricity from 0 to the farthest corner, the thesis's protocol)
-   rmse_rK, psnr_rK, ssim_rK for K = 1..20 (TAA output).
+   rmse_rK, psnr_rK, ssim_rK for K = 1..20 (TAA output); then deterministic costs of the first
+   timing run (fovsdf_stats): evals_full, evals_fov (distance evaluations of the full-resolution
+   and of the foveated frame), evals_px_full (per pixel), evals_smp_fov (per shaded sample),
+   hits_pct_full, hits_pct_fov (primary rays that hit), eval_ratio (evals_full / evals_fov: the
+   speed-up if time were evaluations); and psnr_fovea_ref (the TAA output against 256 samples
+   per pixel, a 16 x 16 grid, fovea pixels only), psnr_gt_fovea_ref (the 16-spp ground truth
+   itself against that reference: the measurement's own error in the fovea); prims_px_full,
+   prims_smp_fov: primitive evaluations of fovsdf's built-in programs (the part of the
+   distance evaluations not skipped by bounds) per pixel and per shaded sample.
    Writes bench/results/lp.csv and, with gnuplot, bench/results/lp_<scene>.png (PSNR per ring)
-   and bench/results/lp_speed.png (speed-up against the sample ratio).
+   and bench/results/lp_speed.png (speed-up against the sample ratio). Then, per scene of
+   --moving-scenes, a moving camera and gaze sequence (see moving_seq) into
+   bench/results/lp_moving.csv and lp_moving.png (ring RMSE, TAA off / on).
 
    usage: bench_lp [--full] [--hd] [--shadows] [--runs N] [--frames N] [--scenes a,b]
-                   [--out FILE]
-   Default grid (640x360, shading without shadow rays as bench-sdf does; about 10 minutes on
-   an idle 2-core machine): all six scenes, the four presets of Table 5.1 plus C Fov at sigma
-   1.7 and 2.0 (Table 5.4). --full: every preset at sigma x {0.8, 1, 1.25, 1.5} of its own.
+                   [--moving-scenes a,b] [--moving-frames N] [--out FILE]
+          bench_lp --fovea-study [--scenes a,b]   what limits the fovea's PSNR (see fovea_study)
+   Default grid (640x360, shading without shadow rays as bench-sdf does, 3 timing runs; about
+   10 minutes on a 2-core machine): five scenes (atrium, whose fovea is flat, only with
+   --full), the four presets of Table 5.1 plus C Fov at sigma 1.7 and 2.0 (Table 5.4); the
+   moving sequence (12 frames) on primitives and columns. --full: all six scenes, every preset at sigma x
+   {0.8, 1, 1.25, 1.5} of its own, the moving sequence on every scene.
    --hd: 1280x720. --shadows: with soft shadows (several times slower on the lit scenes). */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
@@ -78,20 +92,311 @@ static double median(double *v, int n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+/* Reference image, box filtered: grid 0: n Halton (2, 3) points 1..n moved so that their
+   mean is the pixel centre (Halton 1..16 alone average (0.471, 0.463): an image shifted by
+   1/30 pixel); grid 1: an n x n grid of cell centres; grid 2: Halton 1..n as they are. With mask, only the pixels whose
+   mask value is below lim (the others are left 0). */
+static void gt_image(lpsdf_user *user, uint32_t W, uint32_t H, const float *mask, float lim, uint32_t n, int grid,
+                     float *out)
+{
+    float sx = 0.0f, sy = 0.0f, inv;
+    uint32_t x, y, k, j, ns = grid == 1 ? n * n : n;
+    inv = 1.0f / (float)ns;
+    if (grid == 2) {
+        grid = 0; /* unmoved Halton points: sx = sy = 0 */
+    } else if (!grid) {
+        for (k = 1; k <= n; ++k) { sx += halton(k, 2); sy += halton(k, 3); }
+        sx = 0.5f - sx / (float)n;
+        sy = 0.5f - sy / (float)n;
+    }
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            float acc[3] = { 0, 0, 0 }, s[3];
+            size_t o = 3 * ((size_t)y * W + x);
+            if (mask && !(mask[(size_t)y * W + x] < lim)) { out[o] = out[o + 1] = out[o + 2] = 0.0f; continue; }
+            for (k = 0; k < ns; ++k) {
+                float px, py;
+                if (grid) { px = ((float)(k % n) + 0.5f) / (float)n; py = ((float)(k / n) + 0.5f) / (float)n; }
+                else { px = halton(k + 1, 2) + sx; py = halton(k + 1, 3) + sy; }
+                lpsdf_shade((float)x + px, (float)y + py, s, NULL, user);
+                acc[0] += s[0]; acc[1] += s[1]; acc[2] += s[2];
+            }
+            for (j = 0; j < 3; ++j) out[o + j] = acc[j] * inv;
+        }
+}
+
 typedef struct cfg_t {
     uint32_t preset;
     float sigma;
 } cfg_t;
 
+/* Moving camera and gaze (item "a moving camera must not ghost", measured): C Fov at its
+   preset sigma; the camera slides sideways (0.04 scene units a frame) and the gaze follows a
+   slow Lissajous path (under the 2-degree reset); a warm-up begin_frame makes frame 0 a
+   moving frame, so jitter is off (thesis) and TAA off / on (clamp column: "thesis" =
+   taa.thesis_moving 1, "default" = the library's defaults, "aabb" / "variance" = taa.clamp)
+   see the very same samples: one shading per frame, five resolves. Reference per frame: 4 samples
+   per pixel (2 x 2 grid). Rings: 20 rings of max_ecc / 20 degrees around the current gaze.
+   Error and flicker (mean |e_t - e_(t-1)| of the error e = output - reference, sRGB) over
+   frames 1 .. n-1. motion_px: mean screen motion of the hit points per frame (every 7th
+   pixel, reprojected with the shaded depth). worst_ring_ratio: the largest ring RMSE of the
+   output over the ring RMSE without TAA (above 1 where TAA is worse: ghosting). */
+#define NVAR 5
+static void moving_seq(FILE *mcsv, uint32_t id, const fovsdf_config *scfg, uint32_t W, uint32_t H, int nfr,
+                       double max_ecc, const char *shading)
+{
+    fovsdf_builtin bi;
+    fovsdf_ctx sdf;
+    lpsdf_user user;
+    fovlp_ctx lp[NVAR];
+    void *lpmem[NVAR], *mem;
+    fovlp_config lc;
+    size_t bytes = 0, npx = (size_t)W * H, i, nsmp;
+    float base_pos[3], base_tgt[3], *smp, *sdep, *cur, *cdep, *ref, *refd, *od, *err[NVAR], *hist[NVAR][2], *hdep[NVAR][2];
+    uint8_t *age[NVAR][2];
+    double motion = 0.0, nmotion = 0.0, se[NVAR][NRINGS], fl[NVAR][NRINGS], flp[NVAR], nflp = 0.0, sea[NVAR], fla[NVAR];
+    long cnt[NRINGS], cntf[NRINGS];
+    int f, v, ping = 0;
+    static const char *vname[NVAR] = { "off", "thesis", "default", "aabb", "variance" };
+    float diag = sqrtf((float)W * (float)W + (float)H * (float)H);
+    memset(se, 0, sizeof se); memset(fl, 0, sizeof fl); memset(flp, 0, sizeof flp); memset(sea, 0, sizeof sea);
+    memset(fla, 0, sizeof fla); memset(cnt, 0, sizeof cnt); memset(cntf, 0, sizeof cntf);
+    fovsdf_builtin_size(id, &bytes);
+    mem = malloc(bytes);
+    fovsdf_builtin_init(id, &bi, mem, bytes);
+    bi.camera.width = W;
+    bi.camera.height = H;
+    memcpy(base_pos, bi.camera.pos, sizeof base_pos);
+    memcpy(base_tgt, bi.camera.target, sizeof base_tgt);
+    lc = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+    lc.cam_fov_y_deg = bi.camera.fov_y_deg;
+    for (v = 0; v < NVAR; ++v) {
+        lc.taa.enable = v ? 1u : 0u;
+        lc.taa.clamp = v == 3 ? (uint32_t)FOVLP_CLAMP_AABB : (v == 4 ? (uint32_t)FOVLP_CLAMP_VARIANCE : 0u);
+        lc.taa.thesis_moving = v == 1 ? 1u : 0u;
+        fovlp_memory_size(&lc, &bytes);
+        lpmem[v] = malloc(bytes);
+        fovlp_init(&lp[v], &lc, lpmem[v], bytes);
+        err[v] = (float *)malloc(npx * 3 * sizeof(float));
+        for (f = 0; f < 2; ++f) {
+            hist[v][f] = (float *)malloc(npx * 3 * sizeof(float));
+            hdep[v][f] = (float *)malloc(npx * sizeof(float));
+            age[v][f] = (uint8_t *)malloc(npx);
+        }
+    }
+    nsmp = lp[0].geo.samples;
+    smp = (float *)malloc(nsmp * 3 * sizeof(float));
+    sdep = (float *)malloc(nsmp * sizeof(float));
+    cur = (float *)malloc(npx * 3 * sizeof(float));
+    cdep = (float *)malloc(npx * sizeof(float));
+    ref = (float *)malloc(npx * 3 * sizeof(float));
+    refd = (float *)malloc(npx * 3 * sizeof(float));
+    od = (float *)malloc(npx * 3 * sizeof(float));
+    memset(&user, 0, sizeof user);
+    user.sdf = &sdf;
+    for (f = -1; f < nfr; ++f) {
+        fov_gaze gz;
+        fov_ecc_model em;
+        fovlp_camera cam;
+        float ph = 0.2f * (float)f;
+        gz.x = (float)W * (0.5f + 0.06f * sinf(ph));
+        gz.y = (float)H * (0.5f + 0.06f * sinf(2.0f * ph));
+        bi.camera.pos[0] = base_pos[0] + 0.04f * (float)f;
+        bi.camera.target[0] = base_tgt[0] + 0.04f * (float)f;
+        fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gz, NULL, 0);
+        cam = lpsdf_camera(&sdf);
+        for (v = 0; v < NVAR; ++v) {
+            fovlp_begin_frame(&lp[v], gz, &cam);
+            if (f < 0) fovlp_reset_history(&lp[v]); /* warm-up: frame 0 is a moving frame */
+        }
+        if (f < 0) continue;
+        fovlp_shade_rows(&lp[0], 0, fovlp_sample_rows(&lp[0]), lpsdf_shade, &user, smp, sdep, NULL);
+        fovlp_reconstruct_rows(&lp[0], smp, sdep, 0, H, cur, 0, cdep);
+        gt_image(&user, W, H, NULL, 0.0f, 2, 1, ref);
+        if (f >= 1) { /* screen motion of the hit points since the previous frame */
+            const fovlp_camera *ca = &lp[1].cam, *pc = &lp[1].prev_cam;
+            float asp = (float)W / (float)H;
+            for (i = 0; i < npx; i += 7) {
+                float hx = (float)(i % W) + 0.5f, hy = (float)(i / W) + 0.5f, d[3], rel[3], z, n;
+                float sxn = (hx / (float)W * 2.0f - 1.0f) * ca->tan_half_y * asp, syn = (hy / (float)H * 2.0f - 1.0f) * ca->tan_half_y;
+                int ch;
+                if (!(cdep[i] < sdf.t_max)) continue;
+                for (ch = 0; ch < 3; ++ch) d[ch] = ca->fwd[ch] + sxn * ca->right[ch] - syn * ca->up[ch];
+                n = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                for (ch = 0; ch < 3; ++ch) rel[ch] = ca->pos[ch] + cdep[i] * d[ch] / n - pc->pos[ch];
+                z = rel[0] * pc->fwd[0] + rel[1] * pc->fwd[1] + rel[2] * pc->fwd[2];
+                if (!(z > 1e-6f)) continue;
+                {
+                    float px = (rel[0] * pc->right[0] + rel[1] * pc->right[1] + rel[2] * pc->right[2]) / (z * pc->tan_half_y * asp);
+                    float py = (rel[0] * pc->up[0] + rel[1] * pc->up[1] + rel[2] * pc->up[2]) / (z * pc->tan_half_y);
+                    float mx = (px + 1.0f) * 0.5f * (float)W - hx, my = (1.0f - py) * 0.5f * (float)H - hy;
+                    motion += (double)sqrtf(mx * mx + my * my);
+                    nmotion += 1.0;
+                }
+            }
+        }
+        to_disp(ref, refd, npx * 3);
+        fovlp_ecc_init(&em, NULL, bi.camera.fov_y_deg, W, H, gz);
+        for (v = 0; v < NVAR; ++v) {
+            const float *o = cur;
+            if (v) {
+                fovlp_taa_io io;
+                io.cur_rgb = cur; io.cur_depth = cdep;
+                io.prev_rgb = hist[v][ping]; io.prev_depth = hdep[v][ping]; io.prev_age = age[v][ping];
+                io.out_rgb = hist[v][1 - ping]; io.out_depth = hdep[v][1 - ping]; io.out_age = age[v][1 - ping];
+                fovlp_taa_rows(&lp[v], &io, 0, H, NULL);
+                o = hist[v][1 - ping];
+            }
+            to_disp(o, od, npx * 3);
+            for (i = 0; i < npx; ++i) {
+                float px = (float)(i % W) + 0.5f, py = (float)(i / W) + 0.5f;
+                double e = (double)fovlp_ecc_deg(&em, px, py) / max_ecc * NRINGS;
+                int k = e < (double)(NRINGS - 1) ? (int)e : NRINGS - 1, ch;
+                float dx = px - gz.x, dy = py - gz.y;
+                int periph = dx * dx + dy * dy > diag * diag / 9.0f;
+                for (ch = 0; ch < 3; ++ch) {
+                    size_t j = 3 * i + (size_t)ch;
+                    float ne = od[j] - refd[j];
+                    if (f >= 1) { se[v][k] += (double)ne * (double)ne; sea[v] += (double)ne * (double)ne; }
+                    if (f >= 2) {
+                        double d = fabs((double)(ne - err[v][j]));
+                        fl[v][k] += d; fla[v] += d;
+                        if (periph) flp[v] += d;
+                    }
+                    err[v][j] = ne;
+                }
+                if (v == 0) {
+                    if (f >= 1) cnt[k] += 3;
+                    if (f >= 2) { cntf[k] += 3; if (periph) nflp += 3.0; }
+                }
+            }
+        }
+        ping = 1 - ping;
+    }
+    {
+        long ctot = 0, ftot = 0;
+        int k;
+        for (k = 0; k < NRINGS; ++k) { ctot += cnt[k]; ftot += cntf[k]; }
+        for (v = 0; v < NVAR; ++v) {
+            double worst = 0.0;
+            for (k = 0; k < NRINGS; ++k)
+                if (cnt[k] && se[0][k] > 0.0) {
+                    double q = sqrt(se[v][k] / se[0][k]);
+                    if (q > worst) worst = q;
+                }
+            fprintf(mcsv, "%s,C Fov,%.3f,%d,%s,%d,%.2f,%.3f,%.6f,%.6f,%.4f", fovsdf_builtin_name(id), (double)lc.sigma, v ? 1 : 0,
+                    vname[v], nfr, nmotion > 0.0 ? motion / nmotion : 0.0, ctot ? 10.0 * log10((double)ctot / sea[v]) : 0.0, ftot ? fla[v] / (double)ftot : 0.0,
+                    nflp > 0.0 ? flp[v] / nflp : 0.0, worst);
+            for (k = 0; k < NRINGS; ++k) fprintf(mcsv, ",%.5f", cnt[k] ? sqrt(se[v][k] / (double)cnt[k]) : 0.0);
+            for (k = 0; k < NRINGS; ++k) fprintf(mcsv, ",%.6f", cntf[k] ? fl[v][k] / (double)cntf[k] : 0.0);
+            fprintf(mcsv, ",%s\n", shading);
+            fprintf(stderr, "  moving %s TAA %-8s: PSNR %.2f dB, error flicker %.5f (periphery %.5f), worst ring RMSE / TAA off %.3f\n",
+                    fovsdf_builtin_name(id), vname[v], ctot ? 10.0 * log10((double)ctot / sea[v]) : 0.0,
+                    ftot ? fla[v] / (double)ftot : 0.0, nflp > 0.0 ? flp[v] / nflp : 0.0, worst);
+        }
+        fflush(mcsv);
+    }
+    for (v = 0; v < NVAR; ++v) {
+        free(lpmem[v]); free(err[v]);
+        for (f = 0; f < 2; ++f) { free(hist[v][f]); free(hdep[v][f]); free(age[v][f]); }
+    }
+    free(smp); free(sdep); free(cur); free(cdep); free(ref); free(refd); free(od); free(mem);
+}
+
+/* --fovea-study: what limits the fovea's PSNR (C Fov, still camera, gaze at the centre,
+   fovea pixels only): ground truths of 16 samples (Halton unmoved / centred) against 256 (16 x
+   16 grid), and the TAA output after 16 and 20 frames (and with variance clipping) against
+   each. Prints to stderr; writes nothing. */
+static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint32_t H)
+{
+    fovsdf_builtin bi;
+    fovsdf_ctx sdf;
+    lpsdf_user user;
+    size_t bytes = 0, npx = (size_t)W * H, i;
+    void *mem;
+    fov_gaze gaze;
+    fov_ecc_model em;
+    float *ecc = (float *)malloc(npx * sizeof(float)), *im[4], *tmp = (float *)malloc(npx * 3 * sizeof(float));
+    const char *nm = fovsdf_builtin_name(id);
+    fovm_sel sel;
+    double p = 0.0;
+    long cnt;
+    int k, v;
+    fovsdf_builtin_size(id, &bytes);
+    mem = malloc(bytes);
+    fovsdf_builtin_init(id, &bi, mem, bytes);
+    bi.camera.width = W;
+    bi.camera.height = H;
+    gaze.x = 0.5f * (float)W;
+    gaze.y = 0.5f * (float)H;
+    fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
+    memset(&user, 0, sizeof user);
+    user.sdf = &sdf;
+    fovlp_ecc_init(&em, NULL, bi.camera.fov_y_deg, W, H, gaze);
+    for (i = 0; i < npx; ++i) ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
+    sel = fovm_sel_band(ecc, 0.0, 5.0);
+    for (k = 0; k < 4; ++k) im[k] = (float *)malloc(npx * 3 * sizeof(float));
+    gt_image(&user, W, H, ecc, 5.0f, 16, 1, tmp); to_disp(tmp, im[0], npx * 3);  /* 256 spp */
+    gt_image(&user, W, H, ecc, 5.0f, 16, 2, tmp); to_disp(tmp, im[1], npx * 3);  /* 16 unmoved */
+    gt_image(&user, W, H, ecc, 5.0f, 16, 0, tmp); to_disp(tmp, im[2], npx * 3);  /* 16 centred */
+    fovm_psnr_sel(im[0], im[1], (int)W, (int)H, 3, &sel, &p, &cnt);
+    fprintf(stderr, "  %s fovea: 16 spp, Halton 1..16 unmoved, against 256 spp: %.2f dB\n", nm, p);
+    fovm_psnr_sel(im[0], im[2], (int)W, (int)H, 3, &sel, &p, &cnt);
+    fprintf(stderr, "  %s fovea: 16 spp, Halton 1..16 centred (the ground truth), against 256 spp: %.2f dB\n", nm, p);
+    for (v = 0; v < 3; ++v) {
+        fovlp_config lc = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+        fovlp_ctx lp;
+        void *lm;
+        float *smp, *sd, *cur, *cd, *hist[2], *hd[2];
+        uint8_t *ag[2];
+        int f, ping = 0, nfr = v == 0 ? 16 : 20;
+        fovlp_camera cam = lpsdf_camera(&sdf);
+        lc.cam_fov_y_deg = bi.camera.fov_y_deg;
+        lc.taa.enable = 1;
+        lc.taa.clamp = v == 2 ? (uint32_t)FOVLP_CLAMP_VARIANCE : 0u;
+        fovlp_memory_size(&lc, &bytes);
+        lm = malloc(bytes);
+        fovlp_init(&lp, &lc, lm, bytes);
+        smp = (float *)malloc((size_t)lp.geo.samples * 3 * sizeof(float));
+        sd = (float *)malloc((size_t)lp.geo.samples * sizeof(float));
+        cur = (float *)malloc(npx * 3 * sizeof(float));
+        cd = (float *)malloc(npx * sizeof(float));
+        for (f = 0; f < 2; ++f) { hist[f] = (float *)malloc(npx * 3 * sizeof(float)); hd[f] = (float *)malloc(npx * sizeof(float)); ag[f] = (uint8_t *)malloc(npx); }
+        for (f = 0; f < nfr; ++f) {
+            fovlp_taa_io io;
+            fovlp_begin_frame(&lp, gaze, &cam);
+            fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, smp, sd, NULL);
+            fovlp_reconstruct_rows(&lp, smp, sd, 0, H, cur, 0, cd);
+            io.cur_rgb = cur; io.cur_depth = cd;
+            io.prev_rgb = hist[ping]; io.prev_depth = hd[ping]; io.prev_age = ag[ping];
+            io.out_rgb = hist[1 - ping]; io.out_depth = hd[1 - ping]; io.out_age = ag[1 - ping];
+            fovlp_taa_rows(&lp, &io, 0, H, NULL);
+            ping = 1 - ping;
+        }
+        to_disp(hist[ping], im[3], npx * 3);
+        fprintf(stderr, "  %s fovea: C Fov TAA after %d still frames%s against", nm, nfr, v == 2 ? ", variance clipping" : "");
+        for (k = 0; k < 3; ++k) {
+            fovm_psnr_sel(im[k], im[3], (int)W, (int)H, 3, &sel, &p, &cnt);
+            fprintf(stderr, " %s %.2f dB", k == 0 ? "256 spp" : (k == 1 ? ", 16 unmoved" : ", 16 centred"), p);
+        }
+        fprintf(stderr, "\n");
+        for (f = 0; f < 2; ++f) { free(hist[f]); free(hd[f]); free(ag[f]); }
+        free(lm); free(smp); free(sd); free(cur); free(cd);
+    }
+    for (k = 0; k < 4; ++k) free(im[k]);
+    free(ecc); free(tmp); free(mem);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
-    int full = 0, runs = 5, frames = 20, a, ncfg = 0, c, shadows = 0;
-    const char *scenes = "primitives,columns,temple,atrium,thin,fractals", *outpath = "bench/results/lp.csv";
+    int study = 0, full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
+    const char *scenes = NULL, *outpath = "bench/results/lp.csv", *mscenes = NULL;
+    char mpath[600];
     cfg_t cfgs[64];
-    FILE *csv;
+    FILE *csv, *mcsv;
     size_t npx;
-    float *gt, *gt_disp, *full_img, *disp, *ecc, *samples, *sdep, *cur, *cdep, *hist[2], *hdep[2], *prev_t, *prev_r;
+    float *gt, *gt_disp, *gtref, *gtref_disp, *full_img, *disp, *ecc, *samples, *sdep, *cur, *cdep, *hist[2], *hdep[2], *prev_t, *prev_r;
     uint8_t *age[2];
     double t_start = now_ms();
 
@@ -103,7 +408,20 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
+        else if (!strcmp(argv[a], "--fovea-study")) study = 1;
+        else if (!strcmp(argv[a], "--moving-scenes") && a + 1 < argc) mscenes = argv[++a];
+        else if (!strcmp(argv[a], "--moving-frames") && a + 1 < argc) mframes = atoi(argv[++a]);
         else { fprintf(stderr, "unknown argument %s (see the comment at the top of bench_lp.c)\n", argv[a]); return 2; }
+    }
+    if (!scenes) scenes = full ? "primitives,columns,temple,atrium,thin,fractals" : "primitives,columns,temple,thin,fractals";
+    if (!mscenes) mscenes = full ? scenes : "primitives,columns";
+    if (mframes < 3) mframes = 3;
+    if (study) {
+        fovsdf_config scfg = fovsdf_config_default();
+        scfg.shading = shadows ? scfg.shading : FOVSDF_SHADE_NO_SHADOWS;
+        for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id)
+            if (strstr(scenes, fovsdf_builtin_name(id))) fovea_study(id, &scfg, W, H);
+        return 0;
     }
     if (runs < 1) runs = 1;
     if (runs > 15) runs = 15;
@@ -128,6 +446,8 @@ int main(int argc, char **argv)
     npx = (size_t)W * H;
     gt = (float *)malloc(npx * 3 * sizeof(float));
     gt_disp = (float *)malloc(npx * 3 * sizeof(float));
+    gtref = (float *)malloc(npx * 3 * sizeof(float));
+    gtref_disp = (float *)malloc(npx * 3 * sizeof(float));
     full_img = (float *)malloc(npx * 3 * sizeof(float));
     disp = (float *)malloc(npx * 3 * sizeof(float));
     ecc = (float *)malloc(npx * sizeof(float));
@@ -142,12 +462,25 @@ int main(int argc, char **argv)
     }
     csv = fopen(outpath, "w");
     if (!csv) { fprintf(stderr, "cannot write %s (run from the repository root)\n", outpath); return 1; }
+    {
+        size_t L = strlen(outpath);
+        if (L > 4 && !strcmp(outpath + L - 4, ".csv")) L -= 4;
+        snprintf(mpath, sizeof mpath, "%.*s_moving.csv", (int)L, outpath);
+    }
+    mcsv = fopen(mpath, "w");
+    if (!mcsv) { fprintf(stderr, "cannot write %s\n", mpath); return 1; }
+    fprintf(mcsv, "scene,mode,sigma,taa,clamp,frames,motion_px,psnr_all,flicker_all,flicker_periph,worst_ring_ratio");
+    for (a = 1; a <= NRINGS; ++a) fprintf(mcsv, ",rmse_r%d", a);
+    for (a = 1; a <= NRINGS; ++a) fprintf(mcsv, ",flicker_r%d", a);
+    fprintf(mcsv, ",shading\n");
     fprintf(csv, "scene,mode,sigma,alpha,a_g,samples_pct,speedup,psnr_fovea,psnr_all,ssim_fovea,flicker_ratio,"
                  "psnr_fovea_1f,psnr_all_1f,ssim_fovea_1f,flicker_taa,flicker_raw,time_fov_ms,time_full_ms,lp_w,lp_h,r_g,"
                  "width,height,runs,frames,shading");
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",rmse_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",psnr_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",ssim_r%d", a);
+    fprintf(csv, ",evals_full,evals_fov,evals_px_full,evals_smp_fov,hits_pct_full,hits_pct_fov,eval_ratio,"
+                 "psnr_fovea_ref,psnr_gt_fovea_ref,prims_px_full,prims_smp_fov");
     fprintf(csv, "\n");
     fprintf(stderr, "bench-lp: %ux%u, %d configurations per scene, median of %d runs, %d TAA frames, one thread\n", W, H,
             ncfg, runs, frames);
@@ -161,9 +494,11 @@ int main(int argc, char **argv)
         void *mem;
         fov_gaze gaze;
         lpsdf_user user;
-        double tfull[15], t_full, max_ecc = 0.0;
+        double tfull[15], t_full, max_ecc = 0.0, p_gt_ref = 0.0;
+        long cnt_ref = 0;
+        fovm_sel fovea_all;
         fov_ecc_model em;
-        uint32_t x, y, k;
+        uint32_t x, y;
         if (!strstr(scenes, nm)) continue;
         if (!shadows) scfg.shading = FOVSDF_SHADE_NO_SHADOWS;
         fovsdf_builtin_size(id, &bytes);
@@ -176,17 +511,10 @@ int main(int argc, char **argv)
         fovsdf_init(&sdf, &scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
         memset(&user, 0, sizeof user);
         user.sdf = &sdf;
-        /* ground truth: 16 Halton points per pixel, box filtered */
+        /* ground truth: 16 Halton points per pixel, moved so that their mean is the pixel
+           centre, box filtered */
         fprintf(stderr, "  %s: ground truth (16 spp) ...\n", nm);
-        for (y = 0; y < H; ++y)
-            for (x = 0; x < W; ++x) {
-                float acc[3] = { 0, 0, 0 }, s[3];
-                for (k = 1; k <= 16; ++k) {
-                    lpsdf_shade((float)x + halton(k, 2), (float)y + halton(k, 3), s, NULL, &user);
-                    acc[0] += s[0]; acc[1] += s[1]; acc[2] += s[2];
-                }
-                for (k = 0; k < 3; ++k) gt[3 * ((size_t)y * W + x) + k] = acc[k] / 16.0f;
-            }
+        gt_image(&user, W, H, NULL, 0.0f, 16, 0, gt);
         to_disp(gt, gt_disp, npx * 3);
         /* eccentricity map (the shared model, camera field of view) */
         fovlp_ecc_init(&em, NULL, bi.camera.fov_y_deg, W, H, gaze);
@@ -194,12 +522,21 @@ int main(int argc, char **argv)
             ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
             if ((double)ecc[i] > max_ecc) max_ecc = (double)ecc[i];
         }
+        /* the fovea's own reference: 256 samples per pixel (16 x 16 grid), fovea pixels only,
+           to measure the 16-spp ground truth's own error there */
+        fovea_all = fovm_sel_band(ecc, 0.0, 5.0);
+        gt_image(&user, W, H, ecc, 5.0f, 16, 1, gtref);
+        to_disp(gtref, gtref_disp, npx * 3);
+        fovm_psnr_sel(gtref_disp, gt_disp, (int)W, (int)H, 3, &fovea_all, &p_gt_ref, &cnt_ref);
         for (c = 0; c < ncfg; ++c) {
             fovlp_config lc = fovlp_config_preset(cfgs[c].preset, W, H);
             fovlp_ctx lp;
             void *lpmem;
             fovlp_counts cnt;
-            double tf[15], t_fov, fl_t = 0.0, fl_r = 0.0, pf = 0, pa = 0, sf = 0, pf1 = 0, pa1 = 0, sf1 = 0;
+            fovsdf_stats st_full, st_fov;
+            memset(&st_full, 0, sizeof st_full);
+            memset(&st_fov, 0, sizeof st_fov);
+            double p_ref = 0.0, tf[15], t_fov, fl_t = 0.0, fl_r = 0.0, pf = 0, pa = 0, sf = 0, pf1 = 0, pa1 = 0, sf1 = 0;
             long nfl = 0, cntsel;
             int f, ping = 0;
             float diag = sqrtf((float)W * (float)W + (float)H * (float)H);
@@ -217,15 +554,20 @@ int main(int argc, char **argv)
             /* timing, side by side: full resolution (one sample per pixel centre through the
                same shading) and a foveated frame without TAA, alternately, medians */
             for (a = 0; a < runs; ++a) {
-                double t0 = now_ms();
+                double t0;
+                memset(&user.stats, 0, sizeof user.stats); /* deterministic counts of the first run */
+                t0 = now_ms();
                 for (y = 0; y < H; ++y)
                     for (x = 0; x < W; ++x) lpsdf_shade((float)x + 0.5f, (float)y + 0.5f, full_img + 3 * ((size_t)y * W + x), NULL, &user);
                 tfull[a] = now_ms() - t0;
+                if (a == 0) st_full = user.stats;
+                memset(&user.stats, 0, sizeof user.stats);
                 t0 = now_ms();
                 fovlp_begin_frame(&lp, gaze, &cam);
                 fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, samples, NULL, NULL);
                 fovlp_reconstruct_rows(&lp, samples, NULL, 0, H, cur, 0, NULL);
                 tf[a] = now_ms() - t0;
+                if (a == 0) st_fov = user.stats;
             }
             t_fov = median(tf, runs);
             t_full = median(tfull, runs);
@@ -266,6 +608,7 @@ int main(int argc, char **argv)
             fovm_psnr_sel(gt_disp, disp, (int)W, (int)H, 3, &fov_sel, &pf, &cntsel);
             fovm_psnr(gt_disp, disp, (int)W, (int)H, 3, &pa);
             fovm_ssim_sel(gt_disp, disp, (int)W, (int)H, 3, 0, &fov_sel, &sf, &cntsel);
+            fovm_psnr_sel(gtref_disp, disp, (int)W, (int)H, 3, &fov_sel, &p_ref, &cntsel);
             fovm_ecc_rings(gt_disp, disp, (int)W, (int)H, 3, ecc, NRINGS, max_ecc * 1.0001, FOVM_FLIP_DEFAULT_PPD, rings);
             fprintf(csv, "%s,%s,%.3f,%.2f,%.3f,%.3f,%.4f,%.3f,%.3f,%.5f,%.5f,%.3f,%.3f,%.5f,%.6f,%.6f,%.3f,%.3f,%u,%u,%.2f,%u,%u,%d,%d,%s",
                     nm, fovlp_preset_name(cfgs[c].preset), (double)lc.sigma, (double)lc.alpha, (double)lc.gaze_angle,
@@ -275,7 +618,12 @@ int main(int argc, char **argv)
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", sqrt(rings[a].mse));
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.3f", rings[a].psnr);
             for (a = 0; a < NRINGS; ++a) fprintf(csv, ",%.5f", rings[a].ssim);
-            fprintf(csv, "\n");
+            fprintf(csv, ",%llu,%llu,%.3f,%.3f,%.2f,%.2f,%.4f,%.3f,%.3f", (unsigned long long)st_full.evals,
+                    (unsigned long long)st_fov.evals, (double)st_full.evals / (double)npx,
+                    (double)st_fov.evals / (double)cnt.shaded, 100.0 * (double)st_full.hits / (double)st_full.rays,
+                    100.0 * (double)st_fov.hits / (double)st_fov.rays, (double)st_full.evals / (double)st_fov.evals,
+                    p_ref, p_gt_ref);
+            fprintf(csv, ",%.2f,%.2f\n", (double)st_full.prims / (double)npx, (double)st_fov.prims / (double)cnt.shaded);
             fflush(csv);
             fprintf(stderr, "  %s %-7s sigma %.2f: %5.1f %% samples, speed-up %.2f (ideal %.2f), fovea %.1f dB (1 frame %.1f), all %.1f dB, flicker ratio %.3f\n",
                     nm, fovlp_preset_name(cfgs[c].preset), (double)lc.sigma, (double)cnt.shaded_pct, t_full / t_fov,
@@ -285,8 +633,13 @@ int main(int argc, char **argv)
             free(lpmem);
         }
         free(mem);
+        if (strstr(mscenes, nm)) {
+            fprintf(stderr, "  %s: moving camera and gaze, %d frames ...\n", nm, mframes);
+            moving_seq(mcsv, id, &scfg, W, H, mframes, max_ecc, shadows ? "full" : "no_shadows");
+        }
     }
     fclose(csv);
+    fclose(mcsv);
     fprintf(stderr, "wrote %s (%.0f s)\n", outpath, (now_ms() - t_start) / 1000.0);
 
     if (system("command -v gnuplot > /dev/null 2>&1") == 0) {
@@ -341,15 +694,45 @@ int main(int argc, char **argv)
                     fprintf(gp2, "set title 'fovlp: wall-time speed-up against the sample ratio (same run)'\n");
                     fprintf(gp2, "set xlabel 'pixels / shaded samples'; set ylabel 'time full resolution / time foveated'\n");
                     fprintf(gp2, "plot '%s' every ::1 using (100/$6):7:(sprintf('%%s %%s %%.2f', strcol(1), strcol(2), $3)) with labels point pt 7 offset 0.5,0.5 font ',7', x with lines lc 'grey', 0.8*x with lines lc 'grey' dt 2\n", outpath);
+                    /* the moving sequence: ring RMSE per TAA variant */
+                    {
+                        FILE *mi = fopen(mpath, "r"), *mo = fopen("build/lp_moving_rings.dat", "w");
+                        int nblk = 0;
+                        if (mi && mo) {
+                            if (!fgets(line, sizeof line, mi)) line[0] = 0;
+                            while (fgets(line, sizeof line, mi)) {
+                                char *tok[64];
+                                int n = 0, r;
+                                char *p = strtok(line, ",\n");
+                                while (p && n < 64) { tok[n++] = p; p = strtok(NULL, ",\n"); }
+                                if (n < 11 + NRINGS) continue;
+                                fprintf(mo, "\"%s TAA %s\"\n", tok[0], tok[4]);
+                                for (r = 0; r < NRINGS; ++r) fprintf(mo, "%d %s\n", r + 1, tok[11 + r]);
+                                fprintf(mo, "\n\n");
+                                nblk++;
+                            }
+                        }
+                        if (mi) fclose(mi);
+                        if (mo) fclose(mo);
+                        if (nblk > 0) {
+                            char mpng[600];
+                            snprintf(mpng, sizeof mpng, "%.*s.png", (int)(strlen(mpath) - 4), mpath);
+                            fprintf(gp2, "set terminal pngcairo size 900,500; set output '%s'\n", mpng);
+                            fprintf(gp2, "set datafile separator whitespace; set grid; set key outside right font ',8'\n");
+                            fprintf(gp2, "set title 'fovlp C Fov, moving camera and gaze: RMSE per ring against 4 spp (%ux%u, %d frames)'\n", W, H, mframes);
+                            fprintf(gp2, "set xlabel 'ring (20 equal-angle rings around the gaze)'; set ylabel 'RMSE (sRGB)'\n");
+                            fprintf(gp2, "plot for [i=0:%d] 'build/lp_moving_rings.dat' index i using 1:2 with linespoints title columnheader(1)\n", nblk - 1);
+                        }
+                    }
                     pclose(gp2);
-                    fprintf(stderr, "plots next to %s: lp_<scene>.png, lp_speed.png\n", outpath);
+                    fprintf(stderr, "plots next to %s: lp_<scene>.png, lp_speed.png, %s.png\n", outpath, "lp_moving");
                 }
             }
         }
     } else {
         fprintf(stderr, "gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
     }
-    free(gt); free(gt_disp); free(full_img); free(disp); free(ecc); free(cur); free(cdep); free(prev_t); free(prev_r);
+    free(gt); free(gt_disp); free(gtref); free(gtref_disp); free(full_img); free(disp); free(ecc); free(cur); free(cdep); free(prev_t); free(prev_r);
     for (a = 0; a < 2; ++a) { free(hist[a]); free(hdep[a]); free(age[a]); }
     return 0;
 }

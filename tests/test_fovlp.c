@@ -150,6 +150,49 @@ static void test_config(void)
         check(fabsf(g.L - logf(sqrtf(1920.0f * 1920.0f + 1080.0f * 1080.0f))) < 1e-4f,
               "normaliser: CORNER with the gaze in a corner equals the diagonal", "L %g", (double)g.L);
     }
+    /* Meng's normaliser at any gaze: the buffer keeps the diagonal's size (no reallocation),
+       every column is used and the outermost column edge (u = w) lands on the farthest corner */
+    {
+        static const float gzs[5][2] = { { 960.0f, 540.0f }, { 100.0f, 200.0f }, { 0.0f, 0.0f }, { 1919.0f, 1079.0f }, { 1500.0f, 900.0f } };
+        uint32_t preset, k, bad_size = 0, bad_cols = 0, bad_L = 0, bad_edge = 0, bad_disc = 0;
+        for (preset = 0; preset < 4; ++preset)
+            for (k = 0; k < 5; ++k) {
+                fovlp_config pd = fovlp_config_preset(preset, 1920, 1080), pc;
+                fovlp_geometry gd, gc;
+                fov_gaze gk;
+                lp_env e;
+                float cx[4] = { 0.0f, 1920.0f, 0.0f, 1920.0f }, cy[4] = { 0.0f, 0.0f, 1080.0f, 1080.0f }, rmax = 0.0f;
+                uint32_t q;
+                gk.x = gzs[k][0]; gk.y = gzs[k][1];
+                for (q = 0; q < 4; ++q) rmax = fmaxf(rmax, sqrtf((cx[q] - gk.x) * (cx[q] - gk.x) + (cy[q] - gk.y) * (cy[q] - gk.y)));
+                pc = pd;
+                pc.norm = FOVLP_NORM_CORNER;
+                fovlp_geometry_get(&pd, gk, &gd);
+                fovlp_geometry_get(&pc, gk, &gc);
+                if (gc.lp_w != gd.lp_w || gc.lp_h != gd.lp_h || gc.samples != gd.samples) bad_size++;
+                if (gc.lp_cols != gc.lp_w) bad_cols++;
+                if (fabsf(gc.L - logf(rmax)) > 1e-4f) bad_L++;
+                if (env_init(&e, &pc) != FOV_OK || fovlp_begin_frame(&e.ctx, gk, NULL) != FOV_OK) { bad_edge++; continue; }
+                for (q = 0; q < 8; ++q) {
+                    float x, y, u, v, vq = (float)e.ctx.geo.lp_h * (float)q / 8.0f;
+                    fovlp_lp_to_screen(&e.ctx, (float)e.ctx.geo.lp_w, vq, &x, &y);
+                    if (fabsf(sqrtf((x - gk.x) * (x - gk.x) + (y - gk.y) * (y - gk.y)) - rmax) > 1e-3f * rmax) bad_edge++;
+                    if (e.ctx.geo.r_g > 0.0f) { /* u = 0 on the disc edge, and back */
+                        fovlp_lp_to_screen(&e.ctx, 0.0f, vq, &x, &y);
+                        if (fabsf(sqrtf((x - gk.x) * (x - gk.x) + (y - gk.y) * (y - gk.y)) - e.ctx.geo.r_g) > 1e-3f * e.ctx.geo.r_g) bad_disc++;
+                        fovlp_screen_to_lp(&e.ctx, x, y, &u, &v);
+                        if (fabsf(u) > 2e-2f) bad_disc++;
+                    }
+                }
+                env_free(&e);
+            }
+        check(bad_size == 0 && bad_cols == 0 && bad_L == 0,
+              "normaliser: CORNER at 5 gazes x 4 presets: the diagonal's buffer size, L = log(farthest corner), all columns dispatched",
+              "size %u cols %u L %u", bad_size, bad_cols, bad_L);
+        check(bad_edge == 0 && bad_disc == 0,
+              "normaliser: CORNER: column edge u = w maps onto the farthest corner, u = 0 onto the disc edge (1e-3 relative)",
+              "edge %u disc %u", bad_edge, bad_disc);
+    }
     /* memory size covers the tables and grows with the buffer */
     {
         size_t b1 = 0, b2 = 0;
@@ -204,6 +247,7 @@ static void test_bad_input(void)
     BAD(b.taa.phases = 1000, FOV_ERR_INVALID_ARG, "bad input: taa.phases > 256");
     BAD(b.taa.max_age = 300, FOV_ERR_INVALID_ARG, "bad input: taa.max_age > 255");
     BAD(b.taa.clamp = 9, FOV_ERR_INVALID_ARG, "bad input: unknown taa.clamp");
+    BAD(b.taa.thesis_moving = 2, FOV_ERR_INVALID_ARG, "bad input: taa.thesis_moving not 0 or 1");
     BAD(b.display.pixel_pitch_mm = 0.2f, FOV_ERR_INVALID_ARG, "bad input: display pitch without distance");
     BAD(b.cam_fov_y_deg = 180.0f, FOV_ERR_INVALID_ARG, "bad input: cam_fov_y_deg 180");
     BAD((b.blend_start = 0.5f, b.blend_end = 0.4f), FOV_ERR_INVALID_ARG, "bad input: blend_end <= blend_start");

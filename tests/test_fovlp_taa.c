@@ -227,6 +227,7 @@ static void bar_edges(const fovlp_camera *c, float *xl, float *xr)
 }
 
 /* runs the sequence; ghost counts per frame: near = within diag/3 of the gaze, far = beyond */
+static double far_err; /* sum of |out - truth| beyond diag/3 over the moving frames, edge band included */
 static void run_moving(const fovlp_config *c, fov_gaze gz, int frames_moving, int frames_still, int *near_ghost, int *far_ghost,
                        int *first_clean, uint32_t *jit_ok)
 {
@@ -242,6 +243,7 @@ static void run_moving(const fovlp_config *c, fov_gaze gz, int frames_moving, in
     memset(far_ghost, 0, (size_t)total * sizeof *far_ghost);
     *first_clean = -1;
     *jit_ok = 1;
+    far_err = 0.0;
     for (f = 0; f < total; ++f) {
         const float *o;
         float xl, xr;
@@ -255,13 +257,15 @@ static void run_moving(const fovlp_config *c, fov_gaze gz, int frames_moving, in
             for (x = 0; x < W; ++x) {
                 float px = (float)x + 0.5f, py = (float)y + 0.5f, dx = px - gz.x, dy = py - gz.y, r = sqrtf(dx * dx + dy * dy);
                 float rad, ang, band, dd, truth;
+                if (r > diag / 3.0f && f > 0 && f <= frames_moving)
+                    far_err += fabs((double)(o[3 * (y * W + x)] - scene_hit(&s.cam, px, py, &dd)));
                 fovlp_spacing(&e.ctx, r, &rad, &ang);
                 band = 2.0f * fmaxf(rad, ang) + 3.0f; /* reconstruction and history blur of the edge */
                 if (fabsf(px - xl) < band || fabsf(px - xr) < band) continue;
                 truth = scene_hit(&s.cam, px, py, &dd);
                 if (fabsf(o[3 * (y * W + x)] - truth) > 0.1f) {
                     if (r <= diag / 3.0f) { near_ghost[f]++; if (getenv("LPDBG")) printf("  ghost f %d x %u y %u out %g truth %g edges %g %g band %g\n", f, x, y, (double)o[3 * (y * W + x)], (double)truth, (double)xl, (double)xr, (double)band); }
-                    else { far_ghost[f]++; far_now = 1; }
+                    else { far_ghost[f]++; far_now = 1; if (getenv("LPDBG")) printf("  far ghost f %d x %u y %u out %g truth %g edges %g %g band %g\n", f, x, y, (double)o[3 * (y * W + x)], (double)truth, (double)xl, (double)xr, (double)band); }
                 }
             }
         if (f >= frames_moving && !far_now && *first_clean < 0) *first_clean = f - frames_moving;
@@ -283,18 +287,39 @@ static void test_moving(void)
     check(near_sum == 0, "TAA moving: no ghost (|out - truth| > 0.1 outside the edge band) within diag/3 of the gaze at any frame",
           "%d ghost pixel-frames", near_sum);
     /* the gaze at the left border: the bar lies beyond diag/3, where history is kept */
-    run_moving(&c, side, FM, FS, near_g, far_g, &clean, &jit_ok);
-    for (f = 1; f <= FM; ++f) far_moving += far_g[f];
-    check(far_moving > 0 && clean >= 0 && clean <= 5,
-          "TAA moving: peripheral ghosts (history kept, age reset: the thesis's rule) gone within 5 frames after the camera stops",
-          "clean after %d frames (-1: never); peripheral ghost pixel-frames while moving %d", clean, far_moving);
-    printf("# moving: peripheral ghost pixel-frames while moving %d, clean %d frames after the stop\n", far_moving, clean);
+    {
+        fovlp_config craw = c;
+        int far_default = 0;
+        double e_raw, e_def, e_off;
+        craw.taa.thesis_moving = 1;
+        run_moving(&craw, side, FM, FS, near_g, far_g, &clean, &jit_ok);
+        for (f = 1; f <= FM; ++f) far_moving += far_g[f];
+        check(far_moving > 0 && clean >= 0 && clean <= 5,
+              "TAA moving, thesis_moving (the thesis's rule: history kept, age reset): peripheral ghosts gone within 5 frames after the camera stops",
+              "clean after %d frames (-1: never); peripheral ghost pixel-frames while moving %d", clean, far_moving);
+        printf("# moving, thesis's periphery rule: peripheral ghost pixel-frames while moving %d, clean %d frames after the stop\n",
+               far_moving, clean);
+        e_raw = far_err;
+        run_moving(&c, side, FM, FS, near_g, far_g, &clean, &jit_ok);
+        for (f = 1; f < FM + FS; ++f) far_default += far_g[f] + near_g[f];
+        e_def = far_err;
+        craw.taa.enable = 0;
+        run_moving(&craw, side, FM, FS, near_g, far_g, &clean, &jit_ok);
+        e_off = far_err;
+        printf("# moving, gaze at the border: |out - truth| summed beyond diag/3: no TAA %.1f, thesis's rule %.1f, default %.1f\n", e_off, e_raw, e_def);
+        check(e_raw > 1.5 * e_off, "TAA moving, thesis_moving: control: the thesis's history ghosts beyond diag/3 (error > 1.5x no TAA)",
+              "%.1f vs %.1f", e_raw, e_off);
+        check(e_def < 1.1 * e_off, "TAA moving, default: error beyond diag/3 within 10 % of no TAA (no ghost)", "%.1f vs %.1f", e_def, e_off);
+        check(far_default == 0, "TAA moving, default (history variance-clipped while moving): no ghost at any frame",
+              "%d ghost pixel-frames (thesis's rule: %d)", far_default, far_moving);
+    }
     check(jit_ok != 0, "TAA moving: jitter off while the camera moves (thesis)", " ");
     /* teeth: without depth rejection (huge tolerance) and without clamping the bar ghosts */
     {
         fovlp_config c2 = c;
         int ng[FM + FS], fg[FM + FS], cl, sum = 0;
         c2.taa.depth_tol = 1e9f;
+        c2.taa.thesis_moving = 1; /* the clamps below only as asked for */
         run_moving(&c2, centre, FM, FS, ng, fg, &cl, &jit_ok);
         for (f = 1; f <= FM; ++f) sum += ng[f];
         check(sum > 100, "TAA moving: control: with depth rejection disabled the bar does ghost near the gaze", "%d", sum);
@@ -381,10 +406,45 @@ static void test_bad_samples(void)
 #define MODE "libm"
 #endif
 
+/* a still camera in the gaze disc: after exactly `phases` frames each disc pixel is the box
+   estimate of its pixel with the 16 jittered points (eq. 3.11: Halton (2, 3) 1..16 scaled so
+   that their mean is 1/2), computed here independently of the library */
+static void test_disc_converges(void)
+{
+    fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+    taa_env e;
+    fov_gaze gz = { 161.0f, 92.0f };
+    float sx = 0.0f, sy = 0.0f, worst = 0.0f, diff16 = 0.0f;
+    uint32_t k, x, y, n = 0;
+    const float *o = NULL;
+    c.taa.enable = 1;
+    env_init(&e, &c);
+    for (k = 1; k <= 16; ++k) { sx += halton(k, 2); sy += halton(k, 3); }
+    sx = 0.5f / (sx / 16.0f);
+    sy = 0.5f / (sy / 16.0f);
+    for (k = 0; k < 16; ++k) o = frame(&e, gz, NULL, shade_pattern, NULL, NULL);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            float dx = (float)x + 0.5f - gz.x, dy = (float)y + 0.5f - gz.y, acc = 0.0f, first;
+            if (dx * dx + dy * dy > (e.ctx.geo.r_g - 2.0f) * (e.ctx.geo.r_g - 2.0f)) continue;
+            for (k = 1; k <= 16; ++k) acc += pattern((float)x + halton(k, 2) * sx, (float)y + halton(k, 3) * sy);
+            acc /= 16.0f;
+            worst = fmaxf(worst, fabsf(o[3 * (y * W + x)] - acc));
+            first = pattern((float)x + 0.5f, (float)y + 0.5f); /* control: the pixel centre alone */
+            diff16 = fmaxf(diff16, fabsf(first - acc));
+            n++;
+        }
+    check(n > 1000 && worst < 2e-5f && diff16 > 100.0f * worst,
+          "TAA still: after 16 frames each disc pixel is the mean of its 16 scaled Halton points (1/age blend, no clamp)",
+          "%u pixels, worst %g (centre sample differs by %g)", n, (double)worst, (double)diff16);
+    env_free(&e);
+}
+
 int main(void)
 {
     printf("# fovlp.h TAA tests (%s)\n", MODE);
     test_still();
+    test_disc_converges();
     test_moving();
     test_age();
     test_bad_samples();
