@@ -1,4 +1,4 @@
-/* fovpt.h - v0.1.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.2.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    Do this:
@@ -59,7 +59,7 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
       smoothing (seed 004 steps 2 and 4); 8-bit sRGB or float output.
 
-STATUS (v0.1.0 + unreleased changes below)
+STATUS (v0.2.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
@@ -224,7 +224,7 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   unreleased         review fixes: a LAYERS layer whose stride exceeds the image with the
+   0.2.0 (2026-11-23) review fixes: a LAYERS layer whose stride exceeds the image with the
                       gaze off it keeps one lattice point (it read before its buffer); hook
                       and plane normals and camera vectors of any length; a failed
                       fovpt_set_view leaves the view unchanged; fovpt_radiance logs; any
@@ -256,7 +256,7 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 1
+#define FOVPT_VERSION_MINOR 2
 #define FOVPT_VERSION_PATCH 0
 #define FOVPT_VERSION_STRING "0.1.0"
 
