@@ -96,6 +96,22 @@ static double median(double *v, int n)
    mean is the pixel centre (Halton 1..16 alone average (0.471, 0.463): an image shifted by
    1/30 pixel); grid 1: an n x n grid of cell centres; grid 2: Halton 1..n as they are. With mask, only the pixels whose
    mask value is below lim (the others are left 0). */
+/* One TAA frame: shade, reconstruct, resolve into the history ping-pong; returns the output. */
+static const float *taa_frame(fovlp_ctx *lp, fov_gaze gaze, const fovlp_camera *cam, lpsdf_user *user, float *smp,
+                              float *sd, float *cur, float *cd, float *hist[2], float *hd[2], uint8_t *ag[2], int *ping)
+{
+    fovlp_taa_io io;
+    fovlp_begin_frame(lp, gaze, cam);
+    fovlp_shade_rows(lp, 0, fovlp_sample_rows(lp), lpsdf_shade, user, smp, sd, NULL);
+    fovlp_reconstruct_rows(lp, smp, sd, 0, lp->geo.height, cur, 0, cd);
+    io.cur_rgb = cur; io.cur_depth = cd;
+    io.prev_rgb = hist[*ping]; io.prev_depth = hd[*ping]; io.prev_age = ag[*ping];
+    io.out_rgb = hist[1 - *ping]; io.out_depth = hd[1 - *ping]; io.out_age = ag[1 - *ping];
+    fovlp_taa_rows(lp, &io, 0, lp->geo.height, NULL);
+    *ping = 1 - *ping;
+    return hist[*ping];
+}
+
 static void gt_image(lpsdf_user *user, uint32_t W, uint32_t H, const float *mask, float lim, uint32_t n, int grid,
                      float *out)
 {
@@ -362,17 +378,7 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
         cur = (float *)malloc(npx * 3 * sizeof(float));
         cd = (float *)malloc(npx * sizeof(float));
         for (f = 0; f < 2; ++f) { hist[f] = (float *)malloc(npx * 3 * sizeof(float)); hd[f] = (float *)malloc(npx * sizeof(float)); ag[f] = (uint8_t *)malloc(npx); }
-        for (f = 0; f < nfr; ++f) {
-            fovlp_taa_io io;
-            fovlp_begin_frame(&lp, gaze, &cam);
-            fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, smp, sd, NULL);
-            fovlp_reconstruct_rows(&lp, smp, sd, 0, H, cur, 0, cd);
-            io.cur_rgb = cur; io.cur_depth = cd;
-            io.prev_rgb = hist[ping]; io.prev_depth = hd[ping]; io.prev_age = ag[ping];
-            io.out_rgb = hist[1 - ping]; io.out_depth = hd[1 - ping]; io.out_age = ag[1 - ping];
-            fovlp_taa_rows(&lp, &io, 0, H, NULL);
-            ping = 1 - ping;
-        }
+        for (f = 0; f < nfr; ++f) taa_frame(&lp, gaze, &cam, &user, smp, sd, cur, cd, hist, hd, ag, &ping);
         to_disp(hist[ping], im[3], npx * 3);
         fprintf(stderr, "  %s fovea: C Fov TAA after %d still frames%s against", nm, nfr, v == 2 ? ", variance clipping" : "");
         for (k = 0; k < 3; ++k) {
@@ -580,17 +586,7 @@ int main(int argc, char **argv)
             lc.taa.enable = 1;
             fovlp_init(&lp, &lc, lpmem, bytes);
             for (f = 0; f < frames; ++f) {
-                fovlp_taa_io io;
-                const float *o;
-                fovlp_begin_frame(&lp, gaze, &cam);
-                fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, samples, sdep, NULL);
-                fovlp_reconstruct_rows(&lp, samples, sdep, 0, H, cur, 0, cdep);
-                io.cur_rgb = cur; io.cur_depth = cdep;
-                io.prev_rgb = hist[ping]; io.prev_depth = hdep[ping]; io.prev_age = age[ping];
-                io.out_rgb = hist[1 - ping]; io.out_depth = hdep[1 - ping]; io.out_age = age[1 - ping];
-                fovlp_taa_rows(&lp, &io, 0, H, NULL);
-                ping = 1 - ping;
-                o = hist[ping];
+                const float *o = taa_frame(&lp, gaze, &cam, &user, samples, sdep, cur, cdep, hist, hdep, age, &ping);
                 for (i = 0; i < npx; ++i) {
                     float dx = (float)(i % W) + 0.5f - gaze.x, dy = (float)(i / W) + 0.5f - gaze.y;
                     if (f >= frames / 2 && dx * dx + dy * dy > diag * diag / 9.0f) {
