@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.2.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.2.1 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -180,10 +180,13 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   unreleased         a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
+   0.2.1 (2026-11-23) a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
                       valid (was FOV_ERR_DEGENERATE: the squared length under/overflowed);
                       a NaN or infinite albedo from the callback is taken as 0 (was a NaN
-                      pixel); a failed fovsdf_init leaves an existing context unchanged.
+                      pixel); a failed fovsdf_init leaves an existing context unchanged;
+                      any finite gaze is valid (the shared eccentricity model scales a gaze
+                      beyond ~1e19 px before normalising; ecc_ppd FLT_MAX, not inf);
+                      fovsdf_min_filter radius above 64 is FOV_ERR_LIMIT.
    0.2.0 (2026-11-23) FIPR and CONE_FOV (foveated head starts, periphery refresh, mask output,
                       fovsdf_mask_blur), tile output buffers (fovsdf_output.origin_x/y),
                       fovsdf_program_compact; fovsdf_output gained fields (zero them with
@@ -203,7 +206,7 @@ RECENT REVISION HISTORY
 
 #define FOVSDF_VERSION_MAJOR 0
 #define FOVSDF_VERSION_MINOR 2
-#define FOVSDF_VERSION_PATCH 0
+#define FOVSDF_VERSION_PATCH 1
 #define FOVSDF_VERSION_STRING "0.2.0"
 
 #if defined(__GNUC__) || defined(__clang__)
@@ -2973,7 +2976,7 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
     r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
-    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: gaze too far off the image (about 1e19 pixels) or display geometry");
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: display geometry (fov_y_deg, pixel pitch and distance, axis) or gaze");
     /* everything is valid: only now is ctx written (a failed call leaves it as it was) */
     ctx->right[0] = rt[0]; ctx->right[1] = rt[1]; ctx->right[2] = rt[2];
     ctx->up[0] = up[0]; ctx->up[1] = up[1]; ctx->up[2] = up[2];
