@@ -96,6 +96,26 @@ static double median(double *v, int n)
    mean is the pixel centre (Halton 1..16 alone average (0.471, 0.463): an image shifted by
    1/30 pixel); grid 1: an n x n grid of cell centres; grid 2: Halton 1..n as they are. With mask, only the pixels whose
    mask value is below lim (the others are left 0). */
+/* A built-in scene at W x H with the tracer on it, the gaze at the centre and the shading
+   glue pointing at the tracer; returns the scene memory (the caller frees it). */
+static void *open_scene(uint32_t id, uint32_t W, uint32_t H, const fovsdf_config *scfg, fovsdf_builtin *bi,
+                        fovsdf_ctx *sdf, lpsdf_user *user, fov_gaze *gaze)
+{
+    size_t bytes = 0;
+    void *mem;
+    fovsdf_builtin_size(id, &bytes);
+    mem = malloc(bytes);
+    fovsdf_builtin_init(id, bi, mem, bytes);
+    bi->camera.width = W;
+    bi->camera.height = H;
+    gaze->x = 0.5f * (float)W;
+    gaze->y = 0.5f * (float)H;
+    fovsdf_init(sdf, scfg, &bi->scene, &bi->camera, *gaze, NULL, 0);
+    memset(user, 0, sizeof *user);
+    user->sdf = sdf;
+    return mem;
+}
+
 /* One TAA frame: shade, reconstruct, resolve into the history ping-pong; returns the output. */
 static const float *taa_frame(fovlp_ctx *lp, fov_gaze gaze, const fovlp_camera *cam, lpsdf_user *user, float *smp,
                               float *sd, float *cur, float *cd, float *hist[2], float *hd[2], uint8_t *ag[2], int *ping)
@@ -338,16 +358,7 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
     double p = 0.0;
     long cnt;
     int k, v;
-    fovsdf_builtin_size(id, &bytes);
-    mem = malloc(bytes);
-    fovsdf_builtin_init(id, &bi, mem, bytes);
-    bi.camera.width = W;
-    bi.camera.height = H;
-    gaze.x = 0.5f * (float)W;
-    gaze.y = 0.5f * (float)H;
-    fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
-    memset(&user, 0, sizeof user);
-    user.sdf = &sdf;
+    mem = open_scene(id, W, H, scfg, &bi, &sdf, &user, &gaze);
     fovlp_ecc_init(&em, NULL, bi.camera.fov_y_deg, W, H, gaze);
     for (i = 0; i < npx; ++i) ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
     sel = fovm_sel_band(ecc, 0.0, 5.0);
@@ -507,16 +518,7 @@ int main(int argc, char **argv)
         uint32_t x, y;
         if (!strstr(scenes, nm)) continue;
         if (!shadows) scfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-        fovsdf_builtin_size(id, &bytes);
-        mem = malloc(bytes);
-        fovsdf_builtin_init(id, &bi, mem, bytes);
-        bi.camera.width = W;
-        bi.camera.height = H;
-        gaze.x = 0.5f * (float)W;
-        gaze.y = 0.5f * (float)H;
-        fovsdf_init(&sdf, &scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
-        memset(&user, 0, sizeof user);
-        user.sdf = &sdf;
+        mem = open_scene(id, W, H, &scfg, &bi, &sdf, &user, &gaze);
         /* ground truth: 16 Halton points per pixel, moved so that their mean is the pixel
            centre, box filtered */
         fprintf(stderr, "  %s: ground truth (16 spp) ...\n", nm);
