@@ -825,6 +825,34 @@ FOVLP__PRIV float fovlp__dot(const float a[3], const float b[3])
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 FOVLP__PRIV float fovlp__len(const float a[3]) { return FOVLP__SQRT(fovlp__dot(a, a)); }
+/* |a| for any finite a: scaled by the largest component when the squared length overflows or
+   underflows (inf only when |a| itself exceeds FLT_MAX); the plain formula otherwise */
+FOVLP__PRIV float fovlp__len_safe(const float a[3])
+{
+    float d = fovlp__dot(a, a), m, s[3];
+    if (d >= FLT_MIN && d <= FLT_MAX) return FOVLP__SQRT(d);
+    m = fovlp__maxf(fovlp__maxf(fovlp__absf(a[0]), fovlp__absf(a[1])), fovlp__absf(a[2]));
+    if (!(m > 0.0f) || !fovlp__finite(m)) return m;   /* 0, NaN or inf */
+    s[0] = a[0] / m; s[1] = a[1] / m; s[2] = a[2] / m;
+    return m * FOVLP__SQRT(fovlp__dot(s, s));
+}
+/* 2 x for a finite x, saturated at +-FLT_MAX; NaN and inf pass through */
+FOVLP__PRIV float fovlp__twice_sat(float x)
+{
+    float t = x + x;
+    if (fovlp__finite(x) && !fovlp__finite(t)) return x > 0.0f ? 3.4028235e38f : -3.4028235e38f;
+    return t;
+}
+/* a + (b - a) t for t in [0, 1], never outside [min(a, b), max(a, b)] and finite for finite
+   a, b: where b - a overflows (a and b of opposite signs beyond FLT_MAX / 2) it blends as
+   a (1 - t) + b t, which cannot overflow; the clamp catches the rounding of either form.
+   The usual case is bit for bit the plain formula. NaN in a or b passes through. */
+FOVLP__PRIV float fovlp__lerp(float a, float b, float t)
+{
+    float d = b - a, r, lo = a < b ? a : b, hi = a < b ? b : a;
+    r = fovlp__finite(d) ? a + d * t : a * (1.0f - t) + b * t;
+    return r < lo ? lo : (r > hi ? hi : r);
+}
 FOVLP__PRIV void fovlp__cross(const float a[3], const float b[3], float r[3])
 {
     float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
@@ -832,8 +860,19 @@ FOVLP__PRIV void fovlp__cross(const float a[3], const float b[3], float r[3])
 }
 FOVLP__PRIV float fovlp__normalize(float v[3])
 {
-    float l = fovlp__len(v);
-    if (l > 0.0f && fovlp__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
+    float d = fovlp__dot(v, v), l;
+    if (!(d >= FLT_MIN && d <= FLT_MAX)) {
+        /* the squared length overflows or underflows: scale by the largest component first,
+           so any finite non-zero vector comes out unit length */
+        float m = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), fovlp__absf(v[2]));
+        if (!(m > 0.0f) || !fovlp__finite(m)) return m;
+        v[0] /= m; v[1] /= m; v[2] /= m;
+        l = fovlp__len(v);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l * m;
+    }
+    l = FOVLP__SQRT(d);
+    v[0] /= l; v[1] /= l; v[2] /= l;
     return l;
 }
 /* uint64 -> float without the compiler runtime's 64-bit conversion helper */
@@ -1045,6 +1084,14 @@ FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y)
     float v[3], c[3], s, co;
     if (!m) return 0.0f;
     v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fovlp__finite(fovlp__dot(v, v)) && fovlp__finite(x) && fovlp__finite(y)) {
+        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
+           (no overflow) and scale by the largest component; the usual range is untouched */
+        float k;
+        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
+        k = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), v[2]);
+        v[0] /= k; v[1] /= k; v[2] /= k;
+    }
     fovlp__cross(v, m->g, c);
     s = fovlp__len(c);
     co = fovlp__dot(v, m->g);
@@ -1457,39 +1504,64 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
     return FOV_OK;
 }
 
+/* Distance of (dx, dy) from the origin for any finite dx, dy (scaled where the squares
+   overflow; FLT_MAX where the distance itself is beyond the float range). */
+FOVLP__PRIV float fovlp__hypot(float dx, float dy)
+{
+    float r2 = dx * dx + dy * dy, m, sx, sy, r;
+    if (fovlp__finite(r2)) return FOVLP__SQRT(r2);
+    m = fovlp__maxf(fovlp__absf(dx), fovlp__absf(dy));
+    sx = dx / m; sy = dy / m;
+    r = m * FOVLP__SQRT(sx * sx + sy * sy);
+    return fovlp__finite(r) ? r : 3.4028235e38f;
+}
+/* du/dr = alpha q^(alpha-1) w_C / (L r), q = log r / L, for a finite r >= 1; evaluated as
+   (alpha q^(alpha-1)) ((w_C / L) / r) so no partial product overflows for any r up to
+   FLT_MAX (the first factor is below 2^110, the second below w_C / L); 0 at r = 1 for
+   alpha != 1 (q = 0: the kernel is flat there; K(x) = x^alpha). */
+FOVLP__PRIV float fovlp__dudr(const fovlp_ctx *ctx, float r)
+{
+    const fovlp_geometry *g = &ctx->geo;
+    float k = (g->w_c / g->L) / r;
+    if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) return k;
+    return ctx->cfg.alpha * fovlp__pow(FOVLP__LOG(r) / g->L, ctx->cfg.alpha - 1.0f) * k;
+}
+
 FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y)
 {
     const fovlp_geometry *g;
-    float dx, dy, r, q, dudr, dvds;
+    float r, d;
     if (!ctx || !ctx->in_frame || !fovlp__finite(x) || !fovlp__finite(y)) return 0.0f;
     g = &ctx->geo;
-    dx = x - ctx->gaze.x; dy = y - ctx->gaze.y;
-    r = FOVLP__SQRT(dx * dx + dy * dy);
+    r = fovlp__hypot(x - ctx->gaze.x, y - ctx->gaze.y);
     if (g->r_g > 0.0f && r < g->r_g) return 1.0f;
     r = fovlp__maxf(r, 1.0f);
-    q = FOVLP__LOG(r) / g->L;
-    /* du/dr = alpha q^(alpha-1) w_C / (L r); dv/ds = h / (2 pi r) */
-    dudr = ctx->cfg.alpha * fovlp__pow(q, ctx->cfg.alpha - 1.0f) * g->w_c / (g->L * r);
-    if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) dudr = g->w_c / (g->L * r);
-    dvds = (float)g->lp_h / (FOVLP__TWO_PI * r);
-    return dudr * dvds;
+    /* du/dr dv/ds with dv/ds = h / (2 pi r): both finite for any r in [1, FLT_MAX] */
+    d = fovlp__dudr(ctx, r) * (((float)g->lp_h / FOVLP__TWO_PI) / r);
+    return fovlp__finite(d) ? d : 0.0f;
 }
 
 FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px, float *angular_px)
 {
     const fovlp_geometry *g;
-    float q, dudr;
+    float dudr, rad, ang;
     if (!ctx || !radial_px || !angular_px) return FOV_ERR_NULL;
     if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
     if (!fovlp__finite(r)) return FOV_ERR_NOT_FINITE;
     g = &ctx->geo;
     if (g->r_g > 0.0f && r < g->r_g) { *radial_px = *angular_px = 1.0f; return FOV_OK; }
     r = fovlp__maxf(r, 1.0f);
-    q = FOVLP__LOG(r) / g->L;
-    dudr = ctx->cfg.alpha * fovlp__pow(q, ctx->cfg.alpha - 1.0f) * g->w_c / (g->L * r);
-    if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) dudr = g->w_c / (g->L * r);
-    *radial_px = dudr > 0.0f ? 1.0f / dudr : FLT_MAX;
-    *angular_px = FOVLP__TWO_PI * r / (float)g->lp_h;
+    dudr = fovlp__dudr(ctx, r);
+    /* the kernel is flat at r = 1 (alpha != 1): an unbounded radial spacing, given as FLT_MAX;
+       elsewhere a derivative that underflows means a spacing beyond the float range */
+    rad = dudr > 0.0f ? 1.0f / dudr : 3.4028235e38f;
+    ang = r * (FOVLP__TWO_PI / (float)g->lp_h);
+    if (!fovlp__finite(rad) || !fovlp__finite(ang) || (!(dudr > 0.0f) && r > 1.0f)) {
+        *radial_px = *angular_px = 0.0f;
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "spacing: r so large that a spacing exceeds the float range");
+    }
+    *radial_px = rad;
+    *angular_px = ang;
     return FOV_OK;
 }
 
@@ -1710,20 +1782,27 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
         while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
         for (di = 0; di < 2; ++di) {
             int32_t i = i0 + di;
-            float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y;
+            float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y, hw;
             size_t slot;
             if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
             if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
             slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
-            rgb[0] += w * srgb[3 * slot];
-            rgb[1] += w * srgb[3 * slot + 1];
-            rgb[2] += w * srgb[3 * slot + 2];
+            hw = 0.5f * w;
+            rgb[0] += hw * srgb[3 * slot];
+            rgb[1] += hw * srgb[3 * slot + 1];
+            rgb[2] += hw * srgb[3 * slot + 2];
             wsum += w;
             if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
         }
     }
     if (wsum > 1e-6f) {
-        rgb[0] /= wsum; rgb[1] /= wsum; rgb[2] /= wsum;
+        /* the taps were summed with half weights (exact: the same bits as the full weights,
+           halved), so the sum cannot overflow for finite taps; doubling the mean back
+           saturates at +-FLT_MAX when the weights' rounding pushes it past (taps near
+           FLT_MAX); NaN / inf from the shading pass through */
+        rgb[0] = fovlp__twice_sat(rgb[0] / wsum);
+        rgb[1] = fovlp__twice_sat(rgb[1] / wsum);
+        rgb[2] = fovlp__twice_sat(rgb[2] / wsum);
         return wsum;
     }
     /* no shaded tap (near the screen border or the last column): the nearest shaded sample
@@ -1786,9 +1865,9 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
                 float rin = FOVLP__SQRT(ex * ex + ey * ey);
                 float t = ctx->rho[0] > rin ? fovlp__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
                 const float *q = srgb + 3u * slot;
-                rgb[0] = q[0] + (rgb[0] - q[0]) * t;
-                rgb[1] = q[1] + (rgb[1] - q[1]) * t;
-                rgb[2] = q[2] + (rgb[2] - q[2]) * t;
+                rgb[0] = fovlp__lerp(q[0], rgb[0], t);
+                rgb[1] = fovlp__lerp(q[1], rgb[1], t);
+                rgb[2] = fovlp__lerp(q[2], rgb[2], t);
                 if (t < 0.5f) *depth = sdep ? sdep[slot] : 0.0f;
             }
         }
@@ -1797,9 +1876,9 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     /* inside the innermost sample ring (plain log-polar): blend towards the centre sample */
     if (!(g->r_g > 0.0f) && r < ctx->rho[0]) {
         float t = r / ctx->rho[0];
-        rgb[0] = cen[0] + (rgb[0] - cen[0]) * t;
-        rgb[1] = cen[1] + (rgb[1] - cen[1]) * t;
-        rgb[2] = cen[2] + (rgb[2] - cen[2]) * t;
+        rgb[0] = fovlp__lerp(cen[0], rgb[0], t);
+        rgb[1] = fovlp__lerp(cen[1], rgb[1], t);
+        rgb[2] = fovlp__lerp(cen[2], rgb[2], t);
         if (t < 0.5f) *depth = cdep;
     }
 }
@@ -1841,7 +1920,9 @@ FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *s
 FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uint32_t y0, uint32_t y1,
                                       float *out)
 {
-    static const float k[3] = { 0.25f, 0.5f, 0.25f }; /* separable 1/16 [1 2 1; 2 4 2; 1 2 1] */
+    /* separable 1/16 [1 2 1; 2 4 2; 1 2 1], halved: k[a] k[b] sums to 1/2 (exact powers of
+       two), so the sum of finite values cannot overflow; doubled back with saturation */
+    static const float k[3] = { 0.25f, 0.5f, 0.25f };
     uint32_t W, H, x, y;
     float diag, s, e;
     if (!ctx || !in || !out) return FOV_ERR_NULL;
@@ -1867,9 +1948,11 @@ FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uin
                     xx = xx < 0 ? 0 : (xx >= (int32_t)W ? (int32_t)W - 1 : xx);   /* clamp at borders */
                     yy = yy < 0 ? 0 : (yy >= (int32_t)H ? (int32_t)H - 1 : yy);
                     q = 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
-                    for (ch = 0; ch < 3; ++ch) gsum[ch] += k[a + 1] * k[b + 1] * in[q + (size_t)ch];
+                    for (ch = 0; ch < 3; ++ch) gsum[ch] += 0.5f * k[a + 1] * k[b + 1] * in[q + (size_t)ch];
                 }
-            for (a = 0; a < 3; ++a) out[o + (size_t)a] = in[o + (size_t)a] + (gsum[a] - in[o + (size_t)a]) * t;
+            /* the lerp cannot overflow: inside [min, max] of the pixel and the 3x3 mean */
+            for (a = 0; a < 3; ++a)
+                out[o + (size_t)a] = fovlp__lerp(in[o + (size_t)a], fovlp__twice_sat(gsum[a]), t);
         }
     return FOV_OK;
 }
@@ -1889,38 +1972,80 @@ FOVLP__PRIV void fovlp__from_ycocg(const float c[3], float o[3])
 }
 
 /* Clamp (AABB) or clip (variance) the history colour h against the current 3x3
-   neighbourhood of (x, y), in YCoCg (Karis 2014; Salvi 2016 for the variance box). */
+   neighbourhood of (x, y), in YCoCg (Karis 2014; Salvi 2016 for the variance box).
+   Neighbourhoods with a colour beyond 2^60 in magnitude are handled at the scale 2^-70
+   (exact, a power of two): the YCoCg sums and the sums of squares of the variance box would
+   overflow at full scale (3e38^2). The result, scaled back, saturates at +-FLT_MAX (the
+   YCoCg box's corners can lie up to 3x outside the RGB range of the neighbourhood).
+   Neighbours with a NaN or infinite channel (the caller's shading) are left out of the box;
+   with none left h is kept as it is. */
 FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
                                       uint32_t mode, float h[3])
 {
     uint32_t W = ctx->geo.width, H = ctx->geo.height;
-    float mn[3], mx[3], m1[3] = { 0.0f, 0.0f, 0.0f }, m2[3] = { 0.0f, 0.0f, 0.0f }, hy[3];
+    float mn[3], mx[3], m1[3] = { 0.0f, 0.0f, 0.0f }, m2[3] = { 0.0f, 0.0f, 0.0f }, hy[3], hs[3];
+    float big = fovlp__maxf(fovlp__maxf(fovlp__absf(h[0]), fovlp__absf(h[1])), fovlp__absf(h[2]));
+    float k = 1.0f, eps = 1e-6f, c0[3];
+    int have_c;
     int32_t a, b, ch;
     float n = 0.0f;
+    for (b = -1; b <= 1; ++b)
+        for (a = -1; a <= 1; ++a) {
+            int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
+            const float *q;
+            if (xx < 0 || yy < 0 || xx >= (int32_t)W || yy >= (int32_t)H) continue;
+            q = cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
+            if (!fovlp__finite3(q)) continue;
+            for (ch = 0; ch < 3; ++ch) big = fovlp__maxf(big, fovlp__absf(q[ch]));
+        }
+    if (big > 1.15292150e18f) { k = 8.47032947e-22f; eps = 1e-6f * k; }   /* 2^60, 2^-70 */
+    /* the moments are taken about the centre pixel's colour c (finite, else the first finite
+       neighbour's): var = E[(q - c)^2] - E[q - c]^2 does not cancel catastrophically the way
+       E[q^2] - E[q]^2 does for a neighbourhood far from 0 (a uniform 1234.567 left a box
+       wide enough to keep a history 0.12 away; now the box is the colour) */
+    c0[0] = c0[1] = c0[2] = 0.0f;
+    have_c = 0;
+    {
+        const float *p = cur + 3u * ((size_t)y * W + x);
+        if (fovlp__finite3(p)) {
+            float s[3];
+            s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
+            fovlp__to_ycocg(s, c0);
+            have_c = 1;
+        }
+    }
     mn[0] = mn[1] = mn[2] = FLT_MAX;
     mx[0] = mx[1] = mx[2] = -FLT_MAX;
     for (b = -1; b <= 1; ++b)
         for (a = -1; a <= 1; ++a) {
             int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
-            float q[3];
+            const float *p;
+            float q[3], s[3];
             if (xx < 0 || yy < 0 || xx >= (int32_t)W || yy >= (int32_t)H) continue;
-            fovlp__to_ycocg(cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx), q);
+            p = cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
+            if (!fovlp__finite3(p)) continue;
+            s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
+            fovlp__to_ycocg(s, q);
+            if (!have_c) { c0[0] = q[0]; c0[1] = q[1]; c0[2] = q[2]; have_c = 1; }
             for (ch = 0; ch < 3; ++ch) {
+                float e = q[ch] - c0[ch];
                 mn[ch] = fovlp__minf(mn[ch], q[ch]);
                 mx[ch] = fovlp__maxf(mx[ch], q[ch]);
-                m1[ch] += q[ch];
-                m2[ch] += q[ch] * q[ch];
+                m1[ch] += e;
+                m2[ch] += e * e;
             }
             n += 1.0f;
         }
-    fovlp__to_ycocg(h, hy);
+    if (!(n > 0.0f)) return;
+    hs[0] = h[0] * k; hs[1] = h[1] * k; hs[2] = h[2] * k;
+    fovlp__to_ycocg(hs, hy);
     if (mode == FOVLP_CLAMP_AABB) {
         for (ch = 0; ch < 3; ++ch) hy[ch] = fovlp__clampf(hy[ch], mn[ch], mx[ch]);
     } else {
         float scale = 0.0f, d[3];
         for (ch = 0; ch < 3; ++ch) {
-            float mu = m1[ch] / n, var = fovlp__maxf(m2[ch] / n - mu * mu, 0.0f);
-            float ext = ctx->cfg.taa.clip_gamma * FOVLP__SQRT(var) + 1e-6f;
+            float mc = m1[ch] / n, var = fovlp__maxf(m2[ch] / n - mc * mc, 0.0f), mu = c0[ch] + mc;
+            float ext = ctx->cfg.taa.clip_gamma * FOVLP__SQRT(var) + eps;
             d[ch] = hy[ch] - mu;
             scale = fovlp__maxf(scale, fovlp__absf(d[ch]) / ext);
             m1[ch] = mu;
@@ -1929,6 +2054,9 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
             for (ch = 0; ch < 3; ++ch) hy[ch] = m1[ch] + d[ch] / scale;
     }
     fovlp__from_ycocg(hy, h);
+    if (k < 1.0f)
+        for (ch = 0; ch < 3; ++ch)
+            h[ch] = fovlp__clampf(h[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
 }
 
 /* Bilinear fetch of the previous colour at continuous (hx, hy), borders clamped. */
@@ -1942,8 +2070,8 @@ FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx
     const float *p01 = img + 3u * ((size_t)y1 * W + x0), *p11 = img + 3u * ((size_t)y1 * W + x1);
     int ch;
     for (ch = 0; ch < 3; ++ch) {
-        float t0 = p00[ch] + (p10[ch] - p00[ch]) * ax, t1 = p01[ch] + (p11[ch] - p01[ch]) * ax;
-        o[ch] = t0 + (t1 - t0) * ay;
+        float t0 = fovlp__lerp(p00[ch], p10[ch], ax), t1 = fovlp__lerp(p01[ch], p11[ch], ax);
+        o[ch] = fovlp__lerp(t0, t1, ay);
     }
 }
 
@@ -2007,9 +2135,11 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
                         reject = 1;
                     } else {
-                        float expect = fovlp__len(rel);
+                        float expect = fovlp__len_safe(rel);
                         float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
-                        if (!(fovlp__absf(hd - expect) <= c->taa.depth_tol * fovlp__maxf(hd, expect))) { /* NaN: differs */
+                        /* NaN, or a distance beyond FLT_MAX: differs (inf <= tol * inf would pass) */
+                        if (!fovlp__finite(expect) || !fovlp__finite(hd) ||
+                            !(fovlp__absf(hd - expect) <= c->taa.depth_tol * fovlp__maxf(hd, expect))) {
                             float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
                             if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
                             else reject = 1;
@@ -2045,7 +2175,9 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                 /* a non-finite current colour: keep the history (or 0 without one), so one bad
                    sample cannot spread through the bilinear fetch and the clamp frame by frame */
                 float cc = fovlp__finite(cur[ch]) ? cur[ch] : (age > 1 ? hist[ch] : 0.0f);
-                io->out_rgb[3 * i + ch] = hist[ch] + (cc - hist[ch]) * w;
+                /* within [min, max] of history and current, finite (issue 10 F8: 3e38 then
+                   -3e38 overflowed hist + (cur - hist) / age to -inf) */
+                io->out_rgb[3 * i + ch] = fovlp__lerp(hist[ch], cc, w);
             }
             io->out_age[i] = (uint8_t)(periph ? 1u : age);
         }

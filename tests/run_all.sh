@@ -79,6 +79,7 @@ fi
 # fovlp.h
 three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c
+three_builds numerics_fovlp tests/test_fovlp_numerics.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
