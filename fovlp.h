@@ -1477,8 +1477,8 @@ FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, flo
 FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u, float *v)
 {
     if (!ctx || !u || !v) return FOV_ERR_NULL;
-    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
-    if (!fovlp__finite(x) || !fovlp__finite(y)) return FOV_ERR_NOT_FINITE;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!fovlp__finite(x) || !fovlp__finite(y)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "screen_to_lp: point not finite");
     fovlp__to_lp(ctx, x - ctx->gaze.x, y - ctx->gaze.y, u, v);
     return FOV_OK;
 }
@@ -1488,11 +1488,11 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
     const fovlp_geometry *g;
     float t, rho, a;
     if (!ctx || !x || !y) return FOV_ERR_NULL;
-    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
-    if (!fovlp__finite(u) || !fovlp__finite(v)) return FOV_ERR_NOT_FINITE;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!fovlp__finite(u) || !fovlp__finite(v)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "lp_to_screen: point not finite");
     g = &ctx->geo;
     t = (u + g->u_g) / g->w_c;                  /* eq. 3.5: u_C / w_C */
-    if (t < 0.0f) return FOV_ERR_INVALID_ARG;   /* inside the disc / centre */
+    if (t < 0.0f) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "lp_to_screen: u inside the gaze disc (u < -u_G)");
     rho = FOVLP__EXP(g->L * fovlp__pow(t, 1.0f / ctx->cfg.alpha));   /* eq. 3.7 */
     a = FOVLP__TWO_PI * v / (float)g->lp_h;
     *x = ctx->gaze.x + rho * FOVLP__COS(a);
@@ -1546,8 +1546,8 @@ FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_
     const fovlp_geometry *g;
     float dudr, rad, ang;
     if (!ctx || !radial_px || !angular_px) return FOV_ERR_NULL;
-    if (!ctx->in_frame) return FOV_ERR_INVALID_ARG;
-    if (!fovlp__finite(r)) return FOV_ERR_NOT_FINITE;
+    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!fovlp__finite(r)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "spacing: r not finite");
     g = &ctx->geo;
     if (g->r_g > 0.0f && r < g->r_g) { *radial_px = *angular_px = 1.0f; return FOV_OK; }
     r = fovlp__maxf(r, 1.0f);
