@@ -27,10 +27,14 @@
      u8 frames (% 5 + 1), then per frame:
         gaze f(-4, W + 4), f(-4, H + 4)
         u8 camera % 4 (NULL | still | moving: dpos f(-0.2, 0.2) x3, dfwd f(-0.05, 0.05) |
-           hostile: pos f(-1e3, 1e3) x3, tan_half_y f(0.1, 2))
+           hostile: pos f(-1e3, 1e3) x3, tan_half_y f(0.1, 2), then for k = 0..2 right[k],
+           up[k], fwd[k] += f(-0.1, 0.1))
         u8 shade mode % 6 (smooth | +-3e38 | FLT_MAX | some NaN / inf | table: 4 raw floats |
            constant: 1 raw float)   u8 depth mode % 5 (4: constant f(0.1, 100))
         u8 sample-row split, u8 x cut, u8 y cut, u8 stride extra, u8 blend split, u8 taa split
+        u8 history edits: bit 0 fovlp_reset_history; bit 1 u16 index, raw float into the
+           history colour; bit 2 u16 index, raw float into the history depth; bit 3 u16
+           index, u8 into the history age
         u8 queries % 4, each: x f(-2W, 3W), y f(-2H, 3H), r f(0, 4 diag), u f(-4, lp_w + 4),
            v f(-4, lp_h + 4), phase u8
    (f(lo, hi) = fz_float: in range 3 in 4, else raw bits or an edge value: NaN, inf, FLT_MAX) */
@@ -66,7 +70,7 @@ static int known(fov_result r) { return r == FOV_OK || (r < 0 && r >= FOV_ERR_UN
     do {                                                                                      \
         g_lg.errors = 0;                                                                      \
         res = (expr);                                                                         \
-        FZ_CHECK(known(res), "%s: unknown result %d", what, (int)res);                        \
+        FZ_CHECK(known(res) && fovlp_result_string(res) != NULL, "%s: unknown result %d", what, (int)res); \
         FZ_CHECK(res == FOV_OK || (g_lg.errors >= 1 && g_lg.last == (int32_t)res),            \
                  "%s: returned %d without logging it (%d errors logged, last %d)", what,     \
                  (int)res, g_lg.errors, (int)g_lg.last);                                      \
@@ -256,6 +260,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     shade_ctx sc;
 
     memset(&g_lg, 0, sizeof g_lg);
+    FZ_CHECK(fovlp_preset_name(data && size ? data[0] : 0u) != NULL, "preset_name");
     read_config(&in, &cfg);
     W = cfg.width; H = cfg.height; npix = (size_t)W * H;
 
@@ -311,7 +316,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (f = 0; f < frames; ++f) {
         fov_gaze gz;
         fovlp_camera cam = base, *camp = 0;
-        uint32_t cm, split, xc, yc, extra, bsplit, tsplit, nq, q;
+        uint32_t cm, split, xc, yc, extra, bsplit, tsplit, nq, q, ex;
         float diag = sqrtf((float)W * (float)W + (float)H * (float)H);
         size_t cnt = 0, cnt2 = 0;
         vrange sr;
@@ -326,6 +331,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else if (cm == 3) {
             for (k = 0; k < 3; ++k) cam.pos[k] = fz_float(&in, -1e3f, 1e3f);
             cam.tan_half_y = fz_float(&in, 0.1f, 2.0f);
+            for (k = 0; k < 3; ++k) {
+                cam.right[k] += fz_float(&in, -0.1f, 0.1f);
+                cam.up[k] += fz_float(&in, -0.1f, 0.1f);
+                cam.fwd[k] += fz_float(&in, -0.1f, 0.1f);
+            }
             camp = &cam;
         }
         sc.mode = fz_pick(&in, 6);
@@ -335,6 +345,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (sc.dmode == 4) sc.dconst = fz_float(&in, 0.1f, 100.0f);
         split = fz_u8(&in); xc = fz_u8(&in); yc = fz_u8(&in); extra = fz_u8(&in) % 8u;
         bsplit = fz_u8(&in); tsplit = fz_u8(&in);
+        /* the caller's side of the history: a reset, or bad values in the history buffers */
+        ex = fz_u8(&in);
+        if (ex & 1u) fovlp_reset_history(&ctx);
+        if (ex & 2u) { size_t i = fz_u16(&in) % (3u * npix); hist[ping][i] = fz_raw_float(&in); }
+        if (ex & 4u) { size_t i = fz_u16(&in) % npix; hdep[ping][i] = fz_raw_float(&in); }
+        if (ex & 8u) { size_t i = fz_u16(&in) % npix; age[ping][i] = fz_u8(&in); }
 
         CALL(fovlp_begin_frame(&ctx, gz, camp), "begin_frame");
         if (res != FOV_OK) {
@@ -450,12 +466,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                      "count_samples: shaded %llu of %zu", (unsigned long long)cn.shaded, cnt);
         }
 
-        /* reconstruction: rows (reference), then tiles with an odd stride */
+        /* reconstruction: rows (reference), then tiles with an odd stride, every other frame
+       without depth (the colours must not change) */
         {
             int with_depth = (f & 1u) == 0u;
             uint32_t cx = xc % (W + 1u), cy = yc % (H + 1u), t;
-            CALL(fovlp_reconstruct_rows(&ctx, srgb, with_depth ? sdep : NULL, 0, H, img, 0, with_depth ? dep : NULL),
-                 "reconstruct_rows");
+            CALL(fovlp_reconstruct_rows(&ctx, srgb, sdep, 0, H, img, 0, dep), "reconstruct_rows");
             FZ_CHECK(res == FOV_OK, "reconstruct_rows: %d", (int)res);
             FZ_CHECK(fz_canary_ok(img, sizeof(float) * 3u * npix) && fz_canary_ok(dep, sizeof(float) * npix),
                      "reconstruct_rows wrote past the image");
@@ -487,7 +503,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             free(img2); img2 = 0;
             CALL(fovlp_reconstruct_tile(&ctx, srgb, sdep, 0, 0, W + 1u, H, img, 0, NULL), "reconstruct_tile out of range");
             FZ_CHECK(res == FOV_ERR_INVALID_ARG, "reconstruct_tile accepted x1 = W + 1");
-            if (!with_depth) memset(dep, 0, sizeof(float) * npix);   /* TAA depth below */
         }
 
         /* blend: whole and split at a row */

@@ -68,7 +68,7 @@ def config(e, preset=2, w=16, h=12, a=0, b=0, a_fields=(), taa=None, blend=None)
 
 
 def frame(e, w, h, gx, gy, cam=0, cam_args=(), shade=0, shade_args=(), dmode=0, dconst=5.0,
-          splits=(3, 5, 4, 2, 6, 7), queries=()):
+          splits=(3, 5, 4, 2, 6, 7), edits=(), queries=()):
     e.f(-4, w + 4, gx)
     e.f(-4, h + 4, gy)
     e.u8(cam)
@@ -80,6 +80,8 @@ def frame(e, w, h, gx, gy, cam=0, cam_args=(), shade=0, shade_args=(), dmode=0, 
         for v in cam_args[:3]:
             e.f(-1e3, 1e3, v)
         e.f(0.1, 2, cam_args[3])
+        for v in (list(cam_args[4:13]) + [0.0] * 9)[:9]:   # right[k], up[k], fwd[k] offsets
+            v(e) if callable(v) else e.f(-0.1, 0.1, v)
     e.u8(shade)
     if shade == 4:
         for v in shade_args:
@@ -91,6 +93,16 @@ def frame(e, w, h, gx, gy, cam=0, cam_args=(), shade=0, shade_args=(), dmode=0, 
         e.f(0.1, 100, dconst)
     for s in splits:
         e.u8(s)
+    # history edits: (bit, index, value)
+    bits = 0
+    for b, _, _ in edits:
+        bits |= b
+    e.u8(bits)
+    for b in (2, 4, 8):
+        for bb, idx, val in edits:
+            if bb == b:
+                e.u16(idx)
+                e.u8(val) if b == 8 else e.raw(val)
     e.u8(len(queries))
     for q in queries:
         q(e)
@@ -162,8 +174,19 @@ def corpus():
     config(e, preset=0, w=1, h=1, b=4 | 8, taa=dict(phases=255, halton=200, max_age=255, clamp=3, gamma=3.0))
     e.u8(2)
     for k in range(3):
-        frame(e, 1, 1, 0.5, 0.5, cam=3, cam_args=(1.0, -2.0, 3.0, 0.5), shade=5, shade_args=(0.25,))
+        frame(e, 1, 1, 0.5, 0.5, cam=3, cam_args=(1.0, -2.0, 3.0, 0.5, 0.05, 0.0, 0.01), shade=5, shade_args=(0.25,))
     out['one_pixel'] = e.b
+    # 7. a hostile camera (right of length 1e30), history edits (NaN colour, inf depth, age 255,
+    #    a reset), moving camera otherwise
+    e = Enc()
+    config(e, preset=2, w=16, h=16, b=4 | 8, taa=dict(clamp=0))
+    e.u8(3)
+    frame(e, 16, 16, 8.0, 8.0, cam=1, shade=0, dmode=4)
+    frame(e, 16, 16, 8.0, 8.0, cam=2, cam_args=(0.1, 0.0, 0.0, 0.0), shade=0, dmode=4,
+          edits=[(2, 100, float('nan')), (4, 37, float('inf')), (8, 12, 255)])
+    frame(e, 16, 16, 8.0, 8.0, cam=3, cam_args=(0.0, 0.0, 0.0, 0.5, lambda e: e.edge('big')), shade=0, dmode=4)
+    frame(e, 16, 16, 8.0, 8.0, cam=1, shade=0, dmode=4, edits=[(1, 0, 0), (2, 5, 3e38)])
+    out['hostile_camera_history_edits'] = e.b
     return out
 
 
