@@ -149,11 +149,15 @@ ERRORS AND LOGGING
    overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
    gaze disc that covers the screen) is rejected with an error code before any work is done;
    nothing asserts on data. An optional fov_logger in the config receives each error (and a
-   warning when an off-screen gaze is clamped). Bad data from the caller's shading does not
-   spread: fovlp_taa_rows never writes a NaN or infinite colour into the history (a
-   non-finite current colour keeps the history or gives 0, a non-finite fetched or clamped
-   history is rejected, a NaN depth fails the depth test); the reconstruction itself passes
-   the shaded values through as they are.
+   warning when an off-screen gaze is clamped); every error return of a function given a
+   valid context or config is logged with its code (tests/fuzz/fuzz_fovlp.c checks it).
+   A result that would not fit in a float is an error, never an infinity: fovlp_spacing
+   and fovlp_lp_to_screen give FOV_ERR_LIMIT there. Bad data from the caller's shading
+   does not spread: fovlp_taa_rows never writes a NaN or infinite colour into the history
+   (a non-finite current colour keeps the history or gives 0, a non-finite fetched or
+   clamped history is rejected, neighbours with NaN / inf are left out of the clamp box, a
+   NaN or infinite depth fails the depth test); the reconstruction and the blend pass NaN
+   and inf samples through as they are.
 
 THREADING
    fovlp_begin_frame writes the context; between two begin_frame calls the context is
@@ -164,6 +168,39 @@ THREADING
 
 NUMERICS
    - Float only (no double anywhere); integers for frame counters and the Halton sequence.
+   - The envelope: for finite inputs every FOV_OK output is finite, for any magnitude up to
+     FLT_MAX (colours, depths, points, camera positions), and lies in the range below.
+     Tested by tests/test_fovlp_numerics.c (libm, FOV_NO_LIBM, sanitizers) and fuzzed by
+     tests/fuzz/fuzz_fovlp.c.
+       reconstruction  each channel is a convex combination of the shaded samples it
+                       uses (bilinear with renormalised weights, linear blends towards the
+                       disc or centre sample): inside their [min, max] up to float
+                       rounding (the fuzz check allows 1e-5 of the largest magnitude).
+                       The weighted sums run with half weights (exact) and double back
+                       saturating at +-FLT_MAX, so taps near FLT_MAX cannot round to inf.
+       blend           between the pixel and its 3x3 mean: inside the 3x3 range.
+       TAA             always finite; each channel lies between the current colour and the
+                       history used (a blend a + (b - a) t where b - a is finite, else
+                       a (1 - t) + b t, clamped to [min(a, b), max(a, b)]). The history is
+                       the previous output fetched bilinearly at the reprojected point,
+                       clamped into the neighbourhood's YCoCg box, whose RGB corners lie up
+                       to 3x outside its range (saturated at +-FLT_MAX): |out| <= 3 max
+                       |current, previous|. With a still camera and no clamp the output
+                       lies between the pixel's previous and current values exactly.
+                       The clamp box is computed at the scale 2^-70 when a colour exceeds
+                       2^60 (exact; 3e38^2 would overflow the variance sums), with moments
+                       about the centre pixel (no cancellation for colours far from 0).
+                       The depth test holds for depths up to FLT_MAX; a reprojected
+                       distance beyond FLT_MAX rejects the history.
+       mappings        screen_to_lp: any finite point, v in [0, lp_h); lp_to_screen:
+                       FOV_ERR_LIMIT where the point would lie beyond the float range.
+       density         finite and >= 0 at any finite point (0 for NaN / inf).
+       spacing         finite (angular > 0, radial >= 0), or FOV_ERR_LIMIT where one
+                       exceeds the float range (angular 2 pi r / h: r beyond about 5e37 h;
+                       radial where du/dr underflows). At r <= 1 with alpha != 1 the kernel
+                       is flat and the radial spacing is given as FLT_MAX.
+       eccentricity    fovlp_ecc_deg in [0, 180] at any finite point (scaled first beyond
+                       about 1e19 px); fovlp_ecc_ppd at most FLT_MAX.
    - Forward then inverse mapping round-trips within 1e-3 px relative to the radius (measured
      by the tests at 8K with libm and FOV_NO_LIBM).
    - Sample positions come from per-frame tables (exp along u, cos/sin along v), so shading
@@ -509,7 +546,10 @@ FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, 
 FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, float *x,
                                         float *y);
 /* LP texels per screen pixel area at a screen point (the Jacobian of the mapping; 1 inside
-   the disc), and the sample spacings in pixels, radial and angular, at radius r. */
+   the disc; finite and >= 0 for any finite point, 0 for NaN / inf), and the sample spacings
+   in pixels, radial and angular, at radius r (r <= 1 counts as 1; with alpha != 1 the
+   radial spacing there is FLT_MAX: the kernel is flat). FOV_ERR_LIMIT (logged, both set to
+   0) where a spacing would exceed the float range, e.g. fovlp_spacing(FLT_MAX). */
 FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y);
 FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px,
                                    float *angular_px);
