@@ -155,7 +155,7 @@ static void test_f8_moving(void)
                 for (k = 0; k < NPIX * 3; ++k) inrange &= o[k] >= -3e38f && o[k] <= 3e38f;
                 if (f == 1)
                     for (k = 0; k < NPIX; ++k) {
-                        double want = (thesis && clamp == 0) ? 0.0 : -3e38, got = o[3 * k];
+                        double want = (thesis && clamp == 0) ? 0.0 : -3e38, got = (double)o[3 * k];
                         if (e->age[e->ping][k] != 2) continue;
                         kept++;
                         if (!(fabs(got - want) <= 1e-6 * 3e38)) wrong++;
@@ -366,7 +366,7 @@ static void test_f9_spacing(void)
                 if (!(isfinite(rad) && isfinite(ang) && rad >= 0.0f && ang > 0.0f)) bad_ok++;
                 else if (r > 1.0f && rad < FLT_MAX) {
                     /* double reference: radial = 1 / (du/dr), du/dr = alpha q^(alpha-1) w_C / (L r) */
-                    double L = ctx.geo.L, q = log((double)r) / L, a = c.alpha;
+                    double L = (double)ctx.geo.L, q = log((double)r) / L, a = (double)c.alpha;
                     double dudr = a * pow(q, a - 1.0) * (double)ctx.geo.w_c / (L * (double)r);
                     double rr = 1.0 / dudr, aa = 2.0 * 3.14159265358979 * (double)r / ctx.geo.lp_h;
                     double er = fmax(fabs((double)rad - rr) / rr, fabs((double)ang - aa) / aa);
