@@ -82,6 +82,8 @@ three_builds taa_fovlp tests/test_fovlp_taa.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
+# each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
+three_builds versions tests/test_versions.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi
