@@ -131,8 +131,7 @@ replay_dirs() {
     NFAIL=$((NFAIL + f))
     grep -E '^FAIL ' "$log" | while IFS= read -r line; do
         line=${line#FAIL }
-        say "FAIL replay $label: $line"
-        say "    reproduce: bash tests/fuzz/run.sh repro ${label%_nolibm} ${line%%: *}"
+        say "FAIL replay $label: $line (reproduce: bash tests/fuzz/run.sh repro ${label%_nolibm} ${line%%: *})"
     done
     [ "$f" -gt 0 ] && say "    (log with the sanitizer reports: $log)"
     say "replay $label: $p passed, $f failed"
@@ -167,7 +166,7 @@ stat_of() { grep -E "^stat::$2:" "$1" | tail -1 | sed -E 's/.*: *//'; }
 status_field() { grep -E '^#[0-9]+' "$1" | grep -E " $2: " | tail -1 | sed -E "s/.* $2: ([^ ]+).*/\\1/"; }
 
 do_fuzz() {
-    local t dirs log rc execs eps cov ft corp crash summary limit
+    local t dirs log rc execs eps cov ft corp crash summary limit why
     if ! have_libfuzzer; then
         if [ "$IS_CI" = 1 ]; then
             fail "fuzz: $FUZZ_CC with libFuzzer not usable (CI=true: a missing toolchain is a failure; apt-get install clang libclang-rt-14-dev; log: $B/logs/probe.log)"
@@ -198,11 +197,11 @@ do_fuzz() {
         if [ "$rc" -eq 0 ] && [ -z "$crash" ]; then
             pass "fuzz $t: ${FUZZ_SECONDS} s, $summary, crashes 0"
         else
-            fail "fuzz $t: $summary, crashes 1 ($(grep -m 1 -E '^==[0-9]+==ERROR|FUZZ CONTRACT|runtime error|ALARM|Timeout|out-of-memory' "$log" | cut -c1-300); exit status $rc; log: $log)"
+            why=$(grep -m 1 -E '^==[0-9]+==ERROR|FUZZ CONTRACT|runtime error|ALARM|Timeout|out-of-memory' "$log" | cut -c1-300)
             if [ -n "$crash" ]; then
-                say "    input saved: $crash"
-                say "    reproduce: bash tests/fuzz/run.sh repro $t $crash"
-                say "           or: $B/fuzz_$t $crash"
+                fail "fuzz $t: $summary, crashes 1: $why; input saved: $crash; reproduce: bash tests/fuzz/run.sh repro $t $crash (or $B/fuzz_$t $crash); log: $log"
+            else
+                fail "fuzz $t: $summary: exit status $rc, no input saved: $why; log: $log"
             fi
         fi
     done
