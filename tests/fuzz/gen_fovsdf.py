@@ -419,6 +419,19 @@ def regressions():
         render(e, 16, 16, split=0)
         rays(e, 0, 16, 16)
         out['F3_t_max_%s.bin' % mname] = e.b
+    # F3 through fovsdf_shade_point (found by this harness): the Thin scene, CONE_FOV with its
+    # default BV2018 finish, 3x3, 32 steps: shade_point(-3, -3) reports t = 49.03 past the
+    # scene's t_max of 40
+    e = Enc()
+    H = HM | HR
+    e.u8(H)
+    g_builtin(e, 4)
+    config(e, 0, method=METHOD['cone_fov'], max_steps=32)
+    camera(e, H, 3, 3, pos=(4.72941, 4.72941, 4.68766), target=(2.34392, 2.36471, 2.36471), fov=160.941)
+    look(e, 0)
+    render(e, 3, 3, split=0)
+    rays(e, H, 3, 3, points=((-3.0, -3.0),))
+    out['F3_shade_point_cone_fov.bin'] = e.b
     # F4: FIPR / CONE_FOV interpolated depth beyond the scene's t_max (Primitives at 10x7)
     for mname in ('fipr', 'cone_fov'):
         e = Enc()
