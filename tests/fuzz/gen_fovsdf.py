@@ -315,6 +315,12 @@ def seeds():
     render(e, 16, 12, split=2, ycut=(5, 11), xcut=(3, 9, 13), tile=(8, 0, 16, 4))
     rays(e, 0, 16, 12, points=((8.0, 6.0),))
     out['builder_ops.bin'] = e.b
+    # builder DAG: union(u, u) with u = union(s, s) (program_build: FOV_ERR_LIMIT, tolerated)
+    e = Enc()
+    e.u8(0)
+    g_builder(e, 0, [(0, 1.0, 0.5, 0.5, 0, 0, 0, 0, 2), (12, 0.5, 0.5, 0.5, 0, 0, 0, 0, 0),
+                     (12, 0.5, 0.5, 0.5, 0, 1, 1, 0, 0)])
+    out['builder_dag.bin'] = e.b
     # hand-made nodes: a valid tree
     e = Enc()
     e.u8(0)
