@@ -7,6 +7,9 @@
 #                          moving camera and gaze, bench/results/lp_moving.csv;
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid
+#   make fuzz    fuzz every tests/fuzz/fuzz_<target>.c with libFuzzer (clang) for FUZZ_SECONDS
+#                (default 60) each; new inputs go to build/fuzz/corpus/<target>/, crashes to
+#                build/fuzz/crashes/<target>/; make fuzz FUZZ_SECONDS=10 FUZZ_TARGETS=fovsdf
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -16,7 +19,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test examples bench bench-sdf bench-lp bench-pt clean
+.PHONY: all demo test fuzz examples bench bench-sdf bench-lp bench-pt clean
 
 all: examples
 
@@ -58,6 +61,10 @@ demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 
 test:
 	@bash tests/run_all.sh
+
+# tests/fuzz/run.sh reads FUZZ_SECONDS, FUZZ_TARGETS, FUZZ_MAX_LEN, FUZZ_TIMEOUT, FUZZ_FLAGS
+fuzz:
+	@$(if $(FUZZ_SECONDS),FUZZ_SECONDS=$(FUZZ_SECONDS)) $(if $(FUZZ_TARGETS),FUZZ_TARGETS="$(FUZZ_TARGETS)") bash tests/fuzz/run.sh fuzz
 
 bench-sdf: $(BUILD)/bench_sdf
 	@mkdir -p bench/results

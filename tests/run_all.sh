@@ -83,6 +83,8 @@ three_builds numerics_fovlp tests/test_fovlp_numerics.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
+# each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
+three_builds versions tests/test_versions.c
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi
@@ -92,6 +94,13 @@ fi
 if build_test test_flip_reference tests/test_flip_reference.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section flip_reference build/tests/test_flip_reference tests/flip_reference
 fi
+
+# --- fuzz harnesses (tests/fuzz/fuzz_*.c): the committed corpus and regression inputs
+# replayed without libFuzzer (gcc ASan+UBSan and -O2 FOV_NO_LIBM), then a bounded libFuzzer
+# run of each target (FUZZ_SECONDS, default 20 here; clang and libclang-rt-14-dev, a
+# failure when missing under CI=true; crashes saved under build/fuzz/crashes/)
+run_section fuzz_replay bash tests/fuzz/run.sh replay
+FUZZ_SECONDS=${FUZZ_SECONDS:-20} run_section fuzz bash tests/fuzz/run.sh fuzz
 
 # --- examples: they build warning-free and the demo's tracers agree with the ground truth --
 run_section examples bash tests/examples.sh
