@@ -207,7 +207,7 @@ RECENT REVISION HISTORY
 #define FOVSDF_VERSION_MAJOR 0
 #define FOVSDF_VERSION_MINOR 2
 #define FOVSDF_VERSION_PATCH 1
-#define FOVSDF_VERSION_STRING "0.2.0"
+#define FOVSDF_VERSION_STRING "0.2.1"
 
 #if defined(__GNUC__) || defined(__clang__)
 #define FOVSDF__UNUSED __attribute__((unused))
