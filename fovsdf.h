@@ -803,7 +803,8 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *ctx, uint32_t x0, uin
    pixel coordinates; pixel centres at +0.5; any point off the image too): rd is unit length.
    A point so far off the image that the direction overflows float (about 1e38 / tan(fov_y/2)
    pixels) is FOV_ERR_INVALID_ARG (fovsdf_shade_point too), NaN or inf FOV_ERR_NOT_FINITE.
-   fovsdf_trace marches with the context's method from t_start. rd must be unit length. */
+   fovsdf_trace marches with the context's method from t_start. rd must be unit length; ro
+   (also fovsdf_march's) within 1e18 of the origin per component (else FOV_ERR_INVALID_ARG). */
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *ctx, float px, float py,
                                         float ro[3], float rd[3]);
 FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], const float rd[3],
@@ -1563,6 +1564,12 @@ FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
 /* Lengths of the scene (sizes, radii, offsets, periods, blend radii) are at most this in
    magnitude: squared lengths of a few of them stay finite in float (NUMERICS). */
 #define FOVSDF__MAX_LEN 1e18f
+/* A position every component of which lies within FOVSDF__MAX_LEN of the origin. */
+FOVSDF__PRIV int fovsdf__coord_ok(const float v[3])
+{
+    return fovsdf__absf(v[0]) <= FOVSDF__MAX_LEN && fovsdf__absf(v[1]) <= FOVSDF__MAX_LEN &&
+           fovsdf__absf(v[2]) <= FOVSDF__MAX_LEN;
+}
 /* Every linear RGB value the library returns lies in [0, this] (the largest half float). */
 #define FOVSDF__RGB_MAX 65504.0f
 
@@ -2941,6 +2948,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     if (mp->method > (uint32_t)FOVSDF_METHOD_BV2018 || mp->max_steps == 0 || mp->eps < 0.0f || mp->eps_cone < 0.0f ||
         !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) || t_start < 0.0f || scene->lipschitz < 0.0f)
         return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__coord_ok(ro)) return FOV_ERR_INVALID_ARG; /* beyond 1e18: float cannot resolve it (NUMERICS) */
     if (mp->max_steps > FOVSDF_MAX_STEPS) return FOV_ERR_LIMIT;
     if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f)) return FOV_ERR_INVALID_ARG;
     if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f)) return FOV_ERR_INVALID_ARG;
@@ -3215,7 +3223,7 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     const fov_logger *lg = cfg ? &cfg->logger : 0;
     fov_result r;
     size_t need;
-    float tanh, fov, rt[3], up[3], fw[3];
+    float tanh, fov, rt[3], up[3], fw[3], rt_o[3];
     uint32_t i;
     fov_ecc_model em;
     if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
@@ -3235,17 +3243,13 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     r = fovsdf_camera_basis(cam, rt, up, fw);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
     /* positions beyond 1e18 cannot be resolved (NUMERICS): their squares overflow float */
-    if (fovsdf__absf(cam->pos[0]) > FOVSDF__MAX_LEN || fovsdf__absf(cam->pos[1]) > FOVSDF__MAX_LEN ||
-        fovsdf__absf(cam->pos[2]) > FOVSDF__MAX_LEN)
+    if (!fovsdf__coord_ok(cam->pos))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.pos beyond 1e18 units from the origin (float cannot resolve it)");
     if (fovsdf__absf(cam->eye_offset) > FOVSDF__MAX_LEN)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.eye_offset beyond 1e18 units (float cannot resolve the pinhole)");
-    for (r = FOV_OK, i = 0; i < 3; ++i) {
-        float o = cam->pos[i] + rt[i] * cam->eye_offset;
-        if (!(fovsdf__absf(o) <= FOVSDF__MAX_LEN)) r = FOV_ERR_INVALID_ARG;
-    }
-    if (r != FOV_OK)
-        FOVSDF__FAIL(lg, r, "init: pinhole (cam.pos + eye_offset * right) beyond 1e18 units from the origin");
+    for (i = 0; i < 3; ++i) rt_o[i] = cam->pos[i] + rt[i] * cam->eye_offset;
+    if (!fovsdf__coord_ok(rt_o))
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: pinhole (cam.pos + eye_offset * right) beyond 1e18 units from the origin");
     r = fovsdf_memory_size(&c, cam, &need);
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
@@ -3312,6 +3316,8 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
     if (!c || !ro || !rd || !hit) return FOV_ERR_NULL;
     if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start)) return FOV_ERR_NOT_FINITE;
     if (t_start < 0.0f) return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__coord_ok(ro))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: ro beyond 1e18 units from the origin (float cannot resolve it)");
     l = fovsdf__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     fovsdf__marcher_from_ctx(c, &m, ro);

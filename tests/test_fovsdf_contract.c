@@ -222,6 +222,31 @@ static void test_f1(void)
         }
     }
 
+    /* fovsdf_trace and fovsdf_march: a ray origin beyond the bound (the old code: the floor
+       8 FLT_EPSILON |ro| overflowed to inf and every ray hit at t_start) */
+    fovsdf_camera_init(&cam, 1, 1);
+    r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
+    if (r == FOV_OK) {
+        fovsdf_hit h;
+        fovsdf_march_params mp;
+        float o3[3] = { 3e38f, 0.0f, 0.0f }, d3[3] = { -1.0f, 0.0f, 0.0f };
+        memset(&h, 0, sizeof h);
+        rec_init(&lr);
+        r = fovsdf_trace(&ctx, o3, d3, 0.0f, &h, NULL);
+        check(r == FOV_ERR_INVALID_ARG && lr.calls == 1 && strstr(lr.msg, "ro") != NULL, "f1_trace_ro_3e38_rejected",
+              "%s (kind %u, t %g), message \"%s\"", fovsdf_result_string(r), h.kind, (double)h.t, lr.msg);
+        memset(&mp, 0, sizeof mp);
+        mp.method = FOVSDF_METHOD_CLASSIC; mp.max_steps = 64; mp.eps = 1e-4f; mp.t_max = 100.0f;
+        r = fovsdf_march(&sc, &mp, o3, d3, 0.0f, &h, NULL);
+        check(r == FOV_ERR_INVALID_ARG, "f1_march_ro_3e38_rejected", "%s (kind %u, t %g)", fovsdf_result_string(r), h.kind,
+              (double)h.t);
+        /* at the bound: from (1e18, 0, 0) towards the unit sphere, a miss within t_max 100 */
+        o3[0] = 1e18f;
+        r = fovsdf_trace(&ctx, o3, d3, 0.0f, &h, NULL);
+        check(r == FOV_OK && h.kind == FOVSDF_MISS, "f1_trace_ro_1e18_miss", "%s, kind %u, t %g", fovsdf_result_string(r),
+              h.kind, (double)h.t);
+    }
+
     /* an image point far off the image: a unit ray along the right direction */
     fovsdf_camera_init(&cam, 1, 1);
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
