@@ -189,6 +189,8 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c establishes it)
    - Colours: fovsdf_output.rgb, fovsdf_shade_point, fovsdf_shade and fovsdf_sky give linear
      RGB in [0, 65504] (the largest half float) whatever the scene's colours: values are
      clamped there, NaN (0 * inf with FLT_MAX lights) is 0; rgb8 is its sRGB encoding.
+     The tetrahedron normal stays unit where the scene's distances come near FLT_MAX (its
+     sums would overflow: it then sums differences from the first sample, the same normal).
      Directional lights and plane normals of any finite non-zero length are normalised
      exactly (scaled to a largest component of 1 first), so a light (-0.06, -0.06, -1e30) is
      the light (0, 0, -1).
@@ -2987,7 +2989,7 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
     static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f }, { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
     fovsdf_stats local;
     int i;
-    float inv;
+    float inv, dv[4];
     if (!c || !p || !n) return;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     inv = 1.0f / c->scene.lipschitz;
@@ -2997,7 +2999,16 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
         q[0] = p[0] + h * k[i][0]; q[1] = p[1] + h * k[i][1]; q[2] = p[2] + h * k[i][2];
         d = fovsdf__eval_sc(&c->scene, inv, q, 0.0f, 0, st);
         if (d >= FLT_MAX) d = 0.0f;
+        dv[i] = d;
         n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
+    }
+    if (!fovsdf__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums to 0,
+                                  so differences from the first give the same normal */
+        n[0] = n[1] = n[2] = 0.0f;
+        for (i = 1; i < 4; ++i) {
+            float d = dv[i] - dv[0];
+            n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
+        }
     }
     st->evals_normal += 4;
     if (!(fovsdf__normalize(n) > 0.0f)) { n[0] = 0.0f; n[1] = 1.0f; n[2] = 0.0f; }

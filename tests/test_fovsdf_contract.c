@@ -457,6 +457,37 @@ static void test_f2_huge_sizes(void)
     }
 }
 
+/* A callback whose distances lie near -FLT_MAX (finite): the tetrahedron normal's sums
+   overflowed to inf in the old code (a normal (0, inf, 0), inf/NaN shading). */
+static float near_max_dist(const float p[3], void *user)
+{
+    (void)user;
+    return p[1] * 1e36f - 3e38f;
+}
+static void test_f2_normal_overflow(void)
+{
+    fovsdf_scene sc;
+    fovsdf_camera cam;
+    fovsdf_ctx ctx;
+    fov_gaze g = { 0.5f, 0.5f };
+    float p[3] = { 0.25f, 0.5f, -0.75f }, n[3] = { 0.0f, 0.0f, 0.0f }, rd[3] = { 0.0f, 0.0f, 1.0f }, rgb[3];
+    fov_result r;
+    fovsdf_scene_init(&sc);
+    sc.dist = near_max_dist;
+    fovsdf_camera_init(&cam, 1, 1);
+    r = fovsdf_init(&ctx, NULL, &sc, &cam, g, NULL, 0);
+    if (!check(r == FOV_OK, "f2_normal_near_flt_max_init", "%s", fovsdf_result_string(r))) return;
+    fovsdf_normal(&ctx, p, 1e-2f, n, NULL);
+    /* the field grows along +y only: the normal is (0, 1, 0) (the differences, 2e34 at
+       h = 1e-2, lie well above the 2e31 ulp of 3e38, so they resolve the direction) */
+    check(fabs((double)n[0]) < 1e-6 && fabs((double)n[1] - 1.0) < 1e-6 && fabs((double)n[2]) < 1e-6,
+          "f2_normal_near_flt_max_unit", "normal %g %g %g", (double)n[0], (double)n[1], (double)n[2]);
+    fovsdf_shade(&ctx, p, n, rd, 0, rgb, NULL);
+    check(rgb[0] >= 0.0f && rgb[0] <= 65504.0f && rgb[1] >= 0.0f && rgb[1] <= 65504.0f && rgb[2] >= 0.0f &&
+              rgb[2] <= 65504.0f,
+          "f2_shade_near_flt_max_in_range", "rgb %g %g %g", (double)rgb[0], (double)rgb[1], (double)rgb[2]);
+}
+
 /* Directional lights of any finite length, colours up to FLT_MAX: rgb in [0, 65504]. */
 static void test_f2_lights(void)
 {
@@ -756,6 +787,7 @@ int main(void)
     test_f2_plane();
     test_f2_huge_sizes();
     test_f2_lights();
+    test_f2_normal_overflow();
     test_f1();
     test_f2_audit();
     test_f1_primitives();
