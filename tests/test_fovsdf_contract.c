@@ -635,6 +635,94 @@ static void test_f2_audit(void)
           built, first);
 }
 
+/* Random trees of every node type with parameters drawn log-uniformly over their whole
+   ranges (1e-30 .. 1e18), evaluated at points of every magnitude up to FLT_MAX: never NaN,
+   never inf (a 32-bit LCG: the same trees every run). */
+static uint32_t g_rng = 12345u;
+static uint32_t rnd(void) { g_rng = g_rng * 1664525u + 1013904223u; return g_rng >> 8; }
+static float rnd01(void) { return (float)rnd() * (1.0f / 16777216.0f); }
+static float rnd_len(void) { return powf(10.0f, -30.0f + 48.0f * rnd01()); }
+static float rnd_sgn(float x) { return (rnd() & 1u) ? -x : x; }
+static int32_t rnd_tree(fovsdf_builder *b, int depth)
+{
+    uint32_t t = depth <= 0 ? 1u + rnd() % 12u : 1u + rnd() % 25u;
+    float a3[3], c3[3], s = rnd_len();
+    int32_t x, y;
+    a3[0] = rnd_sgn(rnd_len()); a3[1] = rnd_sgn(rnd_len()); a3[2] = rnd_sgn(rnd_len());
+    c3[0] = rnd_sgn(rnd_len()); c3[1] = rnd_sgn(rnd_len()); c3[2] = rnd_sgn(rnd_len());
+    switch (t) {
+    case FOVSDF_NODE_SPHERE: return fovsdf_sphere(b, s);
+    case FOVSDF_NODE_BOX: return fovsdf_box(b, s, rnd_len(), rnd_len());
+    case FOVSDF_NODE_ROUND_BOX: return fovsdf_round_box(b, s, s * 2.0f, s * 0.5f, s * 0.5f * rnd01());
+    case FOVSDF_NODE_BOX_FRAME: return fovsdf_box_frame(b, s, rnd_len(), rnd_len(), rnd_len());
+    case FOVSDF_NODE_TORUS: return fovsdf_torus(b, s, rnd_len());
+    case FOVSDF_NODE_CAPSULE: return fovsdf_capsule(b, a3, c3, s);
+    case FOVSDF_NODE_CYLINDER: return fovsdf_cylinder(b, s, rnd_len());
+    case FOVSDF_NODE_CONE: return fovsdf_cone(b, s, rnd_len(), (rnd() & 1u) ? 0.0f : rnd_len());
+    case FOVSDF_NODE_PLANE: return fovsdf_plane(b, a3[0], a3[1], a3[2], rnd_sgn(s));
+    case FOVSDF_NODE_MENGER: return fovsdf_menger(b, s, 1 + (int32_t)(rnd() % 8u));
+    case FOVSDF_NODE_MANDELBULB: return fovsdf_mandelbulb(b, 2.0f + 14.0f * rnd01(), 1 + (int32_t)(rnd() % 32u));
+    case FOVSDF_NODE_TERRAIN: return fovsdf_terrain(b, s, rnd_len(), 1 + (int32_t)(rnd() % 12u));
+    case FOVSDF_NODE_UNION: case FOVSDF_NODE_SUBTRACT: case FOVSDF_NODE_INTERSECT: case FOVSDF_NODE_SMOOTH_UNION:
+    case FOVSDF_NODE_SMOOTH_SUBTRACT: case FOVSDF_NODE_SMOOTH_INTERSECT:
+        x = rnd_tree(b, depth - 1);
+        y = rnd_tree(b, depth - 1);
+        if (t == FOVSDF_NODE_UNION) return fovsdf_union(b, x, y);
+        if (t == FOVSDF_NODE_SUBTRACT) return fovsdf_subtract(b, x, y);
+        if (t == FOVSDF_NODE_INTERSECT) return fovsdf_intersect(b, x, y);
+        if (t == FOVSDF_NODE_SMOOTH_UNION) return fovsdf_smooth_union(b, x, y, s);
+        if (t == FOVSDF_NODE_SMOOTH_SUBTRACT) return fovsdf_smooth_subtract(b, x, y, s);
+        return fovsdf_smooth_intersect(b, x, y, s);
+    default:
+        x = rnd_tree(b, depth - 1);
+        switch (t) {
+        case FOVSDF_NODE_TRANSLATE: return fovsdf_translate(b, x, a3[0], a3[1], a3[2]);
+        case FOVSDF_NODE_ROTATE: return fovsdf_rotate(b, x, c3[0], c3[1], c3[2], 360.0f * rnd01());
+        case FOVSDF_NODE_SCALE: return fovsdf_scale(b, x, s);
+        case FOVSDF_NODE_REPEAT:
+            return fovsdf_repeat(b, x, (rnd() & 1u) ? 0.0f : s, rnd_len(), (rnd() & 1u) ? 0.0f : rnd_len(),
+                                 (int32_t)(rnd() % 3u) * 500000, (int32_t)(rnd() % 4u), 0);
+        case FOVSDF_NODE_MIRROR: return fovsdf_mirror(b, x, 1 + (int32_t)(rnd() % 7u));
+        case FOVSDF_NODE_ROUND: return fovsdf_round(b, x, s);
+        default: return fovsdf_onion(b, x, s);
+        }
+    }
+}
+static void test_f2_random_trees(void)
+{
+    fovsdf_node nodes[64];
+    fovsdf_builder b;
+    fovsdf_program prog;
+    int tree, built = 0, bad = 0, k;
+    char first[200] = "";
+    for (tree = 0; tree < 400; ++tree) {
+        int32_t root;
+        fovsdf_builder_init(&b, nodes, 64);
+        root = rnd_tree(&b, 3);
+        if (root < 0 || build(&prog, nodes, b.count, root) != FOV_OK) {
+            if (!first[0]) snprintf(first, sizeof first, "tree %d not built: %s", tree, fovsdf_result_string(b.err));
+            ++bad;
+            continue;
+        }
+        ++built;
+        for (k = 0; k < 200; ++k) {
+            float p[3], d;
+            p[0] = rnd_sgn(k < 20 ? FLT_MAX * rnd01() : powf(10.0f, -38.0f + 76.0f * rnd01()));
+            p[1] = rnd_sgn(powf(10.0f, -38.0f + 76.0f * rnd01()));
+            p[2] = rnd_sgn(powf(10.0f, -10.0f + 20.0f * rnd01()));
+            d = fovsdf_program_eval(p, NULL, &prog);
+            if (!finite_f(d)) {
+                if (!first[0])
+                    snprintf(first, sizeof first, "tree %d (%u nodes, root type %u) at (%g %g %g): %g", tree, b.count,
+                             nodes[root].type, (double)p[0], (double)p[1], (double)p[2], (double)d);
+                ++bad;
+            }
+        }
+    }
+    check(bad == 0 && built == 400, "f2_random_trees_eval_finite", "%d failures, %d of 400 trees built (first: %s)", bad,
+          built, first);
+}
+
 /* ==== F6: one node check for the builder and fovsdf_program_build =========================== */
 typedef struct bad_case {
     const char *name;
@@ -790,6 +878,7 @@ int main(void)
     test_f2_normal_overflow();
     test_f1();
     test_f2_audit();
+    test_f2_random_trees();
     test_f1_primitives();
     return fovcheck_summary();
 }
