@@ -157,7 +157,7 @@ THREADING
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
    image is the same either way).
 
-NUMERICS (the float envelope; tests/test_fovsdf_scene.c establishes it)
+NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
    - The hit threshold of a ray at distance t is
          thr(t) = max(eps, eps_px * pixel_angle * t, 8 * FLT_EPSILON * (|camera| + t)):
