@@ -135,9 +135,19 @@ ERRORS AND LOGGING
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done; nothing asserts on data. An optional
-   fov_logger in the config receives a message with each error. Non-finite values from your
-   callbacks never reach the image: a NaN or infinite distance ends the ray as a miss, a NaN
-   or infinite albedo channel is taken as 0.
+   fov_logger in the config receives a message with each error (the texts need FOV_DEBUG).
+   Non-finite values from your callbacks never reach the image: a NaN or infinite distance
+   ends the ray as a miss, a NaN or infinite albedo channel is taken as 0.
+   Bounds of the float envelope (NUMERICS): a camera position, eye_offset or pinhole beyond
+   1e18 from the origin is FOV_ERR_INVALID_ARG at fovsdf_init ("init: cam.pos ...",
+   "init: cam.eye_offset ...", "init: pinhole ..."); an image point whose ray direction
+   overflows float is FOV_ERR_INVALID_ARG from fovsdf_camera_ray and fovsdf_shade_point.
+   Scene nodes: the builder functions and fovsdf_program_build share one check (the ranges at
+   fovsdf_node_type: FOV_ERR_NOT_FINITE, FOV_ERR_LIMIT for lengths beyond 1e18,
+   FOV_ERR_INVALID_ARG, FOV_ERR_DEGENERATE); fovsdf_builder.logger and fovsdf_program_check
+   log the first failure as "<builder|program_build>: node <index> (<type>): f<k> <rule>",
+   e.g. "program_build: node 2 (menger): i0 iterations must be 1 .. 8" (such a composed text
+   lives on the stack: copy it in the logger if you keep it).
 
 THREADING
    No function keeps state between calls except in the objects you pass. fovsdf_init fills a
@@ -147,7 +157,7 @@ THREADING
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
    image is the same either way).
 
-NUMERICS (the float envelope; tests/test_fovsdf_scene.c establishes it)
+NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
    - The hit threshold of a ray at distance t is
          thr(t) = max(eps, eps_px * pixel_angle * t, 8 * FLT_EPSILON * (|camera| + t)):
@@ -161,6 +171,29 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c establishes it)
      relative (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
    - Keep scenes camera-relative where you can: float positions 1e5 from the origin resolve
      only about 0.01 units.
+   - Hard bounds: the camera's position and pinhole (pos + eye_offset * right) lie within
+     1e18 of the origin per component, and every scene length of the built-in programs
+     (fovsdf_node_type) is at most 1e18: the squares of a few such lengths then stay finite in
+     float (FLT_MAX is 3.4e38), so distances, thresholds (8 * FLT_EPSILON * |camera| is 1e12
+     there) and normals are finite. Measured (tests/test_fovsdf_contract.c): a camera 9e17
+     from the origin hits a sphere of radius 1e16 1e17 ahead at t = 9e16 within 1e13; a
+     sphere of radius 1e18 (the camera inside) and one of radius 1e17 1.1e17 ahead (hit at
+     1e16 within 1e-4 relative) render with BV2018.
+   - The built-in programs evaluate to a finite distance at every finite point, for every
+     node within its ranges (checked: each primitive and operator with sizes 1e-30 .. 1e18 at
+     points from 0 to FLT_MAX per component): a point whose distance is beyond float gets
+     +-FLT_MAX, smooth operators with an infinite operand take the plain operator, a repeat
+     whose |p| / period exceeds float leaves p unfolded, terrain octaves stop where x * f1
+     passes 1e30. Folds more than 2^23 periods from the origin carry float rounding of the
+     point (up to an ulp of it), as every position does.
+   - Colours: fovsdf_output.rgb, fovsdf_shade_point, fovsdf_shade and fovsdf_sky give linear
+     RGB in [0, 65504] (the largest half float) whatever the scene's colours: values are
+     clamped there, NaN (0 * inf with FLT_MAX lights) is 0; rgb8 is its sRGB encoding.
+     The tetrahedron normal stays unit where the scene's distances come near FLT_MAX (its
+     sums would overflow: it then sums differences from the first sample, the same normal).
+     Directional lights and plane normals of any finite non-zero length are normalised
+     exactly (scaled to a largest component of 1 first), so a light (-0.06, -0.06, -1e30) is
+     the light (0, 0, -1).
    - Rays that start inside a surface (negative distance) report a hit at t_start.
    - Rays that graze a surface can exhaust max_steps (below about 1e-5 rad on a plane with
      the default 256 steps): they are reported as FOVSDF_EXHAUSTED with the t reached, and
@@ -441,7 +474,9 @@ typedef enum fovsdf_finish {
    with fwd = normalize(target - pos), right = normalize(fwd x up_hint) and up = right x fwd
    (a right-handed world: with up_hint +y and fwd +z, right is -x ... see fovsdf_camera_basis).
    eye_offset moves the pinhole along `right` by that many world units (stereo: -ipd/2 for
-   the left eye, +ipd/2 for the right one; render each eye with its own context). */
+   the left eye, +ipd/2 for the right one; render each eye with its own context). pos,
+   eye_offset and the pinhole they give lie within 1e18 of the origin (per component;
+   fovsdf_init rejects more with FOV_ERR_INVALID_ARG, see NUMERICS). */
 typedef struct fovsdf_camera {
     float pos[3];           /* pinhole position, world units */
     float target[3];        /* a point the camera looks at (must differ from pos) */
@@ -521,38 +556,50 @@ typedef struct fovsdf_scene {
 
 /* ==== built-in scene description (a tree of nodes compiled into a program) =============== */
 
+/* Node parameters and their ranges. The builder functions and fovsdf_program_build apply one
+   check (fovsdf_program_check): every parameter a node reads is finite (else
+   FOV_ERR_NOT_FINITE); every length (sizes, radii, offsets, periods, blend radii, capsule end
+   points, the plane's offset, the terrain's amplitude and frequency) is at most 1e18 in
+   magnitude (else FOV_ERR_LIMIT: squares of scene lengths must stay finite in float, see
+   NUMERICS); the ranges below hold (else FOV_ERR_INVALID_ARG; a zero plane normal is
+   FOV_ERR_DEGENERATE). Sizes have no lower bound but > 0. */
 typedef enum fovsdf_node_type {
     FOVSDF_NODE_NONE = 0,
     /* primitives (centred at the origin) */
-    FOVSDF_NODE_SPHERE,       /* f0 radius */
-    FOVSDF_NODE_BOX,          /* f0..f2 half extents */
-    FOVSDF_NODE_ROUND_BOX,    /* f0..f2 half extents, f3 rounding radius */
-    FOVSDF_NODE_BOX_FRAME,    /* f0..f2 half extents, f3 frame thickness */
-    FOVSDF_NODE_TORUS,        /* f0 major radius, f1 minor radius; in the x/z plane */
-    FOVSDF_NODE_CAPSULE,      /* segment f0..f2 -> f3..f5, f6 radius */
-    FOVSDF_NODE_CYLINDER,     /* along y: f0 half height, f1 radius */
-    FOVSDF_NODE_CONE,         /* capped cone along y: f0 half height, f1 bottom, f2 top radius */
-    FOVSDF_NODE_PLANE,        /* f0..f2 unit normal, f3 offset: dot(p, n) + f3 */
-    FOVSDF_NODE_MENGER,       /* Menger sponge: f0 half size, i0 iterations (1..8) */
-    FOVSDF_NODE_MANDELBULB,   /* f0 power, i0 iterations (1..32); radius about 1.2 */
-    FOVSDF_NODE_TERRAIN,      /* height field y = f0 * fbm(x * f1, z * f1), i0 octaves;
-                                 a distance bound with Lipschitz factor f2 (0: 0.5) */
+    FOVSDF_NODE_SPHERE,       /* f0 radius > 0 */
+    FOVSDF_NODE_BOX,          /* f0..f2 half extents > 0 */
+    FOVSDF_NODE_ROUND_BOX,    /* f0..f2 half extents > 0, f3 rounding radius in [0, min f0..f2] */
+    FOVSDF_NODE_BOX_FRAME,    /* f0..f2 half extents > 0, f3 frame thickness > 0 */
+    FOVSDF_NODE_TORUS,        /* f0 major radius >= 0, f1 minor radius > 0; in the x/z plane */
+    FOVSDF_NODE_CAPSULE,      /* segment f0..f2 -> f3..f5, f6 radius > 0 */
+    FOVSDF_NODE_CYLINDER,     /* along y: f0 half height > 0, f1 radius > 0 */
+    FOVSDF_NODE_CONE,         /* capped cone along y: f0 half height > 0, f1 bottom, f2 top
+                                 radius >= 0, not both 0 */
+    FOVSDF_NODE_PLANE,        /* f0..f2 normal (non-zero; the builder and the build normalise
+                                 it), f3 offset: dot(p, n) + f3 */
+    FOVSDF_NODE_MENGER,       /* Menger sponge: f0 half size > 0, i0 iterations (1..8) */
+    FOVSDF_NODE_MANDELBULB,   /* f0 power in [2, 16], i0 iterations (1..32); radius about 1.2 */
+    FOVSDF_NODE_TERRAIN,      /* height field y = f0 * fbm(x * f1, z * f1), i0 octaves (1..12),
+                                 f0 >= 0, f1 > 0; a distance bound (y - h) * f2 with f2 in
+                                 (0, 1] (fovsdf_terrain sets f2 = 1 / sqrt(1 + G^2), G its bound
+                                 on the slope, which makes it Lipschitz 1) */
     /* binary operators: a, b children */
     FOVSDF_NODE_UNION,
     FOVSDF_NODE_SUBTRACT,     /* a minus b */
     FOVSDF_NODE_INTERSECT,
-    FOVSDF_NODE_SMOOTH_UNION,     /* f0 = k, blend radius */
-    FOVSDF_NODE_SMOOTH_SUBTRACT,  /* f0 = k */
-    FOVSDF_NODE_SMOOTH_INTERSECT, /* f0 = k */
+    FOVSDF_NODE_SMOOTH_UNION,     /* f0 = k > 0, blend radius */
+    FOVSDF_NODE_SMOOTH_SUBTRACT,  /* f0 = k > 0 */
+    FOVSDF_NODE_SMOOTH_INTERSECT, /* f0 = k > 0 */
     /* unary: a child */
     FOVSDF_NODE_TRANSLATE,    /* f0..f2 offset */
-    FOVSDF_NODE_ROTATE,       /* f0..f8 rotation matrix (row-major, object -> world) */
+    FOVSDF_NODE_ROTATE,       /* f0..f8 rotation matrix (row-major, object -> world; rows
+                                 orthonormal within 1e-3) */
     FOVSDF_NODE_SCALE,        /* f0 uniform scale > 0 */
-    FOVSDF_NODE_REPEAT,       /* f0..f2 period per axis (0: no repetition on that axis),
-                                 i0..i2 copies each side (0: infinite) */
-    FOVSDF_NODE_MIRROR,       /* i0 bit mask of mirrored axes (1 x, 2 y, 4 z): p -> |p| */
-    FOVSDF_NODE_ROUND,        /* f0 radius: f - r */
-    FOVSDF_NODE_ONION,        /* f0 thickness: |f| - th (the canonical onion) */
+    FOVSDF_NODE_REPEAT,       /* f0..f2 period per axis >= 0 (0: no repetition on that axis),
+                                 i0..i2 copies each side, 0 .. 1000000 (0: infinite) */
+    FOVSDF_NODE_MIRROR,       /* i0 bit mask of mirrored axes (1 x, 2 y, 4 z), 1 .. 7: p -> |p| */
+    FOVSDF_NODE_ROUND,        /* f0 radius >= 0: f - r */
+    FOVSDF_NODE_ONION,        /* f0 thickness > 0: |f| - th (the canonical onion) */
     _FOVSDF_NODE_NUM,
     _FOVSDF_NODE_FORCE_U32 = 0x7FFFFFFF
 } fovsdf_node_type;
@@ -566,12 +613,16 @@ typedef struct fovsdf_node {
 } fovsdf_node;
 
 /* Builds nodes into a caller array; every function returns the new node's index, or -1
-   after an error (then err says why, and later calls keep returning -1). */
+   after an error (then err says why, and later calls keep returning -1). Each node is checked
+   exactly as fovsdf_program_build checks it (fovsdf_program_check): the ranges given at
+   fovsdf_node_type, finite parameters, lengths at most 1e18 in magnitude. */
 typedef struct fovsdf_builder {
     fovsdf_node *nodes;
     uint32_t cap, count;
     int32_t material;       /* material given to the primitives created next */
     fov_result err;
+    fov_logger logger;      /* optional: receives a message with the first error (the node,
+                               the field and its allowed range); fovsdf_builder_init clears it */
 } fovsdf_builder;
 
 /* A compiled scene program (opaque data in caller memory; evaluate it with
@@ -627,7 +678,8 @@ typedef struct fovsdf_ctx {  /* filled by fovsdf_init; read-only afterwards */
    (floats, bytes or integers) per row; 0 means tightly packed. The buffers describe the
    whole image: fovsdf_render_rows writes only its rows. */
 typedef struct fovsdf_output {
-    float *rgb;            uint32_t rgb_stride;      /* linear RGB, 3 floats per pixel */
+    float *rgb;            uint32_t rgb_stride;      /* linear RGB, 3 floats per pixel, each
+                                                        in [0, 65504] (NUMERICS) */
     uint8_t *rgb8;         uint32_t rgb8_stride;     /* sRGB-encoded 8-bit RGB */
     float *depth;          uint32_t depth_stride;    /* ray t of the nearest hitting sample;
                                                         t_max when no sample hit */
@@ -750,8 +802,11 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *ctx, uint32_t x0, uin
                                          fovsdf_stats *stats);
 
 /* Single rays. fovsdf_camera_ray gives the ray through image point (px, py) (continuous
-   pixel coordinates; pixel centres at +0.5). fovsdf_trace marches with the context's method
-   from t_start. rd must be unit length. */
+   pixel coordinates; pixel centres at +0.5; any point off the image too): rd is unit length.
+   A point so far off the image that the direction overflows float (about 1e38 / tan(fov_y/2)
+   pixels) is FOV_ERR_INVALID_ARG (fovsdf_shade_point too), NaN or inf FOV_ERR_NOT_FINITE.
+   fovsdf_trace marches with the context's method from t_start. rd must be unit length; ro
+   (also fovsdf_march's) within 1e18 of the origin per component (else FOV_ERR_INVALID_ARG). */
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *ctx, float px, float py,
                                         float ro[3], float rd[3]);
 FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], const float rd[3],
@@ -840,6 +895,14 @@ FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t cou
 FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes,
                                            uint32_t count, int32_t root, void *mem,
                                            size_t bytes);
+/* The node check of fovsdf_program_build (and of every builder function), with a logger:
+   count and root, then every node's type, children (indices below count) and parameters (the
+   ranges at fovsdf_node_type: finite, lengths at most 1e18 in magnitude, iteration counts
+   within their caps). Returns the first failure's code, the one fovsdf_program_build returns
+   for these nodes, and logs it (the node index, the field and the allowed range; messages
+   need FOV_DEBUG). logger may be NULL. */
+FOVSDF_API fov_result fovsdf_program_check(const fovsdf_node *nodes, uint32_t count, int32_t root,
+                                           const fov_logger *logger);
 /* Keep only the code: fovsdf_program_compact copies the instructions (code_bytes of them,
    64 bytes each, plus up to 15 for alignment) to dst and points prog there, so the build
    memory (nodes, bounds, scratch: several times larger) can be reused. For a built-in scene:
@@ -1167,7 +1230,8 @@ FOVSDF__PRIV int fovsdf__finite3(const float v[3])
 FOVSDF__PRIV float fovsdf__minf(float a, float b) { return a < b ? a : b; }
 FOVSDF__PRIV float fovsdf__maxf(float a, float b) { return a > b ? a : b; }
 FOVSDF__PRIV float fovsdf__absf(float a) { return a < 0.0f ? -a : a; }
-FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+/* NaN gives a: a NaN never survives a clamp (bit for bit the plain clamp otherwise) */
+FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b) { return x >= a ? (x > b ? b : x) : a; }
 FOVSDF__PRIV float fovsdf__dot(const float a[3], const float b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -1180,11 +1244,21 @@ FOVSDF__PRIV void fovsdf__cross(const float a[3], const float b[3], float r[3])
     float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
     r[0] = x; r[1] = y; r[2] = z;
 }
+/* Scales v to unit length and returns its length before (FLT_MAX when that is beyond float).
+   Any finite non-zero v works: one whose squares would under- or overflow (largest component
+   below 1e-15 or above 1e15) is brought to a largest component of 1 first; every other vector
+   takes the plain path, bit for bit. A zero, NaN or infinite v is left as it is and gives 0. */
 FOVSDF__PRIV float fovsdf__normalize(float v[3])
 {
-    float l = fovsdf__len(v);
-    if (l > 0.0f && fovsdf__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
-    return l;
+    float m, l, s = 1.0f;
+    if (!fovsdf__finite3(v)) return 0.0f;
+    m = fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__maxf(fovsdf__absf(v[1]), fovsdf__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    if (m < 1e-15f || m > 1e15f) { v[0] /= m; v[1] /= m; v[2] /= m; s = m; }
+    l = fovsdf__len(v);
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    l *= s;
+    return l <= FLT_MAX ? l : FLT_MAX;
 }
 /* Brings a direction whose length would underflow or overflow in the squares (components
    below 1e-15 or above 1e15) to a largest component of 1 first; other vectors are left
@@ -1488,6 +1562,195 @@ FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
     return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
 }
 
+/* ---- node validation: the one check of the builder and of fovsdf_program_build ------------ */
+/* Lengths of the scene (sizes, radii, offsets, periods, blend radii) are at most this in
+   magnitude: squared lengths of a few of them stay finite in float (NUMERICS). */
+#define FOVSDF__MAX_LEN 1e18f
+/* A position every component of which lies within FOVSDF__MAX_LEN of the origin. */
+FOVSDF__PRIV int fovsdf__coord_ok(const float v[3])
+{
+    return fovsdf__absf(v[0]) <= FOVSDF__MAX_LEN && fovsdf__absf(v[1]) <= FOVSDF__MAX_LEN &&
+           fovsdf__absf(v[2]) <= FOVSDF__MAX_LEN;
+}
+/* Every linear RGB value the library returns lies in [0, this] (the largest half float). */
+#define FOVSDF__RGB_MAX 65504.0f
+
+#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+FOVSDF__PRIV uint32_t fovsdf__app(char *buf, uint32_t n, uint32_t cap, const char *s)
+{
+    while (*s && n + 1u < cap) buf[n++] = *s++;
+    buf[n] = 0;
+    return n;
+}
+FOVSDF__PRIV uint32_t fovsdf__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
+{
+    char d[12];
+    uint32_t k = 0;
+    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
+    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
+    buf[n] = 0;
+    return n;
+}
+#endif
+
+FOVSDF__PRIV int fovsdf__node_arity(uint32_t t)
+{
+    if (t >= FOVSDF_NODE_SPHERE && t <= FOVSDF_NODE_TERRAIN) return 0;
+    if (t >= FOVSDF_NODE_UNION && t <= FOVSDF_NODE_SMOOTH_INTERSECT) return 2;
+    if (t >= FOVSDF_NODE_TRANSLATE && t <= FOVSDF_NODE_ONION) return 1;
+    return -1;
+}
+
+FOVSDF__PRIV const char *fovsdf__node_name(uint32_t t)
+{
+    static const char *const names[] = { "none", "sphere", "box", "round_box", "box_frame", "torus", "capsule",
+                                         "cylinder", "cone", "plane", "menger", "mandelbulb", "terrain", "union",
+                                         "subtract", "intersect", "smooth_union", "smooth_subtract",
+                                         "smooth_intersect", "translate", "rotate", "scale", "repeat", "mirror",
+                                         "round", "onion" };
+    return t < (uint32_t)_FOVSDF_NODE_NUM ? names[t] : "unknown";
+}
+
+/* Logs "<who>: node <index> (<type>): [f<field> ]<rule>" (FOV_DEBUG) and returns r. */
+FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, const char *who, uint32_t index,
+                                          uint32_t type, int field, const char *rule, uint32_t line)
+{
+#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+    char buf[192];
+    uint32_t n = 0;
+    n = fovsdf__app(buf, n, sizeof buf, who);
+    n = fovsdf__app(buf, n, sizeof buf, ": node ");
+    n = fovsdf__appu(buf, n, sizeof buf, index);
+    n = fovsdf__app(buf, n, sizeof buf, " (");
+    n = fovsdf__app(buf, n, sizeof buf, fovsdf__node_name(type));
+    n = fovsdf__app(buf, n, sizeof buf, "): ");
+    if (field >= 0) {
+        n = fovsdf__app(buf, n, sizeof buf, "f");
+        n = fovsdf__appu(buf, n, sizeof buf, (uint32_t)field);
+        n = fovsdf__app(buf, n, sizeof buf, " ");
+    }
+    (void)fovsdf__app(buf, n, sizeof buf, rule);
+    return fovsdf__err(lg, r, buf, line);
+#else
+    (void)who; (void)index; (void)type; (void)field; (void)rule;
+    return fovsdf__err(lg, r, (const char *)0, line);
+#endif
+}
+
+/* Float parameters each node type reads (f0 .. f(n-1)). */
+FOVSDF__PRIV uint32_t fovsdf__node_nf(uint32_t t)
+{
+    static const uint8_t nf[_FOVSDF_NODE_NUM] = { 0, 1, 3, 4, 4, 2, 7, 2, 3, 4, 1, 1, 3, 0, 0, 0, 1, 1, 1, 3, 9, 1, 3,
+                                                  0, 1, 1 };
+    return t < (uint32_t)_FOVSDF_NODE_NUM ? nf[t] : 0u;
+}
+
+#define FOVSDF__NCK(cond, code, field, rule)                                                                 \
+    do {                                                                                                     \
+        if (!(cond)) return fovsdf__node_fail(lg, code, who, index, n->type, field, FOVSDF__MSG(rule), (uint32_t)__LINE__); \
+    } while (0)
+
+/* Validates node n (the node at index `index`): its type, its children (indices in
+   [0, limit)) and every parameter it reads, with the ranges the builder functions document.
+   The first failure is logged (with the node, the field and the allowed range) and returned. */
+FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index, uint32_t limit, const fov_logger *lg,
+                                           const char *who)
+{
+    const float *f = n->f;
+    uint32_t t = n->type, nf, k;
+    int ar = fovsdf__node_arity(t);
+    FOVSDF__NCK(ar >= 0, FOV_ERR_INVALID_ARG, -1, "unknown node type");
+    FOVSDF__NCK(ar < 1 || (n->a >= 0 && (uint32_t)n->a < limit), FOV_ERR_INVALID_ARG, -1,
+                "child a must be an existing node index (builder: an earlier node)");
+    FOVSDF__NCK(ar < 2 || (n->b >= 0 && (uint32_t)n->b < limit), FOV_ERR_INVALID_ARG, -1,
+                "child b must be an existing node index (builder: an earlier node)");
+    nf = fovsdf__node_nf(t);
+    for (k = 0; k < nf; ++k)
+        FOVSDF__NCK(fovsdf__finite(f[k]), FOV_ERR_NOT_FINITE, (int)k, "is NaN or infinite");
+    /* lengths: everything but the plane normal, the rotation matrix, the bulb's power and the
+       terrain's distance scale */
+    for (k = 0; k < nf; ++k) {
+        if ((t == FOVSDF_NODE_PLANE && k < 3u) || t == FOVSDF_NODE_ROTATE || t == FOVSDF_NODE_MANDELBULB ||
+            (t == FOVSDF_NODE_TERRAIN && k == 2u))
+            continue;
+        FOVSDF__NCK(fovsdf__absf(f[k]) <= FOVSDF__MAX_LEN, FOV_ERR_LIMIT, (int)k,
+                    "beyond 1e18 in magnitude (the float envelope of scene lengths)");
+    }
+    switch (t) {
+    case FOVSDF_NODE_SPHERE: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be > 0"); break;
+    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: case FOVSDF_NODE_BOX_FRAME:
+        for (k = 0; k < 3u; ++k) FOVSDF__NCK(f[k] > 0.0f, FOV_ERR_INVALID_ARG, (int)k, "half extent must be > 0");
+        if (t == FOVSDF_NODE_ROUND_BOX)
+            FOVSDF__NCK(f[3] >= 0.0f && f[3] <= f[0] && f[3] <= f[1] && f[3] <= f[2], FOV_ERR_INVALID_ARG, 3,
+                        "rounding radius must be in [0, the smallest half extent]");
+        if (t == FOVSDF_NODE_BOX_FRAME) FOVSDF__NCK(f[3] > 0.0f, FOV_ERR_INVALID_ARG, 3, "frame thickness must be > 0");
+        break;
+    case FOVSDF_NODE_TORUS:
+        FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "major radius must be >= 0");
+        FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "minor radius must be > 0");
+        break;
+    case FOVSDF_NODE_CAPSULE: FOVSDF__NCK(f[6] > 0.0f, FOV_ERR_INVALID_ARG, 6, "radius must be > 0"); break;
+    case FOVSDF_NODE_CYLINDER:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half height must be > 0");
+        FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "radius must be > 0");
+        break;
+    case FOVSDF_NODE_CONE:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half height must be > 0");
+        FOVSDF__NCK(f[1] >= 0.0f, FOV_ERR_INVALID_ARG, 1, "bottom radius must be >= 0");
+        FOVSDF__NCK(f[2] >= 0.0f, FOV_ERR_INVALID_ARG, 2, "top radius must be >= 0");
+        FOVSDF__NCK(f[1] > 0.0f || f[2] > 0.0f, FOV_ERR_INVALID_ARG, 1, "bottom or top radius must be > 0");
+        break;
+    case FOVSDF_NODE_PLANE:
+        FOVSDF__NCK(!(fovsdf__is0(f[0]) && fovsdf__is0(f[1]) && fovsdf__is0(f[2])), FOV_ERR_DEGENERATE, 0,
+                    "normal (f0..f2) must not be zero");
+        break;
+    case FOVSDF_NODE_MENGER:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half size must be > 0");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 8, FOV_ERR_INVALID_ARG, -1, "i0 iterations must be 1 .. 8");
+        break;
+    case FOVSDF_NODE_MANDELBULB:
+        FOVSDF__NCK(f[0] >= 2.0f && f[0] <= 16.0f, FOV_ERR_INVALID_ARG, 0, "power must be in [2, 16]");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 32, FOV_ERR_INVALID_ARG, -1, "i0 iterations must be 1 .. 32");
+        break;
+    case FOVSDF_NODE_TERRAIN:
+        FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "amplitude must be >= 0");
+        FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "frequency must be > 0");
+        FOVSDF__NCK(f[2] > 0.0f && f[2] <= 1.0f, FOV_ERR_INVALID_ARG, 2,
+                    "distance scale must be in (0, 1] (fovsdf_terrain sets it from the slope bound)");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 12, FOV_ERR_INVALID_ARG, -1, "i0 octaves must be 1 .. 12");
+        break;
+    case FOVSDF_NODE_SMOOTH_UNION: case FOVSDF_NODE_SMOOTH_SUBTRACT: case FOVSDF_NODE_SMOOTH_INTERSECT:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "blend radius k must be > 0");
+        break;
+    case FOVSDF_NODE_ROTATE: {
+        uint32_t i, j;
+        for (i = 0; i < 3u; ++i)
+            for (j = 0; j < 3u; ++j) {
+                float d = f[3u * i] * f[3u * j] + f[3u * i + 1u] * f[3u * j + 1u] + f[3u * i + 2u] * f[3u * j + 2u];
+                FOVSDF__NCK(fovsdf__absf(d - (i == j ? 1.0f : 0.0f)) <= 1e-3f, FOV_ERR_INVALID_ARG, -1,
+                            "f0..f8 must be a rotation matrix (rows orthonormal within 1e-3)");
+            }
+        break;
+    }
+    case FOVSDF_NODE_SCALE: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "scale must be > 0"); break;
+    case FOVSDF_NODE_REPEAT:
+        for (k = 0; k < 3u; ++k) {
+            FOVSDF__NCK(f[k] >= 0.0f, FOV_ERR_INVALID_ARG, (int)k, "period must be >= 0 (0: no repetition)");
+            FOVSDF__NCK(n->i[k] >= 0 && n->i[k] <= 1000000, FOV_ERR_INVALID_ARG, -1,
+                        "i0..i2 copies each side must be 0 .. 1000000 (0: infinite)");
+        }
+        break;
+    case FOVSDF_NODE_MIRROR:
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 7, FOV_ERR_INVALID_ARG, -1, "i0 axis mask must be 1 .. 7");
+        break;
+    case FOVSDF_NODE_ROUND: FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be >= 0"); break;
+    case FOVSDF_NODE_ONION: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "thickness must be > 0"); break;
+    default: break; /* union, subtract, intersect, translate: children and lengths only */
+    }
+    return FOV_OK;
+}
+#undef FOVSDF__NCK
+
 /* ---- scene builder ------------------------------------------------------------------------ */
 FOVSDF_API void fovsdf_builder_init(fovsdf_builder *b, fovsdf_node *nodes, uint32_t cap)
 {
@@ -1497,24 +1760,24 @@ FOVSDF_API void fovsdf_builder_init(fovsdf_builder *b, fovsdf_node *nodes, uint3
     b->count = 0;
     b->material = 0;
     b->err = nodes ? FOV_OK : FOV_ERR_NULL;
+    b->logger.func = 0;
+    b->logger.user = 0;
 }
 
-/* Appends a node; checks children exist and parameters are finite. */
+/* Appends a node after fovsdf__node_check (the check fovsdf_program_build applies). */
 FOVSDF__PRIV int32_t fovsdf__add(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y,
                                  const float *f, uint32_t nf, const int32_t *iv, uint32_t ni)
 {
     fovsdf_node *n;
     uint32_t k;
+    fov_result r;
     if (!b) return -1;
     if (b->err != FOV_OK) return -1;
-    if (b->count >= b->cap || b->count >= 0x7fffffffu) { b->err = FOV_ERR_TOO_SMALL; return -1; }
-    if ((x != -1 && (x < 0 || (uint32_t)x >= b->count)) || (y != -1 && (y < 0 || (uint32_t)y >= b->count))) {
-        b->err = FOV_ERR_INVALID_ARG;
+    if (b->count >= b->cap || b->count >= 0x7fffffffu) {
+        b->err = fovsdf__err(&b->logger, FOV_ERR_TOO_SMALL, FOVSDF__MSG("builder: node array full (cap)"), (uint32_t)__LINE__);
         return -1;
     }
-    for (k = 0; k < nf; ++k)
-        if (!fovsdf__finite(f[k])) { b->err = FOV_ERR_NOT_FINITE; return -1; }
-    n = &b->nodes[b->count];
+    n = &b->nodes[b->count]; /* written, but counted only when valid */
     FOV_MEMSET(n, 0, sizeof *n);
     n->type = type;
     n->a = x;
@@ -1522,110 +1785,95 @@ FOVSDF__PRIV int32_t fovsdf__add(fovsdf_builder *b, uint32_t type, int32_t x, in
     n->material = b->material;
     for (k = 0; k < nf && k < 9; ++k) n->f[k] = f[k];
     for (k = 0; k < ni && k < 3; ++k) n->i[k] = iv[k];
+    r = fovsdf__node_check(n, b->count, b->count, &b->logger, "builder");
+    if (r != FOV_OK) { b->err = r; return -1; }
     return (int32_t)b->count++;
 }
-FOVSDF__PRIV int32_t fovsdf__bad(fovsdf_builder *b, fov_result r)
+FOVSDF__PRIV int32_t fovsdf__bad(fovsdf_builder *b, fov_result r, const char *msg, uint32_t line)
 {
-    if (b && b->err == FOV_OK) b->err = r;
+    if (b && b->err == FOV_OK) b->err = fovsdf__err(&b->logger, r, msg, line);
     return -1;
 }
-FOVSDF__PRIV int fovsdf__pos(float v) { return v > 0.0f && fovsdf__finite(v); }
-FOVSDF__PRIV int fovsdf__nonneg(float v) { return v >= 0.0f && fovsdf__finite(v); }
+#define FOVSDF__BAD(b, r, msg) fovsdf__bad(b, r, FOVSDF__MSG(msg), (uint32_t)__LINE__)
 
 FOVSDF_API int32_t fovsdf_sphere(fovsdf_builder *b, float r)
 {
-    if (!fovsdf__pos(r)) return fovsdf__bad(b, fovsdf__finite(r) ? FOV_ERR_INVALID_ARG : FOV_ERR_NOT_FINITE);
     return fovsdf__add(b, FOVSDF_NODE_SPHERE, -1, -1, &r, 1, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_box(fovsdf_builder *b, float hx, float hy, float hz)
 {
     float f[3];
     f[0] = hx; f[1] = hy; f[2] = hz;
-    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_BOX, -1, -1, f, 3, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_round_box(fovsdf_builder *b, float hx, float hy, float hz, float r)
 {
     float f[4];
     f[0] = hx; f[1] = hy; f[2] = hz; f[3] = r;
-    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz) || !fovsdf__nonneg(r) || r > hx || r > hy || r > hz)
-        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_ROUND_BOX, -1, -1, f, 4, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_box_frame(fovsdf_builder *b, float hx, float hy, float hz, float e)
 {
     float f[4];
     f[0] = hx; f[1] = hy; f[2] = hz; f[3] = e;
-    if (!fovsdf__pos(hx) || !fovsdf__pos(hy) || !fovsdf__pos(hz) || !fovsdf__pos(e)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_BOX_FRAME, -1, -1, f, 4, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_torus(fovsdf_builder *b, float major, float minor)
 {
     float f[2];
     f[0] = major; f[1] = minor;
-    if (!fovsdf__nonneg(major) || !fovsdf__pos(minor)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_TORUS, -1, -1, f, 2, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_capsule(fovsdf_builder *b, const float a[3], const float c[3], float r)
 {
     float f[7];
-    if (!a || !c) return fovsdf__bad(b, FOV_ERR_NULL);
+    if (!a || !c) return FOVSDF__BAD(b, FOV_ERR_NULL, "builder: capsule end points are NULL");
     f[0] = a[0]; f[1] = a[1]; f[2] = a[2]; f[3] = c[0]; f[4] = c[1]; f[5] = c[2]; f[6] = r;
-    if (!fovsdf__pos(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_CAPSULE, -1, -1, f, 7, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_cylinder(fovsdf_builder *b, float half_height, float r)
 {
     float f[2];
     f[0] = half_height; f[1] = r;
-    if (!fovsdf__pos(half_height) || !fovsdf__pos(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_CYLINDER, -1, -1, f, 2, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_cone(fovsdf_builder *b, float half_height, float r_bottom, float r_top)
 {
     float f[3];
     f[0] = half_height; f[1] = r_bottom; f[2] = r_top;
-    if (!fovsdf__pos(half_height) || !fovsdf__nonneg(r_bottom) || !fovsdf__nonneg(r_top) ||
-        !(r_bottom > 0.0f || r_top > 0.0f))
-        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_CONE, -1, -1, f, 3, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_plane(fovsdf_builder *b, float nx, float ny, float nz, float offset)
 {
-    float f[4], l;
+    float f[4];
     f[0] = nx; f[1] = ny; f[2] = nz; f[3] = offset;
-    if (!fovsdf__finite3(f) || !fovsdf__finite(offset)) return fovsdf__bad(b, FOV_ERR_NOT_FINITE);
-    l = fovsdf__normalize(f);
-    if (!(l > 0.0f)) return fovsdf__bad(b, FOV_ERR_DEGENERATE);
+    (void)fovsdf__normalize(f); /* any finite non-zero normal (1e-30 or 1e30 long too); zero stays zero */
     return fovsdf__add(b, FOVSDF_NODE_PLANE, -1, -1, f, 4, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_menger(fovsdf_builder *b, float half_size, int32_t iterations)
 {
-    if (!fovsdf__pos(half_size) || iterations < 1 || iterations > 8) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_MENGER, -1, -1, &half_size, 1, &iterations, 1);
 }
 FOVSDF_API int32_t fovsdf_mandelbulb(fovsdf_builder *b, float power, int32_t iterations)
 {
-    if (!(power >= 2.0f && power <= 16.0f) || iterations < 1 || iterations > 32) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_MANDELBULB, -1, -1, &power, 1, &iterations, 1);
 }
 FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float frequency, int32_t octaves)
 {
     float f[3], g = 0.0f, w = 1.0f;
-    int32_t o;
-    if (!fovsdf__nonneg(amplitude) || !fovsdf__pos(frequency) || octaves < 1 || octaves > 12)
-        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
+    int32_t o, no = octaves < 1 ? 1 : (octaves > 12 ? 12 : octaves);
     /* |grad h| <= amplitude * frequency * sum_o (0.5 * 2.03)^o; the distance bound divides
        (y - h) by sqrt(1 + |grad h|^2), which makes it Lipschitz 1 (conservative). */
-    for (o = 0; o < octaves; ++o) { g += w; w *= 0.5f * 2.03f; }
+    for (o = 0; o < no; ++o) { g += w; w *= 0.5f * 2.03f; }
     g *= amplitude * frequency;
-    f[0] = amplitude; f[1] = frequency; f[2] = 1.0f / FOVSDF__SQRT(1.0f + g * g);
+    f[0] = amplitude; f[1] = frequency;
+    /* 1 / sqrt(1 + g^2), or 1 / g where g^2 would overflow (a slope bound above 1e15) */
+    f[2] = fovsdf__absf(g) > 1e15f ? 1.0f / fovsdf__absf(g) : 1.0f / FOVSDF__SQRT(1.0f + g * g);
+    if (!fovsdf__finite(f[2])) f[2] = 0.0f; /* NaN inputs: node_check reports them first */
     return fovsdf__add(b, FOVSDF_NODE_TERRAIN, -1, -1, f, 3, &octaves, 1);
 }
 FOVSDF__PRIV int32_t fovsdf__binop(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y, float k, int smooth)
 {
-    if (x < 0 || y < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
-    if (smooth && !fovsdf__pos(k)) return fovsdf__bad(b, fovsdf__finite(k) ? FOV_ERR_INVALID_ARG : FOV_ERR_NOT_FINITE);
     return fovsdf__add(b, type, x, y, &k, smooth ? 1u : 0u, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_union(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_UNION, x, y, 0.0f, 0); }
@@ -1638,16 +1886,15 @@ FOVSDF_API int32_t fovsdf_translate(fovsdf_builder *b, int32_t x, float tx, floa
 {
     float f[3];
     f[0] = tx; f[1] = ty; f[2] = tz;
-    if (x < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_TRANSLATE, x, -1, f, 3, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float ay, float az, float angle_deg)
 {
     float a[3], f[9], c, s, t;
     a[0] = ax; a[1] = ay; a[2] = az;
-    if (x < 0) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
-    if (!fovsdf__finite3(a) || !fovsdf__finite(angle_deg)) return fovsdf__bad(b, FOV_ERR_NOT_FINITE);
-    if (!(fovsdf__normalize(a) > 0.0f)) return fovsdf__bad(b, FOV_ERR_DEGENERATE);
+    if (!fovsdf__finite3(a) || !fovsdf__finite(angle_deg))
+        return FOVSDF__BAD(b, FOV_ERR_NOT_FINITE, "builder: rotate axis or angle is NaN or infinite");
+    if (!(fovsdf__normalize(a) > 0.0f)) return FOVSDF__BAD(b, FOV_ERR_DEGENERATE, "builder: rotate axis is zero");
     c = FOVSDF__COS(angle_deg * FOVSDF__DEG);
     s = FOVSDF__SIN(angle_deg * FOVSDF__DEG);
     t = 1.0f - c;
@@ -1659,7 +1906,6 @@ FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float a
 }
 FOVSDF_API int32_t fovsdf_scale(fovsdf_builder *b, int32_t x, float s)
 {
-    if (x < 0 || !fovsdf__pos(s)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_SCALE, x, -1, &s, 1, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_repeat(fovsdf_builder *b, int32_t x, float px, float py, float pz,
@@ -1668,24 +1914,18 @@ FOVSDF_API int32_t fovsdf_repeat(fovsdf_builder *b, int32_t x, float px, float p
     float f[3];
     int32_t n[3];
     f[0] = px; f[1] = py; f[2] = pz; n[0] = nx; n[1] = ny; n[2] = nz;
-    if (x < 0 || !fovsdf__nonneg(px) || !fovsdf__nonneg(py) || !fovsdf__nonneg(pz) || nx < 0 || ny < 0 || nz < 0 ||
-        nx > 1000000 || ny > 1000000 || nz > 1000000)
-        return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_REPEAT, x, -1, f, 3, n, 3);
 }
 FOVSDF_API int32_t fovsdf_mirror(fovsdf_builder *b, int32_t x, int32_t axes)
 {
-    if (x < 0 || axes < 1 || axes > 7) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_MIRROR, x, -1, 0, 0, &axes, 1);
 }
 FOVSDF_API int32_t fovsdf_round(fovsdf_builder *b, int32_t x, float r)
 {
-    if (x < 0 || !fovsdf__nonneg(r)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_ROUND, x, -1, &r, 1, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_onion(fovsdf_builder *b, int32_t x, float thickness)
 {
-    if (x < 0 || !fovsdf__pos(thickness)) return fovsdf__bad(b, FOV_ERR_INVALID_ARG);
     return fovsdf__add(b, FOVSDF_NODE_ONION, x, -1, &thickness, 1, 0, 0);
 }
 
@@ -1724,13 +1964,6 @@ typedef struct fovsdf__bsph {   /* per-node bounds and cost */
 
 #define FOVSDF__MAX_DEPTH 64
 
-FOVSDF__PRIV int fovsdf__node_arity(uint32_t t)
-{
-    if (t >= FOVSDF_NODE_SPHERE && t <= FOVSDF_NODE_TERRAIN) return 0;
-    if (t >= FOVSDF_NODE_UNION && t <= FOVSDF_NODE_SMOOTH_INTERSECT) return 2;
-    if (t >= FOVSDF_NODE_TRANSLATE && t <= FOVSDF_NODE_ONION) return 1;
-    return -1;
-}
 
 /* Bounding sphere of a primitive in its own frame. */
 FOVSDF__PRIV void fovsdf__prim_bound(const fovsdf_node *n, fovsdf__bsph *o)
@@ -1822,6 +2055,8 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
     if (n->type == FOVSDF_NODE_MENGER) prims = 1u + (uint32_t)n->i[0];
     if (n->type == FOVSDF_NODE_MANDELBULB) prims = 2u + (uint32_t)n->i[0] / 2u;
     if (n->type == FOVSDF_NODE_TERRAIN) prims = 1u + (uint32_t)n->i[0];
+    /* extents beyond float (1e6 copies of a 1e18 period): unbounded, never a NaN centre */
+    if (!fovsdf__finite(o->r) || !fovsdf__finite3(o->c)) { o->r = -1.0f; o->c[0] = o->c[1] = o->c[2] = 0.0f; }
     o->prims = prims > 0xffffffu ? 0xffffffu : prims;
     o->count = count > 0xffffffu ? 0xffffffu : count;
     o->done = 2;
@@ -2121,6 +2356,21 @@ FOVSDF_API fov_result fovsdf_program_compact(fovsdf_program *prog, void *dst, si
     return FOV_OK;
 }
 
+FOVSDF_API fov_result fovsdf_program_check(const fovsdf_node *nodes, uint32_t count, int32_t root,
+                                           const fov_logger *lg)
+{
+    uint32_t k;
+    if (!nodes) FOVSDF__FAIL(lg, FOV_ERR_NULL, "program_check: nodes is NULL");
+    if (count == 0 || root < 0 || (uint32_t)root >= count)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "program_check: count must be > 0 and root in [0, count)");
+    if (count > 0x00ffffffu) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "program_check: more than 2^24 - 1 nodes");
+    for (k = 0; k < count; ++k) {
+        fov_result r = fovsdf__node_check(&nodes[k], k, count, lg, "program_build");
+        if (r != FOV_OK) return r;
+    }
+    return FOV_OK;
+}
+
 FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes, uint32_t count,
                                            int32_t root, void *mem, size_t bytes)
 {
@@ -2137,12 +2387,8 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
     r = fovsdf_program_size(nodes, count, root, &need);
     if (r != FOV_OK) return r;
     if (bytes < need) return FOV_ERR_TOO_SMALL;
-    for (k = 0; k < count; ++k) {
-        int ar = fovsdf__node_arity(nodes[k].type);
-        if (ar < 0) return FOV_ERR_INVALID_ARG;
-        if (ar >= 1 && (nodes[k].a < 0 || (uint32_t)nodes[k].a >= count)) return FOV_ERR_INVALID_ARG;
-        if (ar == 2 && (nodes[k].b < 0 || (uint32_t)nodes[k].b >= count)) return FOV_ERR_INVALID_ARG;
-    }
+    r = fovsdf_program_check(nodes, count, root, 0);
+    if (r != FOV_OK) return r;
     n2 = 2u * (size_t)count;
     base = (unsigned char *)mem;
     base += (16u - ((uintptr_t)base & 15u)) & 15u; /* 16-byte align */
@@ -2159,7 +2405,13 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
     stage = (uint8_t *)base;
     base += fovsdf__align(n2);
     code = (fovsdf__ins *)(void *)base;
-    for (k = 0; k < count; ++k) nd[k] = nodes[k];
+    for (k = 0; k < count; ++k) {
+        nd[k] = nodes[k];
+        if (nd[k].type == FOVSDF_NODE_PLANE) { /* a hand-made normal of any non-zero length, as the builder's */
+            float l2 = fovsdf__dot(nd[k].f, nd[k].f);
+            if (!(l2 > 0.999999f && l2 < 1.000001f)) (void)fovsdf__normalize(nd[k].f);
+        }
+    }
     r = fovsdf__bounds(nd, count, root, bs, stk, stage);
     if (r != FOV_OK) return r;
     r = fovsdf__rebalance(nd, &nn, (uint32_t)n2, bs, leaves, count, marks, stk, (uint32_t)n2);
@@ -2231,6 +2483,9 @@ FOVSDF__PRIV float fovsdf__sd_menger(const float p[3], int32_t iters)
 {
     float d = fovsdf__sd_box(p[0], p[1], p[2], 1.0f, 1.0f, 1.0f), s = 1.0f;
     int32_t m;
+    /* the crosses are at most 1/3 deep (c <= 1/3 below), so beyond 1 the box alone is the
+       result, bit for bit, and p * 3^iters cannot overflow into inf - inf */
+    if (!(d <= 1.0f)) return d;
     for (m = 0; m < iters; ++m) {
         float a[3], r[3], da, db, dc, c;
         int k;
@@ -2278,6 +2533,8 @@ FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t o
     int32_t o;
     for (o = 0; o < oct; ++o) {
         float nx;
+        /* beyond 1e30 (not finite soon after) the octaves are float noise: stop, never NaN */
+        if (!(fovsdf__absf(fx) < 1e30f && fovsdf__absf(fz) < 1e30f)) break;
         h += w * FOVSDF__SIN(fx) * FOVSDF__SIN(fz);
         nx = (0.8f * fx - 0.6f * fz) * 2.03f; /* rotate and scale each octave */
         fz = (0.6f * fx + 0.8f * fz) * 2.03f;
@@ -2344,6 +2601,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             } else {
                 d = fovsdf__prim(in, p);
             }
+            if (fovsdf__isnan(d)) d = FLT_MAX; /* last resort (no finite point reaches it in the envelope) */
             vs[vsp] = d;
             ms[vsp] = in->material;
             ++vsp;
@@ -2354,7 +2612,15 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         case FOVSDF__OP_BIN: {
             float b = vs[--vsp], a = vs[vsp - 1], k = in->f[0], h, r;
             int32_t mb = ms[vsp], ma = ms[vsp - 1], m = ma;
-            switch (in->sub) {
+            uint32_t sub = in->sub;
+            /* an infinite operand (a point far beyond float's range of a subtree) makes the
+               blend inf - inf: take the plain operator, its limit */
+            if (!fovsdf__finite(a) || !fovsdf__finite(b)) {
+                if (sub == FOVSDF_NODE_SMOOTH_UNION) sub = FOVSDF_NODE_UNION;
+                else if (sub == FOVSDF_NODE_SMOOTH_SUBTRACT) sub = FOVSDF_NODE_SUBTRACT;
+                else if (sub == FOVSDF_NODE_SMOOTH_INTERSECT) sub = FOVSDF_NODE_INTERSECT;
+            }
+            switch (sub) {
             case FOVSDF_NODE_UNION: r = a < b ? a : b; m = a < b ? ma : mb; break;
             case FOVSDF_NODE_SUBTRACT: r = a > -b ? a : -b; m = a > -b ? ma : mb; break;
             case FOVSDF_NODE_INTERSECT: r = a > b ? a : b; m = a > b ? ma : mb; break;
@@ -2397,6 +2663,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
                 for (k = 0; k < 3; ++k) {
                     if (f[k] > 0.0f) {
                         float c = FOVSDF__FLOOR(p[k] / f[k] + 0.5f);
+                        if (!fovsdf__finite(c)) c = 0.0f; /* |p| / period beyond float: no fold, never inf - inf */
                         if (in->i[k] > 0) c = fovsdf__clampf(c, -(float)in->i[k], (float)in->i[k]);
                         p[k] -= f[k] * c;
                     }
@@ -2439,7 +2706,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         q->prims_skipped += skipped;
         q->material = vsp > 0 ? ms[0] : -1;
     }
-    return vsp > 0 ? vs[0] : FLT_MAX;
+    /* finite always: +-inf (a point whose distance is beyond float) becomes +-FLT_MAX */
+    return vsp > 0 ? (fovsdf__isnan(vs[0]) ? FLT_MAX : fovsdf__clampf(vs[0], -FLT_MAX, FLT_MAX)) : FLT_MAX;
 }
 
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
@@ -2682,6 +2950,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     if (mp->method > (uint32_t)FOVSDF_METHOD_BV2018 || mp->max_steps == 0 || mp->eps < 0.0f || mp->eps_cone < 0.0f ||
         !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) || t_start < 0.0f || scene->lipschitz < 0.0f)
         return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__coord_ok(ro)) return FOV_ERR_INVALID_ARG; /* beyond 1e18: float cannot resolve it (NUMERICS) */
     if (mp->max_steps > FOVSDF_MAX_STEPS) return FOV_ERR_LIMIT;
     if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f)) return FOV_ERR_INVALID_ARG;
     if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f)) return FOV_ERR_INVALID_ARG;
@@ -2720,7 +2989,7 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
     static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f }, { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
     fovsdf_stats local;
     int i;
-    float inv;
+    float inv, dv[4];
     if (!c || !p || !n) return;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     inv = 1.0f / c->scene.lipschitz;
@@ -2730,7 +2999,16 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
         q[0] = p[0] + h * k[i][0]; q[1] = p[1] + h * k[i][1]; q[2] = p[2] + h * k[i][2];
         d = fovsdf__eval_sc(&c->scene, inv, q, 0.0f, 0, st);
         if (d >= FLT_MAX) d = 0.0f;
+        dv[i] = d;
         n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
+    }
+    if (!fovsdf__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums to 0,
+                                  so differences from the first give the same normal */
+        n[0] = n[1] = n[2] = 0.0f;
+        for (i = 1; i < 4; ++i) {
+            float d = dv[i] - dv[0];
+            n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
+        }
     }
     st->evals_normal += 4;
     if (!(fovsdf__normalize(n) > 0.0f)) { n[0] = 0.0f; n[1] = 1.0f; n[2] = 0.0f; }
@@ -2789,7 +3067,7 @@ FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t 
             if (!fovsdf__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
         return;
     }
-    if (mat == 1) { /* checkerboard on x/z, unit squares */
+    if (mat == 1) { /* checkerboard on x/z, unit squares (the clamp maps NaN to -1e6: a defined int) */
         int32_t ix = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
         int32_t iz = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
         float v = ((ix + iz) & 1) ? 0.85f : 0.30f;
@@ -2806,7 +3084,9 @@ FOVSDF_API void fovsdf_sky(const fovsdf_ctx *c, const float rd[3], float rgb[3])
     int i;
     if (!c || !rd || !rgb) return;
     s = fovsdf__clampf(rd[1], 0.0f, 1.0f);
-    for (i = 0; i < 3; ++i) rgb[i] = c->scene.sky_horizon[i] + (c->scene.sky_zenith[i] - c->scene.sky_horizon[i]) * s;
+    for (i = 0; i < 3; ++i)
+        rgb[i] = fovsdf__clampf(c->scene.sky_horizon[i] + (c->scene.sky_zenith[i] - c->scene.sky_horizon[i]) * s, 0.0f,
+                                FOVSDF__RGB_MAX);
 }
 
 /* Direction to light i from p (unit), its distance, attenuation; 0 when it cannot light p. */
@@ -2854,7 +3134,7 @@ FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const flo
         acc[1] += L->color[1] * ndl * att * sh;
         acc[2] += L->color[2] * ndl * att * sh;
     }
-    rgb[0] = alb[0] * acc[0]; rgb[1] = alb[1] * acc[1]; rgb[2] = alb[2] * acc[2];
+    for (i = 0; i < 3u; ++i) rgb[i] = fovsdf__clampf(alb[i] * acc[i], 0.0f, FOVSDF__RGB_MAX); /* NaN (0 * inf): 0 */
 }
 
 FOVSDF_API void fovsdf_shade(const fovsdf_ctx *c, const float p[3], const float n[3], const float rd[3],
@@ -2954,7 +3234,8 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     const fov_logger *lg = cfg ? &cfg->logger : 0;
     fov_result r;
     size_t need;
-    float tanh, fov, rt[3], up[3], fw[3];
+    float tanh, fov, rt[3], up[3], fw[3], rt_o[3];
+    uint32_t i;
     fov_ecc_model em;
     if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
     if (cfg) {
@@ -2972,6 +3253,14 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
     r = fovsdf_camera_basis(cam, rt, up, fw);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
+    /* positions beyond 1e18 cannot be resolved (NUMERICS): their squares overflow float */
+    if (!fovsdf__coord_ok(cam->pos))
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.pos beyond 1e18 units from the origin (float cannot resolve it)");
+    if (fovsdf__absf(cam->eye_offset) > FOVSDF__MAX_LEN)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.eye_offset beyond 1e18 units (float cannot resolve the pinhole)");
+    for (i = 0; i < 3; ++i) rt_o[i] = cam->pos[i] + rt[i] * cam->eye_offset;
+    if (!fovsdf__coord_ok(rt_o))
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: pinhole (cam.pos + eye_offset * right) beyond 1e18 units from the origin");
     r = fovsdf_memory_size(&c, cam, &need);
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
@@ -3002,8 +3291,10 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     return FOV_OK;
 }
 
-/* The ray through image point (px, py); no argument checks (internal use). */
-FOVSDF__PRIV void fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
+/* The ray through image point (px, py); no argument checks (internal use). Returns 0 when
+   the direction is not finite (an image point ~1e38 / tan(fov_y / 2) pixels off the image):
+   never for points within a few image sizes of the image. */
+FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
     float u, v;
     u = (px / (float)c->cam.width * 2.0f - 1.0f) * c->tan_half_y * c->aspect;
@@ -3011,15 +3302,20 @@ FOVSDF__PRIV void fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[
     rd[0] = c->fwd[0] + u * c->right[0] + v * c->up[0];
     rd[1] = c->fwd[1] + u * c->right[1] + v * c->up[1];
     rd[2] = c->fwd[2] + u * c->right[2] + v * c->up[2];
-    fovsdf__normalize(rd);
     ro[0] = c->origin[0]; ro[1] = c->origin[1]; ro[2] = c->origin[2];
+    if (fovsdf__normalize(rd) > 0.0f) return 1;
+    rd[0] = c->fwd[0]; rd[1] = c->fwd[1]; rd[2] = c->fwd[2]; /* a unit vector all the same */
+    return 0;
 }
 
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
     if (!c || !ro || !rd) return FOV_ERR_NULL;
-    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
-    fovsdf__ray(c, px, py, ro, rd);
+    if (!fovsdf__finite(px) || !fovsdf__finite(py))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "camera_ray: image point px or py is NaN or infinite");
+    if (!fovsdf__ray(c, px, py, ro, rd))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                     "camera_ray: image point (px, py) so far off the image that its ray direction overflows float");
     return FOV_OK;
 }
 
@@ -3031,6 +3327,8 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
     if (!c || !ro || !rd || !hit) return FOV_ERR_NULL;
     if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start)) return FOV_ERR_NOT_FINITE;
     if (t_start < 0.0f) return FOV_ERR_INVALID_ARG;
+    if (!fovsdf__coord_ok(ro))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: ro beyond 1e18 units from the origin (float cannot resolve it)");
     l = fovsdf__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     fovsdf__marcher_from_ctx(c, &m, ro);
@@ -3080,9 +3378,11 @@ FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint3
     uint32_t w = c->cam.width - o->origin_x;
     x -= o->origin_x;
     y -= o->origin_y;
-    if (o->rgb) {
+    if (o->rgb) { /* the documented range, whatever the scene's colours (NaN: 0) */
         float *q = o->rgb + (size_t)y * (o->rgb_stride ? o->rgb_stride : 3u * w) + 3u * (size_t)x;
-        q[0] = acc[0]; q[1] = acc[1]; q[2] = acc[2];
+        q[0] = fovsdf__clampf(acc[0], 0.0f, FOVSDF__RGB_MAX);
+        q[1] = fovsdf__clampf(acc[1], 0.0f, FOVSDF__RGB_MAX);
+        q[2] = fovsdf__clampf(acc[2], 0.0f, FOVSDF__RGB_MAX);
     }
     if (o->rgb8) {
         uint8_t *q = o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * w) + 3u * (size_t)x;
@@ -3198,13 +3498,20 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     fovsdf__marcher m;
     fovsdf__smp r;
     fovsdf_stats local;
+    float ro[3], rd[3];
     if (!c || !rgb) return FOV_ERR_NULL;
-    if (!fovsdf__finite(px) || !fovsdf__finite(py)) return FOV_ERR_NOT_FINITE;
+    if (!fovsdf__finite(px) || !fovsdf__finite(py))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "shade_point: image point px or py is NaN or infinite");
+    if (!fovsdf__ray(c, px, py, ro, rd))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                     "shade_point: image point (px, py) so far off the image that its ray direction overflows float");
     FOV_MEMSET(&local, 0, sizeof local);
     fovsdf__marcher_from_ctx(c, &m, c->origin);
     m.verify_start = 0; /* from the camera */
     fovsdf__sample(c, &m, px, py, 0.0f, 0, NULL, 0.0f, 0.0f, &r, &local);
-    rgb[0] = r.col[0]; rgb[1] = r.col[1]; rgb[2] = r.col[2];
+    rgb[0] = fovsdf__clampf(r.col[0], 0.0f, FOVSDF__RGB_MAX); /* as fovsdf_output.rgb */
+    rgb[1] = fovsdf__clampf(r.col[1], 0.0f, FOVSDF__RGB_MAX);
+    rgb[2] = fovsdf__clampf(r.col[2], 0.0f, FOVSDF__RGB_MAX);
     if (t) *t = r.hit ? r.t : c->t_max;
     if (material) *material = r.mat;
     if (stats) fovsdf_stats_add(stats, &local);

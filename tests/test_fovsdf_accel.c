@@ -1202,7 +1202,7 @@ static void shade_point_tests(void)
     static float img[48 * 32 * 3], dep[48 * 32];
     uint32_t m, x, y, same = 0, dsame = 0;
     fov_gaze gz = { 24.0f, 16.0f };
-    fov_result e1, e2;
+    fov_result e1 = FOV_OK, e2 = FOV_OK; /* assigned at m == 0; initialised for gcc -O2 -Wmaybe-uninitialized */
     for (m = 0; m < 2; ++m) {
         fovsdf_config c = fovsdf_config_default();
         fovsdf_ctx k;
