@@ -388,6 +388,10 @@ typedef struct fovsdf_config {
     uint32_t skip_no_shadow_start; /* SKIP: 1 = shadow rays get no head start            */
     uint32_t finish;        /* head-start methods: tracer of the sample rays from their head
                                start, fovsdf_finish                                 0: bv2018 */
+    uint32_t heuristic_start; /* IPR, SKIP, FIPR: 0 = safe head starts, certified by a cone over
+                               each cell (no sample ray starts past its first hit, see
+                               ACCELERATED METHODS); 1 = the thesis's unverified head starts
+                               (minimum filter, scaled scene, early termination)      0: safe */
     /* FIPR and CONE_FOV: which pixels trace their own sample rays (see ACCELERATED METHODS) */
     fovsdf_acuity acuity;   /* p(w); a zero field takes its default (fovsdf_acuity_default:
                                fovea 7.5 degrees of eccentricity, no outer zone) */
@@ -1295,6 +1299,7 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (fovsdf__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
     if (c.finish == 0) c.finish = FOVSDF_FINISH_BV2018;
     if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown finish");
+    if (c.heuristic_start > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: heuristic_start must be 0 (safe) or 1 (thesis)");
     if (c.ipr_levels == 0) c.ipr_levels = 3;
     if (c.ipr_levels > 6) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_levels must be 1 .. 6");
     if (c.ipr_radius < 0 || c.ipr_radius > 3) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_radius must be 0 .. 3");
@@ -1304,7 +1309,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
     if (c.method == FOVSDF_METHOD_IPR &&
-        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_TILE_SCRATCH)
+        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
+            FOVSDF_TILE_SCRATCH)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
     if (!fovsdf__finite(c.skip_scale) || !fovsdf__finite(c.skip_eps))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: skip_scale or skip_eps not finite");
@@ -3463,6 +3469,60 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
         }
 }
 
+/* A cell's certified head start (the safe variants of IPR, SKIP and FIPR): the cone of the pixel
+   rectangle [x0, x1) x [y0, y1) marched from its parent's certified t_par (0: the camera), as
+   CONE marches its cells. Every sample ray of the rectangle is empty up to t_par (its parent's
+   cone contains it) and, along the cone, up to where the cone stopped: so it may start at the
+   larger of the two. Returns -1 when the cone reached t_max (every ray of the cell misses). */
+FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher *m, float x0, float y0, float x1, float y1,
+                                      float t_par, fovsdf_stats *st)
+{
+    float a[3], k, t;
+    if (t_par < 0.0f) return -1.0f; /* the parent's cone is empty up to t_max: so is this one */
+    k = fovsdf__cell_cone(c, x0, y0, x1, y1, a);
+    t = fovsdf__cone_march(c, m, a, k, t_par * (1.0f / FOVSDF__SQRT(1.0f + k * k)), st);
+    if (t < 0.0f) return -1.0f;
+    return fovsdf__minf(fovsdf__maxf(t, t_par), m->t_max);
+}
+
+/* IPR, safe variant (heuristic_start 0): the same levels and tiles, but each cell's value is
+   the certified start of fovsdf__safe_start over its own pixels, from its parent's, in place of
+   the thin ray's hit; no minimum filter is needed (each cone contains every sample ray that
+   starts from it) and no apron: only the cells over the requested pixels are marched. */
+FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                                        uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o,
+                                        fovsdf_stats *st)
+{
+    float scratch[FOVSDF_TILE_SCRATCH];
+    float *lv[6];
+    uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width, H = c->cam.height, l, x, y;
+    size_t off = 0;
+    for (l = 0; l + 1u < L; ++l) {
+        side[l] = T >> (L - 1u - l);
+        lv[l] = scratch + off;
+        off += (size_t)side[l] * side[l];
+    }
+    FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
+    for (l = 0; l + 1u < L; ++l) {
+        uint32_t S = 1u << (L - 1u - l), u, v;
+        /* the cells over the requested pixels (their parents lie over them too) */
+        for (v = (ry0 - ty) / S; v <= (ry1 - 1u - ty) / S; ++v)
+            for (u = (rx0 - tx) / S; u <= (rx1 - 1u - tx) / S; ++u) {
+                uint32_t x0 = tx + u * S, y0 = ty + v * S;
+                float tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
+                lv[l][(size_t)v * side[l] + u] =
+                    fovsdf__safe_start(c, m, (float)x0, (float)y0, (float)(x0 + S < W ? x0 + S : W),
+                                       (float)(y0 + S < H ? y0 + S : H), tp, st);
+            }
+    }
+    for (y = ry0; y < ry1; ++y)
+        for (x = rx0; x < rx1; ++x) {
+            float t0 = L > 1u ? lv[L - 2u][(size_t)((y - ty) / 2u) * side[L - 2u] + (x - tx) / 2u] : 0.0f;
+            if (t0 < 0.0f) fovsdf__pixel(c, m, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
+            else fovsdf__pixel(c, m, x, y, o, st, t0, 0, NULL, 0.0f, 0.0f);
+        }
+}
+
 /* ---- Skipping Spheres, SKIP (thesis ch. 6, notes seed000 section 1.6) -----------------------
    Pass 1, per grid-aligned cell of skip_block x skip_block pixels: one ray through the cell's
    centre marches the scene scaled by s (Scale(p) = f(p/s) s per primitive, subtracted operands
@@ -3487,18 +3547,29 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
                                     uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
+    uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
+    uint32_t by1 = by0 + B < c->cam.height ? by0 + B : c->cam.height;
     float ro[3], rd[3], sh[FOVSDF_MAX_LIGHTS], t_low, s_eff = c->cfg.skip_scale, tol;
     fovsdf__marcher ml = *m;
     fovsdf_hit h;
     uint64_t e0 = st->evals, es0 = st->evals_shadow;
     int has_sh = 0;
+    if (!c->cfg.heuristic_start) { /* safe: the block's cone, its pixels start where it stopped */
+        float t0 = fovsdf__safe_start(c, m, (float)bx0, (float)by0, (float)bx1, (float)by1, 0.0f, st);
+        for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
+            for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
+                fovsdf__pixel(c, m, x, y, o, st, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f, 0.0f);
+        return;
+    }
     if (c->cam_dist < 0.0f) s_eff = 1.0f / s_eff; /* camera inside: deflate */
     ml.method = FOVSDF_METHOD_CLASSIC;
     ml.verify_start = 0;
     ml.eps = c->cfg.skip_eps;
     ml.eps_cone = 0.0f;
     ml.inflate = s_eff;
-    fovsdf__ray(c, ((float)cx + 0.5f) * (float)B, ((float)cy + 0.5f) * (float)B, ro, rd);
+    /* through the centre of the block clipped to the image (a 1x1 image, or a border block of
+       an image whose sides are not multiples of skip_block, has its ray inside the image) */
+    fovsdf__ray(c, 0.5f * (float)(bx0 + bx1), 0.5f * (float)(by0 + by1), ro, rd);
     fovsdf__march(&ml, ro, rd, 0.0f, &h, 0, st);
     t_low = h.kind == FOVSDF_MISS ? c->t_max : h.t;
     if (h.kind != FOVSDF_MISS && c->cfg.shading == FOVSDF_SHADE_FULL && !c->cfg.skip_no_shadow_start) {
@@ -3519,8 +3590,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     st->evals_lowres += st->evals - e0;
     st->evals_shadow = es0; /* the low-resolution shadow rays count as the low-resolution pass */
     tol = fovsdf__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
-    for (y = (cy * B > ry0 ? cy * B : ry0); y < (cy * B + B < ry1 ? cy * B + B : ry1); ++y)
-        for (x = (cx * B > rx0 ? cx * B : rx0); x < (cx * B + B < rx1 ? cx * B + B : rx1); ++x)
+    for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
+        for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
             fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
 }
 
@@ -3576,10 +3647,11 @@ typedef struct fovsdf__fovt {
     const fovsdf__marcher *mp; /* mid rays and sample rays */
     fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
     float *l0;                 /* FIPR level 0: t, or -1 before it is traced */
+    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown */
     int32_t mu0, mv0, lu0, lv0, r;
     uint32_t ms, ls;
     float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
-    int cone;
+    int cone, safe;            /* CONE_FOV; FIPR with heuristic_start 0 */
     fovsdf_stats *st;
 } fovsdf__fovt;
 
@@ -3608,6 +3680,32 @@ FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
     return *q;
 }
 
+/* Safe FIPR: the certified start of level-0 cell (i, j) (4x4 pixels, from the camera) and of
+   mid cell (u, v) (2x2 pixels, from its level-0 parent's), in tc; -1 when proven empty. The
+   cells are not clipped to the image (apron cells may lie outside it). */
+FOVSDF__PRIV float fovsdf__fov_l0s(fovsdf__fovt *f, int32_t i, int32_t j)
+{
+    float *q;
+    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls && j < f->lv0 + (int32_t)f->ls);
+    q = f->l0s + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
+    if (*q < -1.5f)
+        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4), (float)(4 * j + 4), 0.0f,
+                                f->st);
+    return *q;
+}
+FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
+{
+    fovsdf__mid *m;
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms && v < f->mv0 + (int32_t)f->ms);
+    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
+    if (m->tc < -1.5f) {
+        float tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2), (float)(2 * v + 2), tp,
+                                   f->st);
+    }
+    return m->tc;
+}
+
 /* Mid cell (u, v): traced on first use, shaded when `shade`. */
 FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
 {
@@ -3625,6 +3723,8 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
         uint64_t e0;
         if (f->cone) {
             t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
+        } else if (f->safe) {
+            t0 = fovsdf__fov_tc(f, u, v); /* -1: proven empty, below */
         } else {
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
             t0 = c->t_max;
@@ -3632,10 +3732,15 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
                 for (a = -f->r; a <= f->r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
         }
         e0 = f->st->evals; /* after the level-0 rays, which count themselves */
-        if (f->cone && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
+        if ((f->cone || f->safe) && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
             h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
         } else {
             fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
+        }
+        /* the interpolated pixels report this ray's depth: a hit must lie in [0, t_max] (a
+           tracer's hit beyond t_max, or a non-finite one, is a miss) */
+        if (h.kind != FOVSDF_MISS && !(h.t >= 0.0f && h.t <= c->t_max)) {
+            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
         }
         m->th = h.kind == FOVSDF_MISS ? c->t_max : h.t;
         m->dist = h.dist;
@@ -3711,13 +3816,14 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                                    const fovsdf_output *o, fovsdf_stats *st)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
-    float l0[FOVSDF_FOV_CELLS];
+    float l0[2 * FOVSDF_FOV_CELLS];
     fovsdf__fovt f;
     uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh;
     int32_t am;
     int due;
-    f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.st = st;
+    f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
     f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
+    f.safe = !f.cone && !c->cfg.heuristic_start;
     f.r = f.cone ? 1 : (c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius);
     T = f.cone ? c->cfg.cone_tile : c->cfg.ipr_tile;
     /* step 4's refresh: whole tiles take turns (a finer pattern would still need every mid cell
@@ -3731,7 +3837,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS && (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
     for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
     if (!f.cone)
-        for (i = 0; i < f.ls * f.ls; ++i) l0[i] = -1.0f;
+        for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
     if (f.cone) {
         /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
@@ -3760,8 +3866,8 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
             if (in) {
                 float t0;
                 int miss = 0;
-                if (f.cone) {
-                    t0 = mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc;
+                if (f.cone || f.safe) {
+                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc : fovsdf__fov_tc(&f, u, v);
                     miss = t0 < 0.0f;
                     if (miss) t0 = 0.0f;
                 } else {
@@ -3807,20 +3913,24 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         fovsdf__marcher mp = m;
         uint32_t B = c->cfg.skip_block, cx, cy;
         mp.method = c->cfg.finish - 1u;
+        mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
         for (cy = y0 / B; cy * B < y1; ++cy)
             for (cx = x0 / B; cx * B < x1; ++cx) fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
         mp.method = c->cfg.finish - 1u; /* every level traces with the finishing tracer */
+        mp.verify_start = (int)c->cfg.heuristic_start;
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
-                fovsdf__ipr_tile(c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
-                                 ty + T < y1 ? ty + T : y1, o, &local);
+                (c->cfg.heuristic_start ? fovsdf__ipr_tile : fovsdf__ipr_tile_safe)(
+                    c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
+                    ty + T < y1 ? ty + T : y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx, ty;
         mp.method = c->cfg.finish - 1u;
+        if (c->cfg.method == FOVSDF_METHOD_FIPR) mp.verify_start = (int)c->cfg.heuristic_start;
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,

@@ -571,6 +571,7 @@ static void skip_sign_aware(void)
     sc.user = &u;
     fovsdf_camera_init(&cam, 16, 16);
     c.method = FOVSDF_METHOD_SKIP;
+    c.heuristic_start = 1; /* the thesis's variant scales the scene; the safe one does not */
     c.skip_scale = 1.05f;
     /* camera outside the sphere: the low-resolution pass inflates */
     u.min_infl = 1e9f; u.max_infl = 0.0f; u.r = 1.0f;
@@ -613,6 +614,7 @@ static void skip_hole_shrinks(void)
     cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 0.0f; cam.target[2] = 1.0f;
     cam.fov_y_deg = 90.0f;
     c.method = FOVSDF_METHOD_SKIP;
+    c.heuristic_start = 1; /* the thesis's scaled scene (the safe variant has no scaling) */
     c.skip_scale = 1.05f;
     c.skip_eps = 0.001f;
     fovsdf_init(&k, &c, &sc, &cam, gz, NULL, 0);
@@ -667,6 +669,7 @@ static void skip_tests(void)
         fov_gaze gz = { 48.0f, 27.0f };
         mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, 96, 54, &bi);
         a.method = FOVSDF_METHOD_SKIP;
+        a.heuristic_start = 1; /* shadow head starts are the thesis variant's */
         bcfg = a;
         bcfg.skip_no_shadow_start = 1;
         fovsdf_init(&ka, &a, &bi.scene, &bi.camera, gz, NULL, 0);
