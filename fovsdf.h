@@ -53,6 +53,39 @@ ACCELERATED METHODS
    into rows or tiles. Working memory: none beyond a 40-cell stack (about 1 KiB) per call;
    fovsdf_memory_size stays 0. Distance estimators that can overestimate (Mandelbulb, smooth
    operators, large repetition with overlapping copies) lose the guarantee, not the image.
+   SAFE AND THESIS HEAD STARTS (heuristic_start). IPR, SKIP and FIPR default to a safe
+   variant (heuristic_start 0): the start a cell hands its pixels is certified by a cone, as in
+   CONE. The cone from the pinhole that contains every sample ray of the cell (its pixel
+   rectangle, so every spp offset) marches with the free-cone step from its parent cell's
+   certified start (the camera for the top level); the pixels start at the larger of the
+   parent's start and where the cone stopped. Guarantee, and where it ends: CONE's. For a
+   distance function that never overestimates (and within the float envelope of NUMERICS) no
+   sample ray starts past its first hit, and a cell whose cone reaches t_max is empty (its pixels
+   are not marched; start = t_max). tests/test_fovsdf_heads.c checks it on 100 random stress
+   scenes: thin shells 0.002 thick, needles of radius 0.002, dust of tiny spheres, thin pillars
+   in a room with the camera inside, a grazing floor; 1 and 4 spp; several tile and block sizes.
+   The reference is a double-precision SDF of the test's own. 0 of 1.2 million sample rays start
+   past their first hit. With heuristic_start 1 the same rays give IPR 0.38 %, SKIP 16.7 % and
+   FIPR 0.27 %. A certified start needs no start check (the thesis variant spends one evaluation
+   per sample ray on it). The thesis variant (heuristic_start 1) is the one each method's
+   paragraph below describes, unchanged: the same images as 0.2.1 (tested). What the safe
+   variants cost, and what the thesis variant risks, is measured by bench/bench_heads.c. The
+   run covers the six built-in scenes plus thin shells and needles, at 320x180 and 1 spp.
+   - Cost. Safe IPR and SKIP need fewer evaluations than the thesis's: IPR 6.1-11.0 per pixel
+     against 10.6-16.6, SKIP 6.2-12.1 against 11.5-25.3. Their time is 0.68-0.85 (IPR) and
+     0.47-0.92 (SKIP) of the thesis variant's. The cones stop where the coarse rays would
+     crawl along silhouettes, and no start needs checking. Safe FIPR needs 4-14 % more
+     evaluations (5.0-9.7 per pixel against 4.4-8.4), because it marches cones besides the
+     level-0 rays; its time is about the same (0.88-1.21 on a loaded machine).
+   - Risk. With heuristic_start 1, pixels start past their first hit: IPR 0-1552 per scene
+     (2.7 % on thin), FIPR up to 200 traced pixels, and SKIP 12-39 % of the pixels. SKIP's
+     start check restarts most of those from the camera, at a full march each; the rest skip
+     a surface and reach the image. Safe: 0 everywhere.
+   - Quality. Safe IPR and SKIP come within 0.1 dB of CLASSIC's PSNR against the ground truth
+     on every scene, and safe FIPR within 0.25 dB of the thesis FIPR.
+     The thesis variant's differs from it by -4.4 dB (SKIP on thin shells) to +3.9 dB (IPR on
+     needles). The gain there is a fault: missing the sub-pixel needles, which the default
+     0.25-pixel threshold widens, looks more like the 0.01-pixel ground truth.
    IPR (thesis ch. 5): ipr_levels levels (default 3: 1/16, 1/4 and all of the pixels); each
    level traces the rays through its cells' centres from the minimum t of the parent cell and
    its neighbours within ipr_radius (default 1: the 3x3 filter, applied before each level;
@@ -61,6 +94,10 @@ ACCELERATED METHODS
    is silent: the child of cell (u, v) is (u/2, v/2); no extra safety margin; nearest parent;
    every level uses cfg.finish. The filter is a heuristic, no guarantee: sub-pixel features the
    coarse rays miss can be skipped (measured on the thin scene: 2 % of the pixels at 320x180).
+   Safe variant (the default): the same levels and tiles; each cell's value is its certified
+   start (above) instead of its centre ray's hit. No filter is needed (each cone contains all
+   of its cell's rays), so ipr_radius and ipr_no_filter apply to the thesis variant only. No
+   apron either: only the cells over the requested pixels are marched.
    Working memory per tile of ipr_tile pixels (default 32): the level arrays with aprons,
    (8 + 2*2)^2 + (16 + 2*1)^2 = 468 floats = 1872 bytes for the defaults, on the stack, at most
    FOVSDF_TILE_SCRATCH floats (default 1024; a config that needs more is FOV_ERR_LIMIT). The
@@ -73,7 +110,13 @@ ACCELERATED METHODS
    cell's t (see fovsdf__skip_cell for the choices). A heuristic without filter: a cell whose
    centre ray hits something far can start its edge pixels past a nearer object. Working
    memory: one cell (a few floats per light); no apron. Scaling needs a dist_ex callback that
-   honours fovsdf_query.inflate (the built-in programs do).
+   honours fovsdf_query.inflate (the built-in programs do). The low-resolution ray goes through
+   the centre of the block clipped to the image (a 1x1 image, or a border block). Safe variant
+   (the default): one certified cone per block, from the camera. It has no scaled scene, no
+   early termination and no shadow head starts (skip_scale, skip_eps and skip_no_shadow_start
+   apply to the thesis variant). The cone needs neither heuristic, since scaling would only
+   stop it earlier. A shadow head start has no certificate: a pixel's shadow ray can meet a
+   needle that the cell's ray passed.
    FIPR (thesis ch. 5.4) and CONE_FOV (beyond the thesis): foveated head starts. A pixel is
    traced (all its sample rays, from IPR's or CONE's head start) when it lies in the fovea
    (acuity.fovea_deg of eccentricity, default 7.5), or, with probability p(w) = A exp(-rate w)
@@ -87,11 +130,16 @@ ACCELERATED METHODS
    `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels) and
    CONE_FOV is CONE bit for bit when the image's sides are multiples of the tile (CONE_FOV keeps
    its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
-   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
+   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The pipeline and the choices are at fovsdf__fov_tile.
+   Safe FIPR (the default): the mid ray and the traced pixels of a 2x2 cell start from the
+   cell's certified start (its cone from its 4x4 parent's), so no traced ray and no mid ray
+   starts past its first hit. Level 0 still traces thin rays from the camera for the edge map.
+   FIPR and CONE_FOV: an interpolated pixel reports its mid ray's depth, always in [0, t_max]
+   (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss). The thesis's
    mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by default: its
    own study found it made the foveation more visible.
-   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and as
-   many floats, on the stack (11.4 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
+   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and
+   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
    cone_tile 32 (CONE_FOV); configs that need more are FOV_ERR_LIMIT. acuity.fovea_deg 0 means
    the default 7.5: for no fovea at all pass a tiny angle such as 1e-3.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
@@ -126,7 +174,7 @@ MEMORY
    (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
-   CONE_FOV add FOVSDF_FOV_CELLS * 36 bytes (11.4 KiB). Lower the two macros for small
+   CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB). Lower the two macros for small
    stacks (configs that need more are then FOV_ERR_LIMIT).
 
 ERRORS AND LOGGING
@@ -1143,7 +1191,7 @@ FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r
     return n;
 }
 #ifndef FOVSDF_FOV_CELLS /* cells per FIPR / CONE_FOV tile: mid level (32 bytes each) and
-                            FIPR's level 0 (4 bytes each), on the stack */
+                            FIPR's level 0 (8 bytes each: hit, certified start), on the stack */
 #define FOVSDF_FOV_CELLS 324
 #endif
 /* FIPR / CONE_FOV: the larger of a tile's two arrays, apron included: the mid level (at least
@@ -3409,7 +3457,8 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
    from that filtered value. A miss is stored as t_max (explicit, so the filter takes the
    neighbours' hits). The filter is a heuristic: unlike the cone, a child may start past a
    surface the coarser rays did not see. Tiles are grid aligned with an apron of cells around
-   them, so results do not depend on how the image is split. */
+   them, so results do not depend on how the image is split. This is the thesis variant
+   (heuristic_start 1); the default is fovsdf__ipr_tile_safe. */
 FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, int32_t v, int32_t r)
 {
     float t = lv[(size_t)v * side + (size_t)u];
@@ -3542,7 +3591,8 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
    one evaluation verifies each head start and a ray whose start lies inside a surface (a
    grazing floor seen by the cell's lower rows) starts over from the camera.
    Like IPR this is a heuristic: neither scaling nor early termination guarantees that small
-   objects are seen. */
+   objects are seen. That is the thesis variant (heuristic_start 1); the default marches one
+   certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
 FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, uint32_t cy, uint32_t rx0,
                                     uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
@@ -3615,7 +3665,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
    4. rendering. The mid level is one ray per 2x2-pixel cell through the cell's centre. FIPR:
       it starts from the minimum of level 0 over the parent and its neighbours within
       ipr_radius (the 3x3 min filter), and pixels in the mask march every sample ray from the
-      same filter over the mid level. CONE_FOV: the mid ray and the pixels' sample rays start
+      same filter over the mid level (the thesis variant, heuristic_start 1); by default both
+      start from the 2x2 cell's certified start instead (fovsdf__fov_tc). CONE_FOV: the mid ray and the pixels' sample rays start
       from their 2x2 cell's cone (the guarantee of CONE holds for every traced ray). Pixels
       outside the mask take the bilinear interpolation of the shaded mid-level rays around
       them (weights 3/4, 1/4 per axis) and are refreshed every refresh-th frame: the tiles
