@@ -11,8 +11,9 @@
       S - tol. The same scenes with heuristic_start 1 must show violations (the test can fail).
    2. The thesis variant (heuristic_start 1) renders the built-in scenes exactly as before
       (hashes of the images, depths and starts recorded from the code before the safe variant:
-      the same loop built against fovsdf.h of commit dcdc067, where it was the only variant;
-      gcc -O2 and -O1 with sanitizers give the same hashes, FOV_NO_LIBM its own).
+      tests/heads_hashes.c, the same loop, built against fovsdf.h of commit dcdc067, where it
+      was the only variant; gcc -O2 and -O1 with sanitizers give the same hashes, FOV_NO_LIBM
+      its own).
    3. Regressions: a 1x1 image sends SKIP's low-resolution ray through its pixel (it went
       outside the image); FIPR / CONE_FOV interpolated pixels never report a depth outside
       [0, t_max] or a non-finite one (a tracer's hit beyond t_max, and a Menger node of
