@@ -127,21 +127,24 @@ ACCELERATED METHODS
    not refreshed are not written, so keep the previous frame in the buffers). The mask output
    says which pixel was made how. Super-sampling (spp) applies to traced pixels only: the
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
-   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels) and
+   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels, the
+   same heuristic_start) and
    CONE_FOV is CONE bit for bit when the image's sides are multiples of the tile (CONE_FOV keeps
    its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
-   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The pipeline and the choices are at fovsdf__fov_tile.
+   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The
+   pipeline and the choices are at fovsdf__fov_tile.
    Safe FIPR (the default): the mid ray and the traced pixels of a 2x2 cell start from the
    cell's certified start (its cone from its 4x4 parent's), so no traced ray and no mid ray
    starts past its first hit. Level 0 still traces thin rays from the camera for the edge map.
    FIPR and CONE_FOV: an interpolated pixel reports its mid ray's depth, always in [0, t_max]
-   (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss). The thesis's
-   mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by default: its
-   own study found it made the foveation more visible.
+   (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss).
+   The thesis's mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by
+   default: its own study found it made the foveation more visible.
    Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and
-   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
-   cone_tile 32 (CONE_FOV); configs that need more are FOV_ERR_LIMIT. acuity.fovea_deg 0 means
-   the default 7.5: for no fovea at all pass a tiny angle such as 1e-3.
+   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough
+   for ipr_tile 32 with radius 1 (FIPR) and cone_tile 32 (CONE_FOV); configs that need more
+   are FOV_ERR_LIMIT. acuity.fovea_deg 0 means the default 7.5: for no fovea at all pass a
+   tiny angle such as 1e-3.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -3666,8 +3669,9 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
       it starts from the minimum of level 0 over the parent and its neighbours within
       ipr_radius (the 3x3 min filter), and pixels in the mask march every sample ray from the
       same filter over the mid level (the thesis variant, heuristic_start 1); by default both
-      start from the 2x2 cell's certified start instead (fovsdf__fov_tc). CONE_FOV: the mid ray and the pixels' sample rays start
-      from their 2x2 cell's cone (the guarantee of CONE holds for every traced ray). Pixels
+      start from the 2x2 cell's certified start instead (fovsdf__fov_tc). CONE_FOV: the mid
+      ray and the pixels' sample rays start from their 2x2 cell's cone (the guarantee of CONE
+      holds for every traced ray). Pixels
       outside the mask take the bilinear interpolation of the shaded mid-level rays around
       them (weights 3/4, 1/4 per axis) and are refreshed every refresh-th frame: the tiles
       take turns (refresh 2: a checkerboard of tiles; refresh 4: tile (i, j) refreshes when
