@@ -128,9 +128,8 @@ ACCELERATED METHODS
    says which pixel was made how. Super-sampling (spp) applies to traced pixels only: the
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
    `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels, the
-   same heuristic_start) and
-   CONE_FOV is CONE bit for bit when the image's sides are multiples of the tile (CONE_FOV keeps
-   its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
+   same heuristic_start) and CONE_FOV is CONE bit for bit when the image's sides are multiples
+   of the tile (CONE_FOV keeps its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
    levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The
    pipeline and the choices are at fovsdf__fov_tile.
    Safe FIPR (the default): the mid ray and the traced pixels of a 2x2 cell start from the
