@@ -793,16 +793,17 @@ static void fov_equal_unfoveated(void)
     uint32_t ids[2] = { FOVSDF_SCENE_PRIMITIVES, FOVSDF_SCENE_TEMPLE }, i, m;
     fov_gaze gz = { 30.0f, 20.0f };
     for (i = 0; i < 2; ++i)
-        for (m = 0; m < 2; ++m) {
+        for (m = 0; m < 3; ++m) { /* m 2: FIPR and IPR with the thesis's head starts */
             fovsdf_builtin bi;
             void *mem = load_builtin(ids[i], 96, 64, &bi);
             fovsdf_config c = fovsdf_config_default(), d;
             uint32_t p, all1 = 1;
             c.spp = 4;
             c.shading = FOVSDF_SHADE_NO_SHADOWS;
-            c.method = m ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
+            c.heuristic_start = m == 2u;
+            c.method = m == 1u ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
             d = c;
-            d.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+            d.method = m == 1u ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
             d.acuity.fovea_deg = 180.0f;
             memset(&a, 0, sizeof a); memset(&b, 0, sizeof b);
             render96(&bi, &c, gz, &a, NULL);
@@ -810,7 +811,8 @@ static void fov_equal_unfoveated(void)
             for (p = 0; p < 96u * 64u; ++p) all1 &= b.mask[p] == 1;
             check(all1 && memcmp(a.rgb, b.rgb, sizeof a.rgb) == 0 && memcmp(a.depth, b.depth, sizeof a.depth) == 0 &&
                       memcmp(a.start, b.start, sizeof a.start) == 0,
-                  N(m ? "cone_fov_full_fovea_is_cone_%s" : "fipr_full_fovea_is_ipr_%s", bi.name), "images differ (all mask 1: %u)", all1);
+                  N(m == 1u ? "cone_fov_full_fovea_is_cone_%s" : m ? "fipr_thesis_full_fovea_is_ipr_%s" : "fipr_full_fovea_is_ipr_%s",
+                    bi.name), "images differ (all mask 1: %u)", all1);
             free(mem);
         }
 }
