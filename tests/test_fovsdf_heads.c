@@ -260,7 +260,8 @@ static void check_starts(const scene_t *s, const fovsdf_ctx *k, tally *ty, int c
                 float ro[3], rd[3];
                 uint32_t u = x / 2u, v = y / 2u;
                 fovsdf_camera_ray(k, (float)(u * 2u + 1u), (float)(v * 2u + 1u), ro, rd);
-                o3[0] = ro[0]; o3[1] = ro[1]; o3[2] = ro[2]; d3[0] = rd[0]; d3[1] = rd[1]; d3[2] = rd[2];
+                o3[0] = (double)ro[0]; o3[1] = (double)ro[1]; o3[2] = (double)ro[2];
+                d3[0] = (double)rd[0]; d3[1] = (double)rd[1]; d3[2] = (double)rd[2];
                 if (k->cfg.method == FOVSDF_METHOD_FIPR && !k->cfg.heuristic_start && (x & 1u) == 0 && (y & 1u) == 0) {
                     fovsdf__marcher mm;
                     fovsdf_stats ss;
@@ -287,7 +288,8 @@ static void check_starts(const scene_t *s, const fovsdf_ctx *k, tally *ty, int c
                 float ro[3], rd[3];
                 sample_offset(k->cfg.spp, smp, &ox, &oy);
                 fovsdf_camera_ray(k, (float)((double)x + 0.5 + ox), (float)((double)y + 0.5 + oy), ro, rd);
-                o3[0] = ro[0]; o3[1] = ro[1]; o3[2] = ro[2]; d3[0] = rd[0]; d3[1] = rd[1]; d3[2] = rd[2];
+                o3[0] = (double)ro[0]; o3[1] = (double)ro[1]; o3[2] = (double)ro[2];
+                d3[0] = (double)rd[0]; d3[1] = (double)rd[1]; d3[2] = (double)rd[2];
                 ty->rays++;
                 tol = 1e-5 * (len3(o3[0], o3[1], o3[2]) + S);
                 if (S <= tol) continue;
