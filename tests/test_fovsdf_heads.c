@@ -480,8 +480,11 @@ static void skip_1x1(void)
     fov_gaze gz = { 0.5f, 0.5f };
     float start[2], depth[1];
     int v;
+    int32_t root;
+    fov_result rb;
     fovsdf_builder_init(&b, nodes, 4);
-    fovsdf_program_build(&prog, nodes, b.count, fovsdf_sphere(&b, 1.0f), mem, sizeof mem);
+    root = fovsdf_sphere(&b, 1.0f); /* before b.count is read */
+    rb = fovsdf_program_build(&prog, nodes, b.count, root, mem, sizeof mem);
     fovsdf_scene_init(&sc);
     fovsdf_scene_set_program(&sc, &prog);
     fovsdf_camera_init(&cam, 1, 1);
@@ -499,7 +502,7 @@ static void skip_1x1(void)
         fovsdf_render_rows(&k, 0, 1, &o, NULL);
         /* thesis: the low-resolution ray is the pixel's own, stopped at 4 - skip_eps; safe: the
            pixel's cone (a 60-degree pixel) stops earlier, but after the camera */
-        check(r == FOV_OK && start[0] > (v ? 3.5f : 0.5f) && start[0] <= 4.0f && fabs((double)depth[0] - 4.0) < 1e-3,
+        check(rb == FOV_OK && r == FOV_OK && start[0] > (v ? 3.5f : 0.5f) && start[0] <= 4.0f && fabs((double)depth[0] - 4.0) < 1e-3,
               v ? "skip_thesis_1x1_low_res_ray_in_image" : "skip_safe_1x1_head_start",
               "start %.6g (want in (%.1f, 4]: the pixel's own ray meets the sphere at 4), depth %.6g", (double)start[0],
               v ? 3.5 : 0.5, (double)depth[0]);
