@@ -53,6 +53,39 @@ ACCELERATED METHODS
    into rows or tiles. Working memory: none beyond a 40-cell stack (about 1 KiB) per call;
    fovsdf_memory_size stays 0. Distance estimators that can overestimate (Mandelbulb, smooth
    operators, large repetition with overlapping copies) lose the guarantee, not the image.
+   SAFE AND THESIS HEAD STARTS (heuristic_start). IPR, SKIP and FIPR default to a safe
+   variant (heuristic_start 0): the start a cell hands its pixels is certified by a cone, as in
+   CONE. The cone from the pinhole that contains every sample ray of the cell (its pixel
+   rectangle, so every spp offset) marches with the free-cone step from its parent cell's
+   certified start (the camera for the top level); the pixels start at the larger of the
+   parent's start and where the cone stopped. Guarantee, and where it ends: CONE's. For a
+   distance function that never overestimates (and within the float envelope of NUMERICS) no
+   sample ray starts past its first hit, and a cell whose cone reaches t_max is empty (its pixels
+   are not marched; start = t_max). tests/test_fovsdf_heads.c checks it on 100 random stress
+   scenes: thin shells 0.002 thick, needles of radius 0.002, dust of tiny spheres, thin pillars
+   in a room with the camera inside, a grazing floor; 1 and 4 spp; several tile and block sizes.
+   The reference is a double-precision SDF of the test's own. 0 of 1.2 million sample rays start
+   past their first hit. With heuristic_start 1 the same rays give IPR 0.38 %, SKIP 16.7 % and
+   FIPR 0.27 %. A certified start needs no start check (the thesis variant spends one evaluation
+   per sample ray on it). The thesis variant (heuristic_start 1) is the one each method's
+   paragraph below describes, unchanged: the same images as 0.2.1 (tested). What the safe
+   variants cost, and what the thesis variant risks, is measured by bench/bench_heads.c. The
+   run covers the six built-in scenes plus thin shells and needles, at 320x180 and 1 spp.
+   - Cost. Safe IPR and SKIP need fewer evaluations than the thesis's: IPR 6.1-11.0 per pixel
+     against 10.6-16.6, SKIP 6.2-12.1 against 11.5-25.3. Their time is 0.68-0.85 (IPR) and
+     0.47-0.92 (SKIP) of the thesis variant's. The cones stop where the coarse rays would
+     crawl along silhouettes, and no start needs checking. Safe FIPR needs 4-14 % more
+     evaluations (5.0-9.7 per pixel against 4.4-8.4), because it marches cones besides the
+     level-0 rays; its time is about the same (0.88-1.21 on a loaded machine).
+   - Risk. With heuristic_start 1, pixels start past their first hit: IPR 0-1552 per scene
+     (2.7 % on thin), FIPR up to 200 traced pixels, and SKIP 12-39 % of the pixels. SKIP's
+     start check restarts most of those from the camera, at a full march each; the rest skip
+     a surface and reach the image. Safe: 0 everywhere.
+   - Quality. Safe IPR and SKIP come within 0.1 dB of CLASSIC's PSNR against the ground truth
+     on every scene, and safe FIPR within 0.25 dB of the thesis FIPR.
+     The thesis variant's differs from it by -4.4 dB (SKIP on thin shells) to +3.9 dB (IPR on
+     needles). The gain there is a fault: missing the sub-pixel needles, which the default
+     0.25-pixel threshold widens, looks more like the 0.01-pixel ground truth.
    IPR (thesis ch. 5): ipr_levels levels (default 3: 1/16, 1/4 and all of the pixels); each
    level traces the rays through its cells' centres from the minimum t of the parent cell and
    its neighbours within ipr_radius (default 1: the 3x3 filter, applied before each level;
@@ -61,6 +94,10 @@ ACCELERATED METHODS
    is silent: the child of cell (u, v) is (u/2, v/2); no extra safety margin; nearest parent;
    every level uses cfg.finish. The filter is a heuristic, no guarantee: sub-pixel features the
    coarse rays miss can be skipped (measured on the thin scene: 2 % of the pixels at 320x180).
+   Safe variant (the default): the same levels and tiles; each cell's value is its certified
+   start (above) instead of its centre ray's hit. No filter is needed (each cone contains all
+   of its cell's rays), so ipr_radius and ipr_no_filter apply to the thesis variant only. No
+   apron either: only the cells over the requested pixels are marched.
    Working memory per tile of ipr_tile pixels (default 32): the level arrays with aprons,
    (8 + 2*2)^2 + (16 + 2*1)^2 = 468 floats = 1872 bytes for the defaults, on the stack, at most
    FOVSDF_TILE_SCRATCH floats (default 1024; a config that needs more is FOV_ERR_LIMIT). The
@@ -73,7 +110,13 @@ ACCELERATED METHODS
    cell's t (see fovsdf__skip_cell for the choices). A heuristic without filter: a cell whose
    centre ray hits something far can start its edge pixels past a nearer object. Working
    memory: one cell (a few floats per light); no apron. Scaling needs a dist_ex callback that
-   honours fovsdf_query.inflate (the built-in programs do).
+   honours fovsdf_query.inflate (the built-in programs do). The low-resolution ray goes through
+   the centre of the block clipped to the image (a 1x1 image, or a border block). Safe variant
+   (the default): one certified cone per block, from the camera. It has no scaled scene, no
+   early termination and no shadow head starts (skip_scale, skip_eps and skip_no_shadow_start
+   apply to the thesis variant). The cone needs neither heuristic, since scaling would only
+   stop it earlier. A shadow head start has no certificate: a pixel's shadow ray can meet a
+   needle that the cell's ray passed.
    FIPR (thesis ch. 5.4) and CONE_FOV (beyond the thesis): foveated head starts. A pixel is
    traced (all its sample rays, from IPR's or CONE's head start) when it lies in the fovea
    (acuity.fovea_deg of eccentricity, default 7.5), or, with probability p(w) = A exp(-rate w)
@@ -84,16 +127,23 @@ ACCELERATED METHODS
    not refreshed are not written, so keep the previous frame in the buffers). The mask output
    says which pixel was made how. Super-sampling (spp) applies to traced pixels only: the
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
-   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels) and
-   CONE_FOV is CONE bit for bit when the image's sides are multiples of the tile (CONE_FOV keeps
-   its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
-   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The pipeline and the choices are at fovsdf__fov_tile. The thesis's
-   mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by default: its
-   own study found it made the foveation more visible.
-   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and as
-   many floats, on the stack (11.4 KiB), enough for ipr_tile 32 with radius 1 (FIPR) and
-   cone_tile 32 (CONE_FOV); configs that need more are FOV_ERR_LIMIT. acuity.fovea_deg 0 means
-   the default 7.5: for no fovea at all pass a tiny angle such as 1e-3.
+   `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels, the
+   same heuristic_start) and CONE_FOV is CONE bit for bit when the image's sides are multiples
+   of the tile (CONE_FOV keeps its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
+   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The
+   pipeline and the choices are at fovsdf__fov_tile.
+   Safe FIPR (the default): the mid ray and the traced pixels of a 2x2 cell start from the
+   cell's certified start (its cone from its 4x4 parent's), so no traced ray and no mid ray
+   starts past its first hit. Level 0 still traces thin rays from the camera for the edge map.
+   FIPR and CONE_FOV: an interpolated pixel reports its mid ray's depth, always in [0, t_max]
+   (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss).
+   The thesis's mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by
+   default: its own study found it made the foveation more visible.
+   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and
+   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough
+   for ipr_tile 32 with radius 1 (FIPR) and cone_tile 32 (CONE_FOV); configs that need more
+   are FOV_ERR_LIMIT. acuity.fovea_deg 0 means the default 7.5: for no fovea at all pass a
+   tiny angle such as 1e-3.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -126,7 +176,7 @@ MEMORY
    (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
-   CONE_FOV add FOVSDF_FOV_CELLS * 36 bytes (11.4 KiB). Lower the two macros for small
+   CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB). Lower the two macros for small
    stacks (configs that need more are then FOV_ERR_LIMIT).
 
 ERRORS AND LOGGING
@@ -421,6 +471,10 @@ typedef struct fovsdf_config {
     uint32_t skip_no_shadow_start; /* SKIP: 1 = shadow rays get no head start            */
     uint32_t finish;        /* head-start methods: tracer of the sample rays from their head
                                start, fovsdf_finish                                 0: bv2018 */
+    uint32_t heuristic_start; /* IPR, SKIP, FIPR: 0 = safe head starts, certified by a cone over
+                               each cell (no sample ray starts past its first hit, see
+                               ACCELERATED METHODS); 1 = the thesis's unverified head starts
+                               (minimum filter, scaled scene, early termination)      0: safe */
     /* FIPR and CONE_FOV: which pixels trace their own sample rays (see ACCELERATED METHODS) */
     fovsdf_acuity acuity;   /* p(w); a zero field takes its default (fovsdf_acuity_default:
                                fovea 7.5 degrees of eccentricity, no outer zone) */
@@ -1202,7 +1256,7 @@ FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r
     return n;
 }
 #ifndef FOVSDF_FOV_CELLS /* cells per FIPR / CONE_FOV tile: mid level (32 bytes each) and
-                            FIPR's level 0 (4 bytes each), on the stack */
+                            FIPR's level 0 (8 bytes each: hit, certified start), on the stack */
 #define FOVSDF_FOV_CELLS 324
 #endif
 /* FIPR / CONE_FOV: the larger of a tile's two arrays, apron included: the mid level (at least
@@ -1369,6 +1423,7 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (fovsdf__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
     if (c.finish == 0) c.finish = FOVSDF_FINISH_BV2018;
     if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown finish");
+    if (c.heuristic_start > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: heuristic_start must be 0 (safe) or 1 (thesis)");
     if (c.ipr_levels == 0) c.ipr_levels = 3;
     if (c.ipr_levels > 6) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_levels must be 1 .. 6");
     if (c.ipr_radius < 0 || c.ipr_radius > 3) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_radius must be 0 .. 3");
@@ -1378,7 +1433,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
     if (c.method == FOVSDF_METHOD_IPR &&
-        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, c.ipr_no_filter ? 0 : c.ipr_radius) > FOVSDF_TILE_SCRATCH)
+        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
+            FOVSDF_TILE_SCRATCH)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
     if (!fovsdf__finite(c.skip_scale) || !fovsdf__finite(c.skip_eps))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: skip_scale or skip_eps not finite");
@@ -3710,7 +3766,8 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
    from that filtered value. A miss is stored as t_max (explicit, so the filter takes the
    neighbours' hits). The filter is a heuristic: unlike the cone, a child may start past a
    surface the coarser rays did not see. Tiles are grid aligned with an apron of cells around
-   them, so results do not depend on how the image is split. */
+   them, so results do not depend on how the image is split. This is the thesis variant
+   (heuristic_start 1); the default is fovsdf__ipr_tile_safe. */
 FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, int32_t v, int32_t r)
 {
     float t = lv[(size_t)v * side + (size_t)u];
@@ -3770,6 +3827,60 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
         }
 }
 
+/* A cell's certified head start (the safe variants of IPR, SKIP and FIPR): the cone of the pixel
+   rectangle [x0, x1) x [y0, y1) marched from its parent's certified t_par (0: the camera), as
+   CONE marches its cells. Every sample ray of the rectangle is empty up to t_par (its parent's
+   cone contains it) and, along the cone, up to where the cone stopped: so it may start at the
+   larger of the two. Returns -1 when the cone reached t_max (every ray of the cell misses). */
+FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher *m, float x0, float y0, float x1, float y1,
+                                      float t_par, fovsdf_stats *st)
+{
+    float a[3], k, t;
+    if (t_par < 0.0f) return -1.0f; /* the parent's cone is empty up to t_max: so is this one */
+    k = fovsdf__cell_cone(c, x0, y0, x1, y1, a);
+    t = fovsdf__cone_march(c, m, a, k, t_par * (1.0f / FOVSDF__SQRT(1.0f + k * k)), st);
+    if (t < 0.0f) return -1.0f;
+    return fovsdf__minf(fovsdf__maxf(t, t_par), m->t_max);
+}
+
+/* IPR, safe variant (heuristic_start 0): the same levels and tiles, but each cell's value is
+   the certified start of fovsdf__safe_start over its own pixels, from its parent's, in place of
+   the thin ray's hit; no minimum filter is needed (each cone contains every sample ray that
+   starts from it) and no apron: only the cells over the requested pixels are marched. */
+FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                                        uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o,
+                                        fovsdf_stats *st)
+{
+    float scratch[FOVSDF_TILE_SCRATCH];
+    float *lv[6];
+    uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width, H = c->cam.height, l, x, y;
+    size_t off = 0;
+    for (l = 0; l + 1u < L; ++l) {
+        side[l] = T >> (L - 1u - l);
+        lv[l] = scratch + off;
+        off += (size_t)side[l] * side[l];
+    }
+    FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
+    for (l = 0; l + 1u < L; ++l) {
+        uint32_t S = 1u << (L - 1u - l), u, v;
+        /* the cells over the requested pixels (their parents lie over them too) */
+        for (v = (ry0 - ty) / S; v <= (ry1 - 1u - ty) / S; ++v)
+            for (u = (rx0 - tx) / S; u <= (rx1 - 1u - tx) / S; ++u) {
+                uint32_t x0 = tx + u * S, y0 = ty + v * S;
+                float tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
+                lv[l][(size_t)v * side[l] + u] =
+                    fovsdf__safe_start(c, m, (float)x0, (float)y0, (float)(x0 + S < W ? x0 + S : W),
+                                       (float)(y0 + S < H ? y0 + S : H), tp, st);
+            }
+    }
+    for (y = ry0; y < ry1; ++y)
+        for (x = rx0; x < rx1; ++x) {
+            float t0 = L > 1u ? lv[L - 2u][(size_t)((y - ty) / 2u) * side[L - 2u] + (x - tx) / 2u] : 0.0f;
+            if (t0 < 0.0f) fovsdf__pixel(c, m, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
+            else fovsdf__pixel(c, m, x, y, o, st, t0, 0, NULL, 0.0f, 0.0f);
+        }
+}
+
 /* ---- Skipping Spheres, SKIP (thesis ch. 6, notes seed000 section 1.6) -----------------------
    Pass 1, per grid-aligned cell of skip_block x skip_block pixels: one ray through the cell's
    centre marches the scene scaled by s (Scale(p) = f(p/s) s per primitive, subtracted operands
@@ -3789,23 +3900,35 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
    one evaluation verifies each head start and a ray whose start lies inside a surface (a
    grazing floor seen by the cell's lower rows) starts over from the camera.
    Like IPR this is a heuristic: neither scaling nor early termination guarantees that small
-   objects are seen. */
+   objects are seen. That is the thesis variant (heuristic_start 1); the default marches one
+   certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
 FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, uint32_t cy, uint32_t rx0,
                                     uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
+    uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
+    uint32_t by1 = by0 + B < c->cam.height ? by0 + B : c->cam.height;
     float ro[3], rd[3], sh[FOVSDF_MAX_LIGHTS], t_low, s_eff = c->cfg.skip_scale, tol;
     fovsdf__marcher ml = *m;
     fovsdf_hit h;
     uint64_t e0 = st->evals, es0 = st->evals_shadow;
     int has_sh = 0;
+    if (!c->cfg.heuristic_start) { /* safe: the block's cone, its pixels start where it stopped */
+        float t0 = fovsdf__safe_start(c, m, (float)bx0, (float)by0, (float)bx1, (float)by1, 0.0f, st);
+        for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
+            for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
+                fovsdf__pixel(c, m, x, y, o, st, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f, 0.0f);
+        return;
+    }
     if (c->cam_dist < 0.0f) s_eff = 1.0f / s_eff; /* camera inside: deflate */
     ml.method = FOVSDF_METHOD_CLASSIC;
     ml.verify_start = 0;
     ml.eps = c->cfg.skip_eps;
     ml.eps_cone = 0.0f;
     ml.inflate = s_eff;
-    fovsdf__ray(c, ((float)cx + 0.5f) * (float)B, ((float)cy + 0.5f) * (float)B, ro, rd);
+    /* through the centre of the block clipped to the image (a 1x1 image, or a border block of
+       an image whose sides are not multiples of skip_block, has its ray inside the image) */
+    fovsdf__ray(c, 0.5f * (float)(bx0 + bx1), 0.5f * (float)(by0 + by1), ro, rd);
     fovsdf__march(&ml, ro, rd, 0.0f, &h, 0, st);
     t_low = h.kind == FOVSDF_MISS ? c->t_max : h.t;
     if (h.kind != FOVSDF_MISS && c->cfg.shading == FOVSDF_SHADE_FULL && !c->cfg.skip_no_shadow_start) {
@@ -3826,8 +3949,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     st->evals_lowres += st->evals - e0;
     st->evals_shadow = es0; /* the low-resolution shadow rays count as the low-resolution pass */
     tol = fovsdf__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
-    for (y = (cy * B > ry0 ? cy * B : ry0); y < (cy * B + B < ry1 ? cy * B + B : ry1); ++y)
-        for (x = (cx * B > rx0 ? cx * B : rx0); x < (cx * B + B < rx1 ? cx * B + B : rx1); ++x)
+    for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
+        for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
             fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
 }
 
@@ -3851,8 +3974,10 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
    4. rendering. The mid level is one ray per 2x2-pixel cell through the cell's centre. FIPR:
       it starts from the minimum of level 0 over the parent and its neighbours within
       ipr_radius (the 3x3 min filter), and pixels in the mask march every sample ray from the
-      same filter over the mid level. CONE_FOV: the mid ray and the pixels' sample rays start
-      from their 2x2 cell's cone (the guarantee of CONE holds for every traced ray). Pixels
+      same filter over the mid level (the thesis variant, heuristic_start 1); by default both
+      start from the 2x2 cell's certified start instead (fovsdf__fov_tc). CONE_FOV: the mid
+      ray and the pixels' sample rays start from their 2x2 cell's cone (the guarantee of CONE
+      holds for every traced ray). Pixels
       outside the mask take the bilinear interpolation of the shaded mid-level rays around
       them (weights 3/4, 1/4 per axis) and are refreshed every refresh-th frame: the tiles
       take turns (refresh 2: a checkerboard of tiles; refresh 4: tile (i, j) refreshes when
@@ -3883,10 +4008,11 @@ typedef struct fovsdf__fovt {
     const fovsdf__marcher *mp; /* mid rays and sample rays */
     fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
     float *l0;                 /* FIPR level 0: t, or -1 before it is traced */
+    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown */
     int32_t mu0, mv0, lu0, lv0, r;
     uint32_t ms, ls;
     float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
-    int cone;
+    int cone, safe;            /* CONE_FOV; FIPR with heuristic_start 0 */
     fovsdf_stats *st;
 } fovsdf__fovt;
 
@@ -3915,6 +4041,32 @@ FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
     return *q;
 }
 
+/* Safe FIPR: the certified start of level-0 cell (i, j) (4x4 pixels, from the camera) and of
+   mid cell (u, v) (2x2 pixels, from its level-0 parent's), in tc; -1 when proven empty. The
+   cells are not clipped to the image (apron cells may lie outside it). */
+FOVSDF__PRIV float fovsdf__fov_l0s(fovsdf__fovt *f, int32_t i, int32_t j)
+{
+    float *q;
+    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls && j < f->lv0 + (int32_t)f->ls);
+    q = f->l0s + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
+    if (*q < -1.5f)
+        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4), (float)(4 * j + 4), 0.0f,
+                                f->st);
+    return *q;
+}
+FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
+{
+    fovsdf__mid *m;
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms && v < f->mv0 + (int32_t)f->ms);
+    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
+    if (m->tc < -1.5f) {
+        float tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2), (float)(2 * v + 2), tp,
+                                   f->st);
+    }
+    return m->tc;
+}
+
 /* Mid cell (u, v): traced on first use, shaded when `shade`. */
 FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
 {
@@ -3932,6 +4084,8 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
         uint64_t e0;
         if (f->cone) {
             t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
+        } else if (f->safe) {
+            t0 = fovsdf__fov_tc(f, u, v); /* -1: proven empty, below */
         } else {
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
             t0 = c->t_max;
@@ -3939,10 +4093,15 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
                 for (a = -f->r; a <= f->r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
         }
         e0 = f->st->evals; /* after the level-0 rays, which count themselves */
-        if (f->cone && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
+        if ((f->cone || f->safe) && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
             h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
         } else {
             fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
+        }
+        /* the interpolated pixels report this ray's depth: a hit must lie in [0, t_max] (a
+           tracer's hit beyond t_max, or a non-finite one, is a miss) */
+        if (h.kind != FOVSDF_MISS && !(h.t >= 0.0f && h.t <= c->t_max)) {
+            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
         }
         m->th = h.kind == FOVSDF_MISS ? c->t_max : h.t;
         m->dist = h.dist;
@@ -4018,13 +4177,14 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                                    const fovsdf_output *o, fovsdf_stats *st)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
-    float l0[FOVSDF_FOV_CELLS];
+    float l0[2 * FOVSDF_FOV_CELLS];
     fovsdf__fovt f;
     uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh;
     int32_t am;
     int due;
-    f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.st = st;
+    f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
     f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
+    f.safe = !f.cone && !c->cfg.heuristic_start;
     f.r = f.cone ? 1 : (c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius);
     T = f.cone ? c->cfg.cone_tile : c->cfg.ipr_tile;
     /* step 4's refresh: whole tiles take turns (a finer pattern would still need every mid cell
@@ -4038,7 +4198,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS && (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
     for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
     if (!f.cone)
-        for (i = 0; i < f.ls * f.ls; ++i) l0[i] = -1.0f;
+        for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
     if (f.cone) {
         /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
@@ -4067,8 +4227,8 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
             if (in) {
                 float t0;
                 int miss = 0;
-                if (f.cone) {
-                    t0 = mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc;
+                if (f.cone || f.safe) {
+                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc : fovsdf__fov_tc(&f, u, v);
                     miss = t0 < 0.0f;
                     if (miss) t0 = 0.0f;
                 } else {
@@ -4114,20 +4274,24 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         fovsdf__marcher mp = m;
         uint32_t B = c->cfg.skip_block, cx, cy;
         mp.method = c->cfg.finish - 1u;
+        mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
         for (cy = y0 / B; cy * B < y1; ++cy)
             for (cx = x0 / B; cx * B < x1; ++cx) fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
         mp.method = c->cfg.finish - 1u; /* every level traces with the finishing tracer */
+        mp.verify_start = (int)c->cfg.heuristic_start;
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
-                fovsdf__ipr_tile(c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
-                                 ty + T < y1 ? ty + T : y1, o, &local);
+                (c->cfg.heuristic_start ? fovsdf__ipr_tile : fovsdf__ipr_tile_safe)(
+                    c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
+                    ty + T < y1 ? ty + T : y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx, ty;
         mp.method = c->cfg.finish - 1u;
+        if (c->cfg.method == FOVSDF_METHOD_FIPR) mp.verify_start = (int)c->cfg.heuristic_start;
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,

@@ -571,6 +571,7 @@ static void skip_sign_aware(void)
     sc.user = &u;
     fovsdf_camera_init(&cam, 16, 16);
     c.method = FOVSDF_METHOD_SKIP;
+    c.heuristic_start = 1; /* the thesis's variant scales the scene; the safe one does not */
     c.skip_scale = 1.05f;
     /* camera outside the sphere: the low-resolution pass inflates */
     u.min_infl = 1e9f; u.max_infl = 0.0f; u.r = 1.0f;
@@ -613,6 +614,7 @@ static void skip_hole_shrinks(void)
     cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 0.0f; cam.target[2] = 1.0f;
     cam.fov_y_deg = 90.0f;
     c.method = FOVSDF_METHOD_SKIP;
+    c.heuristic_start = 1; /* the thesis's scaled scene (the safe variant has no scaling) */
     c.skip_scale = 1.05f;
     c.skip_eps = 0.001f;
     fovsdf_init(&k, &c, &sc, &cam, gz, NULL, 0);
@@ -667,6 +669,7 @@ static void skip_tests(void)
         fov_gaze gz = { 48.0f, 27.0f };
         mem = load_builtin(FOVSDF_SCENE_PRIMITIVES, 96, 54, &bi);
         a.method = FOVSDF_METHOD_SKIP;
+        a.heuristic_start = 1; /* shadow head starts are the thesis variant's */
         bcfg = a;
         bcfg.skip_no_shadow_start = 1;
         fovsdf_init(&ka, &a, &bi.scene, &bi.camera, gz, NULL, 0);
@@ -790,16 +793,17 @@ static void fov_equal_unfoveated(void)
     uint32_t ids[2] = { FOVSDF_SCENE_PRIMITIVES, FOVSDF_SCENE_TEMPLE }, i, m;
     fov_gaze gz = { 30.0f, 20.0f };
     for (i = 0; i < 2; ++i)
-        for (m = 0; m < 2; ++m) {
+        for (m = 0; m < 3; ++m) { /* m 2: FIPR and IPR with the thesis's head starts */
             fovsdf_builtin bi;
             void *mem = load_builtin(ids[i], 96, 64, &bi);
             fovsdf_config c = fovsdf_config_default(), d;
             uint32_t p, all1 = 1;
             c.spp = 4;
             c.shading = FOVSDF_SHADE_NO_SHADOWS;
-            c.method = m ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
+            c.heuristic_start = m == 2u;
+            c.method = m == 1u ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_IPR;
             d = c;
-            d.method = m ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
+            d.method = m == 1u ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_FIPR;
             d.acuity.fovea_deg = 180.0f;
             memset(&a, 0, sizeof a); memset(&b, 0, sizeof b);
             render96(&bi, &c, gz, &a, NULL);
@@ -807,7 +811,8 @@ static void fov_equal_unfoveated(void)
             for (p = 0; p < 96u * 64u; ++p) all1 &= b.mask[p] == 1;
             check(all1 && memcmp(a.rgb, b.rgb, sizeof a.rgb) == 0 && memcmp(a.depth, b.depth, sizeof a.depth) == 0 &&
                       memcmp(a.start, b.start, sizeof a.start) == 0,
-                  N(m ? "cone_fov_full_fovea_is_cone_%s" : "fipr_full_fovea_is_ipr_%s", bi.name), "images differ (all mask 1: %u)", all1);
+                  N(m == 1u ? "cone_fov_full_fovea_is_cone_%s" : m ? "fipr_thesis_full_fovea_is_ipr_%s" : "fipr_full_fovea_is_ipr_%s",
+                    bi.name), "images differ (all mask 1: %u)", all1);
             free(mem);
         }
 }
