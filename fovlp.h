@@ -176,8 +176,10 @@ NUMERICS
                        uses (bilinear with renormalised weights, linear blends towards the
                        disc or centre sample): inside their [min, max] up to float
                        rounding (the fuzz check allows 1e-5 of the largest magnitude).
-                       The weighted sums run with half weights (exact) and double back
-                       saturating at +-FLT_MAX, so taps near FLT_MAX cannot round to inf.
+                       Where the weighted sum of finite taps near FLT_MAX rounds past it,
+                       the mean is recomputed with half weights (exact) and doubled back,
+                       saturating at +-FLT_MAX; elsewhere the image is bit for bit the
+                       plain formula's.
        blend           between the pixel and its 3x3 mean: inside the 3x3 range.
        TAA             always finite; each channel lies between the current colour and the
                        history used (a blend a + (b - a) t where b - a is finite, else
@@ -1792,7 +1794,7 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
     float in_r = fovlp__minf(fovlp__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
                              fovlp__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
-    int all_on, clamped = 0;
+    int all_on, clamped = 0, pass;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     *depth = 0.0f;
     if (su < 0.0f) { su = 0.0f; clamped = 1; }         /* inside the first column */
@@ -1814,37 +1816,48 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
              (ctx->rho[i0 + 1] < in_r ||
               (clamped == 0 && ((ctx->rho[i0 + 1] - ctx->rho[i0]) +
                                 ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge));
-    for (dj = 0; dj < 2; ++dj) {
-        int32_t j = j0 + dj;
-        float wv = dj ? fv : 1.0f - fv;
-        /* the angle wraps: row -1 is row h-1, row h is row 0 */
-        while (j < 0) j += (int32_t)g->lp_h;
-        while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
-        for (di = 0; di < 2; ++di) {
-            int32_t i = i0 + di;
-            float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y, hw;
-            size_t slot;
-            if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
-            if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
-            slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
-            hw = 0.5f * w;
-            rgb[0] += hw * srgb[3 * slot];
-            rgb[1] += hw * srgb[3 * slot + 1];
-            rgb[2] += hw * srgb[3 * slot + 2];
-            wsum += w;
-            if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
+    /* pass 0: the weighted mean; where it is not finite, pass 1 sums with half weights
+       (exact: the same bits halved), which cannot overflow for finite taps, and doubles the
+       mean back saturating at +-FLT_MAX where the weights' rounding pushes it past (taps
+       near FLT_MAX summed to inf in pass 0); NaN / inf from the shading pass through */
+    for (pass = 0; pass < 2; ++pass) {
+        float k = pass ? 0.5f : 1.0f, a0 = 0.0f, a1 = 0.0f, a2 = 0.0f, t;
+        wsum = 0.0f;
+        wbest = -1.0f;
+        for (dj = 0; dj < 2; ++dj) {
+            int32_t j = j0 + dj;
+            float wv = dj ? fv : 1.0f - fv;
+            /* the angle wraps: row -1 is row h-1, row h is row 0 */
+            while (j < 0) j += (int32_t)g->lp_h;
+            while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
+            for (di = 0; di < 2; ++di) {
+                int32_t i = i0 + di;
+                float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y, kw;
+                size_t slot;
+                if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
+                if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
+                slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
+                kw = k * w;   /* local sums: rgb may alias the samples */
+                a0 += kw * srgb[3 * slot];
+                a1 += kw * srgb[3 * slot + 1];
+                a2 += kw * srgb[3 * slot + 2];
+                wsum += w;
+                if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
+            }
+        }
+        if (!(wsum > 1e-6f)) break;
+        rgb[0] = a0 / wsum; rgb[1] = a1 / wsum; rgb[2] = a2 / wsum;
+        t = (rgb[0] - rgb[0]) + (rgb[1] - rgb[1]) + (rgb[2] - rgb[2]);   /* NaN unless finite */
+        if (pass == 0 && t >= 0.0f && t <= 0.0f) return wsum;
+        if (pass == 1) {
+            rgb[0] = fovlp__twice_sat(rgb[0]);
+            rgb[1] = fovlp__twice_sat(rgb[1]);
+            rgb[2] = fovlp__twice_sat(rgb[2]);
+            return wsum;
         }
     }
-    if (wsum > 1e-6f) {
-        /* the taps were summed with half weights (exact: the same bits as the full weights,
-           halved), so the sum cannot overflow for finite taps; doubling the mean back
-           saturates at +-FLT_MAX when the weights' rounding pushes it past (taps near
-           FLT_MAX); NaN / inf from the shading pass through */
-        rgb[0] = fovlp__twice_sat(rgb[0] / wsum);
-        rgb[1] = fovlp__twice_sat(rgb[1] / wsum);
-        rgb[2] = fovlp__twice_sat(rgb[2] / wsum);
-        return wsum;
-    }
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    *depth = 0.0f;
     /* no shaded tap (near the screen border or the last column): the nearest shaded sample
        inwards along the two rows */
     for (i0 = i0 < (int32_t)g->lp_w ? i0 : (int32_t)g->lp_w - 1; i0 >= 0; --i0) {
