@@ -176,8 +176,10 @@ NUMERICS
                        uses (bilinear with renormalised weights, linear blends towards the
                        disc or centre sample): inside their [min, max] up to float
                        rounding (the fuzz check allows 1e-5 of the largest magnitude).
-                       The weighted sums run with half weights (exact) and double back
-                       saturating at +-FLT_MAX, so taps near FLT_MAX cannot round to inf.
+                       Where the weighted sum of finite taps near FLT_MAX rounds past it,
+                       the mean is recomputed with half weights (exact) and doubled back,
+                       saturating at +-FLT_MAX; elsewhere the image is bit for bit the
+                       plain formula's.
        blend           between the pixel and its 3x3 mean: inside the 3x3 range.
        TAA             always finite; each channel lies between the current colour and the
                        history used (a blend a + (b - a) t where b - a is finite, else
@@ -1792,7 +1794,7 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
     float in_r = fovlp__minf(fovlp__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
                              fovlp__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
-    int all_on, clamped = 0;
+    int all_on, clamped = 0, pass;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     *depth = 0.0f;
     if (su < 0.0f) { su = 0.0f; clamped = 1; }         /* inside the first column */
@@ -1814,37 +1816,48 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
              (ctx->rho[i0 + 1] < in_r ||
               (clamped == 0 && ((ctx->rho[i0 + 1] - ctx->rho[i0]) +
                                 ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge));
-    for (dj = 0; dj < 2; ++dj) {
-        int32_t j = j0 + dj;
-        float wv = dj ? fv : 1.0f - fv;
-        /* the angle wraps: row -1 is row h-1, row h is row 0 */
-        while (j < 0) j += (int32_t)g->lp_h;
-        while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
-        for (di = 0; di < 2; ++di) {
-            int32_t i = i0 + di;
-            float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y, hw;
-            size_t slot;
-            if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
-            if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
-            slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
-            hw = 0.5f * w;
-            rgb[0] += hw * srgb[3 * slot];
-            rgb[1] += hw * srgb[3 * slot + 1];
-            rgb[2] += hw * srgb[3 * slot + 2];
-            wsum += w;
-            if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
+    /* pass 0: the weighted mean; where it is not finite, pass 1 sums with half weights
+       (exact: the same bits halved), which cannot overflow for finite taps, and doubles the
+       mean back saturating at +-FLT_MAX where the weights' rounding pushes it past (taps
+       near FLT_MAX summed to inf in pass 0); NaN / inf from the shading pass through */
+    for (pass = 0; pass < 2; ++pass) {
+        float k = pass ? 0.5f : 1.0f, a0 = 0.0f, a1 = 0.0f, a2 = 0.0f, t;
+        wsum = 0.0f;
+        wbest = -1.0f;
+        for (dj = 0; dj < 2; ++dj) {
+            int32_t j = j0 + dj;
+            float wv = dj ? fv : 1.0f - fv;
+            /* the angle wraps: row -1 is row h-1, row h is row 0 */
+            while (j < 0) j += (int32_t)g->lp_h;
+            while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
+            for (di = 0; di < 2; ++di) {
+                int32_t i = i0 + di;
+                float wu = di ? fu : 1.0f - fu, w = wu * wv, x, y, kw;
+                size_t slot;
+                if (!(w > 0.0f) || i >= (int32_t)g->lp_w) continue;
+                if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
+                slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
+                kw = k * w;   /* local sums: rgb may alias the samples */
+                a0 += kw * srgb[3 * slot];
+                a1 += kw * srgb[3 * slot + 1];
+                a2 += kw * srgb[3 * slot + 2];
+                wsum += w;
+                if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
+            }
+        }
+        if (!(wsum > 1e-6f)) break;
+        rgb[0] = a0 / wsum; rgb[1] = a1 / wsum; rgb[2] = a2 / wsum;
+        t = (rgb[0] - rgb[0]) + (rgb[1] - rgb[1]) + (rgb[2] - rgb[2]);   /* NaN unless finite */
+        if (pass == 0 && t >= 0.0f && t <= 0.0f) return wsum;
+        if (pass == 1) {
+            rgb[0] = fovlp__twice_sat(rgb[0]);
+            rgb[1] = fovlp__twice_sat(rgb[1]);
+            rgb[2] = fovlp__twice_sat(rgb[2]);
+            return wsum;
         }
     }
-    if (wsum > 1e-6f) {
-        /* the taps were summed with half weights (exact: the same bits as the full weights,
-           halved), so the sum cannot overflow for finite taps; doubling the mean back
-           saturates at +-FLT_MAX when the weights' rounding pushes it past (taps near
-           FLT_MAX); NaN / inf from the shading pass through */
-        rgb[0] = fovlp__twice_sat(rgb[0] / wsum);
-        rgb[1] = fovlp__twice_sat(rgb[1] / wsum);
-        rgb[2] = fovlp__twice_sat(rgb[2] / wsum);
-        return wsum;
-    }
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    *depth = 0.0f;
     /* no shaded tap (near the screen border or the last column): the nearest shaded sample
        inwards along the two rows */
     for (i0 = i0 < (int32_t)g->lp_w ? i0 : (int32_t)g->lp_w - 1; i0 >= 0; --i0) {
@@ -2011,61 +2024,40 @@ FOVLP__PRIV void fovlp__from_ycocg(const float c[3], float o[3])
     o[2] = c[0] - c[1] - c[2];
 }
 
-/* Clamp (AABB) or clip (variance) the history colour h against the current 3x3
-   neighbourhood of (x, y), in YCoCg (Karis 2014; Salvi 2016 for the variance box).
-   Neighbourhoods with a colour beyond 2^60 in magnitude are handled at the scale 2^-70
-   (exact, a power of two): the YCoCg sums and the sums of squares of the variance box would
-   overflow at full scale (3e38^2). The result, scaled back, saturates at +-FLT_MAX (the
-   YCoCg box's corners can lie up to 3x outside the RGB range of the neighbourhood).
-   Neighbours with a NaN or infinite channel (the caller's shading) are left out of the box;
-   with none left h is kept as it is. */
-FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
-                                      uint32_t mode, float h[3])
+/* The clamp / clip of h at the scale k (YCoCg of k * colour) into r; 0 when the pass at
+   k = 1 was not finite (a sum of squares, a YCoCg value or the result: colours beyond about
+   1e19, or a NaN / inf neighbour when not careful). careful: neighbours with a NaN / inf
+   channel are left out (the fast pass, careful = 0, takes every neighbour). */
+FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y, uint32_t mode,
+                               const float h[3], float k, int careful, float r[3])
 {
     uint32_t W = ctx->geo.width, H = ctx->geo.height;
-    float mn[3], mx[3], m1[3] = { 0.0f, 0.0f, 0.0f }, m2[3] = { 0.0f, 0.0f, 0.0f }, hy[3], hs[3];
-    float big = fovlp__maxf(fovlp__maxf(fovlp__absf(h[0]), fovlp__absf(h[1])), fovlp__absf(h[2]));
-    float k = 1.0f, eps = 1e-6f, c0[3];
-    int have_c;
-    int32_t a, b, ch;
-    float n = 0.0f;
-    for (b = -1; b <= 1; ++b)
-        for (a = -1; a <= 1; ++a) {
-            int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
-            const float *q;
-            if (xx < 0 || yy < 0 || xx >= (int32_t)W || yy >= (int32_t)H) continue;
-            q = cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
-            if (!fovlp__finite3(q)) continue;
-            for (ch = 0; ch < 3; ++ch) big = fovlp__maxf(big, fovlp__absf(q[ch]));
-        }
-    if (big > 1.15292150e18f) { k = 8.47032947e-22f; eps = 1e-6f * k; }   /* 2^60, 2^-70 */
-    /* the moments are taken about the centre pixel's colour c (finite, else the first finite
-       neighbour's): var = E[(q - c)^2] - E[q - c]^2 does not cancel catastrophically the way
-       E[q^2] - E[q]^2 does for a neighbourhood far from 0 (a uniform 1234.567 left a box
-       wide enough to keep a history 0.12 away; now the box is the colour) */
-    c0[0] = c0[1] = c0[2] = 0.0f;
-    have_c = 0;
-    {
-        const float *p = cur + 3u * ((size_t)y * W + x);
-        if (fovlp__finite3(p)) {
-            float s[3];
-            s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
-            fovlp__to_ycocg(s, c0);
-            have_c = 1;
-        }
+    const float *p = cur + 3u * ((size_t)y * W + x);
+    float mn[3], mx[3], m1[3], m2[3], c0[3] = { 0.0f, 0.0f, 0.0f }, hy[3], s[3], n = 0.0f, t;
+    int32_t a, b, ch, have_c = 0;
+    t = (p[0] - p[0]) + (p[1] - p[1]) + (p[2] - p[2]);   /* 0, or NaN for a NaN / inf channel */
+    if (!careful || (t >= 0.0f && t <= 0.0f)) {
+        s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
+        fovlp__to_ycocg(k < 1.0f ? s : p, c0);
+        have_c = 1;
     }
-    mn[0] = mn[1] = mn[2] = FLT_MAX;
-    mx[0] = mx[1] = mx[2] = -FLT_MAX;
+    for (ch = 0; ch < 3; ++ch) { mn[ch] = FLT_MAX; mx[ch] = -FLT_MAX; m1[ch] = m2[ch] = 0.0f; }
     for (b = -1; b <= 1; ++b)
         for (a = -1; a <= 1; ++a) {
             int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
-            const float *p;
-            float q[3], s[3];
+            float q[3];
             if (xx < 0 || yy < 0 || xx >= (int32_t)W || yy >= (int32_t)H) continue;
             p = cur + 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
-            if (!fovlp__finite3(p)) continue;
-            s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
-            fovlp__to_ycocg(s, q);
+            if (careful) {
+                t = (p[0] - p[0]) + (p[1] - p[1]) + (p[2] - p[2]);
+                if (!(t >= 0.0f && t <= 0.0f)) continue;   /* the caller's bad samples: left out */
+            }
+            if (k < 1.0f) {
+                s[0] = p[0] * k; s[1] = p[1] * k; s[2] = p[2] * k;
+                fovlp__to_ycocg(s, q);
+            } else {
+                fovlp__to_ycocg(p, q);
+            }
             if (!have_c) { c0[0] = q[0]; c0[1] = q[1]; c0[2] = q[2]; have_c = 1; }
             for (ch = 0; ch < 3; ++ch) {
                 float e = q[ch] - c0[ch];
@@ -2076,13 +2068,14 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
             }
             n += 1.0f;
         }
-    if (!(n > 0.0f)) return;
-    hs[0] = h[0] * k; hs[1] = h[1] * k; hs[2] = h[2] * k;
-    fovlp__to_ycocg(hs, hy);
+    r[0] = h[0]; r[1] = h[1]; r[2] = h[2];
+    if (!(n > 0.0f)) return 1;
+    s[0] = h[0] * k; s[1] = h[1] * k; s[2] = h[2] * k;
+    fovlp__to_ycocg(s, hy);
     if (mode == FOVLP_CLAMP_AABB) {
         for (ch = 0; ch < 3; ++ch) hy[ch] = fovlp__clampf(hy[ch], mn[ch], mx[ch]);
     } else {
-        float scale = 0.0f, d[3];
+        float scale = 0.0f, d[3], eps = k < 1.0f ? 1e-6f * k : 1e-6f;
         for (ch = 0; ch < 3; ++ch) {
             float mc = m1[ch] / n, var = fovlp__maxf(m2[ch] / n - mc * mc, 0.0f), mu = c0[ch] + mc;
             float ext = ctx->cfg.taa.clip_gamma * FOVLP__SQRT(var) + eps;
@@ -2093,10 +2086,37 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
         if (scale > 1.0f)
             for (ch = 0; ch < 3; ++ch) hy[ch] = m1[ch] + d[ch] / scale;
     }
-    fovlp__from_ycocg(hy, h);
-    if (k < 1.0f)
+    fovlp__from_ycocg(hy, r);
+    if (k < 1.0f) {
         for (ch = 0; ch < 3; ++ch)
-            h[ch] = fovlp__clampf(h[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
+            r[ch] = fovlp__clampf(r[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
+        return 1;
+    }
+    t = (m1[0] + m1[1] + m1[2]) + (m2[0] + m2[1] + m2[2]) + (mn[0] + mn[1] + mn[2]) + (mx[0] + mx[1] + mx[2]);
+    return fovlp__finite(t) && fovlp__finite3(r);
+}
+
+/* Clamp (AABB) or clip (variance) the history colour h against the current 3x3
+   neighbourhood of (x, y), in YCoCg (Karis 2014; Salvi 2016 for the variance box).
+   Where the pass at full scale overflows (colours beyond about 1e19: 3e38^2 overflowed the
+   sums of squares and silently disabled the clip, or gave NaN) it is redone at the scale
+   2^-70 (exact, a power of two), and the result, scaled back, saturates at +-FLT_MAX (the
+   YCoCg box's corners can lie up to 3x outside the RGB range of the neighbourhood). The
+   moments are taken about the centre pixel's colour c: var = E[(q - c)^2] - E[q - c]^2 does
+   not cancel catastrophically the way E[q^2] - E[q]^2 does for a neighbourhood far from 0
+   (a uniform 1234.567 left a box wide enough to keep a history 0.12 away; now the box is
+   the colour). Neighbours with a NaN or infinite channel (the caller's shading) are left
+   out of the box; with none left h is kept as it is; a non-finite h stays non-finite (the
+   caller rejects it). */
+FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
+                                      uint32_t mode, float h[3])
+{
+    float r[3];
+    /* the fast pass; if not finite: without the NaN / inf neighbours; then at 2^-70 */
+    if (!fovlp__clip_at(ctx, cur, x, y, mode, h, 1.0f, 0, r) && fovlp__finite3(h) &&
+        !fovlp__clip_at(ctx, cur, x, y, mode, h, 1.0f, 1, r))
+        (void)fovlp__clip_at(ctx, cur, x, y, mode, h, 8.47032947e-22f, 1, r);   /* 2^-70 */
+    h[0] = r[0]; h[1] = r[1]; h[2] = r[2];
 }
 
 /* Bilinear fetch of the previous colour at continuous (hx, hy), borders clamped. */
@@ -2110,8 +2130,16 @@ FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx
     const float *p01 = img + 3u * ((size_t)y1 * W + x0), *p11 = img + 3u * ((size_t)y1 * W + x1);
     int ch;
     for (ch = 0; ch < 3; ++ch) {
-        float t0 = fovlp__lerp(p00[ch], p10[ch], ax), t1 = fovlp__lerp(p01[ch], p11[ch], ax);
-        o[ch] = fovlp__lerp(t0, t1, ay);
+        float t0 = p00[ch] + (p10[ch] - p00[ch]) * ax, t1 = p01[ch] + (p11[ch] - p01[ch]) * ax;
+        o[ch] = t0 + (t1 - t0) * ay;
+        if (!fovlp__finite(o[ch])) {
+            /* a difference overflowed (neighbours of opposite signs beyond FLT_MAX / 2; a
+               +-3e38 checkerboard gave NaN * 0), or a tap is NaN / inf: blend without
+               differences (NaN / inf taps still give a non-finite result, rejected) */
+            t0 = fovlp__lerp(p00[ch], p10[ch], ax);
+            t1 = fovlp__lerp(p01[ch], p11[ch], ax);
+            o[ch] = fovlp__lerp(t0, t1, ay);
+        }
     }
 }
 
