@@ -24,6 +24,7 @@
    whatever the split into rows, tiles or tile buffers; camera rays are unit; trace, march
    and shade_point report t within [t_start, t_max].
 
+   -DFZ_VERBOSE prints the scenario (geometry, config, camera) to stderr.
    -DFZ_IGNORE_KNOWN: development switch that steers around the findings F1-F6 of issue 10
    (huge camera vectors and image points, huge or denormal builder parameters, hostile
    callbacks, depth beyond t_max from the head-start methods, unchecked node parameters), so
@@ -479,7 +480,7 @@ static float rgb_bound(const fovsdf_ctx *c)
     const fovsdf_scene *s = &c->scene;
     float sky = 0.0f, lit = 0.0f, hi;
     uint32_t k, j;
-    if (c->cfg.shading >= FOVSDF_SHADE_NORMALS) return 1.0f;
+    if (c->cfg.shading >= FOVSDF_SHADE_NORMALS) return 1.0f + 1e-5f; /* a unit normal's last ulp */
     for (j = 0; j < 3; ++j) {
         float a = s->ambient[j];
         if (s->sky_zenith[j] > sky) sky = s->sky_zenith[j];
@@ -500,7 +501,7 @@ static float rgb_floor(const fovsdf_ctx *c)
         if (s->sky_zenith[j] < lo) lo = s->sky_zenith[j];
         if (s->sky_horizon[j] < lo) lo = s->sky_horizon[j];
     }
-    return lo;
+    return lo - 1e-5f; /* 0.5 + 0.5 n of a unit normal can round below 0 */
 }
 
 /* ---- image buffers ------------------------------------------------------------------- */

@@ -425,6 +425,21 @@ def regressions():
         render(e, 16, 16, split=0)
         rays(e, 0, 16, 16)
         out['F3_t_max_%s.bin' % mname] = e.b
+    # F3 with CLASSIC and RELAXED too (found by this harness; the issue names the other
+    # tracers): Primitives seen from (6, 6, 6), config t_max 110.588, depth shading: grey
+    # -0.24 at pixel (4, 3), a hit at t ~ 137
+    for mname in ('classic', 'relaxed'):
+        e = Enc()
+        H = HC | HM
+        e.u8(H)
+        g_builtin(e, 0)
+        config(e, H, method=METHOD[mname], eps=0.00128908, eps_px=0.437507, max_steps=64, t_max=110.588, shading=3)
+        camera(e, H, 5, 5, pos=(6.0, 6.0, 6.0), target=(-1.66404, 0.317647, 0.317647), up=(0.105882, 0.105882, 0.788235),
+               fov=62.5022)
+        look(e, 0)
+        render(e, 5, 5, split=0)
+        rays(e, 0, 5, 5)
+        out['F3_t_max_%s_primitives.bin' % mname] = e.b
     # F3 through fovsdf_shade_point (found by this harness): the Thin scene, CONE_FOV with its
     # default BV2018 finish, 3x3, 32 steps: shade_point(-3, -3) reports t = 49.03 past the
     # scene's t_max of 40
