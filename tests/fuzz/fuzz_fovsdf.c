@@ -27,7 +27,8 @@
    -DFZ_VERBOSE prints the scenario (geometry, config, camera) to stderr.
    -DFZ_IGNORE_KNOWN: development switch that steers around the findings F1-F6 of issue 10
    (huge camera vectors and image points, huge or denormal builder parameters, hostile
-   callbacks, depth beyond t_max from the head-start methods, unchecked node parameters), so
+   callbacks, depth beyond t_max from the head-start methods, unchecked node parameters) and
+   N3 (fovsdf_trace of IPR/SKIP/FIPR contexts backing up before t_start), so
    a fuzzing run can find something new before those fixes land. Never used by run.sh. */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -801,7 +802,10 @@ static void ray_checks(fz_in *in, const fovsdf_ctx *ctx, const scen *s, int H)
         if (fz_u8(in) & 1u) { rd[0] = d[0]; rd[1] = d[1]; rd[2] = d[2]; } /* not unit */
         memset(&hit, 0, sizeof hit);
         r = fovsdf_trace(ctx, ro, rd, t0, &hit, NULL);
-        if (r == FOV_OK && !(known_tmax(ctx) && hit.t > ctx->t_max)) check_hit(&hit, t0, ctx->t_max, ctx->cfg.max_steps, "trace");
+        if (r == FOV_OK && !(known_tmax(ctx) && hit.t > ctx->t_max) &&
+            !(fz_known_off && hit.t < t0 && (ctx->cfg.method == FOVSDF_METHOD_IPR || ctx->cfg.method == FOVSDF_METHOD_SKIP ||
+                                             ctx->cfg.method == FOVSDF_METHOD_FIPR))) /* N3 */
+            check_hit(&hit, t0, ctx->t_max, ctx->cfg.max_steps, "trace");
         memset(&mp, 0, sizeof mp);
         mp.method = fz_pick(in, 5);
         mp.max_steps = ms_t[fz_pick(in, 6)];

@@ -453,6 +453,21 @@ def regressions():
     render(e, 3, 3, split=0)
     rays(e, H, 3, 3, points=((-3.0, -3.0),))
     out['F3_shade_point_cone_fov.bin'] = e.b
+    # N3 (found by this harness): a context of a head-start method that verifies its starts
+    # (IPR, SKIP, FIPR) makes fovsdf_trace from a t_start inside the surface report a hit at
+    # t = 0 < t_start (NUMERICS: a ray that starts inside reports a hit at t_start); the
+    # camera sits 0.47 below the callback scene's floor
+    for mname in ('ipr', 'skip', 'fipr'):
+        e = Enc()
+        H = 0
+        e.u8(H)
+        g_callback(e, H, flags=1)
+        config(e, H, method=METHOD[mname])
+        camera(e, H, 12, 9, pos=(0.0, -1.46661, -5.95312), target=(3.0, -2.99982, -2.94708), fov=1.40627)
+        look(e, H)
+        render(e, 12, 9, split=0)
+        rays(e, H, 12, 9, traces=(((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.129702, 3),))
+        out['N3_trace_inside_start_%s.bin' % mname] = e.b
     # F4: FIPR / CONE_FOV interpolated depth beyond the scene's t_max (Primitives at 10x7)
     for mname in ('fipr', 'cone_fov'):
         e = Enc()
