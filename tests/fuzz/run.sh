@@ -32,6 +32,8 @@
 #                                   (+ float-cast-overflow) -fno-sanitize-recover=all
 #     build/fuzz/replay_<t>_nolibm  $CC -O2 -DFOV_NO_LIBM (the built-in math approximations)
 #   Each input of each build is one check; a build that fails to compile is one failure.
+#   tests/fuzz/pending/<t>/ (regression inputs whose fix is not merged yet) is not replayed:
+#   bash tests/fuzz/run.sh repro <t> tests/fuzz/pending/<t>/* shows their state.
 # fuzz: build/fuzz/fuzz_<t> = clang -O1 -g -fsanitize=fuzzer,address,undefined
 #   -fno-sanitize-recover=all, run as
 #     build/fuzz/fuzz_<t> -max_total_time=$FUZZ_SECONDS -max_len=$FUZZ_MAX_LEN
