@@ -440,6 +440,18 @@ def regressions():
         render(e, 5, 5, split=0)
         rays(e, 0, 5, 5)
         out['F3_t_max_%s_primitives.bin' % mname] = e.b
+    # F3 with RELAXED through fovsdf_shade_point on the exact callback scene, default config
+    # (found by this harness): shade_point(3.529, 2.647) t = 141.7 past t_max 100
+    e = Enc()
+    H = HM | HR
+    e.u8(H)
+    g_callback(e, 0, flags=1)
+    config(e, 0, method=METHOD['relaxed'])
+    camera(e, H, 12, 9, pos=(9.15527e-05, 1.00005, -4.00009), target=(4.57764e-05, 4.57764e-05, 4.57764e-05))
+    look(e, 0)
+    render(e, 12, 9, split=0)
+    rays(e, H, 12, 9, points=((3.52941, 2.64706),))
+    out['F3_shade_point_relaxed.bin'] = e.b
     # F3 through fovsdf_shade_point (found by this harness): the Thin scene, CONE_FOV with its
     # default BV2018 finish, 3x3, 32 steps: shade_point(-3, -3) reports t = 49.03 past the
     # scene's t_max of 40
