@@ -480,6 +480,20 @@ def regressions():
         render(e, 12, 9, split=0)
         rays(e, H, 12, 9, traces=(((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.129702, 3),))
         out['N3_trace_inside_start_%s.bin' % mname] = e.b
+    # N4 (found by this harness): CONE writes a head start (output.start) past t_max:
+    # Primitives with the scene's t_max set to 199.918, 8x8, 32 steps: pixel (2, 3) start
+    # 215.675 (the documented range is [0, t_max], t_max for a proven-empty cell)
+    e = Enc()
+    H = HC | HM | HS
+    e.u8(H)
+    g_builtin(e, 0)
+    config(e, H, method=METHOD['cone'], eps=0.00890639, eps_px=1.78824, max_steps=32)
+    camera(e, H, 8, 8, pos=(0.119112, 0.494118, 4.71293), target=(2.36471, 2.36471, -1.92442),
+           up=(-0.0399023, -0.993042, -1.0), fov=29.6471)
+    look(e, H, t_max=199.918)
+    render(e, 8, 8, split=0)
+    rays(e, 0, 8, 8)
+    out['N4_cone_start_past_t_max.bin'] = e.b
     # F4: FIPR / CONE_FOV interpolated depth beyond the scene's t_max (Primitives at 10x7)
     for mname in ('fipr', 'cone_fov'):
         e = Enc()
