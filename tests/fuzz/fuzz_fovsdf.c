@@ -621,8 +621,8 @@ static void check_pixels(const fovsdf_ctx *c, const imgset *m)
             if (m->p[B_START]) {
                 memcpy(&v, img_at(m, B_START, x, y, 0), 4);
                 if (!(known_tmax(c) && v > tmax)) /* N4 */
-                FZ_CHECK(fz_finite(v) && v >= 0.0f && v <= tmax, "pixel (%u, %u) start %g outside [0, t_max %g] (method %u)",
-                         x, y, (double)v, (double)tmax, c->cfg.method);
+                    FZ_CHECK(fz_finite(v) && v >= 0.0f && v <= tmax, "pixel (%u, %u) start %g outside [0, t_max %g] (method %u)",
+                             x, y, (double)v, (double)tmax, c->cfg.method);
             }
             if (m->p[B_HIT]) {
                 hit = *img_at(m, B_HIT, x, y, 0);
