@@ -24,9 +24,12 @@
    whatever the split into rows, tiles or tile buffers; camera rays are unit; trace, march
    and shade_point report t within [t_start, t_max].
 
+   -DFZ_VERBOSE prints the scenario (geometry, config, camera) to stderr.
    -DFZ_IGNORE_KNOWN: development switch that steers around the findings F1-F6 of issue 10
    (huge camera vectors and image points, huge or denormal builder parameters, hostile
-   callbacks, depth beyond t_max from the head-start methods, unchecked node parameters), so
+   callbacks, depth beyond t_max from the head-start methods, unchecked node parameters) and
+   N3 (fovsdf_trace of IPR/SKIP/FIPR contexts backing up before t_start) and N4 (CONE's
+   head start past t_max), so
    a fuzzing run can find something new before those fixes land. Never used by run.sh. */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -479,7 +482,7 @@ static float rgb_bound(const fovsdf_ctx *c)
     const fovsdf_scene *s = &c->scene;
     float sky = 0.0f, lit = 0.0f, hi;
     uint32_t k, j;
-    if (c->cfg.shading >= FOVSDF_SHADE_NORMALS) return 1.0f;
+    if (c->cfg.shading >= FOVSDF_SHADE_NORMALS) return 1.0f + 1e-5f; /* a unit normal's last ulp */
     for (j = 0; j < 3; ++j) {
         float a = s->ambient[j];
         if (s->sky_zenith[j] > sky) sky = s->sky_zenith[j];
@@ -500,7 +503,7 @@ static float rgb_floor(const fovsdf_ctx *c)
         if (s->sky_zenith[j] < lo) lo = s->sky_zenith[j];
         if (s->sky_horizon[j] < lo) lo = s->sky_horizon[j];
     }
-    return lo;
+    return lo - 1e-5f; /* 0.5 + 0.5 n of a unit normal can round below 0 */
 }
 
 /* ---- image buffers ------------------------------------------------------------------- */
@@ -617,8 +620,9 @@ static void check_pixels(const fovsdf_ctx *c, const imgset *m)
             }
             if (m->p[B_START]) {
                 memcpy(&v, img_at(m, B_START, x, y, 0), 4);
-                FZ_CHECK(fz_finite(v) && v >= 0.0f && v <= tmax, "pixel (%u, %u) start %g outside [0, t_max %g] (method %u)",
-                         x, y, (double)v, (double)tmax, c->cfg.method);
+                if (!(known_tmax(c) && v > tmax)) /* N4 */
+                    FZ_CHECK(fz_finite(v) && v >= 0.0f && v <= tmax, "pixel (%u, %u) start %g outside [0, t_max %g] (method %u)",
+                             x, y, (double)v, (double)tmax, c->cfg.method);
             }
             if (m->p[B_HIT]) {
                 hit = *img_at(m, B_HIT, x, y, 0);
@@ -800,7 +804,10 @@ static void ray_checks(fz_in *in, const fovsdf_ctx *ctx, const scen *s, int H)
         if (fz_u8(in) & 1u) { rd[0] = d[0]; rd[1] = d[1]; rd[2] = d[2]; } /* not unit */
         memset(&hit, 0, sizeof hit);
         r = fovsdf_trace(ctx, ro, rd, t0, &hit, NULL);
-        if (r == FOV_OK && !(known_tmax(ctx) && hit.t > ctx->t_max)) check_hit(&hit, t0, ctx->t_max, ctx->cfg.max_steps, "trace");
+        if (r == FOV_OK && !(known_tmax(ctx) && hit.t > ctx->t_max) &&
+            !(fz_known_off && hit.t < t0 && (ctx->cfg.method == FOVSDF_METHOD_IPR || ctx->cfg.method == FOVSDF_METHOD_SKIP ||
+                                             ctx->cfg.method == FOVSDF_METHOD_FIPR))) /* N3 */
+            check_hit(&hit, t0, ctx->t_max, ctx->cfg.max_steps, "trace");
         memset(&mp, 0, sizeof mp);
         mp.method = fz_pick(in, 5);
         mp.max_steps = ms_t[fz_pick(in, 6)];

@@ -425,6 +425,33 @@ def regressions():
         render(e, 16, 16, split=0)
         rays(e, 0, 16, 16)
         out['F3_t_max_%s.bin' % mname] = e.b
+    # F3 with CLASSIC and RELAXED too (found by this harness; the issue names the other
+    # tracers): Primitives seen from (6, 6, 6), config t_max 110.588, depth shading: grey
+    # -0.24 at pixel (4, 3), a hit at t ~ 137
+    for mname in ('classic', 'relaxed'):
+        e = Enc()
+        H = HC | HM
+        e.u8(H)
+        g_builtin(e, 0)
+        config(e, H, method=METHOD[mname], eps=0.00128908, eps_px=0.437507, max_steps=64, t_max=110.588, shading=3)
+        camera(e, H, 5, 5, pos=(6.0, 6.0, 6.0), target=(-1.66404, 0.317647, 0.317647), up=(0.105882, 0.105882, 0.788235),
+               fov=62.5022)
+        look(e, 0)
+        render(e, 5, 5, split=0)
+        rays(e, 0, 5, 5)
+        out['F3_t_max_%s_primitives.bin' % mname] = e.b
+    # F3 with RELAXED through fovsdf_shade_point on the exact callback scene, default config
+    # (found by this harness): shade_point(3.529, 2.647) t = 141.7 past t_max 100
+    e = Enc()
+    H = HM | HR
+    e.u8(H)
+    g_callback(e, 0, flags=1)
+    config(e, 0, method=METHOD['relaxed'])
+    camera(e, H, 12, 9, pos=(9.15527e-05, 1.00005, -4.00009), target=(4.57764e-05, 4.57764e-05, 4.57764e-05))
+    look(e, 0)
+    render(e, 12, 9, split=0)
+    rays(e, H, 12, 9, points=((3.52941, 2.64706),))
+    out['F3_shade_point_relaxed.bin'] = e.b
     # F3 through fovsdf_shade_point (found by this harness): the Thin scene, CONE_FOV with its
     # default BV2018 finish, 3x3, 32 steps: shade_point(-3, -3) reports t = 49.03 past the
     # scene's t_max of 40
@@ -438,6 +465,35 @@ def regressions():
     render(e, 3, 3, split=0)
     rays(e, H, 3, 3, points=((-3.0, -3.0),))
     out['F3_shade_point_cone_fov.bin'] = e.b
+    # N3 (found by this harness): a context of a head-start method that verifies its starts
+    # (IPR, SKIP, FIPR) makes fovsdf_trace from a t_start inside the surface report a hit at
+    # t = 0 < t_start (NUMERICS: a ray that starts inside reports a hit at t_start); the
+    # camera sits 0.47 below the callback scene's floor
+    for mname in ('ipr', 'skip', 'fipr'):
+        e = Enc()
+        H = 0
+        e.u8(H)
+        g_callback(e, H, flags=1)
+        config(e, H, method=METHOD[mname])
+        camera(e, H, 12, 9, pos=(0.0, -1.46661, -5.95312), target=(3.0, -2.99982, -2.94708), fov=1.40627)
+        look(e, H)
+        render(e, 12, 9, split=0)
+        rays(e, H, 12, 9, traces=(((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.129702, 3),))
+        out['N3_trace_inside_start_%s.bin' % mname] = e.b
+    # N4 (found by this harness): CONE writes a head start (output.start) past t_max:
+    # Primitives with the scene's t_max set to 199.918, 8x8, 32 steps: pixel (2, 3) start
+    # 215.675 (the documented range is [0, t_max], t_max for a proven-empty cell)
+    e = Enc()
+    H = HC | HM | HS
+    e.u8(H)
+    g_builtin(e, 0)
+    config(e, H, method=METHOD['cone'], eps=0.00890639, eps_px=1.78824, max_steps=32)
+    camera(e, H, 8, 8, pos=(0.119112, 0.494118, 4.71293), target=(2.36471, 2.36471, -1.92442),
+           up=(-0.0399023, -0.993042, -1.0), fov=29.6471)
+    look(e, H, t_max=199.918)
+    render(e, 8, 8, split=0)
+    rays(e, 0, 8, 8)
+    out['N4_cone_start_past_t_max.bin'] = e.b
     # F4: FIPR / CONE_FOV interpolated depth beyond the scene's t_max (Primitives at 10x7)
     for mname in ('fipr', 'cone_fov'):
         e = Enc()

@@ -15,7 +15,8 @@
 #                  that name and every target named word_* (FUZZ_TARGETS=fovsdf selects
 #                  fovsdf, fovsdf_render, fovsdf_program); shell globs work (fov*). Default:
 #                  all.
-#   FUZZ_SECONDS   seconds of fuzzing per target (default 60; make test passes 20)
+#   FUZZ_SECONDS   seconds of fuzzing per target (default 60; make test passes 20; 0: only
+#                  run the corpus and regression inputs once through the libFuzzer build)
 #   FUZZ_MAX_LEN   libFuzzer -max_len (default 4096)
 #   FUZZ_TIMEOUT   libFuzzer -timeout per input, seconds (default 10): slower is a failure
 #   FUZZ_FLAGS     extra libFuzzer flags (e.g. "-jobs=2 -workers=2", "-only_ascii=1")
@@ -32,6 +33,8 @@
 #                                   (+ float-cast-overflow) -fno-sanitize-recover=all
 #     build/fuzz/replay_<t>_nolibm  $CC -O2 -DFOV_NO_LIBM (the built-in math approximations)
 #   Each input of each build is one check; a build that fails to compile is one failure.
+#   tests/fuzz/pending/<t>/ (regression inputs whose fix is not merged yet) is not replayed:
+#   bash tests/fuzz/run.sh repro <t> tests/fuzz/pending/<t>/* shows their state.
 # fuzz: build/fuzz/fuzz_<t> = clang -O1 -g -fsanitize=fuzzer,address,undefined
 #   -fno-sanitize-recover=all, run as
 #     build/fuzz/fuzz_<t> -max_total_time=$FUZZ_SECONDS -max_len=$FUZZ_MAX_LEN
@@ -104,12 +107,23 @@ inputs() {
 
 # build NAME OUT COMPILER FLAGS...: compile tests/fuzz/fuzz_NAME.c (+ replay.c for gcc builds)
 build() {
+    build_start "$@"
+    wait
+    build_ok "$2"
+}
+# build_start: the same in the background (the builds of one step share the 2 CPUs);
+# build_ok OUT after `wait` reports it
+build_start() {
     local t=$1 out=$2 cc=$3 log
     shift 3
     log="$B/logs/build_${out##*/}.log"
-    if "$cc" "${COMMON[@]}" "$@" "$F/fuzz_$t.c" -lm -o "$out" >"$log" 2>&1; then
-        return 0
-    fi
+    rm -f "$out"
+    ( if "$cc" "${COMMON[@]}" "$@" "$F/fuzz_$t.c" -lm -o "$out" >"$log" 2>&1; then echo 0; else echo 1; fi >"$log.rc" ) &
+}
+build_ok() {
+    local out=$1 log
+    log="$B/logs/build_${out##*/}.log"
+    if [ "$(cat "$log.rc" 2>/dev/null)" = 0 ] && [ -x "$out" ]; then return 0; fi
     fail "build ${out##*/}: compile error (log: $log): $(grep -m 3 -E 'error' "$log" | tr '\n' ' ' | cut -c1-400)"
     return 1
 }
@@ -145,10 +159,13 @@ do_replay() {
             fail "replay $t: no tests/fuzz/corpus/$t/ (commit a seed corpus)"
             continue
         fi
-        if build "$t" "$B/replay_$t" "$CC" "${SAN_GCC[@]}" "$F/replay.c"; then
+        build_start "$t" "$B/replay_$t" "$CC" "${SAN_GCC[@]}" "$F/replay.c"
+        build_start "$t" "$B/replay_${t}_nolibm" "$CC" -O2 -DFOV_NO_LIBM "$F/replay.c"
+        wait
+        if build_ok "$B/replay_$t"; then
             replay_dirs "$B/replay_$t" "$t" "${dirs[@]}"
         fi
-        if build "$t" "$B/replay_${t}_nolibm" "$CC" -O2 -DFOV_NO_LIBM "$F/replay.c"; then
+        if build_ok "$B/replay_${t}_nolibm"; then
             replay_dirs "$B/replay_${t}_nolibm" "${t}_nolibm" "${dirs[@]}"
         fi
     done
@@ -175,8 +192,17 @@ do_fuzz() {
         fi
         return
     fi
+    # build two at a time, then fuzz one after the other
+    local i
+    for ((i = 0; i < ${#TARGETS[@]}; i += 2)); do
+        build_start "${TARGETS[i]}" "$B/fuzz_${TARGETS[i]}" "$FUZZ_CC" "${SAN_FUZZ[@]}"
+        if [ $((i + 1)) -lt ${#TARGETS[@]} ]; then
+            build_start "${TARGETS[i + 1]}" "$B/fuzz_${TARGETS[i + 1]}" "$FUZZ_CC" "${SAN_FUZZ[@]}"
+        fi
+        wait
+    done
     for t in "${TARGETS[@]}"; do
-        build "$t" "$B/fuzz_$t" "$FUZZ_CC" "${SAN_FUZZ[@]}" || continue
+        build_ok "$B/fuzz_$t" || continue
         mkdir -p "$B/corpus/$t" "$B/crashes/$t"
         mapfile -t dirs < <(inputs "$t")
         log="$B/logs/fuzz_$t.log"
@@ -195,7 +221,7 @@ do_fuzz() {
         crash=$(grep -E "^(Test unit written to|artifact_prefix=)" "$log" | grep -oE "$B/crashes/$t/[^ ]+" | tail -1)
         summary="executions ${execs:-?}, exec/s ${eps:-?}, cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?}"
         if [ "$rc" -eq 0 ] && [ -z "$crash" ]; then
-            pass "fuzz $t: ${FUZZ_SECONDS} s, $summary, crashes 0"
+            pass "fuzz $t: $([ "${limit[0]}" = -runs=0 ] && echo "inputs run once" || echo "${FUZZ_SECONDS} s"), $summary, crashes 0"
         else
             why=$(grep -m 1 -E '^==[0-9]+==ERROR|FUZZ CONTRACT|runtime error|ALARM|Timeout|out-of-memory' "$log" | cut -c1-300)
             if [ -n "$crash" ]; then
