@@ -258,7 +258,7 @@ RECENT REVISION HISTORY
 #define FOVPT_VERSION_MAJOR 0
 #define FOVPT_VERSION_MINOR 2
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.1.0"
+#define FOVPT_VERSION_STRING "0.2.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
@@ -1053,20 +1053,36 @@ FOVPT__PRIV void fovpt__cross(const float a[3], const float b[3], float r[3])
     float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
     r[0] = x; r[1] = y; r[2] = z;
 }
-FOVPT__PRIV float fovpt__normalize(float v[3])
-{
-    float l = fovpt__len(v);
-    if (l > 0.0f && fovpt__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
-    return l;
-}
-/* Brings a direction whose squared length would underflow or overflow (largest component
-   below 1e-15 or above 1e15) to a largest component of 1 before normalising; other vectors
-   are untouched, bit for bit. For user input of "any length" (camera vectors, plane and
-   hook normals). */
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
 FOVPT__PRIV void fovpt__prescale(float v[3])
 {
     float m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
     if (m > 0.0f && fovpt__finite(m) && (m < 1e-15f || m > 1e15f)) { v[0] /= m; v[1] /= m; v[2] /= m; }
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fovpt__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOVPT__PRIV float fovpt__normalize(float v[3])
+{
+    float l2 = fovpt__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOVPT__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fovpt__finite(v[0]) || !fovpt__finite(v[1]) || !fovpt__finite(v[2])) return 0.0f;
+    m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fovpt__len(v); /* in [1, sqrt 3] */
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return m * l;
 }
 FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
 FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
@@ -1322,10 +1338,11 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
     if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
-    fovpt__prescale(f);   /* a view vector of 1e-25 or an up hint of 1e-30 is valid */
-    fovpt__prescale(u);
+    /* a view vector of 1e-25 or 3e38 and an up hint of 1e-30 or 3e38 are valid: the
+       normalisation prescales; a view vector that overflows (target - pos beyond FLT_MAX)
+       or is zero is degenerate */
     lf = fovpt__normalize(f);
-    if (!(lf > 0.0f) || !fovpt__finite(lf)) return FOV_ERR_DEGENERATE;
+    if (!(lf > 0.0f)) return FOV_ERR_DEGENERATE;
     fovpt__normalize(u);
     fovpt__cross(f, u, r);
     lr = fovpt__normalize(r);
@@ -1350,15 +1367,18 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     return FOV_OK;
 }
 
-FOVPT__PRIV void fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
-                                uint32_t w, uint32_t h, float x, float y, float dir[3])
+/* The unit direction through image point (x, y); returns its length before normalising,
+   0 when it is not finite (x or y so far off the image that the image-plane offset
+   overflows: only fovpt_camera_ray can ask for such points). */
+FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
+                                 uint32_t w, uint32_t h, float x, float y, float dir[3])
 {
     float sx = tan4[0] + (tan4[1] - tan4[0]) * (x / (float)w);
     float sy = tan4[2] + (tan4[3] - tan4[2]) * (y / (float)h);
     dir[0] = f[0] + sx * r[0] + sy * u[0];
     dir[1] = f[1] + sx * r[1] + sy * u[1];
     dir[2] = f[2] + sx * r[2] + sy * u[2];
-    fovpt__normalize(dir);
+    return fovpt__normalize(dir);
 }
 
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
@@ -1369,8 +1389,8 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
     if (!fovpt__finite(x) || !fovpt__finite(y)) return FOV_ERR_NOT_FINITE;
     e = fovpt__camera_setup(cam, r, u, f, t4);
     if (e != FOV_OK) return e;
+    if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f)) return FOV_ERR_INVALID_ARG;
     fovpt__copy3(org, cam->pos);
-    fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir);
     return FOV_OK;
 }
 
@@ -1384,6 +1404,7 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
     if (e != FOV_OK) return e;
     /* invert fovpt__primary: direction f + sx r + sy u through (x, y) */
     fovpt__sub3(d, p, cam->pos);
+    fovpt__prescale(d); /* a point 1e30 away: the ratios below do not depend on |d| */
     z = fovpt__dot(d, f);
     if (!(z > 1e-6f * fovpt__len(d))) return FOV_ERR_INVALID_ARG;
     sx = fovpt__dot(d, r) / z;
@@ -1944,7 +1965,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p = &prims[np++];
         FOV_MEMSET(p, 0, sizeof *p);
         p->type = FOVPT_SHAPE_PLANE; p->material = sh->material; p->id = i;
-        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__prescale(p->n); fovpt__normalize(p->n);
+        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__normalize(p->n);
     }
     FOV_ASSERT(np == L.n_prims && nb == L.n_bounded);
     /* lights: sampleable emitters, picked by area * mean emission */
@@ -2300,7 +2321,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         float tu = t;
         un[0] = un[1] = un[2] = 0.0f;
         if (s->user_hit(org, dir, tmin, t, &tu, un, &umat, s->user) && tu > tmin && tu < t &&
-            umat < s->num_materials && fovpt__finite3(un) && (fovpt__prescale(un), fovpt__normalize(un) > 0.0f)) {
+            umat < s->num_materials && fovpt__normalize(un) > 0.0f) {
             t = tu;
             user = 1;
         }

@@ -2060,8 +2060,159 @@ static void test_set_view_atomic(void)
     free(F.b.mem);
 }
 
+/* ==== issue 10: F1 camera rays, F7 BVH box test, BVH = brute force on adversarial scenes === */
+/* the camera ray in double, from the documented model: f = normalize(target - pos), right =
+   normalize(f x up), up' = right x f, image-plane offsets sx = tan_l + (tan_r - tan_l) x / w,
+   sy = tan_t + (tan_b - tan_t) y / h (symmetric: tan_r = -tan_l = ty w / h, ty = tan(fov/2)) */
+static int ref_camera_dir(const fovpt_camera *c, double x, double y, double d[3])
+{
+    double f[3], u[3], r[3], l, ty, tx, sx, sy;
+    int k;
+    for (k = 0; k < 3; ++k) { f[k] = (double)c->target[k] - (double)c->pos[k]; u[k] = c->up[k]; }
+    l = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]); for (k = 0; k < 3; ++k) f[k] /= l;
+    l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); for (k = 0; k < 3; ++k) u[k] /= l;
+    r[0] = f[1] * u[2] - f[2] * u[1]; r[1] = f[2] * u[0] - f[0] * u[2]; r[2] = f[0] * u[1] - f[1] * u[0];
+    l = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]); for (k = 0; k < 3; ++k) r[k] /= l;
+    u[0] = r[1] * f[2] - r[2] * f[1]; u[1] = r[2] * f[0] - r[0] * f[2]; u[2] = r[0] * f[1] - r[1] * f[0];
+    ty = tan(0.5 * (double)(c->fov_y_deg > 0.0f ? c->fov_y_deg : 60.0f) * 3.14159265358979323846 / 180.0);
+    tx = ty * (double)c->width / (double)c->height;
+    sx = -tx + 2.0 * tx * x / (double)c->width;
+    sy = ty - 2.0 * ty * y / (double)c->height;
+    for (k = 0; k < 3; ++k) d[k] = f[k] + sx * r[k] + sy * u[k];
+    l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (k = 0; k < 3; ++k) d[k] /= l;
+    return fabs(sx) < 1e37 && fabs(sy) < 1e37; /* float image-plane offsets surely finite */
+}
+
+static void test_f1_camera_ray(void)
+{
+    static const float pts[][2] = { { 0.5f, 0.5f }, { 1e30f, 0.5f }, { 0.5f, 1e30f }, { -1e30f, -1e30f }, { 1e20f, -3e19f },
+                                    { 3e38f, 0.5f }, { 0.5f, -3e38f }, { 1e-30f, 0.25f }, { 7.0f, 1e36f } };
+    static const float ups[][3] = { { 3e38f, 3e38f, 3e38f }, { 0.0f, 1.0f, 0.0f }, { 1e-30f, 3e-30f, 0.0f }, { -3e38f, 3e38f, 1.0f } };
+    int np = (int)(sizeof pts / sizeof pts[0]), nu = (int)(sizeof ups / sizeof ups[0]), i, j, c, bad_ok = 0, bad_code = 0, oks = 0,
+        errs = 0;
+    for (c = 0; c < 3; ++c)
+        for (j = 0; j < nu; ++j) {
+            fovpt_camera cam;
+            fovpt_camera_init(&cam, c == 0 ? 1u : 16u, c == 0 ? 1u : 9u);
+            cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 0.0f;
+            cam.target[0] = c == 2 ? 3e38f : 0.1f; cam.target[1] = 0.0f; cam.target[2] = c == 2 ? 3e38f : 1.0f;
+            cam.up[0] = ups[j][0]; cam.up[1] = ups[j][1]; cam.up[2] = ups[j][2];
+            for (i = 0; i < np; ++i) {
+                float o[3], d[3];
+                double ref[3], l, cosang;
+                int finite_ref = ref_camera_dir(&cam, (double)pts[i][0], (double)pts[i][1], ref);
+                fov_result e = fovpt_camera_ray(&cam, pts[i][0], pts[i][1], o, d);
+                if (e == FOV_OK) {
+                    l = sqrt((double)d[0] * (double)d[0] + (double)d[1] * (double)d[1] + (double)d[2] * (double)d[2]);
+                    cosang = ((double)d[0] * ref[0] + (double)d[1] * ref[1] + (double)d[2] * ref[2]) / l;
+                    if (!(fabs(l - 1.0) < 1e-6) || !(cosang > 1.0 - 1e-9)) {
+                        if (bad_ok < 3)
+                            printf("  camera %d up %d point (%g, %g): |dir| %.9g, cos to reference %.12g\n", c, j,
+                                   (double)pts[i][0], (double)pts[i][1], l, cosang);
+                        bad_ok++;
+                    }
+                    oks++;
+                } else {
+                    if (finite_ref || e != FOV_ERR_INVALID_ARG) bad_code++; /* offsets > 1e37: either */
+                    errs++;
+                }
+            }
+        }
+    check(bad_ok == 0 && oks > 60, "F1: fovpt_camera_ray: every FOV_OK ray is finite, unit and the double-precision ray",
+          "%d of %d FOV_OK rays wrong", bad_ok, oks);
+    check(bad_code == 0 && errs > 0, "F1: image points whose image-plane offset overflows: FOV_ERR_INVALID_ARG, the others FOV_OK",
+          "%d wrong codes of %d errors", bad_code, errs);
+    {   /* a view vector that overflows (target - pos beyond FLT_MAX) is degenerate */
+        fovpt_camera cam;
+        float o[3], d[3];
+        fovpt_camera_init(&cam, 1, 1);
+        cam.pos[2] = -3e38f; cam.target[2] = 3e38f;
+        check(fovpt_camera_ray(&cam, 0.5f, 0.5f, o, d) == FOV_ERR_DEGENERATE, "F1: a view vector beyond FLT_MAX: FOV_ERR_DEGENERATE", " ");
+    }
+}
+
+static void test_version(void)
+{
+    char want[32], *src = read_file("fovpt.h"), line1[40];
+    snprintf(want, sizeof want, "%d.%d.%d", FOVPT_VERSION_MAJOR, FOVPT_VERSION_MINOR, FOVPT_VERSION_PATCH);
+    snprintf(line1, sizeof line1, "- v%s -", FOVPT_VERSION_STRING);
+    check(strcmp(want, FOVPT_VERSION_STRING) == 0, "FOVPT_VERSION_STRING matches MAJOR.MINOR.PATCH", "%s vs %s", FOVPT_VERSION_STRING, want);
+    check(src && strchr(src, '\n') && strstr(src, line1) && strstr(src, line1) < strchr(src, '\n'),
+          "FOVPT_VERSION_STRING matches the version on line 1", "looked for \"%s\"", line1);
+    free(src);
+}
+
+/* one triangle or quad scene for the F7 cases */
+static fov_result f7_scene(scene_buf *b, const float *pos, uint32_t ntri, const fovpt_shape *sh, uint32_t ns, uint32_t min_prims,
+                           fovpt_mesh *mesh, fovpt_material *m)
+{
+    fovpt_scene_desc d;
+    fovpt_material_init(m);
+    memset(mesh, 0, sizeof *mesh);
+    mesh->positions = pos; mesh->num_vertices = 3u * ntri; mesh->num_triangles = ntri;
+    fovpt_scene_desc_init(&d);
+    d.meshes = ntri ? mesh : NULL; d.num_meshes = ntri ? 1u : 0u;
+    d.shapes = sh; d.num_shapes = ns;
+    d.materials = m; d.num_materials = 1;
+    d.bvh_min_prims = min_prims;
+    return build(b, &d);
+}
+
+static void test_f7_regressions(void)
+{
+    fovpt_material m;
+    fovpt_mesh mesh;
+    scene_buf b;
+    fovpt_hit h, hb;
+    memset(&h, 0, sizeof h); memset(&hb, 0, sizeof hb);
+    {   /* (a) an axis-parallel ray lying in the box's max face x = 1 */
+        static const float tri[9] = { -2, -2, 0, 1, -2, 0, 1, 1, 0 };
+        const float o[3] = { 1.0f, 0.0f, 1.0f }, d[3] = { 0.0f, 0.0f, -1.0f };
+        int a = 0, ab = 0, oc = 0;
+        if (f7_scene(&b, tri, 1, NULL, 0, 1, &mesh, &m) == FOV_OK && b.s.nodes) {
+            a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            ab = fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &hb);
+            oc = fovpt_occluded(&b.s, o, d, 0.0f, 2.0f);
+        }
+        /* independent: the point (1, 0, 0) lies on the edge x = 1 of the triangle, t = 1 */
+        check(ab && hb.t == 1.0f, "F7a: brute force hits the edge x = 1 at t = 1 (reference)", "hit %d t %g", ab, (double)hb.t);
+        check(a && h.t == 1.0f, "F7a: fovpt_intersect: a ray along -z in the box's max face hits at t = 1", "hit %d t %g", a,
+              (double)h.t);
+        check(oc == 1, "F7a: fovpt_occluded: the same ray is occluded before t = 2", "occluded %d", oc);
+        free(b.mem);
+    }
+    {   /* (b) a flat square [-1, 0]^2 at z = -1 (two triangles; as a quad), a ray that needs a
+           rounding margin in the box test */
+        static const float sq[18] = { -1, -1, -1, 0, -1, -1, 0, 0, -1, -1, -1, -1, 0, 0, -1, -1, 0, -1 };
+        const float o[3] = { 2.558f, 1.0000001f, 1.0000001f }, d[3] = { -1.558f, -0.5f, -1.0f };
+        fovpt_shape q;
+        const float qp[3] = { -1, -1, -1 }, qu[3] = { 1, 0, 0 }, qv[3] = { 0, 1, 0 };
+        int rep;
+        fovpt_shape_quad(&q, qp, qu, qv, 0);
+        for (rep = 0; rep < 2; ++rep) {
+            int a = 0, ab = 0, oc = 0, ok;
+            if (rep == 0) ok = f7_scene(&b, sq, 2, NULL, 0, 1, &mesh, &m) == FOV_OK;
+            else ok = f7_scene(&b, NULL, 0, &q, 1, 1, &mesh, &m) == FOV_OK;
+            if (ok && b.s.nodes) {
+                a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+                ab = fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &hb);
+                oc = fovpt_occluded(&b.s, o, d, 0.0f, 3.0f);
+            }
+            check(ok && b.s.nodes && a == ab && (!a || h.t == hb.t) && oc == ab,
+                  N("F7b: flat square as %s: BVH = brute force on a ray 1 ulp outside its box", rep ? "a quad" : "two triangles"),
+                  "BVH %d (t %g), brute %d (t %g), occluded %d", a, (double)h.t, ab, (double)hb.t, oc);
+            if (rep == 0) check(ab && fabsf(hb.t - 2.0f) < 1e-6f, "F7b: brute force hits the two-triangle square at t = 2", "%d %g", ab, (double)hb.t);
+            free(b.mem);
+        }
+    }
+}
+
 int main(void)
 {
+    test_version();
+    test_f1_camera_ray();
+    test_f7_regressions();
     test_api();
     test_ecc();
     test_eyes();
