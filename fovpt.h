@@ -2232,6 +2232,11 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
    a direction whose largest component lies outside [2^-32, 2^32] is scaled by a power of
    two (exact) to one in [2^-16, 2^16); tmin, tmax and the hit t are rescaled alike.
    Returns the factor applied to t (1 for ordinary directions, bit for bit as before). */
+FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside [2^-32, 2^32] */
+{
+    float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2])));
+    return !(m >= 2.3283064365386963e-10f && m <= 4294967296.0f);
+}
 FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
 {
     float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2]))), sc = 1.0f;
@@ -2431,8 +2436,11 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     int user = 0;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
-    if (!fovpt__finite3(dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
-    {
+    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fovpt__dir_odd(dir)) {
+        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
+    } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
@@ -2508,8 +2516,11 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     fovpt__ray r;
     float t = tmax;
     if (!s || !org || !dir || !s->prims) return 0;
-    if (!fovpt__finite3(dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
-    {
+    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fovpt__dir_odd(dir)) {
+        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
+    } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         t = tmax * sc;
