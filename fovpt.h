@@ -41,7 +41,8 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       traversal (each node opens its largest inner children until it has four; the four
       boxes are tested in one SSE pass on x86, one after another elsewhere); planes and the
       user hook are tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
-      plain loop.
+      plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
+      the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
       counter-based integer hash, no state outside the stream).
    3. Radiance (fovpt_radiance): Kajiya's rendering equation (seed 002 Eq. 2.1) estimated by
@@ -210,6 +211,33 @@ NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
      FOVPT_RAY_EPS * (1 + max |coordinate|) (default 1e-4): keep scenes of size 1e-2 .. 1e3
      around the origin.
+   - BVH = brute force: the box test is conservative, so fovpt_intersect and fovpt_occluded
+     find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests).
+     Slabs (Kay-Kajiya) with 1 / d = +inf for a zero direction component; a ray lying in a
+     slab's face plane gives 0 * inf = NaN, which the max/min operand order drops (the slab
+     does not constrain it), both on the SSE and the scalar path (FOVPT_NO_SIMD, wasm32,
+     Cortex-M); boxes of zero thickness and rays starting on a face are inside. Each box's
+     exit distance is widened to exit * (1 + 2^-21) (+ 2^-19 |tmin| when tmin < 0) before
+     the comparison (Ize 2013, "Robust BVH Ray Traversal": a slab distance is within
+     gamma(3) of its exact value), and the boxes of triangles, quads and spheres are padded
+     by 2^-21 of their largest coordinate magnitude (the triangle records hold v0 and
+     rounded edges; the float tests accept points a few ulps outside). Checked against
+     brute force on adversarial scenes (flat axis-aligned quads, rays in faces and along
+     axes, grazing rays, zero-thickness boxes, 1e-3 .. 1e5 scales, bvh_min_prims 1 .. 4:
+     1.5 million rays, no miss). The only brute-force hits the BVH may skip lie outside
+     their primitive's box: rays (almost) in a triangle's plane whose t the float test
+     cannot resolve (about 1 in 10^5 of those adversarial rays).
+   - The triangle test (Moller-Trumbore) is not watertight: a ray aimed exactly at a shared
+     edge (to float precision) hits neither triangle in about 10 % of the cases; random
+     rays from inside a closed 3072-triangle mesh: none of 200000 leaked.
+   - Vectors of any finite length are normalised (prescaled when their squared length
+     would under- or overflow): camera vectors, plane and hook normals, triangle and quad
+     normals, ray directions (the ray tests scale a direction outside [2^-32, 2^32] by a
+     power of two, exactly). fovpt_camera_ray returns FOV_ERR_INVALID_ARG for an image
+     point whose image-plane offset overflows (|x| or |y| near FLT_MAX / the tangent);
+     every FOV_OK ray is finite and unit. Triangle tests multiply three coordinates:
+     coordinates and ray origins up to about 1e12 (beyond, the products overflow and rays
+     miss); triangles with edges up to 1e19 build.
    - Random streams are 32-bit integer hashes: identical on every target. Images are
      identical across targets up to libm differences (tests/xtarget states the tolerance).
 
@@ -645,7 +673,10 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
 
 FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t height);
-/* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5). */
+/* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5): dir
+   unit and finite. Any finite (x, y) off the image works (x = 1e30 gives the ray along the
+   image's right axis) until the image-plane offset overflows: then FOV_ERR_INVALID_ARG
+   (this function has no logger; fovpt_init and fovpt_set_view log camera errors). */
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3],
                                       float dir[3]);
 /* Per-eye gaze. The image point of world point p seen by this camera (pixels, continuous;
@@ -680,7 +711,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *scene, const fovpt_scene_des
                                        void *mem, size_t bytes);
 
 /* Closest hit in (tmin, tmax): 1 and *hit filled, or 0 (also for bad input). dir need not be
-   unit length (t is in units of dir). _brute tests every primitive (the reference). */
+   unit length (t is in units of dir; any finite non-zero length). _brute tests every
+   primitive (the reference); the BVH finds the same closest t (NUMERICS). */
 FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3],
                               float tmin, float tmax, fovpt_hit *hit);
 FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3],
@@ -1053,20 +1085,36 @@ FOVPT__PRIV void fovpt__cross(const float a[3], const float b[3], float r[3])
     float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
     r[0] = x; r[1] = y; r[2] = z;
 }
-FOVPT__PRIV float fovpt__normalize(float v[3])
-{
-    float l = fovpt__len(v);
-    if (l > 0.0f && fovpt__finite(l)) { v[0] /= l; v[1] /= l; v[2] /= l; }
-    return l;
-}
-/* Brings a direction whose squared length would underflow or overflow (largest component
-   below 1e-15 or above 1e15) to a largest component of 1 before normalising; other vectors
-   are untouched, bit for bit. For user input of "any length" (camera vectors, plane and
-   hook normals). */
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
 FOVPT__PRIV void fovpt__prescale(float v[3])
 {
     float m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
     if (m > 0.0f && fovpt__finite(m) && (m < 1e-15f || m > 1e15f)) { v[0] /= m; v[1] /= m; v[2] /= m; }
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fovpt__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOVPT__PRIV float fovpt__normalize(float v[3])
+{
+    float l2 = fovpt__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOVPT__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fovpt__finite(v[0]) || !fovpt__finite(v[1]) || !fovpt__finite(v[2])) return 0.0f;
+    m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fovpt__len(v); /* in [1, sqrt 3] */
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return m * l;
 }
 FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
 FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
@@ -1082,6 +1130,23 @@ FOVPT__PRIV float fovpt__max3(const float v[3]) { return fovpt__maxf(v[0], fovpt
 FOVPT__PRIV float fovpt__mean3(const float v[3]) { return (v[0] + v[1] + v[2]) * (1.0f / 3.0f); }
 FOVPT__PRIV int fovpt__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
 FOVPT__PRIV size_t fovpt__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+/* The unit normal a x b / |a x b| of edges of any finite length: when the cross product
+   under- or overflows, each edge is first scaled to a largest component of 1 (the
+   direction does not change). n = 0 when the edges are parallel or zero. */
+FOVPT__PRIV void fovpt__unit_normal(const float a[3], const float b[3], float n[3])
+{
+    float x[3], y[3], mx, my;
+    fovpt__cross(a, b, n);
+    if (fovpt__normalize(n) > 0.0f) return;
+    mx = fovpt__maxf(fovpt__absf(a[0]), fovpt__maxf(fovpt__absf(a[1]), fovpt__absf(a[2])));
+    my = fovpt__maxf(fovpt__absf(b[0]), fovpt__maxf(fovpt__absf(b[1]), fovpt__absf(b[2])));
+    fovpt__set3(n, 0.0f, 0.0f, 0.0f);
+    if (!(mx > 0.0f && my > 0.0f) || !fovpt__finite(mx) || !fovpt__finite(my)) return;
+    fovpt__set3(x, a[0] / mx, a[1] / mx, a[2] / mx);
+    fovpt__set3(y, b[0] / my, b[1] / my, b[2] / my);
+    fovpt__cross(x, y, n);
+    if (!(fovpt__normalize(n) > 0.0f)) fovpt__set3(n, 0.0f, 0.0f, 0.0f);
+}
 /* An orthonormal basis around unit n (Duff et al. 2017, branchless up to the sign). */
 FOVPT__PRIV void fovpt__basis(const float n[3], float t[3], float b[3])
 {
@@ -1322,10 +1387,11 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
     if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
-    fovpt__prescale(f);   /* a view vector of 1e-25 or an up hint of 1e-30 is valid */
-    fovpt__prescale(u);
+    /* a view vector of 1e-25 or 3e38 and an up hint of 1e-30 or 3e38 are valid: the
+       normalisation prescales; a view vector that overflows (target - pos beyond FLT_MAX)
+       or is zero is degenerate */
     lf = fovpt__normalize(f);
-    if (!(lf > 0.0f) || !fovpt__finite(lf)) return FOV_ERR_DEGENERATE;
+    if (!(lf > 0.0f)) return FOV_ERR_DEGENERATE;
     fovpt__normalize(u);
     fovpt__cross(f, u, r);
     lr = fovpt__normalize(r);
@@ -1350,15 +1416,18 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     return FOV_OK;
 }
 
-FOVPT__PRIV void fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
-                                uint32_t w, uint32_t h, float x, float y, float dir[3])
+/* The unit direction through image point (x, y); returns its length before normalising,
+   0 when it is not finite (x or y so far off the image that the image-plane offset
+   overflows: only fovpt_camera_ray can ask for such points). */
+FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
+                                 uint32_t w, uint32_t h, float x, float y, float dir[3])
 {
     float sx = tan4[0] + (tan4[1] - tan4[0]) * (x / (float)w);
     float sy = tan4[2] + (tan4[3] - tan4[2]) * (y / (float)h);
     dir[0] = f[0] + sx * r[0] + sy * u[0];
     dir[1] = f[1] + sx * r[1] + sy * u[1];
     dir[2] = f[2] + sx * r[2] + sy * u[2];
-    fovpt__normalize(dir);
+    return fovpt__normalize(dir);
 }
 
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
@@ -1369,8 +1438,8 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
     if (!fovpt__finite(x) || !fovpt__finite(y)) return FOV_ERR_NOT_FINITE;
     e = fovpt__camera_setup(cam, r, u, f, t4);
     if (e != FOV_OK) return e;
+    if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f)) return FOV_ERR_INVALID_ARG;
     fovpt__copy3(org, cam->pos);
-    fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir);
     return FOV_OK;
 }
 
@@ -1384,6 +1453,7 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
     if (e != FOV_OK) return e;
     /* invert fovpt__primary: direction f + sx r + sy u through (x, y) */
     fovpt__sub3(d, p, cam->pos);
+    fovpt__prescale(d); /* a point 1e30 away: the ratios below do not depend on |d| */
     z = fovpt__dot(d, f);
     if (!(z > 1e-6f * fovpt__len(d))) return FOV_ERR_INVALID_ARG;
     sx = fovpt__dot(d, r) / z;
@@ -1504,15 +1574,30 @@ typedef struct fovpt__layout {
     uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max;
 } fovpt__layout;
 
+/* |v| without the squares' under- or overflow (prescaled to a largest component of 1 when
+   the squared length would leave [1e-30, 1e30]); +inf only when |v| > FLT_MAX. */
+FOVPT__PRIV float fovpt__len_robust(const float v[3])
+{
+    float l2 = fovpt__dot(v, v), m, w[3];
+    if (l2 >= 1e-30f && l2 <= 1e30f) return FOVPT__SQRT(l2);
+    m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
+    if (!(m > 0.0f) || !fovpt__finite(m)) return m > 0.0f ? m : 0.0f;
+    fovpt__set3(w, v[0] / m, v[1] / m, v[2] / m);
+    return m * fovpt__len(w);
+}
 FOVPT__PRIV int fovpt__tri_area2(const float *v0, const float *v1, const float *v2, float *area2)
 {
-    float e1[3], e2[3], c[3];
+    float e1[3], e2[3], c[3], l1, l2, L;
     fovpt__sub3(e1, v1, v0);
     fovpt__sub3(e2, v2, v0);
     fovpt__cross(e1, e2, c);
-    *area2 = fovpt__len(c);
-    /* zero area, or below float resolution of the edge lengths */
-    return *area2 > 1e-12f * (fovpt__dot(e1, e1) + fovpt__dot(e2, e2)) && *area2 > 0.0f && fovpt__finite(*area2);
+    *area2 = fovpt__len_robust(c);
+    if (!(*area2 > 0.0f) || !fovpt__finite(*area2) || !fovpt__finite3(c)) return 0;
+    /* zero area, or below float resolution of the edge lengths: |e1 x e2| > 1e-12 (|e1|^2 +
+       |e2|^2), compared in units of the longer edge so that no square under- or overflows */
+    l1 = fovpt__len_robust(e1); l2 = fovpt__len_robust(e2); L = fovpt__maxf(l1, l2);
+    if (!fovpt__finite(L)) return 0;
+    return (*area2 / L) / L > 1e-12f * ((l1 / L) * (l1 / L) + (l2 / L) * (l2 / L));
 }
 
 FOVPT__PRIV int fovpt__emissive(const fovpt_material *m) { return fovpt__nonzero3(m->emission); }
@@ -1677,10 +1762,17 @@ FOVPT_API fov_result fovpt_scene_size(const fovpt_scene_desc *desc, size_t *byte
     return FOV_OK;
 }
 
-FOVPT__PRIV void fovpt__prim_box(const fovpt__prim *p, float lo[3], float hi[3])
+/* A primitive's bounding box. Triangle and quad corners are a + e (rounded: a triangle's
+   records hold v0 and the edges, so v0 + e1 need not be v1) and their ray tests round too;
+   their boxes and spheres' are widened by FOVPT__BOX_PAD of the largest coordinate
+   magnitude per axis (a few ulps), so no hit the primitive test reports lies outside its
+   box (the BVH property test against brute force). Boxes are their own slabs. */
+#define FOVPT__BOX_PAD 4.76837158203125e-07f /* 2^-21 */
+FOVPT__PRIV void fovpt__prim_box(const fovpt__prim *p, float lo[3], float hi[3], int padded)
 {
     uint32_t k;
     for (k = 0; k < 3; ++k) {
+        float pad;
         switch (p->type) {
         case FOVPT_SHAPE_SPHERE: lo[k] = p->a[k] - p->r; hi[k] = p->a[k] + p->r; break;
         case FOVPT_SHAPE_QUAD: {
@@ -1697,6 +1789,10 @@ FOVPT__PRIV void fovpt__prim_box(const fovpt__prim *p, float lo[3], float hi[3])
             break;
         }
         }
+        if (p->type == FOVPT_SHAPE_BOX || !padded) continue;
+        pad = fovpt__maxf(fovpt__absf(lo[k]), fovpt__absf(hi[k])) * FOVPT__BOX_PAD;
+        lo[k] -= pad;
+        hi[k] += pad;
     }
 }
 
@@ -1773,7 +1869,7 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
     for (i = 0; i < nb; ++i) {
         float *q = pb + 9u * (size_t)i;
         order[i] = i;
-        fovpt__prim_box(&prims[i], q, q + 3);
+        fovpt__prim_box(&prims[i], q, q + 3, 1);
         for (k = 0; k < 3; ++k) q[6 + k] = 0.5f * (q[k] + q[3 + k]);
     }
     stack[sp].node = 0; stack[sp].start = 0; stack[sp].count = nb; stack[sp].depth = 1; ++sp;
@@ -1906,7 +2002,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         fovpt__copy3(p->a, sh->p); p->r = sh->r;
         if (sh->type == FOVPT_SHAPE_QUAD) {
             fovpt__copy3(p->b, sh->u); fovpt__copy3(p->c, sh->v);
-            fovpt__cross(sh->u, sh->v, p->n); fovpt__normalize(p->n);
+            fovpt__unit_normal(sh->u, sh->v, p->n);
         } else if (sh->type == FOVPT_SHAPE_BOX) {
             fovpt__copy3(p->b, sh->u);
         }
@@ -1926,12 +2022,12 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                     i0 = 3u * k; i1 = i0 + 1u; i2 = i0 + 2u;
                 }
                 v0 = m->positions + 3u * (size_t)i0; v1 = m->positions + 3u * (size_t)i1; v2 = m->positions + 3u * (size_t)i2;
-                if (!fovpt__tri_area2(v0, v1, v2, &a2)) { ++skipped; continue; }
+                if (!fovpt__tri_area2(v0, v1, v2, &a2)) { ++skipped; ++id; continue; } /* ids stay k */
                 p = &prims[np++];
                 FOV_MEMSET(p, 0, sizeof *p);
                 p->type = FOVPT__TRI; p->material = m->material; p->id = id++;
                 fovpt__copy3(p->a, v0); fovpt__sub3(p->b, v1, v0); fovpt__sub3(p->c, v2, v0);
-                fovpt__cross(p->b, p->c, p->n); fovpt__normalize(p->n);
+                fovpt__unit_normal(p->b, p->c, p->n);
                 p->r = 0.5f * a2; /* area */
             }
         }
@@ -1944,7 +2040,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p = &prims[np++];
         FOV_MEMSET(p, 0, sizeof *p);
         p->type = FOVPT_SHAPE_PLANE; p->material = sh->material; p->id = i;
-        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__prescale(p->n); fovpt__normalize(p->n);
+        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__normalize(p->n);
     }
     FOV_ASSERT(np == L.n_prims && nb == L.n_bounded);
     /* lights: sampleable emitters, picked by area * mean emission */
@@ -1984,7 +2080,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     for (k = 0; k < 3; ++k) { s->bounds_lo[k] = FLT_MAX; s->bounds_hi[k] = -FLT_MAX; }
     for (i = 0; i < nb; ++i) {
         float lo[3], hi[3];
-        fovpt__prim_box(&prims[i], lo, hi);
+        fovpt__prim_box(&prims[i], lo, hi, 0); /* the public bounds: exact */
         for (k = 0; k < 3; ++k) { s->bounds_lo[k] = fovpt__minf(s->bounds_lo[k], lo[k]); s->bounds_hi[k] = fovpt__maxf(s->bounds_hi[k], hi[k]); }
     }
     {
@@ -2025,10 +2121,26 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
 
 /* ---- intersection ------------------------------------------------------------------------- */
 typedef struct fovpt__ray {
-    float o[3], d[3], inv[3];
+    float o[3], d[3], inv[3]; /* inv: 1 / d, +inf where d is +-0 */
     uint32_t nb[3], fb[3]; /* index into fovpt__node.b of each slab's near and far plane:
                               lo (k) and hi (3 + k), swapped where the direction is negative */
 } fovpt__ray;
+
+/* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): a box's exit
+   distance u is widened to u * FOVPT__BOX_GROW + k, k = FOVPT__BOX_NEG * |tmin| for a
+   negative tmin (0 otherwise), before it is compared with the entry distance. Each slab
+   distance (plane - o) * (1 / d) is within gamma(3) = 3 eps / (1 - 3 eps) of its exact
+   value (eps = 2^-24); 1 + 2^-21 > (1 + gamma(3)) / (1 - gamma(3)) with the rounding of the
+   product, so a ray that meets the exact box (faces included) is never culled. The
+   additive k covers exits behind the origin (u < 0), reachable only with tmin < 0. */
+#define FOVPT__BOX_GROW 1.000000476837158203125f /* 1 + 2^-21 */
+#define FOVPT__BOX_NEG 1.9073486328125e-06f      /* 2^-19 = 4 (GROW - 1) */
+FOVPT__PRIV float fovpt__inf(void)
+{
+    union { uint32_t u; float f; } b;
+    b.u = 0x7f800000u;
+    return b.f;
+}
 
 /* Nearest t in (tmin, tmax) of one primitive, or a value >= tmax. */
 FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float tmin, float tmax)
@@ -2090,12 +2202,15 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
         return (s >= 0.0f && s <= 1.0f && tt >= 0.0f && tt <= 1.0f) ? t : tmax;
     }
     case FOVPT_SHAPE_BOX: {
+        /* slabs; a direction component of 0 gives inv = inf, so a slab the ray lies in (o
+           on a face: 0 * inf = NaN) is ignored by the NaN-dropping max/min below, and a
+           slab it misses gives +-inf */
         float t0 = tmin, t1 = tmax, tn = -FLT_MAX, tf = FLT_MAX;
         uint32_t k;
         for (k = 0; k < 3; ++k) {
             float a = (p->a[k] - r->o[k]) * r->inv[k], b = (p->b[k] - r->o[k]) * r->inv[k];
             if (a > b) { float tt = a; a = b; b = tt; }
-            tn = fovpt__maxf(tn, a); tf = fovpt__minf(tf, b);
+            tn = a > tn ? a : tn; tf = b < tf ? b : tf;
         }
         if (!(tn <= tf)) return tmax;
         if (tn > t0 && tn < t1) return tn;
@@ -2113,6 +2228,27 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
     }
 }
 
+/* A direction of any finite length: the ray tests multiply |dir| by edge lengths twice, so
+   a direction whose largest component lies outside [2^-32, 2^32] is scaled by a power of
+   two (exact) to one in [2^-16, 2^16); tmin, tmax and the hit t are rescaled alike.
+   Returns the factor applied to t (1 for ordinary directions, bit for bit as before). */
+FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside [2^-32, 2^32] */
+{
+    float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2])));
+    return !(m >= 2.3283064365386963e-10f && m <= 4294967296.0f);
+}
+FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
+{
+    float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2]))), sc = 1.0f;
+    int i;
+    fovpt__copy3(d, dir);
+    if (!(m > 0.0f) || !fovpt__finite(m) || (m >= 2.3283064365386963e-10f && m <= 4294967296.0f)) return 1.0f;
+    for (i = 0; i < 16 && m >= 65536.0f; ++i) { m *= 1.52587890625e-05f; sc *= 65536.0f; }  /* 2^-16 */
+    for (i = 0; i < 16 && m < 1.52587890625e-05f; ++i) { m *= 65536.0f; sc *= 1.52587890625e-05f; }
+    d[0] = dir[0] / sc; d[1] = dir[1] / sc; d[2] = dir[2] / sc;
+    return sc; /* d = dir / sc: t along dir = t along d * (1 / sc) */
+}
+
 FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
 {
     uint32_t k;
@@ -2121,8 +2257,7 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
         float d = dir[k];
         r->o[k] = org[k];
         r->d[k] = d;
-        if (fovpt__absf(d) < 1e-30f) d = d < 0.0f ? -1e-30f : 1e-30f;
-        r->inv[k] = 1.0f / d;
+        r->inv[k] = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf(); /* subnormal d: +-inf too */
         r->nb[k] = r->inv[k] < 0.0f ? 3u + k : k;
         r->fb[k] = r->inv[k] < 0.0f ? k : 3u + k;
     }
@@ -2130,8 +2265,13 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
 }
 
 /* Slab test (Kay-Kajiya) with the near and far planes picked by the direction's sign, so
-   no swap: the same products as (lo - o) * inv and (hi - o) * inv, only never compared. */
-FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax, float *tn_out)
+   no swap: the same products as (lo - o) * inv and (hi - o) * inv, only never compared.
+   Conservative: max(a, t) = a > t ? a : t and min(b, t) = b < t ? b : t drop a NaN slab
+   distance (0 * inf: the ray lies in a slab's face plane, parallel to it), and the exit is
+   widened by the rounding margin (FOVPT__BOX_GROW, grow_k = FOVPT__BOX_NEG * max(0, -tmin)).
+   The four-box tests in fovpt__closest do the same arithmetic. */
+FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax, float grow_k,
+                               float *tn_out)
 {
     const float *b = n->b;
     float a0 = (b[r->nb[0]] - r->o[0]) * r->inv[0], b0 = (b[r->fb[0]] - r->o[0]) * r->inv[0];
@@ -2142,14 +2282,15 @@ FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float 
     tn = a1 > tn ? a1 : tn; tf = b1 < tf ? b1 : tf;
     tn = a2 > tn ? a2 : tn; tf = b2 < tf ? b2 : tf;
     *tn_out = tn;
-    return tn <= tf;
+    return tn <= tf * FOVPT__BOX_GROW + grow_k;
 }
 
 /* Closest hit over bounded primitives (BVH or loop) and planes; returns the slot or NONE.
    BVH traversal: both children's boxes are tested together, the nearer one (by its entry
    distance) is visited first, the farther one is pushed with its entry distance, and a pop
    skips entries that start beyond the closest hit found meanwhile (no second box test:
-   tn <= min(box exit, tmax) at the push, so tn <= new tmax is the same test). Triangles
+   tn <= min(box exit, tmax) widened by the rounding margin at the push, so tn <= new tmax,
+   widened alike, is the same test). Triangles
    are intersected inline from a leaf-ordered copy (v0, e1, e2), the other shapes through
    fovpt__isect. */
 FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin, float *tmax,
@@ -2164,15 +2305,16 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
         uint32_t stack[3u * FOVPT_MAX_BVH_DEPTH + 2u], sp = 0, ref = 0;
         float stack_t[3u * FOVPT_MAX_BVH_DEPTH + 2u], tn;
+        const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1], fz = r->fb[2];
 #if FOVPT__SSE
         const __m128 vox = _mm_set1_ps(r->o[0]), voy = _mm_set1_ps(r->o[1]), voz = _mm_set1_ps(r->o[2]);
         const __m128 vix = _mm_set1_ps(r->inv[0]), viy = _mm_set1_ps(r->inv[1]), viz = _mm_set1_ps(r->inv[2]);
-        const __m128 vtmin = _mm_set1_ps(tmin);
+        const __m128 vtmin = _mm_set1_ps(tmin), vgrow = _mm_set1_ps(FOVPT__BOX_GROW), vgk = _mm_set1_ps(gk);
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1], iz = r->inv[2];
 #endif
-        if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, &tn)) {
+        if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, gk, &tn)) {
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
@@ -2221,7 +2363,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fy]), voy), viy), u0);
                     t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nz]), voz), viz), t0);
                     u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fz]), voz), viz), u0);
-                    hm = (uint32_t)_mm_movemask_ps(_mm_cmple_ps(t0, u0));
+                    hm = (uint32_t)_mm_movemask_ps(_mm_cmple_ps(t0, _mm_add_ps(_mm_mul_ps(u0, vgrow), vgk)));
                     _mm_storeu_ps(tv, t0);
 #else
                     hm = 0;
@@ -2232,7 +2374,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * iy; t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
                         a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * iz; t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
                         tv[j] = t0;
-                        if (t0 <= u0) hm |= 1u << j;
+                        if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
 #endif
                     nh = (hm & 1u) + ((hm >> 1) & 1u) + ((hm >> 2) & 1u) + (hm >> 3);
@@ -2267,7 +2409,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                 for (;;) {
                     if (sp == 0) { ref = FOVPT_PRIM_NONE; break; }
                     --sp;
-                    if (stack_t[sp] <= *tmax) { ref = stack[sp]; break; }
+                    if (stack_t[sp] <= *tmax * FOVPT__BOX_GROW + gk) { ref = stack[sp]; break; }
                 }
                 if (ref == FOVPT_PRIM_NONE) break;
             }
@@ -2294,13 +2436,25 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     int user = 0;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
-    if (!fovpt__ray_init(&r, org, dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
-    slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
+    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fovpt__dir_odd(dir)) {
+        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
+    } else {
+        float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
+        if (!fovpt__ray_init(&r, org, ds)) return 0;
+        ts = tmax * sc; /* t along ds */
+        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0, NULL);
+        if (slot != FOVPT_PRIM_NONE) {
+            t = ts / sc;
+            if (!(t > tmin && t < tmax)) { slot = FOVPT_PRIM_NONE; t = tmax; } /* under/overflow of the rescale */
+        }
+    }
     if (s->user_hit) {
         float tu = t;
         un[0] = un[1] = un[2] = 0.0f;
         if (s->user_hit(org, dir, tmin, t, &tu, un, &umat, s->user) && tu > tmin && tu < t &&
-            umat < s->num_materials && fovpt__finite3(un) && (fovpt__prescale(un), fovpt__normalize(un) > 0.0f)) {
+            umat < s->num_materials && fovpt__normalize(un) > 0.0f) {
             t = tu;
             user = 1;
         }
@@ -2321,7 +2475,12 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         h->slot = slot;
         if (p->type == FOVPT_SHAPE_SPHERE) {
             fovpt__sub3(h->n, h->p, p->a);
-            fovpt__normalize(h->n);
+            if (!(fovpt__normalize(h->n) > 0.0f)) {
+                /* the hit point rounded onto the centre (a radius below the coordinates'
+                   resolution): the normal facing the ray */
+                fovpt__set3(h->n, -dir[0], -dir[1], -dir[2]);
+                fovpt__normalize(h->n);
+            }
         } else if (p->type == FOVPT_SHAPE_BOX) {
             /* the face: the axis where the hit is relatively closest to a slab */
             float best = FLT_MAX;
@@ -2357,8 +2516,19 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     fovpt__ray r;
     float t = tmax;
     if (!s || !org || !dir || !s->prims) return 0;
-    if (!fovpt__ray_init(&r, org, dir) || !fovpt__finite(tmin) || !(tmax > tmin)) return 0;
-    if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
+    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fovpt__dir_odd(dir)) {
+        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
+    } else {
+        float ds[3], sc = fovpt__dir_scale(dir, ds);
+        if (!fovpt__ray_init(&r, org, ds)) return 0;
+        t = tmax * sc;
+        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) {
+            float tt = t / sc;
+            if (tt > tmin && tt < tmax) return 1;
+        }
+    }
     if (s->user_hit) {
         float tu = tmax, un[3] = { 0.0f, 0.0f, 0.0f };
         uint32_t um = 0;

@@ -2060,8 +2060,478 @@ static void test_set_view_atomic(void)
     free(F.b.mem);
 }
 
+/* ==== issue 10: F1 camera rays, F7 BVH box test, BVH = brute force on adversarial scenes === */
+/* the camera ray in double, from the documented model: f = normalize(target - pos), right =
+   normalize(f x up), up' = right x f, image-plane offsets sx = tan_l + (tan_r - tan_l) x / w,
+   sy = tan_t + (tan_b - tan_t) y / h (symmetric: tan_r = -tan_l = ty w / h, ty = tan(fov/2)) */
+static int ref_camera_dir(const fovpt_camera *c, double x, double y, double d[3])
+{
+    double f[3], u[3], r[3], l, ty, tx, sx, sy;
+    int k;
+    for (k = 0; k < 3; ++k) { f[k] = (double)c->target[k] - (double)c->pos[k]; u[k] = (double)c->up[k]; }
+    l = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]); for (k = 0; k < 3; ++k) f[k] /= l;
+    l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]); for (k = 0; k < 3; ++k) u[k] /= l;
+    r[0] = f[1] * u[2] - f[2] * u[1]; r[1] = f[2] * u[0] - f[0] * u[2]; r[2] = f[0] * u[1] - f[1] * u[0];
+    l = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]); for (k = 0; k < 3; ++k) r[k] /= l;
+    u[0] = r[1] * f[2] - r[2] * f[1]; u[1] = r[2] * f[0] - r[0] * f[2]; u[2] = r[0] * f[1] - r[1] * f[0];
+    ty = tan(0.5 * (double)(c->fov_y_deg > 0.0f ? c->fov_y_deg : 60.0f) * 3.14159265358979323846 / 180.0);
+    tx = ty * (double)c->width / (double)c->height;
+    sx = -tx + 2.0 * tx * x / (double)c->width;
+    sy = ty - 2.0 * ty * y / (double)c->height;
+    for (k = 0; k < 3; ++k) d[k] = f[k] + sx * r[k] + sy * u[k];
+    l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (k = 0; k < 3; ++k) d[k] /= l;
+    return fabs(sx) < 1e37 && fabs(sy) < 1e37; /* float image-plane offsets surely finite */
+}
+
+static void test_f1_camera_ray(void)
+{
+    static const float pts[][2] = { { 0.5f, 0.5f }, { 1e30f, 0.5f }, { 0.5f, 1e30f }, { -1e30f, -1e30f }, { 1e20f, -3e19f },
+                                    { 3e38f, 0.5f }, { 0.5f, -3e38f }, { 1e-30f, 0.25f }, { 7.0f, 1e36f } };
+    static const float ups[][3] = { { 3e38f, 3e38f, 3e38f }, { 0.0f, 1.0f, 0.0f }, { 1e-30f, 3e-30f, 0.0f }, { -3e38f, 3e38f, 1.0f } };
+    int np = (int)(sizeof pts / sizeof pts[0]), nu = (int)(sizeof ups / sizeof ups[0]), i, j, c, bad_ok = 0, bad_code = 0, oks = 0,
+        errs = 0;
+    for (c = 0; c < 3; ++c)
+        for (j = 0; j < nu; ++j) {
+            fovpt_camera cam;
+            fovpt_camera_init(&cam, c == 0 ? 1u : 16u, c == 0 ? 1u : 9u);
+            cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 0.0f;
+            cam.target[0] = c == 2 ? 3e38f : 0.1f; cam.target[1] = 0.0f; cam.target[2] = c == 2 ? 3e38f : 1.0f;
+            cam.up[0] = ups[j][0]; cam.up[1] = ups[j][1]; cam.up[2] = ups[j][2];
+            for (i = 0; i < np; ++i) {
+                float o[3], d[3];
+                double ref[3], l, cosang;
+                int finite_ref = ref_camera_dir(&cam, (double)pts[i][0], (double)pts[i][1], ref);
+                fov_result e = fovpt_camera_ray(&cam, pts[i][0], pts[i][1], o, d);
+                if (e == FOV_OK) {
+                    l = sqrt((double)d[0] * (double)d[0] + (double)d[1] * (double)d[1] + (double)d[2] * (double)d[2]);
+                    cosang = ((double)d[0] * ref[0] + (double)d[1] * ref[1] + (double)d[2] * ref[2]) / l;
+                    if (!(fabs(l - 1.0) < 1e-6) || !(cosang > 1.0 - 1e-9)) {
+                        if (bad_ok < 3)
+                            printf("  camera %d up %d point (%g, %g): |dir| %.9g, cos to reference %.12g\n", c, j,
+                                   (double)pts[i][0], (double)pts[i][1], l, cosang);
+                        bad_ok++;
+                    }
+                    oks++;
+                } else {
+                    if (finite_ref || e != FOV_ERR_INVALID_ARG) bad_code++; /* offsets > 1e37: either */
+                    errs++;
+                }
+            }
+        }
+    check(bad_ok == 0 && oks > 60, "F1: fovpt_camera_ray: every FOV_OK ray is finite, unit and the double-precision ray",
+          "%d of %d FOV_OK rays wrong", bad_ok, oks);
+    check(bad_code == 0 && errs > 0, "F1: image points whose image-plane offset overflows: FOV_ERR_INVALID_ARG, the others FOV_OK",
+          "%d wrong codes of %d errors", bad_code, errs);
+    {   /* a view vector that overflows (target - pos beyond FLT_MAX) is degenerate */
+        fovpt_camera cam;
+        float o[3], d[3];
+        fovpt_camera_init(&cam, 1, 1);
+        cam.pos[2] = -3e38f; cam.target[2] = 3e38f;
+        check(fovpt_camera_ray(&cam, 0.5f, 0.5f, o, d) == FOV_ERR_DEGENERATE, "F1: a view vector beyond FLT_MAX: FOV_ERR_DEGENERATE", " ");
+    }
+}
+
+static void test_version(void)
+{
+    char want[32], *src = read_file("fovpt.h"), line1[40];
+    snprintf(want, sizeof want, "%d.%d.%d", FOVPT_VERSION_MAJOR, FOVPT_VERSION_MINOR, FOVPT_VERSION_PATCH);
+    snprintf(line1, sizeof line1, "- v%s -", FOVPT_VERSION_STRING);
+    check(strcmp(want, FOVPT_VERSION_STRING) == 0, "FOVPT_VERSION_STRING matches MAJOR.MINOR.PATCH", "%s vs %s", FOVPT_VERSION_STRING, want);
+    check(src && strchr(src, '\n') && strstr(src, line1) && strstr(src, line1) < strchr(src, '\n'),
+          "FOVPT_VERSION_STRING matches the version on line 1", "looked for \"%s\"", line1);
+    free(src);
+}
+
+/* one triangle or quad scene for the F7 cases */
+static fov_result f7_scene(scene_buf *b, const float *pos, uint32_t ntri, const fovpt_shape *sh, uint32_t ns, uint32_t min_prims,
+                           fovpt_mesh *mesh, fovpt_material *m)
+{
+    fovpt_scene_desc d;
+    fovpt_material_init(m);
+    memset(mesh, 0, sizeof *mesh);
+    mesh->positions = pos; mesh->num_vertices = 3u * ntri; mesh->num_triangles = ntri;
+    fovpt_scene_desc_init(&d);
+    d.meshes = ntri ? mesh : NULL; d.num_meshes = ntri ? 1u : 0u;
+    d.shapes = sh; d.num_shapes = ns;
+    d.materials = m; d.num_materials = 1;
+    d.bvh_min_prims = min_prims;
+    return build(b, &d);
+}
+
+static void test_f7_regressions(void)
+{
+    fovpt_material m;
+    fovpt_mesh mesh;
+    scene_buf b;
+    fovpt_hit h, hb;
+    memset(&h, 0, sizeof h); memset(&hb, 0, sizeof hb);
+    {   /* (a) an axis-parallel ray lying in the box's max face x = 1 */
+        static const float tri[9] = { -2, -2, 0, 1, -2, 0, 1, 1, 0 };
+        const float o[3] = { 1.0f, 0.0f, 1.0f }, d[3] = { 0.0f, 0.0f, -1.0f };
+        int a = 0, ab = 0, oc = 0;
+        if (f7_scene(&b, tri, 1, NULL, 0, 1, &mesh, &m) == FOV_OK && b.s.nodes) {
+            a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            ab = fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &hb);
+            oc = fovpt_occluded(&b.s, o, d, 0.0f, 2.0f);
+        }
+        /* independent: the point (1, 0, 0) lies on the edge x = 1 of the triangle, t = 1 */
+        check(ab && hb.t == 1.0f, "F7a: brute force hits the edge x = 1 at t = 1 (reference)", "hit %d t %g", ab, (double)hb.t);
+        check(a && h.t == 1.0f, "F7a: fovpt_intersect: a ray along -z in the box's max face hits at t = 1", "hit %d t %g", a,
+              (double)h.t);
+        check(oc == 1, "F7a: fovpt_occluded: the same ray is occluded before t = 2", "occluded %d", oc);
+        free(b.mem);
+    }
+    {   /* (b) a flat square [-1, 0]^2 at z = -1 (two triangles; as a quad), a ray that needs a
+           rounding margin in the box test */
+        static const float sq[18] = { -1, -1, -1, 0, -1, -1, 0, 0, -1, -1, -1, -1, 0, 0, -1, -1, 0, -1 };
+        const float o[3] = { 2.558f, 1.0000001f, 1.0000001f }, d[3] = { -1.558f, -0.5f, -1.0f };
+        fovpt_shape q;
+        const float qp[3] = { -1, -1, -1 }, qu[3] = { 1, 0, 0 }, qv[3] = { 0, 1, 0 };
+        int rep;
+        fovpt_shape_quad(&q, qp, qu, qv, 0);
+        for (rep = 0; rep < 2; ++rep) {
+            int a = 0, ab = 0, oc = 0, ok;
+            if (rep == 0) ok = f7_scene(&b, sq, 2, NULL, 0, 1, &mesh, &m) == FOV_OK;
+            else ok = f7_scene(&b, NULL, 0, &q, 1, 1, &mesh, &m) == FOV_OK;
+            if (ok && b.s.nodes) {
+                a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+                ab = fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &hb);
+                oc = fovpt_occluded(&b.s, o, d, 0.0f, 3.0f);
+            }
+            check(ok && b.s.nodes && a == ab && (!a || h.t == hb.t) && oc == ab,
+                  N("F7b: flat square as %s: BVH = brute force on a ray 1 ulp outside its box", rep ? "a quad" : "two triangles"),
+                  "BVH %d (t %g), brute %d (t %g), occluded %d", a, (double)h.t, ab, (double)hb.t, oc);
+            if (rep == 0) check(ab && fabsf(hb.t - 2.0f) < 1e-6f, "F7b: brute force hits the two-triangle square at t = 2", "%d %g", ab, (double)hb.t);
+            free(b.mem);
+        }
+    }
+}
+
+/* BVH = brute force on adversarial scenes: axis-aligned flat quads (two triangles and quad
+   shapes), triangles on a grid (shared edges and vertices, axis-parallel edges), boxes of
+   zero thickness, scales 1e-3 .. 1e5 (some far from the origin); rays along axes, lying in
+   box faces, from grid points (on faces and edges), aimed at vertices and edge points,
+   grazing; negative, zero and positive tmin; bvh_min_prims and bvh_leaf 1 .. 4. The two
+   traversals run the same per-primitive tests, so any difference is a box test that culled
+   a node holding a hit. */
+static float adv_grid(float S, float O, int lo, int hi) { return O + S * 0.25f * (float)(lo + (int)(urand() * (double)(hi - lo + 1))); }
+/* 1 when the brute-force hit point o + t d (in double) lies outside its primitive's box (in
+   double, from the primitive record; 1e-6 of the scale as tolerance): the triangle or quad
+   test's t of a ray lying (almost) in the primitive's plane, ill-conditioned, not a hit a
+   bounding box can hold */
+static int adv_spurious(const fovpt_scene *s, const fovpt_hit *h, const float o[3], const float d[3])
+{
+    const fovpt__prim *p = (const fovpt__prim *)s->prims + h->slot;
+    double lo[3], hi[3], P, tol;
+    int k;
+    if (p->type != FOVPT__TRI && p->type != FOVPT_SHAPE_QUAD) return 0;
+    for (k = 0; k < 3; ++k) {
+        double x0 = (double)p->a[k], x1 = x0 + (double)p->b[k], x2 = x0 + (double)p->c[k], x3 = x1 + (double)p->c[k];
+        if (p->type == FOVPT__TRI) x3 = x0;
+        lo[k] = fmin(fmin(x0, x1), fmin(x2, x3)); hi[k] = fmax(fmax(x0, x1), fmax(x2, x3));
+    }
+    for (k = 0; k < 3; ++k) {
+        P = (double)o[k] + (double)h->t * (double)d[k];
+        tol = 1e-6 * (fabs(lo[k]) + fabs(hi[k]) + fabs(P) + (hi[k] - lo[k]));
+        if (P < lo[k] - tol || P > hi[k] + tol) return 1;
+    }
+    return 0;
+}
+static void test_bvh_adversarial(void)
+{
+    static const float scales[6] = { 1e-3f, 0.1f, 1.0f, 10.0f, 1e3f, 1e5f };
+#ifndef ADV_SCENES
+#define ADV_SCENES 48
+#endif
+    int sc, nsc = ADV_SCENES;
+    uint32_t total = 0, mism = 0, occ_mism = 0, hits = 0, built = 0, spurious = 0;
+    for (sc = 0; sc < nsc; ++sc) {
+        float S = scales[sc % 6], O = (sc / 6) % 4 == 3 ? 37.0f * S : 0.0f;
+        float pos[9u * 64u];
+        fovpt_shape sh[16];
+        uint32_t nt = 0, ns = 0, i, k, ray;
+        fovpt_material m;
+        fovpt_mesh mesh;
+        fovpt_scene_desc d;
+        scene_buf b;
+        uint32_t nq = 2u + (uint32_t)(urand() * 12.0);
+        for (i = 0; i < nq && nt + 2u <= 64u; ++i) { /* axis-aligned flat rectangles, two triangles */
+            uint32_t ax = (uint32_t)(urand() * 3.0) % 3u, a1 = (ax + 1u) % 3u, a2 = (ax + 2u) % 3u;
+            float lv = adv_grid(S, O, -8, 8), x0 = adv_grid(S, O, -8, 4), y0 = adv_grid(S, O, -8, 4);
+            float x1 = x0 + S * 0.25f * (float)(1 + (int)(urand() * 8.0)), y1 = y0 + S * 0.25f * (float)(1 + (int)(urand() * 8.0));
+            float *p = pos + 9u * nt;
+            p[ax] = p[3 + ax] = p[6 + ax] = p[9 + ax] = p[12 + ax] = p[15 + ax] = lv;
+            p[a1] = x0; p[a2] = y0; p[3 + a1] = x1; p[3 + a2] = y0; p[6 + a1] = x1; p[6 + a2] = y1;
+            p[9 + a1] = x0; p[9 + a2] = y0; p[12 + a1] = x1; p[12 + a2] = y1; p[15 + a1] = x0; p[15 + a2] = y1;
+            nt += 2u;
+        }
+        while (nt < 24u + (uint32_t)(sc % 3) * 12u) { /* triangles on the grid */
+            for (k = 0; k < 9; ++k) pos[9u * nt + k] = adv_grid(S, O, -8, 8);
+            if (urand() < 0.3) pos[9u * nt + 2] = pos[9u * nt + 5] = pos[9u * nt + 8]; /* flat in z */
+            nt++;
+        }
+        for (i = 0; i < 6u; ++i) { /* quads and boxes, some of zero thickness */
+            float lo[3], hi[3], u[3] = { 0, 0, 0 }, v[3] = { 0, 0, 0 };
+            for (k = 0; k < 3; ++k) { lo[k] = adv_grid(S, O, -8, 6); hi[k] = lo[k] + S * 0.25f * (float)(int)(urand() * 6.0); }
+            if (i % 2 == 0) {
+                uint32_t ax = i / 2u;
+                u[(ax + 1u) % 3u] = S * 0.25f * (float)(1 + (int)(urand() * 6.0));
+                v[(ax + 2u) % 3u] = S * 0.25f * (float)(1 + (int)(urand() * 6.0));
+                fovpt_shape_quad(&sh[ns++], lo, u, v, 0);
+            } else {
+                int flat = 0; /* at most one axis of zero thickness (two: rejected) */
+                for (k = 0; k < 3; ++k) if (!(hi[k] > lo[k]) && flat++) hi[k] = lo[k] + S;
+                fovpt_shape_box(&sh[ns++], lo, hi, 0);
+            }
+        }
+        fovpt_material_init(&m);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = pos; mesh.num_vertices = 3u * nt; mesh.num_triangles = nt;
+        fovpt_scene_desc_init(&d);
+        d.meshes = &mesh; d.num_meshes = 1; d.shapes = sh; d.num_shapes = ns;
+        d.materials = &m; d.num_materials = 1;
+        d.bvh_min_prims = 1u + (uint32_t)sc % 4u;
+        d.bvh_leaf = 1u + (uint32_t)(sc / 4) % 4u;
+        d.skip_degenerate = 1;
+        { fov_result br = build(&b, &d); if (br != FOV_OK || !b.s.nodes) { printf("  scene %d: %s\n", sc, fovpt_result_string(br)); free(b.mem); continue; } }
+        built++;
+        for (ray = 0; ray < 2500u; ++ray) {
+            float o[3], dd[3], tmin = 0.0f, tmax = FLT_MAX;
+            fovpt_hit h1, h2;
+            int a1, a2, oc, mode = (int)(ray % 6u);
+            for (k = 0; k < 3; ++k) o[k] = adv_grid(S, O, -12, 12);
+            if (ray % 11u == 5u) for (k = 0; k < 3; ++k) o[k] = adv_grid(S * 100.0f, O, -12, 12); /* far origins */
+            if (mode == 0) { /* along an axis, from a grid point */
+                k = (uint32_t)(urand() * 3.0) % 3u;
+                dd[0] = dd[1] = dd[2] = 0.0f; dd[k] = urand() < 0.5 ? -1.0f : 1.0f;
+            } else if (mode == 1) { /* in a grid plane */
+                for (k = 0; k < 3; ++k) dd[k] = frand(-1.0f, 1.0f);
+                dd[(uint32_t)(urand() * 3.0) % 3u] = 0.0f;
+            } else if (mode == 2 || mode == 3) { /* at a vertex, an edge point or a face point */
+                const float *t = pos + 9u * (uint32_t)(urand() * (double)nt);
+                uint32_t e0 = (uint32_t)(urand() * 3.0) % 3u, e1 = (e0 + 1u) % 3u;
+                float w = mode == 2 ? (urand() < 0.3 ? 0.0f : (float)urand()) : 0.5f, tp[3];
+                for (k = 0; k < 3; ++k) tp[k] = t[3u * e0 + k] + w * (t[3u * e1 + k] - t[3u * e0 + k]);
+                if (mode == 3) for (k = 0; k < 3; ++k) tp[k] = 0.25f * tp[k] + 0.5f * t[3u * ((e1 + 1u) % 3u) + k] * 0.5f + 0.25f * t[3u * e0 + k];
+                if (urand() < 0.3) { k = (uint32_t)(urand() * 3.0) % 3u; o[k] = tp[k]; } /* in the plane of an axis */
+                for (k = 0; k < 3; ++k) dd[k] = tp[k] - o[k];
+            } else if (mode == 4) { /* grazing: one component 1e-7 of the others */
+                for (k = 0; k < 3; ++k) dd[k] = frand(-1.0f, 1.0f);
+                dd[(uint32_t)(urand() * 3.0) % 3u] *= 1e-7f;
+            } else {
+                for (k = 0; k < 3; ++k) dd[k] = frand(-1.0f, 1.0f);
+            }
+            if (!(dd[0] * dd[0] + dd[1] * dd[1] + dd[2] * dd[2] > 0.0f)) dd[2] = 1.0f;
+            if (ray % 7u == 1u) tmin = -frand(0.0f, 30.0f);
+            if (ray % 7u == 2u) tmin = frand(0.0f, 0.5f);
+            if (ray % 5u == 3u) tmax = tmin + frand(0.01f, 4.0f);
+            a1 = fovpt_intersect(&b.s, o, dd, tmin, tmax, &h1);
+            a2 = fovpt_intersect_brute(&b.s, o, dd, tmin, tmax, &h2);
+            oc = fovpt_occluded(&b.s, o, dd, tmin, tmax);
+            total++;
+            hits += (uint32_t)a2;
+            if ((a1 != a2 || (a1 && !(h1.t <= h2.t && h1.t >= h2.t)) || oc != a2) && a2 && adv_spurious(&b.s, &h2, o, dd)) {
+                spurious++;
+                continue;
+            }
+            if (a1 != a2 || (a1 && !(h1.t <= h2.t && h1.t >= h2.t))) {
+                if (mism < 4)
+                    printf("  scene %d ray %u (mode %d): o (%.9g %.9g %.9g) d (%.9g %.9g %.9g) tmin %g: BVH %d t %.9g, brute %d t %.9g\n",
+                           sc, ray, mode, (double)o[0], (double)o[1], (double)o[2], (double)dd[0], (double)dd[1], (double)dd[2],
+                           (double)tmin, a1, a1 ? (double)h1.t : 0.0, a2, a2 ? (double)h2.t : 0.0);
+                if (mism < 4 && a2) { const fovpt__prim *pp = (const fovpt__prim *)b.s.prims + h2.slot;
+                    printf("   DBG type %u a %.9g %.9g %.9g b %.9g %.9g %.9g c %.9g %.9g %.9g\n", pp->type, (double)pp->a[0], (double)pp->a[1], (double)pp->a[2], (double)pp->b[0], (double)pp->b[1], (double)pp->b[2], (double)pp->c[0], (double)pp->c[1], (double)pp->c[2]); }
+                mism++;
+            }
+            if (oc != a2) occ_mism++;
+        }
+        free(b.mem);
+    }
+    check(built == (uint32_t)nsc && mism == 0 && hits > total / 8u,
+          N("BVH = brute force on adversarial scenes (closest t, %u rays): flat quads, rays in faces and along axes, grazing, 1e-3 .. 1e5", total),
+          "%u of %u rays differ (%u hits), %u of %d scenes built", mism, total, hits, built, nsc);
+    check(built == (uint32_t)nsc && occ_mism == 0, "fovpt_occluded = brute force on the same rays", "%u of %u differ", occ_mism, total);
+    check(spurious <= total / 10000u, "brute-force hits outside their primitive's box (rays in its plane, ill-conditioned t): < 1e-4",
+          "%u of %u rays", spurious, total);
+    printf("# adversarial BVH test: %u rays, %u hits, %u brute-force hits outside their primitive's box (not counted)\n", total, hits, spurious);
+}
+
+/* Watertightness of the triangle test (measured, not a contract): rays aimed at points of
+   the shared edge of two triangles (a planar pair: a quad split along a diagonal; a folded
+   pair) must hit one of them. The test is Moller-Trumbore with the edges of each triangle
+   from its own v0, so the shared edge is evaluated differently from the two sides; the
+   leaks are counted and printed. */
+static void test_watertight(void)
+{
+    uint32_t n = 0, leak_flat = 0, leak_fold = 0, nflat = 0, nfold = 0, i, k;
+    for (i = 0; i < 40000u; ++i) {
+        int fold = (int)(i & 1u);
+        float S = (float)pow(10.0, -2.0 + 5.0 * urand()), pos[18], P[3], Q[3], R1[3], R2[3], o[3], d[3], X[3];
+        double w = urand();
+        fovpt_material m;
+        fovpt_mesh mesh;
+        scene_buf b;
+        fovpt_hit h;
+        for (k = 0; k < 3; ++k) { P[k] = frand(-1.0f, 1.0f) * S; Q[k] = frand(-1.0f, 1.0f) * S; }
+        {   /* R1, R2 on either side of PQ: mid +- a vector across it (planar: opposite) */
+            float a[3], e[3], c[3];
+            for (k = 0; k < 3; ++k) { e[k] = Q[k] - P[k]; a[k] = frand(-1.0f, 1.0f) * S; }
+            c[0] = e[1] * a[2] - e[2] * a[1]; c[1] = e[2] * a[0] - e[0] * a[2]; c[2] = e[0] * a[1] - e[1] * a[0];
+            for (k = 0; k < 3; ++k) {
+                float mid = 0.5f * (P[k] + Q[k]), sc = 1.0f / S;
+                R1[k] = mid + c[k] * sc;
+                R2[k] = mid - (fold ? (c[k] * 0.7f + a[k] * 0.5f) : c[k]) * sc;
+            }
+        }
+        /* P Q R1 and Q P R2: consistent winding, the edge from both sides */
+        memcpy(pos, P, 12); memcpy(pos + 3, Q, 12); memcpy(pos + 6, R1, 12);
+        memcpy(pos + 9, Q, 12); memcpy(pos + 12, P, 12); memcpy(pos + 15, R2, 12);
+        for (k = 0; k < 3; ++k) X[k] = (float)((double)P[k] + w * ((double)Q[k] - (double)P[k]));
+        for (k = 0; k < 3; ++k) o[k] = X[k] + frand(-3.0f, 3.0f) * S;
+        for (k = 0; k < 3; ++k) d[k] = X[k] - o[k];
+        if (f7_scene(&b, pos, 2, NULL, 0, 100, &mesh, &m) != FOV_OK) { free(b.mem); continue; }
+        {   /* count only rays that cross the pair's plane region transversally (|cos| > 0.05) */
+            float n1[3], e1[3], e2[3], dl = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), nl, c;
+            for (k = 0; k < 3; ++k) { e1[k] = Q[k] - P[k]; e2[k] = R1[k] - P[k]; }
+            n1[0] = e1[1] * e2[2] - e1[2] * e2[1]; n1[1] = e1[2] * e2[0] - e1[0] * e2[2]; n1[2] = e1[0] * e2[1] - e1[1] * e2[0];
+            nl = sqrtf(n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]);
+            c = fabsf(n1[0] * d[0] + n1[1] * d[1] + n1[2] * d[2]) / (nl * dl);
+            if (!(c > 0.05f)) { free(b.mem); continue; }
+        }
+        n++;
+        if (fold) nfold++; else nflat++;
+        if (!fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &h)) { if (fold) leak_fold++; else leak_flat++; }
+        free(b.mem);
+    }
+    printf("# watertightness (Moller-Trumbore, not watertight): rays at a shared edge that hit neither triangle: planar pairs %u of %u (%.3f %%), folded pairs %u of %u (%.3f %%)\n",
+           leak_flat, nflat, 100.0 * (double)leak_flat / (double)(nflat ? nflat : 1u), leak_fold, nfold,
+           100.0 * (double)leak_fold / (double)(nfold ? nfold : 1u));
+    check(n > 10000u, "watertightness measurement ran", "%u rays", n);
+    {   /* a closed mesh: a cube's faces on a 16 x 16 grid each, projected to the unit sphere,
+           vertices shared by index; random rays from inside must all hit it */
+        enum { G = 16 };
+        static float vpos[6 * (G + 1) * (G + 1) * 3];
+        static uint32_t idx[6 * G * G * 6];
+        uint32_t f, a, c, nv = 0, ni = 0, misses = 0, rays = 200000u;
+        fovpt_material m;
+        fovpt_mesh mesh;
+        fovpt_scene_desc d;
+        scene_buf b;
+        for (f = 0; f < 6; ++f) {
+            uint32_t base = nv, ax = f % 3u;
+            float sg = f < 3 ? 1.0f : -1.0f;
+            for (a = 0; a <= G; ++a)
+                for (c = 0; c <= G; ++c) {
+                    double p[3], l;
+                    p[ax] = (double)sg; p[(ax + 1u) % 3u] = -1.0 + 2.0 * a / G; p[(ax + 2u) % 3u] = (-1.0 + 2.0 * c / G) * (double)sg;
+                    l = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                    for (k = 0; k < 3; ++k) vpos[3u * nv + k] = (float)(p[k] / l);
+                    nv++;
+                }
+            for (a = 0; a < G; ++a)
+                for (c = 0; c < G; ++c) {
+                    uint32_t v00 = base + a * (G + 1) + c, v01 = v00 + 1u, v10 = v00 + G + 1, v11 = v10 + 1u;
+                    idx[ni++] = v00; idx[ni++] = v10; idx[ni++] = v11;
+                    idx[ni++] = v00; idx[ni++] = v11; idx[ni++] = v01;
+                }
+        }
+        /* the cube's edges: weld duplicated vertices (same float position) to one index */
+        for (i = 0; i < ni; ++i) {
+            uint32_t j;
+            for (j = 0; j < idx[i]; ++j)
+                if (memcmp(vpos + 3u * j, vpos + 3u * idx[i], 12) == 0) { idx[i] = j; break; }
+        }
+        fovpt_material_init(&m);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = vpos; mesh.num_vertices = nv; mesh.indices = idx; mesh.num_triangles = ni / 3u;
+        fovpt_scene_desc_init(&d);
+        d.meshes = &mesh; d.num_meshes = 1; d.materials = &m; d.num_materials = 1;
+        if (check(build(&b, &d) == FOV_OK, "closed sphere mesh builds", " ")) {
+            for (i = 0; i < rays; ++i) {
+                float o[3], dd[3];
+                fovpt_hit h;
+                for (k = 0; k < 3; ++k) { o[k] = frand(-0.5f, 0.5f); dd[k] = frand(-1.0f, 1.0f); }
+                if (i % 4u == 0u) { o[0] = o[1] = o[2] = 0.0f; } /* from the centre: through vertices and edges */
+                if (!fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h)) misses++;
+            }
+            printf("# watertightness, closed mesh (%u triangles, welded): %u of %u random rays from inside leak (%.4f %%)\n",
+                   ni / 3u, misses, rays, 100.0 * (double)misses / (double)rays);
+        }
+        free(b.mem);
+    }
+}
+
+/* fuzzing findings (tests/fuzz/fuzz_fovpt.c): directions of any length, a sphere whose
+   radius is below its centre's resolution, triangles whose squared area overflows */
+static void test_fuzz_findings(void)
+{
+    fovpt_material m;
+    fovpt_mesh mesh;
+    scene_buf b;
+    fovpt_hit h;
+    memset(&h, 0, sizeof h);
+    {   /* a triangle at scale 1e5 and a direction of length 1.4e30: t = 2.5e-25 (brute force
+           and BVH missed: the triangle test's products overflowed) */
+        static const float tri[9] = { 0, 0, 0, 4e5f, 0, 0, 0, 4e5f, 0 };
+        const float o[3] = { 1e5f, 4.5e5f, 3.5e5f }, d[3] = { -1.0f, -1e30f, -1e30f };
+        int a = 0, ab = 0, oc = 0;
+        double t_ref = 3.5e5 / 1e30; /* z reaches 0 */
+        if (f7_scene(&b, tri, 1, NULL, 0, 1, &mesh, &m) == FOV_OK) {
+            /* the hit (1e5, 1e5, 0) lies inside the triangle */
+            a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            ab = fovpt_intersect_brute(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            oc = fovpt_occluded(&b.s, o, d, 0.0f, FLT_MAX);
+        }
+        check(a && ab && oc && fabs((double)h.t - t_ref) < 1e-5 * t_ref, "direction of length 1.4e30: hit at t = 3.5e-25 (BVH, brute force, occluded)",
+              "BVH %d brute %d occluded %d t %g", a, ab, oc, (double)h.t);
+        free(b.mem);
+    }
+    {   /* a sphere of radius 1e18 at 2.3e27 hit where the point rounds onto the centre:
+           the normal stays unit */
+        fovpt_shape sp;
+        const float o[3] = { 2.3e27f, 2.3e27f, 0.0f }, d[3] = { 0.0f, 0.0f, 1.0f };
+        fovpt_shape_sphere(&sp, 2.3e27f, 2.3e27f, 2.3e27f, 1e18f, 0);
+        if (check(f7_scene(&b, NULL, 0, &sp, 1, 1, &mesh, &m) == FOV_OK, "sphere of radius 1e18 at 2.3e27 builds", " ")) {
+            int a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            double nl = (double)h.n[0] * (double)h.n[0] + (double)h.n[1] * (double)h.n[1] + (double)h.n[2] * (double)h.n[2];
+            check(a && nl > 0.999 && nl < 1.001, "sphere hit at a point that rounds onto its centre: unit normal", "hit %d |n|^2 %g", a, nl);
+        }
+        free(b.mem);
+    }
+    {   /* a triangle with edges of 1e10 (|e1 x e2|^2 = 1e40 overflows): a valid triangle */
+        static const float tri[9] = { 0, 0, 5, 1e10f, 0, 5, 0, 1e10f, 5 };
+        const float o[3] = { 1e3f, 1e3f, 0.0f }, d[3] = { 0.0f, 0.0f, 1.0f };
+        fov_result r = f7_scene(&b, tri, 1, NULL, 0, 1, &mesh, &m);
+        int a = r == FOV_OK ? fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h) : 0;
+        check(r == FOV_OK && a && fabsf(h.t - 5.0f) < 1e-5f, "triangle with edges of 1e10: builds (was DEGENERATE) and is hit at t = 5",
+              "%s, hit %d t %g", fovpt_result_string(r), a, (double)h.t);
+        free(b.mem);
+    }
+    {   /* skip_degenerate keeps the documented ids: triangle k reports num_shapes + k */
+        static const float tri[18] = { 0, 0, 0, 0, 0, 0, 1, 1, 0, -1, -1, 2, 1, -1, 2, 0, 1, 2 };
+        const float o[3] = { 0.0f, 0.0f, 0.0f }, d[3] = { 0.0f, 0.0f, 1.0f };
+        fovpt_scene_desc dd;
+        fovpt_material_init(&m);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = tri; mesh.num_vertices = 6; mesh.num_triangles = 2;
+        fovpt_scene_desc_init(&dd);
+        dd.meshes = &mesh; dd.num_meshes = 1; dd.materials = &m; dd.num_materials = 1; dd.skip_degenerate = 1;
+        if (build(&b, &dd) == FOV_OK) {
+            int a = fovpt_intersect(&b.s, o, d, 0.0f, FLT_MAX, &h);
+            check(a && h.prim == 1u && b.s.num_skipped == 1u, "skip_degenerate: the triangle after a dropped one keeps id k = 1",
+                  "hit %d prim %u skipped %u", a, h.prim, b.s.num_skipped);
+        } else check(0, "skip_degenerate scene builds", " ");
+        free(b.mem);
+    }
+}
+
 int main(void)
 {
+    test_version();
+    test_f1_camera_ray();
+    test_f7_regressions();
+    test_fuzz_findings();
     test_api();
     test_ecc();
     test_eyes();
@@ -2083,5 +2553,7 @@ int main(void)
     test_selective_rules();
     test_selective_render();
     test_temporal();
+    test_bvh_adversarial();
+    test_watertight();
     return fovcheck_summary();
 }
