@@ -86,3 +86,14 @@ bench: bench-sdf bench-lp bench-pt
 
 clean:
 	rm -rf $(BUILD) out
+
+# issue 10 stress scenes: pixels behind the first surface, false hits, misses, evaluations and
+# time per method at 1 and 4 spp (bench/results/stress.csv; BENCH_ARGS e.g. --size 320 180)
+.PHONY: bench-stress
+$(BUILD)/bench_stress: bench/bench_stress.c fovsdf.h tests/common/fovstress.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+bench-stress: $(BUILD)/bench_stress
+	@mkdir -p bench/results
+	nice ./$(BUILD)/bench_stress $(BENCH_ARGS)

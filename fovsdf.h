@@ -48,7 +48,8 @@ ACCELERATED METHODS
    cell's distance and finishes with cfg.finish (default the Balint-Valasek step). Guarantee:
    for a distance function that never overestimates (Lipschitz <= 1 after scene.lipschitz), no
    ray starts past its first hit (tests/test_fovsdf_accel.c checks it over 300 random scenes and
-   cameras against analytic intersections), and a tile whose cone reaches t_max is empty: its
+   cameras against analytic intersections; the float envelope, tested to 1e6 units from the
+   origin, is in NUMERICS), and a tile whose cone reaches t_max is empty: its
    pixels are not marched at all. Results do not depend on how the caller splits the image
    into rows or tiles. Working memory: none beyond a 40-cell stack (about 1 KiB) per call;
    fovsdf_memory_size stays 0. Distance estimators that can overestimate (Mandelbulb, smooth
@@ -187,7 +188,9 @@ ERRORS AND LOGGING
    rejected with an error code before any work is done; nothing asserts on data. An optional
    fov_logger in the config receives a message with each error (the texts need FOV_DEBUG).
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
-   ends the ray as a miss, a NaN or infinite albedo channel is taken as 0.
+   ends the ray as a miss (every tracer; no evaluation beyond t_max or at a non-finite point,
+   hits always at a finite t in [t_start, t_max]), a NaN or infinite albedo channel is taken
+   as 0.
    Bounds of the float envelope (NUMERICS): a camera position, eye_offset or pinhole beyond
    1e18 from the origin is FOV_ERR_INVALID_ARG at fovsdf_init ("init: cam.pos ...",
    "init: cam.eye_offset ...", "init: pinhole ..."); an image point whose ray direction
@@ -210,15 +213,52 @@ THREADING
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
    - The hit threshold of a ray at distance t is
-         thr(t) = max(eps, eps_px * pixel_angle * t, 8 * FLT_EPSILON * (|camera| + t)):
-     never below a few float ulps of the position, so a march always makes progress and ends
-     within max_steps.
+         thr(t) = max(eps, eps_px * pixel_angle * cos^2(theta) * t, 8 * FLT_EPSILON * (|camera| + t)),
+     theta the ray's angle to the camera's axis: the pixel-cone term is the ray's own pixel
+     footprint (a pinhole pixel subtends pixel_angle cos^2(theta) radially and pixel_angle
+     cos(theta) tangentially; the smaller one), so wide fields of view and extreme aspect
+     ratios do not turn near misses into hits (measured on 64x36 images of spheres all around
+     the camera, hits whose ray never comes within one pixel footprint of a surface: 4.4 % of
+     the pixels at 150 degrees, 64 % at 179.9 and 98 % of a 4096x1 image with the centre
+     pixel's angle; none now, tests/test_fovsdf_props.c). Never below a few float ulps of the
+     position, so a march always makes progress and ends within max_steps. fovsdf_march takes
+     eps_cone as given (no footprint scaling). The normals' default step follows the same
+     footprint.
    - A hit point lies within thr(t) of the surface; along the ray that is at most
-     thr(t) / |cos(incidence)|. A secant step then refines it (exact for planes seen at
-     |cos| >= 1/64, kept only when it gets closer), so the depth error is usually far smaller.
-     Measured: objects 1e-4 .. 1e3 in size with the camera at 5 sizes: relative depth error
-     below 4e-7; camera 1e5 units from the origin, unit sphere 5 units away: about 1.5e-2
-     relative (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
+     thr(t) / |cos(incidence)|. A secant step then refines it, but only where that is safe
+     (see the next point): exact for planes near normal incidence, otherwise the hit moves by
+     the last distance. Measured (tests/test_fovsdf_scene.c): objects 1e-4 .. 1e3 in size with
+     the camera at 5 sizes, |cos(incidence)| >= 0.3: relative depth error below 4.4e-5 (the
+     earlier unverified secant gave 4e-7, and jumped thin surfaces); a plane seen at 0.01 rad:
+     -9.8e-5 relative (was -3.6e-5), at 1e-3 and 1e-4 rad unchanged (-9.5e-4, -9.4e-3); camera
+     1e5 units from the origin, unit sphere 5 units away: about 1e-2 relative (the ulp floor,
+     8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
+   - No hit behind the first surface (every tracer; CONE and CONE_FOV's traced pixels too; for
+     a distance function that never overestimates): let t_in be the first t where the ray is
+     inside an object by more than tol(t) = 8 FLT_EPSILON (|camera| + t) + 0.02 thr(t) (the
+     float noise of the position plus 2 % of the threshold); no reported hit has t > t_in. The
+     march itself never steps past its unbounding spheres, and the hit refinement moves a hit
+     beyond the last sample's sphere only when the sphere at the new point overlaps it (both
+     up to 1 % of the threshold plus 4 ulps of |camera| + t). tests/test_fovsdf_props.c checks
+     it for every method and eps mode at 1 and 4 spp on thin shells, dust, grazing floors,
+     rooms with thin pillars, needles of radius 0.002 and clusters 1e3 .. 1e6 units from the
+     origin, against a double-precision reference along the library's own rays. IPR, SKIP and
+     FIPR are heuristics (ACCELERATED METHODS): their head starts can still lie past a
+     surface.
+   - The range: no tracer evaluates beyond t_max or at a non-finite point (an overflowing
+     position counts as a miss), and every hit has a finite t in [t_start, t_max]; a NaN,
+     infinite or huge distance ends the ray as a miss (the relaxed steps end at t_max, and a
+     plain step past t_max is a miss).
+   - CONE's guarantee in float: the cone march takes f - 8 FLT_EPSILON (|camera| + t) as its
+     safe radius, so it holds while the float evaluation of the distance at a point of
+     magnitude up to |camera| + t errs by at most that much (the position rounded once, about
+     half an ulp, plus a few operations: true of the built-in primitives and of camera- or
+     origin-relative callbacks; a callback whose own float error is larger, such as a deep
+     fractal iteration on absolute coordinates, is in effect an overestimating one there and
+     loses the guarantee, not the image).
+     Tested with single-pixel cones (the tightest) facing a box and a Menger sponge 1e4, 1e5
+     and 1e6 units from the origin: no pixel starts past its first hit (without the margin:
+     474, 520 and 3215 of 4096 pixels, by up to 2e-4, 0.36 and 3.8 units).
    - Keep scenes camera-relative where you can: float positions 1e5 from the origin resolve
      only about 0.01 units.
    - Hard bounds: the camera's position and pinhole (pos + eye_offset * right) lie within
@@ -401,9 +441,10 @@ typedef enum fovsdf_method {
 } fovsdf_method;
 
 typedef enum fovsdf_eps_mode {
-    FOVSDF_EPS_BOTH = 0,      /* hit when d < max(eps, eps_px * pixel_angle * t)  (default) */
+    FOVSDF_EPS_BOTH = 0,      /* hit when d < max(eps, eps_px * footprint * t)  (default) */
     FOVSDF_EPS_ABSOLUTE = 1,  /* hit when d < eps */
-    FOVSDF_EPS_CONE = 2,      /* hit when d < eps_px * pixel_angle * t */
+    FOVSDF_EPS_CONE = 2,      /* hit when d < eps_px * footprint * t (footprint: the ray's pixel
+                                 angle, pixel_angle cos^2(theta), NUMERICS) */
     _FOVSDF_EPS_NUM,
     _FOVSDF_EPS_FORCE_U32 = 0x7FFFFFFF
 } fovsdf_eps_mode;
@@ -721,7 +762,9 @@ typedef struct fovsdf_ctx {  /* filled by fovsdf_init; read-only afterwards */
     float origin[3];         /* pinhole after the stereo offset */
     float right[3], up[3], fwd[3];
     float tan_half_y, aspect;
-    float pixel_angle;       /* angle of one pixel at the image centre, radians */
+    float pixel_angle;       /* angle of one pixel at the image centre, radians (2 tan(fov_y/2)
+                                / height); a ray at angle theta off the axis uses
+                                pixel_angle cos^2(theta), its own footprint (NUMERICS) */
     float t_max;
     float cam_dist;          /* the scene's distance at the camera (sign: inside < 0) */
     void *mem;
@@ -859,8 +902,10 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *ctx, uint32_t x0, uin
    pixel coordinates; pixel centres at +0.5; any point off the image too): rd is unit length.
    A point so far off the image that the direction overflows float (about 1e38 / tan(fov_y/2)
    pixels) is FOV_ERR_INVALID_ARG (fovsdf_shade_point too), NaN or inf FOV_ERR_NOT_FINITE.
-   fovsdf_trace marches with the context's method from t_start. rd must be unit length; ro
-   (also fovsdf_march's) within 1e18 of the origin per component (else FOV_ERR_INVALID_ARG). */
+   fovsdf_trace marches with the context's method from t_start (the pixel cone of the ray's
+   own footprint, as a pixel's; no head-start check: a hit has t in [t_start, t_max]). rd
+   must be unit length; ro (also fovsdf_march's) within 1e18 of the origin per component
+   (else FOV_ERR_INVALID_ARG). */
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *ctx, float px, float py,
                                         float ro[3], float rd[3]);
 FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], const float rd[3],
@@ -2775,6 +2820,9 @@ typedef struct fovsdf__marcher {
     float omega, beta, relax;
     float inflate;     /* SDF scale of the evaluations (1: the exact scene) */
     int verify_start;  /* heuristic head starts: restart from 0 when t0 is inside a surface */
+    int per_ray;       /* 1: eps_cone is the centre pixel's; each ray scales it by its own
+                          footprint, cos^2 of its angle to fwd (camera rays, fovsdf_trace) */
+    float fwd[3];      /* the camera's forward axis (per_ray) */
 } fovsdf__marcher;
 
 /* One counted evaluation. A non-finite value from a user callback becomes FLT_MAX, which ends
@@ -2803,13 +2851,27 @@ FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const 
     return fovsdf__eval_in(sc, inv_lip, p, eps, 1.0f, mat, st);
 }
 
+/* The ulp floor's constant part, 8 FLT_EPSILON |ro|, without overflowing for |ro| beyond
+   1.8e19 (the squared length would be inf and make every ray hit at its start). */
+FOVSDF__PRIV float fovsdf__ulp0(const float ro[3])
+{
+    float l = fovsdf__maxf(fovsdf__absf(ro[0]), fovsdf__maxf(fovsdf__absf(ro[1]), fovsdf__absf(ro[2]))), q[3];
+    if (!(l > 0.0f)) return 0.0f;
+    if (l < 1e18f) return 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    q[0] = ro[0] / l; q[1] = ro[1] / l; q[2] = ro[2] / l;
+    return 8.0f * FLT_EPSILON * l * fovsdf__len(q);
+}
+
 FOVSDF__PRIV float fovsdf__thr(const fovsdf__marcher *m, float t)
 {
     float a = m->eps, b = m->eps_cone * t, c = m->ulp0 + m->ulp1 * t;
     return fovsdf__maxf(a, fovsdf__maxf(b, c));
 }
 
-/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers). */
+/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers).
+   Contract (every method): evaluations only at finite points with t <= t_max; a hit has a
+   finite t in [t0, t_max] (t0 after the head-start check); a refinement never moves a hit
+   past a point of the ray it has not verified (see the hit refinement below). */
 FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3], float t0,
                                 fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
 {
@@ -2817,23 +2879,35 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     int hp = 0;
     uint32_t steps = 0, ev0;
     fovsdf_stats local;
+    fovsdf__marcher mr;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     ev0 = (uint32_t)st->evals;
     h->kind = FOVSDF_MISS;
-    if (t0 > m->t_max) { /* nothing to march: a miss for every method */
+    if (!(t0 <= m->t_max)) { /* nothing to march: a miss for every method */
         h->t = m->t_max; h->dist = 0.0f; h->steps = 0; h->evals = 0;
         return;
+    }
+    if (m->per_ray && m->eps_cone > 0.0f) {
+        /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
+           subtends pixel_angle cos^2(theta) radially and pixel_angle cos(theta) tangentially;
+           the smaller one, so wide fields of view do not turn near misses into hits */
+        float cz = fovsdf__clampf(fovsdf__dot(rd, m->fwd), 0.0f, 1.0f);
+        mr = *m;
+        mr.eps_cone = m->eps_cone * cz * cz;
+        m = &mr;
     }
     if (m->verify_start && t0 > 0.0f) {
         /* a heuristic head start (IPR, SKIP) can lie past the surface, inside it: one
            evaluation tells, and such a ray starts over from the camera */
         float q[3], d0;
         q[0] = ro[0] + rd[0] * t0; q[1] = ro[1] + rd[1] * t0; q[2] = ro[2] + rd[2] * t0;
-        d0 = fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st);
+        d0 = fovsdf__finite3(q) ? fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st) : FLT_MAX;
         if (d0 < 0.0f) { t0 = 0.0f; t = 0.0f; }
     }
+    /* a point that overflows (a camera near FLT_MAX) is never evaluated: FLT_MAX, a miss */
 #define FOVSDF__AT(tt) (p[0] = ro[0] + rd[0] * (tt), p[1] = ro[1] + rd[1] * (tt), p[2] = ro[2] + rd[2] * (tt), \
-                        fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st))
+                        fovsdf__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st) \
+                                           : FLT_MAX)
     if (m->method == FOVSDF_METHOD_RELAXED) {
         /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
            sphere at the new point does not overlap the previous one the step may have jumped a
@@ -2862,7 +2936,8 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
            weight beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the
            surface predicted by the line; back-step to a plain step when the spheres at t and
-           t + z do not overlap. */
+           t + z do not overlap. A step never ends past t_max; when a plain step would, the
+           sphere at t already proves the rest of the range empty: a miss. */
         float r, z, sl = -1.0f;
         r = FOVSDF__AT(t);
         ++steps;
@@ -2871,12 +2946,13 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         z = r;
         while (h->kind == FOVSDF_MISS) {
             float T, R, M, om;
-            if (t > m->t_max) break;
+            if (!(t + r <= m->t_max)) break;
             if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            T = t + z;
+            T = fovsdf__minf(t + z, m->t_max);
             R = FOVSDF__AT(T);
             ++steps;
-            if (z > fovsdf__absf(R) + r) { sl = -1.0f; z = r; continue; }
+            /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
+            if (z > r && T - t > fovsdf__absf(R) + r) { sl = -1.0f; z = r; continue; }
             M = (R - r) / fovsdf__maxf(T - t, 1e-20f);
             sl += m->beta * (M - sl);
             pt = t; pd = r; hp = 1;
@@ -2888,7 +2964,7 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     } else if (m->method == FOVSDF_METHOD_BV2018) {
         /* Balint & Valasek 2018: fit a line through the last two distance samples and step
            d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when
-           the spheres do not overlap. */
+           the spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
         float r, z, dp = 0.0f, rp = 0.0f;
         int have = 0;
         r = FOVSDF__AT(t);
@@ -2897,18 +2973,18 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
         while (h->kind == FOVSDF_MISS) {
             float T, R;
-            if (t > m->t_max) break;
+            if (!(t + r <= m->t_max)) break;
             if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
             z = r;
             if (have) {
                 float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
                 z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
             }
-            T = t + z;
+            T = fovsdf__minf(t + z, m->t_max);
             R = FOVSDF__AT(T);
             ++steps;
-            if (have && z > r + fovsdf__absf(R)) { have = 0; continue; }
-            dp = z; rp = r; have = 1;
+            if (have && z > r && T - t > r + fovsdf__absf(R)) { have = 0; continue; }
+            dp = T - t; rp = r; have = 1;
             pt = t; pd = r; hp = 1;
             t = T; r = R; d = r;
             if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
@@ -2929,41 +3005,60 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     /* Hit refinement: the threshold stops a ray up to eps (or a fraction of a pixel cone)
        short of the surface along the ray, which at grazing angles slides the hit point, and
        every texture on it, by that fraction of a pixel. One secant step through the last two
-       samples (at most 64 |d| long) is exact for planes seen at |cos(incidence)| >= 1/64 and
-       close for smooth surfaces; it is kept only when it lowers |d| and stays outside. Costs
-       one evaluation per hit. */
+       samples (at most 64 |d| long) is exact for planes; it is kept only when it lowers |d|,
+       stays outside (up to the margin mg below), stays in [t0, t_max] and never passes a
+       point the march has not verified: the loop's last sample proves [t, t + d] empty (its
+       unbounding sphere), and a move beyond t + d is kept only when the sphere at its end
+       point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then no point of the segment
+       is inside by more than mg). Otherwise the hit moves by d, inside the sample's sphere.
+       Backward moves (d < 0) stay within the part the loop verified. So a plane seen at
+       |cos(incidence)| = c is refined exactly only while d (1/c - 1) <= 2 mg, roughly
+       normal incidence; otherwise (the secant's end point lies beyond t + d + 2 mg) the hit
+       moves by d, and at grazing angles it stays up to thr (1/c - 1) before the plane (the
+       price of never jumping a thin surface, which the secant did: issue 10, a ray stopped
+       0.06 before a shell and the secant put the hit 0.94 behind it). One evaluation per
+       hit. mg = 1 % of the threshold plus
+       the float noise of the position (4 ulps of |camera| + t), which the shading offsets
+       cover. */
+#define FOVSDF__MG(tt) (0.01f * fovsdf__thr(m, tt) + 0.5f * (m->ulp0 + m->ulp1 * (tt)))
     if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fovsdf__finite(d)) {
         /* hit at the first evaluation (a head start next to the surface): one plain step
-           gives the second sample the secant needs (kept only when it gets closer) */
+           (inside the sample's sphere) gives the second sample the secant needs (kept only
+           when it gets closer) */
         float t2 = t + d, d2;
         int32_t m2 = 0;
-        d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-              fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st));
-        if (fovsdf__absf(d2) < d && d2 > -(0.01f * fovsdf__thr(m, t2) + 0.5f * (m->ulp0 + m->ulp1 * t2))) {
-            pt = t; pd = d; hp = 1;
-            t = t2; d = d2;
-            if (mat) *mat = m2;
-        }
-    }
-    if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
-        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fovsdf__absf(d), d2;
-        dt = fovsdf__clampf(dt, -lim, lim);
-        if (!fovsdf__is0(dt) && fovsdf__finite(dt)) {
-            float t2 = t + dt;
-            int32_t m2 = 0;
+        if (t2 <= m->t_max) {
             d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                  fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st));
-            /* keep it only when it gets closer and stays outside (shading offsets from the
-               surface assume the point is not inside it) */
-            /* "outside" up to 1% of the threshold plus the float noise of the position (4 ulps
-               of |camera| + t), which the shading offsets cover */
-            if (fovsdf__absf(d2) < fovsdf__absf(d) && d2 > -(0.01f * fovsdf__thr(m, t2) + 0.5f * (m->ulp0 + m->ulp1 * t2)) &&
-                t2 >= t0) {
+                  fovsdf__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st) : FLT_MAX);
+            if (fovsdf__absf(d2) < d && d2 > -FOVSDF__MG(t2)) {
+                pt = t; pd = d; hp = 1;
                 t = t2; d = d2;
                 if (mat) *mat = m2;
             }
         }
     }
+    if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
+        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fovsdf__absf(d), d2, mg = FOVSDF__MG(t);
+        dt = fovsdf__clampf(dt, -lim, lim);
+        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
+           verified: move by d instead (within the sphere; the same one evaluation) */
+        if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
+        if (!fovsdf__is0(dt) && fovsdf__finite(dt)) {
+            float t2 = t + dt;
+            int32_t m2 = 0;
+            if (t2 <= m->t_max && t2 >= t0) {
+                d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
+                      fovsdf__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st)
+                                         : FLT_MAX);
+                if (fovsdf__absf(d2) < fovsdf__absf(d) && d2 > -FOVSDF__MG(t2) &&
+                    (dt <= fovsdf__maxf(d, 0.0f) || dt <= d + d2 + 2.0f * mg)) {
+                    t = t2; d = d2;
+                    if (mat) *mat = m2;
+                }
+            }
+        }
+    }
+#undef FOVSDF__MG
 #undef FOVSDF__AT
     h->t = h->kind == FOVSDF_MISS ? m->t_max : t;
     h->dist = d;
@@ -2980,7 +3075,7 @@ FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher 
     m->max_steps = c->cfg.max_steps;
     m->eps = c->cfg.eps_mode == FOVSDF_EPS_CONE ? 0.0f : c->cfg.eps;
     m->eps_cone = c->cfg.eps_mode == FOVSDF_EPS_ABSOLUTE ? 0.0f : c->cfg.eps_px * c->pixel_angle;
-    m->ulp0 = 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    m->ulp0 = fovsdf__ulp0(ro);
     m->ulp1 = 8.0f * FLT_EPSILON;
     m->t_max = c->t_max;
     m->omega = c->cfg.omega;
@@ -2989,6 +3084,8 @@ FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher 
     m->inflate = 1.0f;
     m->verify_start = c->cfg.method == FOVSDF_METHOD_IPR || c->cfg.method == FOVSDF_METHOD_SKIP ||
                       c->cfg.method == FOVSDF_METHOD_FIPR;
+    m->per_ray = 1;
+    m->fwd[0] = c->fwd[0]; m->fwd[1] = c->fwd[1]; m->fwd[2] = c->fwd[2];
 }
 
 FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *mp,
@@ -3019,7 +3116,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     m.max_steps = mp->max_steps;
     m.eps = mp->eps;
     m.eps_cone = mp->eps_cone;
-    m.ulp0 = 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    m.ulp0 = fovsdf__ulp0(ro);
     m.ulp1 = 8.0f * FLT_EPSILON;
     m.t_max = mp->t_max;
     m.omega = mp->omega;
@@ -3027,6 +3124,8 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     m.relax = mp->bv_relax;
     m.inflate = 1.0f;
     m.verify_start = 0;
+    m.per_ray = 0; /* eps_cone is the caller's, per ray */
+    m.fwd[0] = 0.0f; m.fwd[1] = 0.0f; m.fwd[2] = 1.0f;
     fovsdf__march(&m, ro, rd, t_start, hit, 0, stats);
     return FOV_OK;
 }
@@ -3388,6 +3487,7 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
     l = fovsdf__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     fovsdf__marcher_from_ctx(c, &m, ro);
+    m.verify_start = 0; /* a user's ray from t_start: hits lie in [t_start, t_max] */
     fovsdf__march(&m, ro, rd, t_start, hit, 0, st);
     return FOV_OK;
 }
@@ -3472,8 +3572,10 @@ FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *
         } else if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
             col[0] = col[1] = col[2] = 0.0f;
         } else {
+            /* half the ray's own pixel footprint (as the hit threshold: pixel_angle cos^2) */
+            float cz = fovsdf__clampf(fovsdf__dot(rd, c->fwd), 0.0f, 1.0f);
             hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
-                                          : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * h->t),
+                                          : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * h->t),
                                                          4.0f * (m0->ulp0 + m0->ulp1 * h->t));
             fovsdf_normal(c, p, hn, n, st);
             if (fovsdf__dot(n, rd) > 0.0f && h->dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
@@ -3613,10 +3715,15 @@ FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher
         float p[3], f;
         if (t > m->t_max) { t = -1.0f; break; }
         p[0] = c->origin[0] + a[0] * t; p[1] = c->origin[1] + a[1] * t; p[2] = c->origin[2] + a[2] * t;
-        f = fovsdf__eval_sc(m->sc, m->inv_lip, p, m->eps, 0, st);
+        /* the float evaluation at a position of magnitude up to |camera| + t errs by a few
+           ulps of it: take the distance minus the library's ulp floor, 8 FLT_EPSILON
+           (|camera| + t), as the safe radius (NUMERICS: where the guarantee holds) */
+        f = fovsdf__eval_sc(m->sc, m->inv_lip, p, m->eps, 0, st) - (m->ulp0 + m->ulp1 * t);
         if (f <= t * k * (1.0f + FOVSDF_CONE_SLACK) + m->eps) break;
         t += (f - t * k) / (1.0f + k);
     }
+    /* the step budget can run out right after a verified step past t_max: the cone is empty */
+    if (t > m->t_max) t = -1.0f;
     st->evals_lowres += st->evals - e0;
     return t;
 }
