@@ -1,4 +1,4 @@
-/* fovlp.h - v0.2.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.2.1 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -218,6 +218,13 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.2.1 (2026-12-01) finite outputs for finite inputs: the TAA blend, history fetch, variance
+                      clip (scaled when the moments overflow; moments about the centre pixel),
+                      depth test, reconstruction and fovlp_blend_rows no longer overflow for
+                      colours near FLT_MAX (3e38 then -3e38 gave -inf in all of the history);
+                      fovlp_spacing returns FOV_ERR_LIMIT instead of an infinite spacing;
+                      fovlp_density and fovlp_ecc_deg finite at far points; screen_to_lp,
+                      lp_to_screen and spacing log their errors.
    0.2.0 (2026-11-23) TAA: while the camera moves the history is variance-clipped in YCoCg
                       when taa.clamp is NONE (new field taa.thesis_moving = 1: the thesis's
                       unclamped history, which ghosts); a still camera is unchanged.
@@ -243,8 +250,8 @@ RECENT REVISION HISTORY
 
 #define FOVLP_VERSION_MAJOR 0
 #define FOVLP_VERSION_MINOR 2
-#define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.2.0"
+#define FOVLP_VERSION_PATCH 1
+#define FOVLP_VERSION_STRING "0.2.1"
 
 #if defined(__GNUC__) || defined(__clang__)
 #define FOVLP__UNUSED __attribute__((unused))

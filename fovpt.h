@@ -1,4 +1,4 @@
-/* fovpt.h - v0.2.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.2.1 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    Do this:
@@ -252,6 +252,13 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.2.1 (2026-12-01) the BVH finds every hit brute force finds: a conservative box test on the
+                      SSE and scalar paths (rays lying in a box face, zero direction
+                      components, a rounding margin after Ize 2013, padded primitive boxes);
+                      fovpt_camera_ray always unit or FOV_ERR_INVALID_ARG; vectors of any
+                      length normalised; directions of length ~1e30, huge triangles and
+                      degenerate sphere normals handled; skip_degenerate keeps the
+                      documented primitive ids; FOVPT_VERSION_STRING matches (said 0.1.0).
    0.2.0 (2026-11-23) review fixes: a LAYERS layer whose stride exceeds the image with the
                       gaze off it keeps one lattice point (it read before its buffer); hook
                       and plane normals and camera vectors of any length; a failed
@@ -285,8 +292,8 @@ RECENT REVISION HISTORY
 
 #define FOVPT_VERSION_MAJOR 0
 #define FOVPT_VERSION_MINOR 2
-#define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.2.0"
+#define FOVPT_VERSION_PATCH 1
+#define FOVPT_VERSION_STRING "0.2.1"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8

@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.2.1 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.3.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -303,6 +303,21 @@ PLATFORM NOTES
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.3.0 (2026-12-01) accuracy and contract fixes found from outside: the hit refinement never
+                      moves a hit past an unverified point (it jumped through thin surfaces);
+                      no tracer evaluates or reports a hit beyond t_max or at a non-finite
+                      point; the pixel-cone threshold uses each ray's own footprint (wide
+                      fields of view and 4096x1 images reported misses as hits); the cone
+                      march keeps its guarantee far from the origin (float margin) and an
+                      exhausted cone past t_max is empty; IPR, SKIP and FIPR default to a safe,
+                      cone-certified head start (new field heuristic_start = 1: the thesis's);
+                      a 1x1 image keeps SKIP's ray in the image; interpolated FIPR/CONE_FOV
+                      depths stay in [0, t_max]; fovsdf_trace no longer restarts caller rays;
+                      normalisation of any finite vector; origins beyond 1e18 rejected;
+                      fovsdf_program_build checks node parameters as the builder does (one
+                      check; new fovsdf_program_check, fovsdf_builder.logger); finite,
+                      NaN-free evaluation of every node in its ranges; rgb outputs clamped to
+                      [0, 65504]; FOVSDF_VERSION_STRING matches the version (said 0.2.0).
    0.2.1 (2026-11-23) a camera whose up hint or view vector is tiny (1e-30) or huge (1e30) is
                       valid (was FOV_ERR_DEGENERATE: the squared length under/overflowed);
                       a NaN or infinite albedo from the callback is taken as 0 (was a NaN
@@ -328,9 +343,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 2
-#define FOVSDF_VERSION_PATCH 1
-#define FOVSDF_VERSION_STRING "0.2.1"
+#define FOVSDF_VERSION_MINOR 3
+#define FOVSDF_VERSION_PATCH 0
+#define FOVSDF_VERSION_STRING "0.3.0"
 
 #if defined(__GNUC__) || defined(__clang__)
 #define FOVSDF__UNUSED __attribute__((unused))
