@@ -2534,6 +2534,13 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
         if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) {
             float tt = t / sc;
             if (tt > tmin && tt < tmax) return 1;
+            /* the first hit found does not rescale into (tmin, tmax) (t / sc overflowed):
+               decide on the closest hit, as fovpt_intersect does */
+            t = tmax * sc;
+            if (fovpt__closest(s, &r, tmin * sc, &t, 0, 0, NULL) != FOVPT_PRIM_NONE) {
+                tt = t / sc;
+                if (tt > tmin && tt < tmax) return 1;
+            }
         }
     }
     if (s->user_hit) {

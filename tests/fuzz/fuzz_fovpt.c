@@ -145,7 +145,9 @@ static void fz_rays(fz_in *in, const fovpt_scene *s, const float *pos, uint32_t 
         FZ_CHECK(!a1 || (a2 && h1.t >= h2.t), "BVH hit (t %.9g) closer than brute force (%d, t %.9g)", (double)h1.t, a2,
                  a2 ? (double)h2.t : 0.0);
         FZ_CHECK(!oc || a2, "fovpt_occluded without a brute-force hit");
-        FZ_CHECK(!a1 || oc, "fovpt_intersect hit (t %.9g) but fovpt_occluded says free", (double)h1.t);
+        FZ_CHECK(!a1 || oc, "fovpt_intersect hit (t %.9g, prim %u) but fovpt_occluded says free: o (%.9g %.9g %.9g) d (%.9g %.9g %.9g) tmin %.9g tmax %.9g",
+                 (double)h1.t, h1.prim, (double)o[0], (double)o[1], (double)o[2], (double)d[0], (double)d[1], (double)d[2],
+                 (double)tmin, (double)tmax);
         if (!fz_finite_n(o, 3) || !fz_finite_n(d, 3) || !fz_finite(tmin) || !fz_finite(tmax)) continue;
         if (a2 && (!a1 || h1.t > h2.t) && h2.prim >= ns && h2.prim - ns < nt) {
             /* the BVH missed a brute-force triangle hit: a failure unless the hit point lies

@@ -19,6 +19,7 @@
 #                  run the corpus and regression inputs once through the libFuzzer build)
 #   FUZZ_MAX_LEN   libFuzzer -max_len (default 4096)
 #   FUZZ_TIMEOUT   libFuzzer -timeout per input, seconds (default 10): slower is a failure
+#   FUZZ_SEED      libFuzzer -seed (default: none, a random seed; make test passes 1)
 #   FUZZ_FLAGS     extra libFuzzer flags (e.g. "-jobs=2 -workers=2", "-only_ascii=1")
 #   CC             the compiler of the replay builds (default gcc); FUZZ_CC the libFuzzer
 #                  compiler (default clang)
@@ -208,6 +209,9 @@ do_fuzz() {
         log="$B/logs/fuzz_$t.log"
         # FUZZ_SECONDS=0: run the inputs once (libFuzzer's -max_total_time=0 means no limit)
         if [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then limit=(-max_total_time="$FUZZ_SECONDS"); else limit=(-runs=0); fi
+        # FUZZ_SEED: libFuzzer's -seed (make test fixes it, so that a commit's fuzz section
+        # explores the same inputs in every run up to the time limit)
+        if [ -n "${FUZZ_SEED:-}" ]; then limit+=(-seed="$FUZZ_SEED"); fi
         # shellcheck disable=SC2086
         "$B/fuzz_$t" "${limit[@]}" -max_len="$FUZZ_MAX_LEN" \
             -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 -artifact_prefix="$B/crashes/$t/" \
