@@ -1,5 +1,6 @@
 /* bench_stress.c - fovsdf.h on the six stress scenes of issue 10 (tests/common/fovstress.h),
-   every method at 1 and 4 spp, against a double-precision ground truth along the library's
+   every method at 1 and 4 spp (and the thesis variants of IPR, SKIP and FIPR, heuristic_start 1,
+   as ipr_thesis, skip_thesis, fipr_thesis), against a double-precision ground truth along the library's
    own rays (fovsdf_camera_ray). Per scene, method and spp:
      behind_px   pixels whose reported depth lies behind the first surface (t > t_in of
                  every one of its sample rays: certainly a sample behind it)
@@ -71,7 +72,7 @@ int main(int argc, char **argv)
         memcpy(cam.up, sc.up, sizeof cam.up);
         cam.fov_y_deg = sc.fov;
         for (si = 0; si < 2; ++si) {
-            uint32_t spp = spps[si], n = W * H * spp, meth, x, y, s;
+            uint32_t spp = spps[si], n = W * H * spp, meth, mi, x, y, s;
             smp_ref *ref = (smp_ref *)malloc(sizeof(smp_ref) * n);
             float *depth = (float *)malloc(sizeof(float) * W * H), *start = (float *)malloc(sizeof(float) * W * H);
             uint8_t *hit = (uint8_t *)malloc(W * H), *mask = (uint8_t *)malloc(W * H);
@@ -95,12 +96,20 @@ int main(int argc, char **argv)
                         q->r = fs_reference(&sc, q->ro, q->rd, (double)ctx.t_max, (double)ctx.cfg.eps,
                                             (double)ctx.cfg.eps_px * foot * (double)cz, TOL_FRAC, foot);
                     }
-            for (meth = 0; meth < (uint32_t)_FOVSDF_METHOD_NUM; ++meth) {
+            for (mi = 0; mi < (uint32_t)_FOVSDF_METHOD_NUM + 3u; ++mi) {
+                /* every method (IPR, SKIP, FIPR with their safe default), then the thesis's
+                   variants of IPR, SKIP and FIPR (heuristic_start 1) as ipr_thesis, ... */
+                static const uint32_t thesis[3] = { FOVSDF_METHOD_IPR, FOVSDF_METHOD_SKIP, FOVSDF_METHOD_FIPR };
+                static const char *const thesis_name[3] = { "ipr_thesis", "skip_thesis", "fipr_thesis" };
                 fovsdf_output out;
                 fovsdf_stats st;
                 double t0, ms, worst = 0.0, worst_st = -(double)INFINITY;
                 long traced = 0, behind_px = 0, behind_smp = 0, start_bad = 0, false_hit = 0, missed = 0;
+                const char *mname;
+                meth = mi < (uint32_t)_FOVSDF_METHOD_NUM ? mi : thesis[mi - (uint32_t)_FOVSDF_METHOD_NUM];
+                mname = mi < (uint32_t)_FOVSDF_METHOD_NUM ? fovsdf_method_name(meth) : thesis_name[mi - (uint32_t)_FOVSDF_METHOD_NUM];
                 cfg.method = meth;
+                cfg.heuristic_start = mi < (uint32_t)_FOVSDF_METHOD_NUM ? 0u : 1u;
                 if (fovsdf_init(&ctx, &cfg, &scene, &cam, gz, NULL, 0) != FOV_OK) { fprintf(stderr, "init failed\n"); return 1; }
                 fovsdf_output_init(&out);
                 out.depth = depth; out.hit = hit; out.start = start; out.mask = mask;
@@ -148,10 +157,10 @@ int main(int argc, char **argv)
                         }
                     }
                 printf("%-7s %3u %-12s %8ld %9ld %9ld %9ld %9ld %8ld %8.1f %9.1f %8.3g %9.3g\n", fs_kind_name[kind], spp,
-                       fovsdf_method_name(meth), traced, behind_px, behind_smp, start_bad, false_hit, missed,
+                       mname, traced, behind_px, behind_smp, start_bad, false_hit, missed,
                        (double)st.evals / (double)(W * H), ms, worst, worst_st);
                 fprintf(csv, "%s,%u,%s,%u,%u,%ld,%ld,%ld,%ld,%ld,%ld,%.2f,%.1f,%.4g,%.4g\n", fs_kind_name[kind], spp,
-                        fovsdf_method_name(meth), W * H, n, traced, behind_px, behind_smp, start_bad, false_hit, missed,
+                        mname, W * H, n, traced, behind_px, behind_smp, start_bad, false_hit, missed,
                         (double)st.evals / (double)(W * H), ms, worst, worst_st);
                 fflush(stdout);
             }
