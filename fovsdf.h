@@ -914,9 +914,8 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *ctx, uint32_t x0, uin
                                          fovsdf_stats *stats);
 
 /* Single rays. fovsdf_camera_ray gives the ray through image point (px, py) (continuous
-   pixel coordinates; pixel centres at +0.5; any point off the image too): rd is unit length.
-   A point so far off the image that the direction overflows float (about 1e38 / tan(fov_y/2)
-   pixels) is FOV_ERR_INVALID_ARG (fovsdf_shade_point too), NaN or inf FOV_ERR_NOT_FINITE.
+   pixel coordinates; pixel centres at +0.5; any finite point off the image too, up to
+   +-FLT_MAX): rd is unit length; NaN or inf is FOV_ERR_NOT_FINITE.
    fovsdf_trace marches with the context's method from t_start (the pixel cone of the ray's
    own footprint, as a pixel's; no head-start check: a hit has t in [t_start, t_max]). rd
    must be unit length; ro (also fovsdf_march's) within 1e18 of the origin per component
@@ -3474,6 +3473,19 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
     rd[2] = c->fwd[2] + u * c->right[2] + v * c->up[2];
     ro[0] = c->origin[0]; ro[1] = c->origin[1]; ro[2] = c->origin[2];
     if (fovsdf__normalize(rd) > 0.0f) return 1;
+    {
+        /* a point so far off the image that u or v overflowed: the same direction from the
+           offset scaled down by its largest component (px / width cannot overflow) */
+        float a = px / (float)c->cam.width - 0.5f, b = 0.5f - py / (float)c->cam.height, k, f = 1.0f;
+        k = fovsdf__maxf(fovsdf__absf(a), fovsdf__absf(b));
+        if (k > 1.0f && fovsdf__finite(k)) { a /= k; b /= k; f = 1.0f / k; }
+        u = a * 2.0f * c->tan_half_y * c->aspect;
+        v = b * 2.0f * c->tan_half_y;
+        rd[0] = c->fwd[0] * f + u * c->right[0] + v * c->up[0];
+        rd[1] = c->fwd[1] * f + u * c->right[1] + v * c->up[1];
+        rd[2] = c->fwd[2] * f + u * c->right[2] + v * c->up[2];
+        if (fovsdf__normalize(rd) > 0.0f) return 1;
+    }
     rd[0] = c->fwd[0]; rd[1] = c->fwd[1]; rd[2] = c->fwd[2]; /* a unit vector all the same */
     return 0;
 }
