@@ -262,6 +262,108 @@ static void test_secant_jump(void)
           bad, n, worst);
 }
 
+static float floor_wall2(const float p[3], void *u)
+{
+    const float *k = (const float *)u; /* k[0]: x of the wall's mid-plane, k[1]: its thickness */
+    float wall = fabsf(p[0] - k[0]) - 0.5f * k[1];
+    return p[1] < wall ? p[1] : wall;
+}
+/* ---- item 1: the empty-ball certificate of the secant step ------------------------------
+   At grazing angles the secant's end point lies beyond the last sample's sphere and the hit
+   refinement certifies the move with one empty ball off the ray (fovsdf.h, fovsdf__march).
+   (a) A floor alone at 0.5 .. 30 degrees: the hit is exact again (relative 1e-5; the plain
+   fallback stops up to thr / sin(angle) short: 1e-4 relative with eps 1e-4 at 0.5 degrees,
+   0.2 with a pixel cone of 2.4e-3). (b) A thin wall (0.05 and 0.1 of the threshold thick,
+   across the ray) between where the loop stops and the floor behind it: the ball then holds
+   part of the wall, f at its centre is smaller than its radius, and the certificate must
+   refuse: no hit behind the wall's interior, and the certificate was evaluated to its last
+   test (5 evaluations beyond the steps for classic: F, 2 differences, the centre, the plain
+   step) on some rays of every angle. */
+static float floor_only(const float p[3], void *u)
+{
+    (void)u;
+    return p[1];
+}
+static void test_ball_certificate(void)
+{
+    static const double angs[6] = { 0.5, 1.0, 2.0, 5.0, 10.0, 30.0 };
+    static const double wang[4] = { 0.5, 1.0, 2.0, 5.0 };
+    fovsdf_scene sc;
+    uint32_t m;
+    int ai, k, mode;
+    fovsdf_scene_init(&sc);
+    sc.dist = floor_only;
+    for (mode = 0; mode < 2; ++mode)
+        for (m = 0; m <= (uint32_t)FOVSDF_METHOD_BV2018; ++m) {
+            double worst = 0.0;
+            int bad = 0, n = 0;
+            for (ai = 0; ai < 6; ++ai)
+                for (k = 0; k < 16; ++k) {
+                    double a = angs[ai] * 3.14159265358979323846 / 180.0, az = 0.1 + 0.4 * k, te, rel;
+                    const float ro[3] = { 0.0f, 1.0f, 0.0f };
+                    float rd[3];
+                    fovsdf_march_params mp;
+                    fovsdf_hit h;
+                    memset(&mp, 0, sizeof mp);
+                    mp.method = m; mp.max_steps = 8192; mp.t_max = 3000.0f;
+                    mp.omega = 1.6f; mp.ar_beta = 0.3f; mp.bv_relax = 0.9f;
+                    if (mode == 0) mp.eps = 1e-4f; else mp.eps_cone = 2.4e-3f;
+                    rd[0] = (float)(cos(a) * cos(az)); rd[1] = (float)-sin(a); rd[2] = (float)(cos(a) * sin(az));
+                    te = (double)ro[1] / -(double)rd[1]; /* along the float ray, in double */
+                    (void)fovsdf_march(&sc, &mp, ro, rd, 0.0f, &h, NULL);
+                    rel = h.kind == FOVSDF_HIT ? fabs((double)h.t - te) / te : 1.0;
+                    ++n;
+                    if (rel > 1e-5) ++bad;
+                    if (rel > worst) worst = rel;
+                }
+            check(bad == 0, N2("ball_grazing_floor_exact_%s_%s", fovsdf_method_name(m), mode ? "cone" : "eps"),
+                  "%d of %d rays (0.5 .. 30 degrees) off the floor by more than 1e-5 relative, worst %.3g", bad, n, worst);
+        }
+    for (m = 0; m <= (uint32_t)FOVSDF_METHOD_BV2018; ++m) {
+        int bad = 0, n = 0, refused[4] = { 0, 0, 0, 0 }, wi;
+        double worst = 0.0;
+        float kw[2];
+        fovsdf_scene_init(&sc);
+        sc.dist = floor_wall2;
+        sc.user = kw;
+        for (ai = 0; ai < 4; ++ai)
+            for (wi = 0; wi < 2; ++wi)
+                for (k = 0; k < 32; ++k) {
+                    const float eps = 0.05f, ro[3] = { 0.0f, 1.0f, 0.0f };
+                    double a = wang[ai] * 3.14159265358979323846 / 180.0, tp, span, tin;
+                    float rd[3];
+                    fovsdf_march_params mp;
+                    fovsdf_hit h;
+                    memset(&mp, 0, sizeof mp);
+                    mp.method = m; mp.max_steps = 8192; mp.eps = eps; mp.t_max = 300.0f;
+                    mp.omega = 1.6f; mp.ar_beta = 0.3f; mp.bv_relax = 0.9f;
+                    rd[0] = (float)cos(a); rd[1] = (float)-sin(a); rd[2] = 0.0f;
+                    tp = 1.0 / sin(a);          /* the floor */
+                    span = 1.1 * (double)eps / sin(a);  /* where the loop may stop before it */
+                    kw[1] = (float)((wi ? 0.1 : 0.05) * (double)eps); /* the wall's thickness */
+                    kw[0] = (float)((tp - span + span * (k + 0.5) / 32.0) * cos(a));
+                    tin = ((double)kw[0] - 0.5 * (double)kw[1] + TOL_FRAC * (double)eps) / (double)rd[0];
+                    (void)fovsdf_march(&sc, &mp, ro, rd, 0.0f, &h, NULL);
+                    ++n;
+                    if (h.kind != FOVSDF_MISS && (double)h.t > tin) {
+                        ++bad;
+                        if ((double)h.t - tin > worst) worst = (double)h.t - tin;
+                    } else if (m == FOVSDF_METHOD_CLASSIC && h.evals >= h.steps + 5u) {
+                        ++refused[ai];
+                    }
+                }
+        check(bad == 0, N2("ball_never_jumps_a_thin_wall_%s%s", fovsdf_method_name(m), ""),
+              "%d of %d rays (eps 0.05, a floor at 0.5 .. 5 degrees, a wall 0.0025 or 0.005 thick before it) hit behind the wall, worst by %.3g",
+              bad, n, worst);
+        if (m == FOVSDF_METHOD_CLASSIC) info("ball certificate refused on %d %d %d %d of 64 wall rays at 0.5/1/2/5 degrees (classic)",
+                                            refused[0], refused[1], refused[2], refused[3]);
+        if (m == FOVSDF_METHOD_CLASSIC)
+            check(refused[0] > 0 && refused[1] > 0 && refused[2] > 0 && refused[3] > 0, "ball_certificate_refuses_the_wall",
+                  "rays where the certificate ran to its ball test and refused, per angle 0.5/1/2/5 deg: %d %d %d %d of 64",
+                  refused[0], refused[1], refused[2], refused[3]);
+    }
+}
+
 /* ---- F3: hits beyond t_max (cylinder of radius 180, camera at (180, 180, 180)) ------------ */
 static void test_f3_t_max(void)
 {
@@ -537,6 +639,7 @@ static void test_cone_far(void)
 int main(void)
 {
     test_secant_jump();
+    test_ball_certificate();
     test_f3_t_max();
     test_f5_nonfinite();
     test_wide_fov();
