@@ -194,7 +194,8 @@ ERRORS AND LOGGING
    Bounds of the float envelope (NUMERICS): a camera position, eye_offset or pinhole beyond
    1e18 from the origin is FOV_ERR_INVALID_ARG at fovsdf_init ("init: cam.pos ...",
    "init: cam.eye_offset ...", "init: pinhole ..."); an image point whose ray direction
-   overflows float is FOV_ERR_INVALID_ARG from fovsdf_camera_ray and fovsdf_shade_point.
+   overflows float is rescaled (fovsdf_camera_ray and fovsdf_shade_point give a unit ray for any
+   finite image point).
    Scene nodes: the builder functions and fovsdf_program_build share one check (the ranges at
    fovsdf_node_type: FOV_ERR_NOT_FINITE, FOV_ERR_LIMIT for lengths beyond 1e18,
    FOV_ERR_INVALID_ARG, FOV_ERR_DEGENERATE); fovsdf_builder.logger and fovsdf_program_check
