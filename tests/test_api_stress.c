@@ -49,21 +49,7 @@ static int stress_check(int ok, const char *name, const char *fmt, ...)
 #define check stress_check
 
 /* ---- helpers ----------------------------------------------------------------------------- */
-static char g_name[256];
-#if defined(__GNUC__) || defined(__clang__)
-#define T_PRINTF(a, b) __attribute__((format(printf, a, b)))
-#else
-#define T_PRINTF(a, b)
-#endif
-static const char *N(const char *fmt, ...) T_PRINTF(1, 2);
-static const char *N(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(g_name, sizeof g_name, fmt, ap);
-    va_end(ap);
-    return g_name;
-}
+#define N fovcheck_name /* tests/common/fovcheck.h */
 
 static float f_nan(void) { volatile float z = 0.0f; return z / z; }
 static float f_inf(void) { volatile float z = 0.0f; return 1.0f / z; }

@@ -31,21 +31,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static char g_name[200];
-#if defined(__GNUC__) || defined(__clang__)
-#define T_PRINTF(a, b) __attribute__((format(printf, a, b)))
-#else
-#define T_PRINTF(a, b)
-#endif
-static const char *N(const char *fmt, ...) T_PRINTF(1, 2);
-static const char *N(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(g_name, sizeof g_name, fmt, ap);
-    va_end(ap);
-    return g_name;
-}
+#define N fovcheck_name /* tests/common/fovcheck.h */
 
 /* a test-side generator (independent of the library's streams) */
 static uint64_t g_rs = 0x9e3779b97f4a7c15ull;

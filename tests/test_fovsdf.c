@@ -38,24 +38,9 @@
 #include <string.h>
 
 /* ==== harness ============================================================================ */
-static char g_name[160];
 
-#if defined(__GNUC__) || defined(__clang__)
-#define T_PRINTF(a, b) __attribute__((format(printf, a, b)))
-#else
-#define T_PRINTF(a, b)
-#endif
 
-/* Formats a check name into a static buffer (one name per check call). */
-static const char *N(const char *fmt, ...) T_PRINTF(1, 2);
-static const char *N(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(g_name, sizeof g_name, fmt, ap);
-    va_end(ap);
-    return g_name;
-}
+#define N fovcheck_name /* tests/common/fovcheck.h */
 
 
 static const char *rname(fov_result r)

@@ -220,8 +220,8 @@ static void cone_property(void)
                     float ro[3], rd[3];
                     sample_offset(ctx.cfg.spp, smp, &ox, &oy);
                     fovsdf_camera_ray(&ctx, (float)((double)x + 0.5 + ox), (float)((double)y + 0.5 + oy), ro, rd);
-                    o[0] = ro[0]; o[1] = ro[1]; o[2] = ro[2];
-                    d[0] = rd[0]; d[1] = rd[1]; d[2] = rd[2];
+                    o[0] = (double)ro[0]; o[1] = (double)ro[1]; o[2] = (double)ro[2];
+                    d[0] = (double)rd[0]; d[1] = (double)rd[1]; d[2] = (double)rd[2];
                     th = first_hit(&s, o, d);
                     ++rays;
                     if (st >= (double)cfg.t_max) { /* proven empty: no hit within t_max */

@@ -25,16 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static char g_name[200];
-static const char *N(const char *fmt, ...) FOVCHECK_PRINTF(1, 2);
-static const char *N(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(g_name, sizeof g_name, fmt, ap);
-    va_end(ap);
-    return g_name;
-}
+#define N fovcheck_name /* tests/common/fovcheck.h */
 
 static float f_nan(void)
 {

@@ -34,6 +34,19 @@ static int check(int ok, const char *name, const char *fmt, ...)
     return ok;
 }
 
+/* Formats a check name into one static buffer (one name per check call):
+   check(ok, fovcheck_name("case_%d", i), ...). Test programs may #define N fovcheck_name. */
+static char fovcheck__name[256];
+static inline const char *fovcheck_name(const char *fmt, ...) FOVCHECK_PRINTF(1, 2);
+static inline const char *fovcheck_name(const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(fovcheck__name, sizeof fovcheck__name, fmt, ap);
+    va_end(ap);
+    return fovcheck__name;
+}
+
 /* Prints the closing line; returns the process exit status. */
 static int fovcheck_summary(void)
 {
