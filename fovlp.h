@@ -123,18 +123,13 @@ DOES NOT
 
 CONFIGURATION (define before including the implementation)
    FOVLP_STATIC         all functions static (use it when two libraries embed this header)
-   FOV_DLL              export (FOVLP_IMPLEMENTATION) or import the API from a DLL
    FOVLP_API            override the linkage of every public function
-   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
-   FOV_NO_LIBM          use the built-in float approximations of the math functions below
-   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
-                        math hooks: define all of them or none (an #error tells you)
-   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops)
    FOVLP_MAX_DIM        hard cap on the screen width and height          (default 65536)
    FOVLP_MAX_LP_DIM     hard cap on the LP buffer width and height       (default 65536)
    FOVLP_MAX_SAMPLES    hard cap on the sample slots (LP + disc + 1)     (default 2^28)
-   FOV_NO_ERROR_STRINGS compile out the result strings (fovlp_result_string returns "")
-   FOV_DEBUG            pass a message text with each error to the logger
+   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
+   FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 
 MEMORY
    The caller owns every byte. fovlp_memory_size() gives the context's working memory for a
@@ -253,33 +248,56 @@ RECENT REVISION HISTORY
 #define FOVLP_VERSION_PATCH 1
 #define FOVLP_VERSION_STRING "0.2.1"
 
-#if defined(__GNUC__) || defined(__clang__)
-#define FOVLP__UNUSED __attribute__((unused))
-#else
-#define FOVLP__UNUSED
-#endif
+/* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
+   header: edit tools/fov_shared.h and run `python3 tools/sync_shared.py` (tests/shared.sh
+   checks the copies).
 
-#ifndef FOVLP_API
-#if defined(FOVLP_STATIC)
-#define FOVLP_API static FOVLP__UNUSED
-#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVLP_IMPLEMENTATION)
-#define FOVLP_API __declspec(dllexport)
-#elif defined(FOV_DLL) && defined(_WIN32)
-#define FOVLP_API __declspec(dllimport)
-#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
-#define FOVLP_API __attribute__((visibility("default"))) extern
+   CONFIGURATION shared by fovsdf.h, fovlp.h and fovpt.h (define before including the
+   implementation; the same value for every header in a translation unit)
+   FOV_DLL              export (in the translation unit with FOVxx_IMPLEMENTATION) or import
+                        the API of a shared library
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+                        (relative error about 1e-6 or better on the ranges the libraries use)
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOV_NO_ERROR_STRINGS compile out the message texts: the logger gets "" and
+                        *_result_string returns "" (for the smallest microcontroller builds)
+   Error messages are on by default: set the logger in a config (cfg.logger.func) and every
+   failure calls it with a code, a specific message and the header's source line. */
+#ifndef FOV_SHARED_DECL_INCLUDED
+#define FOV_SHARED_DECL_INCLUDED 1
+#define FOV_SHARED_REVISION 1 /* the revision of this block; headers that differ must not mix */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOV__UNUSED __attribute__((unused))
 #else
-#define FOVLP_API extern
+#define FOV__UNUSED
 #endif
+/* Linkage of public functions (each header's FOVxx_API picks one): FOV_DLL builds a shared
+   library (dllexport in the translation unit with the implementation, dllimport elsewhere on
+   Windows; default visibility with gcc and clang). */
+#if defined(FOV_DLL) && defined(_WIN32)
+#define FOV__API_EXPORT __declspec(dllexport)
+#define FOV__API_IMPORT __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOV__API_EXPORT __attribute__((visibility("default"))) extern
+#define FOV__API_IMPORT __attribute__((visibility("default"))) extern
+#else
+#define FOV__API_EXPORT extern
+#define FOV__API_IMPORT extern
 #endif
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
-#ifndef FOV_COMMON_DEFINED
-#define FOV_COMMON_DEFINED
 /* Result codes of every fallible function in the fov headers. */
 typedef enum fov_result {
     FOV_OK = 0,
@@ -300,8 +318,9 @@ typedef enum fov_log_level {
     _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
 } fov_log_level;
 
-/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
-   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+/* Optional diagnostics: tag is the header ("fovsdf", "fovlp", "fovpt"), code a fov_result,
+   msg a specific text naming what was wrong and what is allowed (never NULL; "" when the
+   build defines FOV_NO_ERROR_STRINGS), line the header's source line that reported it. */
 typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
                              uint32_t line, void *user);
 typedef struct fov_logger {
@@ -342,8 +361,28 @@ typedef struct fov_ecc_model {
     float gx, gy;    /* the gaze point, pixels */
     float g[3];      /* unit direction of the gaze ray */
 } fov_ecc_model;
-#endif /* FOV_COMMON_DEFINED */
-/* ---- end of the shared block ---- */
+
+#ifdef __cplusplus
+}
+#endif
+#elif FOV_SHARED_REVISION != 1
+#error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
+#endif /* FOV_SHARED_DECL_INCLUDED */
+/* ==== FOV_SHARED_END decl ==================================================================== */
+
+#ifndef FOVLP_API
+#if defined(FOVLP_STATIC)
+#define FOVLP_API static FOV__UNUSED
+#elif defined(FOVLP_IMPLEMENTATION)
+#define FOVLP_API FOV__API_EXPORT
+#else
+#define FOVLP_API FOV__API_IMPORT
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ==== settings ============================================================================ */
 
@@ -615,6 +654,13 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
 #if defined(FOVLP_IMPLEMENTATION) && !defined(FOVLP_IMPL_INCLUDED)
 #define FOVLP_IMPL_INCLUDED
 
+/* ==== FOV_SHARED_BEGIN impl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit (edit
+   tools/fov_shared.h, then run `python3 tools/sync_shared.py`). Private: every name starts
+   with fov__ / FOV__ and has internal linkage. */
+#ifndef FOV__SHARED_IMPL_INCLUDED
+#define FOV__SHARED_IMPL_INCLUDED 1
+
 #include <float.h>
 #include <limits.h>
 
@@ -630,54 +676,54 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
 #if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
     !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
     !defined(FOV_POWF)
-#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#error "fov: define all nine math hooks (FOV_SQRTF ... FOV_POWF, see the doc block) or none"
 #endif
-#define FOVLP__HOOKED_MATH 1
+#define FOV__HOOKED_MATH 1
 #endif
 
-#define FOVLP__PRIV static FOVLP__UNUSED
+#define FOV__PRIV static FOV__UNUSED
 
 /* Float tests without == (the library builds clean with -Wfloat-equal). */
-FOVLP__PRIV int fovlp__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
-FOVLP__PRIV int fovlp__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+FOV__PRIV int fov__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 
-#if !defined(FOVLP__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#if !defined(FOV__HOOKED_MATH) && !defined(FOV_NO_LIBM)
 #include <math.h>
-#define FOVLP__SQRT(x) sqrtf(x)
-#define FOVLP__FLOOR(x) floorf(x)
-#define FOVLP__SIN(x) sinf(x)
-#define FOVLP__COS(x) cosf(x)
-#define FOVLP__TAN(x) tanf(x)
-#define FOVLP__ATAN2(y, x) atan2f(y, x)
-#define FOVLP__EXP(x) expf(x)
-#define FOVLP__LOG(x) logf(x)
-#define FOVLP__POW(x, y) powf(x, y)
-#elif defined(FOVLP__HOOKED_MATH)
-#define FOVLP__SQRT(x) FOV_SQRTF(x)
-#define FOVLP__FLOOR(x) FOV_FLOORF(x)
-#define FOVLP__SIN(x) FOV_SINF(x)
-#define FOVLP__COS(x) FOV_COSF(x)
-#define FOVLP__TAN(x) FOV_TANF(x)
-#define FOVLP__ATAN2(y, x) FOV_ATAN2F(y, x)
-#define FOVLP__EXP(x) FOV_EXPF(x)
-#define FOVLP__LOG(x) FOV_LOGF(x)
-#define FOVLP__POW(x, y) FOV_POWF(x, y)
+#define FOV__SQRT(x) sqrtf(x)
+#define FOV__FLOOR(x) floorf(x)
+#define FOV__SIN(x) sinf(x)
+#define FOV__COS(x) cosf(x)
+#define FOV__TAN(x) tanf(x)
+#define FOV__ATAN2(y, x) atan2f(y, x)
+#define FOV__EXP(x) expf(x)
+#define FOV__LOG(x) logf(x)
+#define FOV__POW(x, y) powf(x, y)
+#elif defined(FOV__HOOKED_MATH)
+#define FOV__SQRT(x) FOV_SQRTF(x)
+#define FOV__FLOOR(x) FOV_FLOORF(x)
+#define FOV__SIN(x) FOV_SINF(x)
+#define FOV__COS(x) FOV_COSF(x)
+#define FOV__TAN(x) FOV_TANF(x)
+#define FOV__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOV__EXP(x) FOV_EXPF(x)
+#define FOV__LOG(x) FOV_LOGF(x)
+#define FOV__POW(x, y) FOV_POWF(x, y)
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
-   ranges the library uses; tests/test_fovlp.c checks them against libm). */
-#define FOVLP__SQRT(x) fovlp__sqrtf(x)
-#define FOVLP__FLOOR(x) fovlp__floorf(x)
-#define FOVLP__SIN(x) fovlp__sinf(x)
-#define FOVLP__COS(x) fovlp__cosf(x)
-#define FOVLP__TAN(x) (fovlp__sinf(x) / fovlp__cosf(x))
-#define FOVLP__ATAN2(y, x) fovlp__atan2f(y, x)
-#define FOVLP__EXP(x) fovlp__expf(x)
-#define FOVLP__LOG(x) fovlp__logf(x)
-#define FOVLP__POW(x, y) fovlp__powf(x, y)
+   ranges the library uses; tests/test_fovsdf.c checks them against libm). */
+#define FOV__SQRT(x) fov__sqrtf(x)
+#define FOV__FLOOR(x) fov__floorf(x)
+#define FOV__SIN(x) fov__sinf(x)
+#define FOV__COS(x) fov__cosf(x)
+#define FOV__TAN(x) (fov__sinf(x) / fov__cosf(x))
+#define FOV__ATAN2(y, x) fov__atan2f(y, x)
+#define FOV__EXP(x) fov__expf(x)
+#define FOV__LOG(x) fov__logf(x)
+#define FOV__POW(x, y) fov__powf(x, y)
 
-typedef union fovlp__bits { float f; uint32_t u; } fovlp__bits;
+typedef union fov__bits { float f; uint32_t u; } fov__bits;
 
-FOVLP__PRIV float fovlp__sqrtf(float x)
+FOV__PRIV float fov__sqrtf(float x)
 {
 #if defined(__wasm__) && defined(__clang__)
     return __builtin_sqrtf(x); /* one f32.sqrt instruction */
@@ -686,9 +732,9 @@ FOVLP__PRIV float fovlp__sqrtf(float x)
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
 #else
-    fovlp__bits b;
+    fov__bits b;
     float y;
-    if (!(x > 0.0f)) return fovlp__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -701,7 +747,7 @@ FOVLP__PRIV float fovlp__sqrtf(float x)
 #endif
 }
 
-FOVLP__PRIV float fovlp__floorf(float x)
+FOV__PRIV float fov__floorf(float x)
 {
     float r;
     if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
@@ -710,52 +756,52 @@ FOVLP__PRIV float fovlp__floorf(float x)
 }
 
 /* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
-FOVLP__PRIV float fovlp__sin_k(float x)
+FOV__PRIV float fov__sin_k(float x)
 {
     float x2 = x * x;
     return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
                 x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
 }
-FOVLP__PRIV float fovlp__cos_k(float x)
+FOV__PRIV float fov__cos_k(float x)
 {
     float x2 = x * x;
     return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
                 x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
 }
 /* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
-FOVLP__PRIV float fovlp__reduce(float x, int32_t *q)
+FOV__PRIV float fov__reduce(float x, int32_t *q)
 {
     float k;
     if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
-    k = fovlp__floorf(x * 0.63661977236758134f + 0.5f);
+    k = fov__floorf(x * 0.63661977236758134f + 0.5f);
     *q = (int32_t)k;
     /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
     return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
 }
-FOVLP__PRIV float fovlp__sinf(float x)
+FOV__PRIV float fov__sinf(float x)
 {
     int32_t q;
-    float r = fovlp__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovlp__sin_k(r);
-    case 1: return fovlp__cos_k(r);
-    case 2: return -fovlp__sin_k(r);
-    default: return -fovlp__cos_k(r);
+    case 0: return fov__sin_k(r);
+    case 1: return fov__cos_k(r);
+    case 2: return -fov__sin_k(r);
+    default: return -fov__cos_k(r);
     }
 }
-FOVLP__PRIV float fovlp__cosf(float x)
+FOV__PRIV float fov__cosf(float x)
 {
     int32_t q;
-    float r = fovlp__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovlp__cos_k(r);
-    case 1: return -fovlp__sin_k(r);
-    case 2: return -fovlp__cos_k(r);
-    default: return fovlp__sin_k(r);
+    case 0: return fov__cos_k(r);
+    case 1: return -fov__sin_k(r);
+    case 2: return -fov__cos_k(r);
+    default: return fov__sin_k(r);
     }
 }
 /* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
-FOVLP__PRIV float fovlp__atan01(float x)
+FOV__PRIV float fov__atan01(float x)
 {
     float off = 0.0f, z, z2;
     if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
@@ -764,37 +810,40 @@ FOVLP__PRIV float fovlp__atan01(float x)
     return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
                  z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
 }
-FOVLP__PRIV float fovlp__atan2f(float y, float x)
+FOV__PRIV float fov__atan2f(float y, float x)
 {
     float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
-    if (fovlp__isnan(x) || fovlp__isnan(y)) return x + y;
-    if (fovlp__is0(ax) && fovlp__is0(ay)) return 0.0f;
-    a = ay <= ax ? fovlp__atan01(ay / ax) : 1.57079633f - fovlp__atan01(ax / ay);
+    if (fov__isnan(x) || fov__isnan(y)) return x + y;
+    if (fov__is0(ax) && fov__is0(ay)) return 0.0f;
+    a = ay <= ax ? fov__atan01(ay / ax) : 1.57079633f - fov__atan01(ax / ay);
     if (x < 0.0f) a = 3.14159265f - a;
     return y < 0.0f ? -a : a;
 }
-FOVLP__PRIV float fovlp__expf(float x)
+FOV__PRIV float fov__expf(float x)
 {
     float k, r, p;
-    fovlp__bits b;
-    if (fovlp__isnan(x)) return x;
+    fov__bits b;
+    if (fov__isnan(x)) return x;
     if (x > 88.7f) return FLT_MAX * 2.0f;
     if (x < -103.0f) return 0.0f;
-    k = fovlp__floorf(x * 1.44269504f + 0.5f);
+    k = fov__floorf(x * 1.44269504f + 0.5f);
     r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
     p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
         r * (8.3333333e-3f + r * 1.3888889e-3f)))));
-    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    if (k < -126.0f) {
+        b.u = (uint32_t)(k + 126.0f + 127.0f) << 23;
+        return p * b.f * 1.17549435e-38f;
+    }
     b.u = (uint32_t)((int32_t)k + 127) << 23;
     return p * b.f;
 }
-FOVLP__PRIV float fovlp__logf(float x)
+FOV__PRIV float fov__logf(float x)
 {
-    fovlp__bits b;
+    fov__bits b;
     int32_t e;
     float m, s, s2;
-    if (fovlp__isnan(x) || x < 0.0f) return (x - x) / (x - x);
-    if (fovlp__is0(x)) return -FLT_MAX * 2.0f;
+    if (fov__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fov__is0(x)) return -FLT_MAX * 2.0f;
     if (x > FLT_MAX) return x;
     b.f = x;
     e = 0;
@@ -806,34 +855,35 @@ FOVLP__PRIV float fovlp__logf(float x)
     s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
     s2 = s * s;
     return (float)e * 0.693147181f +
-           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f +
+                                                                   s2 * 1.1111111e-1f))));
 }
-FOVLP__PRIV float fovlp__powf(float x, float y)
+FOV__PRIV float fov__powf(float x, float y)
 {
-    if (fovlp__is0(y)) return 1.0f;
-    if (fovlp__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (fov__is0(y)) return 1.0f;
+    if (fov__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
     if (x < 0.0f) {
-        float fy = fovlp__floorf(y);
+        float fy = fov__floorf(y);
         float r;
         if (fy < y || fy > y) return (x - x) / (x - x);
-        r = fovlp__expf(y * fovlp__logf(-x));
-        return ((int32_t)fovlp__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+        r = fov__expf(y * fov__logf(-x));
+        return ((int32_t)fov__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
     }
-    return fovlp__expf(y * fovlp__logf(x));
+    return fov__expf(y * fov__logf(x));
 }
 #endif
 
 #ifndef FOV_MEMSET
-#define FOV_MEMSET(p, v, n) fovlp__memset(p, v, n)
-FOVLP__PRIV void fovlp__memset(void *p, int v, size_t n)
+#define FOV_MEMSET(p, v, n) fov__memset(p, v, n)
+FOV__PRIV void fov__memset(void *p, int v, size_t n)
 {
     unsigned char *c = (unsigned char *)p;
     while (n--) *c++ = (unsigned char)v;
 }
 #endif
 #ifndef FOV_MEMCPY
-#define FOV_MEMCPY(d, s, n) fovlp__memcpy(d, s, n)
-FOVLP__PRIV void fovlp__memcpy(void *d, const void *s, size_t n)
+#define FOV_MEMCPY(d, s, n) fov__memcpy(d, s, n)
+FOV__PRIV void fov__memcpy(void *d, const void *s, size_t n)
 {
     unsigned char *a = (unsigned char *)d;
     const unsigned char *b = (const unsigned char *)s;
@@ -841,125 +891,82 @@ FOVLP__PRIV void fovlp__memcpy(void *d, const void *s, size_t n)
 }
 #endif
 
-
-#ifndef FOVLP_MAX_DIM
-#define FOVLP_MAX_DIM 65536u
-#endif
-#ifndef FOVLP_MAX_LP_DIM
-#define FOVLP_MAX_LP_DIM 65536u
-#endif
-#ifndef FOVLP_MAX_SAMPLES
-#define FOVLP_MAX_SAMPLES 268435456u
-#endif
-
-#define FOVLP__PI 3.14159265358979f
-#define FOVLP__TWO_PI 6.28318530717959f
-#define FOVLP__DEG 0.0174532925199433f
-#define FOVLP__LOG2 0.693147181f
-#define FOVLP__MAX_PHASES 256u
+#define FOV__PI 3.14159265358979f
+#define FOV__DEG 0.0174532925199433f
 
 /* ---- small helpers ---------------------------------------------------------------------- */
-FOVLP__PRIV int fovlp__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
-FOVLP__PRIV int fovlp__finite3(const float v[3])
+FOV__PRIV int fov__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOV__PRIV int fov__finite3(const float v[3])
 {
-    return fovlp__finite(v[0]) && fovlp__finite(v[1]) && fovlp__finite(v[2]);
+    return fov__finite(v[0]) && fov__finite(v[1]) && fov__finite(v[2]);
 }
-FOVLP__PRIV int fovlp__neq(float a, float b) { return a < b || a > b; }
-FOVLP__PRIV float fovlp__minf(float a, float b) { return a < b ? a : b; }
-FOVLP__PRIV float fovlp__maxf(float a, float b) { return a > b ? a : b; }
-FOVLP__PRIV float fovlp__absf(float a) { return a < 0.0f ? -a : a; }
-FOVLP__PRIV float fovlp__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
-FOVLP__PRIV float fovlp__dot(const float a[3], const float b[3])
+FOV__PRIV float fov__minf(float a, float b) { return a < b ? a : b; }
+FOV__PRIV float fov__maxf(float a, float b) { return a > b ? a : b; }
+FOV__PRIV float fov__absf(float a) { return a < 0.0f ? -a : a; }
+FOV__PRIV float fov__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOV__PRIV float fov__dot(const float a[3], const float b[3])
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
-FOVLP__PRIV float fovlp__len(const float a[3]) { return FOVLP__SQRT(fovlp__dot(a, a)); }
-/* |a| for any finite a: scaled by the largest component when the squared length overflows or
-   underflows (inf only when |a| itself exceeds FLT_MAX); the plain formula otherwise */
-FOVLP__PRIV float fovlp__len_safe(const float a[3])
+FOV__PRIV float fov__len(const float a[3]) { return FOV__SQRT(fov__dot(a, a)); }
+FOV__PRIV void fov__cross(const float a[3], const float b[3], float r[3])
 {
-    float d = fovlp__dot(a, a), m, s[3];
-    if (d >= FLT_MIN && d <= FLT_MAX) return FOVLP__SQRT(d);
-    m = fovlp__maxf(fovlp__maxf(fovlp__absf(a[0]), fovlp__absf(a[1])), fovlp__absf(a[2]));
-    if (!(m > 0.0f) || !fovlp__finite(m)) return m;   /* 0, NaN or inf */
-    s[0] = a[0] / m; s[1] = a[1] / m; s[2] = a[2] / m;
-    return m * FOVLP__SQRT(fovlp__dot(s, s));
-}
-/* 2 x for a finite x, saturated at +-FLT_MAX; NaN and inf pass through */
-FOVLP__PRIV float fovlp__twice_sat(float x)
-{
-    float t = x + x;
-    if (fovlp__finite(x) && !fovlp__finite(t)) return x > 0.0f ? 3.4028235e38f : -3.4028235e38f;
-    return t;
-}
-/* a + (b - a) t for t in [0, 1], never outside [min(a, b), max(a, b)] and finite for finite
-   a, b: where b - a overflows (a and b of opposite signs beyond FLT_MAX / 2) it blends as
-   a (1 - t) + b t, which cannot overflow; the clamp catches the rounding of either form.
-   The usual case is bit for bit the plain formula. NaN in a or b passes through. */
-FOVLP__PRIV float fovlp__lerp(float a, float b, float t)
-{
-    float d = b - a, r, lo = a < b ? a : b, hi = a < b ? b : a;
-    r = fovlp__finite(d) ? a + d * t : a * (1.0f - t) + b * t;
-    return r < lo ? lo : (r > hi ? hi : r);
-}
-FOVLP__PRIV void fovlp__cross(const float a[3], const float b[3], float r[3])
-{
-    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2];
+    float z = a[0] * b[1] - a[1] * b[0];
     r[0] = x; r[1] = y; r[2] = z;
 }
-FOVLP__PRIV float fovlp__normalize(float v[3])
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
+FOV__PRIV void fov__prescale(float v[3])
 {
-    float d = fovlp__dot(v, v), l;
-    if (!(d >= FLT_MIN && d <= FLT_MAX)) {
-        /* the squared length overflows or underflows: scale by the largest component first,
-           so any finite non-zero vector comes out unit length */
-        float m = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), fovlp__absf(v[2]));
-        if (!(m > 0.0f) || !fovlp__finite(m)) return m;
+    float m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (m > 0.0f && fov__finite(m) && (m < 1e-15f || m > 1e15f)) {
         v[0] /= m; v[1] /= m; v[2] /= m;
-        l = fovlp__len(v);
-        v[0] /= l; v[1] /= l; v[2] /= l;
-        return l * m;
     }
-    l = FOVLP__SQRT(d);
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fov__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOV__PRIV float fov__normalize(float v[3])
+{
+    float l2 = fov__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOV__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fov__finite(v[0]) || !fov__finite(v[1]) || !fov__finite(v[2])) return 0.0f;
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fov__len(v); /* in [1, sqrt 3] */
     v[0] /= l; v[1] /= l; v[2] /= l;
-    return l;
+    return m * l;
 }
-/* uint64 -> float without the compiler runtime's 64-bit conversion helper */
-FOVLP__PRIV float fovlp__u64f(uint64_t x)
-{
-    return (float)(uint32_t)(x >> 32) * 4294967296.0f + (float)(uint32_t)(x & 0xFFFFFFFFu);
-}
-FOVLP__PRIV size_t fovlp__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
-/* K(x) = x^alpha for x >= 0 (eq. 3.2); alpha 1 exactly without a pow. */
-FOVLP__PRIV float fovlp__pow(float x, float a)
-{
-    if (!(x > 0.0f)) return 0.0f;
-    if (!fovlp__neq(a, 1.0f)) return x;
-    return FOVLP__POW(x, a);
-}
-FOVLP__PRIV uint32_t fovlp__ceil_u(float x, uint32_t cap)
-{
-    float c;
-    if (!(x > 0.0f)) return 0;
-    if (x >= (float)cap) return cap;
-    c = FOVLP__FLOOR(x);
-    return (uint32_t)c + (c < x ? 1u : 0u);
-}
+FOV__PRIV size_t fov__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
 
-#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
-#define FOVLP__MSG(s) s
+/* ---- errors ----------------------------------------------------------------------------- */
+/* Messages are on by default; FOV_NO_ERROR_STRINGS compiles them out (the logger then gets
+   ""). FOV__FAIL reports through the optional logger and returns the code. */
+#ifndef FOV_NO_ERROR_STRINGS
+#define FOV__MSG(s) s
 #else
-#define FOVLP__MSG(s) ((const char *)0)
+#define FOV__MSG(s) ""
 #endif
-FOVLP__PRIV fov_result fovlp__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
+FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result r, const char *msg,
+                              uint32_t line)
 {
-    if (lg && lg->func) lg->func("fovlp", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    if (lg && lg->func) lg->func(tag, FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
     return r;
 }
-#define FOVLP__FAIL(lg, r, msg) return fovlp__err(lg, r, FOVLP__MSG(msg), (uint32_t)__LINE__)
+#define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
 
-/* ---- results, configs, presets ---------------------------------------------------------- */
-FOVLP_API const char *fovlp_result_string(fov_result r)
+FOV__PRIV const char *fov__result_string(fov_result r)
 {
 #ifdef FOV_NO_ERROR_STRINGS
     (void)r;
@@ -979,6 +986,172 @@ FOVLP_API const char *fovlp_result_string(fov_result r)
 #endif
 }
 
+/* ---- the eccentricity model (see fov_display) ------------------------------------------- */
+FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                   uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > max_dim || height > max_dim) return FOV_ERR_LIMIT;
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y) || !fov__finite(cam_fov_y_deg) ||
+        !fov__finite(d->fov_y_deg) || !fov__finite(d->pixel_pitch_mm) ||
+        !fov__finite(d->distance_mm) || !fov__finite(d->axis_dx) || !fov__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * d->fov_y_deg * FOV__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fov__is0(d->pixel_pitch_mm) || !fov__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by pitch or distance only */
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * cam_fov_y_deg * FOV__DEG);
+    }
+    if (!(f > 0.0f) || !fov__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fov__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(fov__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
+    fov__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+/* The angle in degrees between the eye's rays through (x, y) and through the gaze point. */
+FOV__PRIV float fov__ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v)) && fov__finite(x) && fov__finite(y)) {
+        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
+           (no overflow) and scale by the largest component; the usual range is untouched */
+        float k;
+        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
+        k = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= k; v[1] /= k; v[2] /= k;
+    }
+    fov__cross(v, m->g, c);
+    s = fov__len(c);
+    co = fov__dot(v, m->g);
+    return FOV__ATAN2(s, co) * (180.0f / FOV__PI); /* atan2 keeps small angles exact */
+}
+
+/* Pixels per degree at the gaze. d(angle)/d(pixels) along the radial direction at the gaze is
+   f / (f^2 + r^2) radians per pixel, with r the gaze's distance from the axis. */
+FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2, ppd;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOV__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* gaze beyond ~1e19 px: FLT_MAX */
+}
+#endif /* FOV__SHARED_IMPL_INCLUDED */
+/* ==== FOV_SHARED_END impl ==================================================================== */
+
+#define FOVLP__PRIV FOV__PRIV
+#define FOVLP__FAIL(lg, r, msg) FOV__FAIL(lg, "fovlp", r, msg)
+
+
+#ifndef FOVLP_MAX_DIM
+#define FOVLP_MAX_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_LP_DIM
+#define FOVLP_MAX_LP_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_SAMPLES
+#define FOVLP_MAX_SAMPLES 268435456u
+#endif
+
+#define FOVLP__TWO_PI 6.28318530717959f
+#define FOVLP__LOG2 0.693147181f
+#define FOVLP__MAX_PHASES 256u
+
+FOVLP__PRIV int fovlp__neq(float a, float b) { return a < b || a > b; }
+/* |a| for any finite a: scaled by the largest component when the squared length overflows or
+   underflows (inf only when |a| itself exceeds FLT_MAX); the plain formula otherwise */
+FOVLP__PRIV float fovlp__len_safe(const float a[3])
+{
+    float d = fov__dot(a, a), m, s[3];
+    if (d >= FLT_MIN && d <= FLT_MAX) return FOV__SQRT(d);
+    m = fov__maxf(fov__maxf(fov__absf(a[0]), fov__absf(a[1])), fov__absf(a[2]));
+    if (!(m > 0.0f) || !fov__finite(m)) return m;   /* 0, NaN or inf */
+    s[0] = a[0] / m; s[1] = a[1] / m; s[2] = a[2] / m;
+    return m * FOV__SQRT(fov__dot(s, s));
+}
+/* 2 x for a finite x, saturated at +-FLT_MAX; NaN and inf pass through */
+FOVLP__PRIV float fovlp__twice_sat(float x)
+{
+    float t = x + x;
+    if (fov__finite(x) && !fov__finite(t)) return x > 0.0f ? 3.4028235e38f : -3.4028235e38f;
+    return t;
+}
+/* a + (b - a) t for t in [0, 1], never outside [min(a, b), max(a, b)] and finite for finite
+   a, b: where b - a overflows (a and b of opposite signs beyond FLT_MAX / 2) it blends as
+   a (1 - t) + b t, which cannot overflow; the clamp catches the rounding of either form.
+   The usual case is bit for bit the plain formula. NaN in a or b passes through. */
+FOVLP__PRIV float fovlp__lerp(float a, float b, float t)
+{
+    float d = b - a, r, lo = a < b ? a : b, hi = a < b ? b : a;
+    r = fov__finite(d) ? a + d * t : a * (1.0f - t) + b * t;
+    return r < lo ? lo : (r > hi ? hi : r);
+}
+FOVLP__PRIV float fovlp__normalize(float v[3])
+{
+    float d = fov__dot(v, v), l;
+    if (!(d >= FLT_MIN && d <= FLT_MAX)) {
+        /* the squared length overflows or underflows: scale by the largest component first,
+           so any finite non-zero vector comes out unit length */
+        float m = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), fov__absf(v[2]));
+        if (!(m > 0.0f) || !fov__finite(m)) return m;
+        v[0] /= m; v[1] /= m; v[2] /= m;
+        l = fov__len(v);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l * m;
+    }
+    l = FOV__SQRT(d);
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return l;
+}
+/* uint64 -> float without the compiler runtime's 64-bit conversion helper */
+FOVLP__PRIV float fovlp__u64f(uint64_t x)
+{
+    return (float)(uint32_t)(x >> 32) * 4294967296.0f + (float)(uint32_t)(x & 0xFFFFFFFFu);
+}
+/* K(x) = x^alpha for x >= 0 (eq. 3.2); alpha 1 exactly without a pow. */
+FOVLP__PRIV float fovlp__pow(float x, float a)
+{
+    if (!(x > 0.0f)) return 0.0f;
+    if (!fovlp__neq(a, 1.0f)) return x;
+    return FOV__POW(x, a);
+}
+FOVLP__PRIV uint32_t fovlp__ceil_u(float x, uint32_t cap)
+{
+    float c;
+    if (!(x > 0.0f)) return 0;
+    if (x >= (float)cap) return cap;
+    c = FOV__FLOOR(x);
+    return (uint32_t)c + (c < x ? 1u : 0u);
+}
+
+
+/* ---- results, configs, presets ---------------------------------------------------------- */
+FOVLP_API const char *fovlp_result_string(fov_result r) { return fov__result_string(r); }
+
 FOVLP_API const char *fovlp_preset_name(uint32_t preset)
 {
     static const char *const names[] = { "Fov", "K Fov", "C Fov", "C K Fov" };
@@ -991,28 +1164,28 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
     fovlp_config c = *in;
     const fov_logger *lg = &in->logger;
     const fovlp_taa_config *t = &c.taa;
-    if (!fovlp__finite(c.sigma) || !fovlp__finite(c.alpha) || !fovlp__finite(c.gaze_angle) ||
-        !fovlp__finite(c.lp_aspect) || !fovlp__finite(c.match_deg) ||
-        !fovlp__finite(c.cam_fov_y_deg) || !fovlp__finite(c.blend_start) ||
-        !fovlp__finite(c.blend_end) || !fovlp__finite(c.display.fov_y_deg) ||
-        !fovlp__finite(c.display.pixel_pitch_mm) || !fovlp__finite(c.display.distance_mm) ||
-        !fovlp__finite(c.display.axis_dx) || !fovlp__finite(c.display.axis_dy) ||
-        !fovlp__finite(t->clip_gamma) || !fovlp__finite(t->depth_tol) ||
-        !fovlp__finite(t->reset_deg) || !fovlp__finite(t->periphery))
+    if (!fov__finite(c.sigma) || !fov__finite(c.alpha) || !fov__finite(c.gaze_angle) ||
+        !fov__finite(c.lp_aspect) || !fov__finite(c.match_deg) ||
+        !fov__finite(c.cam_fov_y_deg) || !fov__finite(c.blend_start) ||
+        !fov__finite(c.blend_end) || !fov__finite(c.display.fov_y_deg) ||
+        !fov__finite(c.display.pixel_pitch_mm) || !fov__finite(c.display.distance_mm) ||
+        !fov__finite(c.display.axis_dx) || !fov__finite(c.display.axis_dy) ||
+        !fov__finite(t->clip_gamma) || !fov__finite(t->depth_tol) ||
+        !fov__finite(t->reset_deg) || !fov__finite(t->periphery))
         FOVLP__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
     if (c.sigma < 0.0f || c.alpha < 0.0f || c.gaze_angle < 0.0f || c.lp_aspect < 0.0f ||
         c.match_deg < 0.0f || c.cam_fov_y_deg < 0.0f || c.blend_start < 0.0f || c.blend_end < 0.0f ||
         t->clip_gamma < 0.0f || t->depth_tol < 0.0f || t->reset_deg < 0.0f || t->periphery < 0.0f)
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter (sigma, alpha, a_G, ...)");
-    if (fovlp__is0(c.sigma)) c.sigma = 1.4f;
+    if (fov__is0(c.sigma)) c.sigma = 1.4f;
     if (c.sigma < 1e-3f) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "config: sigma below 1e-3 (buffer too large)");
-    if (fovlp__is0(c.alpha)) c.alpha = 1.0f;
+    if (fov__is0(c.alpha)) c.alpha = 1.0f;
     if (c.alpha > 16.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: alpha must be in (0, 16]");
     if (c.no_disc > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: no_disc must be 0 or 1");
     if (c.no_disc) c.gaze_angle = 0.0f;
-    else if (fovlp__is0(c.gaze_angle)) c.gaze_angle = 0.20f;
+    else if (fov__is0(c.gaze_angle)) c.gaze_angle = 0.20f;
     if (c.gaze_angle >= 1.5f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: gaze_angle must be below 1.5 rad");
-    if (fovlp__is0(c.match_deg)) c.match_deg = 15.0f;
+    if (fov__is0(c.match_deg)) c.match_deg = 15.0f;
     if (c.match_deg >= 89.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: match_deg must be in (0, 89)");
     if (c.lp_aspect > 65536.0f || (c.lp_aspect > 0.0f && c.lp_aspect < 1.0f / 65536.0f))
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: lp_aspect out of range");
@@ -1020,11 +1193,11 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
     if (c.edge >= (uint32_t)_FOVLP_EDGE_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown edge");
     if (c.cam_fov_y_deg >= 180.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cam_fov_y_deg must be in (0, 180)");
     if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
-        c.display.distance_mm < 0.0f || fovlp__is0(c.display.pixel_pitch_mm) != fovlp__is0(c.display.distance_mm))
+        c.display.distance_mm < 0.0f || fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
     if (c.blend > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend must be 0 or 1");
-    if (fovlp__is0(c.blend_start)) c.blend_start = 1.0f / 6.0f;
-    if (fovlp__is0(c.blend_end)) c.blend_end = 0.5f;
+    if (fov__is0(c.blend_start)) c.blend_start = 1.0f / 6.0f;
+    if (fov__is0(c.blend_end)) c.blend_end = 0.5f;
     if (!(c.blend_end > c.blend_start)) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend_end must exceed blend_start");
     if (c.taa.enable > 1 || c.taa.jitter_moving > 1 || c.taa.thesis_moving > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa flags must be 0 or 1");
     if (c.taa.phases == 0) c.taa.phases = 16;
@@ -1034,20 +1207,12 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
     if (c.taa.max_age == 0) c.taa.max_age = 20;
     if (c.taa.max_age > 255) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.max_age must be 1 .. 255");
     if (c.taa.clamp >= (uint32_t)_FOVLP_CLAMP_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown taa.clamp");
-    if (fovlp__is0(c.taa.clip_gamma)) c.taa.clip_gamma = 1.0f;
-    if (fovlp__is0(c.taa.depth_tol)) c.taa.depth_tol = 0.02f;
-    if (fovlp__is0(c.taa.reset_deg)) c.taa.reset_deg = 2.0f;
-    if (fovlp__is0(c.taa.periphery)) c.taa.periphery = 1.0f / 3.0f;
+    if (fov__is0(c.taa.clip_gamma)) c.taa.clip_gamma = 1.0f;
+    if (fov__is0(c.taa.depth_tol)) c.taa.depth_tol = 0.02f;
+    if (fov__is0(c.taa.reset_deg)) c.taa.reset_deg = 2.0f;
+    if (fov__is0(c.taa.periphery)) c.taa.periphery = 1.0f / 3.0f;
     *out = c;
     return FOV_OK;
-}
-
-FOVLP_API fovlp_config fovlp_config_default(void)
-{
-    fovlp_config c;
-    FOV_MEMSET(&c, 0, sizeof c);
-    (void)fovlp__resolve(&c, &c);
-    return c;
 }
 
 FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint32_t height)
@@ -1069,6 +1234,14 @@ FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint
     return c;
 }
 
+FOVLP_API fovlp_config fovlp_config_default(void)
+{
+    fovlp_config c;
+    FOV_MEMSET(&c, 0, sizeof c);
+    if (fovlp__resolve(&c, &c) != FOV_OK) FOV_ASSERT(0); /* all zero resolves: the defaults */
+    return c;
+}
+
 FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *out)
 {
     fov_result r;
@@ -1085,76 +1258,11 @@ FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *
 }
 
 /* ---- eccentricity (the shared model; identical to fovsdf_ecc_*) --------------------------- */
-FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
-                                    uint32_t width, uint32_t height, fov_gaze gaze)
-{
-    float f, v[3];
-    fov_display z;
-    if (!m) return FOV_ERR_NULL;
-    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
-    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
-    if (width > FOVLP_MAX_DIM || height > FOVLP_MAX_DIM) return FOV_ERR_LIMIT;
-    if (!fovlp__finite(gaze.x) || !fovlp__finite(gaze.y) || !fovlp__finite(cam_fov_y_deg) ||
-        !fovlp__finite(d->fov_y_deg) || !fovlp__finite(d->pixel_pitch_mm) ||
-        !fovlp__finite(d->distance_mm) || !fovlp__finite(d->axis_dx) || !fovlp__finite(d->axis_dy))
-        return FOV_ERR_NOT_FINITE;
-    if (d->fov_y_deg > 0.0f) {
-        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVLP__TAN(0.5f * d->fov_y_deg * FOVLP__DEG);
-    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
-        f = d->distance_mm / d->pixel_pitch_mm;
-    } else if (d->fov_y_deg < 0.0f || !fovlp__is0(d->pixel_pitch_mm) || !fovlp__is0(d->distance_mm)) {
-        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by only one of pitch, distance */
-    } else {
-        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVLP__TAN(0.5f * cam_fov_y_deg * FOVLP__DEG);
-    }
-    if (!(f > 0.0f) || !fovlp__finite(f)) return FOV_ERR_DEGENERATE;
-    m->cx = 0.5f * (float)width + d->axis_dx;
-    m->cy = 0.5f * (float)height + d->axis_dy;
-    m->f_px = f;
-    m->gx = gaze.x;
-    m->gy = gaze.y;
-    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovlp__finite3(v)) return FOV_ERR_INVALID_ARG;
-    if (!fovlp__finite(fovlp__dot(v, v))) {
-        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
-           largest component first (any finite gaze works; the usual range is untouched) */
-        float s = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), v[2]);
-        v[0] /= s; v[1] /= s; v[2] /= s;
-    }
-    fovlp__normalize(v);
-    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
-    return FOV_OK;
-}
-
-FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y)
-{
-    float v[3], c[3], s, co;
-    if (!m) return 0.0f;
-    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
-    if (!fovlp__finite(fovlp__dot(v, v)) && fovlp__finite(x) && fovlp__finite(y)) {
-        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
-           (no overflow) and scale by the largest component; the usual range is untouched */
-        float k;
-        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
-        k = fovlp__maxf(fovlp__maxf(fovlp__absf(v[0]), fovlp__absf(v[1])), v[2]);
-        v[0] /= k; v[1] /= k; v[2] /= k;
-    }
-    fovlp__cross(v, m->g, c);
-    s = fovlp__len(c);
-    co = fovlp__dot(v, m->g);
-    return FOVLP__ATAN2(s, co) * (180.0f / FOVLP__PI);
-}
-
-FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m)
-{
-    float rx, ry, r2, ppd;
-    if (!m) return 0.0f;
-    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVLP__DEG;
-    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
-}
+FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
+                                    uint32_t w, uint32_t h, fov_gaze g)
+{ return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVLP_MAX_DIM); }
+FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
+FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
 
 /* ---- geometry (eqs. 3.3-3.6, 3.10) -------------------------------------------------------- */
 /* The camera field of view handed to the eccentricity model when the display is all zero:
@@ -1163,24 +1271,24 @@ FOVLP__PRIV float fovlp__view_fov(const fovlp_config *c)
 {
     float diag, d;
     if (c->cam_fov_y_deg > 0.0f) return c->cam_fov_y_deg;
-    diag = FOVLP__SQRT((float)c->width * (float)c->width + (float)c->height * (float)c->height);
+    diag = FOV__SQRT((float)c->width * (float)c->width + (float)c->height * (float)c->height);
     d = diag / 1.73205081f;
-    return 2.0f * FOVLP__ATAN2(0.5f * (float)c->height, d) / FOVLP__DEG;
+    return 2.0f * FOV__ATAN2(0.5f * (float)c->height, d) / FOV__DEG;
 }
 
 FOVLP__PRIV fov_gaze fovlp__clamp_gaze(const fovlp_config *c, fov_gaze g, int *clamped)
 {
     fov_gaze o;
-    o.x = fovlp__clampf(g.x, 0.0f, (float)c->width);
-    o.y = fovlp__clampf(g.y, 0.0f, (float)c->height);
+    o.x = fov__clampf(g.x, 0.0f, (float)c->width);
+    o.y = fov__clampf(g.y, 0.0f, (float)c->height);
     *clamped = fovlp__neq(o.x, g.x) || fovlp__neq(o.y, g.y);
     return o;
 }
 
 FOVLP__PRIV float fovlp__far_corner(const fovlp_config *c, fov_gaze g)
 {
-    float dx = fovlp__maxf(g.x, (float)c->width - g.x), dy = fovlp__maxf(g.y, (float)c->height - g.y);
-    return FOVLP__SQRT(dx * dx + dy * dy);
+    float dx = fov__maxf(g.x, (float)c->width - g.x), dy = fov__maxf(g.y, (float)c->height - g.y);
+    return FOV__SQRT(dx * dx + dy * dy);
 }
 
 /* Sizes (fixed for a config) and the gaze-dependent part. c must be resolved with valid
@@ -1190,8 +1298,8 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
 {
     const fov_logger *lg = &c->logger;
     float W = (float)c->width, H = (float)c->height;
-    float diag = FOVLP__SQRT(W * W + H * H);
-    float L_diag = FOVLP__LOG(fovlp__maxf(diag, 2.0f));
+    float diag = FOV__SQRT(W * W + H * H);
+    float L_diag = FOV__LOG(fov__maxf(diag, 2.0f));
     float L, r_g, G, G_diag, asp, hf, wf, rmax, xm;
     uint32_t S;
     size_t slots, lp;
@@ -1200,26 +1308,26 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     g->height = c->height;
     g->f_px = f_px;
     /* eq. 3.3: the gaze disc radius */
-    r_g = c->gaze_angle > 0.0f ? f_px * FOVLP__TAN(c->gaze_angle) : 0.0f;
-    if (!fovlp__finite(r_g)) FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "geometry: gaze disc radius not finite");
+    r_g = c->gaze_angle > 0.0f ? f_px * FOV__TAN(c->gaze_angle) : 0.0f;
+    if (!fov__finite(r_g)) FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "geometry: gaze disc radius not finite");
     /* eq. 3.4 with the diagonal normaliser, for the sizes */
     xm = c->edge == FOVLP_EDGE_THESIS ? r_g + 1.0f : r_g;
-    G_diag = r_g > 0.0f ? fovlp__pow(FOVLP__LOG(fovlp__maxf(xm, 1.0f)) / L_diag, c->alpha) : 0.0f;
+    G_diag = r_g > 0.0f ? fovlp__pow(FOV__LOG(fov__maxf(xm, 1.0f)) / L_diag, c->alpha) : 0.0f;
     if (G_diag >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
     /* eq. 3.6, or the aspect that matches the spacings at match_deg (section 5.1 tuning) */
     asp = c->lp_aspect;
     if (!(asp > 0.0f)) {
-        float r_ref = f_px * FOVLP__TAN(c->match_deg * FOVLP__DEG);
-        float x = FOVLP__LOG(fovlp__maxf(r_ref, 2.0f)) / L_diag;
-        float t = fovlp__clampf(fovlp__pow(fovlp__minf(x, 1.0f), c->alpha), 1e-3f, 1.0f);
+        float r_ref = f_px * FOV__TAN(c->match_deg * FOV__DEG);
+        float x = FOV__LOG(fov__maxf(r_ref, 2.0f)) / L_diag;
+        float t = fov__clampf(fovlp__pow(fov__minf(x, 1.0f), c->alpha), 1e-3f, 1.0f);
         float k = L_diag * fovlp__pow(t, 1.0f / c->alpha - 1.0f) / (FOVLP__TWO_PI * c->alpha);
-        asp = fovlp__clampf(k * (1.0f - G_diag), 1.0f / 65536.0f, 65536.0f);
+        asp = fov__clampf(k * (1.0f - G_diag), 1.0f / 65536.0f, 65536.0f);
     }
     g->lp_aspect = asp;
-    hf = FOVLP__FLOOR(FOVLP__SQRT(W * H / asp) / c->sigma + 0.5f);
+    hf = FOV__FLOOR(FOV__SQRT(W * H / asp) / c->sigma + 0.5f);
     if (!(hf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer height above FOVLP_MAX_LP_DIM");
     if (hf < 1.0f) hf = 1.0f;
-    wf = FOVLP__FLOOR(hf * asp + 0.5f);
+    wf = FOV__FLOOR(hf * asp + 0.5f);
     if (!(wf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer width above FOVLP_MAX_LP_DIM");
     if (wf < 1.0f) wf = 1.0f;
     g->lp_w = (uint32_t)wf;
@@ -1227,7 +1335,7 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     /* disc buffer: covers the square of any gaze position */
     S = 0;
     if (r_g > 0.0f) {
-        float s = 2.0f * r_g + 2.0f, m = fovlp__maxf(W, H);
+        float s = 2.0f * r_g + 2.0f, m = fov__maxf(W, H);
         S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
     }
     g->disc_side = S;
@@ -1243,20 +1351,20 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     g->samples = (uint32_t)slots;
     /* the gaze-dependent part */
     rmax = fovlp__far_corner(c, gaze);
-    L = c->norm == FOVLP_NORM_CORNER ? FOVLP__LOG(fovlp__maxf(rmax, 2.0f)) : L_diag;
+    L = c->norm == FOVLP_NORM_CORNER ? FOV__LOG(fov__maxf(rmax, 2.0f)) : L_diag;
     g->L = L;
     g->r_g = r_g;
-    G = r_g > 0.0f ? fovlp__pow(FOVLP__LOG(fovlp__maxf(xm, 1.0f)) / L, c->alpha) : 0.0f;
+    G = r_g > 0.0f ? fovlp__pow(FOV__LOG(fov__maxf(xm, 1.0f)) / L, c->alpha) : 0.0f;
     if (G >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
     g->G = G;
     g->u_g = (float)g->lp_w * G / (1.0f - G);
     g->w_c = (float)g->lp_w + g->u_g;
-    g->u_max = fovlp__pow(FOVLP__LOG(fovlp__maxf(rmax, 1.0f)) / L, c->alpha) * g->w_c - g->u_g;
+    g->u_max = fovlp__pow(FOV__LOG(fov__maxf(rmax, 1.0f)) / L, c->alpha) * g->w_c - g->u_g;
     g->lp_cols = fovlp__ceil_u(g->u_max, g->lp_w);
     if (g->lp_cols < 1) g->lp_cols = 1;
     if (S > 0) {
-        float x0 = fovlp__maxf(0.0f, FOVLP__FLOOR(gaze.x - r_g));
-        float y0 = fovlp__maxf(0.0f, FOVLP__FLOOR(gaze.y - r_g));
+        float x0 = fov__maxf(0.0f, FOV__FLOOR(gaze.x - r_g));
+        float y0 = fov__maxf(0.0f, FOV__FLOOR(gaze.y - r_g));
         uint32_t x1 = fovlp__ceil_u(gaze.x + r_g, c->width), y1 = fovlp__ceil_u(gaze.y + r_g, c->height);
         g->disc_x0 = (uint32_t)x0;
         g->disc_y0 = (uint32_t)y0;
@@ -1276,11 +1384,11 @@ FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovl
     if (!cfg) return FOV_ERR_NULL;
     r = fovlp_config_resolve(cfg, c);
     if (r != FOV_OK) return r;
-    if (!fovlp__finite(gaze.x) || !fovlp__finite(gaze.y))
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y))
         FOVLP__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "gaze is NaN or infinite");
     *gz = fovlp__clamp_gaze(c, gaze, &clamped);
     if (clamped && c->logger.func)
-        c->logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK, FOVLP__MSG("gaze off-screen: clamped"),
+        c->logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK, FOV__MSG("gaze off-screen: clamped"),
                        (uint32_t)__LINE__, c->logger.user);
     r = fovlp_ecc_init(ecc, &c->display, fovlp__view_fov(c), c->width, c->height, *gz);
     if (r != FOV_OK) FOVLP__FAIL(&c->logger, r, "display geometry rejected by the eccentricity model");
@@ -1299,7 +1407,7 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, 
 /* ---- context ------------------------------------------------------------------------------ */
 FOVLP__PRIV size_t fovlp__mem_bytes(const fovlp_geometry *g)
 {
-    return fovlp__align(sizeof(float) * (size_t)g->lp_w) + 2u * fovlp__align(sizeof(float) * (size_t)g->lp_h);
+    return fov__align(sizeof(float) * (size_t)g->lp_w) + 2u * fov__align(sizeof(float) * (size_t)g->lp_h);
 }
 
 FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes)
@@ -1339,14 +1447,14 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
     ctx->ecc = e;
     ctx->gaze = gz;
     ctx->prev_gaze = gz;
-    ctx->L_diag = FOVLP__LOG(fovlp__maxf(FOVLP__SQRT((float)c.width * (float)c.width +
+    ctx->L_diag = FOV__LOG(fov__maxf(FOV__SQRT((float)c.width * (float)c.width +
                                                      (float)c.height * (float)c.height), 2.0f));
     p = (unsigned char *)mem;
     p += (16u - (size_t)((uintptr_t)p & 15u)) & 15u;
     ctx->rho = (float *)(void *)p;
-    p += fovlp__align(sizeof(float) * (size_t)g.lp_w);
+    p += fov__align(sizeof(float) * (size_t)g.lp_w);
     ctx->cs = (float *)(void *)p;
-    p += fovlp__align(sizeof(float) * (size_t)g.lp_h);
+    p += fov__align(sizeof(float) * (size_t)g.lp_h);
     ctx->sn = (float *)(void *)p;
     ctx->mem = mem;
     ctx->mem_size = mem_size;
@@ -1404,8 +1512,8 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
 
 FOVLP__PRIV int fovlp__cam_ok(const fovlp_camera *c)
 {
-    return fovlp__finite3(c->pos) && fovlp__finite3(c->right) && fovlp__finite3(c->up) &&
-           fovlp__finite3(c->fwd) && fovlp__finite(c->tan_half_y);
+    return fov__finite3(c->pos) && fov__finite3(c->right) && fov__finite3(c->up) &&
+           fov__finite3(c->fwd) && fov__finite(c->tan_half_y);
 }
 FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
 {
@@ -1430,8 +1538,8 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
     if (!ctx->rho || !ctx->cs || !ctx->sn) return FOV_ERR_INVALID_ARG; /* not initialised */
     if (cam) {
         if (!fovlp__cam_ok(cam)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "begin_frame: camera not finite");
-        if (!(cam->tan_half_y > 0.0f) || fovlp__len(cam->fwd) < 0.5f || fovlp__len(cam->right) < 0.5f ||
-            fovlp__len(cam->up) < 0.5f)
+        if (!(cam->tan_half_y > 0.0f) || fov__len(cam->fwd) < 0.5f || fov__len(cam->right) < 0.5f ||
+            fov__len(cam->up) < 0.5f)
             FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE, "begin_frame: degenerate camera");
     }
     r = fovlp__setup(&ctx->cfg, gaze, &c, &e, &gz, &g);
@@ -1464,12 +1572,12 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
     /* per-frame tables: eq. 3.7 split into its u part (radius) and v part (angle) */
     for (i = 0; i < g.lp_w; ++i) {
         float t = ((float)i + ou + g.u_g) / g.w_c;
-        ctx->rho[i] = FOVLP__EXP(g.L * fovlp__pow(t, 1.0f / c.alpha));
+        ctx->rho[i] = FOV__EXP(g.L * fovlp__pow(t, 1.0f / c.alpha));
     }
     for (i = 0; i < g.lp_h; ++i) {
         float a = FOVLP__TWO_PI * ((float)i + ov) / (float)g.lp_h;
-        ctx->cs[i] = FOVLP__COS(a);
-        ctx->sn[i] = FOVLP__SIN(a);
+        ctx->cs[i] = FOV__COS(a);
+        ctx->sn[i] = FOV__SIN(a);
     }
     ctx->in_frame = 1;
     ctx->frame = ctx->frame + 1u < 0x7FFFFFFFu ? ctx->frame + 1u : 1u;
@@ -1482,16 +1590,16 @@ FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u
 {
     const fovlp_geometry *g = &ctx->geo;
     float r2 = dx * dx + dy * dy, r;
-    float a = FOVLP__ATAN2(dy, dx);
-    if (fovlp__finite(r2)) {
-        r = FOVLP__SQRT(r2);
+    float a = FOV__ATAN2(dy, dx);
+    if (fov__finite(r2)) {
+        r = FOV__SQRT(r2);
     } else { /* beyond ~1.8e19 px: scale first (fovlp_screen_to_lp takes any finite point) */
-        float m = fovlp__maxf(fovlp__absf(dx), fovlp__absf(dy)), sx = dx / m, sy = dy / m;
-        r = m * FOVLP__SQRT(sx * sx + sy * sy);
-        if (!fovlp__finite(r)) r = 3.4028235e38f;
+        float m = fov__maxf(fov__absf(dx), fov__absf(dy)), sx = dx / m, sy = dy / m;
+        r = m * FOV__SQRT(sx * sx + sy * sy);
+        if (!fov__finite(r)) r = 3.4028235e38f;
     }
     if (a < 0.0f) a += FOVLP__TWO_PI;
-    *u = fovlp__pow(FOVLP__LOG(fovlp__maxf(r, 1.0f)) / g->L, ctx->cfg.alpha) * g->w_c - g->u_g;
+    *u = fovlp__pow(FOV__LOG(fov__maxf(r, 1.0f)) / g->L, ctx->cfg.alpha) * g->w_c - g->u_g;
     *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
     if (*v >= (float)g->lp_h) *v -= (float)g->lp_h;
 }
@@ -1516,7 +1624,7 @@ FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, flo
     if (swap) a = 1.57079633f - a;
     if (dx < 0.0f) a = 3.14159265f - a;
     if (dy < 0.0f) a = FOVLP__TWO_PI - a;                  /* [0, 2 pi) */
-    q = FOVLP__LOG(fovlp__maxf(FOVLP__SQRT(r2), 1.0f)) / g->L;
+    q = FOV__LOG(fov__maxf(FOV__SQRT(r2), 1.0f)) / g->L;
     *u = fovlp__pow(q, ctx->cfg.alpha) * g->w_c - g->u_g;
     *v = a * ((float)g->lp_h / FOVLP__TWO_PI);
     if (*v >= (float)g->lp_h) *v -= (float)g->lp_h;
@@ -1527,7 +1635,7 @@ FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, 
 {
     if (!ctx || !u || !v) return FOV_ERR_NULL;
     if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fovlp__finite(x) || !fovlp__finite(y)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "screen_to_lp: point not finite");
+    if (!fov__finite(x) || !fov__finite(y)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "screen_to_lp: point not finite");
     fovlp__to_lp(ctx, x - ctx->gaze.x, y - ctx->gaze.y, u, v);
     return FOV_OK;
 }
@@ -1538,15 +1646,15 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
     float t, rho, a;
     if (!ctx || !x || !y) return FOV_ERR_NULL;
     if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fovlp__finite(u) || !fovlp__finite(v)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "lp_to_screen: point not finite");
+    if (!fov__finite(u) || !fov__finite(v)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "lp_to_screen: point not finite");
     g = &ctx->geo;
     t = (u + g->u_g) / g->w_c;                  /* eq. 3.5: u_C / w_C */
     if (t < 0.0f) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "lp_to_screen: u inside the gaze disc (u < -u_G)");
-    rho = FOVLP__EXP(g->L * fovlp__pow(t, 1.0f / ctx->cfg.alpha));   /* eq. 3.7 */
+    rho = FOV__EXP(g->L * fovlp__pow(t, 1.0f / ctx->cfg.alpha));   /* eq. 3.7 */
     a = FOVLP__TWO_PI * v / (float)g->lp_h;
-    *x = ctx->gaze.x + rho * FOVLP__COS(a);
-    *y = ctx->gaze.y + rho * FOVLP__SIN(a);
-    if (!fovlp__finite(*x) || !fovlp__finite(*y)) {   /* u far beyond the buffer */
+    *x = ctx->gaze.x + rho * FOV__COS(a);
+    *y = ctx->gaze.y + rho * FOV__SIN(a);
+    if (!fov__finite(*x) || !fov__finite(*y)) {   /* u far beyond the buffer */
         *x = ctx->gaze.x; *y = ctx->gaze.y;
         FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "lp_to_screen: the point lies beyond the float range");
     }
@@ -1558,11 +1666,11 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
 FOVLP__PRIV float fovlp__hypot(float dx, float dy)
 {
     float r2 = dx * dx + dy * dy, m, sx, sy, r;
-    if (fovlp__finite(r2)) return FOVLP__SQRT(r2);
-    m = fovlp__maxf(fovlp__absf(dx), fovlp__absf(dy));
+    if (fov__finite(r2)) return FOV__SQRT(r2);
+    m = fov__maxf(fov__absf(dx), fov__absf(dy));
     sx = dx / m; sy = dy / m;
-    r = m * FOVLP__SQRT(sx * sx + sy * sy);
-    return fovlp__finite(r) ? r : 3.4028235e38f;
+    r = m * FOV__SQRT(sx * sx + sy * sy);
+    return fov__finite(r) ? r : 3.4028235e38f;
 }
 /* du/dr = alpha q^(alpha-1) w_C / (L r), q = log r / L, for a finite r >= 1; evaluated as
    (alpha q^(alpha-1)) ((w_C / L) / r) so no partial product overflows for any r up to
@@ -1573,21 +1681,21 @@ FOVLP__PRIV float fovlp__dudr(const fovlp_ctx *ctx, float r)
     const fovlp_geometry *g = &ctx->geo;
     float k = (g->w_c / g->L) / r;
     if (!fovlp__neq(ctx->cfg.alpha, 1.0f)) return k;
-    return ctx->cfg.alpha * fovlp__pow(FOVLP__LOG(r) / g->L, ctx->cfg.alpha - 1.0f) * k;
+    return ctx->cfg.alpha * fovlp__pow(FOV__LOG(r) / g->L, ctx->cfg.alpha - 1.0f) * k;
 }
 
 FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y)
 {
     const fovlp_geometry *g;
     float r, d;
-    if (!ctx || !ctx->in_frame || !fovlp__finite(x) || !fovlp__finite(y)) return 0.0f;
+    if (!ctx || !ctx->in_frame || !fov__finite(x) || !fov__finite(y)) return 0.0f;
     g = &ctx->geo;
     r = fovlp__hypot(x - ctx->gaze.x, y - ctx->gaze.y);
     if (g->r_g > 0.0f && r < g->r_g) return 1.0f;
-    r = fovlp__maxf(r, 1.0f);
+    r = fov__maxf(r, 1.0f);
     /* du/dr dv/ds with dv/ds = h / (2 pi r): both finite for any r in [1, FLT_MAX] */
     d = fovlp__dudr(ctx, r) * (((float)g->lp_h / FOVLP__TWO_PI) / r);
-    return fovlp__finite(d) ? d : 0.0f;
+    return fov__finite(d) ? d : 0.0f;
 }
 
 FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px, float *angular_px)
@@ -1596,16 +1704,16 @@ FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_
     float dudr, rad, ang;
     if (!ctx || !radial_px || !angular_px) return FOV_ERR_NULL;
     if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fovlp__finite(r)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "spacing: r not finite");
+    if (!fov__finite(r)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "spacing: r not finite");
     g = &ctx->geo;
     if (g->r_g > 0.0f && r < g->r_g) { *radial_px = *angular_px = 1.0f; return FOV_OK; }
-    r = fovlp__maxf(r, 1.0f);
+    r = fov__maxf(r, 1.0f);
     dudr = fovlp__dudr(ctx, r);
     /* the kernel is flat at r = 1 (alpha != 1): an unbounded radial spacing, given as FLT_MAX;
        elsewhere a derivative that underflows means a spacing beyond the float range */
     rad = dudr > 0.0f ? 1.0f / dudr : 3.4028235e38f;
     ang = r * (FOVLP__TWO_PI / (float)g->lp_h);
-    if (!fovlp__finite(rad) || !fovlp__finite(ang) || (!(dudr > 0.0f) && r > 1.0f)) {
+    if (!fov__finite(rad) || !fov__finite(ang) || (!(dudr > 0.0f) && r > 1.0f)) {
         *radial_px = *angular_px = 0.0f;
         FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "spacing: r so large that a spacing exceeds the float range");
     }
@@ -1798,8 +1906,8 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
     float fl_u, fl_v;
     /* radius of the largest circle around the gaze inside the screen, less a margin for the
        rounding of gaze + rho cos (the exact test would accept every tap inside it) */
-    float in_r = fovlp__minf(fovlp__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
-                             fovlp__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
+    float in_r = fov__minf(fov__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
+                             fov__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
     int all_on, clamped = 0, pass;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
@@ -1902,28 +2010,28 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     }
     r2 = dx * dx + dy * dy;
     fovlp__to_lp_fast(ctx, dx, dy, r2, &uc, &vc);
-    edge = fovlp__minf(fovlp__minf((float)px + 0.5f, (float)g->width - (float)px - 0.5f),
-                       fovlp__minf((float)py + 0.5f, (float)g->height - (float)py - 0.5f));
+    edge = fov__minf(fov__minf((float)px + 0.5f, (float)g->width - (float)px - 0.5f),
+                       fov__minf((float)py + 0.5f, (float)g->height - (float)py - 0.5f));
     if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, edge, rgb, depth) > 0.0f)) {
         rgb[0] = cen[0]; rgb[1] = cen[1]; rgb[2] = cen[2];
         *depth = cdep;
         return;
     }
     if (!(r2 < ctx->rho[0] * ctx->rho[0] * 1.0001f)) return;  /* beyond the innermost ring */
-    r = FOVLP__SQRT(r2);
+    r = FOV__SQRT(r2);
     /* between the disc and the innermost LP ring: interpolate along the radius between the
        nearest disc pixel inwards and the ring (no step at the disc edge) */
     if (g->r_g > 0.0f && r < ctx->rho[0] && r > 0.0f) {
-        float qx = ctx->gaze.x + dx / r * fovlp__maxf(g->r_g - 0.75f, 0.0f);
-        float qy = ctx->gaze.y + dy / r * fovlp__maxf(g->r_g - 0.75f, 0.0f);
+        float qx = ctx->gaze.x + dx / r * fov__maxf(g->r_g - 0.75f, 0.0f);
+        float qy = ctx->gaze.y + dy / r * fov__maxf(g->r_g - 0.75f, 0.0f);
         if (qx >= 0.0f && qy >= 0.0f && qx < (float)g->width && qy < (float)g->height) {
             uint32_t ix = (uint32_t)qx, iy = (uint32_t)qy;
             if (fovlp__in_disc(ctx, ix, iy) && ix >= g->disc_x0 && iy >= g->disc_y0 &&
                 ix - g->disc_x0 < g->disc_w && iy - g->disc_y0 < g->disc_h) {
                 size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_cols + (ix - g->disc_x0);
                 float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
-                float rin = FOVLP__SQRT(ex * ex + ey * ey);
-                float t = ctx->rho[0] > rin ? fovlp__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
+                float rin = FOV__SQRT(ex * ex + ey * ey);
+                float t = ctx->rho[0] > rin ? fov__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
                 const float *q = srgb + 3u * slot;
                 rgb[0] = fovlp__lerp(q[0], rgb[0], t);
                 rgb[1] = fovlp__lerp(q[1], rgb[1], t);
@@ -1990,14 +2098,14 @@ FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uin
     W = ctx->geo.width; H = ctx->geo.height;
     if (y0 > y1 || y1 > H) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: rows out of range");
     if (in == out) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: out must not alias in");
-    diag = FOVLP__SQRT((float)W * (float)W + (float)H * (float)H);
+    diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     s = ctx->cfg.blend_start * diag;
     e = ctx->cfg.blend_end * diag;
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t o = 3u * ((size_t)y * W + x);
             float dx = (float)x + 0.5f - ctx->gaze.x, dy = (float)y + 0.5f - ctx->gaze.y;
-            float t = ctx->cfg.blend ? fovlp__clampf((FOVLP__SQRT(dx * dx + dy * dy) - s) / (e - s), 0.0f, 1.0f) : 0.0f;
+            float t = ctx->cfg.blend ? fov__clampf((FOV__SQRT(dx * dx + dy * dy) - s) / (e - s), 0.0f, 1.0f) : 0.0f;
             float gsum[3] = { 0.0f, 0.0f, 0.0f };
             int32_t a, b, ch;
             if (!(t > 0.0f)) { out[o] = in[o]; out[o + 1] = in[o + 1]; out[o + 2] = in[o + 2]; continue; }
@@ -2068,8 +2176,8 @@ FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t 
             if (!have_c) { c0[0] = q[0]; c0[1] = q[1]; c0[2] = q[2]; have_c = 1; }
             for (ch = 0; ch < 3; ++ch) {
                 float e = q[ch] - c0[ch];
-                mn[ch] = fovlp__minf(mn[ch], q[ch]);
-                mx[ch] = fovlp__maxf(mx[ch], q[ch]);
+                mn[ch] = fov__minf(mn[ch], q[ch]);
+                mx[ch] = fov__maxf(mx[ch], q[ch]);
                 m1[ch] += e;
                 m2[ch] += e * e;
             }
@@ -2080,14 +2188,14 @@ FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t 
     s[0] = h[0] * k; s[1] = h[1] * k; s[2] = h[2] * k;
     fovlp__to_ycocg(s, hy);
     if (mode == FOVLP_CLAMP_AABB) {
-        for (ch = 0; ch < 3; ++ch) hy[ch] = fovlp__clampf(hy[ch], mn[ch], mx[ch]);
+        for (ch = 0; ch < 3; ++ch) hy[ch] = fov__clampf(hy[ch], mn[ch], mx[ch]);
     } else {
         float scale = 0.0f, d[3], eps = k < 1.0f ? 1e-6f * k : 1e-6f;
         for (ch = 0; ch < 3; ++ch) {
-            float mc = m1[ch] / n, var = fovlp__maxf(m2[ch] / n - mc * mc, 0.0f), mu = c0[ch] + mc;
-            float ext = ctx->cfg.taa.clip_gamma * FOVLP__SQRT(var) + eps;
+            float mc = m1[ch] / n, var = fov__maxf(m2[ch] / n - mc * mc, 0.0f), mu = c0[ch] + mc;
+            float ext = ctx->cfg.taa.clip_gamma * FOV__SQRT(var) + eps;
             d[ch] = hy[ch] - mu;
-            scale = fovlp__maxf(scale, fovlp__absf(d[ch]) / ext);
+            scale = fov__maxf(scale, fov__absf(d[ch]) / ext);
             m1[ch] = mu;
         }
         if (scale > 1.0f)
@@ -2096,11 +2204,11 @@ FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t 
     fovlp__from_ycocg(hy, r);
     if (k < 1.0f) {
         for (ch = 0; ch < 3; ++ch)
-            r[ch] = fovlp__clampf(r[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
+            r[ch] = fov__clampf(r[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
         return 1;
     }
     t = (m1[0] + m1[1] + m1[2]) + (m2[0] + m2[1] + m2[2]) + (mn[0] + mn[1] + mn[2]) + (mx[0] + mx[1] + mx[2]);
-    return fovlp__finite(t) && fovlp__finite3(r);
+    return fov__finite(t) && fov__finite3(r);
 }
 
 /* Clamp (AABB) or clip (variance) the history colour h against the current 3x3
@@ -2120,7 +2228,7 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
 {
     float r[3];
     /* the fast pass; if not finite: without the NaN / inf neighbours; then at 2^-70 */
-    if (!fovlp__clip_at(ctx, cur, x, y, mode, h, 1.0f, 0, r) && fovlp__finite3(h) &&
+    if (!fovlp__clip_at(ctx, cur, x, y, mode, h, 1.0f, 0, r) && fov__finite3(h) &&
         !fovlp__clip_at(ctx, cur, x, y, mode, h, 1.0f, 1, r))
         (void)fovlp__clip_at(ctx, cur, x, y, mode, h, 8.47032947e-22f, 1, r);   /* 2^-70 */
     h[0] = r[0]; h[1] = r[1]; h[2] = r[2];
@@ -2129,8 +2237,8 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
 /* Bilinear fetch of the previous colour at continuous (hx, hy), borders clamped. */
 FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx, float hy, float o[3])
 {
-    float sx = fovlp__clampf(hx - 0.5f, 0.0f, (float)W - 1.0f), sy = fovlp__clampf(hy - 0.5f, 0.0f, (float)H - 1.0f);
-    float fx = FOVLP__FLOOR(sx), fy = FOVLP__FLOOR(sy), ax = sx - fx, ay = sy - fy;
+    float sx = fov__clampf(hx - 0.5f, 0.0f, (float)W - 1.0f), sy = fov__clampf(hy - 0.5f, 0.0f, (float)H - 1.0f);
+    float fx = FOV__FLOOR(sx), fy = FOV__FLOOR(sy), ax = sx - fx, ay = sy - fy;
     uint32_t x0 = (uint32_t)fx, y0 = (uint32_t)fy;
     uint32_t x1 = x0 + 1u < W ? x0 + 1u : x0, y1 = y0 + 1u < H ? y0 + 1u : y0;
     const float *p00 = img + 3u * ((size_t)y0 * W + x0), *p10 = img + 3u * ((size_t)y0 * W + x1);
@@ -2139,7 +2247,7 @@ FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx
     for (ch = 0; ch < 3; ++ch) {
         float t0 = p00[ch] + (p10[ch] - p00[ch]) * ax, t1 = p01[ch] + (p11[ch] - p01[ch]) * ax;
         o[ch] = t0 + (t1 - t0) * ay;
-        if (!fovlp__finite(o[ch])) {
+        if (!fov__finite(o[ch])) {
             /* a difference overflowed (neighbours of opposite signs beyond FLT_MAX / 2; a
                +-3e38 checkerboard gave NaN * 0), or a tap is NaN / inf: blend without
                differences (NaN / inf taps still give a non-finite result, rejected) */
@@ -2172,7 +2280,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     reproject = ctx->history_valid && ctx->moving;
     if (reproject && (!io->cur_depth || !io->prev_depth))
         FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: a moving camera needs cur_depth and prev_depth");
-    diag = FOVLP__SQRT((float)W * (float)W + (float)H * (float)H);
+    diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     per = c->taa.periphery * diag;
     asp = (float)W / (float)H;
     for (y = y0; y < y1; ++y)
@@ -2186,7 +2294,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (io->out_depth) io->out_depth[i] = dc;
             if (!ctx->history_valid) {
                 /* a non-finite colour from the caller's shading never enters the history */
-                for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = fovlp__finite(cur[ch]) ? cur[ch] : 0.0f;
+                for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = fov__finite(cur[ch]) ? cur[ch] : 0.0f;
                 io->out_age[i] = 1;
                 continue;
             }
@@ -2199,12 +2307,12 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                 for (ch = 0; ch < 3; ++ch) d[ch] = a->fwd[ch] + sxn * a->right[ch] - syn * a->up[ch];
                 fovlp__normalize(d);
                 for (ch = 0; ch < 3; ++ch) { wp[ch] = a->pos[ch] + dc * d[ch]; rel[ch] = wp[ch] - p->pos[ch]; }
-                z = fovlp__dot(rel, p->fwd);
-                if (!(z > 1e-6f) || !fovlp__finite(dc)) {
+                z = fov__dot(rel, p->fwd);
+                if (!(z > 1e-6f) || !fov__finite(dc)) {
                     reject = 1;
                 } else {
-                    float px = fovlp__dot(rel, p->right) / (z * p->tan_half_y * asp);
-                    float py = fovlp__dot(rel, p->up) / (z * p->tan_half_y);
+                    float px = fov__dot(rel, p->right) / (z * p->tan_half_y * asp);
+                    float py = fov__dot(rel, p->up) / (z * p->tan_half_y);
                     hx = (px + 1.0f) * 0.5f * (float)W;
                     hy = (1.0f - py) * 0.5f * (float)H;
                     if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
@@ -2213,8 +2321,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                         float expect = fovlp__len_safe(rel);
                         float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
                         /* NaN, or a distance beyond FLT_MAX: differs (inf <= tol * inf would pass) */
-                        if (!fovlp__finite(expect) || !fovlp__finite(hd) ||
-                            !(fovlp__absf(hd - expect) <= c->taa.depth_tol * fovlp__maxf(hd, expect))) {
+                        if (!fov__finite(expect) || !fov__finite(hd) ||
+                            !(fov__absf(hd - expect) <= c->taa.depth_tol * fov__maxf(hd, expect))) {
                             float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
                             if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
                             else reject = 1;
@@ -2236,7 +2344,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     fovlp__clamp_history(ctx, io->cur_rgb, x, y, c->taa.clamp, hist);
                 else if (reproject && !c->taa.thesis_moving) /* moving: no ghost (ours) */
                     fovlp__clamp_history(ctx, io->cur_rgb, x, y, FOVLP_CLAMP_VARIANCE, hist);
-                if (!fovlp__finite(hist[0]) || !fovlp__finite(hist[1]) || !fovlp__finite(hist[2])) {
+                if (!fov__finite(hist[0]) || !fov__finite(hist[1]) || !fov__finite(hist[2])) {
                     /* a NaN / inf neighbour in this frame's colours (the caller's shading) */
                     age = 1; periph = 0;
                     hist[0] = hist[1] = hist[2] = 0.0f;
@@ -2249,7 +2357,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             for (ch = 0; ch < 3; ++ch) {
                 /* a non-finite current colour: keep the history (or 0 without one), so one bad
                    sample cannot spread through the bilinear fetch and the clamp frame by frame */
-                float cc = fovlp__finite(cur[ch]) ? cur[ch] : (age > 1 ? hist[ch] : 0.0f);
+                float cc = fov__finite(cur[ch]) ? cur[ch] : (age > 1 ? hist[ch] : 0.0f);
                 /* within [min, max] of history and current, finite (issue 10 F8: 3e38 then
                    -3e38 overflowed hist + (cur - hist) / age to -inf) */
                 io->out_rgb[3 * i + ch] = fovlp__lerp(hist[ch], cc, w);
@@ -2261,6 +2369,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
 
 #endif /* FOVLP_IMPLEMENTATION */
 
+/* ==== FOV_SHARED_BEGIN license ============================================================== */
 /*
 ------------------------------------------------------------------------------
 This software is available under 2 licenses -- choose whichever you prefer.
@@ -2302,3 +2411,4 @@ ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
 WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
 ------------------------------------------------------------------------------
 */
+/* ==== FOV_SHARED_END license ================================================================ */

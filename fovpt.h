@@ -1,9 +1,8 @@
 /* fovpt.h - v0.2.1 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
-   Do this:
-      #define FOVPT_IMPLEMENTATION   (or #define FOV_IMPL for all fov headers)
-   before you include this file in *one* C or C++ file to create the implementation.
+   In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
+   before you include this file: that file holds the implementation.
 
 QUICK START
       #define FOVPT_IMPLEMENTATION
@@ -153,14 +152,7 @@ DOES NOT
 
 CONFIGURATION (define before including the implementation)
    FOVPT_STATIC         all functions static (use it when two libraries embed this header)
-   FOV_DLL              export (FOVPT_IMPLEMENTATION) or import the API from a DLL
    FOVPT_API            override the linkage of every public function
-   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
-   FOV_NO_LIBM          use the built-in float approximations of the math functions below
-   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
-                        math hooks: define all of them or none (an #error tells you)
-   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
-                        calls to memset/memcpy for struct copies)
    FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
    FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default and maximum 2^26)
    FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack 3 entries per level  (default 64)
@@ -170,7 +162,9 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
-   FOV_NO_ERROR_STRINGS compile out the result strings (fovpt_result_string returns "")
+   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
+   FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 
 MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
@@ -197,8 +191,8 @@ ERRORS AND LOGGING
    the cap (FOV_ERR_LIMIT); bad layer tables (radii not decreasing with the layer index,
    stride < 1), and every out-of-range config field. Non-finite radiance (from a user hook,
    say) is replaced by black and counted in fovpt_stats.bad_samples: images never hold NaN.
-   An optional fov_logger (desc.logger, cfg.logger) receives a message with each error
-   (messages with FOV_DEBUG; the code and line always).
+   An optional fov_logger (desc.logger, cfg.logger) receives the code, a specific message
+   and the source line of each error (texts on unless FOV_NO_ERROR_STRINGS).
 
 THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
@@ -299,33 +293,56 @@ RECENT REVISION HISTORY
 #define FOVPT_MAX_LAYERS 8
 #endif
 
-#if defined(__GNUC__) || defined(__clang__)
-#define FOVPT__UNUSED __attribute__((unused))
-#else
-#define FOVPT__UNUSED
-#endif
+/* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
+   header: edit tools/fov_shared.h and run `python3 tools/sync_shared.py` (tests/shared.sh
+   checks the copies).
 
-#ifndef FOVPT_API
-#if defined(FOVPT_STATIC)
-#define FOVPT_API static FOVPT__UNUSED
-#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVPT_IMPLEMENTATION)
-#define FOVPT_API __declspec(dllexport)
-#elif defined(FOV_DLL) && defined(_WIN32)
-#define FOVPT_API __declspec(dllimport)
-#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
-#define FOVPT_API __attribute__((visibility("default"))) extern
+   CONFIGURATION shared by fovsdf.h, fovlp.h and fovpt.h (define before including the
+   implementation; the same value for every header in a translation unit)
+   FOV_DLL              export (in the translation unit with FOVxx_IMPLEMENTATION) or import
+                        the API of a shared library
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+                        (relative error about 1e-6 or better on the ranges the libraries use)
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOV_NO_ERROR_STRINGS compile out the message texts: the logger gets "" and
+                        *_result_string returns "" (for the smallest microcontroller builds)
+   Error messages are on by default: set the logger in a config (cfg.logger.func) and every
+   failure calls it with a code, a specific message and the header's source line. */
+#ifndef FOV_SHARED_DECL_INCLUDED
+#define FOV_SHARED_DECL_INCLUDED 1
+#define FOV_SHARED_REVISION 1 /* the revision of this block; headers that differ must not mix */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOV__UNUSED __attribute__((unused))
 #else
-#define FOVPT_API extern
+#define FOV__UNUSED
 #endif
+/* Linkage of public functions (each header's FOVxx_API picks one): FOV_DLL builds a shared
+   library (dllexport in the translation unit with the implementation, dllimport elsewhere on
+   Windows; default visibility with gcc and clang). */
+#if defined(FOV_DLL) && defined(_WIN32)
+#define FOV__API_EXPORT __declspec(dllexport)
+#define FOV__API_IMPORT __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOV__API_EXPORT __attribute__((visibility("default"))) extern
+#define FOV__API_IMPORT __attribute__((visibility("default"))) extern
+#else
+#define FOV__API_EXPORT extern
+#define FOV__API_IMPORT extern
 #endif
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
-#ifndef FOV_COMMON_DEFINED
-#define FOV_COMMON_DEFINED
 /* Result codes of every fallible function in the fov headers. */
 typedef enum fov_result {
     FOV_OK = 0,
@@ -346,8 +363,9 @@ typedef enum fov_log_level {
     _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
 } fov_log_level;
 
-/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
-   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+/* Optional diagnostics: tag is the header ("fovsdf", "fovlp", "fovpt"), code a fov_result,
+   msg a specific text naming what was wrong and what is allowed (never NULL; "" when the
+   build defines FOV_NO_ERROR_STRINGS), line the header's source line that reported it. */
 typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
                              uint32_t line, void *user);
 typedef struct fov_logger {
@@ -388,8 +406,28 @@ typedef struct fov_ecc_model {
     float gx, gy;    /* the gaze point, pixels */
     float g[3];      /* unit direction of the gaze ray */
 } fov_ecc_model;
-#endif /* FOV_COMMON_DEFINED */
-/* ---- end of the shared block ---- */
+
+#ifdef __cplusplus
+}
+#endif
+#elif FOV_SHARED_REVISION != 1
+#error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
+#endif /* FOV_SHARED_DECL_INCLUDED */
+/* ==== FOV_SHARED_END decl ==================================================================== */
+
+#ifndef FOVPT_API
+#if defined(FOVPT_STATIC)
+#define FOVPT_API static FOV__UNUSED
+#elif defined(FOVPT_IMPLEMENTATION)
+#define FOVPT_API FOV__API_EXPORT
+#else
+#define FOVPT_API FOV__API_IMPORT
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ==== geometry and materials =============================================================== */
 
@@ -807,16 +845,15 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
 
 #if defined(FOVPT_IMPLEMENTATION) && !defined(FOVPT_IMPL_INCLUDED)
 #define FOVPT_IMPL_INCLUDED
+/* ==== FOV_SHARED_BEGIN impl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit (edit
+   tools/fov_shared.h, then run `python3 tools/sync_shared.py`). Private: every name starts
+   with fov__ / FOV__ and has internal linkage. */
+#ifndef FOV__SHARED_IMPL_INCLUDED
+#define FOV__SHARED_IMPL_INCLUDED 1
+
 #include <float.h>
 #include <limits.h>
-/* SSE: the 4-wide BVH tests a node's four boxes in one pass (FOVPT_NO_SIMD: scalar only;
-   both give the same results) */
-#if !defined(FOVPT_NO_SIMD) && (defined(__SSE__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
-#define FOVPT__SSE 1
-#include <xmmintrin.h>
-#else
-#define FOVPT__SSE 0
-#endif
 
 /* ---- hooks ------------------------------------------------------------------------------ */
 #ifndef FOV_ASSERT
@@ -830,54 +867,54 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
 #if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
     !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
     !defined(FOV_POWF)
-#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#error "fov: define all nine math hooks (FOV_SQRTF ... FOV_POWF, see the doc block) or none"
 #endif
-#define FOVPT__HOOKED_MATH 1
+#define FOV__HOOKED_MATH 1
 #endif
 
-#define FOVPT__PRIV static FOVPT__UNUSED
+#define FOV__PRIV static FOV__UNUSED
 
 /* Float tests without == (the library builds clean with -Wfloat-equal). */
-FOVPT__PRIV int fovpt__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
-FOVPT__PRIV int fovpt__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+FOV__PRIV int fov__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 
-#if !defined(FOVPT__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#if !defined(FOV__HOOKED_MATH) && !defined(FOV_NO_LIBM)
 #include <math.h>
-#define FOVPT__SQRT(x) sqrtf(x)
-#define FOVPT__FLOOR(x) floorf(x)
-#define FOVPT__SIN(x) sinf(x)
-#define FOVPT__COS(x) cosf(x)
-#define FOVPT__TAN(x) tanf(x)
-#define FOVPT__ATAN2(y, x) atan2f(y, x)
-#define FOVPT__EXP(x) expf(x)
-#define FOVPT__LOG(x) logf(x)
-#define FOVPT__POW(x, y) powf(x, y)
-#elif defined(FOVPT__HOOKED_MATH)
-#define FOVPT__SQRT(x) FOV_SQRTF(x)
-#define FOVPT__FLOOR(x) FOV_FLOORF(x)
-#define FOVPT__SIN(x) FOV_SINF(x)
-#define FOVPT__COS(x) FOV_COSF(x)
-#define FOVPT__TAN(x) FOV_TANF(x)
-#define FOVPT__ATAN2(y, x) FOV_ATAN2F(y, x)
-#define FOVPT__EXP(x) FOV_EXPF(x)
-#define FOVPT__LOG(x) FOV_LOGF(x)
-#define FOVPT__POW(x, y) FOV_POWF(x, y)
+#define FOV__SQRT(x) sqrtf(x)
+#define FOV__FLOOR(x) floorf(x)
+#define FOV__SIN(x) sinf(x)
+#define FOV__COS(x) cosf(x)
+#define FOV__TAN(x) tanf(x)
+#define FOV__ATAN2(y, x) atan2f(y, x)
+#define FOV__EXP(x) expf(x)
+#define FOV__LOG(x) logf(x)
+#define FOV__POW(x, y) powf(x, y)
+#elif defined(FOV__HOOKED_MATH)
+#define FOV__SQRT(x) FOV_SQRTF(x)
+#define FOV__FLOOR(x) FOV_FLOORF(x)
+#define FOV__SIN(x) FOV_SINF(x)
+#define FOV__COS(x) FOV_COSF(x)
+#define FOV__TAN(x) FOV_TANF(x)
+#define FOV__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOV__EXP(x) FOV_EXPF(x)
+#define FOV__LOG(x) FOV_LOGF(x)
+#define FOV__POW(x, y) FOV_POWF(x, y)
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
-   ranges the library uses; tests/test_fovpt.c checks them against libm). */
-#define FOVPT__SQRT(x) fovpt__sqrtf(x)
-#define FOVPT__FLOOR(x) fovpt__floorf(x)
-#define FOVPT__SIN(x) fovpt__sinf(x)
-#define FOVPT__COS(x) fovpt__cosf(x)
-#define FOVPT__TAN(x) (fovpt__sinf(x) / fovpt__cosf(x))
-#define FOVPT__ATAN2(y, x) fovpt__atan2f(y, x)
-#define FOVPT__EXP(x) fovpt__expf(x)
-#define FOVPT__LOG(x) fovpt__logf(x)
-#define FOVPT__POW(x, y) fovpt__powf(x, y)
+   ranges the library uses; tests/test_fovsdf.c checks them against libm). */
+#define FOV__SQRT(x) fov__sqrtf(x)
+#define FOV__FLOOR(x) fov__floorf(x)
+#define FOV__SIN(x) fov__sinf(x)
+#define FOV__COS(x) fov__cosf(x)
+#define FOV__TAN(x) (fov__sinf(x) / fov__cosf(x))
+#define FOV__ATAN2(y, x) fov__atan2f(y, x)
+#define FOV__EXP(x) fov__expf(x)
+#define FOV__LOG(x) fov__logf(x)
+#define FOV__POW(x, y) fov__powf(x, y)
 
-typedef union fovpt__bits { float f; uint32_t u; } fovpt__bits;
+typedef union fov__bits { float f; uint32_t u; } fov__bits;
 
-FOVPT__PRIV float fovpt__sqrtf(float x)
+FOV__PRIV float fov__sqrtf(float x)
 {
 #if defined(__wasm__) && defined(__clang__)
     return __builtin_sqrtf(x); /* one f32.sqrt instruction */
@@ -886,9 +923,9 @@ FOVPT__PRIV float fovpt__sqrtf(float x)
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
 #else
-    fovpt__bits b;
+    fov__bits b;
     float y;
-    if (!(x > 0.0f)) return fovpt__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -901,7 +938,7 @@ FOVPT__PRIV float fovpt__sqrtf(float x)
 #endif
 }
 
-FOVPT__PRIV float fovpt__floorf(float x)
+FOV__PRIV float fov__floorf(float x)
 {
     float r;
     if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
@@ -910,52 +947,52 @@ FOVPT__PRIV float fovpt__floorf(float x)
 }
 
 /* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
-FOVPT__PRIV float fovpt__sin_k(float x)
+FOV__PRIV float fov__sin_k(float x)
 {
     float x2 = x * x;
     return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
                 x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
 }
-FOVPT__PRIV float fovpt__cos_k(float x)
+FOV__PRIV float fov__cos_k(float x)
 {
     float x2 = x * x;
     return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
                 x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
 }
 /* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
-FOVPT__PRIV float fovpt__reduce(float x, int32_t *q)
+FOV__PRIV float fov__reduce(float x, int32_t *q)
 {
     float k;
     if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
-    k = fovpt__floorf(x * 0.63661977236758134f + 0.5f);
+    k = fov__floorf(x * 0.63661977236758134f + 0.5f);
     *q = (int32_t)k;
     /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
     return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
 }
-FOVPT__PRIV float fovpt__sinf(float x)
+FOV__PRIV float fov__sinf(float x)
 {
     int32_t q;
-    float r = fovpt__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovpt__sin_k(r);
-    case 1: return fovpt__cos_k(r);
-    case 2: return -fovpt__sin_k(r);
-    default: return -fovpt__cos_k(r);
+    case 0: return fov__sin_k(r);
+    case 1: return fov__cos_k(r);
+    case 2: return -fov__sin_k(r);
+    default: return -fov__cos_k(r);
     }
 }
-FOVPT__PRIV float fovpt__cosf(float x)
+FOV__PRIV float fov__cosf(float x)
 {
     int32_t q;
-    float r = fovpt__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovpt__cos_k(r);
-    case 1: return -fovpt__sin_k(r);
-    case 2: return -fovpt__cos_k(r);
-    default: return fovpt__sin_k(r);
+    case 0: return fov__cos_k(r);
+    case 1: return -fov__sin_k(r);
+    case 2: return -fov__cos_k(r);
+    default: return fov__sin_k(r);
     }
 }
 /* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
-FOVPT__PRIV float fovpt__atan01(float x)
+FOV__PRIV float fov__atan01(float x)
 {
     float off = 0.0f, z, z2;
     if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
@@ -964,37 +1001,40 @@ FOVPT__PRIV float fovpt__atan01(float x)
     return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
                  z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
 }
-FOVPT__PRIV float fovpt__atan2f(float y, float x)
+FOV__PRIV float fov__atan2f(float y, float x)
 {
     float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
-    if (fovpt__isnan(x) || fovpt__isnan(y)) return x + y;
-    if (fovpt__is0(ax) && fovpt__is0(ay)) return 0.0f;
-    a = ay <= ax ? fovpt__atan01(ay / ax) : 1.57079633f - fovpt__atan01(ax / ay);
+    if (fov__isnan(x) || fov__isnan(y)) return x + y;
+    if (fov__is0(ax) && fov__is0(ay)) return 0.0f;
+    a = ay <= ax ? fov__atan01(ay / ax) : 1.57079633f - fov__atan01(ax / ay);
     if (x < 0.0f) a = 3.14159265f - a;
     return y < 0.0f ? -a : a;
 }
-FOVPT__PRIV float fovpt__expf(float x)
+FOV__PRIV float fov__expf(float x)
 {
     float k, r, p;
-    fovpt__bits b;
-    if (fovpt__isnan(x)) return x;
+    fov__bits b;
+    if (fov__isnan(x)) return x;
     if (x > 88.7f) return FLT_MAX * 2.0f;
     if (x < -103.0f) return 0.0f;
-    k = fovpt__floorf(x * 1.44269504f + 0.5f);
+    k = fov__floorf(x * 1.44269504f + 0.5f);
     r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
     p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
         r * (8.3333333e-3f + r * 1.3888889e-3f)))));
-    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    if (k < -126.0f) {
+        b.u = (uint32_t)(k + 126.0f + 127.0f) << 23;
+        return p * b.f * 1.17549435e-38f;
+    }
     b.u = (uint32_t)((int32_t)k + 127) << 23;
     return p * b.f;
 }
-FOVPT__PRIV float fovpt__logf(float x)
+FOV__PRIV float fov__logf(float x)
 {
-    fovpt__bits b;
+    fov__bits b;
     int32_t e;
     float m, s, s2;
-    if (fovpt__isnan(x) || x < 0.0f) return (x - x) / (x - x);
-    if (fovpt__is0(x)) return -FLT_MAX * 2.0f;
+    if (fov__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fov__is0(x)) return -FLT_MAX * 2.0f;
     if (x > FLT_MAX) return x;
     b.f = x;
     e = 0;
@@ -1006,40 +1046,216 @@ FOVPT__PRIV float fovpt__logf(float x)
     s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
     s2 = s * s;
     return (float)e * 0.693147181f +
-           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f +
+                                                                   s2 * 1.1111111e-1f))));
 }
-FOVPT__PRIV float fovpt__powf(float x, float y)
+FOV__PRIV float fov__powf(float x, float y)
 {
-    if (fovpt__is0(y)) return 1.0f;
-    if (fovpt__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (fov__is0(y)) return 1.0f;
+    if (fov__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
     if (x < 0.0f) {
-        float fy = fovpt__floorf(y);
+        float fy = fov__floorf(y);
         float r;
         if (fy < y || fy > y) return (x - x) / (x - x);
-        r = fovpt__expf(y * fovpt__logf(-x));
-        return ((int32_t)fovpt__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+        r = fov__expf(y * fov__logf(-x));
+        return ((int32_t)fov__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
     }
-    return fovpt__expf(y * fovpt__logf(x));
+    return fov__expf(y * fov__logf(x));
 }
 #endif
 
 #ifndef FOV_MEMSET
-#define FOV_MEMSET(p, v, n) fovpt__memset(p, v, n)
-FOVPT__PRIV void fovpt__memset(void *p, int v, size_t n)
+#define FOV_MEMSET(p, v, n) fov__memset(p, v, n)
+FOV__PRIV void fov__memset(void *p, int v, size_t n)
 {
     unsigned char *c = (unsigned char *)p;
     while (n--) *c++ = (unsigned char)v;
 }
 #endif
 #ifndef FOV_MEMCPY
-#define FOV_MEMCPY(d, s, n) fovpt__memcpy(d, s, n)
-FOVPT__PRIV void fovpt__memcpy(void *d, const void *s, size_t n)
+#define FOV_MEMCPY(d, s, n) fov__memcpy(d, s, n)
+FOV__PRIV void fov__memcpy(void *d, const void *s, size_t n)
 {
     unsigned char *a = (unsigned char *)d;
     const unsigned char *b = (const unsigned char *)s;
     while (n--) *a++ = *b++;
 }
 #endif
+
+#define FOV__PI 3.14159265358979f
+#define FOV__DEG 0.0174532925199433f
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOV__PRIV int fov__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOV__PRIV int fov__finite3(const float v[3])
+{
+    return fov__finite(v[0]) && fov__finite(v[1]) && fov__finite(v[2]);
+}
+FOV__PRIV float fov__minf(float a, float b) { return a < b ? a : b; }
+FOV__PRIV float fov__maxf(float a, float b) { return a > b ? a : b; }
+FOV__PRIV float fov__absf(float a) { return a < 0.0f ? -a : a; }
+FOV__PRIV float fov__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOV__PRIV float fov__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOV__PRIV float fov__len(const float a[3]) { return FOV__SQRT(fov__dot(a, a)); }
+FOV__PRIV void fov__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2];
+    float z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
+FOV__PRIV void fov__prescale(float v[3])
+{
+    float m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (m > 0.0f && fov__finite(m) && (m < 1e-15f || m > 1e15f)) {
+        v[0] /= m; v[1] /= m; v[2] /= m;
+    }
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fov__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOV__PRIV float fov__normalize(float v[3])
+{
+    float l2 = fov__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOV__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fov__finite(v[0]) || !fov__finite(v[1]) || !fov__finite(v[2])) return 0.0f;
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fov__len(v); /* in [1, sqrt 3] */
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return m * l;
+}
+FOV__PRIV size_t fov__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+
+/* ---- errors ----------------------------------------------------------------------------- */
+/* Messages are on by default; FOV_NO_ERROR_STRINGS compiles them out (the logger then gets
+   ""). FOV__FAIL reports through the optional logger and returns the code. */
+#ifndef FOV_NO_ERROR_STRINGS
+#define FOV__MSG(s) s
+#else
+#define FOV__MSG(s) ""
+#endif
+FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result r, const char *msg,
+                              uint32_t line)
+{
+    if (lg && lg->func) lg->func(tag, FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+
+FOV__PRIV const char *fov__result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+/* ---- the eccentricity model (see fov_display) ------------------------------------------- */
+FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                   uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > max_dim || height > max_dim) return FOV_ERR_LIMIT;
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y) || !fov__finite(cam_fov_y_deg) ||
+        !fov__finite(d->fov_y_deg) || !fov__finite(d->pixel_pitch_mm) ||
+        !fov__finite(d->distance_mm) || !fov__finite(d->axis_dx) || !fov__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * d->fov_y_deg * FOV__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fov__is0(d->pixel_pitch_mm) || !fov__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by pitch or distance only */
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * cam_fov_y_deg * FOV__DEG);
+    }
+    if (!(f > 0.0f) || !fov__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fov__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(fov__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
+    fov__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+/* The angle in degrees between the eye's rays through (x, y) and through the gaze point. */
+FOV__PRIV float fov__ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v)) && fov__finite(x) && fov__finite(y)) {
+        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
+           (no overflow) and scale by the largest component; the usual range is untouched */
+        float k;
+        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
+        k = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= k; v[1] /= k; v[2] /= k;
+    }
+    fov__cross(v, m->g, c);
+    s = fov__len(c);
+    co = fov__dot(v, m->g);
+    return FOV__ATAN2(s, co) * (180.0f / FOV__PI); /* atan2 keeps small angles exact */
+}
+
+/* Pixels per degree at the gaze. d(angle)/d(pixels) along the radial direction at the gaze is
+   f / (f^2 + r^2) radians per pixel, with r the gaze's distance from the axis. */
+FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2, ppd;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOV__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* gaze beyond ~1e19 px: FLT_MAX */
+}
+#endif /* FOV__SHARED_IMPL_INCLUDED */
+/* ==== FOV_SHARED_END impl ==================================================================== */
+
+#define FOVPT__PRIV FOV__PRIV
+#define FOVPT__FAIL(lg, r, msg) FOV__FAIL(lg, "fovpt", r, msg)
 
 
 #ifndef FOVPT_MAX_DIM
@@ -1069,60 +1285,7 @@ FOVPT__PRIV void fovpt__memcpy(void *d, const void *s, size_t n)
 #define FOVPT__BINS_MAX 32u
 #define FOVPT__LEAF_MAX 16u
 
-#define FOVPT__PI 3.14159265358979f
-#define FOVPT__DEG 0.0174532925199433f
 
-/* ---- small helpers ---------------------------------------------------------------------- */
-FOVPT__PRIV int fovpt__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
-FOVPT__PRIV int fovpt__finite3(const float v[3])
-{
-    return fovpt__finite(v[0]) && fovpt__finite(v[1]) && fovpt__finite(v[2]);
-}
-FOVPT__PRIV float fovpt__minf(float a, float b) { return a < b ? a : b; }
-FOVPT__PRIV float fovpt__maxf(float a, float b) { return a > b ? a : b; }
-FOVPT__PRIV float fovpt__absf(float a) { return a < 0.0f ? -a : a; }
-FOVPT__PRIV float fovpt__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
-FOVPT__PRIV float fovpt__dot(const float a[3], const float b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-FOVPT__PRIV float fovpt__len(const float a[3]) { return FOVPT__SQRT(fovpt__dot(a, a)); }
-FOVPT__PRIV void fovpt__cross(const float a[3], const float b[3], float r[3])
-{
-    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    r[0] = x; r[1] = y; r[2] = z;
-}
-/* Brings a vector whose squared length would underflow or overflow (largest component
-   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
-   for bit. Leaves zero and non-finite vectors as they are. */
-FOVPT__PRIV void fovpt__prescale(float v[3])
-{
-    float m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
-    if (m > 0.0f && fovpt__finite(m) && (m < 1e-15f || m > 1e15f)) { v[0] /= m; v[1] /= m; v[2] /= m; }
-}
-/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
-   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
-   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
-   the plain path (sqrt of the dot product, three divisions); any other finite vector is
-   first prescaled to a largest component m = 1 (fovpt__prescale), so vectors of any finite
-   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
-   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
-FOVPT__PRIV float fovpt__normalize(float v[3])
-{
-    float l2 = fovpt__dot(v, v), l, m;
-    if (l2 >= 1e-30f && l2 <= 1e30f) {
-        l = FOVPT__SQRT(l2);
-        v[0] /= l; v[1] /= l; v[2] /= l;
-        return l;
-    }
-    if (!fovpt__finite(v[0]) || !fovpt__finite(v[1]) || !fovpt__finite(v[2])) return 0.0f;
-    m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
-    if (!(m > 0.0f)) return 0.0f;
-    v[0] /= m; v[1] /= m; v[2] /= m;
-    l = fovpt__len(v); /* in [1, sqrt 3] */
-    v[0] /= l; v[1] /= l; v[2] /= l;
-    return m * l;
-}
 FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
 FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
 FOVPT__PRIV void fovpt__sub3(float d[3], const float a[3], const float b[3])
@@ -1133,26 +1296,25 @@ FOVPT__PRIV void fovpt__madd3(float d[3], const float a[3], float s, const float
 {
     d[0] = a[0] + s * b[0]; d[1] = a[1] + s * b[1]; d[2] = a[2] + s * b[2];
 }
-FOVPT__PRIV float fovpt__max3(const float v[3]) { return fovpt__maxf(v[0], fovpt__maxf(v[1], v[2])); }
+FOVPT__PRIV float fovpt__max3(const float v[3]) { return fov__maxf(v[0], fov__maxf(v[1], v[2])); }
 FOVPT__PRIV float fovpt__mean3(const float v[3]) { return (v[0] + v[1] + v[2]) * (1.0f / 3.0f); }
 FOVPT__PRIV int fovpt__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
-FOVPT__PRIV size_t fovpt__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
 /* The unit normal a x b / |a x b| of edges of any finite length: when the cross product
    under- or overflows, each edge is first scaled to a largest component of 1 (the
    direction does not change). n = 0 when the edges are parallel or zero. */
 FOVPT__PRIV void fovpt__unit_normal(const float a[3], const float b[3], float n[3])
 {
     float x[3], y[3], mx, my;
-    fovpt__cross(a, b, n);
-    if (fovpt__normalize(n) > 0.0f) return;
-    mx = fovpt__maxf(fovpt__absf(a[0]), fovpt__maxf(fovpt__absf(a[1]), fovpt__absf(a[2])));
-    my = fovpt__maxf(fovpt__absf(b[0]), fovpt__maxf(fovpt__absf(b[1]), fovpt__absf(b[2])));
+    fov__cross(a, b, n);
+    if (fov__normalize(n) > 0.0f) return;
+    mx = fov__maxf(fov__absf(a[0]), fov__maxf(fov__absf(a[1]), fov__absf(a[2])));
+    my = fov__maxf(fov__absf(b[0]), fov__maxf(fov__absf(b[1]), fov__absf(b[2])));
     fovpt__set3(n, 0.0f, 0.0f, 0.0f);
-    if (!(mx > 0.0f && my > 0.0f) || !fovpt__finite(mx) || !fovpt__finite(my)) return;
+    if (!(mx > 0.0f && my > 0.0f) || !fov__finite(mx) || !fov__finite(my)) return;
     fovpt__set3(x, a[0] / mx, a[1] / mx, a[2] / mx);
     fovpt__set3(y, b[0] / my, b[1] / my, b[2] / my);
-    fovpt__cross(x, y, n);
-    if (!(fovpt__normalize(n) > 0.0f)) fovpt__set3(n, 0.0f, 0.0f, 0.0f);
+    fov__cross(x, y, n);
+    if (!(fov__normalize(n) > 0.0f)) fovpt__set3(n, 0.0f, 0.0f, 0.0f);
 }
 /* An orthonormal basis around unit n (Duff et al. 2017, branchless up to the sign). */
 FOVPT__PRIV void fovpt__basis(const float n[3], float t[3], float b[3])
@@ -1164,38 +1326,15 @@ FOVPT__PRIV void fovpt__basis(const float n[3], float t[3], float b[3])
     fovpt__set3(b, c, sg + n[1] * n[1] * a, -n[1]);
 }
 
-#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
-#define FOVPT__MSG(s) s
-#else
-#define FOVPT__MSG(s) ((const char *)0)
-#endif
-FOVPT__PRIV fov_result fovpt__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
-{
-    if (lg && lg->func) lg->func("fovpt", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
-    return r;
-}
-#define FOVPT__FAIL(lg, r, msg) return fovpt__err(lg, r, FOVPT__MSG(msg), (uint32_t)__LINE__)
 
 /* ---- results, names, configs ------------------------------------------------------------ */
-FOVPT_API const char *fovpt_result_string(fov_result r)
-{
-#ifdef FOV_NO_ERROR_STRINGS
-    (void)r;
-    return "";
-#else
-    switch (r) {
-    case FOV_OK: return "ok";
-    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
-    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
-    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
-    case FOV_ERR_NULL: return "a required pointer is NULL";
-    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
-    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
-    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
-    default: return "unknown result code";
-    }
-#endif
-}
+FOVPT_API const char *fovpt_result_string(fov_result r) { return fov__result_string(r); }
+/* The shared eccentricity model (see fov_display). */
+FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
+                                    uint32_t w, uint32_t h, fov_gaze g)
+{ return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVPT_MAX_DIM); }
+FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
+FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
 
 FOVPT_API const char *fovpt_method_name(uint32_t method)
 {
@@ -1224,8 +1363,8 @@ FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *o, uint32_t preset)
     return FOV_OK;
 }
 
-FOVPT__PRIV int fovpt__pos(float v) { return v > 0.0f && fovpt__finite(v); }
-FOVPT__PRIV int fovpt__bad_f(float v) { return !fovpt__finite(v); }
+FOVPT__PRIV int fovpt__pos(float v) { return v > 0.0f && fov__finite(v); }
+FOVPT__PRIV int fovpt__bad_f(float v) { return !fov__finite(v); }
 
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out)
 {
@@ -1387,9 +1526,9 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     if (!cam) return FOV_ERR_NULL;
     if (cam->width == 0 || cam->height == 0) return FOV_ERR_INVALID_ARG;
     if (cam->width > FOVPT_MAX_DIM || cam->height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
-    if (!fovpt__finite3(cam->pos) || !fovpt__finite3(cam->target) || !fovpt__finite3(cam->up) ||
-        !fovpt__finite(cam->fov_y_deg) || !fovpt__finite(cam->tan_left) || !fovpt__finite(cam->tan_right) ||
-        !fovpt__finite(cam->tan_bottom) || !fovpt__finite(cam->tan_top))
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up) ||
+        !fov__finite(cam->fov_y_deg) || !fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
+        !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top))
         return FOV_ERR_NOT_FINITE;
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
@@ -1397,15 +1536,15 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     /* a view vector of 1e-25 or 3e38 and an up hint of 1e-30 or 3e38 are valid: the
        normalisation prescales; a view vector that overflows (target - pos beyond FLT_MAX)
        or is zero is degenerate */
-    lf = fovpt__normalize(f);
+    lf = fov__normalize(f);
     if (!(lf > 0.0f)) return FOV_ERR_DEGENERATE;
-    fovpt__normalize(u);
-    fovpt__cross(f, u, r);
-    lr = fovpt__normalize(r);
+    fov__normalize(u);
+    fov__cross(f, u, r);
+    lr = fov__normalize(r);
     if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE;
-    fovpt__cross(r, f, u);
-    asym = fovpt__absf(cam->tan_left) > 0.0f || fovpt__absf(cam->tan_right) > 0.0f ||
-           fovpt__absf(cam->tan_bottom) > 0.0f || fovpt__absf(cam->tan_top) > 0.0f;
+    fov__cross(r, f, u);
+    asym = fov__absf(cam->tan_left) > 0.0f || fov__absf(cam->tan_right) > 0.0f ||
+           fov__absf(cam->tan_bottom) > 0.0f || fov__absf(cam->tan_top) > 0.0f;
     if (asym) {
         if (!(cam->tan_left + cam->tan_right > 1e-6f) || !(cam->tan_bottom + cam->tan_top > 1e-6f) ||
             cam->tan_left > 1e6f || cam->tan_right > 1e6f || cam->tan_top > 1e6f || cam->tan_bottom > 1e6f)
@@ -1416,7 +1555,7 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
         float ty, tx;
         fy = cam->fov_y_deg > 0.0f || cam->fov_y_deg < 0.0f ? cam->fov_y_deg : 60.0f;
         if (!(fy > 0.0f && fy < 180.0f)) return FOV_ERR_INVALID_ARG;
-        ty = FOVPT__TAN(0.5f * fy * FOVPT__DEG);
+        ty = FOV__TAN(0.5f * fy * FOV__DEG);
         tx = ty * (float)cam->width / (float)cam->height;
         tan4[0] = -tx; tan4[1] = tx; tan4[2] = ty; tan4[3] = -ty;
     }
@@ -1434,7 +1573,7 @@ FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float
     dir[0] = f[0] + sx * r[0] + sy * u[0];
     dir[1] = f[1] + sx * r[1] + sy * u[1];
     dir[2] = f[2] + sx * r[2] + sy * u[2];
-    return fovpt__normalize(dir);
+    return fov__normalize(dir);
 }
 
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
@@ -1442,7 +1581,7 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
     float r[3], u[3], f[3], t4[4];
     fov_result e;
     if (!cam || !org || !dir) return FOV_ERR_NULL;
-    if (!fovpt__finite(x) || !fovpt__finite(y)) return FOV_ERR_NOT_FINITE;
+    if (!fov__finite(x) || !fov__finite(y)) return FOV_ERR_NOT_FINITE;
     e = fovpt__camera_setup(cam, r, u, f, t4);
     if (e != FOV_OK) return e;
     if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f)) return FOV_ERR_INVALID_ARG;
@@ -1455,19 +1594,19 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
     float r[3], u[3], f[3], t4[4], d[3], z, sx, sy, x, y;
     fov_result e;
     if (!cam || !p || !gaze) return FOV_ERR_NULL;
-    if (!fovpt__finite3(p)) return FOV_ERR_NOT_FINITE;
+    if (!fov__finite3(p)) return FOV_ERR_NOT_FINITE;
     e = fovpt__camera_setup(cam, r, u, f, t4);
     if (e != FOV_OK) return e;
     /* invert fovpt__primary: direction f + sx r + sy u through (x, y) */
     fovpt__sub3(d, p, cam->pos);
-    fovpt__prescale(d); /* a point 1e30 away: the ratios below do not depend on |d| */
-    z = fovpt__dot(d, f);
-    if (!(z > 1e-6f * fovpt__len(d))) return FOV_ERR_INVALID_ARG;
-    sx = fovpt__dot(d, r) / z;
-    sy = fovpt__dot(d, u) / z;
+    fov__prescale(d); /* a point 1e30 away: the ratios below do not depend on |d| */
+    z = fov__dot(d, f);
+    if (!(z > 1e-6f * fov__len(d))) return FOV_ERR_INVALID_ARG;
+    sx = fov__dot(d, r) / z;
+    sy = fov__dot(d, u) / z;
     x = (float)cam->width * ((sx - t4[0]) / (t4[1] - t4[0]));
     y = (float)cam->height * ((sy - t4[2]) / (t4[3] - t4[2]));
-    if (!(fovpt__absf(x) <= 16777216.0f) || !(fovpt__absf(y) <= 16777216.0f)) return FOV_ERR_INVALID_ARG;
+    if (!(fov__absf(x) <= 16777216.0f) || !(fov__absf(y) <= 16777216.0f)) return FOV_ERR_INVALID_ARG;
     gaze->x = x;
     gaze->y = y;
     return FOV_OK;
@@ -1479,7 +1618,7 @@ FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovp
     fov_result e;
     int k, i;
     if (!head || !eyes) return FOV_ERR_NULL;
-    if (!fovpt__finite(ipd)) return FOV_ERR_NOT_FINITE;
+    if (!fov__finite(ipd)) return FOV_ERR_NOT_FINITE;
     if (!(ipd >= 0.0f)) return FOV_ERR_INVALID_ARG;
     e = fovpt__camera_setup(head, r, u, f, t4);
     if (e != FOV_OK) return e;
@@ -1490,7 +1629,7 @@ FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovp
             eyes[i].pos[k] = head->pos[k] + s * r[k];
             eyes[i].target[k] = head->target[k] + s * r[k];
         }
-        if (!fovpt__finite3(eyes[i].pos) || !fovpt__finite3(eyes[i].target)) return FOV_ERR_NOT_FINITE;
+        if (!fov__finite3(eyes[i].pos) || !fov__finite3(eyes[i].target)) return FOV_ERR_NOT_FINITE;
     }
     return FOV_OK;
 }
@@ -1585,25 +1724,25 @@ typedef struct fovpt__layout {
    the squared length would leave [1e-30, 1e30]); +inf only when |v| > FLT_MAX. */
 FOVPT__PRIV float fovpt__len_robust(const float v[3])
 {
-    float l2 = fovpt__dot(v, v), m, w[3];
-    if (l2 >= 1e-30f && l2 <= 1e30f) return FOVPT__SQRT(l2);
-    m = fovpt__maxf(fovpt__absf(v[0]), fovpt__maxf(fovpt__absf(v[1]), fovpt__absf(v[2])));
-    if (!(m > 0.0f) || !fovpt__finite(m)) return m > 0.0f ? m : 0.0f;
+    float l2 = fov__dot(v, v), m, w[3];
+    if (l2 >= 1e-30f && l2 <= 1e30f) return FOV__SQRT(l2);
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (!(m > 0.0f) || !fov__finite(m)) return m > 0.0f ? m : 0.0f;
     fovpt__set3(w, v[0] / m, v[1] / m, v[2] / m);
-    return m * fovpt__len(w);
+    return m * fov__len(w);
 }
 FOVPT__PRIV int fovpt__tri_area2(const float *v0, const float *v1, const float *v2, float *area2)
 {
     float e1[3], e2[3], c[3], l1, l2, L;
     fovpt__sub3(e1, v1, v0);
     fovpt__sub3(e2, v2, v0);
-    fovpt__cross(e1, e2, c);
+    fov__cross(e1, e2, c);
     *area2 = fovpt__len_robust(c);
-    if (!(*area2 > 0.0f) || !fovpt__finite(*area2) || !fovpt__finite3(c)) return 0;
+    if (!(*area2 > 0.0f) || !fov__finite(*area2) || !fov__finite3(c)) return 0;
     /* zero area, or below float resolution of the edge lengths: |e1 x e2| > 1e-12 (|e1|^2 +
        |e2|^2), compared in units of the longer edge so that no square under- or overflows */
-    l1 = fovpt__len_robust(e1); l2 = fovpt__len_robust(e2); L = fovpt__maxf(l1, l2);
-    if (!fovpt__finite(L)) return 0;
+    l1 = fovpt__len_robust(e1); l2 = fovpt__len_robust(e2); L = fov__maxf(l1, l2);
+    if (!fov__finite(L)) return 0;
     return (*area2 / L) / L > 1e-12f * ((l1 / L) * (l1 / L) + (l2 / L) * (l2 / L));
 }
 
@@ -1624,7 +1763,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     if (d->num_shapes && !d->shapes) FOVPT__FAIL(lg, FOV_ERR_NULL, "shapes NULL with num_shapes > 0");
     if (d->num_meshes && !d->meshes) FOVPT__FAIL(lg, FOV_ERR_NULL, "meshes NULL with num_meshes > 0");
     if (d->num_shapes > FOVPT_MAX_PRIMS || d->num_meshes > FOVPT_MAX_PRIMS) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "counts above FOVPT_MAX_PRIMS");
-    if (!fovpt__finite3(d->background)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "background");
+    if (!fov__finite3(d->background)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "background");
     if (d->background[0] < 0.0f || d->background[1] < 0.0f || d->background[2] < 0.0f)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "background < 0");
     if (d->bvh_bins == 1 || d->bvh_bins > FOVPT__BINS_MAX) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_bins: 2 .. 32");
@@ -1635,8 +1774,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     for (i = 0; i < d->num_materials; ++i) {
         const fovpt_material *m = &d->materials[i];
         if (m->type >= (uint32_t)_FOVPT_MAT_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "material type");
-        if (!fovpt__finite3(m->albedo) || !fovpt__finite3(m->specular) || !fovpt__finite3(m->emission) ||
-            !fovpt__finite(m->exponent) || !fovpt__finite(m->ior))
+        if (!fov__finite3(m->albedo) || !fov__finite3(m->specular) || !fov__finite3(m->emission) ||
+            !fov__finite(m->exponent) || !fov__finite(m->ior))
             FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "material value");
         for (k = 0; k < 3; ++k) {
             if (!(m->albedo[k] >= 0.0f && m->albedo[k] <= 1.0f) || !(m->specular[k] >= 0.0f && m->specular[k] <= 1.0f))
@@ -1651,22 +1790,22 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
         int em;
         if (s->material >= d->num_materials) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "shape material index out of range");
         em = fovpt__emissive(&d->materials[s->material]);
-        if (!fovpt__finite3(s->p) || !fovpt__finite3(s->u) || !fovpt__finite3(s->v) || !fovpt__finite(s->r))
+        if (!fov__finite3(s->p) || !fov__finite3(s->u) || !fov__finite3(s->v) || !fov__finite(s->r))
             FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "shape value");
         switch (s->type) {
         case FOVPT_SHAPE_SPHERE:
             if (!(s->r > 0.0f)) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "sphere radius <= 0");
-            if (!fovpt__finite(s->r * s->r * 16.0f)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "sphere radius too large");
+            if (!fov__finite(s->r * s->r * 16.0f)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "sphere radius too large");
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
         case FOVPT_SHAPE_PLANE:
-            if (!(fovpt__absf(s->u[0]) > 0.0f || fovpt__absf(s->u[1]) > 0.0f || fovpt__absf(s->u[2]) > 0.0f))
+            if (!(fov__absf(s->u[0]) > 0.0f || fov__absf(s->u[1]) > 0.0f || fov__absf(s->u[2]) > 0.0f))
                 FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "plane normal zero");
             break;
         case FOVPT_SHAPE_QUAD: {
             float c[3];
-            fovpt__cross(s->u, s->v, c);
-            if (!(fovpt__len(c) > 1e-12f * (fovpt__dot(s->u, s->u) + fovpt__dot(s->v, s->v))) || !fovpt__finite(fovpt__len(c)))
+            fov__cross(s->u, s->v, c);
+            if (!(fov__len(c) > 1e-12f * (fov__dot(s->u, s->u) + fov__dot(s->v, s->v))) || !fov__finite(fov__len(c)))
                 FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, em ? "zero-area light (quad)" : "quad of zero area");
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
@@ -1695,7 +1834,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             FOVPT__FAIL(lg, FOV_ERR_LIMIT, "mesh counts above FOVPT_MAX_PRIMS");
         if (!m->indices && nv3 > m->num_vertices) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "non-indexed mesh: fewer than 3 vertices per triangle");
         for (k = 0; k < m->num_vertices; ++k)
-            if (!fovpt__finite3(m->positions + 3u * (size_t)k)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "mesh vertex NaN or infinite");
+            if (!fov__finite3(m->positions + 3u * (size_t)k)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "mesh vertex NaN or infinite");
         em = fovpt__emissive(&d->materials[m->material]);
         for (k = 0; k < m->num_triangles; ++k) {
             uint32_t i0, i1, i2;
@@ -1730,7 +1869,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     /* sizes in uint64_t, checked against SIZE_MAX */
     sz = 0;
     L->prims = 0;
-    sz += (uint64_t)fovpt__align(sizeof(fovpt__prim)) * 0u + (uint64_t)sizeof(fovpt__prim) * n_prims;
+    sz += (uint64_t)fov__align(sizeof(fovpt__prim)) * 0u + (uint64_t)sizeof(fovpt__prim) * n_prims;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
@@ -1784,20 +1923,20 @@ FOVPT__PRIV void fovpt__prim_box(const fovpt__prim *p, float lo[3], float hi[3],
         case FOVPT_SHAPE_SPHERE: lo[k] = p->a[k] - p->r; hi[k] = p->a[k] + p->r; break;
         case FOVPT_SHAPE_QUAD: {
             float x0 = p->a[k], x1 = p->a[k] + p->b[k], x2 = p->a[k] + p->c[k], x3 = x1 + p->c[k];
-            lo[k] = fovpt__minf(fovpt__minf(x0, x1), fovpt__minf(x2, x3));
-            hi[k] = fovpt__maxf(fovpt__maxf(x0, x1), fovpt__maxf(x2, x3));
+            lo[k] = fov__minf(fov__minf(x0, x1), fov__minf(x2, x3));
+            hi[k] = fov__maxf(fov__maxf(x0, x1), fov__maxf(x2, x3));
             break;
         }
         case FOVPT_SHAPE_BOX: lo[k] = p->a[k]; hi[k] = p->b[k]; break;
         default: { /* triangle */
             float x0 = p->a[k], x1 = p->a[k] + p->b[k], x2 = p->a[k] + p->c[k];
-            lo[k] = fovpt__minf(x0, fovpt__minf(x1, x2));
-            hi[k] = fovpt__maxf(x0, fovpt__maxf(x1, x2));
+            lo[k] = fov__minf(x0, fov__minf(x1, x2));
+            hi[k] = fov__maxf(x0, fov__maxf(x1, x2));
             break;
         }
         }
         if (p->type == FOVPT_SHAPE_BOX || !padded) continue;
-        pad = fovpt__maxf(fovpt__absf(lo[k]), fovpt__absf(hi[k])) * FOVPT__BOX_PAD;
+        pad = fov__maxf(fov__absf(lo[k]), fov__absf(hi[k])) * FOVPT__BOX_PAD;
         lo[k] -= pad;
         hi[k] += pad;
     }
@@ -1889,8 +2028,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         for (i = w.start; i < w.start + w.count; ++i) {
             const float *q = pb + 9u * (size_t)order[i];
             for (k = 0; k < 3; ++k) {
-                nd->b[k] = fovpt__minf(nd->b[k], q[k]); nd->b[3 + k] = fovpt__maxf(nd->b[3 + k], q[3 + k]);
-                clo[k] = fovpt__minf(clo[k], q[6 + k]); chi[k] = fovpt__maxf(chi[k], q[6 + k]);
+                nd->b[k] = fov__minf(nd->b[k], q[k]); nd->b[3 + k] = fov__maxf(nd->b[3 + k], q[3 + k]);
+                clo[k] = fov__minf(clo[k], q[6 + k]); chi[k] = fov__maxf(chi[k], q[6 + k]);
             }
         }
         if (w.depth > max_depth) max_depth = w.depth;
@@ -1916,14 +2055,14 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
                     if (b >= bins) b = bins - 1u;
                     bin[b].n++;
                     for (k = 0; k < 3; ++k) {
-                        bin[b].lo[k] = fovpt__minf(bin[b].lo[k], q[k]); bin[b].hi[k] = fovpt__maxf(bin[b].hi[k], q[3 + k]);
+                        bin[b].lo[k] = fov__minf(bin[b].lo[k], q[k]); bin[b].hi[k] = fov__maxf(bin[b].hi[k], q[3 + k]);
                     }
                 }
                 /* right sweep: areas and counts of bins b .. bins-1 */
                 for (k = 0; k < 3; ++k) { rlo[k] = FLT_MAX; rhi[k] = -FLT_MAX; }
                 cnt = 0;
                 for (b = bins - 1u; b > 0; --b) {
-                    for (k = 0; k < 3; ++k) { rlo[k] = fovpt__minf(rlo[k], bin[b].lo[k]); rhi[k] = fovpt__maxf(rhi[k], bin[b].hi[k]); }
+                    for (k = 0; k < 3; ++k) { rlo[k] = fov__minf(rlo[k], bin[b].lo[k]); rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]); }
                     cnt += bin[b].n;
                     rn[b] = cnt;
                     ra[b] = fovpt__half_area(rlo, rhi);
@@ -1932,7 +2071,7 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
                 cnt = 0;
                 for (b = 0; b + 1u < bins; ++b) { /* split after bin b */
                     float cost;
-                    for (k = 0; k < 3; ++k) { rlo[k] = fovpt__minf(rlo[k], bin[b].lo[k]); rhi[k] = fovpt__maxf(rhi[k], bin[b].hi[k]); }
+                    for (k = 0; k < 3; ++k) { rlo[k] = fov__minf(rlo[k], bin[b].lo[k]); rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]); }
                     cnt += bin[b].n;
                     if (cnt == 0 || rn[b + 1u] == 0) continue;
                     cost = fovpt__half_area(rlo, rhi) * (float)cnt + ra[b + 1u] * (float)rn[b + 1u];
@@ -2047,7 +2186,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p = &prims[np++];
         FOV_MEMSET(p, 0, sizeof *p);
         p->type = FOVPT_SHAPE_PLANE; p->material = sh->material; p->id = i;
-        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fovpt__normalize(p->n);
+        fovpt__copy3(p->a, sh->p); fovpt__copy3(p->n, sh->u); fov__normalize(p->n);
     }
     FOV_ASSERT(np == L.n_prims && nb == L.n_bounded);
     /* lights: sampleable emitters, picked by area * mean emission */
@@ -2056,8 +2195,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         const fovpt_material *m = &d->materials[p->material];
         float a;
         if (!fovpt__emissive(m) || p->type == FOVPT_SHAPE_BOX) continue;
-        if (p->type == FOVPT_SHAPE_SPHERE) a = 4.0f * FOVPT__PI * p->r * p->r;
-        else if (p->type == FOVPT_SHAPE_QUAD) { float c[3]; fovpt__cross(p->b, p->c, c); a = fovpt__len(c); }
+        if (p->type == FOVPT_SHAPE_SPHERE) a = 4.0f * FOV__PI * p->r * p->r;
+        else if (p->type == FOVPT_SHAPE_QUAD) { float c[3]; fov__cross(p->b, p->c, c); a = fov__len(c); }
         else a = p->r;
         lights[nl] = i;
         area[nl] = a;
@@ -2066,7 +2205,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p->light = ++nl;
     }
     if (nl > 0) {
-        if (!(total > 0.0f) || !fovpt__finite(total)) FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "total emitted power not finite");
+        if (!(total > 0.0f) || !fov__finite(total)) FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "total emitted power not finite");
         for (i = 0; i < nl; ++i) cdf[i] /= total;
         cdf[nl - 1u] = 1.0f;
     }
@@ -2088,7 +2227,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     for (i = 0; i < nb; ++i) {
         float lo[3], hi[3];
         fovpt__prim_box(&prims[i], lo, hi, 0); /* the public bounds: exact */
-        for (k = 0; k < 3; ++k) { s->bounds_lo[k] = fovpt__minf(s->bounds_lo[k], lo[k]); s->bounds_hi[k] = fovpt__maxf(s->bounds_hi[k], hi[k]); }
+        for (k = 0; k < 3; ++k) { s->bounds_lo[k] = fov__minf(s->bounds_lo[k], lo[k]); s->bounds_hi[k] = fov__maxf(s->bounds_hi[k], hi[k]); }
     }
     {
         uint32_t minp = d->bvh_min_prims ? d->bvh_min_prims : 8u;
@@ -2157,34 +2296,34 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
         /* Moller-Trumbore with the division deferred: u and v scaled by |det| are tested
            against |det| (sign flips are exact), t = dot(e2, q) / det only for a hit inside */
         float pv[3], s[3], q[3], det, ad, sg, u, v, t;
-        fovpt__cross(r->d, p->c, pv);
-        det = fovpt__dot(p->b, pv);
-        if (!(fovpt__absf(det) > 1e-30f)) return tmax;
+        fov__cross(r->d, p->c, pv);
+        det = fov__dot(p->b, pv);
+        if (!(fov__absf(det) > 1e-30f)) return tmax;
         sg = det < 0.0f ? -1.0f : 1.0f;
         ad = det * sg;
         fovpt__sub3(s, r->o, p->a);
-        u = fovpt__dot(s, pv) * sg;
+        u = fov__dot(s, pv) * sg;
         if (!(u >= 0.0f && u <= ad)) return tmax;
-        fovpt__cross(s, p->b, q);
-        v = fovpt__dot(r->d, q) * sg;
+        fov__cross(s, p->b, q);
+        v = fov__dot(r->d, q) * sg;
         if (!(v >= 0.0f && u + v <= ad)) return tmax;
-        t = fovpt__dot(p->c, q) / det;
+        t = fov__dot(p->c, q) / det;
         return (t > tmin && t < tmax) ? t : tmax;
     }
     case FOVPT_SHAPE_SPHERE: {
         /* |o + t d - c|^2 = r^2 with the numerically stable form of the roots */
         float oc[3], a, b, c, disc, sq, t0, t1, qq;
         fovpt__sub3(oc, r->o, p->a);
-        a = fovpt__dot(r->d, r->d);
-        b = fovpt__dot(oc, r->d);
+        a = fov__dot(r->d, r->d);
+        b = fov__dot(oc, r->d);
         {   /* discriminant via the closest-approach distance (Hearn-Baker, Ray Tracing Gems ch. 7) */
             float l[3];
             fovpt__madd3(l, oc, -b / a, r->d);
-            disc = a * (p->r * p->r - fovpt__dot(l, l));
+            disc = a * (p->r * p->r - fov__dot(l, l));
         }
         if (!(disc >= 0.0f)) return tmax;
-        c = fovpt__dot(oc, oc) - p->r * p->r;
-        sq = FOVPT__SQRT(disc);
+        c = fov__dot(oc, oc) - p->r * p->r;
+        sq = FOV__SQRT(disc);
         qq = b > 0.0f ? -(b + sq) : -(b - sq);
         t0 = c / qq;
         t1 = qq / a;
@@ -2194,15 +2333,15 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
         return tmax;
     }
     case FOVPT_SHAPE_QUAD: {
-        float dn = fovpt__dot(r->d, p->n), t, x[3], w[3], uu, uv, vv, wu, wv, det, s, tt;
-        if (!(fovpt__absf(dn) > 1e-30f)) return tmax;
+        float dn = fov__dot(r->d, p->n), t, x[3], w[3], uu, uv, vv, wu, wv, det, s, tt;
+        if (!(fov__absf(dn) > 1e-30f)) return tmax;
         fovpt__sub3(x, p->a, r->o);
-        t = fovpt__dot(x, p->n) / dn;
+        t = fov__dot(x, p->n) / dn;
         if (!(t > tmin && t < tmax)) return tmax;
         fovpt__madd3(w, r->o, t, r->d);
         fovpt__sub3(w, w, p->a);
-        uu = fovpt__dot(p->b, p->b); uv = fovpt__dot(p->b, p->c); vv = fovpt__dot(p->c, p->c);
-        wu = fovpt__dot(w, p->b); wv = fovpt__dot(w, p->c);
+        uu = fov__dot(p->b, p->b); uv = fov__dot(p->b, p->c); vv = fov__dot(p->c, p->c);
+        wu = fov__dot(w, p->b); wv = fov__dot(w, p->c);
         det = uu * vv - uv * uv;
         s = (wu * vv - wv * uv) / det;
         tt = (wv * uu - wu * uv) / det;
@@ -2225,10 +2364,10 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
         return tmax;
     }
     case FOVPT_SHAPE_PLANE: {
-        float dn = fovpt__dot(r->d, p->n), x[3], t;
-        if (!(fovpt__absf(dn) > 1e-30f)) return tmax;
+        float dn = fov__dot(r->d, p->n), x[3], t;
+        if (!(fov__absf(dn) > 1e-30f)) return tmax;
         fovpt__sub3(x, p->a, r->o);
-        t = fovpt__dot(x, p->n) / dn;
+        t = fov__dot(x, p->n) / dn;
         return (t > tmin && t < tmax) ? t : tmax;
     }
     default: return tmax;
@@ -2241,15 +2380,15 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
    Returns the factor applied to t (1 for ordinary directions, bit for bit as before). */
 FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside [2^-32, 2^32] */
 {
-    float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2])));
+    float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2])));
     return !(m >= 2.3283064365386963e-10f && m <= 4294967296.0f);
 }
 FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
 {
-    float m = fovpt__maxf(fovpt__absf(dir[0]), fovpt__maxf(fovpt__absf(dir[1]), fovpt__absf(dir[2]))), sc = 1.0f;
+    float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2]))), sc = 1.0f;
     int i;
     fovpt__copy3(d, dir);
-    if (!(m > 0.0f) || !fovpt__finite(m) || (m >= 2.3283064365386963e-10f && m <= 4294967296.0f)) return 1.0f;
+    if (!(m > 0.0f) || !fov__finite(m) || (m >= 2.3283064365386963e-10f && m <= 4294967296.0f)) return 1.0f;
     for (i = 0; i < 16 && m >= 65536.0f; ++i) { m *= 1.52587890625e-05f; sc *= 65536.0f; }  /* 2^-16 */
     for (i = 0; i < 16 && m < 1.52587890625e-05f; ++i) { m *= 65536.0f; sc *= 1.52587890625e-05f; }
     d[0] = dir[0] / sc; d[1] = dir[1] / sc; d[2] = dir[2] / sc;
@@ -2259,7 +2398,7 @@ FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
 FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
 {
     uint32_t k;
-    if (!fovpt__finite3(org) || !fovpt__finite3(dir) || !(fovpt__dot(dir, dir) > 0.0f)) return 0;
+    if (!fov__finite3(org) || !fov__finite3(dir) || !(fov__dot(dir, dir) > 0.0f)) return 0;
     for (k = 0; k < 3; ++k) {
         float d = dir[k];
         r->o[k] = org[k];
@@ -2330,9 +2469,9 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                            same floats as fovpt__isect, so the same hits as brute force */
                         const float *v0 = s->leaf_tris + 9u * (size_t)i, *e1 = v0 + 3, *e2 = v0 + 6;
                         float pv[3], sv[3], q[3], det, ad, sg, u, v;
-                        fovpt__cross(r->d, e2, pv);
-                        det = fovpt__dot(e1, pv);
-                        if (!(fovpt__absf(det) > 1e-30f)) {
+                        fov__cross(r->d, e2, pv);
+                        det = fov__dot(e1, pv);
+                        if (!(fov__absf(det) > 1e-30f)) {
                             /* parallel, degenerate, or not a triangle (stored as zeros) */
                             const fovpt__prim *p = &prims[s->order[i]];
                             if (p->type == FOVPT__TRI) continue;
@@ -2342,12 +2481,12 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                             sg = det < 0.0f ? -1.0f : 1.0f;
                             ad = det * sg;
                             fovpt__sub3(sv, r->o, v0);
-                            u = fovpt__dot(sv, pv) * sg;
+                            u = fov__dot(sv, pv) * sg;
                             if (!(u >= 0.0f && u <= ad)) continue;
-                            fovpt__cross(sv, e1, q);
-                            v = fovpt__dot(r->d, q) * sg;
+                            fov__cross(sv, e1, q);
+                            v = fov__dot(r->d, q) * sg;
                             if (!(v >= 0.0f && u + v <= ad)) continue;
-                            t = fovpt__dot(e2, q) / det;
+                            t = fov__dot(e2, q) / det;
                             if (!(t > tmin && t < *tmax)) continue;
                         }
                         *tmax = t; best = s->order[i];
@@ -2443,7 +2582,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     int user = 0;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
-    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fovpt__ray_init(&r, org, dir)) return 0;
         slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
@@ -2461,7 +2600,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         float tu = t;
         un[0] = un[1] = un[2] = 0.0f;
         if (s->user_hit(org, dir, tmin, t, &tu, un, &umat, s->user) && tu > tmin && tu < t &&
-            umat < s->num_materials && fovpt__normalize(un) > 0.0f) {
+            umat < s->num_materials && fov__normalize(un) > 0.0f) {
             t = tu;
             user = 1;
         }
@@ -2482,11 +2621,11 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         h->slot = slot;
         if (p->type == FOVPT_SHAPE_SPHERE) {
             fovpt__sub3(h->n, h->p, p->a);
-            if (!(fovpt__normalize(h->n) > 0.0f)) {
+            if (!(fov__normalize(h->n) > 0.0f)) {
                 /* the hit point rounded onto the centre (a radius below the coordinates'
                    resolution): the normal facing the ray */
                 fovpt__set3(h->n, -dir[0], -dir[1], -dir[2]);
-                fovpt__normalize(h->n);
+                fov__normalize(h->n);
             }
         } else if (p->type == FOVPT_SHAPE_BOX) {
             /* the face: the axis where the hit is relatively closest to a slab */
@@ -2494,8 +2633,8 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
             uint32_t k, ax = 0;
             float sg = 1.0f;
             for (k = 0; k < 3; ++k) {
-                float ext = fovpt__maxf(p->b[k] - p->a[k], 1e-30f);
-                float d0 = fovpt__absf(h->p[k] - p->a[k]) / ext, d1 = fovpt__absf(h->p[k] - p->b[k]) / ext;
+                float ext = fov__maxf(p->b[k] - p->a[k], 1e-30f);
+                float d0 = fov__absf(h->p[k] - p->a[k]) / ext, d1 = fov__absf(h->p[k] - p->b[k]) / ext;
                 if (d0 < best) { best = d0; ax = k; sg = -1.0f; }
                 if (d1 < best) { best = d1; ax = k; sg = 1.0f; }
             }
@@ -2523,7 +2662,7 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     fovpt__ray r;
     float t = tmax;
     if (!s || !org || !dir || !s->prims) return 0;
-    if (!fovpt__finite(tmin) || !(tmax > tmin)) return 0;
+    if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fovpt__ray_init(&r, org, dir)) return 0;
         if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
@@ -2590,12 +2729,12 @@ FOVPT__PRIV void fovpt__local(const float n[3], float x, float y, float z, float
 }
 FOVPT__PRIV void fovpt__cosine(const float n[3], float u1, float u2, float wi[3])
 {
-    float r = FOVPT__SQRT(u1), ph = 2.0f * FOVPT__PI * u2;
-    fovpt__local(n, r * FOVPT__COS(ph), r * FOVPT__SIN(ph), FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - u1)), wi);
+    float r = FOV__SQRT(u1), ph = 2.0f * FOV__PI * u2;
+    fovpt__local(n, r * FOV__COS(ph), r * FOV__SIN(ph), FOV__SQRT(fov__maxf(0.0f, 1.0f - u1)), wi);
 }
 FOVPT__PRIV void fovpt__reflect(const float n[3], const float wo[3], float wi[3])
 {
-    float c = 2.0f * fovpt__dot(n, wo);
+    float c = 2.0f * fov__dot(n, wo);
     wi[0] = c * n[0] - wo[0]; wi[1] = c * n[1] - wo[1]; wi[2] = c * n[2] - wo[2];
 }
 /* Phong lobe probabilities (seed 002 Eq. 3.9-3.12): pS = mean(ks) / (mean(ks) + mean(kd)). */
@@ -2608,28 +2747,28 @@ FOVPT__PRIV float fovpt__phong_ps(const fovpt_material *m)
 FOVPT__PRIV void fovpt__eval_smooth(const fovpt_material *m, const float ns[3], const float wo[3], const float wi[3],
                                     float fcos[3], float *pdf)
 {
-    float ci = fovpt__dot(ns, wi);
+    float ci = fov__dot(ns, wi);
     uint32_t k;
     fcos[0] = fcos[1] = fcos[2] = 0.0f;
     *pdf = 0.0f;
     if (!(ci > 0.0f)) return;
     if (m->type == FOVPT_MAT_LAMBERT) {
-        for (k = 0; k < 3; ++k) fcos[k] = m->albedo[k] * (ci / FOVPT__PI);
-        *pdf = ci / FOVPT__PI;
+        for (k = 0; k < 3; ++k) fcos[k] = m->albedo[k] * (ci / FOV__PI);
+        *pdf = ci / FOV__PI;
     } else {
         float wr[3], c, lobe = 0.0f, ps = fovpt__phong_ps(m), a = m->exponent;
         fovpt__reflect(ns, wo, wr);
-        c = fovpt__dot(wr, wi);
-        if (c > 0.0f) lobe = FOVPT__POW(c, a) * (1.0f / (2.0f * FOVPT__PI));
-        for (k = 0; k < 3; ++k) fcos[k] = (m->albedo[k] / FOVPT__PI + m->specular[k] * (a + 2.0f) * lobe) * ci;
-        *pdf = (1.0f - ps) * ci / FOVPT__PI + ps * (a + 1.0f) * lobe;
+        c = fov__dot(wr, wi);
+        if (c > 0.0f) lobe = FOV__POW(c, a) * (1.0f / (2.0f * FOV__PI));
+        for (k = 0; k < 3; ++k) fcos[k] = (m->albedo[k] / FOV__PI + m->specular[k] * (a + 2.0f) * lobe) * ci;
+        *pdf = (1.0f - ps) * ci / FOV__PI + ps * (a + 1.0f) * lobe;
     }
 }
 FOVPT__PRIV float fovpt__fresnel(float cosi, float n1, float n2, float *cost)
 {
     float eta = n1 / n2, s2 = eta * eta * (1.0f - cosi * cosi), ct, rs, rp;
     if (s2 >= 1.0f) { *cost = 0.0f; return 1.0f; } /* total internal reflection */
-    ct = FOVPT__SQRT(1.0f - s2);
+    ct = FOV__SQRT(1.0f - s2);
     *cost = ct;
     rs = (n1 * cosi - n2 * ct) / (n1 * cosi + n2 * ct);
     rp = (n2 * cosi - n1 * ct) / (n2 * cosi + n1 * ct);
@@ -2646,11 +2785,11 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
     *pdf = 0.0f;
     u0 = fovpt_rng_next(rng); u1 = fovpt_rng_next(rng); u2 = fovpt_rng_next(rng);
     fovpt__copy3(ns, n);
-    if (fovpt__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
+    if (fov__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
     switch (m->type) {
     case FOVPT_MAT_LAMBERT:
         fovpt__cosine(ns, u1, u2, wi);
-        *pdf = fovpt__dot(ns, wi) / FOVPT__PI;
+        *pdf = fov__dot(ns, wi) / FOV__PI;
         if (!(*pdf > 0.0f)) return 0;
         fovpt__copy3(weight, m->albedo);
         return 1;
@@ -2658,10 +2797,10 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
         float ps = fovpt__phong_ps(m), fcos[3];
         if (!(fovpt__mean3(m->specular) + fovpt__mean3(m->albedo) > 0.0f)) return 0;
         if (u0 < ps) { /* Phong lobe about the mirror direction: pdf (a+1)/(2 pi) cos^a */
-            float wr[3], ct = FOVPT__POW(u1, 1.0f / (m->exponent + 1.0f)), st, ph = 2.0f * FOVPT__PI * u2;
-            st = FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - ct * ct));
+            float wr[3], ct = FOV__POW(u1, 1.0f / (m->exponent + 1.0f)), st, ph = 2.0f * FOV__PI * u2;
+            st = FOV__SQRT(fov__maxf(0.0f, 1.0f - ct * ct));
             fovpt__reflect(ns, wo, wr);
-            fovpt__local(wr, st * FOVPT__COS(ph), st * FOVPT__SIN(ph), ct, wi);
+            fovpt__local(wr, st * FOV__COS(ph), st * FOV__SIN(ph), ct, wi);
         } else {
             fovpt__cosine(ns, u1, u2, wi);
         }
@@ -2675,7 +2814,7 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
         fovpt__copy3(weight, m->albedo);
         return 1;
     case FOVPT_MAT_DIELECTRIC: {
-        float ci = fovpt__dot(n, wo), nn[3], n1, n2, cost, F;
+        float ci = fov__dot(n, wo), nn[3], n1, n2, cost, F;
         int entering = ci > 0.0f;
         if (entering) { fovpt__copy3(nn, n); n1 = 1.0f; n2 = m->ior; }
         else { nn[0] = -n[0]; nn[1] = -n[1]; nn[2] = -n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci; }
@@ -2685,7 +2824,7 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
         } else {
             float eta = n1 / n2;
             for (k = 0; k < 3; ++k) wi[k] = -eta * wo[k] + (eta * ci - cost) * nn[k];
-            fovpt__normalize(wi);
+            fov__normalize(wi);
         }
         fovpt__copy3(weight, m->albedo);
         return 1;
@@ -2704,7 +2843,7 @@ FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const 
     if (!m || !n || !wo || !wi) return;
     if (m->type != FOVPT_MAT_LAMBERT && m->type != FOVPT_MAT_PHONG) return;
     fovpt__copy3(ns, n);
-    if (fovpt__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
+    if (fov__dot(ns, wo) < 0.0f) { ns[0] = -ns[0]; ns[1] = -ns[1]; ns[2] = -ns[2]; }
     fovpt__eval_smooth(m, ns, wo, wi, fcos, pdf);
 }
 
@@ -2725,15 +2864,15 @@ FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, f
     }
     p = (const fovpt__prim *)s->prims + s->lights[lo];
     if (p->type == FOVPT_SHAPE_SPHERE) {
-        float z = 1.0f - 2.0f * u1, r = FOVPT__SQRT(fovpt__maxf(0.0f, 1.0f - z * z)), ph = 2.0f * FOVPT__PI * u2;
-        fovpt__set3(ny, r * FOVPT__COS(ph), r * FOVPT__SIN(ph), z);
+        float z = 1.0f - 2.0f * u1, r = FOV__SQRT(fov__maxf(0.0f, 1.0f - z * z)), ph = 2.0f * FOV__PI * u2;
+        fovpt__set3(ny, r * FOV__COS(ph), r * FOV__SIN(ph), z);
         fovpt__madd3(y, p->a, p->r, ny);
     } else if (p->type == FOVPT_SHAPE_QUAD) {
         fovpt__madd3(y, p->a, u1, p->b);
         fovpt__madd3(y, y, u2, p->c);
         fovpt__copy3(ny, p->n);
     } else {
-        float su = FOVPT__SQRT(u1);
+        float su = FOV__SQRT(u1);
         fovpt__madd3(y, p->a, su * (1.0f - u2), p->b);
         fovpt__madd3(y, y, su * u2, p->c);
         fovpt__copy3(ny, p->n);
@@ -2742,13 +2881,13 @@ FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, f
 }
 FOVPT__PRIV float fovpt__eps_at(const float p[3])
 {
-    return FOVPT_RAY_EPS * (1.0f + fovpt__maxf(fovpt__absf(p[0]), fovpt__maxf(fovpt__absf(p[1]), fovpt__absf(p[2]))));
+    return FOVPT_RAY_EPS * (1.0f + fov__maxf(fov__absf(p[0]), fov__maxf(fov__absf(p[1]), fov__absf(p[2]))));
 }
 /* p moved off the surface (normal n) to the side of direction d */
 FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d[3], float o[3])
 {
     float e = fovpt__eps_at(p);
-    if (fovpt__dot(n, d) < 0.0f) e = -e;
+    if (fov__dot(n, d) < 0.0f) e = -e;
     fovpt__madd3(o, p, e, n);
 }
 
@@ -2763,7 +2902,7 @@ typedef struct fovpt__attr {
 } fovpt__attr;
 FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
 {
-    float sg = fovpt__dot(h->n, d) > 0.0f ? -1.0f : 1.0f;
+    float sg = fov__dot(h->n, d) > 0.0f ? -1.0f : 1.0f;
     *oid = h->prim;
     n[0] = sg * h->n[0]; n[1] = sg * h->n[1]; n[2] = sg * h->n[2];
 }
@@ -2777,7 +2916,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
     fovpt_hit h;
     fovpt__copy3(o, org);
     fovpt__copy3(d, dir);
-    fovpt__normalize(d);
+    fov__normalize(d);
     L[0] = L[1] = L[2] = 0.0f;
     for (bounce = 0;; ++bounce) {
         const fovpt_material *m;
@@ -2802,10 +2941,10 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                 if (p->light) { /* power heuristic against the light-sampling pdf */
                     float v[3], d2, cl, pl;
                     fovpt__sub3(v, h.p, prev_p);
-                    d2 = fovpt__dot(v, v);
-                    cl = fovpt__absf(fovpt__dot(h.n, v)) / FOVPT__SQRT(d2);
+                    d2 = fov__dot(v, v);
+                    cl = fov__absf(fov__dot(h.n, v)) / FOV__SQRT(d2);
                     pl = cl > 0.0f ? fovpt__light_pick_pdf(s, p->light - 1u) * d2 / (s->light_area[p->light - 1u] * cl) : FLT_MAX;
-                    w = fovpt__finite(pl) ? prev_pdf * prev_pdf / (prev_pdf * prev_pdf + pl * pl) : 0.0f;
+                    w = fov__finite(pl) ? prev_pdf * prev_pdf / (prev_pdf * prev_pdf + pl * pl) : 0.0f;
                 }
             }
             for (k = 0; k < 3; ++k) L[k] += beta[k] * m->emission[k] * w;
@@ -2817,12 +2956,12 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
             uint32_t li = fovpt__light_sample(s, rng, y, ny);
             const fovpt__prim *lp = (const fovpt__prim *)s->prims + s->lights[li];
             fovpt__sub3(v, y, h.p);
-            d2 = fovpt__dot(v, v);
-            dist = FOVPT__SQRT(d2);
+            d2 = fov__dot(v, v);
+            dist = FOV__SQRT(d2);
             if (dist > 0.0f) {
                 float vu[3];
                 vu[0] = v[0] / dist; vu[1] = v[1] / dist; vu[2] = v[2] / dist;
-                cl = fovpt__absf(fovpt__dot(ny, vu));
+                cl = fov__absf(fov__dot(ny, vu));
                 fovpt_bsdf_eval(m, h.n, wo, vu, fcos, &pb);
                 if (cl > 0.0f && (fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f)) {
                     float sv[3];
@@ -2833,7 +2972,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                         const fovpt_material *lm = &s->materials[lp->material];
                         float pl = fovpt__light_pick_pdf(s, li) * d2 / (s->light_area[li] * cl);
                         float w = pl * pl / (pl * pl + pb * pb);
-                        if (fovpt__finite(pl) && pl > 0.0f)
+                        if (fov__finite(pl) && pl > 0.0f)
                             for (k = 0; k < 3; ++k) L[k] += beta[k] * fcos[k] * lm->emission[k] * w / pl;
                     } else if (at) {
                         if (bounce == 0) at->psc++;
@@ -2849,7 +2988,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         fovpt__copy3(prev_p, h.p);
         if (!(fovpt__max3(beta) > 0.0f)) break; /* zero throughput (seed 002) */
         if (c->rr_start != FOVPT_RR_OFF && bounce + 1u >= c->rr_start) {
-            float q = fovpt__clampf(fovpt__max3(beta), 0.05f, 1.0f);
+            float q = fov__clampf(fovpt__max3(beta), 0.05f, 1.0f);
             if (fovpt_rng_next(rng) >= q) break;
             for (k = 0; k < 3; ++k) beta[k] /= q;
         }
@@ -2870,7 +3009,7 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
     L[0] = L[1] = L[2] = 0.0f;
     fovpt__copy3(stack[0].o, org);
     fovpt__copy3(stack[0].d, dir);
-    fovpt__normalize(stack[0].d);
+    fov__normalize(stack[0].d);
     stack[0].w[0] = stack[0].w[1] = stack[0].w[2] = 1.0f;
     stack[0].depth = 0;
     sp = 1;
@@ -2898,21 +3037,21 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
                 if (lp->type == FOVPT_SHAPE_SPHERE) {
                     float cx[3], dc;
                     fovpt__sub3(cx, h.p, lp->a);
-                    dc = fovpt__normalize(cx);
+                    dc = fov__normalize(cx);
                     if (!(dc > lp->r)) continue; /* inside the light */
                     fovpt__madd3(y, lp->a, lp->r, cx);
-                    g = FOVPT__PI * lp->r * lp->r / (dc * dc);
+                    g = FOV__PI * lp->r * lp->r / (dc * dc);
                 } else {
                     if (lp->type == FOVPT_SHAPE_QUAD) { fovpt__madd3(y, lp->a, 0.5f, lp->b); fovpt__madd3(y, y, 0.5f, lp->c); }
                     else { fovpt__madd3(y, lp->a, 1.0f / 3.0f, lp->b); fovpt__madd3(y, y, 1.0f / 3.0f, lp->c); }
                     g = -1.0f;
                 }
                 fovpt__sub3(v, y, h.p);
-                d2 = fovpt__dot(v, v);
-                dist = FOVPT__SQRT(d2);
+                d2 = fov__dot(v, v);
+                dist = FOV__SQRT(d2);
                 if (!(dist > 0.0f)) continue;
                 vu[0] = v[0] / dist; vu[1] = v[1] / dist; vu[2] = v[2] / dist;
-                if (g < 0.0f) g = s->light_area[li] * fovpt__absf(fovpt__dot(lp->n, vu)) / d2;
+                if (g < 0.0f) g = s->light_area[li] * fov__absf(fov__dot(lp->n, vu)) / d2;
                 fovpt_bsdf_eval(m, h.n, wo, vu, fcos, &pb);
                 if (!(fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f) || !(g > 0.0f)) continue;
                 fovpt__offset(h.p, h.n, vu, xo);
@@ -2937,7 +3076,7 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
             for (k = 0; k < 3; ++k) nb->w[k] = b.w[k] * m->albedo[k];
             nb->depth = b.depth + 1u;
         } else if (m->type == FOVPT_MAT_DIELECTRIC) {
-            float ci = fovpt__dot(h.n, wo), nn[3], n1, n2, cost, F;
+            float ci = fov__dot(h.n, wo), nn[3], n1, n2, cost, F;
             branch *nb;
             if (ci > 0.0f) { fovpt__copy3(nn, h.n); n1 = 1.0f; n2 = m->ior; }
             else { nn[0] = -h.n[0]; nn[1] = -h.n[1]; nn[2] = -h.n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci; }
@@ -2951,7 +3090,7 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
                 float eta = n1 / n2;
                 nb = &stack[sp++];
                 for (k = 0; k < 3; ++k) nb->d[k] = -eta * wo[k] + (eta * ci - cost) * nn[k];
-                fovpt__normalize(nb->d);
+                fov__normalize(nb->d);
                 fovpt__offset(h.p, h.n, nb->d, nb->o);
                 for (k = 0; k < 3; ++k) nb->w[k] = b.w[k] * m->albedo[k] * (1.0f - F);
                 nb->depth = b.depth + 1u;
@@ -2985,82 +3124,18 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (!s || !c || !org || !dir || !rng || !rgb) return FOV_ERR_NULL;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     if (!s->prims && !s->user_hit && s->num_prims) return FOV_ERR_INVALID_ARG;
-    if (!fovpt__finite3(org) || !fovpt__finite3(dir)) return FOV_ERR_NOT_FINITE;
-    if (!(fovpt__dot(dir, dir) > 0.0f)) return FOV_ERR_DEGENERATE;
+    if (!fov__finite3(org) || !fov__finite3(dir)) return FOV_ERR_NOT_FINITE;
+    if (!(fov__dot(dir, dir) > 0.0f)) return FOV_ERR_DEGENERATE;
     if (c->mode >= (uint32_t)_FOVPT_MODE_NUM || c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         return FOV_ERR_INVALID_ARG;
     if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
     else fovpt__path(s, c, org, dir, rng, rgb, st, at);
-    if (!fovpt__finite3(rgb)) {
+    if (!fov__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
     }
     return FOV_OK;
-}
-
-/* ---- eccentricity (the shared model, identical to fovsdf_ecc_*) ---------------------------- */
-FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
-                                    uint32_t width, uint32_t height, fov_gaze gaze)
-{
-    float f, v[3];
-    fov_display z;
-    if (!m) return FOV_ERR_NULL;
-    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
-    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
-    if (width > FOVPT_MAX_DIM || height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
-    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y) || !fovpt__finite(cam_fov_y_deg) ||
-        !fovpt__finite(d->fov_y_deg) || !fovpt__finite(d->pixel_pitch_mm) ||
-        !fovpt__finite(d->distance_mm) || !fovpt__finite(d->axis_dx) || !fovpt__finite(d->axis_dy))
-        return FOV_ERR_NOT_FINITE;
-    if (d->fov_y_deg > 0.0f) {
-        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVPT__TAN(0.5f * d->fov_y_deg * FOVPT__DEG);
-    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
-        f = d->distance_mm / d->pixel_pitch_mm;
-    } else if (d->fov_y_deg < 0.0f || !fovpt__is0(d->pixel_pitch_mm) || !fovpt__is0(d->distance_mm)) {
-        return FOV_ERR_INVALID_ARG;
-    } else {
-        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVPT__TAN(0.5f * cam_fov_y_deg * FOVPT__DEG);
-    }
-    if (!(f > 0.0f) || !fovpt__finite(f)) return FOV_ERR_DEGENERATE;
-    m->cx = 0.5f * (float)width + d->axis_dx;
-    m->cy = 0.5f * (float)height + d->axis_dy;
-    m->f_px = f;
-    m->gx = gaze.x;
-    m->gy = gaze.y;
-    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovpt__finite3(v)) return FOV_ERR_INVALID_ARG;
-    if (!fovpt__finite(fovpt__dot(v, v))) {
-        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
-           largest component first (any finite gaze works; the usual range is untouched) */
-        float s = fovpt__maxf(fovpt__maxf(fovpt__absf(v[0]), fovpt__absf(v[1])), v[2]);
-        v[0] /= s; v[1] /= s; v[2] /= s;
-    }
-    fovpt__normalize(v);
-    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
-    return FOV_OK;
-}
-
-FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y)
-{
-    float v[3], c[3], s, co;
-    if (!m) return 0.0f;
-    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
-    fovpt__cross(v, m->g, c);
-    s = fovpt__len(c);
-    co = fovpt__dot(v, m->g);
-    return FOVPT__ATAN2(s, co) * (180.0f / FOVPT__PI);
-}
-
-FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m)
-{
-    float rx, ry, r2, ppd;
-    if (!m) return 0.0f;
-    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVPT__DEG;
-    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
 }
 
 /* ---- context and rendering ------------------------------------------------------------------- */
@@ -3144,16 +3219,16 @@ FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, cons
 {
     float d[3], z, sx, sy, x, y;
     fovpt__sub3(d, p, v->pos);
-    z = fovpt__dot(d, v->fwd);
+    z = fov__dot(d, v->fwd);
     if (!(z > 0.0f)) return 0;
-    sx = fovpt__dot(d, v->right) / z;
-    sy = fovpt__dot(d, v->up) / z;
+    sx = fov__dot(d, v->right) / z;
+    sy = fov__dot(d, v->up) / z;
     x = (sx - v->tan4[0]) / (v->tan4[1] - v->tan4[0]) * (float)W;
     y = (sy - v->tan4[2]) / (v->tan4[3] - v->tan4[2]) * (float)H;
     if (!(x >= 0.0f && x < (float)W && y >= 0.0f && y < (float)H)) return 0;
     *px = (uint32_t)x;
     *py = (uint32_t)y;
-    *dist = fovpt__len(d);
+    *dist = fov__len(d);
     return 1;
 }
 
@@ -3171,18 +3246,18 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
     if (!given) {
         /* the camera frustum: f = H / (ty0 - ty1); the axis at the image point of tangent 0 */
         float fpx = (float)cam->height / (ctx->ty0 - ctx->ty1);
-        d.fov_y_deg = 2.0f * FOVPT__ATAN2(0.5f * (float)cam->height, fpx) / FOVPT__DEG;
+        d.fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, fpx) / FOV__DEG;
         d.axis_dx += -ctx->tx0 * fpx - 0.5f * (float)cam->width;
         d.axis_dy += ctx->ty0 * fpx - 0.5f * (float)cam->height;
     }
     e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
     if (e != FOV_OK) return e;
     if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
-        float gxf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fovpt__clampf(FOVPT__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
+        float gxf = fov__clampf(FOV__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fov__clampf(FOV__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
         int32_t gx = (int32_t)gxf, gy = (int32_t)gyf; /* 32-bit: no 64-bit division helpers on MCUs */
-        float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOVPT__DEG);
+        float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOV__DEG);
         if (ctx->cfg.method == FOVPT_METHOD_ZONES) /* overlap_px at the gaze, in degrees */
-            L->blend_deg = ctx->cfg.zones.overlap_px / fovpt__maxf(fovpt_ecc_ppd(&ctx->ecc), 1e-6f);
+            L->blend_deg = ctx->cfg.zones.overlap_px / fov__maxf(fovpt_ecc_ppd(&ctx->ecc), 1e-6f);
         for (n = 0; n < L->count; ++n) {
             int32_t d_ = (int32_t)L->layer[n].stride, ox = 0, oy = 0;
             /* the filter's reach: 2 lattice cells (Catmull-Rom) or a (Lanczos), diagonally */
@@ -3204,7 +3279,7 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
             if (n == 0) tr = r0 > 0.0f ? r0 + apron : FLT_MAX;
             else {
                 tr = L->layer[n].radius_deg + 0.5f * L->blend_deg + apron;
-                if (r0 > 0.0f) tr = fovpt__minf(tr, r0 + apron);
+                if (r0 > 0.0f) tr = fov__minf(tr, r0 + apron);
             }
             ctx->layer_trace_deg[n] = tr;
         }
@@ -3227,7 +3302,7 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     FOV_MEMSET(ctx, 0, sizeof *ctx);
     e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
-    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y)) FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "gaze");
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y)) FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "gaze");
     e = fovpt__ctx_bytes(&c, cam, &need);
     if (e != FOV_OK) return e;
     if (need > 0 && !mem) FOVPT__FAIL(&c.logger, FOV_ERR_NULL, "context memory NULL");
@@ -3250,12 +3325,12 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
         size_t px = (size_t)cam->width * cam->height, off;
         uint32_t k;
         ctx->accum = (float *)mem;
-        ctx->pre = (unsigned char *)mem + fovpt__align(px * 16u);
-        off = fovpt__align(px * 16u) + fovpt__align(px * 52u);
+        ctx->pre = (unsigned char *)mem + fov__align(px * 16u);
+        off = fov__align(px * 16u) + fov__align(px * 52u);
         ctx->hist_slots = fovpt__hist_slots(&c);
         for (k = 0; k < ctx->hist_slots; ++k) {
             ctx->hist[k] = (float *)(void *)((unsigned char *)mem + off);
-            off += fovpt__align(px * 32u);
+            off += fov__align(px * 32u);
         }
         fovpt__make_view(ctx, &ctx->hist_view[0]);
     } else {
@@ -3263,7 +3338,7 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
         uint32_t n;
         for (n = 0; n < ctx->lay.count; ++n) {
             ctx->layer_buf[n] = (float *)(void *)p;
-            p += fovpt__align((size_t)fovpt__grid_cells(cam->width, cam->height, ctx->lay.layer[n].stride) * 16u);
+            p += fov__align((size_t)fovpt__grid_cells(cam->width, cam->height, ctx->lay.layer[n].stride) * 16u);
         }
     }
     return fovpt_reset(ctx);
@@ -3293,7 +3368,7 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "camera");
     if (cam->width != ctx->cam.width || cam->height != ctx->cam.height)
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "camera size differs from fovpt_init's");
-    if (!fovpt__finite(gaze.x) || !fovpt__finite(gaze.y)) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "gaze");
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y)) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "gaze");
     old = ctx->cam;
     moved = 0;
     {
@@ -3472,12 +3547,12 @@ FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre
     uint32_t k;
     for (k = 0; k < 3; ++k) {
         const fovpt__pre *q = Q[k];
-        if (P->poid != q->poid) m = fovpt__minf(m, sc->tau[1]);
-        else if (P->poid != FOVPT_PRIM_NONE && fovpt__dot(P->pn, q->pn) < cos_tol) m = fovpt__minf(m, sc->tau[2]);
-        if ((P->sc & 0xFFFFu) != (q->sc & 0xFFFFu)) m = fovpt__minf(m, sc->tau[3]);
-        if (P->soid != q->soid) m = fovpt__minf(m, sc->tau[5]);
-        else if (P->soid != FOVPT_PRIM_NONE && fovpt__dot(P->sn, q->sn) < cos_tol) m = fovpt__minf(m, sc->tau[6]);
-        if ((P->sc >> 16) != (q->sc >> 16)) m = fovpt__minf(m, sc->tau[7]);
+        if (P->poid != q->poid) m = fov__minf(m, sc->tau[1]);
+        else if (P->poid != FOVPT_PRIM_NONE && fov__dot(P->pn, q->pn) < cos_tol) m = fov__minf(m, sc->tau[2]);
+        if ((P->sc & 0xFFFFu) != (q->sc & 0xFFFFu)) m = fov__minf(m, sc->tau[3]);
+        if (P->soid != q->soid) m = fov__minf(m, sc->tau[5]);
+        else if (P->soid != FOVPT_PRIM_NONE && fov__dot(P->sn, q->sn) < cos_tol) m = fov__minf(m, sc->tau[6]);
+        if ((P->sc >> 16) != (q->sc >> 16)) m = fov__minf(m, sc->tau[7]);
         /* texture flags (pte, ste): no textures, never discordant */
     }
     return m < FLT_MAX ? m : sc->tau[0];
@@ -3490,7 +3565,7 @@ FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3
     uint32_t c, k;
     for (c = 0; c < 3; ++c) {
         float mx = P->col[c], mn = P->col[c];
-        for (k = 0; k < 3; ++k) { mx = fovpt__maxf(mx, Q[k]->col[c]); mn = fovpt__minf(mn, Q[k]->col[c]); }
+        for (k = 0; k < 3; ++k) { mx = fov__maxf(mx, Q[k]->col[c]); mn = fov__minf(mn, Q[k]->col[c]); }
         if (mx + mn > 0.0f && (mx - mn) > tau * kc[c] * (mx + mn)) return 1;
     }
     return 0;
@@ -3513,10 +3588,10 @@ FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const
     q = ctx->hist[prev] + 8u * ((size_t)qy * W + qx);
     if (!(q[7] < (float)tc->n_reuse_max)) return 0;                        /* 1. reuse count */
     if (!(q[3] > 0.0f)) return 0;                                         /* 3. p_reuse hits */
-    if (!(fovpt__absf(dist - q[3]) <= tc->eps_depth * q[3])) return 0;      /* 4. depth */
+    if (!(fov__absf(dist - q[3]) <= tc->eps_depth * q[3])) return 0;      /* 4. depth */
     for (c = 0; c < 3; ++c) {                                             /* 5. colour test */
         static const float kc[3] = { 1.36f, 1.02f, 2.04f };
-        float mx = fovpt__maxf(P->col[c], q[4 + c]), mn = fovpt__minf(P->col[c], q[4 + c]);
+        float mx = fov__maxf(P->col[c], q[4 + c]), mn = fov__minf(P->col[c], q[4 + c]);
         con = mx + mn > 0.0f ? (mx - mn) / (mx + mn) : 0.0f;
         if (con > tc->tau_reuse * ctx->cfg.selective.tau[0] * kc[c]) return 0;
     }
@@ -3541,7 +3616,7 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
     sc = &ctx->cfg.selective;
     pre = (const fovpt__pre *)ctx->pre;
     jin = ctx->cfg.method == FOVPT_METHOD_JIN;
-    cos_tol = FOVPT__COS(sc->normal_tol_deg * FOVPT__DEG);
+    cos_tol = FOV__COS(sc->normal_tol_deg * FOV__DEG);
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
@@ -3625,17 +3700,17 @@ FOVPT__PRIV uint8_t fovpt__srgb8(float v)
     float e;
     if (!(v > 0.0f)) return 0;
     if (v >= 1.0f) return 255;
-    e = v <= 0.0031308f ? 12.92f * v : 1.055f * FOVPT__POW(v, 1.0f / 2.4f) - 0.055f;
+    e = v <= 0.0031308f ? 12.92f * v : 1.055f * FOV__POW(v, 1.0f / 2.4f) - 0.055f;
     return (uint8_t)(e * 255.0f + 0.5f);
 }
 
 FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
 {
     float px;
-    if (fovpt__absf(x) < 1e-6f) return 1.0f;
-    if (fovpt__absf(x) >= a) return 0.0f;
-    px = FOVPT__PI * x;
-    return a * FOVPT__SIN(px) * FOVPT__SIN(px / a) / (px * px);
+    if (fov__absf(x) < 1e-6f) return 1.0f;
+    if (fov__absf(x) >= a) return 0.0f;
+    px = FOV__PI * x;
+    return a * FOV__SIN(px) * FOV__SIN(px / a) / (px * px);
 }
 /* ZONES: Lanczos upsampling (seed 000 sec. 4.2) of lattice n at lattice position (kx + fx,
    ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
@@ -3666,7 +3741,7 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
         }
     }
     if (!(ws > 0.05f)) return 0;
-    c[0] = fovpt__maxf(acc[0] / ws, 0.0f); c[1] = fovpt__maxf(acc[1] / ws, 0.0f); c[2] = fovpt__maxf(acc[2] / ws, 0.0f);
+    c[0] = fov__maxf(acc[0] / ws, 0.0f); c[1] = fov__maxf(acc[1] / ws, 0.0f); c[2] = fov__maxf(acc[2] / ws, 0.0f);
     return 1;
 }
 
@@ -3721,7 +3796,7 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
         if (!(ws > 0.0f)) return 0;
         acc[0] /= ws; acc[1] /= ws; acc[2] /= ws;
     }
-    c[0] = fovpt__maxf(acc[0], 0.0f); c[1] = fovpt__maxf(acc[1], 0.0f); c[2] = fovpt__maxf(acc[2], 0.0f);
+    c[0] = fov__maxf(acc[0], 0.0f); c[1] = fov__maxf(acc[1], 0.0f); c[2] = fov__maxf(acc[2], 0.0f);
     return 1;
 }
 
@@ -3729,7 +3804,7 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
 FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
 {
     float t = (L->layer[n].radius_deg + 0.5f * L->blend_deg - e) / L->blend_deg;
-    t = fovpt__clampf(t, 0.0f, 1.0f);
+    t = fov__clampf(t, 0.0f, 1.0f);
     return L->blend_linear ? t : t * t * (3.0f - 2.0f * t);
 }
 
@@ -3756,7 +3831,7 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
         w *= 1.0f - a;
         if (!fovpt__project(&ctx->hist_view[slot], W, H, v, &qx, &qy, &dist)) continue;
         q = ctx->hist[slot] + 8u * ((size_t)qy * W + qx);
-        if (!(q[3] > 0.0f) || !(fovpt__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3])) continue;
+        if (!(q[3] > 0.0f) || !(fov__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3])) continue;
         for (k = 0; k < 3; ++k) acc[k] += w * q[k];
         ws += w;
     }
@@ -3846,15 +3921,15 @@ FOVPT_API void fovpt_catmull_rom(float t, float w[4])
 FOVPT__PRIV float fovpt__bezier_y(float x0, float y0, float x1, float y1, float x2, float y2, float e)
 {
     float A = x0 - 2.0f * x1 + x2, B = 2.0f * (x1 - x0), C = x0 - e, t, u;
-    if (fovpt__absf(A) <= 1e-6f * (fovpt__absf(B) + 1e-30f)) {
+    if (fov__absf(A) <= 1e-6f * (fov__absf(B) + 1e-30f)) {
         t = B > 0.0f || B < 0.0f ? -C / B : 0.0f;
     } else {
-        float disc = fovpt__maxf(0.0f, B * B - 4.0f * A * C), sq = FOVPT__SQRT(disc);
+        float disc = fov__maxf(0.0f, B * B - 4.0f * A * C), sq = FOV__SQRT(disc);
         float q = -0.5f * (B + (B < 0.0f ? -sq : sq));
         float r0 = q / A, r1 = (q > 0.0f || q < 0.0f) ? C / q : r0;
         t = (r0 >= -1e-4f && r0 <= 1.0001f) ? r0 : r1;
     }
-    t = fovpt__clampf(t, 0.0f, 1.0f);
+    t = fov__clampf(t, 0.0f, 1.0f);
     u = 1.0f - t;
     return u * u * y0 + 2.0f * t * u * y1 + t * t * y2;
 }
@@ -3866,8 +3941,8 @@ FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *s, float e, float 
     *out = 0.0f;
     t0 = s->tau_shape[0]; tf = s->tau_shape[1]; tp = s->tau_shape[2]; tn = s->tau_shape[3];
     ef = s->e_deg[0]; enp = s->e_deg[3];
-    if (!fovpt__finite(e) || !fovpt__finite(t0) || !fovpt__finite(tf) || !fovpt__finite(tp) || !fovpt__finite(tn) ||
-        !fovpt__finite(ef) || !fovpt__finite(enp))
+    if (!fov__finite(e) || !fov__finite(t0) || !fov__finite(tf) || !fov__finite(tp) || !fov__finite(tn) ||
+        !fov__finite(ef) || !fov__finite(enp))
         return FOV_ERR_NOT_FINITE;
     if (!(ef > 0.0f && enp > ef && t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
         tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))
@@ -3883,7 +3958,7 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *t, const fovpt_selective_c
 {
     float x[6];
     uint32_t i;
-    if (!t || !s || !fovpt__finite(e)) return 0.0f;
+    if (!t || !s || !fov__finite(e)) return 0.0f;
     x[0] = 0.0f;
     for (i = 0; i < 5; ++i) x[i + 1u] = s->e_deg[i];
     if (e <= 0.0f) return t->alpha[0];
@@ -3897,6 +3972,7 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *t, const fovpt_selective_c
 
 #endif /* FOVPT_IMPLEMENTATION */
 
+/* ==== FOV_SHARED_BEGIN license ============================================================== */
 /*
 ------------------------------------------------------------------------------
 This software is available under 2 licenses -- choose whichever you prefer.
@@ -3926,8 +4002,16 @@ software, either in source code form or as a compiled binary, for any purpose,
 commercial or non-commercial, and by any means.
 In jurisdictions that recognize copyright laws, the author or authors of this
 software dedicate any and all copyright interest in the software to the public
-domain. We make this dedication in ways that are consistent with the intent of
-the ruling in that jurisdiction. THE SOFTWARE IS PROVIDED "AS IS", WITHOUT
-WARRANTY OF ANY KIND, EXPRESS OR IMPLIED.
+domain. We make this dedication for the benefit of the public at large and to
+the detriment of our heirs and successors. We intend this dedication to be an
+overt act of relinquishment in perpetuity of all present and future rights to
+this software under copyright law.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER IN AN
+ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
+WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
 ------------------------------------------------------------------------------
 */
+/* ==== FOV_SHARED_END license ================================================================ */

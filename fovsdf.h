@@ -154,20 +154,15 @@ DOES NOT
 
 CONFIGURATION (define before including the implementation)
    FOVSDF_STATIC        all functions static (use it when two libraries embed this header)
-   FOV_DLL              export (FOVSDF_IMPLEMENTATION) or import the API from a DLL
    FOVSDF_API           override the linkage of every public function
-   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
-   FOV_NO_LIBM          use the built-in float approximations of the math functions below
-   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
-                        math hooks: define all of them or none (an #error tells you)
-   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
-                        calls to memset/memcpy for struct copies)
    FOVSDF_MAX_STEPS     hard cap on march steps per ray               (default 65536)
    FOVSDF_MAX_DIM       hard cap on image width and height            (default 65536)
    FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
    FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
                         it references software-double routines on a single-precision FPU)
-   FOV_NO_ERROR_STRINGS compile out the result strings (fovsdf_result_string returns "")
+   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
+   FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 
 MEMORY
    The caller owns every byte. fovsdf_memory_size() says how much working memory a
@@ -186,7 +181,8 @@ ERRORS AND LOGGING
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done; nothing asserts on data. An optional
-   fov_logger in the config receives a message with each error (the texts need FOV_DEBUG).
+   fov_logger in the config receives a specific message with each error (on by default;
+   FOV_NO_ERROR_STRINGS removes the texts).
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
    ends the ray as a miss (every tracer; no evaluation beyond t_max or at a non-finite point,
    hits always at a finite t in [t_start, t_max]), a NaN or infinite albedo channel is taken
@@ -362,33 +358,56 @@ RECENT REVISION HISTORY
 #define FOVSDF_VERSION_PATCH 0
 #define FOVSDF_VERSION_STRING "0.3.0"
 
-#if defined(__GNUC__) || defined(__clang__)
-#define FOVSDF__UNUSED __attribute__((unused))
-#else
-#define FOVSDF__UNUSED
-#endif
+/* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
+   header: edit tools/fov_shared.h and run `python3 tools/sync_shared.py` (tests/shared.sh
+   checks the copies).
 
-#ifndef FOVSDF_API
-#if defined(FOVSDF_STATIC)
-#define FOVSDF_API static FOVSDF__UNUSED
-#elif defined(FOV_DLL) && defined(_WIN32) && defined(FOVSDF_IMPLEMENTATION)
-#define FOVSDF_API __declspec(dllexport)
-#elif defined(FOV_DLL) && defined(_WIN32)
-#define FOVSDF_API __declspec(dllimport)
-#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
-#define FOVSDF_API __attribute__((visibility("default"))) extern
+   CONFIGURATION shared by fovsdf.h, fovlp.h and fovpt.h (define before including the
+   implementation; the same value for every header in a translation unit)
+   FOV_DLL              export (in the translation unit with FOVxx_IMPLEMENTATION) or import
+                        the API of a shared library
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+                        (relative error about 1e-6 or better on the ranges the libraries use)
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOV_NO_ERROR_STRINGS compile out the message texts: the logger gets "" and
+                        *_result_string returns "" (for the smallest microcontroller builds)
+   Error messages are on by default: set the logger in a config (cfg.logger.func) and every
+   failure calls it with a code, a specific message and the header's source line. */
+#ifndef FOV_SHARED_DECL_INCLUDED
+#define FOV_SHARED_DECL_INCLUDED 1
+#define FOV_SHARED_REVISION 1 /* the revision of this block; headers that differ must not mix */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOV__UNUSED __attribute__((unused))
 #else
-#define FOVSDF_API extern
+#define FOV__UNUSED
 #endif
+/* Linkage of public functions (each header's FOVxx_API picks one): FOV_DLL builds a shared
+   library (dllexport in the translation unit with the implementation, dllimport elsewhere on
+   Windows; default visibility with gcc and clang). */
+#if defined(FOV_DLL) && defined(_WIN32)
+#define FOV__API_EXPORT __declspec(dllexport)
+#define FOV__API_IMPORT __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOV__API_EXPORT __attribute__((visibility("default"))) extern
+#define FOV__API_IMPORT __attribute__((visibility("default"))) extern
+#else
+#define FOV__API_EXPORT extern
+#define FOV__API_IMPORT extern
 #endif
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */
-#ifndef FOV_COMMON_DEFINED
-#define FOV_COMMON_DEFINED
 /* Result codes of every fallible function in the fov headers. */
 typedef enum fov_result {
     FOV_OK = 0,
@@ -409,8 +428,9 @@ typedef enum fov_log_level {
     _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
 } fov_log_level;
 
-/* Optional diagnostics: tag is the header ("fovsdf"), code a fov_result, msg a short text
-   (NULL under FOV_NO_ERROR_STRINGS), line the source line that reported it. */
+/* Optional diagnostics: tag is the header ("fovsdf", "fovlp", "fovpt"), code a fov_result,
+   msg a specific text naming what was wrong and what is allowed (never NULL; "" when the
+   build defines FOV_NO_ERROR_STRINGS), line the header's source line that reported it. */
 typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
                              uint32_t line, void *user);
 typedef struct fov_logger {
@@ -451,8 +471,28 @@ typedef struct fov_ecc_model {
     float gx, gy;    /* the gaze point, pixels */
     float g[3];      /* unit direction of the gaze ray */
 } fov_ecc_model;
-#endif /* FOV_COMMON_DEFINED */
-/* ---- end of the shared block ---- */
+
+#ifdef __cplusplus
+}
+#endif
+#elif FOV_SHARED_REVISION != 1
+#error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
+#endif /* FOV_SHARED_DECL_INCLUDED */
+/* ==== FOV_SHARED_END decl ==================================================================== */
+
+#ifndef FOVSDF_API
+#if defined(FOVSDF_STATIC)
+#define FOVSDF_API static FOV__UNUSED
+#elif defined(FOVSDF_IMPLEMENTATION)
+#define FOVSDF_API FOV__API_EXPORT
+#else
+#define FOVSDF_API FOV__API_IMPORT
+#endif
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
 
 /* ==== tracers and settings ================================================================ */
 
@@ -1027,8 +1067,8 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
    count and root, then every node's type, children (indices below count) and parameters (the
    ranges at fovsdf_node_type: finite, lengths at most 1e18 in magnitude, iteration counts
    within their caps). Returns the first failure's code, the one fovsdf_program_build returns
-   for these nodes, and logs it (the node index, the field and the allowed range; messages
-   need FOV_DEBUG). logger may be NULL. */
+   for these nodes, and logs it (the node index, the field and the allowed range). logger
+   may be NULL. */
 FOVSDF_API fov_result fovsdf_program_check(const fovsdf_node *nodes, uint32_t count, int32_t root,
                                            const fov_logger *logger);
 /* Keep only the code: fovsdf_program_compact copies the instructions (code_bytes of them,
@@ -1073,6 +1113,13 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
 #if defined(FOVSDF_IMPLEMENTATION) && !defined(FOVSDF_IMPL_INCLUDED)
 #define FOVSDF_IMPL_INCLUDED
 
+/* ==== FOV_SHARED_BEGIN impl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit (edit
+   tools/fov_shared.h, then run `python3 tools/sync_shared.py`). Private: every name starts
+   with fov__ / FOV__ and has internal linkage. */
+#ifndef FOV__SHARED_IMPL_INCLUDED
+#define FOV__SHARED_IMPL_INCLUDED 1
+
 #include <float.h>
 #include <limits.h>
 
@@ -1088,54 +1135,54 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
 #if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
     !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
     !defined(FOV_POWF)
-#error "fov: define all of FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF, or none"
+#error "fov: define all nine math hooks (FOV_SQRTF ... FOV_POWF, see the doc block) or none"
 #endif
-#define FOVSDF__HOOKED_MATH 1
+#define FOV__HOOKED_MATH 1
 #endif
 
-#define FOVSDF__PRIV static FOVSDF__UNUSED
+#define FOV__PRIV static FOV__UNUSED
 
 /* Float tests without == (the library builds clean with -Wfloat-equal). */
-FOVSDF__PRIV int fovsdf__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
-FOVSDF__PRIV int fovsdf__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+FOV__PRIV int fov__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 
-#if !defined(FOVSDF__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#if !defined(FOV__HOOKED_MATH) && !defined(FOV_NO_LIBM)
 #include <math.h>
-#define FOVSDF__SQRT(x) sqrtf(x)
-#define FOVSDF__FLOOR(x) floorf(x)
-#define FOVSDF__SIN(x) sinf(x)
-#define FOVSDF__COS(x) cosf(x)
-#define FOVSDF__TAN(x) tanf(x)
-#define FOVSDF__ATAN2(y, x) atan2f(y, x)
-#define FOVSDF__EXP(x) expf(x)
-#define FOVSDF__LOG(x) logf(x)
-#define FOVSDF__POW(x, y) powf(x, y)
-#elif defined(FOVSDF__HOOKED_MATH)
-#define FOVSDF__SQRT(x) FOV_SQRTF(x)
-#define FOVSDF__FLOOR(x) FOV_FLOORF(x)
-#define FOVSDF__SIN(x) FOV_SINF(x)
-#define FOVSDF__COS(x) FOV_COSF(x)
-#define FOVSDF__TAN(x) FOV_TANF(x)
-#define FOVSDF__ATAN2(y, x) FOV_ATAN2F(y, x)
-#define FOVSDF__EXP(x) FOV_EXPF(x)
-#define FOVSDF__LOG(x) FOV_LOGF(x)
-#define FOVSDF__POW(x, y) FOV_POWF(x, y)
+#define FOV__SQRT(x) sqrtf(x)
+#define FOV__FLOOR(x) floorf(x)
+#define FOV__SIN(x) sinf(x)
+#define FOV__COS(x) cosf(x)
+#define FOV__TAN(x) tanf(x)
+#define FOV__ATAN2(y, x) atan2f(y, x)
+#define FOV__EXP(x) expf(x)
+#define FOV__LOG(x) logf(x)
+#define FOV__POW(x, y) powf(x, y)
+#elif defined(FOV__HOOKED_MATH)
+#define FOV__SQRT(x) FOV_SQRTF(x)
+#define FOV__FLOOR(x) FOV_FLOORF(x)
+#define FOV__SIN(x) FOV_SINF(x)
+#define FOV__COS(x) FOV_COSF(x)
+#define FOV__TAN(x) FOV_TANF(x)
+#define FOV__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOV__EXP(x) FOV_EXPF(x)
+#define FOV__LOG(x) FOV_LOGF(x)
+#define FOV__POW(x, y) FOV_POWF(x, y)
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
    ranges the library uses; tests/test_fovsdf.c checks them against libm). */
-#define FOVSDF__SQRT(x) fovsdf__sqrtf(x)
-#define FOVSDF__FLOOR(x) fovsdf__floorf(x)
-#define FOVSDF__SIN(x) fovsdf__sinf(x)
-#define FOVSDF__COS(x) fovsdf__cosf(x)
-#define FOVSDF__TAN(x) (fovsdf__sinf(x) / fovsdf__cosf(x))
-#define FOVSDF__ATAN2(y, x) fovsdf__atan2f(y, x)
-#define FOVSDF__EXP(x) fovsdf__expf(x)
-#define FOVSDF__LOG(x) fovsdf__logf(x)
-#define FOVSDF__POW(x, y) fovsdf__powf(x, y)
+#define FOV__SQRT(x) fov__sqrtf(x)
+#define FOV__FLOOR(x) fov__floorf(x)
+#define FOV__SIN(x) fov__sinf(x)
+#define FOV__COS(x) fov__cosf(x)
+#define FOV__TAN(x) (fov__sinf(x) / fov__cosf(x))
+#define FOV__ATAN2(y, x) fov__atan2f(y, x)
+#define FOV__EXP(x) fov__expf(x)
+#define FOV__LOG(x) fov__logf(x)
+#define FOV__POW(x, y) fov__powf(x, y)
 
-typedef union fovsdf__bits { float f; uint32_t u; } fovsdf__bits;
+typedef union fov__bits { float f; uint32_t u; } fov__bits;
 
-FOVSDF__PRIV float fovsdf__sqrtf(float x)
+FOV__PRIV float fov__sqrtf(float x)
 {
 #if defined(__wasm__) && defined(__clang__)
     return __builtin_sqrtf(x); /* one f32.sqrt instruction */
@@ -1144,9 +1191,9 @@ FOVSDF__PRIV float fovsdf__sqrtf(float x)
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;
 #else
-    fovsdf__bits b;
+    fov__bits b;
     float y;
-    if (!(x > 0.0f)) return fovsdf__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -1159,7 +1206,7 @@ FOVSDF__PRIV float fovsdf__sqrtf(float x)
 #endif
 }
 
-FOVSDF__PRIV float fovsdf__floorf(float x)
+FOV__PRIV float fov__floorf(float x)
 {
     float r;
     if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
@@ -1168,52 +1215,52 @@ FOVSDF__PRIV float fovsdf__floorf(float x)
 }
 
 /* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
-FOVSDF__PRIV float fovsdf__sin_k(float x)
+FOV__PRIV float fov__sin_k(float x)
 {
     float x2 = x * x;
     return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
                 x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
 }
-FOVSDF__PRIV float fovsdf__cos_k(float x)
+FOV__PRIV float fov__cos_k(float x)
 {
     float x2 = x * x;
     return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
                 x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
 }
 /* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
-FOVSDF__PRIV float fovsdf__reduce(float x, int32_t *q)
+FOV__PRIV float fov__reduce(float x, int32_t *q)
 {
     float k;
     if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
-    k = fovsdf__floorf(x * 0.63661977236758134f + 0.5f);
+    k = fov__floorf(x * 0.63661977236758134f + 0.5f);
     *q = (int32_t)k;
     /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
     return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
 }
-FOVSDF__PRIV float fovsdf__sinf(float x)
+FOV__PRIV float fov__sinf(float x)
 {
     int32_t q;
-    float r = fovsdf__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovsdf__sin_k(r);
-    case 1: return fovsdf__cos_k(r);
-    case 2: return -fovsdf__sin_k(r);
-    default: return -fovsdf__cos_k(r);
+    case 0: return fov__sin_k(r);
+    case 1: return fov__cos_k(r);
+    case 2: return -fov__sin_k(r);
+    default: return -fov__cos_k(r);
     }
 }
-FOVSDF__PRIV float fovsdf__cosf(float x)
+FOV__PRIV float fov__cosf(float x)
 {
     int32_t q;
-    float r = fovsdf__reduce(x, &q);
+    float r = fov__reduce(x, &q);
     switch (q & 3) {
-    case 0: return fovsdf__cos_k(r);
-    case 1: return -fovsdf__sin_k(r);
-    case 2: return -fovsdf__cos_k(r);
-    default: return fovsdf__sin_k(r);
+    case 0: return fov__cos_k(r);
+    case 1: return -fov__sin_k(r);
+    case 2: return -fov__cos_k(r);
+    default: return fov__sin_k(r);
     }
 }
 /* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
-FOVSDF__PRIV float fovsdf__atan01(float x)
+FOV__PRIV float fov__atan01(float x)
 {
     float off = 0.0f, z, z2;
     if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
@@ -1222,37 +1269,40 @@ FOVSDF__PRIV float fovsdf__atan01(float x)
     return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
                  z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
 }
-FOVSDF__PRIV float fovsdf__atan2f(float y, float x)
+FOV__PRIV float fov__atan2f(float y, float x)
 {
     float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
-    if (fovsdf__isnan(x) || fovsdf__isnan(y)) return x + y;
-    if (fovsdf__is0(ax) && fovsdf__is0(ay)) return 0.0f;
-    a = ay <= ax ? fovsdf__atan01(ay / ax) : 1.57079633f - fovsdf__atan01(ax / ay);
+    if (fov__isnan(x) || fov__isnan(y)) return x + y;
+    if (fov__is0(ax) && fov__is0(ay)) return 0.0f;
+    a = ay <= ax ? fov__atan01(ay / ax) : 1.57079633f - fov__atan01(ax / ay);
     if (x < 0.0f) a = 3.14159265f - a;
     return y < 0.0f ? -a : a;
 }
-FOVSDF__PRIV float fovsdf__expf(float x)
+FOV__PRIV float fov__expf(float x)
 {
     float k, r, p;
-    fovsdf__bits b;
-    if (fovsdf__isnan(x)) return x;
+    fov__bits b;
+    if (fov__isnan(x)) return x;
     if (x > 88.7f) return FLT_MAX * 2.0f;
     if (x < -103.0f) return 0.0f;
-    k = fovsdf__floorf(x * 1.44269504f + 0.5f);
+    k = fov__floorf(x * 1.44269504f + 0.5f);
     r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
     p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
         r * (8.3333333e-3f + r * 1.3888889e-3f)))));
-    if (k < -126.0f) { b.u = (uint32_t)(k + 126.0f + 127.0f) << 23; return p * b.f * 1.17549435e-38f; }
+    if (k < -126.0f) {
+        b.u = (uint32_t)(k + 126.0f + 127.0f) << 23;
+        return p * b.f * 1.17549435e-38f;
+    }
     b.u = (uint32_t)((int32_t)k + 127) << 23;
     return p * b.f;
 }
-FOVSDF__PRIV float fovsdf__logf(float x)
+FOV__PRIV float fov__logf(float x)
 {
-    fovsdf__bits b;
+    fov__bits b;
     int32_t e;
     float m, s, s2;
-    if (fovsdf__isnan(x) || x < 0.0f) return (x - x) / (x - x);
-    if (fovsdf__is0(x)) return -FLT_MAX * 2.0f;
+    if (fov__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fov__is0(x)) return -FLT_MAX * 2.0f;
     if (x > FLT_MAX) return x;
     b.f = x;
     e = 0;
@@ -1264,40 +1314,216 @@ FOVSDF__PRIV float fovsdf__logf(float x)
     s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
     s2 = s * s;
     return (float)e * 0.693147181f +
-           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f + s2 * 1.1111111e-1f))));
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f +
+                                                                   s2 * 1.1111111e-1f))));
 }
-FOVSDF__PRIV float fovsdf__powf(float x, float y)
+FOV__PRIV float fov__powf(float x, float y)
 {
-    if (fovsdf__is0(y)) return 1.0f;
-    if (fovsdf__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (fov__is0(y)) return 1.0f;
+    if (fov__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
     if (x < 0.0f) {
-        float fy = fovsdf__floorf(y);
+        float fy = fov__floorf(y);
         float r;
         if (fy < y || fy > y) return (x - x) / (x - x);
-        r = fovsdf__expf(y * fovsdf__logf(-x));
-        return ((int32_t)fovsdf__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+        r = fov__expf(y * fov__logf(-x));
+        return ((int32_t)fov__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
     }
-    return fovsdf__expf(y * fovsdf__logf(x));
+    return fov__expf(y * fov__logf(x));
 }
 #endif
 
 #ifndef FOV_MEMSET
-#define FOV_MEMSET(p, v, n) fovsdf__memset(p, v, n)
-FOVSDF__PRIV void fovsdf__memset(void *p, int v, size_t n)
+#define FOV_MEMSET(p, v, n) fov__memset(p, v, n)
+FOV__PRIV void fov__memset(void *p, int v, size_t n)
 {
     unsigned char *c = (unsigned char *)p;
     while (n--) *c++ = (unsigned char)v;
 }
 #endif
 #ifndef FOV_MEMCPY
-#define FOV_MEMCPY(d, s, n) fovsdf__memcpy(d, s, n)
-FOVSDF__PRIV void fovsdf__memcpy(void *d, const void *s, size_t n)
+#define FOV_MEMCPY(d, s, n) fov__memcpy(d, s, n)
+FOV__PRIV void fov__memcpy(void *d, const void *s, size_t n)
 {
     unsigned char *a = (unsigned char *)d;
     const unsigned char *b = (const unsigned char *)s;
     while (n--) *a++ = *b++;
 }
 #endif
+
+#define FOV__PI 3.14159265358979f
+#define FOV__DEG 0.0174532925199433f
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOV__PRIV int fov__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOV__PRIV int fov__finite3(const float v[3])
+{
+    return fov__finite(v[0]) && fov__finite(v[1]) && fov__finite(v[2]);
+}
+FOV__PRIV float fov__minf(float a, float b) { return a < b ? a : b; }
+FOV__PRIV float fov__maxf(float a, float b) { return a > b ? a : b; }
+FOV__PRIV float fov__absf(float a) { return a < 0.0f ? -a : a; }
+FOV__PRIV float fov__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOV__PRIV float fov__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOV__PRIV float fov__len(const float a[3]) { return FOV__SQRT(fov__dot(a, a)); }
+FOV__PRIV void fov__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2];
+    float z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
+FOV__PRIV void fov__prescale(float v[3])
+{
+    float m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (m > 0.0f && fov__finite(m) && (m < 1e-15f || m > 1e15f)) {
+        v[0] /= m; v[1] /= m; v[2] /= m;
+    }
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fov__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOV__PRIV float fov__normalize(float v[3])
+{
+    float l2 = fov__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOV__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fov__finite(v[0]) || !fov__finite(v[1]) || !fov__finite(v[2])) return 0.0f;
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fov__len(v); /* in [1, sqrt 3] */
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return m * l;
+}
+FOV__PRIV size_t fov__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+
+/* ---- errors ----------------------------------------------------------------------------- */
+/* Messages are on by default; FOV_NO_ERROR_STRINGS compiles them out (the logger then gets
+   ""). FOV__FAIL reports through the optional logger and returns the code. */
+#ifndef FOV_NO_ERROR_STRINGS
+#define FOV__MSG(s) s
+#else
+#define FOV__MSG(s) ""
+#endif
+FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result r, const char *msg,
+                              uint32_t line)
+{
+    if (lg && lg->func) lg->func(tag, FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+
+FOV__PRIV const char *fov__result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+/* ---- the eccentricity model (see fov_display) ------------------------------------------- */
+FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                   uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > max_dim || height > max_dim) return FOV_ERR_LIMIT;
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y) || !fov__finite(cam_fov_y_deg) ||
+        !fov__finite(d->fov_y_deg) || !fov__finite(d->pixel_pitch_mm) ||
+        !fov__finite(d->distance_mm) || !fov__finite(d->axis_dx) || !fov__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * d->fov_y_deg * FOV__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fov__is0(d->pixel_pitch_mm) || !fov__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by pitch or distance only */
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * cam_fov_y_deg * FOV__DEG);
+    }
+    if (!(f > 0.0f) || !fov__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fov__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(fov__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
+    fov__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+/* The angle in degrees between the eye's rays through (x, y) and through the gaze point. */
+FOV__PRIV float fov__ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v)) && fov__finite(x) && fov__finite(y)) {
+        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
+           (no overflow) and scale by the largest component; the usual range is untouched */
+        float k;
+        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
+        k = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= k; v[1] /= k; v[2] /= k;
+    }
+    fov__cross(v, m->g, c);
+    s = fov__len(c);
+    co = fov__dot(v, m->g);
+    return FOV__ATAN2(s, co) * (180.0f / FOV__PI); /* atan2 keeps small angles exact */
+}
+
+/* Pixels per degree at the gaze. d(angle)/d(pixels) along the radial direction at the gaze is
+   f / (f^2 + r^2) radians per pixel, with r the gaze's distance from the axis. */
+FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2, ppd;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOV__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* gaze beyond ~1e19 px: FLT_MAX */
+}
+#endif /* FOV__SHARED_IMPL_INCLUDED */
+/* ==== FOV_SHARED_END impl ==================================================================== */
+
+#define FOVSDF__PRIV FOV__PRIV
+#define FOVSDF__FAIL(lg, r, msg) FOV__FAIL(lg, "fovsdf", r, msg)
 
 #ifndef FOVSDF_MAX_STEPS
 #define FOVSDF_MAX_STEPS 65536u
@@ -1346,32 +1572,11 @@ FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r, int cone)
 #define FOVSDF_CONE_SLACK 0.5f
 #endif
 
-#define FOVSDF__PI 3.14159265358979f
-#define FOVSDF__DEG 0.0174532925199433f
 
-/* ---- small helpers ---------------------------------------------------------------------- */
-FOVSDF__PRIV int fovsdf__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
-FOVSDF__PRIV int fovsdf__finite3(const float v[3])
-{
-    return fovsdf__finite(v[0]) && fovsdf__finite(v[1]) && fovsdf__finite(v[2]);
-}
-FOVSDF__PRIV float fovsdf__minf(float a, float b) { return a < b ? a : b; }
-FOVSDF__PRIV float fovsdf__maxf(float a, float b) { return a > b ? a : b; }
-FOVSDF__PRIV float fovsdf__absf(float a) { return a < 0.0f ? -a : a; }
 /* NaN gives a: a NaN never survives a clamp (bit for bit the plain clamp otherwise) */
 FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b) { return x >= a ? (x > b ? b : x) : a; }
-FOVSDF__PRIV float fovsdf__dot(const float a[3], const float b[3])
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-FOVSDF__PRIV float fovsdf__len(const float a[3]) { return FOVSDF__SQRT(fovsdf__dot(a, a)); }
-FOVSDF__PRIV float fovsdf__len2f(float x, float y) { return FOVSDF__SQRT(x * x + y * y); }
-FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z) { return FOVSDF__SQRT(x * x + y * y + z * z); }
-FOVSDF__PRIV void fovsdf__cross(const float a[3], const float b[3], float r[3])
-{
-    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
-    r[0] = x; r[1] = y; r[2] = z;
-}
+FOVSDF__PRIV float fovsdf__len2f(float x, float y) { return FOV__SQRT(x * x + y * y); }
+FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z) { return FOV__SQRT(x * x + y * y + z * z); }
 /* Scales v to unit length and returns its length before (FLT_MAX when that is beyond float).
    Any finite non-zero v works: one whose squares would under- or overflow (largest component
    below 1e-15 or above 1e15) is brought to a largest component of 1 first; every other vector
@@ -1379,60 +1584,19 @@ FOVSDF__PRIV void fovsdf__cross(const float a[3], const float b[3], float r[3])
 FOVSDF__PRIV float fovsdf__normalize(float v[3])
 {
     float m, l, s = 1.0f;
-    if (!fovsdf__finite3(v)) return 0.0f;
-    m = fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__maxf(fovsdf__absf(v[1]), fovsdf__absf(v[2])));
+    if (!fov__finite3(v)) return 0.0f;
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
     if (!(m > 0.0f)) return 0.0f;
     if (m < 1e-15f || m > 1e15f) { v[0] /= m; v[1] /= m; v[2] /= m; s = m; }
-    l = fovsdf__len(v);
+    l = fov__len(v);
     v[0] /= l; v[1] /= l; v[2] /= l;
     l *= s;
     return l <= FLT_MAX ? l : FLT_MAX;
 }
-/* Brings a direction whose length would underflow or overflow in the squares (components
-   below 1e-15 or above 1e15) to a largest component of 1 first; other vectors are left
-   untouched (bit for bit). */
-FOVSDF__PRIV void fovsdf__prescale(float v[3])
-{
-    float m = fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__maxf(fovsdf__absf(v[1]), fovsdf__absf(v[2])));
-    if (m > 0.0f && fovsdf__finite(m) && (m < 1e-15f || m > 1e15f)) {
-        v[0] /= m; v[1] /= m; v[2] /= m;
-    }
-}
-FOVSDF__PRIV size_t fovsdf__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
 
-#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
-#define FOVSDF__MSG(s) s
-#else
-#define FOVSDF__MSG(s) ((const char *)0)
-#endif
-/* Report an error through the optional logger and return it. */
-FOVSDF__PRIV fov_result fovsdf__err(const fov_logger *lg, fov_result r, const char *msg, uint32_t line)
-{
-    if (lg && lg->func) lg->func("fovsdf", FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
-    return r;
-}
-#define FOVSDF__FAIL(lg, r, msg) return fovsdf__err(lg, r, FOVSDF__MSG(msg), (uint32_t)__LINE__)
 
 /* ---- results, names, configs ------------------------------------------------------------ */
-FOVSDF_API const char *fovsdf_result_string(fov_result r)
-{
-#ifdef FOV_NO_ERROR_STRINGS
-    (void)r;
-    return "";
-#else
-    switch (r) {
-    case FOV_OK: return "ok";
-    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
-    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
-    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
-    case FOV_ERR_NULL: return "a required pointer is NULL";
-    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
-    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
-    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
-    default: return "unknown result code";
-    }
-#endif
-}
+FOVSDF_API const char *fovsdf_result_string(fov_result r) { return fov__result_string(r); }
 
 FOVSDF_API const char *fovsdf_method_name(uint32_t method)
 {
@@ -1467,12 +1631,12 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (!in || !out) return FOV_ERR_NULL;
     c = *in;
     lg = &in->logger;
-    if (!fovsdf__finite(c.eps) || !fovsdf__finite(c.eps_px) || !fovsdf__finite(c.t_max) ||
-        !fovsdf__finite(c.omega) || !fovsdf__finite(c.ar_beta) || !fovsdf__finite(c.bv_relax) ||
-        !fovsdf__finite(c.shadow_eps) || !fovsdf__finite(c.shadow_t0) ||
-        !fovsdf__finite(c.normal_eps) || !fovsdf__finite(c.display.fov_y_deg) ||
-        !fovsdf__finite(c.display.pixel_pitch_mm) || !fovsdf__finite(c.display.distance_mm) ||
-        !fovsdf__finite(c.display.axis_dx) || !fovsdf__finite(c.display.axis_dy))
+    if (!fov__finite(c.eps) || !fov__finite(c.eps_px) || !fov__finite(c.t_max) ||
+        !fov__finite(c.omega) || !fov__finite(c.ar_beta) || !fov__finite(c.bv_relax) ||
+        !fov__finite(c.shadow_eps) || !fov__finite(c.shadow_t0) ||
+        !fov__finite(c.normal_eps) || !fov__finite(c.display.fov_y_deg) ||
+        !fov__finite(c.display.pixel_pitch_mm) || !fov__finite(c.display.distance_mm) ||
+        !fov__finite(c.display.axis_dx) || !fov__finite(c.display.axis_dy))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
     if (c.method >= (uint32_t)_FOVSDF_METHOD_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown method");
     if (c.spp == 0) c.spp = 1;
@@ -1481,20 +1645,20 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.eps < 0.0f || c.eps_px < 0.0f || c.t_max < 0.0f || c.omega < 0.0f || c.ar_beta < 0.0f ||
         c.bv_relax < 0.0f || c.shadow_eps < 0.0f || c.shadow_t0 < 0.0f || c.normal_eps < 0.0f)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter");
-    if (fovsdf__is0(c.eps)) c.eps = 1e-4f;
-    if (fovsdf__is0(c.eps_px)) c.eps_px = 0.25f;
+    if (fov__is0(c.eps)) c.eps = 1e-4f;
+    if (fov__is0(c.eps_px)) c.eps_px = 0.25f;
     if (c.max_steps == 0) c.max_steps = 256;
     if (c.max_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: max_steps above FOVSDF_MAX_STEPS");
-    if (fovsdf__is0(c.omega)) c.omega = 1.6f;
+    if (fov__is0(c.omega)) c.omega = 1.6f;
     if (c.omega < 1.0f || c.omega >= 2.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: omega must be in [1, 2)");
-    if (fovsdf__is0(c.ar_beta)) c.ar_beta = 0.3f;
+    if (fov__is0(c.ar_beta)) c.ar_beta = 0.3f;
     if (c.ar_beta > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ar_beta must be in (0, 1]");
-    if (fovsdf__is0(c.bv_relax)) c.bv_relax = 0.9f;
+    if (fov__is0(c.bv_relax)) c.bv_relax = 0.9f;
     if (c.bv_relax > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: bv_relax must be in (0, 1]");
     if (c.shading >= (uint32_t)_FOVSDF_SHADE_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown shading");
     if (c.shadow_steps == 0) c.shadow_steps = 64;
     if (c.shadow_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: shadow_steps above FOVSDF_MAX_STEPS");
-    if (fovsdf__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
+    if (fov__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
     if (c.finish == 0) c.finish = FOVSDF_FINISH_BV2018;
     if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown finish");
     if (c.heuristic_start > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: heuristic_start must be 0 (safe) or 1 (thesis)");
@@ -1510,11 +1674,11 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
             FOVSDF_TILE_SCRATCH)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
-    if (!fovsdf__finite(c.skip_scale) || !fovsdf__finite(c.skip_eps))
+    if (!fov__finite(c.skip_scale) || !fov__finite(c.skip_eps))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: skip_scale or skip_eps not finite");
     if (c.skip_scale < 0.0f || c.skip_eps < 0.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_scale and skip_eps must be > 0");
-    if (fovsdf__is0(c.skip_scale)) c.skip_scale = 1.005f;
-    if (fovsdf__is0(c.skip_eps)) c.skip_eps = 0.05f;
+    if (fov__is0(c.skip_scale)) c.skip_scale = 1.005f;
+    if (fov__is0(c.skip_eps)) c.skip_eps = 0.05f;
     if (c.skip_scale > 2.0f || c.skip_scale < 0.5f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_scale must be in [0.5, 2]");
     if (c.skip_block == 0) c.skip_block = 4;
     if (c.skip_block > 16) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_block must be 1 .. 16");
@@ -1528,23 +1692,23 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         if (c.cone_levels == 0) c.cone_levels = lv > 1 ? lv - 1 : 1;
         if (c.cone_levels > lv) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cone_levels above log2(cone_tile) + 1");
     }
-    if (fovsdf__is0(c.shadow_t0)) c.shadow_t0 = 1e-2f;
+    if (fov__is0(c.shadow_t0)) c.shadow_t0 = 1e-2f;
     {
         fovsdf_acuity d = fovsdf_acuity_default();
-        if (!fovsdf__finite(c.acuity.A) || !fovsdf__finite(c.acuity.rate) || !fovsdf__finite(c.acuity.C) ||
-            !fovsdf__finite(c.acuity.fovea_deg) || !fovsdf__finite(c.acuity.outer_deg) || !fovsdf__finite(c.edge_threshold))
+        if (!fov__finite(c.acuity.A) || !fov__finite(c.acuity.rate) || !fov__finite(c.acuity.C) ||
+            !fov__finite(c.acuity.fovea_deg) || !fov__finite(c.acuity.outer_deg) || !fov__finite(c.edge_threshold))
             FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: acuity or edge_threshold not finite");
         if (c.acuity.A < 0.0f || c.acuity.rate < 0.0f || c.acuity.C < 0.0f || c.acuity.fovea_deg < 0.0f ||
             c.acuity.outer_deg < 0.0f || c.edge_threshold < 0.0f)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative acuity parameter or edge_threshold");
-        if (fovsdf__is0(c.acuity.A)) c.acuity.A = d.A;
-        if (fovsdf__is0(c.acuity.rate)) c.acuity.rate = d.rate;
-        if (fovsdf__is0(c.acuity.C)) c.acuity.C = d.C;
-        if (fovsdf__is0(c.acuity.fovea_deg)) c.acuity.fovea_deg = d.fovea_deg;
+        if (fov__is0(c.acuity.A)) c.acuity.A = d.A;
+        if (fov__is0(c.acuity.rate)) c.acuity.rate = d.rate;
+        if (fov__is0(c.acuity.C)) c.acuity.C = d.C;
+        if (fov__is0(c.acuity.fovea_deg)) c.acuity.fovea_deg = d.fovea_deg;
         if (c.acuity.A + c.acuity.C > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity A + C above 1");
         if (c.acuity.fovea_deg > 180.0f || (c.acuity.outer_deg > 0.0f && c.acuity.outer_deg <= c.acuity.fovea_deg))
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity.outer_deg must exceed fovea_deg (0: 7.5), fovea_deg <= 180");
-        if (fovsdf__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
+        if (fov__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
         if (c.fov_mask >= (uint32_t)_FOVSDF_MASK_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown fov_mask");
         if (c.refresh == 0) c.refresh = 1;
         if (c.refresh != 1 && c.refresh != 2 && c.refresh != 4)
@@ -1558,7 +1722,7 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
             FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: CONE_FOV cone_tile cells above FOVSDF_FOV_CELLS");
     }
     if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
-        c.display.distance_mm < 0.0f || fovsdf__is0(c.display.pixel_pitch_mm) != fovsdf__is0(c.display.distance_mm))
+        c.display.distance_mm < 0.0f || fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
     *out = c;
     return FOV_OK;
@@ -1581,22 +1745,22 @@ FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[
 {
     float f[3], u[3], r[3], lf, lr;
     if (!cam || !right || !up || !fwd) return FOV_ERR_NULL;
-    if (!fovsdf__finite3(cam->pos) || !fovsdf__finite3(cam->target) || !fovsdf__finite3(cam->up))
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
         return FOV_ERR_NOT_FINITE;
     f[0] = cam->target[0] - cam->pos[0];
     f[1] = cam->target[1] - cam->pos[1];
     f[2] = cam->target[2] - cam->pos[2];
     u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
-    if (fovsdf__is0(u[0]) && fovsdf__is0(u[1]) && fovsdf__is0(u[2])) u[1] = 1.0f;
-    fovsdf__prescale(f); /* a tiny (1e-30) or huge (1e30) up hint or view vector is valid */
-    fovsdf__prescale(u);
+    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
+    fov__prescale(f); /* a tiny (1e-30) or huge (1e30) up hint or view vector is valid */
+    fov__prescale(u);
     lf = fovsdf__normalize(f);
-    if (!(lf > 0.0f) || !fovsdf__finite(lf) || !fovsdf__finite3(f)) return FOV_ERR_DEGENERATE;
-    if (!(fovsdf__normalize(u) > 0.0f) || !fovsdf__finite3(u)) return FOV_ERR_DEGENERATE;
-    fovsdf__cross(f, u, r);
+    if (!(lf > 0.0f) || !fov__finite(lf) || !fov__finite3(f)) return FOV_ERR_DEGENERATE;
+    if (!(fovsdf__normalize(u) > 0.0f) || !fov__finite3(u)) return FOV_ERR_DEGENERATE;
+    fov__cross(f, u, r);
     lr = fovsdf__normalize(r);
     if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
-    fovsdf__cross(r, f, u);
+    fov__cross(r, f, u);
     fovsdf__normalize(u);
     right[0] = r[0]; right[1] = r[1]; right[2] = r[2];
     up[0] = u[0]; up[1] = u[1]; up[2] = u[2];
@@ -1627,70 +1791,11 @@ FOVSDF_API void fovsdf_scene_set_program(fovsdf_scene *s, const fovsdf_program *
 }
 
 /* The shared eccentricity model (see fov_display). */
-FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
-                                      uint32_t width, uint32_t height, fov_gaze gaze)
-{
-    float f, v[3];
-    fov_display z;
-    if (!m) return FOV_ERR_NULL;
-    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
-    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
-    if (width > FOVSDF_MAX_DIM || height > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
-    if (!fovsdf__finite(gaze.x) || !fovsdf__finite(gaze.y) || !fovsdf__finite(cam_fov_y_deg) ||
-        !fovsdf__finite(d->fov_y_deg) || !fovsdf__finite(d->pixel_pitch_mm) ||
-        !fovsdf__finite(d->distance_mm) || !fovsdf__finite(d->axis_dx) || !fovsdf__finite(d->axis_dy))
-        return FOV_ERR_NOT_FINITE;
-    if (d->fov_y_deg > 0.0f) {
-        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVSDF__TAN(0.5f * d->fov_y_deg * FOVSDF__DEG);
-    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
-        f = d->distance_mm / d->pixel_pitch_mm;
-    } else if (d->fov_y_deg < 0.0f || !fovsdf__is0(d->pixel_pitch_mm) || !fovsdf__is0(d->distance_mm)) {
-        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by only one of pitch, distance */
-    } else {
-        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
-        f = 0.5f * (float)height / FOVSDF__TAN(0.5f * cam_fov_y_deg * FOVSDF__DEG);
-    }
-    if (!(f > 0.0f) || !fovsdf__finite(f)) return FOV_ERR_DEGENERATE;
-    m->cx = 0.5f * (float)width + d->axis_dx;
-    m->cy = 0.5f * (float)height + d->axis_dy;
-    m->f_px = f;
-    m->gx = gaze.x;
-    m->gy = gaze.y;
-    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
-    if (!fovsdf__finite3(v)) return FOV_ERR_INVALID_ARG;
-    if (!fovsdf__finite(fovsdf__dot(v, v))) {
-        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
-           largest component first (any finite gaze works; the usual range is untouched) */
-        float s = fovsdf__maxf(fovsdf__maxf(fovsdf__absf(v[0]), fovsdf__absf(v[1])), v[2]);
-        v[0] /= s; v[1] /= s; v[2] /= s;
-    }
-    fovsdf__normalize(v);
-    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
-    return FOV_OK;
-}
-
-FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y)
-{
-    float v[3], c[3], s, co;
-    if (!m) return 0.0f;
-    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
-    fovsdf__cross(v, m->g, c);
-    s = fovsdf__len(c);
-    co = fovsdf__dot(v, m->g);
-    return FOVSDF__ATAN2(s, co) * (180.0f / FOVSDF__PI); /* atan2 keeps small angles exact */
-}
-
-FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
-{
-    /* d(angle)/d(pixels) along the radial direction at the gaze: f / (f^2 + r^2) radians per
-       pixel, with r the gaze's distance from the axis; its inverse in pixels per degree. */
-    float rx, ry, r2, ppd;
-    if (!m) return 0.0f;
-    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
-    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOVSDF__DEG;
-    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* a gaze beyond ~1e19 px: FLT_MAX, not inf */
-}
+FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
+                                      uint32_t w, uint32_t h, fov_gaze g)
+{ return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVSDF_MAX_DIM); }
+FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
+FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
 
 /* ---- node validation: the one check of the builder and of fovsdf_program_build ------------ */
 /* Lengths of the scene (sizes, radii, offsets, periods, blend radii) are at most this in
@@ -1699,13 +1804,13 @@ FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m)
 /* A position every component of which lies within FOVSDF__MAX_LEN of the origin. */
 FOVSDF__PRIV int fovsdf__coord_ok(const float v[3])
 {
-    return fovsdf__absf(v[0]) <= FOVSDF__MAX_LEN && fovsdf__absf(v[1]) <= FOVSDF__MAX_LEN &&
-           fovsdf__absf(v[2]) <= FOVSDF__MAX_LEN;
+    return fov__absf(v[0]) <= FOVSDF__MAX_LEN && fov__absf(v[1]) <= FOVSDF__MAX_LEN &&
+           fov__absf(v[2]) <= FOVSDF__MAX_LEN;
 }
 /* Every linear RGB value the library returns lies in [0, this] (the largest half float). */
 #define FOVSDF__RGB_MAX 65504.0f
 
-#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+#ifndef FOV_NO_ERROR_STRINGS
 FOVSDF__PRIV uint32_t fovsdf__app(char *buf, uint32_t n, uint32_t cap, const char *s)
 {
     while (*s && n + 1u < cap) buf[n++] = *s++;
@@ -1741,11 +1846,11 @@ FOVSDF__PRIV const char *fovsdf__node_name(uint32_t t)
     return t < (uint32_t)_FOVSDF_NODE_NUM ? names[t] : "unknown";
 }
 
-/* Logs "<who>: node <index> (<type>): [f<field> ]<rule>" (FOV_DEBUG) and returns r. */
+/* Logs "<who>: node <index> (<type>): [f<field> ]<rule>" and returns r. */
 FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, const char *who, uint32_t index,
                                           uint32_t type, int field, const char *rule, uint32_t line)
 {
-#if defined(FOV_DEBUG) && !defined(FOV_NO_ERROR_STRINGS)
+#ifndef FOV_NO_ERROR_STRINGS
     char buf[192];
     uint32_t n = 0;
     n = fovsdf__app(buf, n, sizeof buf, who);
@@ -1760,10 +1865,10 @@ FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, co
         n = fovsdf__app(buf, n, sizeof buf, " ");
     }
     (void)fovsdf__app(buf, n, sizeof buf, rule);
-    return fovsdf__err(lg, r, buf, line);
+    return fov__err(lg, "fovsdf", r, buf, line);
 #else
     (void)who; (void)index; (void)type; (void)field; (void)rule;
-    return fovsdf__err(lg, r, (const char *)0, line);
+    return fov__err(lg, "fovsdf", r, "", line);
 #endif
 }
 
@@ -1777,7 +1882,7 @@ FOVSDF__PRIV uint32_t fovsdf__node_nf(uint32_t t)
 
 #define FOVSDF__NCK(cond, code, field, rule)                                                                 \
     do {                                                                                                     \
-        if (!(cond)) return fovsdf__node_fail(lg, code, who, index, n->type, field, FOVSDF__MSG(rule), (uint32_t)__LINE__); \
+        if (!(cond)) return fovsdf__node_fail(lg, code, who, index, n->type, field, FOV__MSG(rule), (uint32_t)__LINE__); \
     } while (0)
 
 /* Validates node n (the node at index `index`): its type, its children (indices in
@@ -1796,14 +1901,14 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
                 "child b must be an existing node index (builder: an earlier node)");
     nf = fovsdf__node_nf(t);
     for (k = 0; k < nf; ++k)
-        FOVSDF__NCK(fovsdf__finite(f[k]), FOV_ERR_NOT_FINITE, (int)k, "is NaN or infinite");
+        FOVSDF__NCK(fov__finite(f[k]), FOV_ERR_NOT_FINITE, (int)k, "is NaN or infinite");
     /* lengths: everything but the plane normal, the rotation matrix, the bulb's power and the
        terrain's distance scale */
     for (k = 0; k < nf; ++k) {
         if ((t == FOVSDF_NODE_PLANE && k < 3u) || t == FOVSDF_NODE_ROTATE || t == FOVSDF_NODE_MANDELBULB ||
             (t == FOVSDF_NODE_TERRAIN && k == 2u))
             continue;
-        FOVSDF__NCK(fovsdf__absf(f[k]) <= FOVSDF__MAX_LEN, FOV_ERR_LIMIT, (int)k,
+        FOVSDF__NCK(fov__absf(f[k]) <= FOVSDF__MAX_LEN, FOV_ERR_LIMIT, (int)k,
                     "beyond 1e18 in magnitude (the float envelope of scene lengths)");
     }
     switch (t) {
@@ -1831,7 +1936,7 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
         FOVSDF__NCK(f[1] > 0.0f || f[2] > 0.0f, FOV_ERR_INVALID_ARG, 1, "bottom or top radius must be > 0");
         break;
     case FOVSDF_NODE_PLANE:
-        FOVSDF__NCK(!(fovsdf__is0(f[0]) && fovsdf__is0(f[1]) && fovsdf__is0(f[2])), FOV_ERR_DEGENERATE, 0,
+        FOVSDF__NCK(!(fov__is0(f[0]) && fov__is0(f[1]) && fov__is0(f[2])), FOV_ERR_DEGENERATE, 0,
                     "normal (f0..f2) must not be zero");
         break;
     case FOVSDF_NODE_MENGER:
@@ -1857,7 +1962,7 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
         for (i = 0; i < 3u; ++i)
             for (j = 0; j < 3u; ++j) {
                 float d = f[3u * i] * f[3u * j] + f[3u * i + 1u] * f[3u * j + 1u] + f[3u * i + 2u] * f[3u * j + 2u];
-                FOVSDF__NCK(fovsdf__absf(d - (i == j ? 1.0f : 0.0f)) <= 1e-3f, FOV_ERR_INVALID_ARG, -1,
+                FOVSDF__NCK(fov__absf(d - (i == j ? 1.0f : 0.0f)) <= 1e-3f, FOV_ERR_INVALID_ARG, -1,
                             "f0..f8 must be a rotation matrix (rows orthonormal within 1e-3)");
             }
         break;
@@ -1904,7 +2009,8 @@ FOVSDF__PRIV int32_t fovsdf__add(fovsdf_builder *b, uint32_t type, int32_t x, in
     if (!b) return -1;
     if (b->err != FOV_OK) return -1;
     if (b->count >= b->cap || b->count >= 0x7fffffffu) {
-        b->err = fovsdf__err(&b->logger, FOV_ERR_TOO_SMALL, FOVSDF__MSG("builder: node array full (cap)"), (uint32_t)__LINE__);
+        b->err = fov__err(&b->logger, "fovsdf", FOV_ERR_TOO_SMALL,
+                          FOV__MSG("builder: node array full (cap)"), (uint32_t)__LINE__);
         return -1;
     }
     n = &b->nodes[b->count]; /* written, but counted only when valid */
@@ -1921,10 +2027,10 @@ FOVSDF__PRIV int32_t fovsdf__add(fovsdf_builder *b, uint32_t type, int32_t x, in
 }
 FOVSDF__PRIV int32_t fovsdf__bad(fovsdf_builder *b, fov_result r, const char *msg, uint32_t line)
 {
-    if (b && b->err == FOV_OK) b->err = fovsdf__err(&b->logger, r, msg, line);
+    if (b && b->err == FOV_OK) b->err = fov__err(&b->logger, "fovsdf", r, msg, line);
     return -1;
 }
-#define FOVSDF__BAD(b, r, msg) fovsdf__bad(b, r, FOVSDF__MSG(msg), (uint32_t)__LINE__)
+#define FOVSDF__BAD(b, r, msg) fovsdf__bad(b, r, FOV__MSG(msg), (uint32_t)__LINE__)
 
 FOVSDF_API int32_t fovsdf_sphere(fovsdf_builder *b, float r)
 {
@@ -1998,8 +2104,8 @@ FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float freq
     g *= amplitude * frequency;
     f[0] = amplitude; f[1] = frequency;
     /* 1 / sqrt(1 + g^2), or 1 / g where g^2 would overflow (a slope bound above 1e15) */
-    f[2] = fovsdf__absf(g) > 1e15f ? 1.0f / fovsdf__absf(g) : 1.0f / FOVSDF__SQRT(1.0f + g * g);
-    if (!fovsdf__finite(f[2])) f[2] = 0.0f; /* NaN inputs: node_check reports them first */
+    f[2] = fov__absf(g) > 1e15f ? 1.0f / fov__absf(g) : 1.0f / FOV__SQRT(1.0f + g * g);
+    if (!fov__finite(f[2])) f[2] = 0.0f; /* NaN inputs: node_check reports them first */
     return fovsdf__add(b, FOVSDF_NODE_TERRAIN, -1, -1, f, 3, &octaves, 1);
 }
 FOVSDF__PRIV int32_t fovsdf__binop(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y, float k, int smooth)
@@ -2022,11 +2128,11 @@ FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float a
 {
     float a[3], f[9], c, s, t;
     a[0] = ax; a[1] = ay; a[2] = az;
-    if (!fovsdf__finite3(a) || !fovsdf__finite(angle_deg))
+    if (!fov__finite3(a) || !fov__finite(angle_deg))
         return FOVSDF__BAD(b, FOV_ERR_NOT_FINITE, "builder: rotate axis or angle is NaN or infinite");
     if (!(fovsdf__normalize(a) > 0.0f)) return FOVSDF__BAD(b, FOV_ERR_DEGENERATE, "builder: rotate axis is zero");
-    c = FOVSDF__COS(angle_deg * FOVSDF__DEG);
-    s = FOVSDF__SIN(angle_deg * FOVSDF__DEG);
+    c = FOV__COS(angle_deg * FOV__DEG);
+    s = FOV__SIN(angle_deg * FOV__DEG);
     t = 1.0f - c;
     /* Rodrigues: rotation matrix R (object -> world), row-major */
     f[0] = c + a[0] * a[0] * t;        f[1] = a[0] * a[1] * t - a[2] * s; f[2] = a[0] * a[2] * t + a[1] * s;
@@ -2109,7 +2215,7 @@ FOVSDF__PRIV void fovsdf__prim_bound(const fovsdf_node *n, fovsdf__bsph *o)
         o->r = 0.5f * fovsdf__len3f(f[3] - f[0], f[4] - f[1], f[5] - f[2]) + f[6];
         break;
     case FOVSDF_NODE_CYLINDER: o->r = fovsdf__len2f(f[0], f[1]); break;
-    case FOVSDF_NODE_CONE: o->r = fovsdf__len2f(f[0], fovsdf__maxf(f[1], f[2])); break;
+    case FOVSDF_NODE_CONE: o->r = fovsdf__len2f(f[0], fov__maxf(f[1], f[2])); break;
     case FOVSDF_NODE_MENGER: o->r = f[0] * 1.7320508f; break;
     case FOVSDF_NODE_MANDELBULB: o->r = f[0] < 4.0f ? 1.5f : 1.25f; break;
     default: o->r = -1.0f; break; /* plane, terrain */
@@ -2122,7 +2228,7 @@ FOVSDF__PRIV void fovsdf__merge_bound(const fovsdf__bsph *a, const fovsdf__bsph 
     float d[3], l, r;
     if (a->r < 0.0f || b->r < 0.0f) { o->r = -1.0f; return; }
     d[0] = b->c[0] - a->c[0]; d[1] = b->c[1] - a->c[1]; d[2] = b->c[2] - a->c[2];
-    l = fovsdf__len(d);
+    l = fov__len(d);
     if (l + b->r <= a->r) { o->c[0] = a->c[0]; o->c[1] = a->c[1]; o->c[2] = a->c[2]; o->r = a->r; return; }
     if (l + a->r <= b->r) { o->c[0] = b->c[0]; o->c[1] = b->c[1]; o->c[2] = b->c[2]; o->r = b->r; return; }
     r = 0.5f * (l + a->r + b->r);
@@ -2167,7 +2273,7 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
                 ext += ((float)n->i[k] * f[k]) * ((float)n->i[k] * f[k]);
             }
         }
-        if (o->r >= 0.0f) o->r += FOVSDF__SQRT(ext);
+        if (o->r >= 0.0f) o->r += FOV__SQRT(ext);
         break;
     }
     case FOVSDF_NODE_MIRROR: {
@@ -2175,7 +2281,7 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
         float m = 0.0f;
         *o = *a;
         for (k = 0; k < 3; ++k) if (n->i[0] & (1 << k)) { m += o->c[k] * o->c[k]; o->c[k] = 0.0f; }
-        if (o->r >= 0.0f) o->r += FOVSDF__SQRT(m);
+        if (o->r >= 0.0f) o->r += FOV__SQRT(m);
         break;
     }
     case FOVSDF_NODE_ROUND: case FOVSDF_NODE_ONION: *o = *a; if (o->r >= 0.0f) o->r += f[0]; break;
@@ -2186,7 +2292,7 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
     if (n->type == FOVSDF_NODE_MANDELBULB) prims = 2u + (uint32_t)n->i[0] / 2u;
     if (n->type == FOVSDF_NODE_TERRAIN) prims = 1u + (uint32_t)n->i[0];
     /* extents beyond float (1e6 copies of a 1e18 period): unbounded, never a NaN centre */
-    if (!fovsdf__finite(o->r) || !fovsdf__finite3(o->c)) { o->r = -1.0f; o->c[0] = o->c[1] = o->c[2] = 0.0f; }
+    if (!fov__finite(o->r) || !fov__finite3(o->c)) { o->r = -1.0f; o->c[0] = o->c[1] = o->c[2] = 0.0f; }
     o->prims = prims > 0xffffffu ? 0xffffffu : prims;
     o->count = count > 0xffffffu ? 0xffffffu : count;
     o->done = 2;
@@ -2292,8 +2398,8 @@ FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t
                 mx[0] = mx[1] = mx[2] = -FLT_MAX;
                 for (i = (uint32_t)lo; i < (uint32_t)hi; ++i)
                     for (k = 0; k < 3; ++k) {
-                        mn[k] = fovsdf__minf(mn[k], bs[leaves[i]].c[k]);
-                        mx[k] = fovsdf__maxf(mx[k], bs[leaves[i]].c[k]);
+                        mn[k] = fov__minf(mn[k], bs[leaves[i]].c[k]);
+                        mx[k] = fov__maxf(mx[k], bs[leaves[i]].c[k]);
                     }
                 if (mx[1] - mn[1] > mx[ax] - mn[ax]) ax = 1;
                 if (mx[2] - mn[2] > mx[ax] - mn[ax]) ax = 2;
@@ -2457,9 +2563,9 @@ FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t cou
     if (count == 0 || root < 0 || (uint32_t)root >= count) return FOV_ERR_INVALID_ARG;
     if (count > 0x00ffffffu) return FOV_ERR_LIMIT;
     n2 = 2u * (size_t)count;
-    *bytes = 16u + fovsdf__align(sizeof(fovsdf__bsph) * n2) + fovsdf__align(sizeof(fovsdf_node) * n2) +
-             fovsdf__align(sizeof(int32_t) * (size_t)count) + fovsdf__align((size_t)count) +
-             fovsdf__align(sizeof(int32_t) * n2) + fovsdf__align(n2) + fovsdf__align(sizeof(fovsdf__ins) * n2 * 3u);
+    *bytes = 16u + fov__align(sizeof(fovsdf__bsph) * n2) + fov__align(sizeof(fovsdf_node) * n2) +
+             fov__align(sizeof(int32_t) * (size_t)count) + fov__align((size_t)count) +
+             fov__align(sizeof(int32_t) * n2) + fov__align(n2) + fov__align(sizeof(fovsdf__ins) * n2 * 3u);
     return FOV_OK;
 }
 
@@ -2523,22 +2629,22 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
     base = (unsigned char *)mem;
     base += (16u - ((uintptr_t)base & 15u)) & 15u; /* 16-byte align */
     bs = (fovsdf__bsph *)(void *)base;
-    base += fovsdf__align(sizeof(fovsdf__bsph) * n2);
+    base += fov__align(sizeof(fovsdf__bsph) * n2);
     nd = (fovsdf_node *)(void *)base;
-    base += fovsdf__align(sizeof(fovsdf_node) * n2);
+    base += fov__align(sizeof(fovsdf_node) * n2);
     leaves = (int32_t *)(void *)base;
-    base += fovsdf__align(sizeof(int32_t) * (size_t)count);
+    base += fov__align(sizeof(int32_t) * (size_t)count);
     marks = (uint8_t *)base;
-    base += fovsdf__align((size_t)count);
+    base += fov__align((size_t)count);
     stk = (int32_t *)(void *)base;
-    base += fovsdf__align(sizeof(int32_t) * n2);
+    base += fov__align(sizeof(int32_t) * n2);
     stage = (uint8_t *)base;
-    base += fovsdf__align(n2);
+    base += fov__align(n2);
     code = (fovsdf__ins *)(void *)base;
     for (k = 0; k < count; ++k) {
         nd[k] = nodes[k];
         if (nd[k].type == FOVSDF_NODE_PLANE) { /* a hand-made normal of any non-zero length, as the builder's */
-            float l2 = fovsdf__dot(nd[k].f, nd[k].f);
+            float l2 = fov__dot(nd[k].f, nd[k].f);
             if (!(l2 > 0.999999f && l2 < 1.000001f)) (void)fovsdf__normalize(nd[k].f);
         }
     }
@@ -2572,21 +2678,21 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
         section 2.2 lists the same set, notes seed000 section 2.1) ------------------------- */
 FOVSDF__PRIV float fovsdf__sd_box(float x, float y, float z, float bx, float by, float bz)
 {
-    float qx = fovsdf__absf(x) - bx, qy = fovsdf__absf(y) - by, qz = fovsdf__absf(z) - bz;
-    float o = fovsdf__len3f(fovsdf__maxf(qx, 0.0f), fovsdf__maxf(qy, 0.0f), fovsdf__maxf(qz, 0.0f));
-    return o + fovsdf__minf(fovsdf__maxf(qx, fovsdf__maxf(qy, qz)), 0.0f);
+    float qx = fov__absf(x) - bx, qy = fov__absf(y) - by, qz = fov__absf(z) - bz;
+    float o = fovsdf__len3f(fov__maxf(qx, 0.0f), fov__maxf(qy, 0.0f), fov__maxf(qz, 0.0f));
+    return o + fov__minf(fov__maxf(qx, fov__maxf(qy, qz)), 0.0f);
 }
 FOVSDF__PRIV float fovsdf__sd_frame3(float ax, float ay, float az)
 {
-    return fovsdf__len3f(fovsdf__maxf(ax, 0.0f), fovsdf__maxf(ay, 0.0f), fovsdf__maxf(az, 0.0f)) +
-           fovsdf__minf(fovsdf__maxf(ax, fovsdf__maxf(ay, az)), 0.0f);
+    return fovsdf__len3f(fov__maxf(ax, 0.0f), fov__maxf(ay, 0.0f), fov__maxf(az, 0.0f)) +
+           fov__minf(fov__maxf(ax, fov__maxf(ay, az)), 0.0f);
 }
 FOVSDF__PRIV float fovsdf__sd_box_frame(const float p[3], const float *f)
 {
-    float px = fovsdf__absf(p[0]) - f[0], py = fovsdf__absf(p[1]) - f[1], pz = fovsdf__absf(p[2]) - f[2];
+    float px = fov__absf(p[0]) - f[0], py = fov__absf(p[1]) - f[1], pz = fov__absf(p[2]) - f[2];
     float e = f[3];
-    float qx = fovsdf__absf(px + e) - e, qy = fovsdf__absf(py + e) - e, qz = fovsdf__absf(pz + e) - e;
-    return fovsdf__minf(fovsdf__minf(fovsdf__sd_frame3(px, qy, qz), fovsdf__sd_frame3(qx, py, qz)),
+    float qx = fov__absf(px + e) - e, qy = fov__absf(py + e) - e, qz = fov__absf(pz + e) - e;
+    return fov__minf(fov__minf(fovsdf__sd_frame3(px, qy, qz), fovsdf__sd_frame3(qx, py, qz)),
                         fovsdf__sd_frame3(qx, qy, pz));
 }
 FOVSDF__PRIV float fovsdf__sd_capsule(const float p[3], const float *f)
@@ -2594,8 +2700,8 @@ FOVSDF__PRIV float fovsdf__sd_capsule(const float p[3], const float *f)
     float pa[3], ba[3], h, bb;
     pa[0] = p[0] - f[0]; pa[1] = p[1] - f[1]; pa[2] = p[2] - f[2];
     ba[0] = f[3] - f[0]; ba[1] = f[4] - f[1]; ba[2] = f[5] - f[2];
-    bb = fovsdf__dot(ba, ba);
-    h = bb > 0.0f ? fovsdf__clampf(fovsdf__dot(pa, ba) / bb, 0.0f, 1.0f) : 0.0f;
+    bb = fov__dot(ba, ba);
+    h = bb > 0.0f ? fovsdf__clampf(fov__dot(pa, ba) / bb, 0.0f, 1.0f) : 0.0f;
     return fovsdf__len3f(pa[0] - ba[0] * h, pa[1] - ba[1] * h, pa[2] - ba[2] * h) - f[6];
 }
 FOVSDF__PRIV float fovsdf__sd_cone(const float p[3], const float *f)
@@ -2603,11 +2709,11 @@ FOVSDF__PRIV float fovsdf__sd_cone(const float p[3], const float *f)
     float h = f[0], r1 = f[1], r2 = f[2];
     float qx = fovsdf__len2f(p[0], p[2]), qy = p[1];
     float k2x = r2 - r1, k2y = 2.0f * h;
-    float cax = qx - fovsdf__minf(qx, qy < 0.0f ? r1 : r2), cay = fovsdf__absf(qy) - h;
+    float cax = qx - fov__minf(qx, qy < 0.0f ? r1 : r2), cay = fov__absf(qy) - h;
     float tt = fovsdf__clampf(((r2 - qx) * k2x + (h - qy) * k2y) / (k2x * k2x + k2y * k2y), 0.0f, 1.0f);
     float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
     float s = (cbx < 0.0f && cay < 0.0f) ? -1.0f : 1.0f;
-    return s * FOVSDF__SQRT(fovsdf__minf(cax * cax + cay * cay, cbx * cbx + cby * cby));
+    return s * FOV__SQRT(fov__minf(cax * cax + cay * cay, cbx * cbx + cby * cby));
 }
 FOVSDF__PRIV float fovsdf__sd_menger(const float p[3], int32_t iters)
 {
@@ -2621,16 +2727,16 @@ FOVSDF__PRIV float fovsdf__sd_menger(const float p[3], int32_t iters)
         int k;
         for (k = 0; k < 3; ++k) {
             float v = p[k] * s;
-            v = v - 2.0f * FOVSDF__FLOOR(v * 0.5f); /* mod 2 */
+            v = v - 2.0f * FOV__FLOOR(v * 0.5f); /* mod 2 */
             a[k] = v - 1.0f;
-            r[k] = fovsdf__absf(1.0f - 3.0f * fovsdf__absf(a[k]));
+            r[k] = fov__absf(1.0f - 3.0f * fov__absf(a[k]));
         }
         s *= 3.0f;
-        da = fovsdf__maxf(r[0], r[1]);
-        db = fovsdf__maxf(r[1], r[2]);
-        dc = fovsdf__maxf(r[2], r[0]);
-        c = (fovsdf__minf(da, fovsdf__minf(db, dc)) - 1.0f) / s;
-        d = fovsdf__maxf(d, c);
+        da = fov__maxf(r[0], r[1]);
+        db = fov__maxf(r[1], r[2]);
+        dc = fov__maxf(r[2], r[0]);
+        c = (fov__minf(da, fov__minf(db, dc)) - 1.0f) / s;
+        d = fov__maxf(d, c);
     }
     return d;
 }
@@ -2639,23 +2745,23 @@ FOVSDF__PRIV float fovsdf__sd_mandelbulb(const float p[3], float power, int32_t 
     float z[3], dr = 1.0f, r;
     int32_t i;
     z[0] = p[0]; z[1] = p[1]; z[2] = p[2];
-    r = fovsdf__len(z);
+    r = fov__len(z);
     for (i = 0; i < iters && r <= 2.0f; ++i) {
         float th, ph, zr, st;
         if (r < 1e-20f) { dr = 1.0f; break; }
-        th = FOVSDF__ATAN2(fovsdf__len2f(z[0], z[1]), z[2]) * power;
-        ph = FOVSDF__ATAN2(z[1], z[0]) * power;
-        zr = FOVSDF__POW(r, power - 1.0f);
+        th = FOV__ATAN2(fovsdf__len2f(z[0], z[1]), z[2]) * power;
+        ph = FOV__ATAN2(z[1], z[0]) * power;
+        zr = FOV__POW(r, power - 1.0f);
         dr = power * zr * dr + 1.0f;
         zr *= r;
-        st = FOVSDF__SIN(th);
-        z[0] = zr * st * FOVSDF__COS(ph) + p[0];
-        z[1] = zr * st * FOVSDF__SIN(ph) + p[1];
-        z[2] = zr * FOVSDF__COS(th) + p[2];
-        r = fovsdf__len(z);
+        st = FOV__SIN(th);
+        z[0] = zr * st * FOV__COS(ph) + p[0];
+        z[1] = zr * st * FOV__SIN(ph) + p[1];
+        z[2] = zr * FOV__COS(th) + p[2];
+        r = fov__len(z);
     }
     if (r < 1e-20f) return 0.0f;
-    return 0.5f * FOVSDF__LOG(r) * r / dr;
+    return 0.5f * FOV__LOG(r) * r / dr;
 }
 FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
 {
@@ -2664,8 +2770,8 @@ FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t o
     for (o = 0; o < oct; ++o) {
         float nx;
         /* beyond 1e30 (not finite soon after) the octaves are float noise: stop, never NaN */
-        if (!(fovsdf__absf(fx) < 1e30f && fovsdf__absf(fz) < 1e30f)) break;
-        h += w * FOVSDF__SIN(fx) * FOVSDF__SIN(fz);
+        if (!(fov__absf(fx) < 1e30f && fov__absf(fz) < 1e30f)) break;
+        h += w * FOV__SIN(fx) * FOV__SIN(fz);
         nx = (0.8f * fx - 0.6f * fz) * 2.03f; /* rotate and scale each octave */
         fz = (0.6f * fx + 0.8f * fz) * 2.03f;
         fx = nx;
@@ -2678,18 +2784,18 @@ FOVSDF__PRIV float fovsdf__prim(const fovsdf__ins *in, const float p[3])
 {
     const float *f = in->f;
     switch (in->sub) {
-    case FOVSDF_NODE_SPHERE: return fovsdf__len(p) - f[0];
+    case FOVSDF_NODE_SPHERE: return fov__len(p) - f[0];
     case FOVSDF_NODE_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0], f[1], f[2]);
     case FOVSDF_NODE_ROUND_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0] - f[3], f[1] - f[3], f[2] - f[3]) - f[3];
     case FOVSDF_NODE_BOX_FRAME: return fovsdf__sd_box_frame(p, f);
     case FOVSDF_NODE_TORUS: return fovsdf__len2f(fovsdf__len2f(p[0], p[2]) - f[0], p[1]) - f[1];
     case FOVSDF_NODE_CAPSULE: return fovsdf__sd_capsule(p, f);
     case FOVSDF_NODE_CYLINDER: {
-        float dx = fovsdf__len2f(p[0], p[2]) - f[1], dy = fovsdf__absf(p[1]) - f[0];
-        return fovsdf__minf(fovsdf__maxf(dx, dy), 0.0f) + fovsdf__len2f(fovsdf__maxf(dx, 0.0f), fovsdf__maxf(dy, 0.0f));
+        float dx = fovsdf__len2f(p[0], p[2]) - f[1], dy = fov__absf(p[1]) - f[0];
+        return fov__minf(fov__maxf(dx, dy), 0.0f) + fovsdf__len2f(fov__maxf(dx, 0.0f), fov__maxf(dy, 0.0f));
     }
     case FOVSDF_NODE_CONE: return fovsdf__sd_cone(p, f);
-    case FOVSDF_NODE_PLANE: return fovsdf__dot(p, f) + f[3];
+    case FOVSDF_NODE_PLANE: return fov__dot(p, f) + f[3];
     case FOVSDF_NODE_MENGER: {
         float q[3];
         q[0] = p[0] / f[0]; q[1] = p[1] / f[0]; q[2] = p[2] / f[0];
@@ -2716,7 +2822,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
     n = prog->count;
     p[0] = p_in[0]; p[1] = p_in[1]; p[2] = p_in[2];
     if (q) {
-        inflate = (q->inflate > 0.0f && fovsdf__finite(q->inflate)) ? q->inflate : 1.0f;
+        inflate = (q->inflate > 0.0f && fov__finite(q->inflate)) ? q->inflate : 1.0f;
         eps = q->eps;
     }
     while (pc < n) {
@@ -2731,7 +2837,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             } else {
                 d = fovsdf__prim(in, p);
             }
-            if (fovsdf__isnan(d)) d = FLT_MAX; /* last resort (no finite point reaches it in the envelope) */
+            if (fov__isnan(d)) d = FLT_MAX; /* last resort (no finite point reaches it in the envelope) */
             vs[vsp] = d;
             ms[vsp] = in->material;
             ++vsp;
@@ -2745,7 +2851,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             uint32_t sub = in->sub;
             /* an infinite operand (a point far beyond float's range of a subtree) makes the
                blend inf - inf: take the plain operator, its limit */
-            if (!fovsdf__finite(a) || !fovsdf__finite(b)) {
+            if (!fov__finite(a) || !fov__finite(b)) {
                 if (sub == FOVSDF_NODE_SMOOTH_UNION) sub = FOVSDF_NODE_UNION;
                 else if (sub == FOVSDF_NODE_SMOOTH_SUBTRACT) sub = FOVSDF_NODE_SUBTRACT;
                 else if (sub == FOVSDF_NODE_SMOOTH_INTERSECT) sub = FOVSDF_NODE_INTERSECT;
@@ -2771,7 +2877,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         }
         case FOVSDF__OP_UNARY:
             if (in->sub == FOVSDF_NODE_ROUND) vs[vsp - 1] -= in->f[0];
-            else vs[vsp - 1] = fovsdf__absf(vs[vsp - 1]) - in->f[0];
+            else vs[vsp - 1] = fov__absf(vs[vsp - 1]) - in->f[0];
             ++pc;
             break;
         case FOVSDF__OP_PUSHP: {
@@ -2792,15 +2898,15 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             case FOVSDF_NODE_REPEAT:
                 for (k = 0; k < 3; ++k) {
                     if (f[k] > 0.0f) {
-                        float c = FOVSDF__FLOOR(p[k] / f[k] + 0.5f);
-                        if (!fovsdf__finite(c)) c = 0.0f; /* |p| / period beyond float: no fold, never inf - inf */
+                        float c = FOV__FLOOR(p[k] / f[k] + 0.5f);
+                        if (!fov__finite(c)) c = 0.0f; /* |p| / period beyond float: no fold, never inf - inf */
                         if (in->i[k] > 0) c = fovsdf__clampf(c, -(float)in->i[k], (float)in->i[k]);
                         p[k] -= f[k] * c;
                     }
                 }
                 break;
             default: /* mirror */
-                for (k = 0; k < 3; ++k) if (in->i[0] & (1 << k)) p[k] = fovsdf__absf(p[k]);
+                for (k = 0; k < 3; ++k) if (in->i[0] & (1 << k)) p[k] = fov__absf(p[k]);
                 break;
             }
             ++pc;
@@ -2819,7 +2925,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
             if (!(inflate < 1.0f || inflate > 1.0f) && d2 > lim * lim) {
-                vs[vsp] = FOVSDF__SQRT(d2) - f[3];
+                vs[vsp] = FOV__SQRT(d2) - f[3];
                 ms[vsp] = -1;
                 ++vsp;
                 skipped += (uint32_t)in->i[0];
@@ -2837,7 +2943,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         q->material = vsp > 0 ? ms[0] : -1;
     }
     /* finite always: +-inf (a point whose distance is beyond float) becomes +-FLT_MAX */
-    return vsp > 0 ? (fovsdf__isnan(vs[0]) ? FLT_MAX : fovsdf__clampf(vs[0], -FLT_MAX, FLT_MAX)) : FLT_MAX;
+    return vsp > 0 ? (fov__isnan(vs[0]) ? FLT_MAX : fovsdf__clampf(vs[0], -FLT_MAX, FLT_MAX)) : FLT_MAX;
 }
 
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
@@ -2872,7 +2978,7 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
     }
     if (st) st->evals++;
     d *= inv_lip;
-    return fovsdf__finite(d) ? d : FLT_MAX;
+    return fov__finite(d) ? d : FLT_MAX;
 }
 FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const float p[3], float eps, int32_t *mat,
                                    fovsdf_stats *st)
@@ -2884,17 +2990,17 @@ FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const 
    1.8e19 (the squared length would be inf and make every ray hit at its start). */
 FOVSDF__PRIV float fovsdf__ulp0(const float ro[3])
 {
-    float l = fovsdf__maxf(fovsdf__absf(ro[0]), fovsdf__maxf(fovsdf__absf(ro[1]), fovsdf__absf(ro[2]))), q[3];
+    float l = fov__maxf(fov__absf(ro[0]), fov__maxf(fov__absf(ro[1]), fov__absf(ro[2]))), q[3];
     if (!(l > 0.0f)) return 0.0f;
-    if (l < 1e18f) return 8.0f * FLT_EPSILON * fovsdf__len(ro);
+    if (l < 1e18f) return 8.0f * FLT_EPSILON * fov__len(ro);
     q[0] = ro[0] / l; q[1] = ro[1] / l; q[2] = ro[2] / l;
-    return 8.0f * FLT_EPSILON * l * fovsdf__len(q);
+    return 8.0f * FLT_EPSILON * l * fov__len(q);
 }
 
 FOVSDF__PRIV float fovsdf__thr(const fovsdf__marcher *m, float t)
 {
     float a = m->eps, b = m->eps_cone * t, c = m->ulp0 + m->ulp1 * t;
-    return fovsdf__maxf(a, fovsdf__maxf(b, c));
+    return fov__maxf(a, fov__maxf(b, c));
 }
 
 /* The refinement's margin at t: 1 % of the threshold plus 4 ulps of |camera| + t (the float
@@ -2920,12 +3026,12 @@ FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], 
     int i;
     if (!(t2 <= m->t_max) || !(t2 > t + d)) return 0;
     for (i = 0; i < 3; ++i) { a[i] = ro[i] + rd[i] * (t + d); f[i] = ro[i] + rd[i] * t2; }
-    if (!fovsdf__finite3(a) || !fovsdf__finite3(f)) return 0;
+    if (!fov__finite3(a) || !fov__finite3(f)) return 0;
     fb = fovsdf__eval_sc(m->sc, m->inv_lip, f, fovsdf__thr(m, t2), mat ? &m2 : 0, st);
     /* the secant found the surface (F at least 4 times closer than the hit; a ray running
        along a curved surface keeps the hit where the threshold stopped it), and F is not
        inside by more than the margin */
-    if (!(fovsdf__absf(fb) <= 0.25f * d && fb > -fovsdf__mg(m, t2))) return 0;
+    if (!(fov__absf(fb) <= 0.25f * d && fb > -fovsdf__mg(m, t2))) return 0;
     /* the normal: the secant's slope sl is the derivative along the ray; two forward
        differences from F across it give the rest. The step: at least the threshold, and large
        enough that the float noise of the differences (u, 8 ulps of the position) tilts n by
@@ -2933,38 +3039,38 @@ FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], 
        (t2 - t)^2 / (2 d) for a plane (sin(incidence) = d / (t2 - t)) */
     u = m->ulp0 + m->ulp1 * t2;
     s = t2 - t;
-    e = fovsdf__maxf(fovsdf__thr(m, t2), FOVSDF__SQRT(u * (s * s / (2.0f * d))));
+    e = fov__maxf(fovsdf__thr(m, t2), FOV__SQRT(u * (s * s / (2.0f * d))));
     {
         float ax[3] = { 0.0f, 0.0f, 0.0f }, b1[3], b2[3], g1, g2;
-        int k = fovsdf__absf(rd[0]) <= fovsdf__absf(rd[1]) ? (fovsdf__absf(rd[0]) <= fovsdf__absf(rd[2]) ? 0 : 2)
-                                                           : (fovsdf__absf(rd[1]) <= fovsdf__absf(rd[2]) ? 1 : 2);
+        int k = fov__absf(rd[0]) <= fov__absf(rd[1]) ? (fov__absf(rd[0]) <= fov__absf(rd[2]) ? 0 : 2)
+                                                           : (fov__absf(rd[1]) <= fov__absf(rd[2]) ? 1 : 2);
         ax[k] = 1.0f;
-        fovsdf__cross(rd, ax, b1);
+        fov__cross(rd, ax, b1);
         if (!(fovsdf__normalize(b1) > 0.0f)) return 0;
-        fovsdf__cross(rd, b1, b2);
+        fov__cross(rd, b1, b2);
         for (i = 0; i < 3; ++i) q[i] = f[i] + e * b1[i];
-        if (!fovsdf__finite3(q)) return 0;
+        if (!fov__finite3(q)) return 0;
         g1 = fovsdf__eval_sc(m->sc, m->inv_lip, q, fovsdf__thr(m, t2), 0, st) - fb;
         for (i = 0; i < 3; ++i) q[i] = f[i] + e * b2[i];
-        if (!fovsdf__finite3(q)) return 0;
+        if (!fov__finite3(q)) return 0;
         g2 = fovsdf__eval_sc(m->sc, m->inv_lip, q, fovsdf__thr(m, t2), 0, st) - fb;
         for (i = 0; i < 3; ++i) n[i] = sl * e * rd[i] + g1 * b1[i] + g2 * b2[i];
     }
     if (!(fovsdf__normalize(n) > 0.0f)) return 0;
     for (i = 0; i < 3; ++i) q[i] = a[i] - f[i];
-    ha = fovsdf__dot(q, n); /* A's height above the tangent plane at F */
-    h2 = fovsdf__dot(q, q);
+    ha = fov__dot(q, n); /* A's height above the tangent plane at F */
+    h2 = fov__dot(q, q);
     if (!(ha > 0.0f)) return 0;
     hr = h2 / (2.0f * ha);  /* the ball through A tangent at F */
     /* |A - c|, |F - c| and f(c) round by a few ulps of H: that must leave most of the margin */
     if (!(hr <= FLT_MAX) || !(8.0f * FLT_EPSILON * hr < mg)) return 0;
     for (i = 0; i < 3; ++i) c[i] = f[i] + hr * n[i];
-    if (!fovsdf__finite3(c)) return 0;
+    if (!fov__finite3(c)) return 0;
     fc = fovsdf__eval_sc(m->sc, m->inv_lip, c, fovsdf__thr(m, t2), 0, st);
     if (!(fc > 0.0f) || !(fc < FLT_MAX)) return 0;
     r = fc + mg - 4.0f * FLT_EPSILON * hr;
     for (i = 0; i < 3; ++i) { a[i] -= c[i]; f[i] -= c[i]; }
-    if (!(fovsdf__len(a) <= r && fovsdf__len(f) <= r)) return 0;
+    if (!(fov__len(a) <= r && fov__len(f) <= r)) return 0;
     *tr = t2; *dr = fb;
     if (mat) *mat = m2;
     return 1;
@@ -2993,7 +3099,7 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
            subtends pixel_angle cos^2(theta) radially and pixel_angle cos(theta) tangentially;
            the smaller one, so wide fields of view do not turn near misses into hits */
-        float cz = fovsdf__clampf(fovsdf__dot(rd, m->fwd), 0.0f, 1.0f);
+        float cz = fovsdf__clampf(fov__dot(rd, m->fwd), 0.0f, 1.0f);
         mr = *m;
         mr.eps_cone = m->eps_cone * cz * cz;
         m = &mr;
@@ -3003,12 +3109,12 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
            evaluation tells, and such a ray starts over from the camera */
         float q[3], d0;
         q[0] = ro[0] + rd[0] * t0; q[1] = ro[1] + rd[1] * t0; q[2] = ro[2] + rd[2] * t0;
-        d0 = fovsdf__finite3(q) ? fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st) : FLT_MAX;
+        d0 = fov__finite3(q) ? fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st) : FLT_MAX;
         if (d0 < 0.0f) { t0 = 0.0f; t = 0.0f; }
     }
     /* a point that overflows (a camera near FLT_MAX) is never evaluated: FLT_MAX, a miss */
 #define FOVSDF__AT(tt) (p[0] = ro[0] + rd[0] * (tt), p[1] = ro[1] + rd[1] * (tt), p[2] = ro[2] + rd[2] * (tt), \
-                        fovsdf__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st) \
+                        fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st) \
                                            : FLT_MAX)
     if (m->method == FOVSDF_METHOD_RELAXED) {
         /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
@@ -3032,7 +3138,7 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
             pt = t; pd = d; hp = 1;
             /* an over-relaxed step may only leave the range after the overlap test has seen
                its end point: stop it at t_max (a plain step past t_max is a safe miss) */
-            t = (t + d > m->t_max) ? t + d : fovsdf__minf(t + om * d, m->t_max);
+            t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
         }
     } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
         /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
@@ -3050,18 +3156,18 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
             float T, R, M, om;
             if (!(t + r <= m->t_max)) break;
             if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            T = fovsdf__minf(t + z, m->t_max);
+            T = fov__minf(t + z, m->t_max);
             R = FOVSDF__AT(T);
             ++steps;
             /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
-            if (z > r && T - t > fovsdf__absf(R) + r) { sl = -1.0f; z = r; continue; }
-            M = (R - r) / fovsdf__maxf(T - t, 1e-20f);
+            if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
+            M = (R - r) / fov__maxf(T - t, 1e-20f);
             sl += m->beta * (M - sl);
             pt = t; pd = r; hp = 1;
             t = T; r = R; d = r;
             if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
             om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
-            z = r * fovsdf__maxf(1.0f, om);
+            z = r * fov__maxf(1.0f, om);
         }
     } else if (m->method == FOVSDF_METHOD_BV2018) {
         /* Balint & Valasek 2018: fit a line through the last two distance samples and step
@@ -3082,10 +3188,10 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
                 float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
                 z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
             }
-            T = fovsdf__minf(t + z, m->t_max);
+            T = fov__minf(t + z, m->t_max);
             R = FOVSDF__AT(T);
             ++steps;
-            if (have && z > r && T - t > r + fovsdf__absf(R)) { have = 0; continue; }
+            if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
             dp = T - t; rp = r; have = 1;
             pt = t; pd = r; hp = 1;
             t = T; r = R; d = r;
@@ -3142,7 +3248,7 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
        depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
        a wall thinner than 2 mg is below what the refinement can see. */
 #define FOVSDF__MG(tt) fovsdf__mg(m, tt)
-    if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fovsdf__finite(d)) {
+    if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fov__finite(d)) {
         /* hit at the first evaluation (a head start next to the surface): one plain step
            (inside the sample's sphere) gives the second sample the secant needs (kept only
            when it gets closer) */
@@ -3150,8 +3256,8 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         int32_t m2 = 0;
         if (t2 <= m->t_max) {
             d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                  fovsdf__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st) : FLT_MAX);
-            if (fovsdf__absf(d2) < d && d2 > -FOVSDF__MG(t2)) {
+                  fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st) : FLT_MAX);
+            if (fov__absf(d2) < d && d2 > -FOVSDF__MG(t2)) {
                 pt = t; pd = d; hp = 1;
                 t = t2; d = d2;
                 if (mat) *mat = m2;
@@ -3159,14 +3265,14 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
         }
     }
     if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
-        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fovsdf__absf(d), d2, mg = FOVSDF__MG(t);
+        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fov__absf(d), d2, mg = FOVSDF__MG(t);
         float tb = t, db = d;
         int32_t mb = 0;
         /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
            verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
            (within the sphere; one evaluation) */
-        if (d > 0.0f && fovsdf__finite(dt) && dt > d + 2.0f * mg &&
-            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fovsdf__minf(dt, 1024.0f * d), mg, &tb, &db, mat ? &mb : 0, st)) {
+        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
+            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb, &db, mat ? &mb : 0, st)) {
             t = tb; d = db;
             if (mat) *mat = mb;
             dt = 0.0f;
@@ -3174,15 +3280,15 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
             dt = fovsdf__clampf(dt, -lim, lim);
             if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
         }
-        if (!fovsdf__is0(dt) && fovsdf__finite(dt)) {
+        if (!fov__is0(dt) && fov__finite(dt)) {
             float t2 = t + dt;
             int32_t m2 = 0;
             if (t2 <= m->t_max && t2 >= t0) {
                 d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                      fovsdf__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st)
+                      fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st)
                                          : FLT_MAX);
-                if (fovsdf__absf(d2) < fovsdf__absf(d) && d2 > -FOVSDF__MG(t2) &&
-                    (dt <= fovsdf__maxf(d, 0.0f) || dt <= d + d2 + 2.0f * mg)) {
+                if (fov__absf(d2) < fov__absf(d) && d2 > -FOVSDF__MG(t2) &&
+                    (dt <= fov__maxf(d, 0.0f) || dt <= d + d2 + 2.0f * mg)) {
                     t = t2; d = d2;
                     if (mat) *mat = m2;
                 }
@@ -3227,9 +3333,9 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     float l;
     if (!scene || !mp || !ro || !rd || !hit) return FOV_ERR_NULL;
     if (!scene->dist && !scene->dist_ex) return FOV_ERR_NULL;
-    if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start) || !fovsdf__finite(mp->eps) ||
-        !fovsdf__finite(mp->eps_cone) || !fovsdf__finite(mp->t_max) || !fovsdf__finite(mp->omega) ||
-        !fovsdf__finite(mp->ar_beta) || !fovsdf__finite(mp->bv_relax) || !fovsdf__finite(scene->lipschitz))
+    if (!fov__finite3(ro) || !fov__finite3(rd) || !fov__finite(t_start) || !fov__finite(mp->eps) ||
+        !fov__finite(mp->eps_cone) || !fov__finite(mp->t_max) || !fov__finite(mp->omega) ||
+        !fov__finite(mp->ar_beta) || !fov__finite(mp->bv_relax) || !fov__finite(scene->lipschitz))
         return FOV_ERR_NOT_FINITE;
     if (mp->method > (uint32_t)FOVSDF_METHOD_BV2018 || mp->max_steps == 0 || mp->eps < 0.0f || mp->eps_cone < 0.0f ||
         !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) || t_start < 0.0f || scene->lipschitz < 0.0f)
@@ -3239,7 +3345,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f)) return FOV_ERR_INVALID_ARG;
     if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f)) return FOV_ERR_INVALID_ARG;
     if (mp->method == FOVSDF_METHOD_BV2018 && !(mp->bv_relax > 0.0f && mp->bv_relax <= 1.0f)) return FOV_ERR_INVALID_ARG;
-    l = fovsdf__len(rd);
+    l = fov__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     m.sc = scene;
     m.inv_lip = scene->lipschitz > 0.0f ? 1.0f / scene->lipschitz : 1.0f;
@@ -3288,7 +3394,7 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
         dv[i] = d;
         n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
     }
-    if (!fovsdf__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums to 0,
+    if (!fov__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums to 0,
                                   so differences from the first give the same normal */
         n[0] = n[1] = n[2] = 0.0f;
         for (i = 1; i < 4; ++i) {
@@ -3311,16 +3417,16 @@ FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const f
     uint64_t e0 = st->evals;
     if (!(t > 0.0f)) t = 1e-6f;
     inv = 1.0f / c->scene.lipschitz;
-    floor0 = 8.0f * FLT_EPSILON * fovsdf__len(p);
+    floor0 = 8.0f * FLT_EPSILON * fov__len(p);
     st->shadow_rays++;
     for (i = 0; i < c->cfg.shadow_steps && t < t_end; ++i) {
         float q[3], h;
         q[0] = p[0] + l[0] * t; q[1] = p[1] + l[1] * t; q[2] = p[2] + l[2] * t;
         h = fovsdf__eval_in(&c->scene, inv, q, c->cfg.eps, inflate, 0, st);
         if (t_att < 0.0f && k * h < t) t_att = t;
-        res = fovsdf__minf(res, k * h / t);
+        res = fov__minf(res, k * h / t);
         if (res < c->cfg.shadow_eps) { res = 0.0f; break; }
-        t += fovsdf__maxf(h, floor0 + 8.0f * FLT_EPSILON * t);
+        t += fov__maxf(h, floor0 + 8.0f * FLT_EPSILON * t);
     }
     st->evals_shadow += st->evals - e0;
     *t_out = t_att >= 0.0f ? t_att : t;
@@ -3350,12 +3456,12 @@ FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t 
         int i;
         c->scene.albedo(p, mat, rgb, c->scene.user);
         for (i = 0; i < 3; ++i)
-            if (!fovsdf__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
+            if (!fov__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
         return;
     }
     if (mat == 1) { /* checkerboard on x/z, unit squares (the clamp maps NaN to -1e6: a defined int) */
-        int32_t ix = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
-        int32_t iz = (int32_t)FOVSDF__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
+        int32_t ix = (int32_t)FOV__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
+        int32_t iz = (int32_t)FOV__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
         float v = ((ix + iz) & 1) ? 0.85f : 0.30f;
         rgb[0] = rgb[1] = rgb[2] = v;
         return;
@@ -3403,12 +3509,12 @@ FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const flo
     uint32_t i;
     fovsdf__albedo(c, p, material, alb);
     acc[0] = c->scene.ambient[0]; acc[1] = c->scene.ambient[1]; acc[2] = c->scene.ambient[2];
-    off = fovsdf__maxf(2.0f * c->cfg.eps, 16.0f * FLT_EPSILON * fovsdf__len(p));
+    off = fov__maxf(2.0f * c->cfg.eps, 16.0f * FLT_EPSILON * fov__len(p));
     for (i = 0; i < c->scene.num_lights; ++i) {
         const fovsdf_light *L = &c->scene.lights[i];
         float l[3], dist, att, ndl, sh = 1.0f;
         if (!fovsdf__light_dir(c, i, p, l, &dist, &att)) continue;
-        ndl = fovsdf__dot(n, l);
+        ndl = fov__dot(n, l);
         if (ndl <= 0.0f) continue; /* facing away: no light, no shadow ray */
         if (c->cfg.shading == FOVSDF_SHADE_FULL && L->shadow_k >= 0.0f) {
             float q[3], k = L->shadow_k > 0.0f ? L->shadow_k : 16.0f, tr, t0 = c->cfg.shadow_t0;
@@ -3447,10 +3553,10 @@ FOVSDF_API fovsdf_acuity fovsdf_acuity_default(void)
 FOVSDF_API float fovsdf_acuity_p(const fovsdf_acuity *a, float w)
 {
     float p;
-    if (!a || !fovsdf__finite(w) || !fovsdf__finite(a->A) || !fovsdf__finite(a->rate) || !fovsdf__finite(a->C)) return 0.0f;
+    if (!a || !fov__finite(w) || !fov__finite(a->A) || !fov__finite(a->rate) || !fov__finite(a->C)) return 0.0f;
     if (w <= a->fovea_deg) return 1.0f;
     if (a->outer_deg > 0.0f && w > a->outer_deg) return 0.0f;
-    p = a->A * FOVSDF__EXP(-a->rate * w) + a->C;
+    p = a->A * FOV__EXP(-a->rate * w) + a->C;
     return fovsdf__clampf(p, 0.0f, 1.0f);
 }
 
@@ -3498,13 +3604,13 @@ FOVSDF__PRIV int fovsdf__scene_ok(const fovsdf_scene *s, fov_result *r)
 {
     uint32_t i;
     if (!s->dist && !s->dist_ex) { *r = FOV_ERR_NULL; return 0; }
-    if (!fovsdf__finite(s->lipschitz) || !fovsdf__finite(s->t_max) || !fovsdf__finite3(s->ambient) ||
-        !fovsdf__finite3(s->sky_zenith) || !fovsdf__finite3(s->sky_horizon)) { *r = FOV_ERR_NOT_FINITE; return 0; }
+    if (!fov__finite(s->lipschitz) || !fov__finite(s->t_max) || !fov__finite3(s->ambient) ||
+        !fov__finite3(s->sky_zenith) || !fov__finite3(s->sky_horizon)) { *r = FOV_ERR_NOT_FINITE; return 0; }
     if (s->lipschitz < 0.0f || s->t_max < 0.0f) { *r = FOV_ERR_INVALID_ARG; return 0; }
     if (s->num_lights > FOVSDF_MAX_LIGHTS) { *r = FOV_ERR_LIMIT; return 0; }
     for (i = 0; i < s->num_lights; ++i) {
         const fovsdf_light *L = &s->lights[i];
-        if (!fovsdf__finite3(L->v) || !fovsdf__finite3(L->color) || !fovsdf__finite(L->range) || !fovsdf__finite(L->shadow_k)) {
+        if (!fov__finite3(L->v) || !fov__finite3(L->color) || !fov__finite(L->range) || !fov__finite(L->shadow_k)) {
             *r = FOV_ERR_NOT_FINITE;
             return 0;
         }
@@ -3533,16 +3639,16 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (!fovsdf__scene_ok(scene, &r)) FOVSDF__FAIL(lg, r, "init: bad scene");
     if (cam->width == 0 || cam->height == 0) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: zero image size");
     if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: image larger than FOVSDF_MAX_DIM");
-    if (!fovsdf__finite(cam->fov_y_deg) || !fovsdf__finite(cam->eye_offset) || !fovsdf__finite(gaze.x) || !fovsdf__finite(gaze.y))
+    if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) || !fov__finite(gaze.x) || !fov__finite(gaze.y))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
-    fov = fovsdf__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
+    fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
     r = fovsdf_camera_basis(cam, rt, up, fw);
     if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
     /* positions beyond 1e18 cannot be resolved (NUMERICS): their squares overflow float */
     if (!fovsdf__coord_ok(cam->pos))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.pos beyond 1e18 units from the origin (float cannot resolve it)");
-    if (fovsdf__absf(cam->eye_offset) > FOVSDF__MAX_LEN)
+    if (fov__absf(cam->eye_offset) > FOVSDF__MAX_LEN)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.eye_offset beyond 1e18 units (float cannot resolve the pinhole)");
     for (i = 0; i < 3; ++i) rt_o[i] = cam->pos[i] + rt[i] * cam->eye_offset;
     if (!fovsdf__coord_ok(rt_o))
@@ -3559,14 +3665,14 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     ctx->ecc = em;
     ctx->cfg = c;
     ctx->scene = *scene;
-    if (fovsdf__is0(ctx->scene.lipschitz)) ctx->scene.lipschitz = 1.0f;
+    if (fov__is0(ctx->scene.lipschitz)) ctx->scene.lipschitz = 1.0f;
     ctx->cam = *cam;
     ctx->cam.fov_y_deg = fov;
     ctx->gaze = gaze;
     ctx->origin[0] = cam->pos[0] + ctx->right[0] * cam->eye_offset;
     ctx->origin[1] = cam->pos[1] + ctx->right[1] * cam->eye_offset;
     ctx->origin[2] = cam->pos[2] + ctx->right[2] * cam->eye_offset;
-    tanh = FOVSDF__TAN(0.5f * fov * FOVSDF__DEG);
+    tanh = FOV__TAN(0.5f * fov * FOV__DEG);
     ctx->tan_half_y = tanh;
     ctx->aspect = (float)cam->width / (float)cam->height;
     ctx->pixel_angle = 2.0f * tanh / (float)cam->height;
@@ -3594,8 +3700,8 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
         /* a point so far off the image that u or v overflowed: the same direction from the
            offset scaled down by its largest component (px / width cannot overflow) */
         float a = px / (float)c->cam.width - 0.5f, b = 0.5f - py / (float)c->cam.height, k, f = 1.0f;
-        k = fovsdf__maxf(fovsdf__absf(a), fovsdf__absf(b));
-        if (k > 1.0f && fovsdf__finite(k)) { a /= k; b /= k; f = 1.0f / k; }
+        k = fov__maxf(fov__absf(a), fov__absf(b));
+        if (k > 1.0f && fov__finite(k)) { a /= k; b /= k; f = 1.0f / k; }
         u = a * 2.0f * c->tan_half_y * c->aspect;
         v = b * 2.0f * c->tan_half_y;
         rd[0] = c->fwd[0] * f + u * c->right[0] + v * c->up[0];
@@ -3610,7 +3716,7 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
     if (!c || !ro || !rd) return FOV_ERR_NULL;
-    if (!fovsdf__finite(px) || !fovsdf__finite(py))
+    if (!fov__finite(px) || !fov__finite(py))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "camera_ray: image point px or py is NaN or infinite");
     if (!fovsdf__ray(c, px, py, ro, rd))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
@@ -3624,11 +3730,11 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
     fovsdf__marcher m;
     float l;
     if (!c || !ro || !rd || !hit) return FOV_ERR_NULL;
-    if (!fovsdf__finite3(ro) || !fovsdf__finite3(rd) || !fovsdf__finite(t_start)) return FOV_ERR_NOT_FINITE;
+    if (!fov__finite3(ro) || !fov__finite3(rd) || !fov__finite(t_start)) return FOV_ERR_NOT_FINITE;
     if (t_start < 0.0f) return FOV_ERR_INVALID_ARG;
     if (!fovsdf__coord_ok(ro))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: ro beyond 1e18 units from the origin (float cannot resolve it)");
-    l = fovsdf__len(rd);
+    l = fov__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     fovsdf__marcher_from_ctx(c, &m, ro);
     m.verify_start = 0; /* a user's ray from t_start: hits lie in [t_start, t_max] */
@@ -3658,15 +3764,15 @@ FOVSDF__PRIV float fovsdf__srgb(float x)
 {
     if (!(x > 0.0f)) return 0.0f;
     if (x >= 1.0f) return 1.0f;
-    return x <= 0.0031308f ? 12.92f * x : 1.055f * FOVSDF__POW(x, 1.0f / 2.4f) - 0.055f;
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * FOV__POW(x, 1.0f / 2.4f) - 0.055f;
 }
 
 FOVSDF__PRIV void fovsdf__heat(float evals, float rgb[3])
 {
     /* blue (1 evaluation) -> green -> red (256 or more), log scale */
-    float s = fovsdf__clampf(FOVSDF__LOG(fovsdf__maxf(evals, 1.0f)) / FOVSDF__LOG(256.0f), 0.0f, 1.0f);
+    float s = fovsdf__clampf(FOV__LOG(fov__maxf(evals, 1.0f)) / FOV__LOG(256.0f), 0.0f, 1.0f);
     rgb[0] = fovsdf__clampf(2.0f * s - 1.0f, 0.0f, 1.0f);
-    rgb[1] = 1.0f - fovsdf__absf(2.0f * s - 1.0f);
+    rgb[1] = 1.0f - fov__absf(2.0f * s - 1.0f);
     rgb[2] = fovsdf__clampf(1.0f - 2.0f * s, 0.0f, 1.0f);
 }
 
@@ -3717,16 +3823,16 @@ FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *
             col[0] = col[1] = col[2] = 0.0f;
         } else {
             /* half the ray's own pixel footprint (as the hit threshold: pixel_angle cos^2) */
-            float cz = fovsdf__clampf(fovsdf__dot(rd, c->fwd), 0.0f, 1.0f);
+            float cz = fovsdf__clampf(fov__dot(rd, c->fwd), 0.0f, 1.0f);
             hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
-                                          : fovsdf__maxf(fovsdf__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * h->t),
+                                          : fov__maxf(fov__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * h->t),
                                                          4.0f * (m0->ulp0 + m0->ulp1 * h->t));
             fovsdf_normal(c, p, hn, n, st);
-            if (fovsdf__dot(n, rd) > 0.0f && h->dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+            if (fov__dot(n, rd) > 0.0f && h->dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
             if (c->cfg.shading == FOVSDF_SHADE_NORMALS) {
                 col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1]; col[2] = 0.5f + 0.5f * n[2];
             } else {
-                fovsdf__shade(c, p, n, mat, col, (sh_start && fovsdf__absf(h->t - sh_ref_t) <= sh_tol) ? sh_start : NULL, st);
+                fovsdf__shade(c, p, n, mat, col, (sh_start && fov__absf(h->t - sh_ref_t) <= sh_tol) ? sh_start : NULL, st);
             }
         }
     } else {
@@ -3802,7 +3908,7 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     fovsdf_stats local;
     float ro[3], rd[3];
     if (!c || !rgb) return FOV_ERR_NULL;
-    if (!fovsdf__finite(px) || !fovsdf__finite(py))
+    if (!fov__finite(px) || !fov__finite(py))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "shade_point: image point px or py is NaN or infinite");
     if (!fovsdf__ray(c, px, py, ro, rd))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
@@ -3884,12 +3990,12 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
     for (i = 0; i < 4; ++i) {
         float cs;
         (void)fovsdf_camera_ray(c, (i & 1) ? x1 : x0, (i & 2) ? y1 : y0, ro, d);
-        cs = fovsdf__dot(a, d);
+        cs = fov__dot(a, d);
         if (cs < cmin) cmin = cs;
     }
     cmin = fovsdf__clampf(cmin, 1e-6f, 1.0f);
     /* tan(acos(cmin)), widened by a few ulps of the dot products */
-    return FOVSDF__SQRT(fovsdf__maxf(1.0f - cmin * cmin, 0.0f)) / cmin * 1.0001f + 1e-6f;
+    return FOV__SQRT(fov__maxf(1.0f - cmin * cmin, 0.0f)) / cmin * 1.0001f + 1e-6f;
 }
 
 typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
@@ -3913,7 +4019,7 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
         py0 = cl.y0 > ry0 ? cl.y0 : ry0; py1 = cl.y1 < ry1 ? cl.y1 : ry1;
         if (px0 >= px1 || py0 >= py1) continue; /* not requested */
         k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        cs = 1.0f / FOVSDF__SQRT(1.0f + k * k); /* cos(alpha) */
+        cs = 1.0f / FOV__SQRT(1.0f + k * k); /* cos(alpha) */
         t = fovsdf__cone_march(c, mc, a, k, cl.t * cs, st);
         if (t < 0.0f) { /* proven empty: no full-resolution marching */
             for (y = py0; y < py1; ++y)
@@ -3968,7 +4074,7 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
     float wt[25];
     int32_t R, i, j, x, y;
     if (!rgb || !mask || !out) return FOV_ERR_NULL;
-    if (!fovsdf__finite(sigma)) return FOV_ERR_NOT_FINITE;
+    if (!fov__finite(sigma)) return FOV_ERR_NOT_FINITE;
     if (w == 0 || h == 0 || !(sigma >= 0.05f) || sigma > 8.0f || rgb == out) return FOV_ERR_INVALID_ARG;
     if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
     if (rgb_stride == 0) rgb_stride = 3u * w;
@@ -3977,7 +4083,7 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
     if (rgb_stride < 3u * w || out_stride < 3u * w || mask_stride < w) return FOV_ERR_TOO_SMALL;
     R = (int32_t)(3.0f * sigma);
     if ((float)R < 3.0f * sigma) ++R; /* ceil(3 sigma), at most 24 */
-    for (i = 0; i <= R; ++i) wt[i] = FOVSDF__EXP(-0.5f * (float)(i * i) / (sigma * sigma));
+    for (i = 0; i <= R; ++i) wt[i] = FOV__EXP(-0.5f * (float)(i * i) / (sigma * sigma));
     for (y = 0; y < (int32_t)h; ++y)
         for (x = 0; x < (int32_t)w; ++x) {
             const float *s = rgb + (size_t)y * rgb_stride + 3u * (size_t)x;
@@ -4089,9 +4195,9 @@ FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher
     float a[3], k, t;
     if (t_par < 0.0f) return -1.0f; /* the parent's cone is empty up to t_max: so is this one */
     k = fovsdf__cell_cone(c, x0, y0, x1, y1, a);
-    t = fovsdf__cone_march(c, m, a, k, t_par * (1.0f / FOVSDF__SQRT(1.0f + k * k)), st);
+    t = fovsdf__cone_march(c, m, a, k, t_par * (1.0f / FOV__SQRT(1.0f + k * k)), st);
     if (t < 0.0f) return -1.0f;
-    return fovsdf__minf(fovsdf__maxf(t, t_par), m->t_max);
+    return fov__minf(fov__maxf(t, t_par), m->t_max);
 }
 
 /* IPR, safe variant (heuristic_start 0): the same levels and tiles, but each cell's value is
@@ -4199,7 +4305,7 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     }
     st->evals_lowres += st->evals - e0;
     st->evals_shadow = es0; /* the low-resolution shadow rays count as the low-resolution pass */
-    tol = fovsdf__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
+    tol = fov__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
     for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
         for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
             fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
@@ -4341,10 +4447,10 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
             t0 = c->t_max;
             for (b = -f->r; b <= f->r; ++b)
-                for (a = -f->r; a <= f->r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
+                for (a = -f->r; a <= f->r; ++a) t0 = fov__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
         }
         e0 = f->st->evals; /* after the level-0 rays, which count themselves */
-        if ((f->cone || f->safe) && fovsdf__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
+        if ((f->cone || f->safe) && fov__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
             h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
         } else {
             fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
@@ -4379,10 +4485,10 @@ FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
         for (a = -1; a <= 1; ++a)
             t[(b + 1) * 3 + (a + 1)] = f->cone ? fovsdf__fov_mid(f, i + a, j + b, 0)->th : fovsdf__fov_l0(f, i + a, j + b);
     tmin = t[0];
-    for (a = 1; a < 9; ++a) tmin = fovsdf__minf(tmin, t[a]);
+    for (a = 1; a < 9; ++a) tmin = fov__minf(tmin, t[a]);
     gx = (t[2] + 2.0f * t[5] + t[8]) - (t[0] + 2.0f * t[3] + t[6]);
     gy = (t[6] + 2.0f * t[7] + t[8]) - (t[0] + 2.0f * t[1] + t[2]);
-    s = 8.0f * f->c->cfg.edge_threshold * fovsdf__maxf(tmin, 1e-6f);
+    s = 8.0f * f->c->cfg.edge_threshold * fov__maxf(tmin, 1e-6f);
     return gx * gx + gy * gy > s * s;
 }
 
@@ -4400,7 +4506,7 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
         float a[3], k, t;
         if (cl.x0 >= c->cam.width || cl.y0 >= c->cam.height) continue; /* off the image */
         k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOVSDF__SQRT(1.0f + k * k)), f->st); /* as CONE */
+        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOV__SQRT(1.0f + k * k)), f->st); /* as CONE */
         if (t < 0.0f || cl.x1 - cl.x0 <= 2u || cl.level >= c->cfg.cone_levels) {
             uint32_t u, v;
             for (v = cl.y0 / 2u; v < cl.y1 / 2u; ++v)
@@ -4486,7 +4592,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                     int32_t a, b;
                     t0 = c->t_max;
                     for (b = -f.r; b <= f.r; ++b)
-                        for (a = -f.r; a <= f.r; ++a) t0 = fovsdf__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
+                        for (a = -f.r; a <= f.r; ++a) t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
                 }
                 fovsdf__pixel(c, mp, x, y, o, st, t0, miss, NULL, 0.0f, 0.0f);
             } else if (!due) {
@@ -4856,7 +4962,7 @@ FOVSDF_API fov_result fovsdf_builtin_size(uint32_t id, size_t *bytes)
     FOV_MEMSET(&dummy, 0, sizeof dummy);
     r = fovsdf_program_size(&dummy, fovsdf__scene_nodes[id], 0, &prog);
     if (r != FOV_OK) return r;
-    *bytes = 16u + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]) + prog;
+    *bytes = 16u + fov__align(sizeof(fovsdf_program)) + fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]) + prog;
     return FOV_OK;
 }
 
@@ -4876,7 +4982,7 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
     base = (unsigned char *)mem;
     base += (16u - ((uintptr_t)base & 15u)) & 15u;
     prog = (fovsdf_program *)(void *)base;
-    nodes = (fovsdf_node *)(void *)(base + fovsdf__align(sizeof(fovsdf_program)));
+    nodes = (fovsdf_node *)(void *)(base + fov__align(sizeof(fovsdf_program)));
     FOV_MEMSET(o, 0, sizeof *o);
     fovsdf_builder_init(&b, nodes, fovsdf__scene_nodes[id]);
     switch (id) {
@@ -4890,9 +4996,9 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
     if (b.err != FOV_OK) return b.err;
     if (root < 0) return FOV_ERR_INVALID_ARG;
     r = fovsdf_program_build(prog, nodes, b.count, root,
-                             base + fovsdf__align(sizeof(fovsdf_program)) + fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]),
-                             bytes - (size_t)(base - (unsigned char *)mem) - fovsdf__align(sizeof(fovsdf_program)) -
-                                 fovsdf__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]));
+                             base + fov__align(sizeof(fovsdf_program)) + fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]),
+                             bytes - (size_t)(base - (unsigned char *)mem) - fov__align(sizeof(fovsdf_program)) -
+                                 fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]));
     if (r != FOV_OK) return r;
     fovsdf_scene_set_program(&o->scene, prog);
     o->program = prog;
@@ -4929,6 +5035,7 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
 
 #endif /* FOVSDF_IMPLEMENTATION */
 
+/* ==== FOV_SHARED_BEGIN license ============================================================== */
 /*
 ------------------------------------------------------------------------------
 This software is available under 2 licenses -- choose whichever you prefer.
@@ -4970,3 +5077,4 @@ ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
 WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
 ------------------------------------------------------------------------------
 */
+/* ==== FOV_SHARED_END license ================================================================ */

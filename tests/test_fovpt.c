@@ -72,8 +72,8 @@ static char *read_file(const char *path)
 }
 static const char *block(const char *text, size_t *len)
 {
-    const char *a = strstr(text, "/* ---- shared by fovsdf.h, fovlp.h and fovpt.h: keep this block byte-for-byte identical ---- */");
-    const char *e = a ? strstr(a, "/* ---- end of the shared block ---- */") : NULL;
+    const char *a = strstr(text, "/* ==== FOV_SHARED_BEGIN decl ");
+    const char *e = a ? strstr(a, "/* ==== FOV_SHARED_END decl ") : NULL;
     if (!a || !e) return NULL;
     *len = (size_t)(e - a);
     return a;
@@ -147,7 +147,7 @@ static void test_api(void)
               "preset: 6/10/20 as radii", " ");
         check(fovpt_layers_preset(&L, 7) == FOV_ERR_INVALID_ARG && fovpt_layers_preset(NULL, 0) == FOV_ERR_NULL, "preset bad id", " ");
     }
-    /* the shared block is byte-for-byte the same as fovsdf.h's */
+    /* the shared declarations are byte-for-byte the same as fovsdf.h's (tests/shared.sh: all) */
     {
         char *a = read_file("fovsdf.h"), *b = read_file("fovpt.h");
         size_t la = 0, lb = 0;

@@ -2634,14 +2634,14 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)pow(10.0, -30.0 + 60.0 * i / 100000.0);
         rf = sqrt((double)x);
-        w = dmax(w, fabs((double)fovsdf__sqrtf(x) - rf) / rf);
+        w = dmax(w, fabs((double)fov__sqrtf(x) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_sqrt_rel_1e-6", "max relative error %.3g on [1e-30, 1e30]", w);
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         x = (float)(-20.0 + 40.0 * i / 100000.0);
-        w = dmax(w, fabs((double)fovsdf__sinf(x) - sin((double)x)));
-        w = dmax(w, fabs((double)fovsdf__cosf(x) - cos((double)x)));
+        w = dmax(w, fabs((double)fov__sinf(x) - sin((double)x)));
+        w = dmax(w, fabs((double)fov__cosf(x) - cos((double)x)));
     }
     check(w <= 1e-6, "nolibm_sin_cos_abs_1e-6", "max absolute error %.3g on [-20, 20]", w);
     w = 0.0;
@@ -2649,14 +2649,14 @@ static void test_nolibm_math(void)
         double t;
         x = (float)(1.55 * i / 100000.0);
         t = tan((double)x);
-        w = dmax(w, fabs((double)(fovsdf__sinf(x) / fovsdf__cosf(x)) - t) / t);
+        w = dmax(w, fabs((double)(fov__sinf(x) / fov__cosf(x)) - t) / t);
     }
     check(w <= 1e-6, "nolibm_tan_rel_1e-6", "max relative error %.3g on (0, 1.55]", w);
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         double a = 2.0 * 3.14159265358979323846 * i / 100000.0;
         float yy = (float)(sin(a) * (1 + i % 7)), xx = (float)(cos(a) * (1 + i % 7));
-        w = dmax(w, fabs((double)fovsdf__atan2f(yy, xx) - atan2((double)yy, (double)xx)));
+        w = dmax(w, fabs((double)fov__atan2f(yy, xx) - atan2((double)yy, (double)xx)));
     }
     check(w <= 1e-6, "nolibm_atan2_abs_1e-6", "max absolute error %.3g rad over the circle", w);
     w = 0.0;
@@ -2664,7 +2664,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)(-80.0 + 160.0 * i / 100000.0);
         rf = exp((double)x);
-        w = dmax(w, fabs((double)fovsdf__expf(x) - rf) / rf);
+        w = dmax(w, fabs((double)fov__expf(x) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_exp_rel_1e-6", "max relative error %.3g on [-80, 80]", w);
     w = 0.0;
@@ -2672,7 +2672,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)pow(10.0, -30.0 + 60.0 * i / 100000.0);
         rf = log((double)x);
-        w = dmax(w, fabs((double)fovsdf__logf(x) - rf) / dmax(1.0, fabs(rf)));
+        w = dmax(w, fabs((double)fov__logf(x) - rf) / dmax(1.0, fabs(rf)));
     }
     check(w <= 1e-6, "nolibm_log_1e-6", "max error / max(1, |log x|) %.3g on [1e-30, 1e30]", w);
     w = 0.0;
@@ -2680,7 +2680,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)(0.003 + 0.997 * i / 100000.0);
         rf = pow((double)x, (double)(1.0f / 2.4f));
-        w = dmax(w, fabs((double)fovsdf__powf(x, 1.0f / 2.4f) - rf) / rf);
+        w = dmax(w, fabs((double)fov__powf(x, 1.0f / 2.4f) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_pow_srgb_rel_1e-6", "max relative error %.3g for x^(1/2.4), x in [0.003, 1]", w);
     w = 0.0;
@@ -2689,24 +2689,24 @@ static void test_nolibm_math(void)
         float yy = (float)(1 + i % 8);
         x = (float)(0.3 + 1.7 * i / 100000.0);
         rf = pow((double)x, (double)yy);
-        w = dmax(w, fabs((double)fovsdf__powf(x, yy) - rf) / rf);
+        w = dmax(w, fabs((double)fov__powf(x, yy) - rf) / rf);
     }
     /* exp(y log x) in float: the rounding of y log x alone costs |y log x| * 6e-8 */
     check(w <= 2e-6, "nolibm_pow_power_rel_2e-6", "max relative error %.3g for x^y, x in [0.3, 2], y in 1..8", w);
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         x = (float)(-1e7 + 2e7 * i / 100000.0) + 0.37f;
-        w = dmax(w, fabs((double)fovsdf__floorf(x) - floor((double)x)));
-        w = dmax(w, fabs((double)fovsdf__floorf(-0.5f * x) - floor(-0.5 * (double)x)));
+        w = dmax(w, fabs((double)fov__floorf(x) - floor((double)x)));
+        w = dmax(w, fabs((double)fov__floorf(-0.5f * x) - floor(-0.5 * (double)x)));
     }
     check(w == 0.0, "nolibm_floor_exact", "max error %.3g", w);
-    check(fovsdf__sqrtf(0.0f) == 0.0f && fovsdf__sqrtf(-1.0f) != fovsdf__sqrtf(-1.0f) && fovsdf__expf(-200.0f) == 0.0f &&
-              !fin(fovsdf__expf(100.0f)) && fovsdf__logf(0.0f) < -3e38f && fovsdf__logf(-1.0f) != fovsdf__logf(-1.0f) &&
-              fovsdf__floorf(-0.5f) == -1.0f && fovsdf__atan2f(0.0f, 0.0f) == 0.0f && fovsdf__powf(2.0f, 0.0f) == 1.0f,
+    check(fov__sqrtf(0.0f) == 0.0f && fov__sqrtf(-1.0f) != fov__sqrtf(-1.0f) && fov__expf(-200.0f) == 0.0f &&
+              !fin(fov__expf(100.0f)) && fov__logf(0.0f) < -3e38f && fov__logf(-1.0f) != fov__logf(-1.0f) &&
+              fov__floorf(-0.5f) == -1.0f && fov__atan2f(0.0f, 0.0f) == 0.0f && fov__powf(2.0f, 0.0f) == 1.0f,
           "nolibm_special_values", "sqrt(0) %g sqrt(-1) %g exp(-200) %g exp(100) %g log(0) %g log(-1) %g floor(-0.5) %g",
-          (double)fovsdf__sqrtf(0.0f), (double)fovsdf__sqrtf(-1.0f), (double)fovsdf__expf(-200.0f),
-          (double)fovsdf__expf(100.0f), (double)fovsdf__logf(0.0f), (double)fovsdf__logf(-1.0f),
-          (double)fovsdf__floorf(-0.5f));
+          (double)fov__sqrtf(0.0f), (double)fov__sqrtf(-1.0f), (double)fov__expf(-200.0f),
+          (double)fov__expf(100.0f), (double)fov__logf(0.0f), (double)fov__logf(-1.0f),
+          (double)fov__floorf(-0.5f));
 }
 #endif
 

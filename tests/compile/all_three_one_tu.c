@@ -1,6 +1,6 @@
 /* Compile test: every present header in one translation unit with FOV_IMPL (the project-wide
    implementation switch), included in one order and then again in the reverse order, so the
-   shared FOV_COMMON_DEFINED block and each once-guard are exercised. Compiled as C and as
+   shared blocks (FOV_SHARED_BEGIN decl / impl) and each once-guard are exercised. Compiled as C and as
    C++, linked and run. */
 #define FOV_IMPL
 #ifdef FOV_HAVE_FOVSDF

@@ -1,0 +1,582 @@
+/* fov_shared.h - the code fovsdf.h, fovlp.h and fovpt.h share, in one place.
+
+   Not a header to include: tools/sync_shared.py copies each region below (from its
+   FOV_SHARED_BEGIN line to its FOV_SHARED_END line) over the region of the same name in the
+   three headers, so the headers stay single files. tests/shared.sh checks that the three
+   copies are byte-identical and equal to this file. Names: public fov_ / FOV_, private
+   fov__ / FOV__. */
+
+/* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
+   header: edit tools/fov_shared.h and run `python3 tools/sync_shared.py` (tests/shared.sh
+   checks the copies).
+
+   CONFIGURATION shared by fovsdf.h, fovlp.h and fovpt.h (define before including the
+   implementation; the same value for every header in a translation unit)
+   FOV_DLL              export (in the translation unit with FOVxx_IMPLEMENTATION) or import
+                        the API of a shared library
+   FOV_ASSERT(c)        internal invariants only (default: assert.h, or nothing with NDEBUG)
+   FOV_NO_LIBM          use the built-in float approximations of the math functions below
+                        (relative error about 1e-6 or better on the ranges the libraries use)
+   FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F FOV_EXPF FOV_LOGF FOV_POWF
+                        math hooks: define all of them or none (an #error tells you)
+   FOV_MEMSET FOV_MEMCPY   memory hooks (default: simple loops; compilers may still emit
+                        calls to memset/memcpy for struct copies)
+   FOV_NO_ERROR_STRINGS compile out the message texts: the logger gets "" and
+                        *_result_string returns "" (for the smallest microcontroller builds)
+   Error messages are on by default: set the logger in a config (cfg.logger.func) and every
+   failure calls it with a code, a specific message and the header's source line. */
+#ifndef FOV_SHARED_DECL_INCLUDED
+#define FOV_SHARED_DECL_INCLUDED 1
+#define FOV_SHARED_REVISION 1 /* the revision of this block; headers that differ must not mix */
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(__GNUC__) || defined(__clang__)
+#define FOV__UNUSED __attribute__((unused))
+#else
+#define FOV__UNUSED
+#endif
+/* Linkage of public functions (each header's FOVxx_API picks one): FOV_DLL builds a shared
+   library (dllexport in the translation unit with the implementation, dllimport elsewhere on
+   Windows; default visibility with gcc and clang). */
+#if defined(FOV_DLL) && defined(_WIN32)
+#define FOV__API_EXPORT __declspec(dllexport)
+#define FOV__API_IMPORT __declspec(dllimport)
+#elif defined(FOV_DLL) && (defined(__GNUC__) || defined(__clang__))
+#define FOV__API_EXPORT __attribute__((visibility("default"))) extern
+#define FOV__API_IMPORT __attribute__((visibility("default"))) extern
+#else
+#define FOV__API_EXPORT extern
+#define FOV__API_IMPORT extern
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Result codes of every fallible function in the fov headers. */
+typedef enum fov_result {
+    FOV_OK = 0,
+    FOV_ERR_INVALID_ARG = -1,  /* a parameter is out of its documented range */
+    FOV_ERR_TOO_SMALL = -2,    /* the memory or buffer passed is smaller than required */
+    FOV_ERR_LIMIT = -3,        /* a size is above a hard cap or overflows size_t */
+    FOV_ERR_NULL = -4,         /* a required pointer is NULL */
+    FOV_ERR_NOT_FINITE = -5,   /* NaN or infinity where a finite number is required */
+    FOV_ERR_DEGENERATE = -6,   /* degenerate geometry: camera, display, scene */
+    FOV_ERR_UNSUPPORTED = -7,  /* a valid request this build or version does not support */
+    _FOV_RESULT_FORCE_I32 = 0x7FFFFFFF
+} fov_result;
+
+typedef enum fov_log_level {
+    FOV_LOG_ERROR = 1,
+    FOV_LOG_WARN = 2,
+    FOV_LOG_INFO = 3,
+    _FOV_LOG_LEVEL_FORCE_U32 = 0x7FFFFFFF
+} fov_log_level;
+
+/* Optional diagnostics: tag is the header ("fovsdf", "fovlp", "fovpt"), code a fov_result,
+   msg a specific text naming what was wrong and what is allowed (never NULL; "" when the
+   build defines FOV_NO_ERROR_STRINGS), line the header's source line that reported it. */
+typedef void (*fov_log_func)(const char *tag, uint32_t level, int32_t code, const char *msg,
+                             uint32_t line, void *user);
+typedef struct fov_logger {
+    fov_log_func func;
+    void *user;
+} fov_logger;
+
+/* Gaze point in image pixels, continuous: pixel (i, j) covers [i, i+1) x [j, j+1), so its
+   centre is (i + 0.5, j + 0.5); y grows downwards. Must be finite; it may lie off-screen. */
+typedef struct fov_gaze {
+    float x, y;
+} fov_gaze;
+
+/* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
+   f (in pixels) from the image plane; the axis meets the image at its centre plus
+   (axis_dx, axis_dy) pixels. f comes from, in this order:
+     fov_y_deg > 0                      the image height subtends fov_y_deg at the eye
+                                        (an HMD, or a window whose view matches the camera)
+     pixel_pitch_mm > 0, distance_mm > 0   a monitor: f = distance_mm / pixel_pitch_mm
+     all zero                           the rendering camera's vertical field of view.
+   All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
+   off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
+   image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
+   Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
+   through q and through the gaze point. This is the one definition all fov headers use. */
+typedef struct fov_display {
+    float fov_y_deg;
+    float pixel_pitch_mm;
+    float distance_mm;
+    float axis_dx, axis_dy;
+} fov_display;
+
+/* Precomputed eccentricity model (fill it with fovsdf_ecc_init / fovlp_ecc_init / ...). */
+typedef struct fov_ecc_model {
+    float cx, cy;    /* where the eye's axis meets the image, pixels */
+    float f_px;      /* eye to image plane, pixels */
+    float gx, gy;    /* the gaze point, pixels */
+    float g[3];      /* unit direction of the gaze ray */
+} fov_ecc_model;
+
+#ifdef __cplusplus
+}
+#endif
+#elif FOV_SHARED_REVISION != 1
+#error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
+#endif /* FOV_SHARED_DECL_INCLUDED */
+/* ==== FOV_SHARED_END decl ==================================================================== */
+
+/* ==== FOV_SHARED_BEGIN impl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
+/* Byte-identical in the three headers, compiled once per translation unit (edit
+   tools/fov_shared.h, then run `python3 tools/sync_shared.py`). Private: every name starts
+   with fov__ / FOV__ and has internal linkage. */
+#ifndef FOV__SHARED_IMPL_INCLUDED
+#define FOV__SHARED_IMPL_INCLUDED 1
+
+#include <float.h>
+#include <limits.h>
+
+/* ---- hooks ------------------------------------------------------------------------------ */
+#ifndef FOV_ASSERT
+#include <assert.h>
+#define FOV_ASSERT(c) assert(c)
+#endif
+
+#if defined(FOV_SQRTF) || defined(FOV_FLOORF) || defined(FOV_SINF) || defined(FOV_COSF) ||    \
+    defined(FOV_TANF) || defined(FOV_ATAN2F) || defined(FOV_EXPF) || defined(FOV_LOGF) ||      \
+    defined(FOV_POWF)
+#if !defined(FOV_SQRTF) || !defined(FOV_FLOORF) || !defined(FOV_SINF) || !defined(FOV_COSF) || \
+    !defined(FOV_TANF) || !defined(FOV_ATAN2F) || !defined(FOV_EXPF) || !defined(FOV_LOGF) ||  \
+    !defined(FOV_POWF)
+#error "fov: define all nine math hooks (FOV_SQRTF ... FOV_POWF, see the doc block) or none"
+#endif
+#define FOV__HOOKED_MATH 1
+#endif
+
+#define FOV__PRIV static FOV__UNUSED
+
+/* Float tests without == (the library builds clean with -Wfloat-equal). */
+FOV__PRIV int fov__is0(float x) { return x <= 0.0f && x >= 0.0f; }       /* +-0, not NaN */
+FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
+
+#if !defined(FOV__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#include <math.h>
+#define FOV__SQRT(x) sqrtf(x)
+#define FOV__FLOOR(x) floorf(x)
+#define FOV__SIN(x) sinf(x)
+#define FOV__COS(x) cosf(x)
+#define FOV__TAN(x) tanf(x)
+#define FOV__ATAN2(y, x) atan2f(y, x)
+#define FOV__EXP(x) expf(x)
+#define FOV__LOG(x) logf(x)
+#define FOV__POW(x, y) powf(x, y)
+#elif defined(FOV__HOOKED_MATH)
+#define FOV__SQRT(x) FOV_SQRTF(x)
+#define FOV__FLOOR(x) FOV_FLOORF(x)
+#define FOV__SIN(x) FOV_SINF(x)
+#define FOV__COS(x) FOV_COSF(x)
+#define FOV__TAN(x) FOV_TANF(x)
+#define FOV__ATAN2(y, x) FOV_ATAN2F(y, x)
+#define FOV__EXP(x) FOV_EXPF(x)
+#define FOV__LOG(x) FOV_LOGF(x)
+#define FOV__POW(x, y) FOV_POWF(x, y)
+#else
+/* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
+   ranges the library uses; tests/test_fovsdf.c checks them against libm). */
+#define FOV__SQRT(x) fov__sqrtf(x)
+#define FOV__FLOOR(x) fov__floorf(x)
+#define FOV__SIN(x) fov__sinf(x)
+#define FOV__COS(x) fov__cosf(x)
+#define FOV__TAN(x) (fov__sinf(x) / fov__cosf(x))
+#define FOV__ATAN2(y, x) fov__atan2f(y, x)
+#define FOV__EXP(x) fov__expf(x)
+#define FOV__LOG(x) fov__logf(x)
+#define FOV__POW(x, y) fov__powf(x, y)
+
+typedef union fov__bits { float f; uint32_t u; } fov__bits;
+
+FOV__PRIV float fov__sqrtf(float x)
+{
+#if defined(__wasm__) && defined(__clang__)
+    return __builtin_sqrtf(x); /* one f32.sqrt instruction */
+#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+    float r;
+    __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
+    return r;
+#else
+    fov__bits b;
+    float y;
+    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
+    y = b.f;
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = y * (1.5f - 0.5f * x * y * y);
+    y = x * y;                          /* sqrt estimate; one Newton step on sqrt */
+    return 0.5f * (y + x / y);
+#endif
+}
+
+FOV__PRIV float fov__floorf(float x)
+{
+    float r;
+    if (!(x > -8388608.0f && x < 8388608.0f)) return x; /* integral already, or NaN */
+    r = (float)(int32_t)x;
+    return r > x ? r - 1.0f : r;
+}
+
+/* sin and cos on [-pi/4, pi/4] (Taylor to order 11 / 10). */
+FOV__PRIV float fov__sin_k(float x)
+{
+    float x2 = x * x;
+    return x * (1.0f + x2 * (-1.6666667e-1f + x2 * (8.3333333e-3f + x2 * (-1.9841270e-4f +
+                x2 * (2.7557319e-6f - x2 * 2.5052108e-8f)))));
+}
+FOV__PRIV float fov__cos_k(float x)
+{
+    float x2 = x * x;
+    return 1.0f + x2 * (-0.5f + x2 * (4.1666667e-2f + x2 * (-1.3888889e-3f +
+                x2 * (2.4801587e-5f - x2 * 2.7557319e-7f))));
+}
+/* Reduce x by multiples of pi/2 (Cody-Waite, 3-part pi/2); quadrant in *q. */
+FOV__PRIV float fov__reduce(float x, int32_t *q)
+{
+    float k;
+    if (!(x > -1e6f && x < 1e6f)) { *q = 0; return (x > -FLT_MAX && x < FLT_MAX) ? 0.0f : x - x; }
+    k = fov__floorf(x * 0.63661977236758134f + 0.5f);
+    *q = (int32_t)k;
+    /* pi/2 = 1.5703125 + 4.837512969970703e-4 + 7.549789954891882e-8; k * 1.5703125 is exact */
+    return ((x - k * 1.5703125f) - k * 4.837512969970703e-4f) - k * 7.549789954891882e-8f;
+}
+FOV__PRIV float fov__sinf(float x)
+{
+    int32_t q;
+    float r = fov__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fov__sin_k(r);
+    case 1: return fov__cos_k(r);
+    case 2: return -fov__sin_k(r);
+    default: return -fov__cos_k(r);
+    }
+}
+FOV__PRIV float fov__cosf(float x)
+{
+    int32_t q;
+    float r = fov__reduce(x, &q);
+    switch (q & 3) {
+    case 0: return fov__cos_k(r);
+    case 1: return -fov__sin_k(r);
+    case 2: return -fov__cos_k(r);
+    default: return fov__sin_k(r);
+    }
+}
+/* atan on [0, 1] via the reduction atan(x) = pi/4 + atan((x-1)/(x+1)) for x > tan(pi/8). */
+FOV__PRIV float fov__atan01(float x)
+{
+    float off = 0.0f, z, z2;
+    if (x > 0.41421356f) { off = 0.78539816f; x = (x - 1.0f) / (x + 1.0f); }
+    z = x;
+    z2 = z * z;
+    return off + z * (1.0f + z2 * (-3.3333333e-1f + z2 * (2.0e-1f + z2 * (-1.4285714e-1f +
+                 z2 * (1.1111111e-1f + z2 * (-9.0909091e-2f + z2 * 7.6923077e-2f))))));
+}
+FOV__PRIV float fov__atan2f(float y, float x)
+{
+    float ax = x < 0.0f ? -x : x, ay = y < 0.0f ? -y : y, a;
+    if (fov__isnan(x) || fov__isnan(y)) return x + y;
+    if (fov__is0(ax) && fov__is0(ay)) return 0.0f;
+    a = ay <= ax ? fov__atan01(ay / ax) : 1.57079633f - fov__atan01(ax / ay);
+    if (x < 0.0f) a = 3.14159265f - a;
+    return y < 0.0f ? -a : a;
+}
+FOV__PRIV float fov__expf(float x)
+{
+    float k, r, p;
+    fov__bits b;
+    if (fov__isnan(x)) return x;
+    if (x > 88.7f) return FLT_MAX * 2.0f;
+    if (x < -103.0f) return 0.0f;
+    k = fov__floorf(x * 1.44269504f + 0.5f);
+    r = (x - k * 0.693145752f) - k * 1.42860677e-6f;
+    p = 1.0f + r * (1.0f + r * (0.5f + r * (1.6666667e-1f + r * (4.1666667e-2f +
+        r * (8.3333333e-3f + r * 1.3888889e-3f)))));
+    if (k < -126.0f) {
+        b.u = (uint32_t)(k + 126.0f + 127.0f) << 23;
+        return p * b.f * 1.17549435e-38f;
+    }
+    b.u = (uint32_t)((int32_t)k + 127) << 23;
+    return p * b.f;
+}
+FOV__PRIV float fov__logf(float x)
+{
+    fov__bits b;
+    int32_t e;
+    float m, s, s2;
+    if (fov__isnan(x) || x < 0.0f) return (x - x) / (x - x);
+    if (fov__is0(x)) return -FLT_MAX * 2.0f;
+    if (x > FLT_MAX) return x;
+    b.f = x;
+    e = 0;
+    if (b.u < 0x00800000u) { b.f = x * 8388608.0f; e = -23; } /* subnormal */
+    e += (int32_t)((b.u >> 23) & 0xffu) - 127;
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u; /* m in [1, 2) */
+    m = b.f;
+    if (m > 1.41421356f) { m *= 0.5f; e += 1; }
+    s = (m - 1.0f) / (m + 1.0f); /* log(m) = 2 atanh(s) */
+    s2 = s * s;
+    return (float)e * 0.693147181f +
+           2.0f * s * (1.0f + s2 * (3.3333333e-1f + s2 * (2.0e-1f + s2 * (1.4285714e-1f +
+                                                                   s2 * 1.1111111e-1f))));
+}
+FOV__PRIV float fov__powf(float x, float y)
+{
+    if (fov__is0(y)) return 1.0f;
+    if (fov__is0(x)) return y > 0.0f ? 0.0f : FLT_MAX * 2.0f;
+    if (x < 0.0f) {
+        float fy = fov__floorf(y);
+        float r;
+        if (fy < y || fy > y) return (x - x) / (x - x);
+        r = fov__expf(y * fov__logf(-x));
+        return ((int32_t)fov__floorf(y * 0.5f) * 2 == (int32_t)fy) ? r : -r;
+    }
+    return fov__expf(y * fov__logf(x));
+}
+#endif
+
+#ifndef FOV_MEMSET
+#define FOV_MEMSET(p, v, n) fov__memset(p, v, n)
+FOV__PRIV void fov__memset(void *p, int v, size_t n)
+{
+    unsigned char *c = (unsigned char *)p;
+    while (n--) *c++ = (unsigned char)v;
+}
+#endif
+#ifndef FOV_MEMCPY
+#define FOV_MEMCPY(d, s, n) fov__memcpy(d, s, n)
+FOV__PRIV void fov__memcpy(void *d, const void *s, size_t n)
+{
+    unsigned char *a = (unsigned char *)d;
+    const unsigned char *b = (const unsigned char *)s;
+    while (n--) *a++ = *b++;
+}
+#endif
+
+#define FOV__PI 3.14159265358979f
+#define FOV__DEG 0.0174532925199433f
+
+/* ---- small helpers ---------------------------------------------------------------------- */
+FOV__PRIV int fov__finite(float x) { return x >= -FLT_MAX && x <= FLT_MAX; }
+FOV__PRIV int fov__finite3(const float v[3])
+{
+    return fov__finite(v[0]) && fov__finite(v[1]) && fov__finite(v[2]);
+}
+FOV__PRIV float fov__minf(float a, float b) { return a < b ? a : b; }
+FOV__PRIV float fov__maxf(float a, float b) { return a > b ? a : b; }
+FOV__PRIV float fov__absf(float a) { return a < 0.0f ? -a : a; }
+FOV__PRIV float fov__clampf(float x, float a, float b) { return x < a ? a : (x > b ? b : x); }
+FOV__PRIV float fov__dot(const float a[3], const float b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+FOV__PRIV float fov__len(const float a[3]) { return FOV__SQRT(fov__dot(a, a)); }
+FOV__PRIV void fov__cross(const float a[3], const float b[3], float r[3])
+{
+    float x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2];
+    float z = a[0] * b[1] - a[1] * b[0];
+    r[0] = x; r[1] = y; r[2] = z;
+}
+/* Brings a vector whose squared length would underflow or overflow (largest component
+   below 1e-15 or above 1e15) to a largest component of 1; other vectors are untouched, bit
+   for bit. Leaves zero and non-finite vectors as they are. */
+FOV__PRIV void fov__prescale(float v[3])
+{
+    float m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (m > 0.0f && fov__finite(m) && (m < 1e-15f || m > 1e15f)) {
+        v[0] /= m; v[1] /= m; v[2] /= m;
+    }
+}
+/* Normalises v in place and returns its length, or 0 when v is zero or has a NaN or
+   infinite component (v is then left as it is): a return > 0 means v is now unit. Every
+   normalisation in the library goes through here. A squared length in [1e-30, 1e30] takes
+   the plain path (sqrt of the dot product, three divisions); any other finite vector is
+   first prescaled to a largest component m = 1 (fov__prescale), so vectors of any finite
+   length come out unit (|v| - 1 within 2 ulps) instead of unnormalised; the length returned
+   is then m * |v / m| (+inf when it exceeds FLT_MAX: still > 0, v still unit). */
+FOV__PRIV float fov__normalize(float v[3])
+{
+    float l2 = fov__dot(v, v), l, m;
+    if (l2 >= 1e-30f && l2 <= 1e30f) {
+        l = FOV__SQRT(l2);
+        v[0] /= l; v[1] /= l; v[2] /= l;
+        return l;
+    }
+    if (!fov__finite(v[0]) || !fov__finite(v[1]) || !fov__finite(v[2])) return 0.0f;
+    m = fov__maxf(fov__absf(v[0]), fov__maxf(fov__absf(v[1]), fov__absf(v[2])));
+    if (!(m > 0.0f)) return 0.0f;
+    v[0] /= m; v[1] /= m; v[2] /= m;
+    l = fov__len(v); /* in [1, sqrt 3] */
+    v[0] /= l; v[1] /= l; v[2] /= l;
+    return m * l;
+}
+FOV__PRIV size_t fov__align(size_t x) { return (x + 15u) & ~(size_t)15u; }
+
+/* ---- errors ----------------------------------------------------------------------------- */
+/* Messages are on by default; FOV_NO_ERROR_STRINGS compiles them out (the logger then gets
+   ""). FOV__FAIL reports through the optional logger and returns the code. */
+#ifndef FOV_NO_ERROR_STRINGS
+#define FOV__MSG(s) s
+#else
+#define FOV__MSG(s) ""
+#endif
+FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result r, const char *msg,
+                              uint32_t line)
+{
+    if (lg && lg->func) lg->func(tag, FOV_LOG_ERROR, (int32_t)r, msg, line, lg->user);
+    return r;
+}
+#define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+
+FOV__PRIV const char *fov__result_string(fov_result r)
+{
+#ifdef FOV_NO_ERROR_STRINGS
+    (void)r;
+    return "";
+#else
+    switch (r) {
+    case FOV_OK: return "ok";
+    case FOV_ERR_INVALID_ARG: return "invalid argument: a parameter is out of range";
+    case FOV_ERR_TOO_SMALL: return "buffer or memory too small";
+    case FOV_ERR_LIMIT: return "size above a hard limit or overflowing";
+    case FOV_ERR_NULL: return "a required pointer is NULL";
+    case FOV_ERR_NOT_FINITE: return "NaN or infinite value where a finite one is required";
+    case FOV_ERR_DEGENERATE: return "degenerate camera, display or scene";
+    case FOV_ERR_UNSUPPORTED: return "not supported by this build";
+    default: return "unknown result code";
+    }
+#endif
+}
+
+/* ---- the eccentricity model (see fov_display) ------------------------------------------- */
+FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
+                                   uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
+{
+    float f, v[3];
+    fov_display z;
+    if (!m) return FOV_ERR_NULL;
+    if (!d) { FOV_MEMSET(&z, 0, sizeof z); d = &z; }
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (width > max_dim || height > max_dim) return FOV_ERR_LIMIT;
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y) || !fov__finite(cam_fov_y_deg) ||
+        !fov__finite(d->fov_y_deg) || !fov__finite(d->pixel_pitch_mm) ||
+        !fov__finite(d->distance_mm) || !fov__finite(d->axis_dx) || !fov__finite(d->axis_dy))
+        return FOV_ERR_NOT_FINITE;
+    if (d->fov_y_deg > 0.0f) {
+        if (d->fov_y_deg >= 180.0f) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * d->fov_y_deg * FOV__DEG);
+    } else if (d->pixel_pitch_mm > 0.0f && d->distance_mm > 0.0f) {
+        f = d->distance_mm / d->pixel_pitch_mm;
+    } else if (d->fov_y_deg < 0.0f || !fov__is0(d->pixel_pitch_mm) || !fov__is0(d->distance_mm)) {
+        return FOV_ERR_INVALID_ARG; /* negative, or a monitor given by pitch or distance only */
+    } else {
+        if (!(cam_fov_y_deg > 0.0f && cam_fov_y_deg < 180.0f)) return FOV_ERR_INVALID_ARG;
+        f = 0.5f * (float)height / FOV__TAN(0.5f * cam_fov_y_deg * FOV__DEG);
+    }
+    if (!(f > 0.0f) || !fov__finite(f)) return FOV_ERR_DEGENERATE;
+    m->cx = 0.5f * (float)width + d->axis_dx;
+    m->cy = 0.5f * (float)height + d->axis_dy;
+    m->f_px = f;
+    m->gx = gaze.x;
+    m->gy = gaze.y;
+    v[0] = gaze.x - m->cx; v[1] = gaze.y - m->cy; v[2] = f;
+    if (!fov__finite3(v)) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(fov__dot(v, v))) {
+        /* a gaze far off-screen (|v| > ~1e19 px): only the direction counts, so scale by the
+           largest component first (any finite gaze works; the usual range is untouched) */
+        float s = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= s; v[1] /= s; v[2] /= s;
+    }
+    fov__normalize(v);
+    m->g[0] = v[0]; m->g[1] = v[1]; m->g[2] = v[2];
+    return FOV_OK;
+}
+
+/* The angle in degrees between the eye's rays through (x, y) and through the gaze point. */
+FOV__PRIV float fov__ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    float v[3], c[3], s, co;
+    if (!m) return 0.0f;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v)) && fov__finite(x) && fov__finite(y)) {
+        /* a point beyond ~1e19 px (or x - cx overflows): only the direction counts, so halve
+           (no overflow) and scale by the largest component; the usual range is untouched */
+        float k;
+        v[0] = 0.5f * x - 0.5f * m->cx; v[1] = 0.5f * y - 0.5f * m->cy; v[2] = 0.5f * m->f_px;
+        k = fov__maxf(fov__maxf(fov__absf(v[0]), fov__absf(v[1])), v[2]);
+        v[0] /= k; v[1] /= k; v[2] /= k;
+    }
+    fov__cross(v, m->g, c);
+    s = fov__len(c);
+    co = fov__dot(v, m->g);
+    return FOV__ATAN2(s, co) * (180.0f / FOV__PI); /* atan2 keeps small angles exact */
+}
+
+/* Pixels per degree at the gaze. d(angle)/d(pixels) along the radial direction at the gaze is
+   f / (f^2 + r^2) radians per pixel, with r the gaze's distance from the axis. */
+FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
+{
+    float rx, ry, r2, ppd;
+    if (!m) return 0.0f;
+    rx = m->gx - m->cx; ry = m->gy - m->cy; r2 = rx * rx + ry * ry;
+    ppd = (m->f_px * m->f_px + r2) / m->f_px * FOV__DEG;
+    return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* gaze beyond ~1e19 px: FLT_MAX */
+}
+#endif /* FOV__SHARED_IMPL_INCLUDED */
+/* ==== FOV_SHARED_END impl ==================================================================== */
+
+/* ==== FOV_SHARED_BEGIN license ============================================================== */
+/*
+------------------------------------------------------------------------------
+This software is available under 2 licenses -- choose whichever you prefer.
+------------------------------------------------------------------------------
+ALTERNATIVE A - MIT License
+Copyright (c) 2026 the fov authors
+Permission is hereby granted, free of charge, to any person obtaining a copy of
+this software and associated documentation files (the "Software"), to deal in
+the Software without restriction, including without limitation the rights to
+use, copy, modify, merge, publish, distribute, sublicense, and/or sell copies
+of the Software, and to permit persons to whom the Software is furnished to do
+so, subject to the following conditions:
+The above copyright notice and this permission notice shall be included in all
+copies or substantial portions of the Software.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER
+LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE
+SOFTWARE.
+------------------------------------------------------------------------------
+ALTERNATIVE B - Public Domain (www.unlicense.org)
+This is free and unencumbered software released into the public domain.
+Anyone is free to copy, modify, publish, use, compile, sell, or distribute this
+software, either in source code form or as a compiled binary, for any purpose,
+commercial or non-commercial, and by any means.
+In jurisdictions that recognize copyright laws, the author or authors of this
+software dedicate any and all copyright interest in the software to the public
+domain. We make this dedication for the benefit of the public at large and to
+the detriment of our heirs and successors. We intend this dedication to be an
+overt act of relinquishment in perpetuity of all present and future rights to
+this software under copyright law.
+THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR
+IMPLIED, INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY,
+FITNESS FOR A PARTICULAR PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE
+AUTHORS BE LIABLE FOR ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER IN AN
+ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM, OUT OF OR IN CONNECTION
+WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
+------------------------------------------------------------------------------
+*/
+/* ==== FOV_SHARED_END license ================================================================ */
