@@ -88,6 +88,8 @@ three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# no tracked file cites the internal background documents; each header has REFERENCES
+run_section refs bash tests/refs.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi
