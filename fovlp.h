@@ -33,7 +33,7 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
    1. Buffer size (thesis eq. 3.6): h = round(sqrt(W H / lp_aspect) / sigma),
       w = round(h lp_aspect); so w h = W H / sigma^2 log-polar (LP) texels before culling.
       lp_aspect 0 picks the aspect that makes the radial and angular sample spacings equal at
-      match_deg eccentricity (thesis section 5.1 tuning, closed form: spacing ratio
+      match_deg eccentricity (thesis Sec. 5.2.1 tuning, closed form: spacing ratio
       radial/angular = L h t^(1/alpha - 1) / (2 pi alpha w_C), t = (log r / L)^alpha).
    2. Normaliser (eq. 3.10): L = log(screen diagonal) (thesis; the default), or
       L = log(distance from the gaze to the farthest corner) (Meng et al.), FOVLP_NORM_CORNER.
@@ -46,7 +46,7 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
          u = K(log(max(r, 1)) / L) w_C - u_G,   v = atan2(dy, dx) h / (2 pi), in [0, h)
       LP -> screen (eq. 3.7): rho = exp(L Kinv((u + u_G) / w_C)), x = gx + rho cos(2 pi v / h),
       y = gy + rho sin(2 pi v / h). K sits in the screen -> LP direction, as the thesis's ray
-      counts require (notes 1.5): alpha > 1 moves samples to the periphery.
+      counts require (Sec. 3.3.2, Table 5.3): alpha > 1 moves samples to the periphery.
    5. Culling: only the LP columns u < u_max = K(log r_max / L) w_C - u_G (r_max: the farthest
       corner from the gaze) are dispatched; an LP texel whose sample falls off-screen is never
       shaded; nor is a disc pixel outside the circle.
@@ -64,7 +64,7 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       the innermost ring without a disc: a blend towards the centre sample (no singularity
       at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
       fovlp_blend_rows).
-   8. TAA in screen space (thesis 3.4): reprojection with the previous and current camera and
+   8. TAA in screen space (thesis Sec. 3.4): reprojection with the previous and current camera and
       the shaded depth, depth rejection, history blend 1/age with the age capped at 20
       (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg (always on while
       the camera moves, ours), history reset on a gaze jump.
@@ -209,6 +209,19 @@ PLATFORM NOTES
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
      object file references no __aeabi_d* routine (checked by tests/compile/run.sh).
+
+REFERENCES (cited by author and year, with the section, equation or table of that work;
+"the thesis" is Andersson & Hansson 2020 throughout this file)
+   Andersson & Hansson 2020  K. Andersson, T. Hansson, "Performance Optimizations for
+                    Foveated Real-Time Raytracing", master's thesis, Lund University,
+                    LU-CS-EX 2020-64, 2020.
+   Meng et al. 2018 X. Meng, R. Du, M. Zwicker, A. Varshney, "Kernel Foveated Rendering",
+                    Proceedings of the ACM on Computer Graphics and Interactive Techniques
+                    1(1), article 5, 2018.
+   Karis 2014       B. Karis, "High Quality Temporal Supersampling", SIGGRAPH 2014 course
+                    Advances in Real-Time Rendering in Games.
+   Salvi 2016       M. Salvi, "An Excursion in Temporal Supersampling", Game Developers
+                    Conference (GDC), 2016.
 
 LICENSE: see end of file.
 

@@ -26,7 +26,8 @@ QUICK START
 
    See examples/pt_basic.c for a complete program.
 
-   Stereo, per-eye gaze: one context per eye (both seeds render the eyes independently).
+   Stereo, per-eye gaze: one context per eye (Axblad 2020, Sec. 3.2.1, and Kim et al. 2021,
+   Fig. 4, render the eyes independently).
       fovpt_camera eye[2];  fovpt_camera_eyes(&head, 0.064f, eye);   // ipd in scene units
       fov_gaze g[2];        fovpt_gaze_from_point(&eye[0], gaze_target, &g[0]);   // the 3D
                             fovpt_gaze_from_point(&eye[1], gaze_target, &g[1]);   // vergence point
@@ -44,31 +45,33 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
       counter-based integer hash, no state outside the stream).
-   3. Radiance (fovpt_radiance): Kajiya's rendering equation (seed 002 Eq. 2.1) estimated by
-      an iterative path tracer: BSDF sampling (Lambert, seed 002's two-lobe Phong, mirror,
-      dielectric with Fresnel), next-event estimation towards sampleable emitters combined
-      with BSDF hits by the power heuristic (Veach 1997), Russian roulette, a bounce limit.
-      Or a Whitted-style tracer (seed 004: depth 3, hard shadows, reflection, refraction).
+   3. Radiance (fovpt_radiance): Kajiya's rendering equation (Kajiya 1986; Axblad 2020, Eq.
+      2.1) estimated by an iterative path tracer: BSDF sampling (Lambert, the two-lobe Phong
+      of Axblad 2020, Sec. 3.2.2, mirror, dielectric with Fresnel), next-event estimation
+      towards sampleable emitters combined with BSDF hits by the power heuristic (Veach
+      1997), Russian roulette, a bounce limit. Or a Whitted-style tracer (Kim et al. 2021,
+      Sec. 5: depth 3, hard shadows, reflection, refraction).
    4. Sampling pattern per method: UNIFORM (every pixel, spp samples: the non-foveated
-      renderer); LAYERS (seed 002 ch. 3: gaze-centred lattices of stride d per layer);
-      ZONES (seed 000 ch. 4: 1, 1/4, 1/16 ray density); SELECTIVE (seed 004: presample,
-      2x2-subpixel disparity test scaled by tau_fov(e), 9/4/2/1 extra samples); JIN (Jin et
-      al. 2009: 4 per problematic subpixel everywhere).
+      renderer); LAYERS (Axblad 2020, ch. 3: gaze-centred lattices of stride d per layer);
+      ZONES (Polychronakis 2025, ch. 4: 1, 1/4, 1/16 ray density); SELECTIVE (Kim et al.
+      2021: presample, 2x2-subpixel disparity test scaled by tau_fov(e), 9/4/2/1 extra
+      samples); JIN (Jin et al. 2009: 4 per problematic subpixel everywhere).
    5. Resolve (fovpt_resolve_rows): progressive mean; LAYERS: Catmull-Rom fill of untraced
-      pixels (seed 002 Eq. 3.17 with its coefficient error fixed) and border blending (Eq.
-      3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
-      smoothing (seed 004 steps 2 and 4); 8-bit sRGB or float output.
+      pixels (Axblad 2020, Eq. 3.17, with its coefficient error fixed) and border blending
+      (Eq. 3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
+      smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
+      output.
 
 STATUS (v0.2.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
    SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), per-eye cameras and gaze,
-   temporal reuse and smoothing (SELECTIVE and JIN only, as in seed 004;
+   temporal reuse and smoothing (SELECTIVE and JIN only, as in Kim et al. 2021;
    FOV_ERR_UNSUPPORTED with the others).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
-   - Phong (seed 002 Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (Eq. 3.13)
+   - Phong (Axblad 2020, Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (3.13)
      with lobe-sampling energy updates and a clamp (Eq. 3.15-3.16): biased. Here one
      estimator: the BRDF kd/pi + ks (a+2)/(2 pi) max(0, wr.wi)^a (wr = mirror of wo), sampled
      from the mixture pD * cos/pi + pS * (a+1)/(2 pi) cos^a about wr with pS, pD from Eq.
@@ -78,7 +81,8 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      triangles; emissive planes and boxes are found by BSDF sampling only (full weight).
      A light is picked with probability proportional to area * mean(emission).
    - Bounces: max_depth counts scattering events; emission seen after at most max_depth
-     bounces is counted (max_depth 0: emitters and background only). Default 8 (seed 002).
+     bounces is counted (max_depth 0: emitters and background only). Default 8 (Axblad
+     2020, Sec. 3.1.1).
    - Russian roulette from bounce rr_start (default 3): survival probability = max channel of
      the path throughput, clamped to [0.05, 1]; survivors are divided by it (unbiased).
    - Whitted mode: emitters are treated as point lights at their centre (sphere: the point
@@ -87,17 +91,17 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      Fresnel branches, explicit stack); no random numbers except the pixel jitter.
    - Degenerate triangles (zero area) are an error unless desc.skip_degenerate = 1.
    - Pixel jitter: uniform in the pixel (box filter), from the pixel's stream.
-   - LAYERS (seed 002 sec. 3.2-3.4). Lattice of layer n >= 1: pixels (gx + k d, gy + l d),
-     (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d), the first one on the image taken
-     as the origin, clamped to column W - 1 / row H - 1 so that a stride wider than the image
-     with the gaze off it still leaves one point; layer 0: (k d, l d), static. A
-     lattice point (pixel centre eccentricity e) is traced when
+   - LAYERS (Axblad 2020, Sec. 3.2.1-3.2.4). Lattice of layer n >= 1: pixels
+     (gx + k d, gy + l d), (gx, gy) = floor(gaze) (snap: floor(gaze / d) * d), the first one
+     on the image taken as the origin, clamped to column W - 1 / row H - 1 so that a stride
+     wider than the image with the gaze off it still leaves one point; layer 0: (k d, l d),
+     static. A lattice point (pixel centre eccentricity e) is traced when
         e <= min(r_n + blend/2 + a_n, r_0 + a_n)  (layer n >= 1; the r_0 term with a mask)
         e <= r_0 + a_0                             (layer 0 with a mask; all points without)
      with the apron a_n = (2 sqrt(2) d_n + 1) / f_px radians in degrees (f_px: the eye's
      distance to the image in pixels), so every Catmull-Rom neighbour of a pixel that needs
      the layer is traced (an angle between two pixels' rays is at most their distance / f).
-     Like the thesis, every layer covers its whole disk, including the finer layers' area.
+     Like Axblad 2020, every layer covers its whole disk, including the finer layers' area.
      Samples of a target pixel are jittered uniformly inside it. Untraced pixels: separable
      Catmull-Rom over the 4 x 4 lattice neighbours (Eq. 3.17 fixed), neighbour indices
      clamped at the image border; where a neighbour is not traced (mask border), the
@@ -105,39 +109,41 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      (Catmull-Rom overshoots). Blending (Eq. 3.18) from the outside in: C = F_0, then for
      n = 1 .. N-1: C = (1 - vb_n) C + vb_n F_n with vb_n = 1 at e <= r_n - blend/2, 0 at
      e >= r_n + blend/2, smoothstep (or linear) between; continuous across every border.
-     Pixels beyond the mask radius are black (not traced, as in the thesis). Where the
+     Pixels beyond the mask radius are black (not traced, as in Axblad 2020). Where the
      innermost full-weight layer has no traced neighbour, the next layer outwards that has
      one gives C (the outermost layer is traced wherever the mask lets it).
-   - ZONES (seed 000 sec. 4.2): the thesis renders full frames and keeps every 2nd / 4th
+   - ZONES (Polychronakis 2025, Sec. 4.2): it renders full frames and keeps every 2nd / 4th
      pixel (nearest neighbour); here only the kept pixels are traced: static lattices of
      stride 4 (everywhere), 2 (e <= middle_deg + overlap/2 + apron) and 1 (e <= inner_deg +
      overlap/2 + apron), cfg.spp samples each, apron a_n = (sqrt(2) a d_n + 1) / f_px. The
      coarse lattices are Lanczos-upsampled (a = 3 lobes, normalised weights) and the zones
      blended linearly over overlap_px pixels (converted to degrees at the gaze) centred on
-     each border. Zone radii: inner 7.5 and middle 32.5 degrees (the thesis's conservative
-     15 and 65 degree fields read as diameters).
-   - SELECTIVE / JIN (seed 004 sec. 3.2, Jin et al. 2009). Presample: one ray through each
-     pixel centre (no jitter) gives the colour reference and the Table 1 attributes: object
-     ids (primitive ids), normals, shadow counts (occluded shadow rays: Whitted's light tests,
-     the path tracer's first NEE test) at the primary hit and, when it is a mirror or glass,
-     at the secondary hit; no textures, so the texture flags never differ. Subpixel NW, NE,
-     SW, SE is compared with the 3 neighbours on its side (image border: the pixel itself).
-     Discordance: ids or shadow counts differ, normals more than normal_tol_deg (10) apart;
-     tau_sel = min tau of the discordant attributes, else tau_col. Problematic when
-     (max - min) / (max + min) of a channel over the 4 linear colours exceeds
-     tau_fov(e) tau_sel (1.36, 1.02, 2.04) (JIN: tau_fov = 1). Problematic subpixels get
-     n_sd[zone] (JIN: 4, in every zone) stratified jittered samples: an m x m grid when n_sd
-     is a square, else n_sd columns; the subpixel is their mean. Other subpixels: bilinear
-     from the 4 pixel centres around the subpixel centre (9/16, 3/16, 3/16, 1/16; 004), or
-     the pixel's presample (JIN, fill_centre). The pixel is the mean of its 4 subpixels.
-     Beyond e_np: the presample only. Colours are linear radiance (the contrast is a ratio).
-   - Temporal (seed 004 steps 2 and 4), SELECTIVE and JIN. fovpt_set_view ends a frame.
-     History per frame and pixel: the raw colour (before smoothing, as in 004), the first-hit
-     distance, the colour reference, the reuse count. Reuse (central region): the pixel's
+     each border. Zone radii: inner 7.5 and middle 32.5 degrees (the conservative 15 and 65
+     degree fields of Polychronakis 2025, Sec. 4.4.2, read as diameters).
+   - SELECTIVE / JIN (Kim et al. 2021, Sec. 3 and 4.6; Jin et al. 2009). Presample: one ray
+     through each pixel centre (no jitter) gives the colour reference and the Table 1
+     attributes: object ids (primitive ids), normals, shadow counts (occluded shadow rays:
+     Whitted's light tests, the path tracer's first NEE test) at the primary hit and, when it is
+     a mirror or glass, at the secondary hit; no textures, so the texture flags never differ.
+     Subpixel NW, NE, SW, SE is compared with the 3 neighbours on its side (image border: the
+     pixel itself). Discordance: ids or shadow counts differ, normals more than normal_tol_deg
+     (10) apart; tau_sel = min tau of the discordant attributes, else tau_col. Problematic when
+     (max - min) / (max + min) of a channel over the 4 linear colours exceeds tau_fov(e) tau_sel
+     (1.36, 1.02, 2.04) (JIN: tau_fov = 1). Problematic subpixels get n_sd[zone] (JIN: 4, in
+     every zone) stratified jittered samples: an m x m grid when n_sd is a square, else n_sd
+     columns; the subpixel is their mean. Other subpixels: bilinear from the 4 pixel centres
+     around the subpixel centre (9/16, 3/16, 3/16, 1/16; Kim et al. 2021, Fig. 2), or the
+     pixel's presample (JIN, fill_centre). The pixel is the mean of its 4 subpixels. Beyond
+     e_np: the presample only. Colours are linear radiance (the contrast is a ratio).
+   - Temporal (Kim et al. 2021, steps 2 and 4, Sec. 4.4-4.7), SELECTIVE and JIN.
+     fovpt_set_view ends a frame. History per frame and pixel: the raw colour (before
+     smoothing, as in Kim et al. 2021), the first-hit distance, the colour reference, the
+     reuse count. Reuse (central region): the pixel's
      first hit v (centre ray) projects into the previous view at pixel q (nearest); reused
      when 1. q's reuse count < n_reuse_max, 2./3. both rays hit, 4. |dist(v, previous
-     camera) - q's stored distance| <= eps_depth x that distance (the notes' inferred
-     disocclusion test, not the literal wording), 5. the two colour references pass the
+     camera) - q's stored distance| <= eps_depth x that distance (our reading of condition 4
+     of Kim et al. 2021, Sec. 4.4, as a disocclusion test, not its literal wording), 5. the
+     two colour references pass the
      contrast test with tau_reuse x tau_col (the previous frame's attributes are not kept,
      so step 1 of the disparity test is skipped). A reused pixel copies q's colour and
      gets count + 1. Smoothing: C* = sum_i a (1-a)^i C_i / sum of the weights used, i = 0 ..
@@ -242,6 +248,35 @@ PLATFORM NOTES
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
      __aeabi_d* routine is referenced (checked by tests/compile).
+
+REFERENCES (cited above and below by author and year, with the section, equation, figure or
+table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 2020)
+   Axblad 2020      T. Axblad, "Impact of Foveated Rendering on Path Tracing Frame Rate in
+                    Head-Mounted VR Displays", master's thesis, KTH Royal Institute of
+                    Technology, Stockholm, 2020. (LAYERS, the Phong BRDF, the path tracer)
+   Kim et al. 2021  Y. Kim, Y. Ko, I. Ihm, "Selective Foveated Ray Tracing for Head-Mounted
+                    Displays", IEEE International Symposium on Mixed and Augmented Reality
+                    (ISMAR), 2021, pp. 413-421. (SELECTIVE, the Whitted tracer, temporal)
+   Polychronakis 2025  A. Polychronakis, "Implicit and Foveated Techniques for Real-Time
+                    Computer Graphics Rendering", doctoral dissertation, Technical University
+                    of Crete, 2025; ch. 4 is Polychronakis, Koulieris, Mania, "Emulating
+                    Foveated Path Tracing", ACM SIGGRAPH Motion, Interaction and Games (MIG),
+                    2021. (ZONES)
+   Jin et al. 2009  B. Jin, I. Ihm, B. Chang, C. Park, W. Lee, S. Jung, "Selective and Adaptive
+                    Supersampling for Real-Time Ray Tracing", High Performance Graphics 2009.
+   Kajiya 1986      J. T. Kajiya, "The Rendering Equation", SIGGRAPH 1986.
+   Veach 1997       E. Veach, "Robust Monte Carlo Methods for Light Transport Simulation",
+                    PhD thesis, Stanford University, 1997 (multiple importance sampling).
+   Wald 2007        I. Wald, "On Fast Construction of SAH-based Bounding Volume Hierarchies",
+                    IEEE Symposium on Interactive Ray Tracing, 2007.
+   Ize 2013         T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics
+                    Techniques 2(2), 2013.
+   Kay & Kajiya 1986  T. L. Kay, J. T. Kajiya, "Ray Tracing Complex Scenes", SIGGRAPH 1986.
+   Moller & Trumbore 1997  T. Moller, B. Trumbore, "Fast, Minimum Storage Ray-Triangle
+                    Intersection", Journal of Graphics Tools 2(1), 1997.
+   Duff et al. 2017 T. Duff, J. Burgess, P. Christensen, C. Hery, A. Kensler, M. Liani,
+                    R. Villemin, "Building an Orthonormal Basis, Revisited", Journal of
+                    Computer Graphics Techniques 6(1), 2017.
 
 LICENSE: see end of file.
 
@@ -461,7 +496,7 @@ typedef struct fovpt_mesh {
 
 typedef enum fovpt_material_type {
     FOVPT_MAT_LAMBERT = 0,    /* albedo kd: f = kd / pi */
-    FOVPT_MAT_PHONG = 1,      /* kd / pi + ks (a+2)/(2 pi) max(0, wr.wi)^a (seed 002 Eq. 3.7-3.8) */
+    FOVPT_MAT_PHONG = 1,      /* Axblad 2020 Eq. 3.7-3.8: kd/pi + ks (a+2)/(2pi) max(0,wr.wi)^a */
     FOVPT_MAT_MIRROR = 2,     /* perfect reflection tinted by albedo */
     FOVPT_MAT_DIELECTRIC = 3, /* smooth glass of index ior, Fresnel-weighted, tinted by albedo */
     _FOVPT_MAT_NUM,
@@ -552,9 +587,9 @@ typedef struct fovpt_camera {
 
 typedef enum fovpt_method {
     FOVPT_METHOD_UNIFORM = 0,   /* every pixel, spp samples per frame (non-foveated) */
-    FOVPT_METHOD_LAYERS = 1,    /* seed 002: gaze-centred lattice layers */
-    FOVPT_METHOD_ZONES = 2,     /* seed 000 ch. 4: three zones at 1, 1/4, 1/16 density */
-    FOVPT_METHOD_SELECTIVE = 3, /* seed 004: selective foveated supersampling */
+    FOVPT_METHOD_LAYERS = 1,    /* Axblad 2020: gaze-centred lattice layers */
+    FOVPT_METHOD_ZONES = 2,     /* Polychronakis 2025, ch. 4: zones at 1, 1/4, 1/16 density */
+    FOVPT_METHOD_SELECTIVE = 3, /* Kim et al. 2021: selective foveated supersampling */
     FOVPT_METHOD_JIN = 4,       /* Jin et al. 2009: 4 samples per problematic subpixel */
     _FOVPT_METHOD_NUM,
     _FOVPT_METHOD_FORCE_U32 = 0x7FFFFFFF
@@ -562,15 +597,16 @@ typedef enum fovpt_method {
 
 typedef enum fovpt_mode {
     FOVPT_MODE_PATH = 0,        /* Monte Carlo path tracing */
-    FOVPT_MODE_WHITTED = 1,     /* Whitted-style ray tracing (seed 004) */
+    FOVPT_MODE_WHITTED = 1,     /* Whitted-style ray tracing (Kim et al. 2021) */
     _FOVPT_MODE_NUM,
     _FOVPT_MODE_FORCE_U32 = 0x7FFFFFFF
 } fovpt_mode;
 
 #define FOVPT_RR_OFF 0xFFFFFFFFu
 
-/* Seed 002 layers. layer[0] is the background layer, the highest index the innermost one
-   (002 Eq. 3.2 indexing). Radii are eccentricities (degrees from the gaze, the shared model)
+/* Layers of Axblad 2020. layer[0] is the background layer, the highest index the innermost
+   one (the indexing of its Eq. 3.2). Radii are eccentricities (degrees from the gaze, the
+   shared model)
    and must decrease with the index; layer[0].radius_deg is the occlusion mask (rays beyond
    it are not traced; 0 = no mask). Lattice points of layer n: pixels (gx + k d, gy + l d)
    with (gx, gy) the gaze pixel (snapped to multiples of d when snap = 1; layer 0 does not
@@ -596,16 +632,16 @@ typedef enum fovpt_layers_preset_id {
     _FOVPT_LAYERS_PRESET_FORCE_U32 = 0x7FFFFFFF
 } fovpt_layers_preset_id;
 
-/* Seed 000 chapter 4 zones: inner (full density), middle (1/4: one ray per 2x2 pixels),
-   outer (1/16), Lanczos-upsampled, blended over an overlap. */
+/* Zones of Polychronakis 2025, ch. 4: inner (full density), middle (1/4: one ray per 2x2
+   pixels), outer (1/16), Lanczos-upsampled, blended over an overlap. */
 typedef struct fovpt_zones_cfg {
-    float inner_deg;        /* 0: 7.5 (the thesis's 15 degrees read as a diameter) */
+    float inner_deg;        /* 0: 7.5 (Polychronakis 2025's 15 degrees read as a diameter) */
     float middle_deg;       /* > inner_deg; 0: 32.5 (65 degrees as a diameter) */
     float overlap_px;       /* linear blend width at each border, pixels; 0: 4 */
     uint32_t lanczos_a;     /* Lanczos lobes, 2 or 3; 0: 3 */
 } fovpt_zones_cfg;
 
-/* Seed 004 selective foveated supersampling (also the JIN baseline). */
+/* Selective foveated supersampling of Kim et al. 2021 (also the JIN baseline). */
 typedef struct fovpt_selective_cfg {
     float e_deg[5];         /* e_f, e_p, e_m, e_np, e_max; 0: 3.3, 5.5, 12.1, 30, 45 */
     uint32_t n_sd[4];       /* samples per problematic subpixel by zone; 0: 9, 4, 2, 1 */
@@ -615,10 +651,11 @@ typedef struct fovpt_selective_cfg {
                                0.02 */
     float normal_tol_deg;   /* normals differing more are discordant; 0: 10 */
     uint32_t fill_centre;   /* 1: non-problematic subpixels take the pixel colour (Jin);
-                               0: bilinear from the neighbours (004) */
+                               0: bilinear from the neighbours (Kim et al. 2021) */
 } fovpt_selective_cfg;
 
-/* Seed 004 temporal reuse (step 2) and smoothing (step 4); both off by default. */
+/* Temporal reuse (step 2) and smoothing (step 4) of Kim et al. 2021, Sec. 4.4-4.7; both off
+   by default. */
 typedef struct fovpt_temporal_cfg {
     uint32_t reuse;         /* 1: reuse pixels of the previous frame in the central region */
     uint32_t n_reuse_max;   /* 1 .. 5; 0: 5 */
@@ -735,7 +772,8 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
    head->pos -/+ ipd/2 along the head's image-right axis, view axes parallel (targets moved
    alike), the same up, size, field of view and tangents (set each eye's asymmetric tangents
    afterwards if the headset gives them, e.g. OpenVR GetProjectionRaw). ipd in scene units,
-   finite, >= 0. Both seeds render the eyes independently: one context per eye, each with
+   finite, >= 0. Axblad 2020 and Kim et al. 2021 render the eyes independently: one context
+   per eye, each with
    its own gaze (fovpt_gaze_from_point of the same 3D target). */
 FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovpt_camera eyes[2]);
 
@@ -820,15 +858,16 @@ FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_ou
 FOVPT_API void fovpt_output_init(fovpt_output *out);
 
 /* Foveation building blocks (exposed for tests and for callers with their own pipeline). */
-/* Catmull-Rom weights of v0..v3 at t in [0, 1] (seed 002 Eq. 3.17 with the t^3 coefficient
-   of v2 corrected to -3/2): they sum to 1, give v1 at t = 0 and v2 at t = 1. */
+/* Catmull-Rom weights of v0..v3 at t in [0, 1] (Axblad 2020, Eq. 3.17, with the t^3
+   coefficient of v2 corrected to -3/2): they sum to 1, give v1 at t = 0 and v2 at t = 1. */
 FOVPT_API void fovpt_catmull_rom(float t, float w[4]);
-/* Seed 004 tau_fov(e): two quadratic Bezier curves (C1 spline) through (0, tau0),
-   (e_f, tau_f), (e_np, tau_np) with slope tau'_f at e_f and zero slope at both ends;
-   tau_np beyond e_np. FOV_ERR_INVALID_ARG (via *out = 0 and the return) when the shape
-   makes x(t) non-monotone. */
+/* tau_fov(e) of Kim et al. 2021, Sec. 4.6.1: two quadratic Bezier curves (C1 spline) through
+   (0, tau0), (e_f, tau_f), (e_np, tau_np) with slope tau'_f at e_f and zero slope at both ends;
+   tau_np beyond e_np. FOV_ERR_INVALID_ARG (via *out = 0 and the return) when the shape makes
+   x(t) non-monotone. */
 FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *resolved, float e_deg, float *out);
-/* Seed 004 alpha(e): piecewise linear through the six nodes, clamped beyond e_max. */
+/* alpha(e) of Kim et al. 2021, Sec. 4.7: piecewise linear through the six nodes, clamped
+   beyond e_max. */
 FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
                             const fovpt_selective_cfg *resolved_s, float e_deg);
 
@@ -1344,7 +1383,7 @@ FOVPT_API const char *fovpt_method_name(uint32_t method)
 
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *o, uint32_t preset)
 {
-    /* seed 002 sec. 3.1.3: 6, 10, 20 degrees; d = 4 (background), 3, 2, 1; 4 spp */
+    /* Axblad 2020, Sec. 3.1.3: 6, 10, 20 degrees; d = 4 (background), 3, 2, 1; 4 spp */
     static const float rad[3] = { 20.0f, 10.0f, 6.0f };
     uint32_t i;
     if (!o) return FOV_ERR_NULL;
@@ -1384,7 +1423,7 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "Whitted max_depth above FOVPT_MAX_WHITTED");
     if (c.rr_start == 0) c.rr_start = 3;
     if (c.no_nee > 1 || c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "no_nee / accumulate: 0 or 1");
-    /* layers (seed 002) */
+    /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
         uint32_t lin = c.layers.blend_linear, snap = c.layers.snap;
@@ -1414,7 +1453,7 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     }
     if (c.layers.layer[0].radius_deg > 0.0f && !(c.layers.layer[1].radius_deg < c.layers.layer[0].radius_deg))
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer 1 radius must lie inside the occlusion mask");
-    /* zones (seed 000) */
+    /* zones (Polychronakis 2025) */
     if (fovpt__bad_f(c.zones.inner_deg) || fovpt__bad_f(c.zones.middle_deg) || fovpt__bad_f(c.zones.overlap_px))
         FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "zones");
     if (c.zones.inner_deg <= 0.0f) c.zones.inner_deg = 7.5f;
@@ -1424,7 +1463,7 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     if (!(c.zones.middle_deg > c.zones.inner_deg) || c.zones.middle_deg >= 180.0f || c.zones.overlap_px > 64.0f ||
         (c.zones.lanczos_a != 2 && c.zones.lanczos_a != 3))
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "zones: inner < middle < 180, overlap <= 64 px, lanczos_a 2 or 3");
-    /* selective (seed 004) */
+    /* selective (Kim et al. 2021) */
     {
         static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
         static const uint32_t n_def[4] = { 9, 4, 2, 1 };
@@ -1467,7 +1506,7 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
                 FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "tau_fov shape: tau'_f >= (tau_f-tau0)/e_f and >= (tau_np-tau_f)/(e_np-e_f), all > 0");
         }
     }
-    /* temporal (seed 004) */
+    /* temporal (Kim et al. 2021) */
     {
         static const float a_def[6] = { 0.9f, 0.8f, 0.7f, 0.5f, 0.2f, 0.1f };
         fovpt_temporal_cfg *t = &c.temporal;
@@ -2737,7 +2776,7 @@ FOVPT__PRIV void fovpt__reflect(const float n[3], const float wo[3], float wi[3]
     float c = 2.0f * fov__dot(n, wo);
     wi[0] = c * n[0] - wo[0]; wi[1] = c * n[1] - wo[1]; wi[2] = c * n[2] - wo[2];
 }
-/* Phong lobe probabilities (seed 002 Eq. 3.9-3.12): pS = mean(ks) / (mean(ks) + mean(kd)). */
+/* Phong lobe probabilities (Axblad 2020, Eq. 3.9-3.12): pS = mean(ks) / (mean(ks) + mean(kd)). */
 FOVPT__PRIV float fovpt__phong_ps(const fovpt_material *m)
 {
     float as = fovpt__mean3(m->specular), ad = fovpt__mean3(m->albedo);
@@ -2891,9 +2930,9 @@ FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d
     fovpt__madd3(o, p, e, n);
 }
 
-/* ---- the path tracer (seed 002 Eq. 2.1, 3.4; one consistent estimator, see the doc block) -- */
-/* Seed 004 Table 1 attributes of a presample (this library has no textures: the texture
-   flags never differ). */
+/* ---- the path tracer (Axblad 2020, Eq. 2.1, 3.4; one consistent estimator, see doc block) */
+/* Kim et al. 2021, Table 1: attributes of a presample (this library has no textures: the
+   texture flags never differ). */
 typedef struct fovpt__attr {
     uint32_t poid, soid;    /* primitive ids; FOVPT_PRIM_NONE: no hit, no secondary ray */
     float pn[3], sn[3];     /* unit normals facing the incoming ray */
@@ -2986,7 +3025,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         prev_pdf = pdf;
         prev_delta = !(pdf > 0.0f);
         fovpt__copy3(prev_p, h.p);
-        if (!(fovpt__max3(beta) > 0.0f)) break; /* zero throughput (seed 002) */
+        if (!(fovpt__max3(beta) > 0.0f)) break; /* zero throughput (Axblad 2020) */
         if (c->rr_start != FOVPT_RR_OFF && bounce + 1u >= c->rr_start) {
             float q = fov__clampf(fovpt__max3(beta), 0.05f, 1.0f);
             if (fovpt_rng_next(rng) >= q) break;
@@ -2997,7 +3036,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
     }
 }
 
-/* ---- the Whitted-style tracer (seed 004; choices in the doc block) -------------------------- */
+/* ---- the Whitted-style tracer (Kim et al. 2021; choices in the doc block) --------------- */
 FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
                                 float L[3], fovpt_stats *st, fovpt__attr *at)
 {
@@ -3145,8 +3184,8 @@ FOVPT__PRIV uint64_t fovpt__grid_cells(uint32_t w, uint32_t h, uint32_t d)
     return (uint64_t)(w / d + 2u) * (uint64_t)(h / d + 2u);
 }
 
-/* The layer table a method uses: LAYERS its own; ZONES (seed 000 ch. 4) three static
-   full-frame lattices of stride 4, 2, 1 (1/16, 1/4, all of the pixels) with the zone radii
+/* The layer table a method uses: LAYERS its own; ZONES (Polychronakis 2025, ch. 4) three
+   static full-frame lattices of stride 4, 2, 1 (1/16, 1/4, all of the pixels) with the zone radii
    (the blend width is set from the gaze's pixels per degree, fovpt__ctx_view). */
 FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
 {
@@ -3175,7 +3214,7 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
     const fov_logger *lg = &c->logger;
     if (c->method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
     if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
-        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing: SELECTIVE and JIN only (seed 004)");
+        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing: SELECTIVE and JIN only (Kim et al. 2021)");
     px = (uint64_t)cam->width * cam->height;
     if (c->method == FOVPT_METHOD_UNIFORM) {
         total = (px * 16u + 15u) & ~(uint64_t)15u;
@@ -3415,7 +3454,7 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     return FOV_OK;
 }
 
-/* SELECTIVE, JIN: a presample (48 bytes): colour reference and seed 004 Table 1 attributes */
+/* SELECTIVE, JIN: a presample (48 bytes): colour reference, Kim et al. 2021 Table 1 attributes */
 typedef struct fovpt__pre {
     float col[3];
     uint32_t poid, soid;
@@ -3488,7 +3527,7 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp, ctx->cfg.accumulate);
             }
     } else if (ctx->pre) {
-        /* SELECTIVE, JIN step 1 (seed 004 Fig. 4 A-3): one ray through each pixel centre,
+        /* SELECTIVE, JIN step 1 (Kim et al. 2021, Fig. 4 A-3): one ray through each pixel centre,
            colour reference and attributes */
         float t4[4];
         t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
@@ -3509,7 +3548,7 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 P->t = at.pt;
             }
     } else {
-        /* LAYERS (seed 002 Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
+        /* LAYERS (Axblad 2020, Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
         for (n = 0; n < ctx->lay.count; ++n) {
             uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
             uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
@@ -3538,7 +3577,7 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
     return FOV_OK;
 }
 
-/* ---- SELECTIVE and JIN: subpixel inspection and multisampling (seed 004 sec. 3.2) -------- */
+/* ---- SELECTIVE and JIN: subpixel inspection and multisampling (Kim et al. 2021, Sec. 4.6) */
 /* Step 1 of the two-step test: the threshold of the most sensitive discordant attribute
    (Table 1), else tau_col. tau[]: col, poid, psn, psc, pte, soid, ssn, ssc, ste. */
 FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre *P, const fovpt__pre *const Q[3], float cos_tol)
@@ -3571,8 +3610,8 @@ FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3
     return 0;
 }
 
-/* Seed 004 step 2: temporal pixel reuse test (conditions 1-5, see the doc block); on
-   success the previous frame's colour in rgb and the reuse count in cur[7]. */
+/* Kim et al. 2021, step 2 (Sec. 4.4): temporal pixel reuse test (conditions 1-5, see the doc
+   block); on success the previous frame's colour in rgb and the reuse count in cur[7]. */
 FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const fovpt__pre *P, float rgb[3], float *cur)
 {
     uint32_t W = ctx->cam.width, H = ctx->cam.height, prev = (ctx->hist_cur + ctx->hist_slots - 1u) % ctx->hist_slots, qx, qy;
@@ -3681,7 +3720,7 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                     st.extra_samples[zone] += nsd;
                 } else if (jin || sc->fill_centre) {
                     fovpt__copy3(sub, P->col); /* Jin et al.: the pixel-centre colour */
-                } else { /* 004: bilinear from the four pixel centres around the subpixel centre */
+                } else { /* Kim et al. 2021, Fig. 2: bilinear from the 4 pixel centres */
                     for (k = 0; k < 3; ++k)
                         sub[k] = 0.5625f * P->col[k] + 0.1875f * (Q[0]->col[k] + Q[1]->col[k]) + 0.0625f * Q[2]->col[k];
                 }
@@ -3712,8 +3751,8 @@ FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
     px = FOV__PI * x;
     return a * FOV__SIN(px) * FOV__SIN(px / a) / (px * px);
 }
-/* ZONES: Lanczos upsampling (seed 000 sec. 4.2) of lattice n at lattice position (kx + fx,
-   ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
+/* ZONES: Lanczos upsampling (Polychronakis 2025, Sec. 4.2) of lattice n at lattice position
+   (kx + fx, ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
    untraced taps dropped (weights renormalised); 0 when nothing is traced nearby. */
 FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky, float fx, float fy, float c[3])
 {
@@ -3745,8 +3784,9 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
     return 1;
 }
 
-/* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (seed 002 Eq.
-   3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when unavailable. */
+/* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (Axblad 2020,
+   Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when
+   unavailable. */
 FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y, float c[3])
 {
     const float *buf = ctx->layer_buf[n];
@@ -3800,7 +3840,7 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     return 1;
 }
 
-/* seed 002 Eq. 3.18 blend weight of layer n at eccentricity e */
+/* Axblad 2020, Eq. 3.18: blend weight of layer n at eccentricity e */
 FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
 {
     float t = (L->layer[n].radius_deg + 0.5f * L->blend_deg - e) / L->blend_deg;
@@ -3808,8 +3848,8 @@ FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
     return L->blend_linear ? t : t * t * (3.0f - 2.0f * t);
 }
 
-/* Seed 004 step 4: truncated exponential smoothing over the frames that see the same
-   first hit (within eps_depth), weights alpha (1 - alpha)^i, alpha = fovpt_alpha(e);
+/* Kim et al. 2021, step 4 (Sec. 4.7): truncated exponential smoothing over the frames that
+   see the same first hit (within eps_depth), weights alpha (1 - alpha)^i, alpha = fovpt_alpha(e);
    rejected frames drop out of the normalisation. */
 FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, float c[3])
 {
@@ -3908,7 +3948,7 @@ FOVPT_API void fovpt_output_init(fovpt_output *out)
 /* ---- foveation building blocks --------------------------------------------------------------- */
 FOVPT_API void fovpt_catmull_rom(float t, float w[4])
 {
-    /* seed 002 Eq. 3.17, t^3 coefficient of v2 = -3/2 (the thesis prints -1/2) */
+    /* Axblad 2020, Eq. 3.17, t^3 coefficient of v2 = -3/2 (the thesis prints -1/2) */
     float t2 = t * t, t3 = t2 * t;
     if (!w) return;
     w[0] = -0.5f * t3 + t2 - 0.5f * t;

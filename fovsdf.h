@@ -33,8 +33,8 @@ WHAT IT DOES
      the Balint & Valasek 2018 step, auto-relaxed (Ban & Valasek 2023). Every distance
      evaluation is counted.
    - Shading helpers: tetrahedron normals (4 evaluations), Lambert plus ambient, soft shadows
-     (Algorithm 2 of the Polychronakis thesis = Quilez's penumbra estimate) with a head start,
-     material ids, a sky gradient; 1, 4 or 16 samples per pixel.
+     (Algorithm 2, Sec. 2.3.3, of the thesis, Polychronakis 2025 = Quilez's penumbra estimate)
+     with a head start, material ids, a sky gradient; 1, 4 or 16 samples per pixel.
    - One eccentricity model (degrees between the gaze ray and a pixel's ray, from the display
      geometry), shared with fovlp.h and fovpt.h.
    - Accelerated head starts: the conservative cone pyramid (FOVSDF_METHOD_CONE), the thesis's
@@ -118,7 +118,7 @@ ACCELERATED METHODS
    apply to the thesis variant). The cone needs neither heuristic, since scaling would only
    stop it earlier. A shadow head start has no certificate: a pixel's shadow ray can meet a
    needle that the cell's ray passed.
-   FIPR (thesis ch. 5.4) and CONE_FOV (beyond the thesis): foveated head starts. A pixel is
+   FIPR (thesis Sec. 5.2.1) and CONE_FOV (beyond the thesis): foveated head starts. A pixel is
    traced (all its sample rays, from IPR's or CONE's head start) when it lies in the fovea
    (acuity.fovea_deg of eccentricity, default 7.5), or, with probability p(w) = A exp(-rate w)
    + C (fovsdf_acuity), when it lies on an edge of a low-resolution depth map (Sobel, relative
@@ -310,6 +310,29 @@ PLATFORM NOTES
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
      library's object file references no __aeabi_d* routine (checked by the tests).
+
+REFERENCES (cited by author and year, with the section, equation, algorithm or figure of that
+work; "the thesis" is Polychronakis 2025 throughout this file)
+   Polychronakis 2025  A. Polychronakis, "Implicit and Foveated Techniques for Real-Time
+                    Computer Graphics Rendering", doctoral dissertation, Technical University
+                    of Crete, 2025. Its ch. 5 (IPR, FIPR) appeared as Polychronakis et al. 2023
+                    and its ch. 6 (SKIP) as Polychronakis et al. 2024.
+   Polychronakis et al. 2023  A. Polychronakis, G. A. Koulieris, K. Mania, "An Inverted
+                    Pyramid Acceleration Structure Guiding Foveated Sphere Tracing for Implicit
+                    Surfaces in VR", Eurographics Symposium on Rendering (EGSR), 2023.
+   Polychronakis et al. 2024  A. Polychronakis, G. A. Koulieris, K. Mania, "Skipping Spheres:
+                    SDF Scaling & Early Ray Termination for Fast Sphere Tracing", Computer
+                    Graphics and Visual Computing (CGVC), 2024.
+   Hart 1996        J. C. Hart, "Sphere Tracing: A Geometric Method for the Antialiased Ray
+                    Tracing of Implicit Surfaces", The Visual Computer 12(10), 1996.
+   Keinert et al. 2014  B. Keinert, H. Schafer, J. Korndorfer, U. Ganse, M. Stamminger,
+                    "Enhanced Sphere Tracing", Smart Tools and Apps for Graphics (STAG), 2014.
+   Balint & Valasek 2018  C. Balint, G. Valasek, "Accelerating Sphere Tracing", Eurographics
+                    2018 Short Papers.
+   Ban & Valasek 2023  R. Ban, G. Valasek, "Automatic Step Size Relaxation in Sphere
+                    Tracing", Eurographics 2023 Short Papers.
+   Quilez           I. Quilez, "Distance functions" (the primitives and operators) and "Soft
+                    shadows in raymarched SDFs" (the penumbra estimate), iquilezles.org.
 
 LICENSE: see end of file.
 
@@ -535,7 +558,7 @@ typedef enum fovsdf_shading {
    fovea and 0 beyond the outer periphery (outer_deg 0: no outer zone). The OCR of the thesis
    garbles the exponent; we read it as a rate of 0.20651 per degree (tau = 4.842 degrees), the
    one reading that matches the thesis's own "75 % lower at 6 degrees" (p(6) = 0.271 against
-   p(0) = 0.918) and the hyperbolic fall-off it cites (notes seed000 section 4.2). */
+   p(0) = 0.918) and the hyperbola-like fall-off it cites (both in its Sec. 2.1.2). */
 typedef struct fovsdf_acuity {
     float A;          /* 0.90964 */
     float rate;       /* per degree, 1 / tau: 0.20651 */
@@ -1005,14 +1028,13 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], con
    (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies; radius above
    64: FOV_ERR_LIMIT, the cost grows with its square). out must not alias in. */
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
-/* FIPR's pass 5, optional (the thesis's study found it made the foveation more visible, so
-   nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied only where
-   traced and interpolated pixels meet (sigma in [0.05, 8]): a pixel is blurred when its 3x3
-   neighbourhood holds
-   both mask value 1 and another value (the mask output of FIPR / CONE_FOV); every other
-   pixel is copied. Kernel radius ceil(3 sigma), renormalised at the image borders. rgb and out are
-   3 floats per pixel with row strides in floats (0: 3 w), mask a byte per pixel (stride 0: w);
-   out must not alias rgb. */
+/* FIPR's pass 5, optional (the thesis's study, Sec. 5.4.1, found it made the foveation more
+   visible, so nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied
+   only where traced and interpolated pixels meet (sigma in [0.05, 8]): a pixel is blurred when
+   its 3x3 neighbourhood holds both mask value 1 and another value (the mask output of FIPR /
+   CONE_FOV); every other pixel is copied. Kernel radius ceil(3 sigma), renormalised at the
+   image borders. rgb and out are 3 floats per pixel with row strides in floats (0: 3 w), mask a
+   byte per pixel (stride 0: w); out must not alias rgb. */
 FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask,
                                        uint32_t mask_stride, uint32_t w, uint32_t h, float sigma,
                                        float *out, uint32_t out_stride);
@@ -2675,7 +2697,7 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
 }
 
 /* ---- primitive distance functions (canonical exact forms after Quilez; the thesis's
-        section 2.2 lists the same set, notes seed000 section 2.1) ------------------------- */
+        Sec. 2.2.1 lists the same set) ------------------------------------------------------ */
 FOVSDF__PRIV float fovsdf__sd_box(float x, float y, float z, float bx, float by, float bz)
 {
     float qx = fov__absf(x) - bx, qy = fov__absf(y) - by, qz = fov__absf(z) - bz;
@@ -3943,7 +3965,7 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
     return FOV_OK;
 }
 
-/* ---- conservative cone pyramid (beyond the thesis; design note shared/notes/cone_pyramid.md) --
+/* ---- conservative cone pyramid (beyond the thesis; the cone-marching bound, derived here) ----
    A cell is a rectangle of pixels; its cone has its apex at the pinhole, its axis a through the
    cell's centre and half-angle alpha, the largest angle between a and the rays through the
    cell's corners (every sample of every pixel of the cell lies inside), k = tan(alpha).
@@ -4115,7 +4137,7 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
     return FOV_OK;
 }
 
-/* ---- inverted pyramid rendering, IPR (thesis ch. 5.3, notes seed000 section 1.5.1) ----------
+/* ---- inverted pyramid rendering, IPR (thesis Sec. 5.2; Polychronakis et al. 2023) ----------
    Level 0 traces one ray per cell of 2^(levels-1) x 2^(levels-1) pixels through the cell's
    centre from the camera; every higher level traces the rays of cells half as wide, each from
    the minimum t of its parent and the parent's neighbours within ipr_radius (the neighbour
@@ -4238,7 +4260,7 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
         }
 }
 
-/* ---- Skipping Spheres, SKIP (thesis ch. 6, notes seed000 section 1.6) -----------------------
+/* ---- Skipping Spheres, SKIP (thesis Sec. 6.2; Polychronakis et al. 2024) -------------------
    Pass 1, per grid-aligned cell of skip_block x skip_block pixels: one ray through the cell's
    centre marches the scene scaled by s (Scale(p) = f(p/s) s per primitive, subtracted operands
    by 1/s so holes shrink; s becomes 1/s when the camera is inside, so the scene deflates)
@@ -4311,7 +4333,7 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
             fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
 }
 
-/* ---- foveated methods: FIPR (thesis ch. 5.4, Fig. 5.3; notes seed000 section 1.5.2) and
+/* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
    CONE_FOV (the same mask and refresh on the cone pyramid) -----------------------------------
    Per grid-aligned tile (ipr_tile pixels for FIPR, cone_tile for CONE_FOV), in the order the
    data flows (the thesis's five passes):
@@ -4346,7 +4368,7 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
       mask output says 2). A static scene and gaze therefore reach the image of refresh 1
       after `refresh` consecutive frames.
    5. the thesis's mask-guided blur is not applied here: its study found it made the
-      foveation more visible (notes section 3.3); fovsdf_mask_blur does it on request.
+      foveation more visible (thesis Sec. 5.4.1, Fig. 5.8); fovsdf_mask_blur does it on request.
    Everything is lazy: a cell is traced, or shaded, the first time a pixel of the tile needs
    it, so the fovea never shades mid-level rays and the periphery never traces its pixels.
    The tile's arrays hold its cells and a one-cell (FIPR: max(1, r)) apron; the apron cells
@@ -4689,7 +4711,7 @@ FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint3
     return fovsdf_render_tile(c, 0, y0, c->cam.width, y1, o, stats);
 }
 
-/* ---- built-in scenes (modelled on the thesis's test scenes, notes seed000 section 2.3) ----- */
+/* ---- built-in scenes (modelled on the thesis's test scenes, Fig. 5.5 and 6.4) ------------- */
 /* Node capacity of each built-in scene (exactly what its builder creates: a scene that grows
    without updating this fails fovsdf_builtin_init with FOV_ERR_TOO_SMALL, which the tests see). */
 static const uint32_t fovsdf__scene_nodes[_FOVSDF_SCENE_NUM] = { 67u, 25u, 20u, 61u, 28u, 9u };

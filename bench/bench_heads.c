@@ -16,7 +16,9 @@
    CLASSIC and CONE are printed for reference (heuristic_start does not apply to them).
 
    usage: bench_heads [--size W H] [--runs N] [--scenes a,b]     (default 320 180, 3 runs)
-   build: gcc -std=c99 -O2 -I. bench/bench_heads.c -lm -pthread -o build/bench_heads */
+   build: gcc -std=c99 -O2 -I. bench/bench_heads.c -lm -pthread -o build/bench_heads
+   "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+   Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025. */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
 #define FOVIMG_IMPLEMENTATION

@@ -42,7 +42,9 @@
    --full), the four presets of Table 5.1 plus C Fov at sigma 1.7 and 2.0 (Table 5.4); the
    moving sequence (12 frames) on primitives and columns. --full: all six scenes, every preset at sigma x
    {0.8, 1, 1.25, 1.5} of its own, the moving sequence on every scene.
-   --hd: 1280x720. --shadows: with soft shadows (several times slower on the lit scenes). */
+   --hd: 1280x720. --shadows: with soft shadows (several times slower on the lit scenes).
+   "The thesis": K. Andersson, T. Hansson, "Performance Optimizations for Foveated Real-Time
+   Raytracing", master's thesis, Lund University, LU-CS-EX 2020-64, 2020. */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
 #define FOVLP_IMPLEMENTATION

@@ -13,10 +13,11 @@
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
      mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea
-   - method: uniform4 / uniform1 (the non-foveated renderer at 4 and 1 spp; seed 002's
-     regular system uses 4), layers (seed 002, 6/10/20 deg as radii), layers_diam (as
-     diameters), zones (seed 000 ch. 4), whitted1 (UNIFORM Whitted, 1 spp), selective (seed
-     004), jin (Jin et al. 2009).
+   - method: uniform4 / uniform1 (the non-foveated renderer at 4 and 1 spp; the regular
+     system of Axblad 2020, Sec. 3.1.3, uses 4), layers (Axblad 2020, 6/10/20 deg as radii),
+     layers_diam (as diameters), zones (Polychronakis 2025, ch. 4), whitted1 (UNIFORM
+     Whitted, 1 spp), selective (Kim et al. 2021), jin (Jin et al. 2009); the papers are
+     listed in full at the end of this comment.
    - budget: which budget the row was given.
        default          the method's own settings (the rows above).
        eqrays_<m>       method uniform_eq: UNIFORM at the spp whose camera rays match method
@@ -29,16 +30,16 @@
                         measured time is in time_ms, the target in budget_time_ms).
        eqtime_<m>       method uniform_eqt: UNIFORM at the spp whose time matches method
                         <m>'s (spp = time of <m> / time of uniform1 or whitted1, rounded).
-   - mode: path (path tracing, max depth 8, NEE) for uniform/layers/zones; whitted (depth 3)
-     for selective/jin/whitted1 (seed 004 is a Whitted ray tracer); each against the ground
+   - mode: path (path tracing, max depth 8, NEE) for uniform/layers/zones; whitted (depth 3) for
+     selective/jin/whitted1 (Kim et al. 2021 is a Whitted ray tracer); each against the ground
      truth of its own mode: UNIFORM at --gt-spp samples (path) or 64 (Whitted).
    - rays_per_s: all rays (camera, bounce, shadow) / time, ONE thread (per core);
      time_ms: CPU time of the one thread that renders the method (trace + refine + resolve;
      thread CPU time, so other jobs on the shared cores do not stretch it).
    - psnr_f1..f4: PSNR (peak 1, sRGB-encoded clamped values) over the annuli of eccentricity
-     [0, 3.3), [3.3, 5.5), [5.5, 12.1), [12.1, 30) degrees (seed 004's fovea, parafovea,
-     perifovea, near periphery), psnr_all over the image; eccentricity from the camera's
-     field of view (fovpt_ecc_*). An empty annulus gives nan.
+     [0, 3.3), [3.3, 5.5), [5.5, 12.1), [12.1, 30) degrees (the fovea, parafovea, perifovea
+     and near periphery of Kim et al. 2021, Sec. 4.1), psnr_all over the image; eccentricity
+     from the camera's field of view (fovpt_ecc_*). An empty annulus gives nan.
    - speedup: time of uniform4 / time of the row (same scene and gaze).
    - budget_time_ms: the time the row was matched to (eq rows; nan for default rows).
    - spp_fovea: samples per target pixel in the fovea (UNIFORM, ZONES: spp; LAYERS: the
@@ -50,7 +51,15 @@
    fovpt_intersect and by Embree 3 (rtcIntersect1, a device with threads=1), one thread
    each, best of 5 runs interleaved (fovpt, Embree, fovpt, ...; thread CPU time); rows fovpt_bvh and embree, budget rays_<N>, mode
    closest_hit, speedup = Embree's time / this row's time; the hit agreement (same hit or
-   miss, |dt| <= 1e-4 t) is printed. */
+   miss, |dt| <= 1e-4 t) is printed.
+
+   Papers: Axblad 2020 = T. Axblad, "Impact of Foveated Rendering on Path Tracing Frame Rate
+   in Head-Mounted VR Displays", master's thesis, KTH, 2020. Kim et al. 2021 = Y. Kim, Y. Ko,
+   I. Ihm, "Selective Foveated Ray Tracing for Head-Mounted Displays", IEEE ISMAR 2021.
+   Polychronakis 2025 = A. Polychronakis, "Implicit and Foveated Techniques for Real-Time
+   Computer Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025.
+   Jin et al. 2009 = B. Jin, I. Ihm et al., "Selective and Adaptive Supersampling for
+   Real-Time Ray Tracing", High Performance Graphics 2009. */
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
@@ -287,14 +296,14 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
     pt_scene_free(&S);
 }
 
-/* ---- temporal options of SELECTIVE (seed 004 steps 2 and 4): flicker and the alpha sweep --
+/* ---- temporal options of SELECTIVE (Kim et al. 2021, steps 2 and 4): flicker, alpha sweep --
    Per scene, gaze at the centre, SELECTIVE in Whitted mode, TF frames each:
    - a moving view (turning 0.1 degree per frame about the vertical, about a third of a
      pixel): PSNR per visual field of the last frame against UNIFORM Whitted at 64 spp of the
-     last frame's view (seed 004 Table 3 compares against a high-spp reference);
+     last frame's view (Kim et al. 2021, Table 3, compares against a high-spp reference);
    - a static view: flicker = per pixel and channel the standard deviation over frames
      n_tpi + 1 .. TF - 1 (history full) of the sRGB value, root-mean-square over a field.
-   Options: off, reuse, smoothing with alpha(e) (the seed's curve), smoothing with a fixed
+   Options: off, reuse, smoothing with alpha(e) (Kim et al.'s curve), smoothing with a fixed
    alpha (0.1 .. 0.9, Table 3's sweep), reuse + smoothing. Writes pt_temporal.csv beside
    pt.csv. */
 #define TF 10u

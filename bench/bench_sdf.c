@@ -37,7 +37,9 @@
    1, 4, 16 spp, gaze at the centre and at a corner (10 % of the width and height), fipr and
    cone_fov at every fovea (2.5, 5, 7.5, 10, 15 degrees) and refresh (1, 1/2, 1/4): 1332 rows,
    hours. --hd: 1920x1080. Shading without shadow rays by default (as in the thesis's IPR/FIPR
-   study); --shadows adds them. */
+   study); --shadows adds them.
+   "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+   Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025. */
 #define FOVSDF_IMPLEMENTATION
 #include "../fovsdf.h"
 #define FOVIMG_IMPLEMENTATION

@@ -18,7 +18,9 @@
    tests/common/fovstress.h: t > t_in, the first t where the double distance is below
    -(8 FLT_EPSILON (|camera| + t) + 0.02 thr(t)).
    Hits at exhausted steps count as hits (as the library shades them).
-   Usage: bench_stress [--size W H] [--out FILE] [--far D] [--kind K (0..5: one scene)] */
+   Usage: bench_stress [--size W H] [--out FILE] [--far D] [--kind K (0..5: one scene)]
+   "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+   Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025. */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
 #include "../tests/common/fovstress.h"

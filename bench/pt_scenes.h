@@ -5,12 +5,15 @@
                         two boxes, a Phong sphere and a mirror sphere
      PT_SCENE_MESH      a procedural height-field terrain of 2 x 224 x 224 = 100 352
                         triangles under a sky and a sphere sun
-     PT_SCENE_CUBES     441 axis-aligned cubes on a 21 x 21 grid (seed 002's multi-object
-                        scene) on a floor, lit by a quad light and the sky
-     PT_SCENE_MIRRORS   seed 002's mirror room: six slightly emissive mirror walls around
-                        a few objects (every path reaches the bounce limit)
+     PT_SCENE_CUBES     441 axis-aligned cubes on a 21 x 21 grid (the multi-object scene of
+                        Axblad 2020, Fig. 3.3) on a floor, lit by a quad light and the sky
+     PT_SCENE_MIRRORS   the mirror room of Axblad 2020, Fig. 3.4: six slightly emissive
+                        mirror walls around a few objects (every path reaches the bounce
+                        limit)
      PT_SCENE_INTERIOR  a room with four lights (three ceiling quads, one sphere lamp),
                         furniture boxes, a glass sphere and a Phong sphere
+   Axblad 2020: T. Axblad, "Impact of Foveated Rendering on Path Tracing Frame Rate in
+   Head-Mounted VR Displays", master's thesis, KTH Royal Institute of Technology, 2020.
 
    pt_scene_make(&s, id) fills s (shapes, meshes, materials, camera) and builds the scene;
    pt_scene_free(&s). Returns 0 on success. */

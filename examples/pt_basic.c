@@ -1,5 +1,7 @@
 /* pt_basic.c - the smallest fovpt program: a grey ball and a glass ball under a lamp, path
-   traced with seed 002's foveation layers (gaze at the image centre), written as a PPM image.
+   traced with the foveation layers of Axblad 2020, Sec. 3.1.3 (gaze at the image centre),
+   written as a PPM image. Axblad 2020: T. Axblad, "Impact of Foveated Rendering on Path
+   Tracing Frame Rate in Head-Mounted VR Displays", master's thesis, KTH, 2020.
    Build: cc -O2 examples/pt_basic.c -I. -lm -o pt_basic && ./pt_basic > pt_basic.ppm
    (stderr: the rays traced per layer and in total) */
 #define FOVPT_IMPLEMENTATION
@@ -32,7 +34,7 @@ int main(void)
     fovpt_material_init(&mat[2]);                       /* glass */
     mat[2].type = FOVPT_MAT_DIELECTRIC;
     mat[2].albedo[0] = mat[2].albedo[1] = mat[2].albedo[2] = 1.0f;
-    fovpt_material_init(&mat[3]);                       /* a shiny floor (seed 002's Phong) */
+    fovpt_material_init(&mat[3]);                       /* a shiny floor (Axblad's Phong) */
     mat[3].type = FOVPT_MAT_PHONG;
     mat[3].albedo[0] = 0.5f; mat[3].albedo[1] = 0.45f; mat[3].albedo[2] = 0.4f;
     mat[3].specular[0] = mat[3].specular[1] = mat[3].specular[2] = 0.3f;

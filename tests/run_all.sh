@@ -90,6 +90,8 @@ three_builds api_stress tests/test_api_stress.c
 three_builds versions tests/test_versions.c
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
+# no tracked file cites the internal background documents; each header has REFERENCES
+run_section refs bash tests/refs.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
     run_section unit_metrics build/tests/test_metrics
 fi

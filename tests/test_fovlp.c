@@ -2,7 +2,10 @@
    thesis's ray counts, sampling, reconstruction, bad input). tests/test_fovlp_taa.c tests
    the temporal part. Built three ways by tests/run_all.sh (libm, FOV_NO_LIBM, sanitizers).
    fovsdf.h is compiled into the same program: the two headers coexist in one translation
-   unit, and the eccentricity functions are compared. */
+   unit, and the eccentricity functions are compared.
+   "The thesis": K. Andersson, T. Hansson, "Performance Optimizations for Foveated Real-Time
+   Raytracing", master's thesis, Lund University, LU-CS-EX 2020-64, 2020; its equation,
+   section and table numbers are cited. */
 #define FOV_IMPL
 #include "fovsdf.h"
 #include "fovlp.h"
@@ -111,8 +114,8 @@ static void test_config(void)
               name, "%g %g %g %g", (double)p.sigma, (double)p.alpha, (double)p.gaze_angle, (double)p.lp_aspect);
     }
     check(strcmp(fovlp_preset_name(99), "unknown") == 0, "presets: unknown preset name", " ");
-    /* eq. 3.6 sizes at 1920x1080 (notes 3.4: Fov 2104x1753, K Fov 1205x1721, C Fov 591x1791,
-       C K Fov 655x1872) and the C Fov disc (r_G 258, u_G 1533 with the thesis edge formula) */
+    /* eq. 3.6 sizes at 1920x1080 for the Table 5.1 presets, worked out by hand (Fov 2104x1753,
+       K Fov 1205x1721, C Fov 591x1791, C K Fov 655x1872) and the C Fov disc (r_G 258, u_G 1533 with the thesis edge formula) */
     {
         static const uint32_t wh[4][2] = { { 2104, 1753 }, { 1205, 1721 }, { 591, 1791 }, { 655, 1872 } };
         int ok = 1;
@@ -128,7 +131,7 @@ static void test_config(void)
         p.edge = FOVLP_EDGE_THESIS;
         fovlp_geometry_get(&p, gz, &g);
         check(fabsf(g.r_g - 257.8f) < 0.5f && fabsf(g.u_g - 1533.4f) < 2.0f && fabsf(g.L - 7.6975f) < 1e-3f,
-              "sizes: C Fov r_G = 257.8 px, u_G = 1533.4, L = log(diag) = 7.6975 (notes 3.4)",
+              "sizes: C Fov r_G = 257.8 px, u_G = 1533.4, L = log(diag) = 7.6975 (eqs. 3.3-3.5, 3.10)",
               "r_G %g u_G %g L %g", (double)g.r_g, (double)g.u_g, (double)g.L);
         p.edge = FOVLP_EDGE_LOG_R;
         fovlp_geometry_get(&p, gz, &g);
@@ -460,7 +463,7 @@ static void test_angles(void)
 }
 
 /* density (LP texels per pixel area) falls with eccentricity for alpha > 1, and the kernel
-   moves samples outwards: the ratio to the alpha = 1 density grows with r (notes 1.5) */
+   moves samples outwards: the ratio to the alpha = 1 density grows with r (thesis Sec. 3.3.2) */
 static void test_density(void)
 {
     float alphas[3] = { 2.0f, 3.0f, 4.0f };
@@ -555,7 +558,9 @@ static void test_aspect_match(void)
 /* ---- the thesis's ray counts (Table 5.3) ------------------------------------------------------ */
 static void test_ray_counts(void)
 {
-    /* thesis (dispatched, traced) and the notes' checked model (seed001_raycount_model.py) */
+    /* thesis (dispatched, traced) and an independent model of eqs. 3.2-3.10 (a Python script
+       outside this repository: every LP texel's sample tested against the screen, the disc's
+       pixels against the circle; 1920x1080, gaze at the centre, eye distance diag / tan 60) */
     static const float thesis[4][2] = { { 162.0f, 154.0f }, { 75.4f, 65.7f }, { 48.3f, 37.5f }, { 47.6f, 37.7f } };
     static const float model[4][2] = { { 161.9f, 153.4f }, { 75.4f, 64.4f }, { 47.4f, 35.9f }, { 47.2f, 36.4f } };
     int p, edge;
@@ -576,7 +581,7 @@ static void test_ray_counts(void)
                      (double)n.shaded_pct, (double)thesis[p][0], (double)thesis[p][1]);
             check(fabsf(n.dispatched_pct - thesis[p][0]) <= 2.0f && fabsf(n.shaded_pct - thesis[p][1]) <= 2.0f, name, " ");
             if (edge) {
-                snprintf(name, sizeof name, "ray counts: %s with the thesis edge matches the notes' model (%.1f / %.1f) within 0.3 pp",
+                snprintf(name, sizeof name, "ray counts: %s with the thesis edge matches an independent model (%.1f / %.1f) within 0.3 pp",
                          fovlp_preset_name((uint32_t)p), (double)model[p][0], (double)model[p][1]);
                 check(fabsf(n.dispatched_pct - model[p][0]) <= 0.3f && fabsf(n.shaded_pct - model[p][1]) <= 0.3f, name,
                       "%.2f %.2f", (double)n.dispatched_pct, (double)n.shaded_pct);
@@ -680,7 +685,7 @@ static void test_sampling(void)
               (double)(mu / 16.0f), (double)(mv / 16.0f), (double)mx);
         fovlp_jitter(&c, 0, &ou, &ov);
         check(fabsf(ou - 0.5f * 1.062241f) < 1e-4f && fabsf(ov - (1.0f / 3.0f) * 1.08f) < 1e-4f,
-              "jitter: phase 0 = Halton index 1 = (1/2, 1/3) scaled by 1.062241 / 1.08 (notes 1.9)", "%g %g",
+              "jitter: phase 0 = Halton index 1 = (1/2, 1/3) scaled by 1.062241 / 1.08 (thesis eq. 3.11)", "%g %g",
               (double)ou, (double)ov);
         c.taa.halton_start = 16;
         fovlp_jitter(&c, 0, &ou, &ov);

@@ -2,7 +2,9 @@
    inputs every FOV_OK output is finite and inside its documented range, however large the
    values (colours near FLT_MAX, huge depths, far points, extreme sigma / alpha). Expected
    values are analytic (a mean of two colours, a power-of-two scaling) or double precision.
-   Built three ways by tests/run_all.sh (libm, FOV_NO_LIBM, sanitizers). */
+   Built three ways by tests/run_all.sh (libm, FOV_NO_LIBM, sanitizers).
+   "The thesis": K. Andersson, T. Hansson, "Performance Optimizations for Foveated Real-Time
+   Raytracing", master's thesis, Lund University, LU-CS-EX 2020-64, 2020. */
 #define FOVLP_IMPLEMENTATION
 #include "fovlp.h"
 

@@ -2,7 +2,9 @@
    16 spp ground truth and TAA cuts peripheral flicker; a camera moving across a high-contrast
    edge leaves no ghost (near the gaze: none at any frame; in the periphery, where the thesis
    keeps history, none 5 frames after the camera stops); gaze-jump reset, jitter off while
-   moving, neighbourhood clamp. Built three ways by tests/run_all.sh. */
+   moving, neighbourhood clamp. Built three ways by tests/run_all.sh.
+   "The thesis": K. Andersson, T. Hansson, "Performance Optimizations for Foveated Real-Time
+   Raytracing", master's thesis, Lund University, LU-CS-EX 2020-64, 2020. */
 #define FOVLP_IMPLEMENTATION
 #include "fovlp.h"
 

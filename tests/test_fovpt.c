@@ -8,7 +8,13 @@
  *
  * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
  * Expected values come from analytic formulas, brute force or independent quadrature done
- * here (in double), or from the notes' reference tables; never from the code under test.
+ * here (in double), or from reference tables worked out by hand from the papers' formulas;
+ * never from the code under test. Papers (in full in fovpt.h's REFERENCES): Axblad 2020
+ * (T. Axblad, "Impact of Foveated Rendering on Path Tracing Frame Rate in Head-Mounted VR
+ * Displays", KTH, 2020), Kim et al. 2021 (Y. Kim, Y. Ko, I. Ihm, "Selective Foveated Ray
+ * Tracing for Head-Mounted Displays", ISMAR 2021), Polychronakis 2025 (A. Polychronakis,
+ * "Implicit and Foveated Techniques for Real-Time Computer Graphics Rendering", doctoral
+ * dissertation, Technical University of Crete, 2025).
  *
  * Sections:
  *   1. API, configs, shared block, eccentricity against fovsdf.
@@ -96,10 +102,10 @@ static void test_api(void)
           "spp %u depth %u rr %u", c.spp, c.max_depth, c.rr_start);
     check(c.layers.count == 4 && fabsf(c.layers.layer[3].radius_deg - 6.0f) < 1e-6f && c.layers.layer[1].stride == 3 &&
               c.layers.layer[0].stride == 4 && c.layers.layer[2].spp == 4,
-          "config defaults: seed 002 layers", " ");
+          "config defaults: Axblad 2020 layers", " ");
     check(fabsf(c.selective.e_deg[3] - 30.0f) < 1e-6f && c.selective.n_sd[0] == 9 && fabsf(c.selective.tau[1] - 0.05f) < 1e-7f &&
               fabsf(c.temporal.alpha[4] - 0.2f) < 1e-7f && c.temporal.n_reuse_max == 5,
-          "config defaults: seed 004 tables", " ");
+          "config defaults: Kim et al. 2021 tables", " ");
     {
         fovpt_config w;
         memset(&w, 0, sizeof w);
@@ -1281,7 +1287,7 @@ static void test_foveation_blocks(void)
     check(ok, "Catmull-Rom weights sum to one (101 values of t)", " ");
     check(lin, "Catmull-Rom reproduces linear ramps", " ");
     check(ends, "Catmull-Rom gives v1 at t = 0 and v2 at t = 1 (the thesis's -1/2 would give 2 v2)", " ");
-    {   /* tau_fov against the notes' reference table (seed 004 Fig. 7 shapes) */
+    {   /* tau_fov against a table worked out by hand (the two shapes of Kim et al. 2021, Fig. 7) */
         static const float e[10] = { 0, 1, 2, 3.3f, 5.5f, 8, 12.1f, 20, 25, 30 };
         static const float r1[10] = { 1.000f, 1.124f, 1.428f, 2.000f, 3.090f, 4.300f, 6.209f, 9.509f, 11.160f, 12.000f };
         static const float r2[10] = { 9.000f, 9.042f, 9.210f, 10.000f, 12.676f, 14.760f, 17.015f, 19.245f, 19.830f, 20.000f };
@@ -1313,7 +1319,7 @@ static void test_foveation_blocks(void)
         check(fovpt_tau_fov(&c.selective, 2.0f, &v) == FOV_ERR_INVALID_ARG && fovpt_tau_fov(&c.selective, NAN, &v) == FOV_ERR_NOT_FINITE,
               "tau_fov: non-monotone shape and NaN rejected", " ");
     }
-    {   /* alpha(e): the notes' derived values */
+    {   /* alpha(e): values worked out by hand from the six nodes (Kim et al. 2021, Sec. 4.7) */
         fovpt_config c = fovpt_config_default();
         float a2 = fovpt_alpha(&c.temporal, &c.selective, 2.0f), a10 = fovpt_alpha(&c.temporal, &c.selective, 10.0f);
         float a20 = fovpt_alpha(&c.temporal, &c.selective, 20.0f), a40 = fovpt_alpha(&c.temporal, &c.selective, 40.0f);
@@ -1326,7 +1332,7 @@ static void test_foveation_blocks(void)
 }
 
 
-/* ==== 6. LAYERS (seed 002) ==================================================================== */
+/* ==== 6. LAYERS (Axblad 2020) ================================================================= */
 typedef struct layers_fixture {
     fovpt_material m[2];
     fovpt_shape sh[2];
@@ -1522,7 +1528,7 @@ static void test_layers(void)
     free(F.b.mem);
 }
 
-/* ==== 7. ZONES (seed 000 ch. 4) ================================================================ */
+/* ==== 7. ZONES (Polychronakis 2025, ch. 4) =================================================== */
 static void test_zones(void)
 {
     layers_fixture F;
@@ -1624,7 +1630,7 @@ static void test_zones(void)
     free(F.b.mem);
 }
 
-/* ==== 8. SELECTIVE and JIN (seed 004) ========================================================= */
+/* ==== 8. SELECTIVE and JIN (Kim et al. 2021) ================================================== */
 static fovpt__pre mkpre(float r, float g, float b, uint32_t poid, float nz, uint32_t psc, uint32_t soid)
 {
     fovpt__pre p;
@@ -1770,7 +1776,7 @@ static void test_selective_render(void)
                pf_sel, pn_sel, pf_jin, pn_jin, pf_one, (unsigned long long)ss.camera_rays, (unsigned long long)sj.camera_rays);
         check(pf_sel > pf_one + 3.0, "SELECTIVE fovea PSNR > 1 spp + 3 dB (against 64 spp)", "%.2f vs %.2f", pf_sel, pf_one);
         check(pf_sel >= pf_jin - 0.5, "SELECTIVE fovea PSNR at least Jin's (9 vs 4 samples per subpixel)", "%.2f vs %.2f", pf_sel, pf_jin);
-        check(pn_jin >= pn_sel, "JIN beats SELECTIVE in the near periphery (seed 004's pattern)", "%.2f vs %.2f", pn_jin, pn_sel);
+        check(pn_jin >= pn_sel, "JIN beats SELECTIVE in the near periphery (the pattern of Kim et al. 2021)", "%.2f vs %.2f", pn_jin, pn_sel);
         check(ss.camera_rays < sj.camera_rays, "SELECTIVE traces fewer rays than JIN", "%llu vs %llu", (unsigned long long)ss.camera_rays,
               (unsigned long long)sj.camera_rays);
     }
@@ -1789,7 +1795,7 @@ static void test_selective_render(void)
     free(b.mem);
 }
 
-/* ==== 9. temporal reuse and smoothing (seed 004 steps 2 and 4) ================================ */
+/* ==== 9. temporal reuse and smoothing (Kim et al. 2021, steps 2 and 4) ======================== */
 static void test_temporal(void)
 {
     fovpt_material m[6];

@@ -26,6 +26,8 @@
  *      supersampling coverage against the documented sample patterns, every built-in
  *      scene x method x shading mode, camera rays and stereo, an analytic sphere image.
  *   5. (FOV_NO_LIBM builds only) the built-in float math against libm.
+ * "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+ * Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025.
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"

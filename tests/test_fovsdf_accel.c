@@ -10,7 +10,9 @@
    The cones run with no stop slack (march until a cone touches a surface): the default slack
    only stops them earlier, and without it a geometric error shows (planted errors in the
    step, the cone angle or the empty-cell rule fail this test; with the default slack they
-   hide behind the margin). */
+   hide behind the margin).
+   "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+   Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025. */
 #define FOVSDF_CONE_SLACK 0.0f
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -699,10 +701,12 @@ static void acuity_tests(void)
         if (fabs(got - want) > 1e-5) ++bad;
     }
     check(bad == 0, "acuity_curve_values", "%d of 9 values off by more than 1e-5 (worst %.3g)", bad, worst);
-    /* the notes' table (seed000 section 4.2): 0.918 0.551 0.332 0.271 0.201 0.123 0.049 0.023 0.010 */
+    /* p(w) = 0.90964 exp(-0.20651 w) + 0.00792 (the thesis's Eq. 4.1 as fovsdf.h reads it)
+       worked out by hand at 0 2.5 5 6 7.5 10 15 20 30 degrees: 0.918 0.551 0.332 0.271 0.201
+       0.123 0.049 0.023 0.010 */
     check(fabs((double)fovsdf_acuity_p(&a, 6.0f) - 0.271) < 5e-4 && fabs((double)fovsdf_acuity_p(&a, 0.0f) - 0.918) < 5e-4 &&
               fabs((double)fovsdf_acuity_p(&a, 30.0f) - 0.010) < 5e-4,
-          "acuity_matches_notes_table", "p(0) %.4f p(6) %.4f p(30) %.4f", (double)fovsdf_acuity_p(&a, 0.0f),
+          "acuity_matches_reference_table", "p(0) %.4f p(6) %.4f p(30) %.4f", (double)fovsdf_acuity_p(&a, 0.0f),
           (double)fovsdf_acuity_p(&a, 6.0f), (double)fovsdf_acuity_p(&a, 30.0f));
     a = fovsdf_acuity_default();
     a.outer_deg = 25.0f;

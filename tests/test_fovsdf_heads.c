@@ -20,7 +20,9 @@
    3. Regressions: a 1x1 image sends SKIP's low-resolution ray through its pixel (it went
       outside the image); FIPR / CONE_FOV interpolated pixels never report a depth outside
       [0, t_max] or a non-finite one (a tracer's hit beyond t_max, and a Menger node of
-      half-size 4.6e-41 that gave depth inf). */
+      half-size 4.6e-41 that gave depth inf).
+   "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
+   Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025. */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
 #include "fovcheck.h"
