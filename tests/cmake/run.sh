@@ -1,0 +1,253 @@
+#!/usr/bin/env bash
+# tests/cmake/run.sh - the fov headers consumed through build systems (docs/build.md).
+#
+# Run from anywhere:   bash tests/cmake/run.sh
+# Builds the tiny consumer project tests/cmake/consumer (main.c: the three headers with
+# FOV_IMPL; each config resolves; FOVSDF_VERSION_STRING equals the version the build system
+# reports) once per way of getting the headers, runs it, and prints one line per way (PASS name /
+# FAIL name: detail / SKIP name: reason (apt-get install -y PKG)), then exactly
+# "N passed, N failed" (SKIPs are not counted); exit status 1 when anything failed. With
+# CI=true a missing cmake, pkg-config or git is a FAIL, not a SKIP. Everything happens under
+# build/cmake-test/ (recreated, and removed at the end unless KEEP=1); no network.
+#   cmake_install      configure + build + `cmake --install --prefix P` of the repository with
+#                      CC and CXX pointing at no compiler (so nothing is compiled and no
+#                      language is enabled), P differing from the configured prefix: the three
+#                      headers land byte-identical in P/include/fov/, P/share/cmake/fov/ holds
+#                      fovConfig.cmake, fovConfigVersion.cmake and fovTargets.cmake, fov.pc says
+#                      prefix=P, and no test is registered (FOV_BUILD_TESTS defaults to OFF)
+#   add_subdirectory   add_subdirectory(<repository>)
+#   fetchcontent_git   FetchContent_Declare(GIT_REPOSITORY file://<a git copy of the working
+#                      tree> GIT_TAG <its commit>) + FetchContent_MakeAvailable
+#   fetchcontent_disconnected  FETCHCONTENT_FULLY_DISCONNECTED=ON and
+#                      FETCHCONTENT_SOURCE_DIR_FOV=<repository>, GIT_REPOSITORY unreachable
+#   find_package       find_package(fov <version> EXACT CONFIG REQUIRED COMPONENTS fovsdf
+#                      fovlp fovpt) from P; fov_DIR must be P's; find_package(fov 99.0) and a
+#                      missing component must not be found
+#   pkg_config         `pkg-config --cflags --libs fov` from P's fov.pc (Cflags -IP/include/fov,
+#                      Libs -lm, --modversion = the version), main.c built with them alone
+#   make_install       `make install PREFIX=Q` (and PREFIX=/opt/fov DESTDIR=S: files under S,
+#                      fov.pc still says /opt/fov), then the pkg_config build against Q
+#   tests_option       -DFOV_BUILD_TESTS=ON builds tests/test_versions.c and main.c; ctest passes
+# The expected version is read from fovsdf.h's first line ("fovsdf.h - vX.Y.Z - ..."), not
+# from the macros CMake and the Makefile parse.
+# Debian packages: cmake pkg-config git gcc make.
+
+set -u
+ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+cd "$ROOT" || exit 1
+B=$ROOT/build/cmake-test
+rm -rf "$B"
+mkdir -p "$B"
+IS_CI=0
+[ "${CI:-}" = true ] && IS_CI=1
+CC=${CC:-cc}
+export CC
+NP=0
+NF=0
+START=$(date +%s)
+
+pass() { echo "PASS $1"; NP=$((NP + 1)); }
+fail() { echo "FAIL $1: $2"; NF=$((NF + 1)); }
+skip() {
+    if [ "$IS_CI" = 1 ]; then
+        fail "$1" "$2 not found (CI=true: a missing tool is a failure; apt-get install -y cmake pkg-config git)"
+    else
+        echo "SKIP $1: $2 not found (apt-get install -y cmake pkg-config git)"
+    fi
+}
+have() { command -v "$1" >/dev/null 2>&1; }
+# logtail LOG: the last lines of a log, on one line
+logtail() { printf '%s (log: %s)' "$(tail -n 4 "$1" | tr '\n' '|' | cut -c1-500)" "$1"; }
+
+EXPECT=$(sed -n '1s/^.*fovsdf\.h - v\([0-9][0-9]*\.[0-9][0-9]*\.[0-9][0-9]*\) .*/\1/p' fovsdf.h)
+if [ -z "$EXPECT" ]; then
+    fail version "no vX.Y.Z on fovsdf.h's first line"
+    echo "$NP passed, $NF failed"
+    exit 1
+fi
+echo "fovsdf.h declares $EXPECT"
+
+# a copy of the consumer project outside the repository's include path
+SRC=$B/consumer-src
+cp -r tests/cmake/consumer "$SRC"
+P=$B/prefix
+# CMake must not pick up a fov from the user's package registry or the system
+NOREG="-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"
+
+# consumer NAME CMAKE_ARGS...: configure, build and run the consumer in $B/NAME
+consumer() {
+    local name=$1 d=$B/$1; shift
+    if ! cmake --no-warn-unused-cli -S "$SRC" -B "$d" -DFOV_EXPECT_VERSION="$EXPECT" $NOREG "$@" >"$B/$name.log" 2>&1; then
+        fail "$name" "configure: $(logtail "$B/$name.log")"; return 1
+    fi
+    if ! cmake --build "$d" >>"$B/$name.log" 2>&1; then
+        fail "$name" "build: $(logtail "$B/$name.log")"; return 1
+    fi
+    if ! "$d/consumer" >>"$B/$name.log" 2>&1; then
+        fail "$name" "the consumer failed: $(logtail "$B/$name.log")"; return 1
+    fi
+    return 0
+}
+
+# same_headers DIR: the three headers in DIR are the repository's
+same_headers() {
+    local h
+    for h in fovsdf.h fovlp.h fovpt.h; do
+        cmp -s "$h" "$1/$h" || { echo "$1/$h differs from $h or is missing"; return 1; }
+    done
+}
+
+# pc_build NAME PCDIR PREFIX: checks fov.pc in PCDIR, builds main.c with its flags, runs it
+pc_build() {
+    local name=$1 pcdir=$2 prefix=$3 ver cflags libs
+    ver=$(PKG_CONFIG_PATH="$pcdir" pkg-config --modversion fov 2>"$B/$name.log") ||
+        { fail "$name" "pkg-config --modversion fov: $(logtail "$B/$name.log")"; return; }
+    # word-split and rejoined: pkgconf ends its output with a space
+    cflags=$(echo $(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags fov))
+    libs=$(echo $(PKG_CONFIG_PATH="$pcdir" pkg-config --libs fov))
+    [ "$ver" = "$EXPECT" ] || { fail "$name" "--modversion '$ver', fovsdf.h says '$EXPECT'"; return; }
+    [ "$cflags" = "-I$prefix/include/fov" ] ||
+        { fail "$name" "--cflags '$cflags', expected '-I$prefix/include/fov'"; return; }
+    [ "$libs" = "-lm" ] || { fail "$name" "--libs '$libs', expected '-lm'"; return; }
+    # shellcheck disable=SC2086
+    if ! $CC -std=c99 -Wall -Wextra -Werror $cflags "-DFOV_EXPECT_VERSION=\"$ver\"" \
+            "$SRC/main.c" -o "$B/$name.bin" $libs >>"$B/$name.log" 2>&1; then
+        fail "$name" "build with pkg-config's flags: $(logtail "$B/$name.log")"; return
+    fi
+    "$B/$name.bin" >>"$B/$name.log" 2>&1 || { fail "$name" "the consumer failed: $(logtail "$B/$name.log")"; return; }
+    pass "$name"
+}
+
+HAVE_CMAKE=0
+have cmake && HAVE_CMAKE=1
+HAVE_PC=0
+have pkg-config && HAVE_PC=1
+
+# ---- cmake_install ----------------------------------------------------------------------
+INSTALLED=0
+if [ $HAVE_CMAKE = 0 ]; then
+    skip cmake_install cmake
+else
+    d=$B/install-build
+    log=$B/cmake_install.log
+    if ! CC=/nonexistent/cc CXX=/nonexistent/c++ cmake -S "$ROOT" -B "$d" \
+            -DCMAKE_INSTALL_PREFIX="$B/wrong-prefix" >"$log" 2>&1; then
+        fail cmake_install "configure without a compiler: $(logtail "$log")"
+    elif ! CC=/nonexistent/cc cmake --build "$d" >>"$log" 2>&1; then
+        fail cmake_install "build: $(logtail "$log")"
+    elif ! cmake --install "$d" --prefix "$P" >>"$log" 2>&1; then
+        fail cmake_install "install: $(logtail "$log")"
+    elif compilers=$(find "$d/CMakeFiles" -name 'CMake*Compiler.cmake' | head -3) && [ -n "$compilers" ]; then
+        fail cmake_install "a compiler was enabled: $compilers"
+    elif objs=$(find "$d" \( -name '*.o' -o -name '*.a' -o -name '*.so' \) | head -3) && [ -n "$objs" ]; then
+        fail cmake_install "something was built: $objs"
+    elif [ -e "$d/CTestTestfile.cmake" ]; then
+        fail cmake_install "tests registered without FOV_BUILD_TESTS"
+    elif ! why=$(same_headers "$P/include/fov"); then
+        fail cmake_install "$why"
+    elif ! ls "$P/share/cmake/fov/fovConfig.cmake" "$P/share/cmake/fov/fovConfigVersion.cmake" \
+            "$P/share/cmake/fov/fovTargets.cmake" >/dev/null 2>&1; then
+        fail cmake_install "missing package files in $P/share/cmake/fov: $(ls "$P/share/cmake/fov" 2>&1 | tr '\n' ' ')"
+    elif ! grep -qx "prefix=$P" "$P/share/pkgconfig/fov.pc" 2>/dev/null; then
+        fail cmake_install "$P/share/pkgconfig/fov.pc lacks prefix=$P: $(head -n 1 "$P/share/pkgconfig/fov.pc" 2>&1)"
+    elif grep -q wrong-prefix "$P/share/cmake/fov/"*.cmake "$P/share/pkgconfig/fov.pc"; then
+        fail cmake_install "the configured prefix leaked into the installed files"
+    else
+        pass cmake_install
+        INSTALLED=1
+    fi
+fi
+
+# ---- add_subdirectory, FetchContent, find_package --------------------------------------
+if [ $HAVE_CMAKE = 0 ]; then
+    for w in add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option; do
+        skip "$w" cmake
+    done
+else
+    consumer add_subdirectory -DFOV_MODE=subdir -DFOV_SOURCE_DIR="$ROOT" && pass add_subdirectory
+
+    # a git repository holding the working tree as it is (tracked and new files)
+    if ! have git; then
+        skip fetchcontent_git git
+    else
+        G=$B/fov-git
+        mkdir -p "$G"
+        if git -C "$ROOT" rev-parse --git-dir >/dev/null 2>&1; then
+            git -C "$ROOT" ls-files -co --exclude-standard -z | tar -C "$ROOT" --null -T - -cf - | tar -C "$G" -xf -
+        else
+            tar -C "$ROOT" --exclude=./build --exclude=./out -cf - . | tar -C "$G" -xf -
+        fi
+        if ! (cd "$G" && git init -q && git add -A &&
+              git -c user.name=fov-test -c user.email=fov-test@localhost commit -qm snapshot) \
+                >"$B/fetchcontent_git.log" 2>&1; then
+            fail fetchcontent_git "could not make the git copy: $(logtail "$B/fetchcontent_git.log")"
+        else
+            consumer fetchcontent_git -DFOV_MODE=fetch -DFOV_GIT_URL="file://$G" \
+                -DFOV_GIT_TAG="$(git -C "$G" rev-parse HEAD)" && pass fetchcontent_git
+        fi
+    fi
+
+    consumer fetchcontent_disconnected -DFOV_MODE=fetch -DFOV_GIT_URL=https://fov.invalid/fov.git \
+        -DFOV_GIT_TAG=main -DFETCHCONTENT_FULLY_DISCONNECTED=ON \
+        -DFETCHCONTENT_SOURCE_DIR_FOV="$ROOT" && pass fetchcontent_disconnected
+
+    if [ $INSTALLED = 0 ]; then
+        fail find_package "no installed prefix (cmake_install failed)"
+    elif consumer find_package -DFOV_MODE=package -DCMAKE_PREFIX_PATH="$P"; then
+        if grep -q "fov_DIR=$P/share/cmake/fov\$" "$B/find_package.log"; then
+            pass find_package
+        else
+            fail find_package "fov_DIR is not $P/share/cmake/fov: $(grep fov_DIR= "$B/find_package.log")"
+        fi
+    fi
+
+    d=$B/tests-option
+    log=$B/tests_option.log
+    if ! cmake -S "$ROOT" -B "$d" -DFOV_BUILD_TESTS=ON >"$log" 2>&1; then
+        fail tests_option "configure: $(logtail "$log")"
+    elif ! cmake --build "$d" >>"$log" 2>&1; then
+        fail tests_option "build: $(logtail "$log")"
+    elif ! (cd "$d" && ctest --output-on-failure) >>"$log" 2>&1; then
+        fail tests_option "ctest: $(logtail "$log")"
+    elif ! grep -q '100% tests passed, 0 tests failed out of 2' "$log"; then
+        fail tests_option "ctest did not run the two tests: $(logtail "$log")"
+    else
+        pass tests_option
+    fi
+fi
+
+# ---- pkg-config -------------------------------------------------------------------------
+if [ $HAVE_PC = 0 ]; then
+    skip pkg_config pkg-config
+elif [ $INSTALLED = 0 ]; then
+    fail pkg_config "no installed prefix (cmake_install failed or was skipped)"
+else
+    pc_build pkg_config "$P/share/pkgconfig" "$P"
+fi
+
+# ---- make install -----------------------------------------------------------------------
+Q=$B/make-prefix
+S=$B/stage
+if ! have make; then
+    skip make_install make
+elif ! make -s install PREFIX="$Q" >"$B/make_install.log" 2>&1; then
+    fail make_install "make install PREFIX=$Q: $(logtail "$B/make_install.log")"
+elif ! make -s install PREFIX=/opt/fov DESTDIR="$S" >>"$B/make_install.log" 2>&1; then
+    fail make_install "make install DESTDIR=$S: $(logtail "$B/make_install.log")"
+elif ! why=$(same_headers "$Q/include/fov") || ! why=$(same_headers "$S/opt/fov/include/fov"); then
+    fail make_install "$why"
+elif ! grep -qx "prefix=/opt/fov" "$S/opt/fov/share/pkgconfig/fov.pc" 2>/dev/null; then
+    fail make_install "with DESTDIR, fov.pc lacks prefix=/opt/fov"
+elif [ $HAVE_PC = 0 ]; then
+    skip make_install pkg-config
+else
+    pc_build make_install "$Q/share/pkgconfig" "$Q"
+    if [ $INSTALLED = 1 ] && ! cmp -s "$Q/share/pkgconfig/fov.pc" <(sed "s|^prefix=.*|prefix=$Q|" "$P/share/pkgconfig/fov.pc"); then
+        fail make_install_same_pc "make install's fov.pc differs from CMake's beyond the prefix"
+    fi
+fi
+
+echo "cmake tests took $(( $(date +%s) - START )) s"
+[ "${KEEP:-0}" = 1 ] || rm -rf "$B"
+echo "$NP passed, $NF failed"
+[ "$NF" -eq 0 ]
