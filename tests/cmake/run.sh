@@ -8,7 +8,9 @@
 # FAIL name: detail / SKIP name: reason (apt-get install -y PKG)), then exactly
 # "N passed, N failed" (SKIPs are not counted); exit status 1 when anything failed. With
 # CI=true a missing cmake, pkg-config or git is a FAIL, not a SKIP. Everything happens under
-# build/cmake-test/ (recreated, and removed at the end unless KEEP=1); no network.
+# build/cmake-test/ (recreated, and removed at the end unless KEEP=1); no network. The ways
+# after cmake_install run JOBS at a time (default: the number of CPUs); the lines print in
+# the order below, each with its own seconds.
 #   cmake_install      configure + build + `cmake --install --prefix P` of the repository with
 #                      CC and CXX pointing at no compiler (so nothing is compiled and no
 #                      language is enabled), P differing from the configured prefix: the three
@@ -26,7 +28,8 @@
 #   pkg_config         `pkg-config --cflags --libs fov` from P's fov.pc (Cflags -IP/include/fov,
 #                      Libs -lm, --modversion = the version), main.c built with them alone
 #   make_install       `make install PREFIX=Q` (and PREFIX=/opt/fov DESTDIR=S: files under S,
-#                      fov.pc still says /opt/fov), then the pkg_config build against Q
+#                      fov.pc still says /opt/fov); Q's fov.pc equals P's but for the prefix
+#                      line; then the pkg_config build against Q
 #   tests_option       -DFOV_BUILD_TESTS=ON builds tests/test_versions.c and main.c; ctest passes
 # The expected version is read from fovsdf.h's first line ("fovsdf.h - vX.Y.Z - ..."), not
 # from the macros CMake and the Makefile parse.
@@ -37,17 +40,17 @@ ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cd "$ROOT" || exit 1
 B=$ROOT/build/cmake-test
 rm -rf "$B"
-mkdir -p "$B"
+mkdir -p "$B/out"
 IS_CI=0
 [ "${CI:-}" = true ] && IS_CI=1
 CC=${CC:-cc}
 export CC
-NP=0
-NF=0
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 START=$(date +%s)
 
-pass() { echo "PASS $1"; NP=$((NP + 1)); }
-fail() { echo "FAIL $1: $2"; NF=$((NF + 1)); }
+# ---- reporting: each way is a function that prints one PASS, FAIL or SKIP line ----------
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; }
 skip() {
     if [ "$IS_CI" = 1 ]; then
         fail "$1" "$2 not found (CI=true: a missing tool is a failure; apt-get install -y cmake pkg-config git)"
@@ -56,13 +59,29 @@ skip() {
     fi
 }
 have() { command -v "$1" >/dev/null 2>&1; }
-# logtail LOG: the last lines of a log, on one line
-logtail() { printf '%s (log: %s)' "$(tail -n 4 "$1" | tr '\n' '|' | cut -c1-500)" "$1"; }
+# logtail LOG: the first error lines of a log (else its last lines), on one line
+logtail() {
+    local s
+    s=$(grep -E -A 2 'CMake Error|error:|Error [0-9]|undefined reference|FAILED|failed' "$1" | head -n 6)
+    [ -n "$s" ] || s=$(tail -n 4 "$1")
+    printf '%s (log: %s)' "$(printf '%s' "$s" | tr -s '\n ' '| ' | cut -c1-500)" "$1"
+}
+# job runner: run_way NAME runs way_NAME in the background (at most JOBS at once), its
+# line goes to $B/out/NN_NAME with the seconds it took; report prints them in order
+NWAY=0
+run_way() {
+    local name=$1
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || sleep 0.2; done
+    NWAY=$((NWAY + 1))
+    local out
+    out=$B/out/$(printf '%02d' "$NWAY")_$name
+    ( t0=$(date +%s); line=$("way_$name"); printf '%s (%d s)\n' "$line" "$(( $(date +%s) - t0 ))" >"$out" ) &
+}
 
 EXPECT=$(sed -n '1s/^.*fovsdf\.h - v\([0-9][0-9]*\.[0-9][0-9]*\.[0-9][0-9]*\) .*/\1/p' fovsdf.h)
 if [ -z "$EXPECT" ]; then
     fail version "no vX.Y.Z on fovsdf.h's first line"
-    echo "$NP passed, $NF failed"
+    echo "0 passed, 1 failed"
     exit 1
 fi
 echo "fovsdf.h declares $EXPECT"
@@ -71,13 +90,19 @@ echo "fovsdf.h declares $EXPECT"
 SRC=$B/consumer-src
 cp -r tests/cmake/consumer "$SRC"
 P=$B/prefix
-# CMake must not pick up a fov from the user's package registry or the system
+# CMake must not pick up a fov from the user's package registry
 NOREG="-DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"
+HAVE_CMAKE=0
+have cmake && HAVE_CMAKE=1
+HAVE_PC=0
+have pkg-config && HAVE_PC=1
 
-# consumer NAME CMAKE_ARGS...: configure, build and run the consumer in $B/NAME
+# consumer NAME CMAKE_ARGS...: configure, build and run the consumer in $B/NAME; prints a
+# FAIL line and returns 1 on failure
 consumer() {
     local name=$1 d=$B/$1; shift
-    if ! cmake --no-warn-unused-cli -S "$SRC" -B "$d" -DFOV_EXPECT_VERSION="$EXPECT" $NOREG "$@" >"$B/$name.log" 2>&1; then
+    if ! cmake --no-warn-unused-cli -S "$SRC" -B "$d" -DFOV_EXPECT_VERSION="$EXPECT" $NOREG "$@" \
+            >"$B/$name.log" 2>&1; then
         fail "$name" "configure: $(logtail "$B/$name.log")"; return 1
     fi
     if ! cmake --build "$d" >>"$B/$name.log" 2>&1; then
@@ -114,22 +139,15 @@ pc_build() {
             "$SRC/main.c" -o "$B/$name.bin" $libs >>"$B/$name.log" 2>&1; then
         fail "$name" "build with pkg-config's flags: $(logtail "$B/$name.log")"; return
     fi
-    "$B/$name.bin" >>"$B/$name.log" 2>&1 || { fail "$name" "the consumer failed: $(logtail "$B/$name.log")"; return; }
+    "$B/$name.bin" >>"$B/$name.log" 2>&1 ||
+        { fail "$name" "the consumer failed: $(logtail "$B/$name.log")"; return; }
     pass "$name"
 }
 
-HAVE_CMAKE=0
-have cmake && HAVE_CMAKE=1
-HAVE_PC=0
-have pkg-config && HAVE_PC=1
-
-# ---- cmake_install ----------------------------------------------------------------------
-INSTALLED=0
-if [ $HAVE_CMAKE = 0 ]; then
-    skip cmake_install cmake
-else
-    d=$B/install-build
-    log=$B/cmake_install.log
+# ---- the ways ---------------------------------------------------------------------------
+way_cmake_install() {
+    [ $HAVE_CMAKE = 1 ] || { skip cmake_install cmake; return; }
+    local d=$B/install-build log=$B/cmake_install.log compilers objs why
     if ! CC=/nonexistent/cc CXX=/nonexistent/c++ cmake -S "$ROOT" -B "$d" \
             -DCMAKE_INSTALL_PREFIX="$B/wrong-prefix" >"$log" 2>&1; then
         fail cmake_install "configure without a compiler: $(logtail "$log")"
@@ -137,9 +155,11 @@ else
         fail cmake_install "build: $(logtail "$log")"
     elif ! cmake --install "$d" --prefix "$P" >>"$log" 2>&1; then
         fail cmake_install "install: $(logtail "$log")"
-    elif compilers=$(find "$d/CMakeFiles" -name 'CMake*Compiler.cmake' | head -3) && [ -n "$compilers" ]; then
+    elif compilers=$(find "$d/CMakeFiles" -name 'CMake*Compiler.cmake' | head -3) &&
+            [ -n "$compilers" ]; then
         fail cmake_install "a compiler was enabled: $compilers"
-    elif objs=$(find "$d" \( -name '*.o' -o -name '*.a' -o -name '*.so' \) | head -3) && [ -n "$objs" ]; then
+    elif objs=$(find "$d" \( -name '*.o' -o -name '*.a' -o -name '*.so' \) | head -3) &&
+            [ -n "$objs" ]; then
         fail cmake_install "something was built: $objs"
     elif [ -e "$d/CTestTestfile.cmake" ]; then
         fail cmake_install "tests registered without FOV_BUILD_TESTS"
@@ -153,56 +173,59 @@ else
     elif grep -q wrong-prefix "$P/share/cmake/fov/"*.cmake "$P/share/pkgconfig/fov.pc"; then
         fail cmake_install "the configured prefix leaked into the installed files"
     else
+        touch "$B/installed"
         pass cmake_install
-        INSTALLED=1
     fi
-fi
+}
 
-# ---- add_subdirectory, FetchContent, find_package --------------------------------------
-if [ $HAVE_CMAKE = 0 ]; then
-    for w in add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option; do
-        skip "$w" cmake
-    done
-else
+way_add_subdirectory() {
+    [ $HAVE_CMAKE = 1 ] || { skip add_subdirectory cmake; return; }
     consumer add_subdirectory -DFOV_MODE=subdir -DFOV_SOURCE_DIR="$ROOT" && pass add_subdirectory
+}
 
-    # a git repository holding the working tree as it is (tracked and new files)
-    if ! have git; then
-        skip fetchcontent_git git
+# FetchContent from a git repository holding the working tree as it is (tracked and new files)
+way_fetchcontent_git() {
+    [ $HAVE_CMAKE = 1 ] || { skip fetchcontent_git cmake; return; }
+    have git || { skip fetchcontent_git git; return; }
+    local G=$B/fov-git
+    mkdir -p "$G"
+    if git -C "$ROOT" rev-parse --git-dir >/dev/null 2>&1; then
+        git -C "$ROOT" ls-files -co --exclude-standard -z | tar -C "$ROOT" --null -T - -cf - |
+            tar -C "$G" -xf -
     else
-        G=$B/fov-git
-        mkdir -p "$G"
-        if git -C "$ROOT" rev-parse --git-dir >/dev/null 2>&1; then
-            git -C "$ROOT" ls-files -co --exclude-standard -z | tar -C "$ROOT" --null -T - -cf - | tar -C "$G" -xf -
-        else
-            tar -C "$ROOT" --exclude=./build --exclude=./out -cf - . | tar -C "$G" -xf -
-        fi
-        if ! (cd "$G" && git init -q && git add -A &&
-              git -c user.name=fov-test -c user.email=fov-test@localhost commit -qm snapshot) \
-                >"$B/fetchcontent_git.log" 2>&1; then
-            fail fetchcontent_git "could not make the git copy: $(logtail "$B/fetchcontent_git.log")"
-        else
-            consumer fetchcontent_git -DFOV_MODE=fetch -DFOV_GIT_URL="file://$G" \
-                -DFOV_GIT_TAG="$(git -C "$G" rev-parse HEAD)" && pass fetchcontent_git
-        fi
+        tar -C "$ROOT" --exclude=./build --exclude=./out -cf - . | tar -C "$G" -xf -
     fi
+    if ! (cd "$G" && git init -q && git add -A &&
+          git -c user.name=fov-test -c user.email=fov-test@localhost commit -qm snapshot) \
+            >"$B/fetchcontent_git.log" 2>&1; then
+        fail fetchcontent_git "could not make the git copy: $(logtail "$B/fetchcontent_git.log")"
+        return
+    fi
+    consumer fetchcontent_git -DFOV_MODE=fetch -DFOV_GIT_URL="file://$G" \
+        -DFOV_GIT_TAG="$(git -C "$G" rev-parse HEAD)" && pass fetchcontent_git
+}
 
+way_fetchcontent_disconnected() {
+    [ $HAVE_CMAKE = 1 ] || { skip fetchcontent_disconnected cmake; return; }
     consumer fetchcontent_disconnected -DFOV_MODE=fetch -DFOV_GIT_URL=https://fov.invalid/fov.git \
         -DFOV_GIT_TAG=main -DFETCHCONTENT_FULLY_DISCONNECTED=ON \
         -DFETCHCONTENT_SOURCE_DIR_FOV="$ROOT" && pass fetchcontent_disconnected
+}
 
-    if [ $INSTALLED = 0 ]; then
-        fail find_package "no installed prefix (cmake_install failed)"
-    elif consumer find_package -DFOV_MODE=package -DCMAKE_PREFIX_PATH="$P"; then
-        if grep -q "fov_DIR=$P/share/cmake/fov\$" "$B/find_package.log"; then
-            pass find_package
-        else
-            fail find_package "fov_DIR is not $P/share/cmake/fov: $(grep fov_DIR= "$B/find_package.log")"
-        fi
+way_find_package() {
+    [ $HAVE_CMAKE = 1 ] || { skip find_package cmake; return; }
+    [ -e "$B/installed" ] || { fail find_package "no installed prefix (cmake_install failed)"; return; }
+    consumer find_package -DFOV_MODE=package -DCMAKE_PREFIX_PATH="$P" || return
+    if grep -q "fov_DIR=$P/share/cmake/fov\$" "$B/find_package.log"; then
+        pass find_package
+    else
+        fail find_package "fov_DIR is not $P/share/cmake/fov: $(grep fov_DIR= "$B/find_package.log")"
     fi
+}
 
-    d=$B/tests-option
-    log=$B/tests_option.log
+way_tests_option() {
+    [ $HAVE_CMAKE = 1 ] || { skip tests_option cmake; return; }
+    local d=$B/tests-option log=$B/tests_option.log
     if ! cmake -S "$ROOT" -B "$d" -DFOV_BUILD_TESTS=ON >"$log" 2>&1; then
         fail tests_option "configure: $(logtail "$log")"
     elif ! cmake --build "$d" >>"$log" 2>&1; then
@@ -214,39 +237,52 @@ else
     else
         pass tests_option
     fi
-fi
+}
 
-# ---- pkg-config -------------------------------------------------------------------------
-if [ $HAVE_PC = 0 ]; then
-    skip pkg_config pkg-config
-elif [ $INSTALLED = 0 ]; then
-    fail pkg_config "no installed prefix (cmake_install failed or was skipped)"
-else
+way_pkg_config() {
+    [ $HAVE_PC = 1 ] || { skip pkg_config pkg-config; return; }
+    [ -e "$B/installed" ] ||
+        { fail pkg_config "no installed prefix (cmake_install failed or was skipped)"; return; }
     pc_build pkg_config "$P/share/pkgconfig" "$P"
-fi
+}
 
-# ---- make install -----------------------------------------------------------------------
-Q=$B/make-prefix
-S=$B/stage
-if ! have make; then
-    skip make_install make
-elif ! make -s install PREFIX="$Q" >"$B/make_install.log" 2>&1; then
-    fail make_install "make install PREFIX=$Q: $(logtail "$B/make_install.log")"
-elif ! make -s install PREFIX=/opt/fov DESTDIR="$S" >>"$B/make_install.log" 2>&1; then
-    fail make_install "make install DESTDIR=$S: $(logtail "$B/make_install.log")"
-elif ! why=$(same_headers "$Q/include/fov") || ! why=$(same_headers "$S/opt/fov/include/fov"); then
-    fail make_install "$why"
-elif ! grep -qx "prefix=/opt/fov" "$S/opt/fov/share/pkgconfig/fov.pc" 2>/dev/null; then
-    fail make_install "with DESTDIR, fov.pc lacks prefix=/opt/fov"
-elif [ $HAVE_PC = 0 ]; then
-    skip make_install pkg-config
-else
-    pc_build make_install "$Q/share/pkgconfig" "$Q"
-    if [ $INSTALLED = 1 ] && ! cmp -s "$Q/share/pkgconfig/fov.pc" <(sed "s|^prefix=.*|prefix=$Q|" "$P/share/pkgconfig/fov.pc"); then
-        fail make_install_same_pc "make install's fov.pc differs from CMake's beyond the prefix"
+way_make_install() {
+    local Q=$B/make-prefix S=$B/stage log=$B/make_install.log why
+    if ! have make; then
+        skip make_install make
+    elif ! make -s install PREFIX="$Q" >"$log" 2>&1; then
+        fail make_install "make install PREFIX=$Q: $(logtail "$log")"
+    elif ! make -s install PREFIX=/opt/fov DESTDIR="$S" >>"$log" 2>&1; then
+        fail make_install "make install DESTDIR=$S: $(logtail "$log")"
+    elif ! why=$(same_headers "$Q/include/fov") || ! why=$(same_headers "$S/opt/fov/include/fov"); then
+        fail make_install "$why"
+    elif ! grep -qx "prefix=/opt/fov" "$S/opt/fov/share/pkgconfig/fov.pc" 2>/dev/null; then
+        fail make_install "with DESTDIR, fov.pc lacks prefix=/opt/fov"
+    elif [ -e "$B/installed" ] &&
+            ! cmp -s "$Q/share/pkgconfig/fov.pc" <(sed "s|^prefix=.*|prefix=$Q|" "$P/share/pkgconfig/fov.pc"); then
+        fail make_install "its fov.pc differs from CMake's beyond the prefix line"
+    elif [ $HAVE_PC = 0 ]; then
+        skip make_install pkg-config
+    else
+        pc_build make_install "$Q/share/pkgconfig" "$Q"
     fi
-fi
+}
 
+# cmake_install first (find_package, pkg_config and make_install use its prefix), then the rest
+run_way cmake_install
+wait
+for w in add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option \
+         pkg_config make_install; do
+    run_way "$w"
+done
+wait
+
+cat "$B"/out/*
+NP=$(cat "$B"/out/* | grep -c '^PASS')
+NF=$(cat "$B"/out/* | grep -c '^FAIL')
+# a way that printed nothing is a failure
+NOUT=$(cat "$B"/out/* | grep -c -E '^(PASS|FAIL|SKIP)')
+[ "$NOUT" -eq "$NWAY" ] || { echo "FAIL runner: $NWAY ways, $NOUT result lines"; NF=$((NF + 1)); }
 echo "cmake tests took $(( $(date +%s) - START )) s"
 [ "${KEEP:-0}" = 1 ] || rm -rf "$B"
 echo "$NP passed, $NF failed"
