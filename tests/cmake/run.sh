@@ -25,12 +25,12 @@
 #   find_package       find_package(fov <version> EXACT CONFIG REQUIRED COMPONENTS fovsdf
 #                      fovlp fovpt) from P; fov_DIR must be P's; find_package(fov 99.0) and a
 #                      missing component must not be found
+#   tests_option       -DFOV_BUILD_TESTS=ON builds tests/test_versions.c and main.c; ctest passes
 #   pkg_config         `pkg-config --cflags --libs fov` from P's fov.pc (Cflags -IP/include/fov,
 #                      Libs -lm, --modversion = the version), main.c built with them alone
 #   make_install       `make install PREFIX=Q` (and PREFIX=/opt/fov DESTDIR=S: files under S,
 #                      fov.pc still says /opt/fov); Q's fov.pc equals P's but for the prefix
 #                      line; then the pkg_config build against Q
-#   tests_option       -DFOV_BUILD_TESTS=ON builds tests/test_versions.c and main.c; ctest passes
 # The expected version is read from fovsdf.h's first line ("fovsdf.h - vX.Y.Z - ..."), not
 # from the macros CMake and the Makefile parse.
 # Debian packages: cmake pkg-config git gcc make.
@@ -127,9 +127,9 @@ pc_build() {
     local name=$1 pcdir=$2 prefix=$3 ver cflags libs
     ver=$(PKG_CONFIG_PATH="$pcdir" pkg-config --modversion fov 2>"$B/$name.log") ||
         { fail "$name" "pkg-config --modversion fov: $(logtail "$B/$name.log")"; return; }
-    # word-split and rejoined: pkgconf ends its output with a space
-    cflags=$(echo $(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags fov))
-    libs=$(echo $(PKG_CONFIG_PATH="$pcdir" pkg-config --libs fov))
+    # trailing blanks dropped: pkgconf ends its output with a space
+    cflags=$(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags fov | sed 's/[[:space:]]*$//')
+    libs=$(PKG_CONFIG_PATH="$pcdir" pkg-config --libs fov | sed 's/[[:space:]]*$//')
     [ "$ver" = "$EXPECT" ] || { fail "$name" "--modversion '$ver', fovsdf.h says '$EXPECT'"; return; }
     [ "$cflags" = "-I$prefix/include/fov" ] ||
         { fail "$name" "--cflags '$cflags', expected '-I$prefix/include/fov'"; return; }
