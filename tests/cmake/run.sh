@@ -17,6 +17,8 @@
 #                      headers land byte-identical in P/include/fov/, P/share/cmake/fov/ holds
 #                      fovConfig.cmake, fovConfigVersion.cmake and fovTargets.cmake, fov.pc says
 #                      prefix=P, and no test is registered (FOV_BUILD_TESTS defaults to OFF)
+#   in_source_refused  `cmake .` in a copy of the repository fails at configure with a message
+#                      and the Makefile stays as it was (CMake would generate its own there)
 #   add_subdirectory   add_subdirectory(<repository>)
 #   fetchcontent_git   FetchContent_Declare(GIT_REPOSITORY file://<a git copy of the working
 #                      tree> GIT_TAG <its commit>) + FetchContent_MakeAvailable
@@ -178,6 +180,23 @@ way_cmake_install() {
     fi
 }
 
+# `cmake .` in a copy of the repository stops at configure and leaves the Makefile alone
+way_in_source_refused() {
+    [ $HAVE_CMAKE = 1 ] || { skip in_source_refused cmake; return; }
+    local d=$B/in-source log=$B/in_source_refused.log
+    mkdir -p "$d"
+    cp -r CMakeLists.txt cmake Makefile fovsdf.h fovlp.h fovpt.h "$d/"
+    if (cd "$d" && cmake .) >"$log" 2>&1; then
+        fail in_source_refused "cmake . in the source tree succeeded"
+    elif ! cmp -s Makefile "$d/Makefile"; then
+        fail in_source_refused "cmake . replaced the Makefile"
+    elif ! grep -q "in-source build would overwrite" "$log"; then
+        fail in_source_refused "no explanation: $(logtail "$log")"
+    else
+        pass in_source_refused
+    fi
+}
+
 way_add_subdirectory() {
     [ $HAVE_CMAKE = 1 ] || { skip add_subdirectory cmake; return; }
     consumer add_subdirectory -DFOV_MODE=subdir -DFOV_SOURCE_DIR="$ROOT" && pass add_subdirectory
@@ -271,7 +290,7 @@ way_make_install() {
 # cmake_install first (find_package, pkg_config and make_install use its prefix), then the rest
 run_way cmake_install
 wait
-for w in add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option \
+for w in in_source_refused add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option \
          pkg_config make_install; do
     run_way "$w"
 done
