@@ -52,10 +52,11 @@ START=$(date +%s)
 
 # ---- reporting: each way is a function that prints one PASS, FAIL or SKIP line ----------
 pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; }
+fail() { local name=$1; shift; echo "FAIL $name: $*"; }
 skip() {
     if [ "$IS_CI" = 1 ]; then
-        fail "$1" "$2 not found (CI=true: a missing tool is a failure; apt-get install -y cmake pkg-config git)"
+        fail "$1" "$2 not found (CI=true: a missing tool is a failure;" \
+            "apt-get install -y cmake pkg-config git)"
     else
         echo "SKIP $1: $2 not found (apt-get install -y cmake pkg-config git)"
     fi
@@ -64,7 +65,8 @@ have() { command -v "$1" >/dev/null 2>&1; }
 # logtail LOG: the first error lines of a log (else its last lines), on one line
 logtail() {
     local s
-    s=$(grep -E -A 2 'CMake Error|error:|Error [0-9]|undefined reference|FAILED|failed' "$1" | head -n 6)
+    s=$(grep -E -A 2 'CMake Error|error:|Error [0-9]|undefined reference|FAILED|failed' "$1" |
+        head -n 6)
     [ -n "$s" ] || s=$(tail -n 4 "$1")
     printf '%s (log: %s)' "$(printf '%s' "$s" | tr -s '\n ' '| ' | cut -c1-500)" "$1"
 }
@@ -77,7 +79,11 @@ run_way() {
     NWAY=$((NWAY + 1))
     local out
     out=$B/out/$(printf '%02d' "$NWAY")_$name
-    ( t0=$(date +%s); line=$("way_$name"); printf '%s (%d s)\n' "$line" "$(( $(date +%s) - t0 ))" >"$out" ) &
+    (
+        t0=$(date +%s)
+        line=$("way_$name")
+        printf '%s (%d s)\n' "$line" "$(( $(date +%s) - t0 ))" >"$out"
+    ) &
 }
 
 EXPECT=$(sed -n '1s/^.*fovsdf\.h - v\([0-9][0-9]*\.[0-9][0-9]*\.[0-9][0-9]*\) .*/\1/p' fovsdf.h)
@@ -132,7 +138,8 @@ pc_build() {
     # trailing blanks dropped: pkgconf ends its output with a space
     cflags=$(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags fov | sed 's/[[:space:]]*$//')
     libs=$(PKG_CONFIG_PATH="$pcdir" pkg-config --libs fov | sed 's/[[:space:]]*$//')
-    [ "$ver" = "$EXPECT" ] || { fail "$name" "--modversion '$ver', fovsdf.h says '$EXPECT'"; return; }
+    [ "$ver" = "$EXPECT" ] ||
+        { fail "$name" "--modversion '$ver', fovsdf.h says '$EXPECT'"; return; }
     [ "$cflags" = "-I$prefix/include/fov" ] ||
         { fail "$name" "--cflags '$cflags', expected '-I$prefix/include/fov'"; return; }
     [ "$libs" = "-lm" ] || { fail "$name" "--libs '$libs', expected '-lm'"; return; }
@@ -169,9 +176,11 @@ way_cmake_install() {
         fail cmake_install "$why"
     elif ! ls "$P/share/cmake/fov/fovConfig.cmake" "$P/share/cmake/fov/fovConfigVersion.cmake" \
             "$P/share/cmake/fov/fovTargets.cmake" >/dev/null 2>&1; then
-        fail cmake_install "missing package files in $P/share/cmake/fov: $(ls "$P/share/cmake/fov" 2>&1 | tr '\n' ' ')"
+        fail cmake_install "missing package files in $P/share/cmake/fov:" \
+            "$(ls "$P/share/cmake/fov" 2>&1 | tr '\n' ' ')"
     elif ! grep -qx "prefix=$P" "$P/share/pkgconfig/fov.pc" 2>/dev/null; then
-        fail cmake_install "$P/share/pkgconfig/fov.pc lacks prefix=$P: $(head -n 1 "$P/share/pkgconfig/fov.pc" 2>&1)"
+        fail cmake_install "$P/share/pkgconfig/fov.pc lacks prefix=$P:" \
+            "$(head -n 1 "$P/share/pkgconfig/fov.pc" 2>&1)"
     elif grep -q wrong-prefix "$P/share/cmake/fov/"*.cmake "$P/share/pkgconfig/fov.pc"; then
         fail cmake_install "the configured prefix leaked into the installed files"
     else
@@ -233,12 +242,14 @@ way_fetchcontent_disconnected() {
 
 way_find_package() {
     [ $HAVE_CMAKE = 1 ] || { skip find_package cmake; return; }
-    [ -e "$B/installed" ] || { fail find_package "no installed prefix (cmake_install failed)"; return; }
+    [ -e "$B/installed" ] ||
+        { fail find_package "no installed prefix (cmake_install failed)"; return; }
     consumer find_package -DFOV_MODE=package -DCMAKE_PREFIX_PATH="$P" || return
     if grep -q "fov_DIR=$P/share/cmake/fov\$" "$B/find_package.log"; then
         pass find_package
     else
-        fail find_package "fov_DIR is not $P/share/cmake/fov: $(grep fov_DIR= "$B/find_package.log")"
+        fail find_package "fov_DIR is not $P/share/cmake/fov:" \
+            "$(grep fov_DIR= "$B/find_package.log")"
     fi
 }
 
@@ -273,12 +284,14 @@ way_make_install() {
         fail make_install "make install PREFIX=$Q: $(logtail "$log")"
     elif ! make -s install PREFIX=/opt/fov DESTDIR="$S" >>"$log" 2>&1; then
         fail make_install "make install DESTDIR=$S: $(logtail "$log")"
-    elif ! why=$(same_headers "$Q/include/fov") || ! why=$(same_headers "$S/opt/fov/include/fov"); then
+    elif ! why=$(same_headers "$Q/include/fov") ||
+            ! why=$(same_headers "$S/opt/fov/include/fov"); then
         fail make_install "$why"
     elif ! grep -qx "prefix=/opt/fov" "$S/opt/fov/share/pkgconfig/fov.pc" 2>/dev/null; then
         fail make_install "with DESTDIR, fov.pc lacks prefix=/opt/fov"
     elif [ -e "$B/installed" ] &&
-            ! cmp -s "$Q/share/pkgconfig/fov.pc" <(sed "s|^prefix=.*|prefix=$Q|" "$P/share/pkgconfig/fov.pc"); then
+            ! cmp -s "$Q/share/pkgconfig/fov.pc" \
+                <(sed "s|^prefix=.*|prefix=$Q|" "$P/share/pkgconfig/fov.pc"); then
         fail make_install "its fov.pc differs from CMake's beyond the prefix line"
     elif [ $HAVE_PC = 0 ]; then
         skip make_install pkg-config
@@ -290,8 +303,8 @@ way_make_install() {
 # cmake_install first (find_package, pkg_config and make_install use its prefix), then the rest
 run_way cmake_install
 wait
-for w in in_source_refused add_subdirectory fetchcontent_git fetchcontent_disconnected find_package tests_option \
-         pkg_config make_install; do
+for w in in_source_refused add_subdirectory fetchcontent_git fetchcontent_disconnected \
+         find_package tests_option pkg_config make_install; do
     run_way "$w"
 done
 wait
