@@ -27,6 +27,8 @@
 #   find_package       find_package(fov <version> EXACT CONFIG REQUIRED COMPONENTS fovsdf
 #                      fovlp fovpt) from P; fov_DIR must be P's; find_package(fov 99.0) and a
 #                      missing component must not be found
+#   cxx_find_package   the same from a C++-only project (LANGUAGES CXX, main.c copied to main.cc,
+#                      C++11), linking the umbrella fov::fov
 #   tests_option       -DFOV_BUILD_TESTS=ON builds tests/test_versions.c and main.c; ctest passes
 #   pkg_config         `pkg-config --cflags --libs fov` from P's fov.pc (Cflags -IP/include/fov,
 #                      Libs -lm, --modversion = the version), main.c built with them alone
@@ -253,6 +255,18 @@ way_find_package() {
     fi
 }
 
+way_cxx_find_package() {
+    [ $HAVE_CMAKE = 1 ] || { skip cxx_find_package cmake; return; }
+    [ -e "$B/installed" ] ||
+        { fail cxx_find_package "no installed prefix (cmake_install failed)"; return; }
+    consumer cxx_find_package -DFOV_MODE=package -DFOV_CXX=ON -DCMAKE_PREFIX_PATH="$P" || return
+    if grep -q 'The C compiler identification' "$B/cxx_find_package.log"; then
+        fail cxx_find_package "a C compiler was enabled in the C++-only project"
+    else
+        pass cxx_find_package
+    fi
+}
+
 way_tests_option() {
     [ $HAVE_CMAKE = 1 ] || { skip tests_option cmake; return; }
     local d=$B/tests-option log=$B/tests_option.log
@@ -304,7 +318,7 @@ way_make_install() {
 run_way cmake_install
 wait
 for w in in_source_refused add_subdirectory fetchcontent_git fetchcontent_disconnected \
-         find_package tests_option pkg_config make_install; do
+         find_package cxx_find_package tests_option pkg_config make_install; do
     run_way "$w"
 done
 wait
