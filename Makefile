@@ -10,6 +10,8 @@
 #   make fuzz    fuzz every tests/fuzz/fuzz_<target>.c with libFuzzer (clang) for FUZZ_SECONDS
 #                (default 60) each; new inputs go to build/fuzz/corpus/<target>/, crashes to
 #                build/fuzz/crashes/<target>/; make fuzz FUZZ_SECONDS=10 FUZZ_TARGETS=fovsdf
+#   make install PREFIX=/usr/local (DESTDIR too): the three headers into $(PREFIX)/include/fov/,
+#                fov.pc into $(PREFIX)/share/pkgconfig/ (nothing is built; CMake: docs/build.md)
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -19,7 +21,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test fuzz examples bench bench-sdf bench-lp bench-pt clean
+.PHONY: all demo test fuzz examples bench bench-sdf bench-lp bench-pt clean install
 
 all: examples
 
@@ -86,6 +88,21 @@ bench: bench-sdf bench-lp bench-pt
 
 clean:
 	rm -rf $(BUILD) out
+
+# the headers and a pkg-config file (cmake/fov.pc.in, as CMake's install writes it); the
+# version is fovsdf.h's FOVSDF_VERSION_MAJOR.MINOR.PATCH
+PREFIX     ?= /usr/local
+INCLUDEDIR ?= $(PREFIX)/include/fov
+PCDIR      ?= $(PREFIX)/share/pkgconfig
+install:
+	install -d '$(DESTDIR)$(INCLUDEDIR)' '$(DESTDIR)$(PCDIR)'
+	install -m 644 fovsdf.h fovlp.h fovpt.h '$(DESTDIR)$(INCLUDEDIR)/'
+	@v=$$(for p in MAJOR MINOR PATCH; do sed -n "s/^#define FOVSDF_VERSION_$$p  *\([0-9][0-9]*\).*/\1/p" fovsdf.h; done | paste -sd.); \
+	case "$$v" in [0-9]*.[0-9]*.[0-9]*) ;; *) echo "make install: no FOVSDF_VERSION_* in fovsdf.h" >&2; exit 1;; esac; \
+	sed -e 's|@FOV_PC_PREFIX@|$(PREFIX)|' \
+	    -e 's|@FOV_PC_INCLUDEDIR@|$(patsubst $(PREFIX)/%,$${prefix}/%,$(INCLUDEDIR))|' \
+	    -e "s|@FOV_PC_VERSION@|$$v|" cmake/fov.pc.in > '$(DESTDIR)$(PCDIR)/fov.pc' && \
+	echo "fov $$v: $(DESTDIR)$(INCLUDEDIR)/{fovsdf,fovlp,fovpt}.h, $(DESTDIR)$(PCDIR)/fov.pc"
 
 # issue 10 stress scenes: pixels behind the first surface, false hits, misses, evaluations and
 # time per method at 1 and 4 spp (bench/results/stress.csv; BENCH_ARGS e.g. --size 320 180)

@@ -116,6 +116,7 @@ run_section examples bash tests/examples.sh
 # --- compile matrix, freestanding builds, other targets -----------------------------------
 run_section compile_matrix bash tests/compile/run.sh
 run_section cross_targets bash tests/xtarget/run.sh
+run_section cmake_consumers bash tests/cmake/run.sh
 
 echo "suite took $(( $(date +%s) - T0 )) s"
 echo "$TOTAL_P passed, $TOTAL_F failed"
