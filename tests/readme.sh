@@ -7,7 +7,7 @@
 #   - every ```c block that follows a line "<!-- compile -->" is a complete program: it is
 #     compiled with gcc -std=c99 $WARN -Werror and as C++ with g++, and both binaries run
 #     and exit 0 (at least three such blocks: the quick starts);
-#   - every image the README links exists;
+#   - every image and every other relative link of the README names an existing file;
 #   - bench/README.md is what bench/sdf_tables.py, bench/lp_tables.py and bench/pt_tables.py
 #     write from the committed CSVs (run on a copy, then diffed).
 # Prints PASS/FAIL lines and "N passed, N failed"; exit 1 on a failure.
@@ -75,6 +75,11 @@ for i in $imgs; do
     if [ -f "$dir/$i" ]; then ok "image $i exists"; else bad "image $i: no such file"; fi
 done
 [ "$ni" -ge 1 ] || bad "README links no image"
+# and every other relative link ([text](path), not http(s) or #anchor) names an existing file
+for i in $(grep -o -E '(^|[^!])\[[^]]*\]\([^)]*\)' "$README" | sed 's/.*](\([^)]*\))/\1/' | grep -v -E '^(https?:|mailto:|#)' \
+           | sed 's/#.*//' | sort -u); do
+    if [ -e "$dir/$i" ]; then ok "link $i exists"; else bad "link $i: no such file"; fi
+done
 
 # 5. bench/README.md is generated from the committed CSVs (python3, standard library only)
 if ! command -v python3 >/dev/null 2>&1; then
