@@ -12,6 +12,8 @@
 #                build/fuzz/crashes/<target>/; make fuzz FUZZ_SECONDS=10 FUZZ_TARGETS=fovsdf
 #   make install PREFIX=/usr/local (DESTDIR too): the three headers into $(PREFIX)/include/fov/,
 #                fov.pc into $(PREFIX)/share/pkgconfig/ (nothing is built; CMake: docs/build.md)
+#   make gallery the README's pictures: build/gallery renders PPMs into build/gallery_ppm/,
+#                examples/gallery_png.py (python3, standard library) writes docs/img/*.png
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -21,7 +23,7 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test fuzz examples bench bench-sdf bench-lp bench-pt clean install
+.PHONY: all demo test fuzz examples gallery bench bench-sdf bench-lp bench-pt clean install
 
 all: examples
 
@@ -60,6 +62,16 @@ demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	./$(BUILD)/lp_sdf --frames 8 --out out/lp
 	./$(BUILD)/pt_basic > out/pt_basic.ppm
 	@echo "images: out/ (fovsdf scenes per tracer), out/lp/ (fovlp frames), out/pt_basic.ppm (fovpt)"
+
+# the README's gallery: deterministic (one thread, no clock, -ffp-contract=off)
+$(BUILD)/gallery: examples/gallery.c examples/lp_sdf_shade.h bench/pt_scenes.h fovsdf.h fovlp.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -ffp-contract=off -I. $< -lm -o $@
+
+gallery: $(BUILD)/gallery
+	@mkdir -p $(BUILD)/gallery_ppm
+	./$(BUILD)/gallery --out $(BUILD)/gallery_ppm
+	python3 examples/gallery_png.py docs/img $(BUILD)/gallery_ppm/*.ppm
 
 test:
 	@bash tests/run_all.sh

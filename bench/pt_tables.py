@@ -2,6 +2,9 @@
 """pt_tables.py - the README's fovpt tables from bench/results/pt.csv (make bench-pt).
 
 usage: python3 bench/pt_tables.py [bench/results/pt.csv]
+       python3 bench/pt_tables.py --write [bench/README.md]
+           (rewrites the marked sections default, eqtime, eqrays, throughput, temporal of
+           bench/README.md from the committed CSVs; see bench/readme_sections.py)
 Prints markdown:
   1. default budgets: speed-up over uniform4 and fovea / near-periphery PSNR per method;
   2. equal time: fovea PSNR (f1) of each foveated method given uniform4's time, minus
@@ -16,6 +19,10 @@ import csv
 import math
 import sys
 
+import readme_sections
+
+RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
+
 
 def f(v):
     try:
@@ -28,8 +35,13 @@ def fmt_db(v):
     return "n/a" if math.isnan(v) else "%.1f" % v
 
 
-def main():
-    path = sys.argv[1] if len(sys.argv) > 1 else "bench/results/pt.csv"
+def tables(path):
+    """The five tables as {section name: lines}; the text between them is the CLI's only."""
+    sec = {}
+    cur = []
+
+    def print(line=""):  # noqa: A001 - collects instead of printing
+        cur.append(line)
     with open(path, newline="") as fh:
         rows = list(csv.DictReader(fh))
     idx = {}
@@ -59,13 +71,11 @@ def main():
                 r = get(sc, gz, m)
                 cells.append("%.1fx, %s/%s" % (f(r["speedup"]), fmt_db(f(r["psnr_f1"])), fmt_db(f(r["psnr_f4"]))) if r else "")
             print("| %s | %s | %s | %s/%s |" % (sc, gz, " | ".join(cells), fmt_db(f(u["psnr_f1"])), fmt_db(f(u["psnr_f4"]))))
-    print()
+    sec["default"] = cur
+    cur = []
 
     # 2. equal time
     eq = ["layers", "layers_fovea", "layers_diam", "layers_diam_fovea", "zones"]
-    print("Equal time: fovea PSNR gain (dB) over uniform4 at uniform4's time (time / target), and of "
-          "selective / jin over UNIFORM Whitted at the spp of the method's time")
-    print()
     print("| scene | gaze | uniform4 f1 dB | " + " | ".join(eq) + " | selective vs uniform | jin vs uniform |")
     print("|---|---|---:|" + "---:|" * len(eq) + "---:|---:|")
     gains = {m: [] for m in eq + ["selective", "jin"]}
@@ -107,11 +117,10 @@ def main():
             summ.append("%s %+.1f..%+.1f (mean %+.1f)" % (m, min(v), max(v), sum(v) / len(v)))
     print("Fovea gain at equal time, min..max over scenes and gazes%s: " % (
         " (without %s: the fovea sees only the background)" % ", ".join(a + " " + b for a, b in skipped) if skipped else "") + "; ".join(summ))
-    print()
+    sec["eqtime"] = cur
+    cur = []
 
     # 3. equal ray budget
-    print("Equal ray budget: fovea PSNR gain (dB) of each method over UNIFORM at its camera-ray count")
-    print()
     em = ["layers", "layers_diam", "zones", "selective", "jin"]
     print("| scene | gaze | " + " | ".join(em) + " |")
     print("|---|---|" + "---:|" * len(em))
@@ -123,7 +132,8 @@ def main():
                 cells.append("%+.1f" % (f(r["psnr_f1"]) - f(q["psnr_f1"])) if r and q else "")
             if any(cells):
                 print("| %s | %s | %s |" % (sc, gz, " | ".join(cells)))
-    print()
+    sec["eqrays"] = cur
+    cur = []
 
     # 4. throughput
     tp = [r for r in rows if r["mode"] == "closest_hit"]
@@ -133,13 +143,14 @@ def main():
         for r in tp:
             print("| %s | %s | %.2f | %.1f | %.3f |" % (r["method"], r["rays"], f(r["rays_per_s"]) * 1e-6, f(r["time_ms"]),
                                                     f(r["speedup"])))
+    sec["throughput"] = cur
+    cur = []
 
     # 5. temporal options
     tpath = os.path.join(os.path.dirname(path), "pt_temporal.csv")
     if os.path.exists(tpath):
         with open(tpath, newline="") as fh:
             trows = list(csv.DictReader(fh))
-        print()
         print("| scene | option | alpha | PSNR f1 / f2 / f3 / f4 dB (turning view, last frame) | "
               "flicker f1 / f2 / f3 / f4 (static view, sRGB std) | reused % |")
         print("|---|---|---|---|---|---:|")
@@ -147,7 +158,36 @@ def main():
             print("| %s | %s | %s | %s / %s / %s / %s | %.4f / %.4f / %.4f / %.4f | %s |" % (
                 r["scene"], r["option"], r["alpha"], fmt_db(f(r["psnr_f1"])), fmt_db(f(r["psnr_f2"])), fmt_db(f(r["psnr_f3"])),
                 fmt_db(f(r["psnr_f4"])), f(r["flicker_f1"]), f(r["flicker_f2"]), f(r["flicker_f3"]), f(r["flicker_f4"]), r["reused_pct"]))
+    sec["temporal"] = cur
+    return sec
+
+
+CAPTIONS = {
+    "eqtime": "Equal time: fovea PSNR gain (dB) over uniform4 at uniform4's time (time / target), and of "
+              "selective / jin over UNIFORM Whitted at the spp of the method's time",
+    "eqrays": "Equal ray budget: fovea PSNR gain (dB) of each method over UNIFORM at its camera-ray count",
+}
+
+
+def main(argv):
+    dest = readme_sections.target(argv)
+    if dest:
+        readme_sections.write_sections(dest, "pt_tables.py", tables(os.path.join(RESULTS, "pt.csv")))
+        return 0
+    sec = tables(argv[1] if len(argv) > 1 else os.path.join(RESULTS, "pt.csv"))
+    first = True
+    for name in ("default", "eqtime", "eqrays", "throughput", "temporal"):
+        if name not in sec:
+            continue
+        if not first:
+            print()
+        first = False
+        if name in CAPTIONS:
+            print(CAPTIONS[name])
+            print()
+        print("\n".join(sec[name]))
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main(sys.argv))

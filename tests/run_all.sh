@@ -112,6 +112,7 @@ FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} run_section fuzz bash
 
 # --- examples: they build warning-free and the demo's tracers agree with the ground truth --
 run_section examples bash tests/examples.sh
+run_section readme bash tests/readme.sh
 
 # --- compile matrix, freestanding builds, other targets -----------------------------------
 run_section compile_matrix bash tests/compile/run.sh
