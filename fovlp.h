@@ -1250,8 +1250,11 @@ FOVLP_API fovlp_config fovlp_config_preset(uint32_t preset, uint32_t width, uint
 FOVLP_API fovlp_config fovlp_config_default(void)
 {
     fovlp_config c;
+    fov_result r;
     FOV_MEMSET(&c, 0, sizeof c);
-    if (fovlp__resolve(&c, &c) != FOV_OK) FOV_ASSERT(0); /* all zero resolves: the defaults */
+    r = fovlp__resolve(&c, &c); /* all zero resolves: the defaults */
+    FOV_ASSERT(r == FOV_OK);
+    (void)r;
     return c;
 }
 
