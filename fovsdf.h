@@ -3004,14 +3004,14 @@ FOVSDF__PRIV float fovsdf__thr(const fovsdf__marcher *m, float t)
 }
 
 /* The refinement's margin at t: 1 % of the threshold plus 4 ulps of |camera| + t (the float
-   noise of a position); see the hit refinement in fovsdf__march. */
+   noise of a position); see the hit refinement, fovsdf__refine. */
 FOVSDF__PRIV float fovsdf__mg(const fovsdf__marcher *m, float t)
 {
     return 0.01f * fovsdf__thr(m, t) + 0.5f * (m->ulp0 + m->ulp1 * t);
 }
 
 /* Empty-ball certificate of a forward secant move from a hit at t (distance d > 0) to t2 >
-   t + d (see the hit refinement in fovsdf__march): a ball around c = F + H n, F = p(t2), n the
+   t + d (see the hit refinement, fovsdf__refine): a ball around c = F + H n, F = p(t2), n the
    outward normal at F, H the radius of the ball tangent at F through A = p(t + d), is empty
    when its radius is at most f(c) (Lipschitz 1); when A and F lie within f(c) + mg of c (less
    the test's rounding), so does the segment between them (convexity), and no point of it is
@@ -3076,18 +3076,252 @@ FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], 
     return 1;
 }
 
-/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers).
-   Contract (every method): evaluations only at finite points with t <= t_max; a hit has a
-   finite t in [t0, t_max] (t0 after the head-start check); a refinement never moves a hit
-   past a point of the ray it has not verified (see the hit refinement below). */
-FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3], float t0,
-                                fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
+/* A tracer's result, the input of the hit refinement: the last sample (t, d), the one before
+   it (pt, pd; hp when there is one), the steps taken and the outcome (fovsdf_hit_kind). */
+typedef struct fovsdf__trace {
+    float t, d, pt, pd;
+    int hp;
+    uint32_t steps, kind;
+} fovsdf__trace;
+
+/* One counted evaluation at ro + t rd at SDF scale inflate. A point that overflows (a camera
+   near FLT_MAX) is never evaluated: FLT_MAX, a miss. */
+FOVSDF__PRIV float fovsdf__eval_ray(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                    float t, float inflate, int32_t *mat, fovsdf_stats *st)
 {
-    float t = t0, p[3], d, pt = t0, pd = 0.0f;
+    float p[3];
+    p[0] = ro[0] + rd[0] * t; p[1] = ro[1] + rd[1] * t; p[2] = ro[2] + rd[2] * t;
+    return fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, t), inflate,
+                                             mat, st)
+                           : FLT_MAX;
+}
+
+/* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
+FOVSDF__PRIV void fovsdf__trace_classic(const fovsdf__marcher *m, const float ro[3],
+                                        const float rd[3], float t0, int32_t *mat,
+                                        fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, d = 0.0f, pt = t0, pd = 0.0f;
     int hp = 0;
-    uint32_t steps = 0, ev0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    for (;;) {
+        if (t > m->t_max) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+        ++steps;
+        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        pt = t; pd = d; hp = 1;
+        t += d;
+    }
+    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
+   sphere at the new point does not overlap the previous one the step may have jumped a
+   surface: go back to the safe point tp + rp and continue with omega = 1. */
+FOVSDF__PRIV void fovsdf__trace_relaxed(const fovsdf__marcher *m, const float ro[3],
+                                        const float rd[3], float t0, int32_t *mat,
+                                        fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, d = 0.0f, pt = t0, pd = 0.0f, om = m->omega, tp = t0, rp = 0.0f;
+    int hp = 0, have = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    for (;;) {
+        if (t > m->t_max) break;
+        if (steps >= m->max_steps) { /* the last relaxed step is unverified: fall back */
+            kind = FOVSDF_EXHAUSTED;
+            if (have && t > tp + rp) { t = tp + rp; d = rp; }
+            break;
+        }
+        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+        ++steps;
+        if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
+        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        tp = t; rp = d; have = 1;
+        pt = t; pd = d; hp = 1;
+        /* an over-relaxed step may only leave the range after the overlap test has seen
+           its end point: stop it at t_max (a plain step past t_max is a safe miss) */
+        t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
+    }
+    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average, weight
+   beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the surface
+   predicted by the line; back-step to a plain step when the spheres at t and t + z do not
+   overlap. A step never ends past t_max; when a plain step would, the sphere at t already
+   proves the rest of the range empty: a miss. */
+FOVSDF__PRIV void fovsdf__trace_autorelaxed(const fovsdf__marcher *m, const float ro[3],
+                                            const float rd[3], float t0, int32_t *mat,
+                                            fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, pt = t0, pd = 0.0f, r, z, sl = -1.0f;
+    int hp = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+    ++steps;
+    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
+    z = r;
+    while (kind == FOVSDF_MISS) {
+        float T, R, M, om;
+        if (!(t + r <= m->t_max)) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        T = fov__minf(t + z, m->t_max);
+        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
+        ++steps;
+        /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
+        if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
+        M = (R - r) / fov__maxf(T - t, 1e-20f);
+        sl += m->beta * (M - sl);
+        pt = t; pd = r; hp = 1;
+        t = T; r = R;
+        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
+        z = r * fov__maxf(1.0f, om);
+    }
+    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Balint & Valasek 2018: fit a line through the last two distance samples and step
+   d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when the
+   spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
+FOVSDF__PRIV void fovsdf__trace_bv2018(const fovsdf__marcher *m, const float ro[3],
+                                       const float rd[3], float t0, int32_t *mat,
+                                       fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, pt = t0, pd = 0.0f, r, z, dp = 0.0f, rp = 0.0f;
+    int hp = 0, have = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+    ++steps;
+    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
+    while (kind == FOVSDF_MISS) {
+        float T, R;
+        if (!(t + r <= m->t_max)) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        z = r;
+        if (have) {
+            float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
+            z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
+        }
+        T = fov__minf(t + z, m->t_max);
+        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
+        ++steps;
+        if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
+        dp = T - t; rp = r; have = 1;
+        pt = t; pd = r; hp = 1;
+        t = T; r = R;
+        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+    }
+    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* One refinement move of the hit (*t, *d) by dt, evaluated at the exact scene (inflate 1):
+   kept when t + dt is in [t0, t_max], lowers |d|, is not inside by more than the margin, and
+   passes no point the march has not verified: a backward move or one of at most d (inside
+   the last sample's sphere), or a forward one whose end sphere (radius d2) overlaps that
+   sphere, d + d2 + 2 mg >= dt. Returns 1 with *t, *d (and *mat) moved, else 0 with nothing
+   changed. One evaluation. */
+FOVSDF__PRIV int fovsdf__refine_move(const fovsdf__marcher *m, const float ro[3],
+                                     const float rd[3], float t0, float dt, float mg, float *t,
+                                     float *d, int32_t *mat, fovsdf_stats *st)
+{
+    float t2 = *t + dt, d2;
+    int32_t m2 = 0;
+    if (!(t2 <= m->t_max && t2 >= t0)) return 0;
+    d2 = fovsdf__eval_ray(m, ro, rd, t2, 1.0f, mat ? &m2 : 0, st);
+    if (!(fov__absf(d2) < fov__absf(*d) && d2 > -fovsdf__mg(m, t2) &&
+          (dt <= fov__maxf(*d, 0.0f) || dt <= *d + d2 + 2.0f * mg)))
+        return 0;
+    *t = t2; *d = d2;
+    if (mat) *mat = m2;
+    return 1;
+}
+
+/* Hit refinement (every tracer): the threshold stops a ray up to eps (or a fraction of a pixel
+   cone) short of the surface along the ray, which at grazing angles slides the hit point, and
+   every texture on it, by that fraction of a pixel. One secant step through the last two
+   samples is exact for planes; it is kept only when it lowers |d|, stays outside (up to
+   the margin mg below), stays in [t0, t_max] and never passes a point the march has not
+   verified: the loop's last sample proves [t, t + d] empty (its unbounding sphere), and a
+   move beyond t + d is kept only when
+   - the sphere at its end point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then
+     no point of the segment is inside by more than mg): roughly normal incidence, a
+     plane at |cos(incidence)| = c while d (1/c - 1) <= 2 mg; or else
+   - one empty ball off the ray holds the segment it jumps (fovsdf__ball_cert): with
+     A = p(t + d) and F = p(t + dt) the secant's end point, n the outward normal at F
+     (the secant's slope along the ray and two forward differences across it), the ball
+     around c = F + H n through A tangent to the plane at F (H = |A - F|^2 / (2 h_A),
+     h_A = (A - F) . n the height of A above that plane: for a plane the smallest such
+     ball) contains no surface point when its radius is at most f(c) (Lipschitz 1), so
+     when A and F both lie within f(c) + mg of c (less 4 ulps of H for the rounding of
+     the test), so does the whole segment (a ball is convex) and no point of it is
+     inside by more than mg. Refused when |f(F)| > d / 4 (the secant found no surface
+     there: a ray running along a curved surface keeps its hit where the threshold
+     stopped it, as a plain tracer would), when h_A <= 0, when 8 ulps of H exceed mg
+     (a plane below about 0.4 degrees with d near the threshold), or when anything is
+     not finite; a surface inside the ball (a thin wall before the plane, a concave corner)
+     makes f(c) smaller than H and refuses it. 4 evaluations (F, two differences, c),
+     tried up to 1024 |d| ahead.
+   Otherwise the hit moves by d, inside the sample's sphere (the plain step; the secant
+   step is clamped to 64 |d|). Backward moves (d < 0) stay within the part the loop
+   verified. A plane is then refined exactly from normal incidence down to about 0.4
+   degrees (the unverified secant before issue 10, clamped to 64 |d|, was exact down to
+   about 0.9 degrees, and jumped thin surfaces: a ray stopped 0.06 before a shell and the
+   secant put the hit 0.94 behind it); below that the hit stays up to thr (1/c - 1)
+   before the plane. Cost per hit: one evaluation, up to 5 when the ball is tried (a hit
+   at the first evaluation takes one more for the second sample: 6 at most). mg = 1 % of
+   the threshold plus the float noise of the position (4 ulps of |camera| + t), which
+   the shading offsets cover; it is also the
+   depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
+   a wall thinner than 2 mg is below what the refinement can see. */
+FOVSDF__PRIV void fovsdf__refine(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                 float t0, fovsdf__trace *o, int32_t *mat, fovsdf_stats *st)
+{
+    if (o->kind != FOVSDF_HIT) return;
+    if (!o->hp && o->d > 0.0f && fov__finite(o->d)) {
+        /* hit at the first evaluation (a head start next to the surface): one plain step
+           (inside the sample's sphere) gives the second sample the secant needs (kept only
+           when it gets closer) */
+        float t1 = o->t, d1 = o->d;
+        if (fovsdf__refine_move(m, ro, rd, t0, o->d, 0.0f, &o->t, &o->d, mat, st)) {
+            o->pt = t1; o->pd = d1; o->hp = 1;
+        }
+    }
+    if (o->hp && o->pt < o->t && o->pd > o->d) {
+        float t = o->t, d = o->d, slope = (d - o->pd) / (t - o->pt), dt = -d / slope;
+        float lim = 64.0f * fov__absf(d), mg = fovsdf__mg(m, t), tb = t, db = d;
+        int32_t mb = 0;
+        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
+           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
+           (within the sphere; one evaluation) */
+        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
+            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb,
+                              &db, mat ? &mb : 0, st)) {
+            o->t = tb; o->d = db;
+            if (mat) *mat = mb;
+            dt = 0.0f;
+        } else {
+            dt = fovsdf__clampf(dt, -lim, lim);
+            if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
+        }
+        if (!fov__is0(dt) && fov__finite(dt))
+            (void)fovsdf__refine_move(m, ro, rd, t0, dt, mg, &o->t, &o->d, mat, st);
+    }
+}
+
+/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers):
+   one tracer, then the hit refinement. Contract (every method): evaluations only at finite
+   points with t <= t_max; a hit has a finite t in [t0, t_max] (t0 after the head-start
+   check); a refinement never moves a hit past a point of the ray it has not verified (see
+   fovsdf__refine). */
+FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                float t0, fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
+{
+    uint32_t ev0;
     fovsdf_stats local;
     fovsdf__marcher mr;
+    fovsdf__trace o;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     ev0 = (uint32_t)st->evals;
     h->kind = FOVSDF_MISS;
@@ -3107,199 +3341,18 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     if (m->verify_start && t0 > 0.0f) {
         /* a heuristic head start (IPR, SKIP) can lie past the surface, inside it: one
            evaluation tells, and such a ray starts over from the camera */
-        float q[3], d0;
-        q[0] = ro[0] + rd[0] * t0; q[1] = ro[1] + rd[1] * t0; q[2] = ro[2] + rd[2] * t0;
-        d0 = fov__finite3(q) ? fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st) : FLT_MAX;
-        if (d0 < 0.0f) { t0 = 0.0f; t = 0.0f; }
+        if (fovsdf__eval_ray(m, ro, rd, t0, m->inflate, 0, st) < 0.0f) t0 = 0.0f;
     }
-    /* a point that overflows (a camera near FLT_MAX) is never evaluated: FLT_MAX, a miss */
-#define FOVSDF__AT(tt) (p[0] = ro[0] + rd[0] * (tt), p[1] = ro[1] + rd[1] * (tt), p[2] = ro[2] + rd[2] * (tt), \
-                        fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st) \
-                                           : FLT_MAX)
-    if (m->method == FOVSDF_METHOD_RELAXED) {
-        /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
-           sphere at the new point does not overlap the previous one the step may have jumped a
-           surface: go back to the safe point tp + rp and continue with omega = 1. */
-        float om = m->omega, tp = t0, rp = 0.0f;
-        int have = 0;
-        d = 0.0f;
-        for (;;) {
-            if (t > m->t_max) break;
-            if (steps >= m->max_steps) { /* the last relaxed step is unverified: fall back */
-                h->kind = FOVSDF_EXHAUSTED;
-                if (have && t > tp + rp) { t = tp + rp; d = rp; }
-                break;
-            }
-            d = FOVSDF__AT(t);
-            ++steps;
-            if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
-            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            tp = t; rp = d; have = 1;
-            pt = t; pd = d; hp = 1;
-            /* an over-relaxed step may only leave the range after the overlap test has seen
-               its end point: stop it at t_max (a plain step past t_max is a safe miss) */
-            t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
-        }
-    } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
-        /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
-           weight beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the
-           surface predicted by the line; back-step to a plain step when the spheres at t and
-           t + z do not overlap. A step never ends past t_max; when a plain step would, the
-           sphere at t already proves the rest of the range empty: a miss. */
-        float r, z, sl = -1.0f;
-        r = FOVSDF__AT(t);
-        ++steps;
-        d = r;
-        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
-        z = r;
-        while (h->kind == FOVSDF_MISS) {
-            float T, R, M, om;
-            if (!(t + r <= m->t_max)) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            T = fov__minf(t + z, m->t_max);
-            R = FOVSDF__AT(T);
-            ++steps;
-            /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
-            if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
-            M = (R - r) / fov__maxf(T - t, 1e-20f);
-            sl += m->beta * (M - sl);
-            pt = t; pd = r; hp = 1;
-            t = T; r = R; d = r;
-            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
-            z = r * fov__maxf(1.0f, om);
-        }
-    } else if (m->method == FOVSDF_METHOD_BV2018) {
-        /* Balint & Valasek 2018: fit a line through the last two distance samples and step
-           d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when
-           the spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
-        float r, z, dp = 0.0f, rp = 0.0f;
-        int have = 0;
-        r = FOVSDF__AT(t);
-        ++steps;
-        d = r;
-        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
-        while (h->kind == FOVSDF_MISS) {
-            float T, R;
-            if (!(t + r <= m->t_max)) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            z = r;
-            if (have) {
-                float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
-                z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
-            }
-            T = fov__minf(t + z, m->t_max);
-            R = FOVSDF__AT(T);
-            ++steps;
-            if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
-            dp = T - t; rp = r; have = 1;
-            pt = t; pd = r; hp = 1;
-            t = T; r = R; d = r;
-            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-        }
-    } else {
-        /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
-        d = 0.0f;
-        for (;;) {
-            if (t > m->t_max) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            d = FOVSDF__AT(t);
-            ++steps;
-            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            pt = t; pd = d; hp = 1;
-            t += d;
-        }
-    }
-    /* Hit refinement: the threshold stops a ray up to eps (or a fraction of a pixel cone)
-       short of the surface along the ray, which at grazing angles slides the hit point, and
-       every texture on it, by that fraction of a pixel. One secant step through the last two
-       samples is exact for planes; it is kept only when it lowers |d|, stays outside (up to
-       the margin mg below), stays in [t0, t_max] and never passes a point the march has not
-       verified: the loop's last sample proves [t, t + d] empty (its unbounding sphere), and a
-       move beyond t + d is kept only when
-       - the sphere at its end point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then
-         no point of the segment is inside by more than mg): roughly normal incidence, a
-         plane at |cos(incidence)| = c while d (1/c - 1) <= 2 mg; or else
-       - one empty ball off the ray holds the segment it jumps (fovsdf__ball_cert): with
-         A = p(t + d) and F = p(t + dt) the secant's end point, n the outward normal at F
-         (the secant's slope along the ray and two forward differences across it), the ball
-         around c = F + H n through A tangent to the plane at F (H = |A - F|^2 / (2 h_A),
-         h_A = (A - F) . n the height of A above that plane: for a plane the smallest such
-         ball) contains no surface point when its radius is at most f(c) (Lipschitz 1), so
-         when A and F both lie within f(c) + mg of c (less 4 ulps of H for the rounding of
-         the test), so does the whole segment (a ball is convex) and no point of it is
-         inside by more than mg. Refused when |f(F)| > d / 4 (the secant found no surface
-         there: a ray running along a curved surface keeps its hit where the threshold
-         stopped it, as a plain tracer would), when h_A <= 0, when 8 ulps of H exceed mg
-         (a plane below about 0.4 degrees with d near the threshold), or when anything is
-         not finite; a surface inside the ball (a thin wall before the plane, a concave corner)
-         makes f(c) smaller than H and refuses it. 4 evaluations (F, two differences, c),
-         tried up to 1024 |d| ahead.
-       Otherwise the hit moves by d, inside the sample's sphere (the plain step; the secant
-       step is clamped to 64 |d|). Backward moves (d < 0) stay within the part the loop
-       verified. A plane is then refined exactly from normal incidence down to about 0.4
-       degrees (the unverified secant before issue 10, clamped to 64 |d|, was exact down to
-       about 0.9 degrees, and jumped thin surfaces: a ray stopped 0.06 before a shell and the
-       secant put the hit 0.94 behind it); below that the hit stays up to thr (1/c - 1)
-       before the plane. Cost per hit: one evaluation, up to 5 when the ball is tried (a hit
-       at the first evaluation takes one more for the second sample: 6 at most). mg = 1 % of
-       the threshold plus the float noise of the position (4 ulps of |camera| + t), which
-       the shading offsets cover; it is also the
-       depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
-       a wall thinner than 2 mg is below what the refinement can see. */
-#define FOVSDF__MG(tt) fovsdf__mg(m, tt)
-    if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fov__finite(d)) {
-        /* hit at the first evaluation (a head start next to the surface): one plain step
-           (inside the sample's sphere) gives the second sample the secant needs (kept only
-           when it gets closer) */
-        float t2 = t + d, d2;
-        int32_t m2 = 0;
-        if (t2 <= m->t_max) {
-            d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                  fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st) : FLT_MAX);
-            if (fov__absf(d2) < d && d2 > -FOVSDF__MG(t2)) {
-                pt = t; pd = d; hp = 1;
-                t = t2; d = d2;
-                if (mat) *mat = m2;
-            }
-        }
-    }
-    if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
-        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fov__absf(d), d2, mg = FOVSDF__MG(t);
-        float tb = t, db = d;
-        int32_t mb = 0;
-        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
-           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
-           (within the sphere; one evaluation) */
-        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
-            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb, &db, mat ? &mb : 0, st)) {
-            t = tb; d = db;
-            if (mat) *mat = mb;
-            dt = 0.0f;
-        } else {
-            dt = fovsdf__clampf(dt, -lim, lim);
-            if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
-        }
-        if (!fov__is0(dt) && fov__finite(dt)) {
-            float t2 = t + dt;
-            int32_t m2 = 0;
-            if (t2 <= m->t_max && t2 >= t0) {
-                d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                      fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st)
-                                         : FLT_MAX);
-                if (fov__absf(d2) < fov__absf(d) && d2 > -FOVSDF__MG(t2) &&
-                    (dt <= fov__maxf(d, 0.0f) || dt <= d + d2 + 2.0f * mg)) {
-                    t = t2; d = d2;
-                    if (mat) *mat = m2;
-                }
-            }
-        }
-    }
-#undef FOVSDF__MG
-#undef FOVSDF__AT
-    h->t = h->kind == FOVSDF_MISS ? m->t_max : t;
-    h->dist = d;
-    h->steps = steps;
+    if (m->method == FOVSDF_METHOD_RELAXED) fovsdf__trace_relaxed(m, ro, rd, t0, mat, st, &o);
+    else if (m->method == FOVSDF_METHOD_AUTORELAXED)
+        fovsdf__trace_autorelaxed(m, ro, rd, t0, mat, st, &o);
+    else if (m->method == FOVSDF_METHOD_BV2018) fovsdf__trace_bv2018(m, ro, rd, t0, mat, st, &o);
+    else fovsdf__trace_classic(m, ro, rd, t0, mat, st, &o);
+    fovsdf__refine(m, ro, rd, t0, &o, mat, st);
+    h->kind = o.kind;
+    h->t = o.kind == FOVSDF_MISS ? m->t_max : o.t;
+    h->dist = o.d;
+    h->steps = o.steps;
     h->evals = (uint32_t)st->evals - ev0;
 }
 
