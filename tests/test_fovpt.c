@@ -72,7 +72,7 @@ static char *read_file(const char *path)
 }
 static const char *block(const char *text, size_t *len)
 {
-    const char *a = strstr(text, "/* ==== FOV_SHARED_BEGIN decl ");
+    const char *a = strstr(text, "/* ==== FOV_SHARED_BEGIN decl:");
     const char *e = a ? strstr(a, "/* ==== FOV_SHARED_END decl ") : NULL;
     if (!a || !e) return NULL;
     *len = (size_t)(e - a);
