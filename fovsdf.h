@@ -210,7 +210,8 @@ THREADING
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
    - The hit threshold of a ray at distance t is
-         thr(t) = max(eps, eps_px * pixel_angle * cos^2(theta) * t, 8 * FLT_EPSILON * (|camera| + t)),
+         thr(t) = max(eps, eps_px * pixel_angle * cos^2(theta) * t,
+                      8 * FLT_EPSILON * (|camera| + t)),
      theta the ray's angle to the camera's axis: the pixel-cone term is the ray's own pixel
      footprint (a pinhole pixel subtends pixel_angle cos^2(theta) radially and pixel_angle
      cos(theta) tangentially; the smaller one), so wide fields of view and extreme aspect
@@ -241,8 +242,8 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
      at 5 sizes, |cos(incidence)| >= 0.3: relative depth error below 4.4e-5; a plane seen at
      0.01 rad: -2.1e-6 relative (-9.8e-5 with the plain step), at 1e-3 rad +2.3e-5 (2.3e-5
      below the plane, within the float noise of a position 1000 away), at 1e-4 rad -9.4e-3
-     (beyond the ball's range); camera 1e5 units from the origin, unit sphere 5 units away: about 1e-2 relative
-     (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
+     (beyond the ball's range); camera 1e5 units from the origin, unit sphere 5 units away:
+     about 1e-2 relative (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
    - No hit behind the first surface (every tracer; CONE and CONE_FOV's traced pixels too; for
      a distance function that never overestimates): let t_in be the first t where the ray is
      inside an object by more than tol(t) = 8 FLT_EPSILON (|camera| + t) + 0.02 thr(t) (the
