@@ -1296,6 +1296,16 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #define FOVPT__PRIV FOV__PRIV
 #define FOVPT__FAIL(lg, r, msg) FOV__FAIL(lg, "fovpt", r, msg)
 
+/* SSE: the 4-wide BVH tests a node's four boxes in one pass (FOVPT_NO_SIMD: scalar only;
+   both give the same results) */
+#if !defined(FOVPT_NO_SIMD) && (defined(__SSE__) || defined(_M_X64) || \
+                                (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
+#define FOVPT__SSE 1
+#include <xmmintrin.h>
+#else
+#define FOVPT__SSE 0
+#endif
+
 
 #ifndef FOVPT_MAX_DIM
 #define FOVPT_MAX_DIM 65536u
@@ -2470,21 +2480,24 @@ FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float 
     return tn <= tf * FOVPT__BOX_GROW + grow_k;
 }
 
-/* Closest hit over bounded primitives (BVH or loop) and planes; returns the slot or NONE.
-   BVH traversal: both children's boxes are tested together, the nearer one (by its entry
-   distance) is visited first, the farther one is pushed with its entry distance, and a pop
-   skips entries that start beyond the closest hit found meanwhile (no second box test:
-   tn <= min(box exit, tmax) widened by the rounding margin at the push, so tn <= new tmax,
-   widened alike, is the same test). Triangles
-   are intersected inline from a leaf-ordered copy (v0, e1, e2), the other shapes through
-   fovpt__isect. */
-FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin, float *tmax,
-                                    int brute, int any, uint64_t *tests)
+/* Closest hit over the bounded primitives and the planes: returns the slot (and lowers *tmax
+   to its t) or FOVPT_PRIM_NONE; any: returns the first hit found instead (occlusion); brute:
+   a loop over every bounded primitive instead of the BVH. BVH traversal: the root's box (the
+   binary tree's node 0), then the 4-wide nodes (fovpt__node4): the four children's slab
+   tests at once (SSE, or the same arithmetic per child), then a single hit child is visited
+   directly, of two the nearer (by entry distance) is visited and the other pushed, of three
+   or four the nearest is visited and the others pushed farthest first, each pushed with its
+   entry distance. A pop skips entries that start beyond the closest hit found meanwhile (no
+   second box test: tn <= min(box exit, tmax) widened by the rounding margin at the push, so
+   tn <= new tmax, widened alike, is the same test). Leaf triangles are intersected inline
+   from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
+   (unbounded) are tested after the bounded primitives. */
+FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin,
+                                    float *tmax, int brute, int any)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t best = FOVPT_PRIM_NONE, i;
     float t;
-    (void)tests;
     if (s->nodes && !brute) {
         const fovpt__node *nodes = (const fovpt__node *)s->nodes;
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
@@ -2624,12 +2637,12 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fovpt__ray_init(&r, org, dir)) return 0;
-        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, NULL);
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0);
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
-        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0, NULL);
+        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0);
         if (slot != FOVPT_PRIM_NONE) {
             t = ts / sc;
             if (!(t > tmin && t < tmax)) { slot = FOVPT_PRIM_NONE; t = tmax; } /* under/overflow of the rescale */
@@ -2704,18 +2717,18 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fovpt__ray_init(&r, org, dir)) return 0;
-        if (fovpt__closest(s, &r, tmin, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) return 1;
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1) != FOVPT_PRIM_NONE) return 1;
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         t = tmax * sc;
-        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1, NULL) != FOVPT_PRIM_NONE) {
+        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1) != FOVPT_PRIM_NONE) {
             float tt = t / sc;
             if (tt > tmin && tt < tmax) return 1;
             /* the first hit found does not rescale into (tmin, tmax) (t / sc overflowed):
                decide on the closest hit, as fovpt_intersect does */
             t = tmax * sc;
-            if (fovpt__closest(s, &r, tmin * sc, &t, 0, 0, NULL) != FOVPT_PRIM_NONE) {
+            if (fovpt__closest(s, &r, tmin * sc, &t, 0, 0) != FOVPT_PRIM_NONE) {
                 tt = t / sc;
                 if (tt > tmin && tt < tmax) return 1;
             }

@@ -130,9 +130,9 @@ ACCELERATED METHODS
    thesis's selective anti-aliasing. A static scene and gaze reach the refresh-1 image after
    `refresh` frames (tested), and with a fovea covering the image FIPR is IPR (3 levels, the
    same heuristic_start) and CONE_FOV is CONE bit for bit when the image's sides are multiples
-   of the tile (CONE_FOV keeps its border tiles' cells unclipped, CONE clips them). FIPR always has the thesis's three
-   levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter apply. The
-   pipeline and the choices are at fovsdf__fov_tile.
+   of the tile (CONE_FOV keeps its border tiles' cells unclipped, CONE clips them). FIPR always has
+   the thesis's three levels (ipr_levels is IPR's alone); ipr_tile, ipr_radius and ipr_no_filter
+   apply. The pipeline and the choices are at fovsdf__fov_tile.
    Safe FIPR (the default): the mid ray and the traced pixels of a 2x2 cell start from the
    cell's certified start (its cone from its 4x4 parent's), so no traced ray and no mid ray
    starts past its first hit. Level 0 still traces thin rays from the camera for the edge map.
@@ -210,7 +210,8 @@ THREADING
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
    - The hit threshold of a ray at distance t is
-         thr(t) = max(eps, eps_px * pixel_angle * cos^2(theta) * t, 8 * FLT_EPSILON * (|camera| + t)),
+         thr(t) = max(eps, eps_px * pixel_angle * cos^2(theta) * t,
+                      8 * FLT_EPSILON * (|camera| + t)),
      theta the ray's angle to the camera's axis: the pixel-cone term is the ray's own pixel
      footprint (a pinhole pixel subtends pixel_angle cos^2(theta) radially and pixel_angle
      cos(theta) tangentially; the smaller one), so wide fields of view and extreme aspect
@@ -241,8 +242,8 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
      at 5 sizes, |cos(incidence)| >= 0.3: relative depth error below 4.4e-5; a plane seen at
      0.01 rad: -2.1e-6 relative (-9.8e-5 with the plain step), at 1e-3 rad +2.3e-5 (2.3e-5
      below the plane, within the float noise of a position 1000 away), at 1e-4 rad -9.4e-3
-     (beyond the ball's range); camera 1e5 units from the origin, unit sphere 5 units away: about 1e-2 relative
-     (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
+     (beyond the ball's range); camera 1e5 units from the origin, unit sphere 5 units away:
+     about 1e-2 relative (the ulp floor, 8 * FLT_EPSILON * 1e5 = 0.095 units, dominates).
    - No hit behind the first surface (every tracer; CONE and CONE_FOV's traced pixels too; for
      a distance function that never overestimates): let t_in be the first t where the ray is
      inside an object by more than tol(t) = 8 FLT_EPSILON (|camera| + t) + 0.02 thr(t) (the
@@ -1027,7 +1028,8 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *ctx, const float p[3], con
 /* The IPR neighbour minimum filter on a caller image: out(x, y) = the minimum of in over the
    (2 radius + 1)^2 window around (x, y), clamped at the borders (radius 0 copies; radius above
    64: FOV_ERR_LIMIT, the cost grows with its square). out must not alias in. */
-FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out);
+FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
+                                        float *out);
 /* FIPR's pass 5, optional (the thesis's study, Sec. 5.4.1, found it made the foveation more
    visible, so nothing calls it by default): a Gaussian blur of sigma pixels, in (0, 8], applied
    only where traced and interpolated pixels meet (sigma in [0.05, 8]): a pixel is blurred when
@@ -1572,7 +1574,8 @@ FOVSDF__PRIV size_t fovsdf__ipr_floats(uint32_t tile, uint32_t levels, int32_t r
     size_t n = 0;
     uint32_t l;
     for (l = 0; l + 1u < levels; ++l) {
-        size_t side = (size_t)(tile >> (levels - 1u - l)) + 2u * fovsdf__ipr_apron(levels, l, (uint32_t)r);
+        size_t side =
+            (size_t)(tile >> (levels - 1u - l)) + 2u * fovsdf__ipr_apron(levels, l, (uint32_t)r);
         n += side * side;
     }
     return n;
@@ -1596,9 +1599,15 @@ FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r, int cone)
 
 
 /* NaN gives a: a NaN never survives a clamp (bit for bit the plain clamp otherwise) */
-FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b) { return x >= a ? (x > b ? b : x) : a; }
+FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b)
+{
+    return x >= a ? (x > b ? b : x) : a;
+}
 FOVSDF__PRIV float fovsdf__len2f(float x, float y) { return FOV__SQRT(x * x + y * y); }
-FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z) { return FOV__SQRT(x * x + y * y + z * z); }
+FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z)
+{
+    return FOV__SQRT(x * x + y * y + z * z);
+}
 /* Scales v to unit length and returns its length before (FLT_MAX when that is beyond float).
    Any finite non-zero v works: one whose squares would under- or overflow (largest component
    below 1e-15 or above 1e15) is brought to a largest component of 1 first; every other vector
@@ -1693,7 +1702,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
     if (c.method == FOVSDF_METHOD_IPR &&
-        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels, (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
+        fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels,
+                           (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
             FOVSDF_TILE_SCRATCH)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
     if (!fov__finite(c.skip_scale) || !fov__finite(c.skip_eps))
@@ -1720,8 +1730,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         if (!fov__finite(c.acuity.A) || !fov__finite(c.acuity.rate) || !fov__finite(c.acuity.C) ||
             !fov__finite(c.acuity.fovea_deg) || !fov__finite(c.acuity.outer_deg) || !fov__finite(c.edge_threshold))
             FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: acuity or edge_threshold not finite");
-        if (c.acuity.A < 0.0f || c.acuity.rate < 0.0f || c.acuity.C < 0.0f || c.acuity.fovea_deg < 0.0f ||
-            c.acuity.outer_deg < 0.0f || c.edge_threshold < 0.0f)
+        if (c.acuity.A < 0.0f || c.acuity.rate < 0.0f || c.acuity.C < 0.0f ||
+            c.acuity.fovea_deg < 0.0f || c.acuity.outer_deg < 0.0f || c.edge_threshold < 0.0f)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative acuity parameter or edge_threshold");
         if (fov__is0(c.acuity.A)) c.acuity.A = d.A;
         if (fov__is0(c.acuity.rate)) c.acuity.rate = d.rate;
@@ -1743,8 +1753,9 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1, 1) > FOVSDF_FOV_CELLS)
             FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: CONE_FOV cone_tile cells above FOVSDF_FOV_CELLS");
     }
-    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
-        c.display.distance_mm < 0.0f || fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
+    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f ||
+        c.display.pixel_pitch_mm < 0.0f || c.display.distance_mm < 0.0f ||
+        fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
     *out = c;
     return FOV_OK;
@@ -1816,7 +1827,8 @@ FOVSDF_API void fovsdf_scene_set_program(fovsdf_scene *s, const fovsdf_program *
 FOVSDF_API fov_result fovsdf_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
                                       uint32_t w, uint32_t h, fov_gaze g)
 { return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVSDF_MAX_DIM); }
-FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
+FOVSDF_API float fovsdf_ecc_deg(const fov_ecc_model *m, float x, float y)
+{ return fov__ecc_deg(m, x, y); }
 FOVSDF_API float fovsdf_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
 
 /* ---- node validation: the one check of the builder and of fovsdf_program_build ------------ */
@@ -1860,17 +1872,19 @@ FOVSDF__PRIV int fovsdf__node_arity(uint32_t t)
 
 FOVSDF__PRIV const char *fovsdf__node_name(uint32_t t)
 {
-    static const char *const names[] = { "none", "sphere", "box", "round_box", "box_frame", "torus", "capsule",
-                                         "cylinder", "cone", "plane", "menger", "mandelbulb", "terrain", "union",
-                                         "subtract", "intersect", "smooth_union", "smooth_subtract",
-                                         "smooth_intersect", "translate", "rotate", "scale", "repeat", "mirror",
-                                         "round", "onion" };
+    static const char *const names[] = { "none", "sphere", "box", "round_box", "box_frame",
+                                         "torus", "capsule", "cylinder", "cone", "plane",
+                                         "menger", "mandelbulb", "terrain", "union", "subtract",
+                                         "intersect", "smooth_union", "smooth_subtract",
+                                         "smooth_intersect", "translate", "rotate", "scale",
+                                         "repeat", "mirror", "round", "onion" };
     return t < (uint32_t)_FOVSDF_NODE_NUM ? names[t] : "unknown";
 }
 
 /* Logs "<who>: node <index> (<type>): [f<field> ]<rule>" and returns r. */
-FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, const char *who, uint32_t index,
-                                          uint32_t type, int field, const char *rule, uint32_t line)
+FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, const char *who,
+                                          uint32_t index, uint32_t type, int field,
+                                          const char *rule, uint32_t line)
 {
 #ifndef FOV_NO_ERROR_STRINGS
     char buf[192];
@@ -1897,8 +1911,8 @@ FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, co
 /* Float parameters each node type reads (f0 .. f(n-1)). */
 FOVSDF__PRIV uint32_t fovsdf__node_nf(uint32_t t)
 {
-    static const uint8_t nf[_FOVSDF_NODE_NUM] = { 0, 1, 3, 4, 4, 2, 7, 2, 3, 4, 1, 1, 3, 0, 0, 0, 1, 1, 1, 3, 9, 1, 3,
-                                                  0, 1, 1 };
+    static const uint8_t nf[_FOVSDF_NODE_NUM] = { 0, 1, 3, 4, 4, 2, 7, 2, 3, 4, 1, 1, 3, 0, 0, 0, 1,
+                                                  1, 1, 3, 9, 1, 3, 0, 1, 1 };
     return t < (uint32_t)_FOVSDF_NODE_NUM ? nf[t] : 0u;
 }
 
@@ -1910,8 +1924,8 @@ FOVSDF__PRIV uint32_t fovsdf__node_nf(uint32_t t)
 /* Validates node n (the node at index `index`): its type, its children (indices in
    [0, limit)) and every parameter it reads, with the ranges the builder functions document.
    The first failure is logged (with the node, the field and the allowed range) and returned. */
-FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index, uint32_t limit, const fov_logger *lg,
-                                           const char *who)
+FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index, uint32_t limit,
+                                           const fov_logger *lg, const char *who)
 {
     const float *f = n->f;
     uint32_t t = n->type, nf, k;
@@ -1927,8 +1941,8 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
     /* lengths: everything but the plane normal, the rotation matrix, the bulb's power and the
        terrain's distance scale */
     for (k = 0; k < nf; ++k) {
-        if ((t == FOVSDF_NODE_PLANE && k < 3u) || t == FOVSDF_NODE_ROTATE || t == FOVSDF_NODE_MANDELBULB ||
-            (t == FOVSDF_NODE_TERRAIN && k == 2u))
+        if ((t == FOVSDF_NODE_PLANE && k < 3u) || t == FOVSDF_NODE_ROTATE ||
+            t == FOVSDF_NODE_MANDELBULB || (t == FOVSDF_NODE_TERRAIN && k == 2u))
             continue;
         FOVSDF__NCK(fov__absf(f[k]) <= FOVSDF__MAX_LEN, FOV_ERR_LIMIT, (int)k,
                     "beyond 1e18 in magnitude (the float envelope of scene lengths)");
@@ -1983,7 +1997,8 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
         uint32_t i, j;
         for (i = 0; i < 3u; ++i)
             for (j = 0; j < 3u; ++j) {
-                float d = f[3u * i] * f[3u * j] + f[3u * i + 1u] * f[3u * j + 1u] + f[3u * i + 2u] * f[3u * j + 2u];
+                float d = f[3u * i] * f[3u * j] + f[3u * i + 1u] * f[3u * j + 1u] +
+                          f[3u * i + 2u] * f[3u * j + 2u];
                 FOVSDF__NCK(fov__absf(d - (i == j ? 1.0f : 0.0f)) <= 1e-3f, FOV_ERR_INVALID_ARG, -1,
                             "f0..f8 must be a rotation matrix (rows orthonormal within 1e-3)");
             }
@@ -2105,7 +2120,8 @@ FOVSDF_API int32_t fovsdf_plane(fovsdf_builder *b, float nx, float ny, float nz,
 {
     float f[4];
     f[0] = nx; f[1] = ny; f[2] = nz; f[3] = offset;
-    (void)fovsdf__normalize(f); /* any finite non-zero normal (1e-30 or 1e30 long too); zero stays zero */
+    /* any finite non-zero normal (1e-30 or 1e30 long too); zero stays zero */
+    (void)fovsdf__normalize(f);
     return fovsdf__add(b, FOVSDF_NODE_PLANE, -1, -1, f, 4, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_menger(fovsdf_builder *b, float half_size, int32_t iterations)
@@ -2116,7 +2132,8 @@ FOVSDF_API int32_t fovsdf_mandelbulb(fovsdf_builder *b, float power, int32_t ite
 {
     return fovsdf__add(b, FOVSDF_NODE_MANDELBULB, -1, -1, &power, 1, &iterations, 1);
 }
-FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float frequency, int32_t octaves)
+FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float frequency,
+                                  int32_t octaves)
 {
     float f[3], g = 0.0f, w = 1.0f;
     int32_t o, no = octaves < 1 ? 1 : (octaves > 12 ? 12 : octaves);
@@ -2130,23 +2147,43 @@ FOVSDF_API int32_t fovsdf_terrain(fovsdf_builder *b, float amplitude, float freq
     if (!fov__finite(f[2])) f[2] = 0.0f; /* NaN inputs: node_check reports them first */
     return fovsdf__add(b, FOVSDF_NODE_TERRAIN, -1, -1, f, 3, &octaves, 1);
 }
-FOVSDF__PRIV int32_t fovsdf__binop(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y, float k, int smooth)
+FOVSDF__PRIV int32_t fovsdf__binop(fovsdf_builder *b, uint32_t type, int32_t x, int32_t y, float k,
+                                   int smooth)
 {
     return fovsdf__add(b, type, x, y, &k, smooth ? 1u : 0u, 0, 0);
 }
-FOVSDF_API int32_t fovsdf_union(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_UNION, x, y, 0.0f, 0); }
-FOVSDF_API int32_t fovsdf_subtract(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_SUBTRACT, x, y, 0.0f, 0); }
-FOVSDF_API int32_t fovsdf_intersect(fovsdf_builder *b, int32_t x, int32_t y) { return fovsdf__binop(b, FOVSDF_NODE_INTERSECT, x, y, 0.0f, 0); }
-FOVSDF_API int32_t fovsdf_smooth_union(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_UNION, x, y, k, 1); }
-FOVSDF_API int32_t fovsdf_smooth_subtract(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_SUBTRACT, x, y, k, 1); }
-FOVSDF_API int32_t fovsdf_smooth_intersect(fovsdf_builder *b, int32_t x, int32_t y, float k) { return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_INTERSECT, x, y, k, 1); }
+FOVSDF_API int32_t fovsdf_union(fovsdf_builder *b, int32_t x, int32_t y)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_UNION, x, y, 0.0f, 0);
+}
+FOVSDF_API int32_t fovsdf_subtract(fovsdf_builder *b, int32_t x, int32_t y)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_SUBTRACT, x, y, 0.0f, 0);
+}
+FOVSDF_API int32_t fovsdf_intersect(fovsdf_builder *b, int32_t x, int32_t y)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_INTERSECT, x, y, 0.0f, 0);
+}
+FOVSDF_API int32_t fovsdf_smooth_union(fovsdf_builder *b, int32_t x, int32_t y, float k)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_UNION, x, y, k, 1);
+}
+FOVSDF_API int32_t fovsdf_smooth_subtract(fovsdf_builder *b, int32_t x, int32_t y, float k)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_SUBTRACT, x, y, k, 1);
+}
+FOVSDF_API int32_t fovsdf_smooth_intersect(fovsdf_builder *b, int32_t x, int32_t y, float k)
+{
+    return fovsdf__binop(b, FOVSDF_NODE_SMOOTH_INTERSECT, x, y, k, 1);
+}
 FOVSDF_API int32_t fovsdf_translate(fovsdf_builder *b, int32_t x, float tx, float ty, float tz)
 {
     float f[3];
     f[0] = tx; f[1] = ty; f[2] = tz;
     return fovsdf__add(b, FOVSDF_NODE_TRANSLATE, x, -1, f, 3, 0, 0);
 }
-FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float ay, float az, float angle_deg)
+FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float ay, float az,
+                                 float angle_deg)
 {
     float a[3], f[9], c, s, t;
     a[0] = ax; a[1] = ay; a[2] = az;
@@ -2157,9 +2194,12 @@ FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float a
     s = FOV__SIN(angle_deg * FOV__DEG);
     t = 1.0f - c;
     /* Rodrigues: rotation matrix R (object -> world), row-major */
-    f[0] = c + a[0] * a[0] * t;        f[1] = a[0] * a[1] * t - a[2] * s; f[2] = a[0] * a[2] * t + a[1] * s;
-    f[3] = a[1] * a[0] * t + a[2] * s; f[4] = c + a[1] * a[1] * t;        f[5] = a[1] * a[2] * t - a[0] * s;
-    f[6] = a[2] * a[0] * t - a[1] * s; f[7] = a[2] * a[1] * t + a[0] * s; f[8] = c + a[2] * a[2] * t;
+    f[0] = c + a[0] * a[0] * t;        f[1] = a[0] * a[1] * t - a[2] * s;
+    f[2] = a[0] * a[2] * t + a[1] * s;
+    f[3] = a[1] * a[0] * t + a[2] * s; f[4] = c + a[1] * a[1] * t;
+    f[5] = a[1] * a[2] * t - a[0] * s;
+    f[6] = a[2] * a[0] * t - a[1] * s; f[7] = a[2] * a[1] * t + a[0] * s;
+    f[8] = c + a[2] * a[2] * t;
     return fovsdf__add(b, FOVSDF_NODE_ROTATE, x, -1, f, 9, 0, 0);
 }
 FOVSDF_API int32_t fovsdf_scale(fovsdf_builder *b, int32_t x, float s)
@@ -2230,10 +2270,13 @@ FOVSDF__PRIV void fovsdf__prim_bound(const fovsdf_node *n, fovsdf__bsph *o)
     o->c[0] = o->c[1] = o->c[2] = 0.0f;
     switch (n->type) {
     case FOVSDF_NODE_SPHERE: o->r = f[0]; break;
-    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: case FOVSDF_NODE_BOX_FRAME: o->r = fovsdf__len3f(f[0], f[1], f[2]); break;
+    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: case FOVSDF_NODE_BOX_FRAME:
+        o->r = fovsdf__len3f(f[0], f[1], f[2]);
+        break;
     case FOVSDF_NODE_TORUS: o->r = f[0] + f[1]; break;
     case FOVSDF_NODE_CAPSULE:
-        o->c[0] = 0.5f * (f[0] + f[3]); o->c[1] = 0.5f * (f[1] + f[4]); o->c[2] = 0.5f * (f[2] + f[5]);
+        o->c[0] = 0.5f * (f[0] + f[3]); o->c[1] = 0.5f * (f[1] + f[4]);
+        o->c[2] = 0.5f * (f[2] + f[5]);
         o->r = 0.5f * fovsdf__len3f(f[3] - f[0], f[4] - f[1], f[5] - f[2]) + f[6];
         break;
     case FOVSDF_NODE_CYLINDER: o->r = fovsdf__len2f(f[0], f[1]); break;
@@ -2251,8 +2294,14 @@ FOVSDF__PRIV void fovsdf__merge_bound(const fovsdf__bsph *a, const fovsdf__bsph 
     if (a->r < 0.0f || b->r < 0.0f) { o->r = -1.0f; return; }
     d[0] = b->c[0] - a->c[0]; d[1] = b->c[1] - a->c[1]; d[2] = b->c[2] - a->c[2];
     l = fov__len(d);
-    if (l + b->r <= a->r) { o->c[0] = a->c[0]; o->c[1] = a->c[1]; o->c[2] = a->c[2]; o->r = a->r; return; }
-    if (l + a->r <= b->r) { o->c[0] = b->c[0]; o->c[1] = b->c[1]; o->c[2] = b->c[2]; o->r = b->r; return; }
+    if (l + b->r <= a->r) {
+        o->c[0] = a->c[0]; o->c[1] = a->c[1]; o->c[2] = a->c[2]; o->r = a->r;
+        return;
+    }
+    if (l + a->r <= b->r) {
+        o->c[0] = b->c[0]; o->c[1] = b->c[1]; o->c[2] = b->c[2]; o->r = b->r;
+        return;
+    }
     r = 0.5f * (l + a->r + b->r);
     o->c[0] = a->c[0] + d[0] * ((r - a->r) / l);
     o->c[1] = a->c[1] + d[1] * ((r - a->r) / l);
@@ -2269,7 +2318,10 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
     uint32_t count = (a ? a->count : 0) + (b ? b->count : 0);
     switch (n->type) {
     case FOVSDF_NODE_UNION: fovsdf__merge_bound(a, b, o); break;
-    case FOVSDF_NODE_SMOOTH_UNION: fovsdf__merge_bound(a, b, o); if (o->r >= 0.0f) o->r += 0.25f * f[0]; break;
+    case FOVSDF_NODE_SMOOTH_UNION:
+        fovsdf__merge_bound(a, b, o);
+        if (o->r >= 0.0f) o->r += 0.25f * f[0];
+        break;
     case FOVSDF_NODE_SUBTRACT: *o = *a; break;
     case FOVSDF_NODE_SMOOTH_SUBTRACT: *o = *a; if (o->r >= 0.0f) o->r += 0.25f * f[0]; break;
     case FOVSDF_NODE_INTERSECT: case FOVSDF_NODE_SMOOTH_INTERSECT:
@@ -2284,7 +2336,10 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
         o->c[2] = f[6] * a->c[0] + f[7] * a->c[1] + f[8] * a->c[2];
         o->r = a->r < 0.0f ? -1.0f : a->r * 1.0001f;
         break;
-    case FOVSDF_NODE_SCALE: *o = *a; o->c[0] *= f[0]; o->c[1] *= f[0]; o->c[2] *= f[0]; if (o->r >= 0.0f) o->r *= f[0]; break;
+    case FOVSDF_NODE_SCALE:
+        *o = *a; o->c[0] *= f[0]; o->c[1] *= f[0]; o->c[2] *= f[0];
+        if (o->r >= 0.0f) o->r *= f[0];
+        break;
     case FOVSDF_NODE_REPEAT: {
         int k;
         float ext = 0.0f;
@@ -2314,7 +2369,10 @@ FOVSDF__PRIV void fovsdf__node_bound(const fovsdf_node *n, fovsdf__bsph *bs, fov
     if (n->type == FOVSDF_NODE_MANDELBULB) prims = 2u + (uint32_t)n->i[0] / 2u;
     if (n->type == FOVSDF_NODE_TERRAIN) prims = 1u + (uint32_t)n->i[0];
     /* extents beyond float (1e6 copies of a 1e18 period): unbounded, never a NaN centre */
-    if (!fov__finite(o->r) || !fov__finite3(o->c)) { o->r = -1.0f; o->c[0] = o->c[1] = o->c[2] = 0.0f; }
+    if (!fov__finite(o->r) || !fov__finite3(o->c)) {
+        o->r = -1.0f;
+        o->c[0] = o->c[1] = o->c[2] = 0.0f;
+    }
     o->prims = prims > 0xffffffu ? 0xffffffu : prims;
     o->count = count > 0xffffffu ? 0xffffffu : count;
     o->done = 2;
@@ -2333,8 +2391,8 @@ typedef struct fovsdf__frame {
 /* Bounds of every node reachable from root, post-order with an explicit stack of up to
    `count` entries in program memory (each node is on it at most once); a child that is still
    in progress closes a cycle: FOV_ERR_INVALID_ARG. */
-FOVSDF__PRIV fov_result fovsdf__bounds(const fovsdf_node *nodes, uint32_t count, int32_t root, fovsdf__bsph *bs,
-                                       int32_t *stk, uint8_t *stage)
+FOVSDF__PRIV fov_result fovsdf__bounds(const fovsdf_node *nodes, uint32_t count, int32_t root,
+                                       fovsdf__bsph *bs, int32_t *stk, uint8_t *stage)
 {
     uint32_t k, sp;
     for (k = 0; k < count; ++k) { bs[k].done = 0; stage[k] = 0; }
@@ -2367,8 +2425,9 @@ FOVSDF__PRIV fov_result fovsdf__bounds(const fovsdf_node *nodes, uint32_t count,
    hierarchy: unbounded operands (planes, terrain, infinite repetition) stay at the top, the
    bounded ones are split recursively at the median of their centres along the widest axis.
    The cluster's root node keeps its index; new union nodes are appended after *n. */
-FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t cap, const fovsdf__bsph *bs,
-                                          int32_t *leaves, uint32_t leaf_cap, uint8_t *is_child, int32_t *stk,
+FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t cap,
+                                          const fovsdf__bsph *bs, int32_t *leaves,
+                                          uint32_t leaf_cap, uint8_t *is_child, int32_t *stk,
                                           uint32_t stk_cap)
 {
     uint32_t count = *n, u, k;
@@ -2428,7 +2487,8 @@ FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t
                 for (g = (hi - lo) / 2; g > 0; g /= 2) /* shell sort by centre along ax */
                     for (i = (uint32_t)(lo + g); i < (uint32_t)hi; ++i) {
                         int32_t t = leaves[i];
-                        for (j = i; j >= (uint32_t)(lo + g) && bs[leaves[j - (uint32_t)g]].c[ax] > bs[t].c[ax]; j -= (uint32_t)g)
+                        for (j = i; j >= (uint32_t)(lo + g) &&
+                             bs[leaves[j - (uint32_t)g]].c[ax] > bs[t].c[ax]; j -= (uint32_t)g)
                             leaves[j] = leaves[j - (uint32_t)g];
                         leaves[j] = t;
                     }
@@ -2462,8 +2522,8 @@ FOVSDF__PRIV fov_result fovsdf__rebalance(fovsdf_node *nd, uint32_t *n, uint32_t
 }
 
 /* Emit the postfix code for the tree under root (bounds in bs). code == NULL counts only. */
-FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root, const fovsdf__bsph *bs,
-                                        fovsdf__ins *code, uint32_t *n_out)
+FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root,
+                                        const fovsdf__bsph *bs, fovsdf__ins *code, uint32_t *n_out)
 {
     fovsdf__frame st[FOVSDF__MAX_DEPTH];
     int32_t sp = 0;
@@ -2480,7 +2540,8 @@ FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root, 
         if (fr->stage == 0) {
             /* a bound pays off around subtrees of two or more primitives that are clearly
                smaller than the enclosing bound */
-            if (b->r >= 0.0f && b->prims >= 2u && (!fr->parent_r_valid || fr->parent_r > 1.2f * b->r)) {
+            if (b->r >= 0.0f && b->prims >= 2u &&
+                (!fr->parent_r_valid || fr->parent_r > 1.2f * b->r)) {
                 if (code) {
                     fovsdf__ins *in = &code[n];
                     FOV_MEMSET(in, 0, sizeof *in);
@@ -2534,10 +2595,12 @@ FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root, 
             if (nd->type == FOVSDF_NODE_SCALE) { pv = 0; band /= nd->f[0]; }
             /* operators that move the surface outwards or blend operands: a skipped subtree's
                lower bound minus this band must stay above the hit threshold */
-            if (nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION || nd->type == FOVSDF_NODE_SMOOTH_UNION ||
-                nd->type == FOVSDF_NODE_SMOOTH_SUBTRACT || nd->type == FOVSDF_NODE_SMOOTH_INTERSECT)
+            if (nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION ||
+                nd->type == FOVSDF_NODE_SMOOTH_UNION || nd->type == FOVSDF_NODE_SMOOTH_SUBTRACT ||
+                nd->type == FOVSDF_NODE_SMOOTH_INTERSECT)
                 band += nd->f[0];
-            if (fr->stage == 2 && (nd->type == FOVSDF_NODE_SUBTRACT || nd->type == FOVSDF_NODE_SMOOTH_SUBTRACT))
+            if (fr->stage == 2 &&
+                (nd->type == FOVSDF_NODE_SUBTRACT || nd->type == FOVSDF_NODE_SMOOTH_SUBTRACT))
                 fl ^= FOVSDF__FLAG_DEFLATE; /* holes shrink when solids grow */
             fr->stage++;
             if (sp >= FOVSDF__MAX_DEPTH) return FOV_ERR_LIMIT;
@@ -2553,7 +2616,8 @@ FOVSDF__PRIV fov_result fovsdf__compile(const fovsdf_node *nodes, int32_t root, 
                 fovsdf__ins *in = &code[n];
                 FOV_MEMSET(in, 0, sizeof *in);
                 if (ar == 2) in->op = FOVSDF__OP_BIN;
-                else if (nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION) in->op = FOVSDF__OP_UNARY;
+                else if (nd->type == FOVSDF_NODE_ROUND || nd->type == FOVSDF_NODE_ONION)
+                    in->op = FOVSDF__OP_UNARY;
                 else in->op = FOVSDF__OP_POPP;
                 in->sub = (uint16_t)nd->type;
                 in->f[0] = nd->f[0];
@@ -2587,7 +2651,8 @@ FOVSDF_API fov_result fovsdf_program_size(const fovsdf_node *nodes, uint32_t cou
     n2 = 2u * (size_t)count;
     *bytes = 16u + fov__align(sizeof(fovsdf__bsph) * n2) + fov__align(sizeof(fovsdf_node) * n2) +
              fov__align(sizeof(int32_t) * (size_t)count) + fov__align((size_t)count) +
-             fov__align(sizeof(int32_t) * n2) + fov__align(n2) + fov__align(sizeof(fovsdf__ins) * n2 * 3u);
+             fov__align(sizeof(int32_t) * n2) + fov__align(n2) +
+             fov__align(sizeof(fovsdf__ins) * n2 * 3u);
     return FOV_OK;
 }
 
@@ -2629,8 +2694,8 @@ FOVSDF_API fov_result fovsdf_program_check(const fovsdf_node *nodes, uint32_t co
     return FOV_OK;
 }
 
-FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes, uint32_t count,
-                                           int32_t root, void *mem, size_t bytes)
+FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_node *nodes,
+                                           uint32_t count, int32_t root, void *mem, size_t bytes)
 {
     size_t need, n2;
     uint32_t n = 0, k, prims = 0, bounds = 0, nn = count;
@@ -2665,7 +2730,8 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
     code = (fovsdf__ins *)(void *)base;
     for (k = 0; k < count; ++k) {
         nd[k] = nodes[k];
-        if (nd[k].type == FOVSDF_NODE_PLANE) { /* a hand-made normal of any non-zero length, as the builder's */
+        /* a hand-made normal of any non-zero length, as the builder's */
+        if (nd[k].type == FOVSDF_NODE_PLANE) {
             float l2 = fov__dot(nd[k].f, nd[k].f);
             if (!(l2 > 0.999999f && l2 < 1.000001f)) (void)fovsdf__normalize(nd[k].f);
         }
@@ -2732,7 +2798,8 @@ FOVSDF__PRIV float fovsdf__sd_cone(const float p[3], const float *f)
     float qx = fovsdf__len2f(p[0], p[2]), qy = p[1];
     float k2x = r2 - r1, k2y = 2.0f * h;
     float cax = qx - fov__minf(qx, qy < 0.0f ? r1 : r2), cay = fov__absf(qy) - h;
-    float tt = fovsdf__clampf(((r2 - qx) * k2x + (h - qy) * k2y) / (k2x * k2x + k2y * k2y), 0.0f, 1.0f);
+    float tt =
+        fovsdf__clampf(((r2 - qx) * k2x + (h - qy) * k2y) / (k2x * k2x + k2y * k2y), 0.0f, 1.0f);
     float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
     float s = (cbx < 0.0f && cay < 0.0f) ? -1.0f : 1.0f;
     return s * FOV__SQRT(fov__minf(cax * cax + cay * cay, cbx * cbx + cby * cby));
@@ -2808,13 +2875,15 @@ FOVSDF__PRIV float fovsdf__prim(const fovsdf__ins *in, const float p[3])
     switch (in->sub) {
     case FOVSDF_NODE_SPHERE: return fov__len(p) - f[0];
     case FOVSDF_NODE_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0], f[1], f[2]);
-    case FOVSDF_NODE_ROUND_BOX: return fovsdf__sd_box(p[0], p[1], p[2], f[0] - f[3], f[1] - f[3], f[2] - f[3]) - f[3];
+    case FOVSDF_NODE_ROUND_BOX:
+        return fovsdf__sd_box(p[0], p[1], p[2], f[0] - f[3], f[1] - f[3], f[2] - f[3]) - f[3];
     case FOVSDF_NODE_BOX_FRAME: return fovsdf__sd_box_frame(p, f);
     case FOVSDF_NODE_TORUS: return fovsdf__len2f(fovsdf__len2f(p[0], p[2]) - f[0], p[1]) - f[1];
     case FOVSDF_NODE_CAPSULE: return fovsdf__sd_capsule(p, f);
     case FOVSDF_NODE_CYLINDER: {
         float dx = fovsdf__len2f(p[0], p[2]) - f[1], dy = fov__absf(p[1]) - f[0];
-        return fov__minf(fov__maxf(dx, dy), 0.0f) + fovsdf__len2f(fov__maxf(dx, 0.0f), fov__maxf(dy, 0.0f));
+        return fov__minf(fov__maxf(dx, dy), 0.0f) +
+            fovsdf__len2f(fov__maxf(dx, 0.0f), fov__maxf(dy, 0.0f));
     }
     case FOVSDF_NODE_CONE: return fovsdf__sd_cone(p, f);
     case FOVSDF_NODE_PLANE: return fov__dot(p, f) + f[3];
@@ -2852,14 +2921,16 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         switch (in->op) {
         case FOVSDF__OP_PRIM: {
             float d;
-            if (inflate < 1.0f || inflate > 1.0f) { /* Skipping Spheres: Scale(p) = f(p / s) * s about the primitive's origin */
+            /* Skipping Spheres: Scale(p) = f(p / s) * s about the primitive's origin */
+            if (inflate < 1.0f || inflate > 1.0f) {
                 float s = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate, qp[3];
                 qp[0] = p[0] / s; qp[1] = p[1] / s; qp[2] = p[2] / s;
                 d = fovsdf__prim(in, qp) * s;
             } else {
                 d = fovsdf__prim(in, p);
             }
-            if (fov__isnan(d)) d = FLT_MAX; /* last resort (no finite point reaches it in the envelope) */
+            /* last resort (no finite point reaches it in the envelope) */
+            if (fov__isnan(d)) d = FLT_MAX;
             vs[vsp] = d;
             ms[vsp] = in->material;
             ++vsp;
@@ -2921,7 +2992,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
                 for (k = 0; k < 3; ++k) {
                     if (f[k] > 0.0f) {
                         float c = FOV__FLOOR(p[k] / f[k] + 0.5f);
-                        if (!fov__finite(c)) c = 0.0f; /* |p| / period beyond float: no fold, never inf - inf */
+                        /* |p| / period beyond float: no fold, never inf - inf */
+                        if (!fov__finite(c)) c = 0.0f;
                         if (in->i[k] > 0) c = fovsdf__clampf(c, -(float)in->i[k], (float)in->i[k]);
                         p[k] -= f[k] * c;
                     }
@@ -2942,7 +3014,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             break;
         default: { /* BOUND */
             const float *f = in->f;
-            float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2], d2 = dx * dx + dy * dy + dz * dz;
+            float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
+                d2 = dx * dx + dy * dy + dz * dz;
             float lim = 1.25f * f[3] + f[4] + 4.0f * eps; /* margin r/4 + band + 4 eps */
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
@@ -2965,7 +3038,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         q->material = vsp > 0 ? ms[0] : -1;
     }
     /* finite always: +-inf (a point whose distance is beyond float) becomes +-FLT_MAX */
-    return vsp > 0 ? (fov__isnan(vs[0]) ? FLT_MAX : fovsdf__clampf(vs[0], -FLT_MAX, FLT_MAX)) : FLT_MAX;
+    return vsp > 0 ? (fov__isnan(vs[0]) ? FLT_MAX : fovsdf__clampf(vs[0], -FLT_MAX, FLT_MAX))
+        : FLT_MAX;
 }
 
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
@@ -2984,13 +3058,14 @@ typedef struct fovsdf__marcher {
 
 /* One counted evaluation. A non-finite value from a user callback becomes FLT_MAX, which ends
    the ray as a miss instead of spreading NaN. */
-FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const float p[3], float eps, float inflate,
-                                   int32_t *mat, fovsdf_stats *st)
+FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const float p[3],
+                                   float eps, float inflate, int32_t *mat, fovsdf_stats *st)
 {
     float d;
     if (sc->dist_ex) {
         fovsdf_query q;
-        q.inflate = inflate; q.eps = eps; q.want_material = 1; q.material = 0; q.prims = 0; q.prims_skipped = 0;
+        q.inflate = inflate; q.eps = eps; q.want_material = 1; q.material = 0; q.prims = 0;
+        q.prims_skipped = 0;
         d = sc->dist_ex(p, &q, sc->user);
         if (mat) *mat = q.material;
         if (st) { st->prims += q.prims; st->prims_skipped += q.prims_skipped; }
@@ -3002,8 +3077,8 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
     d *= inv_lip;
     return fov__finite(d) ? d : FLT_MAX;
 }
-FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const float p[3], float eps, int32_t *mat,
-                                   fovsdf_stats *st)
+FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const float p[3],
+                                   float eps, int32_t *mat, fovsdf_stats *st)
 {
     return fovsdf__eval_in(sc, inv_lip, p, eps, 1.0f, mat, st);
 }
@@ -3026,22 +3101,23 @@ FOVSDF__PRIV float fovsdf__thr(const fovsdf__marcher *m, float t)
 }
 
 /* The refinement's margin at t: 1 % of the threshold plus 4 ulps of |camera| + t (the float
-   noise of a position); see the hit refinement in fovsdf__march. */
+   noise of a position); see the hit refinement, fovsdf__refine. */
 FOVSDF__PRIV float fovsdf__mg(const fovsdf__marcher *m, float t)
 {
     return 0.01f * fovsdf__thr(m, t) + 0.5f * (m->ulp0 + m->ulp1 * t);
 }
 
 /* Empty-ball certificate of a forward secant move from a hit at t (distance d > 0) to t2 >
-   t + d (see the hit refinement in fovsdf__march): a ball around c = F + H n, F = p(t2), n the
+   t + d (see the hit refinement, fovsdf__refine): a ball around c = F + H n, F = p(t2), n the
    outward normal at F, H the radius of the ball tangent at F through A = p(t + d), is empty
    when its radius is at most f(c) (Lipschitz 1); when A and F lie within f(c) + mg of c (less
    the test's rounding), so does the segment between them (convexity), and no point of it is
    inside by more than mg. Returns 1 and the refined hit in *tr, *dr (and *mat) then; 0 with
    nothing changed otherwise. 4 evaluations: F, two forward differences, c (1 when F is
    already no better than the plain refinement would be). */
-FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], const float rd[3], float t, float d,
-                                   float sl, float t2, float mg, float *tr, float *dr, int32_t *mat, fovsdf_stats *st)
+FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                   float t, float d, float sl, float t2, float mg, float *tr,
+                                   float *dr, int32_t *mat, fovsdf_stats *st)
 {
     float a[3], f[3], c[3], n[3], q[3], fb, fc, e, s, ha, h2, hr, r, u;
     int32_t m2 = 0;
@@ -3064,8 +3140,9 @@ FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], 
     e = fov__maxf(fovsdf__thr(m, t2), FOV__SQRT(u * (s * s / (2.0f * d))));
     {
         float ax[3] = { 0.0f, 0.0f, 0.0f }, b1[3], b2[3], g1, g2;
-        int k = fov__absf(rd[0]) <= fov__absf(rd[1]) ? (fov__absf(rd[0]) <= fov__absf(rd[2]) ? 0 : 2)
-                                                           : (fov__absf(rd[1]) <= fov__absf(rd[2]) ? 1 : 2);
+        int k = fov__absf(rd[0]) <= fov__absf(rd[1])
+                    ? (fov__absf(rd[0]) <= fov__absf(rd[2]) ? 0 : 2)
+                    : (fov__absf(rd[1]) <= fov__absf(rd[2]) ? 1 : 2);
         ax[k] = 1.0f;
         fov__cross(rd, ax, b1);
         if (!(fovsdf__normalize(b1) > 0.0f)) return 0;
@@ -3098,18 +3175,252 @@ FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], 
     return 1;
 }
 
-/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers).
-   Contract (every method): evaluations only at finite points with t <= t_max; a hit has a
-   finite t in [t0, t_max] (t0 after the head-start check); a refinement never moves a hit
-   past a point of the ray it has not verified (see the hit refinement below). */
-FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3], float t0,
-                                fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
+/* A tracer's result, the input of the hit refinement: the last sample (t, d), the one before
+   it (pt, pd; hp when there is one), the steps taken and the outcome (fovsdf_hit_kind). */
+typedef struct fovsdf__trace {
+    float t, d, pt, pd;
+    int hp;
+    uint32_t steps, kind;
+} fovsdf__trace;
+
+/* One counted evaluation at ro + t rd at SDF scale inflate. A point that overflows (a camera
+   near FLT_MAX) is never evaluated: FLT_MAX, a miss. */
+FOVSDF__PRIV float fovsdf__eval_ray(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                    float t, float inflate, int32_t *mat, fovsdf_stats *st)
 {
-    float t = t0, p[3], d, pt = t0, pd = 0.0f;
+    float p[3];
+    p[0] = ro[0] + rd[0] * t; p[1] = ro[1] + rd[1] * t; p[2] = ro[2] + rd[2] * t;
+    return fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, t), inflate,
+                                             mat, st)
+                           : FLT_MAX;
+}
+
+/* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
+FOVSDF__PRIV void fovsdf__trace_classic(const fovsdf__marcher *m, const float ro[3],
+                                        const float rd[3], float t0, int32_t *mat,
+                                        fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, d = 0.0f, pt = t0, pd = 0.0f;
     int hp = 0;
-    uint32_t steps = 0, ev0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    for (;;) {
+        if (t > m->t_max) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+        ++steps;
+        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        pt = t; pd = d; hp = 1;
+        t += d;
+    }
+    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
+   sphere at the new point does not overlap the previous one the step may have jumped a
+   surface: go back to the safe point tp + rp and continue with omega = 1. */
+FOVSDF__PRIV void fovsdf__trace_relaxed(const fovsdf__marcher *m, const float ro[3],
+                                        const float rd[3], float t0, int32_t *mat,
+                                        fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, d = 0.0f, pt = t0, pd = 0.0f, om = m->omega, tp = t0, rp = 0.0f;
+    int hp = 0, have = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    for (;;) {
+        if (t > m->t_max) break;
+        if (steps >= m->max_steps) { /* the last relaxed step is unverified: fall back */
+            kind = FOVSDF_EXHAUSTED;
+            if (have && t > tp + rp) { t = tp + rp; d = rp; }
+            break;
+        }
+        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+        ++steps;
+        if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
+        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        tp = t; rp = d; have = 1;
+        pt = t; pd = d; hp = 1;
+        /* an over-relaxed step may only leave the range after the overlap test has seen
+           its end point: stop it at t_max (a plain step past t_max is a safe miss) */
+        t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
+    }
+    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average, weight
+   beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the surface
+   predicted by the line; back-step to a plain step when the spheres at t and t + z do not
+   overlap. A step never ends past t_max; when a plain step would, the sphere at t already
+   proves the rest of the range empty: a miss. */
+FOVSDF__PRIV void fovsdf__trace_autorelaxed(const fovsdf__marcher *m, const float ro[3],
+                                            const float rd[3], float t0, int32_t *mat,
+                                            fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, pt = t0, pd = 0.0f, r, z, sl = -1.0f;
+    int hp = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+    ++steps;
+    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
+    z = r;
+    while (kind == FOVSDF_MISS) {
+        float T, R, M, om;
+        if (!(t + r <= m->t_max)) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        T = fov__minf(t + z, m->t_max);
+        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
+        ++steps;
+        /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
+        if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
+        M = (R - r) / fov__maxf(T - t, 1e-20f);
+        sl += m->beta * (M - sl);
+        pt = t; pd = r; hp = 1;
+        t = T; r = R;
+        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+        om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
+        z = r * fov__maxf(1.0f, om);
+    }
+    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* Balint & Valasek 2018: fit a line through the last two distance samples and step
+   d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when the
+   spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
+FOVSDF__PRIV void fovsdf__trace_bv2018(const fovsdf__marcher *m, const float ro[3],
+                                       const float rd[3], float t0, int32_t *mat,
+                                       fovsdf_stats *st, fovsdf__trace *o)
+{
+    float t = t0, pt = t0, pd = 0.0f, r, z, dp = 0.0f, rp = 0.0f;
+    int hp = 0, have = 0;
+    uint32_t steps = 0, kind = FOVSDF_MISS;
+    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
+    ++steps;
+    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
+    while (kind == FOVSDF_MISS) {
+        float T, R;
+        if (!(t + r <= m->t_max)) break;
+        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
+        z = r;
+        if (have) {
+            float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
+            z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
+        }
+        T = fov__minf(t + z, m->t_max);
+        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
+        ++steps;
+        if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
+        dp = T - t; rp = r; have = 1;
+        pt = t; pd = r; hp = 1;
+        t = T; r = R;
+        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
+    }
+    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
+}
+
+/* One refinement move of the hit (*t, *d) by dt, evaluated at the exact scene (inflate 1):
+   kept when t + dt is in [t0, t_max], lowers |d|, is not inside by more than the margin, and
+   passes no point the march has not verified: a backward move or one of at most d (inside
+   the last sample's sphere), or a forward one whose end sphere (radius d2) overlaps that
+   sphere, d + d2 + 2 mg >= dt. Returns 1 with *t, *d (and *mat) moved, else 0 with nothing
+   changed. One evaluation. */
+FOVSDF__PRIV int fovsdf__refine_move(const fovsdf__marcher *m, const float ro[3],
+                                     const float rd[3], float t0, float dt, float mg, float *t,
+                                     float *d, int32_t *mat, fovsdf_stats *st)
+{
+    float t2 = *t + dt, d2;
+    int32_t m2 = 0;
+    if (!(t2 <= m->t_max && t2 >= t0)) return 0;
+    d2 = fovsdf__eval_ray(m, ro, rd, t2, 1.0f, mat ? &m2 : 0, st);
+    if (!(fov__absf(d2) < fov__absf(*d) && d2 > -fovsdf__mg(m, t2) &&
+          (dt <= fov__maxf(*d, 0.0f) || dt <= *d + d2 + 2.0f * mg)))
+        return 0;
+    *t = t2; *d = d2;
+    if (mat) *mat = m2;
+    return 1;
+}
+
+/* Hit refinement (every tracer): the threshold stops a ray up to eps (or a fraction of a pixel
+   cone) short of the surface along the ray, which at grazing angles slides the hit point, and
+   every texture on it, by that fraction of a pixel. One secant step through the last two
+   samples is exact for planes; it is kept only when it lowers |d|, stays outside (up to
+   the margin mg below), stays in [t0, t_max] and never passes a point the march has not
+   verified: the loop's last sample proves [t, t + d] empty (its unbounding sphere), and a
+   move beyond t + d is kept only when
+   - the sphere at its end point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then
+     no point of the segment is inside by more than mg): roughly normal incidence, a
+     plane at |cos(incidence)| = c while d (1/c - 1) <= 2 mg; or else
+   - one empty ball off the ray holds the segment it jumps (fovsdf__ball_cert): with
+     A = p(t + d) and F = p(t + dt) the secant's end point, n the outward normal at F
+     (the secant's slope along the ray and two forward differences across it), the ball
+     around c = F + H n through A tangent to the plane at F (H = |A - F|^2 / (2 h_A),
+     h_A = (A - F) . n the height of A above that plane: for a plane the smallest such
+     ball) contains no surface point when its radius is at most f(c) (Lipschitz 1), so
+     when A and F both lie within f(c) + mg of c (less 4 ulps of H for the rounding of
+     the test), so does the whole segment (a ball is convex) and no point of it is
+     inside by more than mg. Refused when |f(F)| > d / 4 (the secant found no surface
+     there: a ray running along a curved surface keeps its hit where the threshold
+     stopped it, as a plain tracer would), when h_A <= 0, when 8 ulps of H exceed mg
+     (a plane below about 0.4 degrees with d near the threshold), or when anything is
+     not finite; a surface inside the ball (a thin wall before the plane, a concave corner)
+     makes f(c) smaller than H and refuses it. 4 evaluations (F, two differences, c),
+     tried up to 1024 |d| ahead.
+   Otherwise the hit moves by d, inside the sample's sphere (the plain step; the secant
+   step is clamped to 64 |d|). Backward moves (d < 0) stay within the part the loop
+   verified. A plane is then refined exactly from normal incidence down to about 0.4
+   degrees (the unverified secant before issue 10, clamped to 64 |d|, was exact down to
+   about 0.9 degrees, and jumped thin surfaces: a ray stopped 0.06 before a shell and the
+   secant put the hit 0.94 behind it); below that the hit stays up to thr (1/c - 1)
+   before the plane. Cost per hit: one evaluation, up to 5 when the ball is tried (a hit
+   at the first evaluation takes one more for the second sample: 6 at most). mg = 1 % of
+   the threshold plus the float noise of the position (4 ulps of |camera| + t), which
+   the shading offsets cover; it is also the
+   depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
+   a wall thinner than 2 mg is below what the refinement can see. */
+FOVSDF__PRIV void fovsdf__refine(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                 float t0, fovsdf__trace *o, int32_t *mat, fovsdf_stats *st)
+{
+    if (o->kind != FOVSDF_HIT) return;
+    if (!o->hp && o->d > 0.0f && fov__finite(o->d)) {
+        /* hit at the first evaluation (a head start next to the surface): one plain step
+           (inside the sample's sphere) gives the second sample the secant needs (kept only
+           when it gets closer) */
+        float t1 = o->t, d1 = o->d;
+        if (fovsdf__refine_move(m, ro, rd, t0, o->d, 0.0f, &o->t, &o->d, mat, st)) {
+            o->pt = t1; o->pd = d1; o->hp = 1;
+        }
+    }
+    if (o->hp && o->pt < o->t && o->pd > o->d) {
+        float t = o->t, d = o->d, slope = (d - o->pd) / (t - o->pt), dt = -d / slope;
+        float lim = 64.0f * fov__absf(d), mg = fovsdf__mg(m, t), tb = t, db = d;
+        int32_t mb = 0;
+        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
+           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
+           (within the sphere; one evaluation) */
+        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
+            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb,
+                              &db, mat ? &mb : 0, st)) {
+            o->t = tb; o->d = db;
+            if (mat) *mat = mb;
+            dt = 0.0f;
+        } else {
+            dt = fovsdf__clampf(dt, -lim, lim);
+            if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
+        }
+        if (!fov__is0(dt) && fov__finite(dt))
+            (void)fovsdf__refine_move(m, ro, rd, t0, dt, mg, &o->t, &o->d, mat, st);
+    }
+}
+
+/* March ro + t rd from t0 with the marcher's method (see the method enum for the papers):
+   one tracer, then the hit refinement. Contract (every method): evaluations only at finite
+   points with t <= t_max; a hit has a finite t in [t0, t_max] (t0 after the head-start
+   check); a refinement never moves a hit past a point of the ray it has not verified (see
+   fovsdf__refine). */
+FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3],
+                                float t0, fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
+{
+    uint32_t ev0;
     fovsdf_stats local;
     fovsdf__marcher mr;
+    fovsdf__trace o;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     ev0 = (uint32_t)st->evals;
     h->kind = FOVSDF_MISS;
@@ -3129,208 +3440,29 @@ FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], con
     if (m->verify_start && t0 > 0.0f) {
         /* a heuristic head start (IPR, SKIP) can lie past the surface, inside it: one
            evaluation tells, and such a ray starts over from the camera */
-        float q[3], d0;
-        q[0] = ro[0] + rd[0] * t0; q[1] = ro[1] + rd[1] * t0; q[2] = ro[2] + rd[2] * t0;
-        d0 = fov__finite3(q) ? fovsdf__eval_in(m->sc, m->inv_lip, q, fovsdf__thr(m, t0), m->inflate, 0, st) : FLT_MAX;
-        if (d0 < 0.0f) { t0 = 0.0f; t = 0.0f; }
+        if (fovsdf__eval_ray(m, ro, rd, t0, m->inflate, 0, st) < 0.0f) t0 = 0.0f;
     }
-    /* a point that overflows (a camera near FLT_MAX) is never evaluated: FLT_MAX, a miss */
-#define FOVSDF__AT(tt) (p[0] = ro[0] + rd[0] * (tt), p[1] = ro[1] + rd[1] * (tt), p[2] = ro[2] + rd[2] * (tt), \
-                        fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, tt), m->inflate, mat, st) \
-                                           : FLT_MAX)
-    if (m->method == FOVSDF_METHOD_RELAXED) {
-        /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
-           sphere at the new point does not overlap the previous one the step may have jumped a
-           surface: go back to the safe point tp + rp and continue with omega = 1. */
-        float om = m->omega, tp = t0, rp = 0.0f;
-        int have = 0;
-        d = 0.0f;
-        for (;;) {
-            if (t > m->t_max) break;
-            if (steps >= m->max_steps) { /* the last relaxed step is unverified: fall back */
-                h->kind = FOVSDF_EXHAUSTED;
-                if (have && t > tp + rp) { t = tp + rp; d = rp; }
-                break;
-            }
-            d = FOVSDF__AT(t);
-            ++steps;
-            if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
-            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            tp = t; rp = d; have = 1;
-            pt = t; pd = d; hp = 1;
-            /* an over-relaxed step may only leave the range after the overlap test has seen
-               its end point: stop it at t_max (a plain step past t_max is a safe miss) */
-            t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
-        }
-    } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
-        /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
-           weight beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the
-           surface predicted by the line; back-step to a plain step when the spheres at t and
-           t + z do not overlap. A step never ends past t_max; when a plain step would, the
-           sphere at t already proves the rest of the range empty: a miss. */
-        float r, z, sl = -1.0f;
-        r = FOVSDF__AT(t);
-        ++steps;
-        d = r;
-        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
-        z = r;
-        while (h->kind == FOVSDF_MISS) {
-            float T, R, M, om;
-            if (!(t + r <= m->t_max)) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            T = fov__minf(t + z, m->t_max);
-            R = FOVSDF__AT(T);
-            ++steps;
-            /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
-            if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
-            M = (R - r) / fov__maxf(T - t, 1e-20f);
-            sl += m->beta * (M - sl);
-            pt = t; pd = r; hp = 1;
-            t = T; r = R; d = r;
-            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
-            z = r * fov__maxf(1.0f, om);
-        }
-    } else if (m->method == FOVSDF_METHOD_BV2018) {
-        /* Balint & Valasek 2018: fit a line through the last two distance samples and step
-           d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when
-           the spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
-        float r, z, dp = 0.0f, rp = 0.0f;
-        int have = 0;
-        r = FOVSDF__AT(t);
-        ++steps;
-        d = r;
-        if (r < fovsdf__thr(m, t)) h->kind = FOVSDF_HIT;
-        while (h->kind == FOVSDF_MISS) {
-            float T, R;
-            if (!(t + r <= m->t_max)) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            z = r;
-            if (have) {
-                float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
-                z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
-            }
-            T = fov__minf(t + z, m->t_max);
-            R = FOVSDF__AT(T);
-            ++steps;
-            if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
-            dp = T - t; rp = r; have = 1;
-            pt = t; pd = r; hp = 1;
-            t = T; r = R; d = r;
-            if (r < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-        }
-    } else {
-        /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
-        d = 0.0f;
-        for (;;) {
-            if (t > m->t_max) break;
-            if (steps >= m->max_steps) { h->kind = FOVSDF_EXHAUSTED; break; }
-            d = FOVSDF__AT(t);
-            ++steps;
-            if (d < fovsdf__thr(m, t)) { h->kind = FOVSDF_HIT; break; }
-            pt = t; pd = d; hp = 1;
-            t += d;
-        }
-    }
-    /* Hit refinement: the threshold stops a ray up to eps (or a fraction of a pixel cone)
-       short of the surface along the ray, which at grazing angles slides the hit point, and
-       every texture on it, by that fraction of a pixel. One secant step through the last two
-       samples is exact for planes; it is kept only when it lowers |d|, stays outside (up to
-       the margin mg below), stays in [t0, t_max] and never passes a point the march has not
-       verified: the loop's last sample proves [t, t + d] empty (its unbounding sphere), and a
-       move beyond t + d is kept only when
-       - the sphere at its end point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then
-         no point of the segment is inside by more than mg): roughly normal incidence, a
-         plane at |cos(incidence)| = c while d (1/c - 1) <= 2 mg; or else
-       - one empty ball off the ray holds the segment it jumps (fovsdf__ball_cert): with
-         A = p(t + d) and F = p(t + dt) the secant's end point, n the outward normal at F
-         (the secant's slope along the ray and two forward differences across it), the ball
-         around c = F + H n through A tangent to the plane at F (H = |A - F|^2 / (2 h_A),
-         h_A = (A - F) . n the height of A above that plane: for a plane the smallest such
-         ball) contains no surface point when its radius is at most f(c) (Lipschitz 1), so
-         when A and F both lie within f(c) + mg of c (less 4 ulps of H for the rounding of
-         the test), so does the whole segment (a ball is convex) and no point of it is
-         inside by more than mg. Refused when |f(F)| > d / 4 (the secant found no surface
-         there: a ray running along a curved surface keeps its hit where the threshold
-         stopped it, as a plain tracer would), when h_A <= 0, when 8 ulps of H exceed mg
-         (a plane below about 0.4 degrees with d near the threshold), or when anything is
-         not finite; a surface inside the ball (a thin wall before the plane, a concave corner)
-         makes f(c) smaller than H and refuses it. 4 evaluations (F, two differences, c),
-         tried up to 1024 |d| ahead.
-       Otherwise the hit moves by d, inside the sample's sphere (the plain step; the secant
-       step is clamped to 64 |d|). Backward moves (d < 0) stay within the part the loop
-       verified. A plane is then refined exactly from normal incidence down to about 0.4
-       degrees (the unverified secant before issue 10, clamped to 64 |d|, was exact down to
-       about 0.9 degrees, and jumped thin surfaces: a ray stopped 0.06 before a shell and the
-       secant put the hit 0.94 behind it); below that the hit stays up to thr (1/c - 1)
-       before the plane. Cost per hit: one evaluation, up to 5 when the ball is tried (a hit
-       at the first evaluation takes one more for the second sample: 6 at most). mg = 1 % of
-       the threshold plus the float noise of the position (4 ulps of |camera| + t), which
-       the shading offsets cover; it is also the
-       depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
-       a wall thinner than 2 mg is below what the refinement can see. */
-#define FOVSDF__MG(tt) fovsdf__mg(m, tt)
-    if (h->kind == FOVSDF_HIT && !hp && d > 0.0f && fov__finite(d)) {
-        /* hit at the first evaluation (a head start next to the surface): one plain step
-           (inside the sample's sphere) gives the second sample the secant needs (kept only
-           when it gets closer) */
-        float t2 = t + d, d2;
-        int32_t m2 = 0;
-        if (t2 <= m->t_max) {
-            d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                  fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st) : FLT_MAX);
-            if (fov__absf(d2) < d && d2 > -FOVSDF__MG(t2)) {
-                pt = t; pd = d; hp = 1;
-                t = t2; d = d2;
-                if (mat) *mat = m2;
-            }
-        }
-    }
-    if (h->kind == FOVSDF_HIT && hp && pt < t && pd > d) {
-        float slope = (d - pd) / (t - pt), dt = -d / slope, lim = 64.0f * fov__absf(d), d2, mg = FOVSDF__MG(t);
-        float tb = t, db = d;
-        int32_t mb = 0;
-        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
-           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
-           (within the sphere; one evaluation) */
-        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
-            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb, &db, mat ? &mb : 0, st)) {
-            t = tb; d = db;
-            if (mat) *mat = mb;
-            dt = 0.0f;
-        } else {
-            dt = fovsdf__clampf(dt, -lim, lim);
-            if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
-        }
-        if (!fov__is0(dt) && fov__finite(dt)) {
-            float t2 = t + dt;
-            int32_t m2 = 0;
-            if (t2 <= m->t_max && t2 >= t0) {
-                d2 = (p[0] = ro[0] + rd[0] * t2, p[1] = ro[1] + rd[1] * t2, p[2] = ro[2] + rd[2] * t2,
-                      fov__finite3(p) ? fovsdf__eval_sc(m->sc, m->inv_lip, p, fovsdf__thr(m, t2), mat ? &m2 : 0, st)
-                                         : FLT_MAX);
-                if (fov__absf(d2) < fov__absf(d) && d2 > -FOVSDF__MG(t2) &&
-                    (dt <= fov__maxf(d, 0.0f) || dt <= d + d2 + 2.0f * mg)) {
-                    t = t2; d = d2;
-                    if (mat) *mat = m2;
-                }
-            }
-        }
-    }
-#undef FOVSDF__MG
-#undef FOVSDF__AT
-    h->t = h->kind == FOVSDF_MISS ? m->t_max : t;
-    h->dist = d;
-    h->steps = steps;
+    if (m->method == FOVSDF_METHOD_RELAXED) fovsdf__trace_relaxed(m, ro, rd, t0, mat, st, &o);
+    else if (m->method == FOVSDF_METHOD_AUTORELAXED)
+        fovsdf__trace_autorelaxed(m, ro, rd, t0, mat, st, &o);
+    else if (m->method == FOVSDF_METHOD_BV2018) fovsdf__trace_bv2018(m, ro, rd, t0, mat, st, &o);
+    else fovsdf__trace_classic(m, ro, rd, t0, mat, st, &o);
+    fovsdf__refine(m, ro, rd, t0, &o, mat, st);
+    h->kind = o.kind;
+    h->t = o.kind == FOVSDF_MISS ? m->t_max : o.t;
+    h->dist = o.d;
+    h->steps = o.steps;
     h->evals = (uint32_t)st->evals - ev0;
 }
 
-FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher *m, const float ro[3])
+FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher *m,
+                                           const float ro[3])
 {
     m->sc = &c->scene;
     m->inv_lip = 1.0f / c->scene.lipschitz;
     /* per-image methods (CONE) trace single rays with their finishing tracer */
-    m->method = c->cfg.method <= (uint32_t)FOVSDF_METHOD_BV2018 ? c->cfg.method : c->cfg.finish - 1u;
+    m->method =
+        c->cfg.method <= (uint32_t)FOVSDF_METHOD_BV2018 ? c->cfg.method : c->cfg.finish - 1u;
     m->max_steps = c->cfg.max_steps;
     m->eps = c->cfg.eps_mode == FOVSDF_EPS_CONE ? 0.0f : c->cfg.eps;
     m->eps_cone = c->cfg.eps_mode == FOVSDF_EPS_ABSOLUTE ? 0.0f : c->cfg.eps_px * c->pixel_angle;
@@ -3359,8 +3491,9 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
         !fov__finite(mp->eps_cone) || !fov__finite(mp->t_max) || !fov__finite(mp->omega) ||
         !fov__finite(mp->ar_beta) || !fov__finite(mp->bv_relax) || !fov__finite(scene->lipschitz))
         return FOV_ERR_NOT_FINITE;
-    if (mp->method > (uint32_t)FOVSDF_METHOD_BV2018 || mp->max_steps == 0 || mp->eps < 0.0f || mp->eps_cone < 0.0f ||
-        !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) || t_start < 0.0f || scene->lipschitz < 0.0f)
+    if (mp->method > (uint32_t)FOVSDF_METHOD_BV2018 || mp->max_steps == 0 || mp->eps < 0.0f ||
+        mp->eps_cone < 0.0f || !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) ||
+        t_start < 0.0f || scene->lipschitz < 0.0f)
         return FOV_ERR_INVALID_ARG;
     if (!fovsdf__coord_ok(ro)) return FOV_ERR_INVALID_ARG; /* beyond 1e18: float cannot resolve it (NUMERICS) */
     if (mp->max_steps > FOVSDF_MAX_STEPS) return FOV_ERR_LIMIT;
@@ -3390,17 +3523,20 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
 }
 
 /* ---- shading helpers ------------------------------------------------------------------------ */
-FOVSDF_API float fovsdf_distance(const fovsdf_ctx *c, const float p[3], int32_t *material, fovsdf_stats *st)
+FOVSDF_API float fovsdf_distance(const fovsdf_ctx *c, const float p[3], int32_t *material,
+                                 fovsdf_stats *st)
 {
     if (!c || !p) return FLT_MAX;
     return fovsdf__eval_sc(&c->scene, 1.0f / c->scene.lipschitz, p, c->cfg.eps, material, st);
 }
 
-FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, float n[3], fovsdf_stats *st)
+FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, float n[3],
+                              fovsdf_stats *st)
 {
     /* tetrahedron technique: n = sum_i k_i f(p + h k_i), k_i = (+-1, +-1, +-1) with an even
        number of minus signs; 4 evaluations. */
-    static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f }, { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
+    static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f },
+                                   { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
     fovsdf_stats local;
     int i;
     float inv, dv[4];
@@ -3431,8 +3567,9 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
 /* Algorithm 2 core; evaluates the scene scaled by inflate (Skipping Spheres' low-resolution
    shadow rays) and returns in *t_out where the penumbra began (the first t with k h / t < 1),
    or the distance reached when the light was never attenuated. */
-FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const float l[3], float t_start, float t_end,
-                                  float k, float inflate, float *t_out, fovsdf_stats *st)
+FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const float l[3],
+                                  float t_start, float t_end, float k, float inflate, float *t_out,
+                                  fovsdf_stats *st)
 {
     float res = 1.0f, t = t_start, inv, floor0, t_att = -1.0f;
     uint32_t i;
@@ -3455,8 +3592,8 @@ FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const f
     return fovsdf__clampf(res, 0.0f, 1.0f);
 }
 
-FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const float l[3], float t_start,
-                                    float t_end, float k, fovsdf_stats *st)
+FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const float l[3],
+                                    float t_start, float t_end, float k, fovsdf_stats *st)
 {
     /* Algorithm 2 of the thesis (Quilez's penumbra estimate): res = min(res, k h / t); full
        shadow as soon as res < eps (the algorithm's strict comparison); t_start is the head
@@ -3471,8 +3608,9 @@ FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const
 FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t mat, float rgb[3])
 {
     static const float pal[8][3] = {
-        { 0.80f, 0.80f, 0.80f }, { 0.0f, 0.0f, 0.0f }, { 0.85f, 0.30f, 0.25f }, { 0.30f, 0.55f, 0.85f },
-        { 0.90f, 0.75f, 0.30f }, { 0.35f, 0.75f, 0.40f }, { 0.70f, 0.45f, 0.80f }, { 0.92f, 0.90f, 0.85f }
+        { 0.80f, 0.80f, 0.80f }, { 0.0f, 0.0f, 0.0f }, { 0.85f, 0.30f, 0.25f },
+        { 0.30f, 0.55f, 0.85f }, { 0.90f, 0.75f, 0.30f }, { 0.35f, 0.75f, 0.40f },
+        { 0.70f, 0.45f, 0.80f }, { 0.92f, 0.90f, 0.85f }
     };
     if (c->scene.albedo) {
         int i;
@@ -3481,7 +3619,8 @@ FOVSDF__PRIV void fovsdf__albedo(const fovsdf_ctx *c, const float p[3], int32_t 
             if (!fov__finite(rgb[i])) rgb[i] = 0.0f; /* a user's NaN never reaches the image */
         return;
     }
-    if (mat == 1) { /* checkerboard on x/z, unit squares (the clamp maps NaN to -1e6: a defined int) */
+    /* checkerboard on x/z, unit squares (the clamp maps NaN to -1e6: a defined int) */
+    if (mat == 1) {
         int32_t ix = (int32_t)FOV__FLOOR(fovsdf__clampf(p[0], -1e6f, 1e6f));
         int32_t iz = (int32_t)FOV__FLOOR(fovsdf__clampf(p[2], -1e6f, 1e6f));
         float v = ((ix + iz) & 1) ? 0.85f : 0.30f;
@@ -3499,12 +3638,14 @@ FOVSDF_API void fovsdf_sky(const fovsdf_ctx *c, const float rd[3], float rgb[3])
     if (!c || !rd || !rgb) return;
     s = fovsdf__clampf(rd[1], 0.0f, 1.0f);
     for (i = 0; i < 3; ++i)
-        rgb[i] = fovsdf__clampf(c->scene.sky_horizon[i] + (c->scene.sky_zenith[i] - c->scene.sky_horizon[i]) * s, 0.0f,
+        rgb[i] = fovsdf__clampf(c->scene.sky_horizon[i] +
+                                (c->scene.sky_zenith[i] - c->scene.sky_horizon[i]) * s, 0.0f,
                                 FOVSDF__RGB_MAX);
 }
 
 /* Direction to light i from p (unit), its distance, attenuation; 0 when it cannot light p. */
-FOVSDF__PRIV int fovsdf__light_dir(const fovsdf_ctx *c, uint32_t i, const float p[3], float l[3], float *dist, float *att)
+FOVSDF__PRIV int fovsdf__light_dir(const fovsdf_ctx *c, uint32_t i, const float p[3], float l[3],
+                                   float *dist, float *att)
 {
     const fovsdf_light *L = &c->scene.lights[i];
     *att = 1.0f;
@@ -3524,8 +3665,9 @@ FOVSDF__PRIV int fovsdf__light_dir(const fovsdf_ctx *c, uint32_t i, const float 
     return 1;
 }
 
-FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const float n[3], int32_t material, float rgb[3],
-                                const float *sh_start, fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const float n[3],
+                                int32_t material, float rgb[3], const float *sh_start,
+                                fovsdf_stats *st)
 {
     float alb[3], acc[3], off;
     uint32_t i;
@@ -3548,11 +3690,12 @@ FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const flo
         acc[1] += L->color[1] * ndl * att * sh;
         acc[2] += L->color[2] * ndl * att * sh;
     }
-    for (i = 0; i < 3u; ++i) rgb[i] = fovsdf__clampf(alb[i] * acc[i], 0.0f, FOVSDF__RGB_MAX); /* NaN (0 * inf): 0 */
+    /* NaN (0 * inf): 0 */
+    for (i = 0; i < 3u; ++i) rgb[i] = fovsdf__clampf(alb[i] * acc[i], 0.0f, FOVSDF__RGB_MAX);
 }
 
-FOVSDF_API void fovsdf_shade(const fovsdf_ctx *c, const float p[3], const float n[3], const float rd[3],
-                             int32_t material, float rgb[3], fovsdf_stats *st)
+FOVSDF_API void fovsdf_shade(const fovsdf_ctx *c, const float p[3], const float n[3],
+                             const float rd[3], int32_t material, float rgb[3], fovsdf_stats *st)
 {
     fovsdf_stats local;
     if (!c || !p || !n || !rd || !rgb) return;
@@ -3575,7 +3718,8 @@ FOVSDF_API fovsdf_acuity fovsdf_acuity_default(void)
 FOVSDF_API float fovsdf_acuity_p(const fovsdf_acuity *a, float w)
 {
     float p;
-    if (!a || !fov__finite(w) || !fov__finite(a->A) || !fov__finite(a->rate) || !fov__finite(a->C)) return 0.0f;
+    if (!a || !fov__finite(w) || !fov__finite(a->A) || !fov__finite(a->rate) || !fov__finite(a->C))
+        return 0.0f;
     if (w <= a->fovea_deg) return 1.0f;
     if (a->outer_deg > 0.0f && w > a->outer_deg) return 0.0f;
     p = a->A * FOV__EXP(-a->rate * w) + a->C;
@@ -3701,7 +3845,8 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     ctx->t_max = c.t_max > 0.0f ? c.t_max : (scene->t_max > 0.0f ? scene->t_max : 100.0f);
     ctx->mem = mem;
     ctx->mem_size = mem_size;
-    ctx->cam_dist = fovsdf__eval_sc(&ctx->scene, 1.0f / ctx->scene.lipschitz, ctx->origin, c.eps, 0, 0);
+    ctx->cam_dist =
+        fovsdf__eval_sc(&ctx->scene, 1.0f / ctx->scene.lipschitz, ctx->origin, c.eps, 0, 0);
     return FOV_OK;
 }
 
@@ -3746,8 +3891,8 @@ FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py,
     return FOV_OK;
 }
 
-FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const float rd[3], float t_start,
-                                   fovsdf_hit *hit, fovsdf_stats *st)
+FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const float rd[3],
+                                   float t_start, fovsdf_hit *hit, fovsdf_stats *st)
 {
     fovsdf__marcher m;
     float l;
@@ -3766,7 +3911,8 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
 
 /* ---- rendering ------------------------------------------------------------------------------ */
 /* Sample offsets from the pixel centre (see the config's documentation). */
-static const float fovsdf__pat4[4][2] = { { -0.125f, -0.375f }, { 0.375f, -0.125f }, { 0.125f, 0.375f }, { -0.375f, 0.125f } };
+static const float fovsdf__pat4[4][2] =
+    { { -0.125f, -0.375f }, { 0.375f, -0.125f }, { 0.125f, 0.375f }, { -0.375f, 0.125f } };
 static const int fovsdf__rook_a[4] = { 1, 3, 0, 2 };
 static const int fovsdf__rook_b[4] = { 2, 0, 3, 1 };
 
@@ -3799,9 +3945,9 @@ FOVSDF__PRIV void fovsdf__heat(float evals, float rgb[3])
 }
 
 /* Writes one pixel's outputs. */
-FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x, uint32_t y, const float acc[3],
-                              float depth, uint8_t hit, uint32_t evals, float start, uint32_t steps, int32_t mat,
-                              uint8_t mask)
+FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x, uint32_t y,
+                              const float acc[3], float depth, uint8_t hit, uint32_t evals,
+                              float start, uint32_t steps, int32_t mat, uint8_t mask)
 {
     uint32_t w = c->cam.width - o->origin_x;
     x -= o->origin_x;
@@ -3813,7 +3959,8 @@ FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint3
         q[2] = fovsdf__clampf(acc[2], 0.0f, FOVSDF__RGB_MAX);
     }
     if (o->rgb8) {
-        uint8_t *q = o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * w) + 3u * (size_t)x;
+        uint8_t *q =
+            o->rgb8 + (size_t)y * (o->rgb8_stride ? o->rgb8_stride : 3u * w) + 3u * (size_t)x;
         int i;
         for (i = 0; i < 3; ++i) q[i] = (uint8_t)(fovsdf__srgb(acc[i]) * 255.0f + 0.5f);
     }
@@ -3822,7 +3969,8 @@ FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint3
     if (o->evals) o->evals[(size_t)y * (o->evals_stride ? o->evals_stride : w) + x] = evals;
     if (o->start) o->start[(size_t)y * (o->start_stride ? o->start_stride : w) + x] = start;
     if (o->steps) o->steps[(size_t)y * (o->steps_stride ? o->steps_stride : w) + x] = steps;
-    if (o->material) o->material[(size_t)y * (o->material_stride ? o->material_stride : w) + x] = mat;
+    if (o->material)
+        o->material[(size_t)y * (o->material_stride ? o->material_stride : w) + x] = mat;
     if (o->mask) o->mask[(size_t)y * (o->mask_stride ? o->mask_stride : w) + x] = mask;
 }
 
@@ -3831,8 +3979,9 @@ FOVSDF__PRIV void fovsdf__put(const fovsdf_ctx *c, const fovsdf_output *o, uint3
    within sh_tol of sh_ref_t (the low-resolution hit), else none (a different surface). */
 typedef struct fovsdf__smp { float col[3], t; int32_t mat; uint32_t steps; int hit; } fovsdf__smp;
 /* Colour of a marched ray (hit or miss) into col. */
-FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *m0, const float ro[3], const float rd[3],
-                                    const fovsdf_hit *h, int32_t mat, const float *sh_start, float sh_ref_t,
+FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *m0,
+                                    const float ro[3], const float rd[3], const fovsdf_hit *h,
+                                    int32_t mat, const float *sh_start, float sh_ref_t,
                                     float sh_tol, float col[3], fovsdf_stats *st)
 {
     uint64_t es = st->evals;
@@ -3846,22 +3995,30 @@ FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *
         } else {
             /* half the ray's own pixel footprint (as the hit threshold: pixel_angle cos^2) */
             float cz = fovsdf__clampf(fov__dot(rd, c->fwd), 0.0f, 1.0f);
-            hn = c->cfg.normal_eps > 0.0f ? c->cfg.normal_eps
-                                          : fov__maxf(fov__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * h->t),
-                                                         4.0f * (m0->ulp0 + m0->ulp1 * h->t));
+            hn = c->cfg.normal_eps > 0.0f
+                     ? c->cfg.normal_eps
+                     : fov__maxf(fov__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * h->t),
+                                 4.0f * (m0->ulp0 + m0->ulp1 * h->t));
             fovsdf_normal(c, p, hn, n, st);
-            if (fov__dot(n, rd) > 0.0f && h->dist < 0.0f) { n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2]; }
+            if (fov__dot(n, rd) > 0.0f && h->dist < 0.0f) {
+                n[0] = -n[0]; n[1] = -n[1]; n[2] = -n[2];
+            }
             if (c->cfg.shading == FOVSDF_SHADE_NORMALS) {
-                col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1]; col[2] = 0.5f + 0.5f * n[2];
+                col[0] = 0.5f + 0.5f * n[0]; col[1] = 0.5f + 0.5f * n[1];
+                col[2] = 0.5f + 0.5f * n[2];
             } else {
-                fovsdf__shade(c, p, n, mat, col, (sh_start && fov__absf(h->t - sh_ref_t) <= sh_tol) ? sh_start : NULL, st);
+                fovsdf__shade(c, p, n, mat, col,
+                              (sh_start && fov__absf(h->t - sh_ref_t) <= sh_tol) ? sh_start : NULL,
+                              st);
             }
         }
     } else {
-        if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS) col[0] = col[1] = col[2] = 0.0f;
+        if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS)
+            col[0] = col[1] = col[2] = 0.0f;
         else fovsdf_sky(c, rd, col);
     }
-    if (c->cfg.shading == FOVSDF_SHADE_STEPS) { /* via uint32: no 64-bit int-to-float helper on 32-bit CPUs */
+    /* via uint32: no 64-bit int-to-float helper on 32-bit CPUs */
+    if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
         uint64_t ne = st->evals - es + h->evals;
         fovsdf__heat((float)(uint32_t)(ne > 0xffffffu ? 0xffffffu : ne), col);
     }
@@ -3870,9 +4027,9 @@ FOVSDF__PRIV void fovsdf__shade_ray(const fovsdf_ctx *c, const fovsdf__marcher *
 /* One sample ray through image point (px, py): march from t_start (or a proven miss), shade.
    sh_start: per-light head starts of the shadow rays (SKIP), used when the sample's hit lies
    within sh_tol of sh_ref_t (the low-resolution hit), else none (a different surface). */
-FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0, float px, float py, float t_start,
-                                 int known_miss, const float *sh_start, float sh_ref_t, float sh_tol, fovsdf__smp *r,
-                                 fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0, float px, float py,
+                                 float t_start, int known_miss, const float *sh_start,
+                                 float sh_ref_t, float sh_tol, fovsdf__smp *r, fovsdf_stats *st)
 {
     float ro[3], rd[3];
     fovsdf_hit h;
@@ -3895,9 +4052,9 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
 }
 
 /* One pixel: all samples, shading, outputs. */
-FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, uint32_t x, uint32_t y,
-                                const fovsdf_output *o, fovsdf_stats *st, float t_start, int known_miss,
-                                const float *sh_start, float sh_ref_t, float sh_tol)
+FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, uint32_t x,
+                                uint32_t y, const fovsdf_output *o, fovsdf_stats *st, float t_start,
+                                int known_miss, const float *sh_start, float sh_ref_t, float sh_tol)
 {
     float acc[3] = { 0.0f, 0.0f, 0.0f }, tnear = c->t_max;
     uint32_t s, spp = c->cfg.spp, nhit = 0;
@@ -3908,8 +4065,8 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
         float ox, oy;
         fovsdf__smp r;
         fovsdf__sample_offset(spp, s, &ox, &oy);
-        fovsdf__sample(c, m0, (float)x + 0.5f + ox, (float)y + 0.5f + oy, t_start, known_miss, sh_start, sh_ref_t, sh_tol,
-                       &r, st);
+        fovsdf__sample(c, m0, (float)x + 0.5f + ox, (float)y + 0.5f + oy, t_start, known_miss,
+                       sh_start, sh_ref_t, sh_tol, &r, st);
         nsteps += r.steps;
         if (r.hit) {
             ++nhit;
@@ -3918,12 +4075,12 @@ FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, 
         acc[0] += r.col[0]; acc[1] += r.col[1]; acc[2] += r.col[2];
     }
     acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
-    fovsdf__put(c, o, x, y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), (uint32_t)(st->evals - e0),
-                known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
+    fovsdf__put(c, o, x, y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u),
+                (uint32_t)(st->evals - e0), known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
 }
 
-FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3], float *t,
-                                         int32_t *material, fovsdf_stats *stats)
+FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3],
+                                         float *t, int32_t *material, fovsdf_stats *stats)
 {
     fovsdf__marcher m;
     fovsdf__smp r;
@@ -3948,18 +4105,22 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     return FOV_OK;
 }
 
-FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o, uint32_t x0, uint32_t y0,
-                                             uint32_t x1, uint32_t y1)
+FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_output *o,
+                                             uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1)
 {
     uint32_t w;
     if (x0 >= x1 || y0 >= y1) return FOV_OK; /* nothing is written */
     if (x0 < o->origin_x || y0 < o->origin_y || o->origin_x >= c->cam.width || o->origin_y >= c->cam.height)
         return FOV_ERR_INVALID_ARG;
     w = x1 - o->origin_x; /* the widest row written */
-    if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) || (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
-        (o->depth && o->depth_stride && o->depth_stride < w) || (o->hit && o->hit_stride && o->hit_stride < w) ||
-        (o->evals && o->evals_stride && o->evals_stride < w) || (o->material && o->material_stride && o->material_stride < w) ||
-        (o->steps && o->steps_stride && o->steps_stride < w) || (o->start && o->start_stride && o->start_stride < w) ||
+    if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) ||
+        (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
+        (o->depth && o->depth_stride && o->depth_stride < w) ||
+        (o->hit && o->hit_stride && o->hit_stride < w) ||
+        (o->evals && o->evals_stride && o->evals_stride < w) ||
+        (o->material && o->material_stride && o->material_stride < w) ||
+        (o->steps && o->steps_stride && o->steps_stride < w) ||
+        (o->start && o->start_stride && o->start_stride < w) ||
         (o->mask && o->mask_stride && o->mask_stride < w))
         return FOV_ERR_TOO_SMALL;
     return FOV_OK;
@@ -3978,15 +4139,16 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
    A cell that reaches t_max is empty: its pixels are not marched at all. For any distance
    function that never overestimates (Lipschitz <= 1, after scene.lipschitz), no ray starts past
    its first hit. */
-FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher *m, const float a[3], float k,
-                                      float t, fovsdf_stats *st)
+FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher *m,
+                                      const float a[3], float k, float t, fovsdf_stats *st)
 {
     uint32_t i;
     uint64_t e0 = st->evals;
     for (i = 0; i < m->max_steps; ++i) {
         float p[3], f;
         if (t > m->t_max) { t = -1.0f; break; }
-        p[0] = c->origin[0] + a[0] * t; p[1] = c->origin[1] + a[1] * t; p[2] = c->origin[2] + a[2] * t;
+        p[0] = c->origin[0] + a[0] * t; p[1] = c->origin[1] + a[1] * t;
+        p[2] = c->origin[2] + a[2] * t;
         /* the float evaluation at a position of magnitude up to |camera| + t errs by a few
            ulps of it: take the distance minus the library's ulp floor, 8 FLT_EPSILON
            (|camera| + t), as the safe radius (NUMERICS: where the guarantee holds) */
@@ -4004,7 +4166,8 @@ FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher
 #define FOVSDF_CONE_SLACK 0.0f
 #endif
 /* Cone of the pixel rectangle [x0, x1) x [y0, y1): unit axis a and k = tan(half-angle). */
-FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, float x1, float y1, float a[3])
+FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, float x1, float y1,
+                                     float a[3])
 {
     float ro[3], d[3], cmin = 1.0f;
     int i;
@@ -4025,13 +4188,16 @@ typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf_
 /* Depth-first cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to
    the image only, so the cells and results do not depend on how the caller splits the image),
    writing the pixels inside the requested region [rx0,rx1) x [ry0,ry1). */
-FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
-                                    uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
-                                    uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
+                                    const fovsdf__marcher *mp, uint32_t x0, uint32_t y0,
+                                    uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
+                                    uint32_t rx1, uint32_t ry1, const fovsdf_output *o,
+                                    fovsdf_stats *st)
 {
     fovsdf__cell stk[4 * 10];
     int sp = 0;
-    stk[0].x0 = x0; stk[0].y0 = y0; stk[0].x1 = x1; stk[0].y1 = y1; stk[0].level = 1; stk[0].t = 0.0f;
+    stk[0].x0 = x0; stk[0].y0 = y0; stk[0].x1 = x1; stk[0].y1 = y1; stk[0].level = 1;
+    stk[0].t = 0.0f;
     sp = 1;
     while (sp > 0) {
         fovsdf__cell cl = stk[--sp];
@@ -4045,12 +4211,14 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
         t = fovsdf__cone_march(c, mc, a, k, cl.t * cs, st);
         if (t < 0.0f) { /* proven empty: no full-resolution marching */
             for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x) fovsdf__pixel(c, mp, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
+                for (x = px0; x < px1; ++x)
+                    fovsdf__pixel(c, mp, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
             continue;
         }
         if ((cl.x1 - cl.x0 <= 1 && cl.y1 - cl.y0 <= 1) || cl.level >= c->cfg.cone_levels) {
             for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x) fovsdf__pixel(c, mp, x, y, o, st, t, 0, NULL, 0.0f, 0.0f);
+                for (x = px0; x < px1; ++x)
+                    fovsdf__pixel(c, mp, x, y, o, st, t, 0, NULL, 0.0f, 0.0f);
             continue;
         }
         {
@@ -4070,7 +4238,8 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
     }
 }
 
-FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius, float *out)
+FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
+                                        float *out)
 {
     uint32_t x, y;
     if (!in || !out) return FOV_ERR_NULL;
@@ -4079,19 +4248,23 @@ FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h,
     if (in == out) return FOV_ERR_INVALID_ARG;
     for (y = 0; y < h; ++y)
         for (x = 0; x < w; ++x) {
-            uint32_t u0 = x > (uint32_t)radius ? x - (uint32_t)radius : 0, u1 = x + (uint32_t)radius < w ? x + (uint32_t)radius : w - 1;
-            uint32_t v0 = y > (uint32_t)radius ? y - (uint32_t)radius : 0, v1 = y + (uint32_t)radius < h ? y + (uint32_t)radius : h - 1;
+            uint32_t u0 = x > (uint32_t)radius ? x - (uint32_t)radius : 0,
+                u1 = x + (uint32_t)radius < w ? x + (uint32_t)radius : w - 1;
+            uint32_t v0 = y > (uint32_t)radius ? y - (uint32_t)radius : 0,
+                v1 = y + (uint32_t)radius < h ? y + (uint32_t)radius : h - 1;
             uint32_t u, v;
             float t = in[(size_t)y * w + x];
             for (v = v0; v <= v1; ++v)
-                for (u = u0; u <= u1; ++u) t = in[(size_t)v * w + u] < t ? in[(size_t)v * w + u] : t;
+                for (u = u0; u <= u1; ++u)
+                    t = in[(size_t)v * w + u] < t ? in[(size_t)v * w + u] : t;
             out[(size_t)y * w + x] = t;
         }
     return FOV_OK;
 }
 
-FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask, uint32_t mask_stride,
-                                       uint32_t w, uint32_t h, float sigma, float *out, uint32_t out_stride)
+FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, const uint8_t *mask,
+                                       uint32_t mask_stride, uint32_t w, uint32_t h, float sigma,
+                                       float *out, uint32_t out_stride)
 {
     float wt[25];
     int32_t R, i, j, x, y;
@@ -4114,7 +4287,8 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
             for (j = y - 1; j <= y + 1; ++j)
                 for (i = x - 1; i <= x + 1; ++i)
                     if (i >= 0 && j >= 0 && i < (int32_t)w && j < (int32_t)h) {
-                        if (mask[(size_t)j * mask_stride + (size_t)i] == 1u) has1 = 1; else has0 = 1;
+                        if (mask[(size_t)j * mask_stride + (size_t)i] == 1u) has1 = 1;
+                        else has0 = 1;
                     }
             if (!(has1 && has0)) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; continue; }
             {
@@ -4159,8 +4333,9 @@ FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, in
     return t;
 }
 
-FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty, uint32_t rx0,
-                                   uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
+                                   uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
+                                   uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -4177,18 +4352,22 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
     for (l = 0; l + 1u < L; ++l) {
         uint32_t S = 1u << (L - 1u - l), u, v;
-        int32_t c0x = (int32_t)(tx / S) - (int32_t)apr[l], c0y = (int32_t)(ty / S) - (int32_t)apr[l];
+        int32_t c0x = (int32_t)(tx / S) - (int32_t)apr[l],
+            c0y = (int32_t)(ty / S) - (int32_t)apr[l];
         for (v = 0; v < side[l]; ++v)
             for (u = 0; u < side[l]; ++u) {
                 int32_t cx = c0x + (int32_t)u, cy = c0y + (int32_t)v;
                 float ro[3], rd[3], t0 = 0.0f;
                 fovsdf_hit h;
                 if (l > 0) { /* parent cell and its neighbours, in the parent's array */
-                    int32_t pu = ((cx >= 0 ? cx : cx - 1) / 2) - ((int32_t)(tx / (S * 2u)) - (int32_t)apr[l - 1]);
-                    int32_t pv = ((cy >= 0 ? cy : cy - 1) / 2) - ((int32_t)(ty / (S * 2u)) - (int32_t)apr[l - 1]);
+                    int32_t pu = ((cx >= 0 ? cx : cx - 1) / 2) -
+                        ((int32_t)(tx / (S * 2u)) - (int32_t)apr[l - 1]);
+                    int32_t pv = ((cy >= 0 ? cy : cy - 1) / 2) -
+                        ((int32_t)(ty / (S * 2u)) - (int32_t)apr[l - 1]);
                     t0 = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
                 }
-                fovsdf__ray(c, ((float)cx + 0.5f) * (float)S, ((float)cy + 0.5f) * (float)S, ro, rd);
+                fovsdf__ray(c, ((float)cx + 0.5f) * (float)S, ((float)cy + 0.5f) * (float)S, ro,
+                            rd);
                 fovsdf__march(m, ro, rd, t0, &h, 0, st);
                 lv[l][(size_t)v * side[l] + u] = h.kind == FOVSDF_MISS ? c->t_max : h.t;
             }
@@ -4211,8 +4390,8 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
    CONE marches its cells. Every sample ray of the rectangle is empty up to t_par (its parent's
    cone contains it) and, along the cone, up to where the cone stopped: so it may start at the
    larger of the two. Returns -1 when the cone reached t_max (every ray of the cell misses). */
-FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher *m, float x0, float y0, float x1, float y1,
-                                      float t_par, fovsdf_stats *st)
+FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher *m, float x0,
+                                      float y0, float x1, float y1, float t_par, fovsdf_stats *st)
 {
     float a[3], k, t;
     if (t_par < 0.0f) return -1.0f; /* the parent's cone is empty up to t_max: so is this one */
@@ -4226,13 +4405,14 @@ FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher
    the certified start of fovsdf__safe_start over its own pixels, from its parent's, in place of
    the thin ray's hit; no minimum filter is needed (each cone contains every sample ray that
    starts from it) and no apron: only the cells over the requested pixels are marched. */
-FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
-                                        uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o,
-                                        fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
+                                        uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
+                                        uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
-    uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width, H = c->cam.height, l, x, y;
+    uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width,
+        H = c->cam.height, l, x, y;
     size_t off = 0;
     for (l = 0; l + 1u < L; ++l) {
         side[l] = T >> (L - 1u - l);
@@ -4254,7 +4434,8 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
     }
     for (y = ry0; y < ry1; ++y)
         for (x = rx0; x < rx1; ++x) {
-            float t0 = L > 1u ? lv[L - 2u][(size_t)((y - ty) / 2u) * side[L - 2u] + (x - tx) / 2u] : 0.0f;
+            float t0 =
+                L > 1u ? lv[L - 2u][(size_t)((y - ty) / 2u) * side[L - 2u] + (x - tx) / 2u] : 0.0f;
             if (t0 < 0.0f) fovsdf__pixel(c, m, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
             else fovsdf__pixel(c, m, x, y, o, st, t0, 0, NULL, 0.0f, 0.0f);
         }
@@ -4273,16 +4454,17 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
    columns scene at 160x90.)
    Choices where the thesis is silent: a low-resolution miss gives its pixels no head start
    (they march from the camera: treating them as misses lost 0.7 % of the pixels of the
-   primitives scene at silhouettes); a pixel whose hit is farther than max(4 skip_eps, 2 % of t) from the cell's hit
-   (another surface) gets no shadow head start; scaling is about each primitive's origin
-   (built-in programs; plain distance callbacks cannot scale and get early termination only);
-   one evaluation verifies each head start and a ray whose start lies inside a surface (a
-   grazing floor seen by the cell's lower rows) starts over from the camera.
+   primitives scene at silhouettes); a pixel whose hit is farther than max(4 skip_eps, 2 % of t)
+   from the cell's hit (another surface) gets no shadow head start; scaling is about each
+   primitive's origin (built-in programs; plain distance callbacks cannot scale and get early
+   termination only); one evaluation verifies each head start and a ray whose start lies inside a
+   surface (a grazing floor seen by the cell's lower rows) starts over from the camera.
    Like IPR this is a heuristic: neither scaling nor early termination guarantees that small
    objects are seen. That is the thesis variant (heuristic_start 1); the default marches one
    certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
-FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, uint32_t cy, uint32_t rx0,
-                                    uint32_t ry0, uint32_t rx1, uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx,
+                                    uint32_t cy, uint32_t rx0, uint32_t ry0, uint32_t rx1,
+                                    uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
     uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
@@ -4293,10 +4475,12 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     uint64_t e0 = st->evals, es0 = st->evals_shadow;
     int has_sh = 0;
     if (!c->cfg.heuristic_start) { /* safe: the block's cone, its pixels start where it stopped */
-        float t0 = fovsdf__safe_start(c, m, (float)bx0, (float)by0, (float)bx1, (float)by1, 0.0f, st);
+        float t0 =
+            fovsdf__safe_start(c, m, (float)bx0, (float)by0, (float)bx1, (float)by1, 0.0f, st);
         for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
             for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
-                fovsdf__pixel(c, m, x, y, o, st, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f, 0.0f);
+                fovsdf__pixel(c, m, x, y, o, st, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f,
+                              0.0f);
         return;
     }
     if (c->cam_dist < 0.0f) s_eff = 1.0f / s_eff; /* camera inside: deflate */
@@ -4310,13 +4494,16 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     fovsdf__ray(c, 0.5f * (float)(bx0 + bx1), 0.5f * (float)(by0 + by1), ro, rd);
     fovsdf__march(&ml, ro, rd, 0.0f, &h, 0, st);
     t_low = h.kind == FOVSDF_MISS ? c->t_max : h.t;
-    if (h.kind != FOVSDF_MISS && c->cfg.shading == FOVSDF_SHADE_FULL && !c->cfg.skip_no_shadow_start) {
+    if (h.kind != FOVSDF_MISS && c->cfg.shading == FOVSDF_SHADE_FULL &&
+        !c->cfg.skip_no_shadow_start) {
         float p[3];
         p[0] = ro[0] + rd[0] * t_low; p[1] = ro[1] + rd[1] * t_low; p[2] = ro[2] + rd[2] * t_low;
         for (i = 0; i < c->scene.num_lights; ++i) {
-            float l[3], dist, att, tr, k = c->scene.lights[i].shadow_k > 0.0f ? c->scene.lights[i].shadow_k : 16.0f;
+            float l[3], dist, att, tr,
+                k = c->scene.lights[i].shadow_k > 0.0f ? c->scene.lights[i].shadow_k : 16.0f;
             sh[i] = 0.0f;
-            if (c->scene.lights[i].shadow_k < 0.0f || !fovsdf__light_dir(c, i, p, l, &dist, &att)) continue;
+            if (c->scene.lights[i].shadow_k < 0.0f || !fovsdf__light_dir(c, i, p, l, &dist, &att))
+                continue;
             fovsdf__shadow(c, p, l, c->cfg.shadow_t0, dist, k, s_eff, &tr, st);
             /* a ray never attenuated needs no full-resolution march; otherwise start at half the
                distance where its penumbra began, so the full-resolution ray (from a point up to
@@ -4330,7 +4517,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     tol = fov__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
     for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
         for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
-            fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
+            fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0,
+                          has_sh ? sh : NULL, t_low, tol);
 }
 
 /* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
@@ -4401,12 +4589,16 @@ FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh
     if (k == 2u) return (uint32_t)((u + v) & 1);
     return k == 4u ? b4[(u & 1) + 2 * (v & 1)] : 0u;
 }
-FOVSDF__PRIV int32_t fovsdf__fdiv2(int32_t a) { return (a - (a < 0 ? 1 : 0)) / 2; } /* floor(a / 2) */
+FOVSDF__PRIV int32_t fovsdf__fdiv2(int32_t a) /* floor(a / 2) */
+{
+    return (a - (a < 0 ? 1 : 0)) / 2;
+}
 
 FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
 {
     float *q;
-    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls && j < f->lv0 + (int32_t)f->ls);
+    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls &&
+               j < f->lv0 + (int32_t)f->ls);
     q = f->l0 + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
     if (*q < 0.0f) {
         float ro[3], rd[3];
@@ -4426,22 +4618,24 @@ FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
 FOVSDF__PRIV float fovsdf__fov_l0s(fovsdf__fovt *f, int32_t i, int32_t j)
 {
     float *q;
-    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls && j < f->lv0 + (int32_t)f->ls);
+    FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls &&
+               j < f->lv0 + (int32_t)f->ls);
     q = f->l0s + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
     if (*q < -1.5f)
-        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4), (float)(4 * j + 4), 0.0f,
-                                f->st);
+        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4),
+                                (float)(4 * j + 4), 0.0f, f->st);
     return *q;
 }
 FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
 {
     fovsdf__mid *m;
-    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms && v < f->mv0 + (int32_t)f->ms);
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
+               v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
     if (m->tc < -1.5f) {
         float tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
-        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2), (float)(2 * v + 2), tp,
-                                   f->st);
+        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2),
+                                   (float)(2 * v + 2), tp, f->st);
     }
     return m->tc;
 }
@@ -4452,7 +4646,8 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
     const fovsdf_ctx *c = f->c;
     fovsdf__mid *m;
     float ro[3], rd[3];
-    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms && v < f->mv0 + (int32_t)f->ms);
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
+               v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
     if (m->state == 2 || (m->state == 1 && !shade)) return m;
     fovsdf__ray(c, ((float)u + 0.5f) * 2.0f, ((float)v + 0.5f) * 2.0f, ro, rd);
@@ -4505,7 +4700,8 @@ FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
     int32_t a, b;
     for (b = -1; b <= 1; ++b)
         for (a = -1; a <= 1; ++a)
-            t[(b + 1) * 3 + (a + 1)] = f->cone ? fovsdf__fov_mid(f, i + a, j + b, 0)->th : fovsdf__fov_l0(f, i + a, j + b);
+            t[(b + 1) * 3 + (a + 1)] =
+                f->cone ? fovsdf__fov_mid(f, i + a, j + b, 0)->th : fovsdf__fov_l0(f, i + a, j + b);
     tmin = t[0];
     for (a = 1; a < 9; ++a) tmin = fov__minf(tmin, t[a]);
     gx = (t[2] + 2.0f * t[5] + t[8]) - (t[0] + 2.0f * t[3] + t[6]);
@@ -4517,23 +4713,27 @@ FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
 /* Step 1 of CONE_FOV: the cone pyramid over the tile, down to 2x2-pixel cells (cone_levels
    permitting), storing each cell's t in the mid cells it covers. The cells are the tile's own
    grid, not clipped to the image, so 2x2 cells stay aligned. */
-FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, uint32_t tx, uint32_t ty, uint32_t T)
+FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, uint32_t tx,
+                                    uint32_t ty, uint32_t T)
 {
     const fovsdf_ctx *c = f->c;
     fovsdf__cell stk[4 * 10];
     int sp = 1;
-    stk[0].x0 = tx; stk[0].y0 = ty; stk[0].x1 = tx + T; stk[0].y1 = ty + T; stk[0].level = 1; stk[0].t = 0.0f;
+    stk[0].x0 = tx; stk[0].y0 = ty; stk[0].x1 = tx + T; stk[0].y1 = ty + T; stk[0].level = 1;
+    stk[0].t = 0.0f;
     while (sp > 0) {
         fovsdf__cell cl = stk[--sp];
         float a[3], k, t;
         if (cl.x0 >= c->cam.width || cl.y0 >= c->cam.height) continue; /* off the image */
         k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOV__SQRT(1.0f + k * k)), f->st); /* as CONE */
+        /* as CONE */
+        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOV__SQRT(1.0f + k * k)), f->st);
         if (t < 0.0f || cl.x1 - cl.x0 <= 2u || cl.level >= c->cfg.cone_levels) {
             uint32_t u, v;
             for (v = cl.y0 / 2u; v < cl.y1 / 2u; ++v)
                 for (u = cl.x0 / 2u; u < cl.x1 / 2u; ++u)
-                    f->mid[(size_t)((int32_t)v - f->mv0) * f->ms + (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
+                    f->mid[(size_t)((int32_t)v - f->mv0) * f->ms +
+                           (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
             continue;
         }
         {
@@ -4551,8 +4751,9 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
     }
 }
 
-FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp, uint32_t tx,
-                                   uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
+FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
+                                   const fovsdf__marcher *mp, uint32_t tx, uint32_t ty,
+                                   uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
                                    const fovsdf_output *o, fovsdf_stats *st)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
@@ -4568,13 +4769,16 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     T = f.cone ? c->cfg.cone_tile : c->cfg.ipr_tile;
     /* step 4's refresh: whole tiles take turns (a finer pattern would still need every mid cell
        for the bilinear taps of its neighbours and save almost nothing) */
-    due = c->cfg.refresh == 1u || fovsdf__bayer((int32_t)(tx / T), (int32_t)(ty / T), c->cfg.refresh) == ph;
+    due = c->cfg.refresh == 1u ||
+        fovsdf__bayer((int32_t)(tx / T), (int32_t)(ty / T), c->cfg.refresh) == ph;
     am = f.r > 1 ? f.r : 1;
     f.ms = T / 2u + 2u * (uint32_t)am;
     f.mu0 = (int32_t)(tx / 2u) - am; f.mv0 = (int32_t)(ty / 2u) - am;
     f.ls = T / 4u + 2u * (uint32_t)((am + 1) / 2 + f.r);
-    f.lu0 = (int32_t)(tx / 4u) - (am + 1) / 2 - f.r; f.lv0 = (int32_t)(ty / 4u) - (am + 1) / 2 - f.r;
-    FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS && (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
+    f.lu0 = (int32_t)(tx / 4u) - (am + 1) / 2 - f.r;
+    f.lv0 = (int32_t)(ty / 4u) - (am + 1) / 2 - f.r;
+    FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS &&
+               (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
     for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
     if (!f.cone)
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
@@ -4582,8 +4786,8 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     if (f.cone) {
         /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
            by them gives their rays a safe start */
-        float a[3], k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f, (float)(tx + T) + 2.0f,
-                                          (float)(ty + T) + 2.0f, a);
+        float a[3], k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f,
+                                          (float)(tx + T) + 2.0f, (float)(ty + T) + 2.0f, a);
         f.t_ring = fovsdf__cone_march(c, mc, a, k, 0.0f, st);
         if (f.t_ring < 0.0f) f.t_ring = c->t_max; /* the whole neighbourhood is empty */
         fovsdf__fov_cones(&f, mc, tx, ty, T);
@@ -4600,44 +4804,51 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                 p = fovsdf_acuity_p(&c->cfg.acuity, w);
                 in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
                      (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
-                      fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u), f.cone ? v : (int32_t)(y / 4u)));
+                      fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u),
+                                       f.cone ? v : (int32_t)(y / 4u)));
             }
             /* step 4: render */
             if (in) {
                 float t0;
                 int miss = 0;
                 if (f.cone || f.safe) {
-                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc : fovsdf__fov_tc(&f, u, v);
+                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc
+                        : fovsdf__fov_tc(&f, u, v);
                     miss = t0 < 0.0f;
                     if (miss) t0 = 0.0f;
                 } else {
                     int32_t a, b;
                     t0 = c->t_max;
                     for (b = -f.r; b <= f.r; ++b)
-                        for (a = -f.r; a <= f.r; ++a) t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
+                        for (a = -f.r; a <= f.r; ++a)
+                            t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
                 }
                 fovsdf__pixel(c, mp, x, y, o, st, t0, miss, NULL, 0.0f, 0.0f);
             } else if (!due) {
                 if (o->mask)
-                    o->mask[(size_t)(y - o->origin_y) * (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
+                    o->mask[(size_t)(y - o->origin_y) *
+                            (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
                             (x - o->origin_x)] = 2u;
             } else {
                 int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
-                float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f, col[3] = { 0.0f, 0.0f, 0.0f };
+                float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f,
+                    col[3] = { 0.0f, 0.0f, 0.0f };
                 const fovsdf__mid *own = fovsdf__fov_mid(&f, u, v, 1);
                 for (b = 0; b < 2; ++b)
                     for (a = 0; a < 2; ++a) {
                         const fovsdf__mid *m = fovsdf__fov_mid(&f, ua + a, va + b, 1);
                         float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                        col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1]; col[2] += wt * m->rgb[2];
+                        col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
+                        col[2] += wt * m->rgb[2];
                     }
-                fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u, own->mat, 0u);
+                fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f,
+                            0u, own->mat, 0u);
             }
         }
 }
 
-FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1,
-                                         const fovsdf_output *o, fovsdf_stats *stats)
+FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1,
+                                         uint32_t y1, const fovsdf_output *o, fovsdf_stats *stats)
 {
     fovsdf_stats local;
     fovsdf__marcher m;
@@ -4655,7 +4866,8 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         mp.method = c->cfg.finish - 1u;
         mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
         for (cy = y0 / B; cy * B < y1; ++cy)
-            for (cx = x0 / B; cx * B < x1; ++cx) fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, o, &local);
+            for (cx = x0 / B; cx * B < x1; ++cx)
+                fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
@@ -4668,13 +4880,14 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
                     ty + T < y1 ? ty + T : y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
         fovsdf__marcher mp = m;
-        uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx, ty;
+        uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx,
+            ty;
         mp.method = c->cfg.finish - 1u;
         if (c->cfg.method == FOVSDF_METHOD_FIPR) mp.verify_start = (int)c->cfg.heuristic_start;
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
-                fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
-                                 ty + T < y1 ? ty + T : y1, o, &local);
+                fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0,
+                                 tx + T < x1 ? tx + T : x1, ty + T < y1 ? ty + T : y1, o, &local);
     } else if (c->cfg.method == FOVSDF_METHOD_CONE) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.cone_tile, tx, ty;
@@ -4682,10 +4895,12 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__cone_tile(c, &m, &mp, tx, ty, tx + T < c->cam.width ? tx + T : c->cam.width,
-                                  ty + T < c->cam.height ? ty + T : c->cam.height, x0, y0, x1, y1, o, &local);
+                                  ty + T < c->cam.height ? ty + T : c->cam.height, x0, y0, x1, y1,
+                                  o, &local);
     } else {
         for (y = y0; y < y1; ++y)
-            for (x = x0; x < x1; ++x) fovsdf__pixel(c, &m, x, y, o, &local, 0.0f, 0, NULL, 0.0f, 0.0f);
+            for (x = x0; x < x1; ++x)
+                fovsdf__pixel(c, &m, x, y, o, &local, 0.0f, 0, NULL, 0.0f, 0.0f);
     }
     if (stats) fovsdf_stats_add(stats, &local);
     return FOV_OK;
@@ -4704,8 +4919,8 @@ FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *c)
     }
 }
 
-FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint32_t y1, const fovsdf_output *o,
-                                         fovsdf_stats *stats)
+FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint32_t y1,
+                                         const fovsdf_output *o, fovsdf_stats *stats)
 {
     if (!c || !o) return FOV_ERR_NULL;
     return fovsdf_render_tile(c, 0, y0, c->cam.width, y1, o, stats);
@@ -4722,8 +4937,8 @@ FOVSDF__PRIV int32_t fovsdf__at(fovsdf_builder *b, int32_t x, float tx, float ty
 }
 FOVSDF__PRIV int32_t fovsdf__mat(fovsdf_builder *b, int32_t m) { b->material = m; return m; }
 
-FOVSDF__PRIV void fovsdf__light(fovsdf_scene *s, uint32_t type, float x, float y, float z, float r, float g,
-                                float bl, float range, float k)
+FOVSDF__PRIV void fovsdf__light(fovsdf_scene *s, uint32_t type, float x, float y, float z, float r,
+                                float g, float bl, float range, float k)
 {
     fovsdf_light *L;
     if (s->num_lights >= FOVSDF_MAX_LIGHTS) return;
@@ -4748,19 +4963,26 @@ FOVSDF__PRIV void fovsdf__view(fovsdf_builtin *o, float px, float py, float pz, 
 /* Primitives: the open scene, every primitive and operator on a checkerboard plane. */
 FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin *o)
 {
-    int32_t r, x, y, ca[3];
+    int32_t r, x, y;
     float a[3], c[3];
-    (void)ca;
     fovsdf__mat(b, 1);
     r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
     fovsdf__mat(b, 2);
     r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_sphere(b, 0.5f), -4.0f, 0.5f, 0.0f));
     fovsdf__mat(b, 3);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_box(b, 0.4f, 0.4f, 0.4f), 0.0f, 1.0f, 0.0f, 30.0f), -2.0f, 0.4f, 0.0f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b,
+                                fovsdf_rotate(b, fovsdf_box(b, 0.4f, 0.4f, 0.4f), 0.0f, 1.0f, 0.0f,
+                                              30.0f), -2.0f, 0.4f, 0.0f));
     fovsdf__mat(b, 4);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_round_box(b, 0.45f, 0.35f, 0.45f, 0.12f), 0.0f, 0.35f, 0.0f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b, fovsdf_round_box(b, 0.45f, 0.35f, 0.45f, 0.12f), 0.0f, 0.35f,
+                                0.0f));
     fovsdf__mat(b, 5);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_torus(b, 0.4f, 0.12f), 1.0f, 0.0f, 0.0f, 90.0f), 2.0f, 0.55f, 0.0f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b,
+                                fovsdf_rotate(b, fovsdf_torus(b, 0.4f, 0.12f), 1.0f, 0.0f, 0.0f,
+                                              90.0f), 2.0f, 0.55f, 0.0f));
     fovsdf__mat(b, 6);
     a[0] = -0.3f; a[1] = 0.2f; a[2] = 0.0f; c[0] = 0.3f; c[1] = 0.9f; c[2] = 0.1f;
     r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_capsule(b, a, c, 0.18f), 4.0f, 0.0f, 0.0f));
@@ -4769,7 +4991,9 @@ FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin 
     fovsdf__mat(b, 2);
     r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_cone(b, 0.5f, 0.45f, 0.1f), -2.0f, 0.5f, 2.5f));
     fovsdf__mat(b, 3);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_box_frame(b, 0.45f, 0.45f, 0.45f, 0.04f), 0.0f, 0.45f, 2.5f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b, fovsdf_box_frame(b, 0.45f, 0.45f, 0.45f, 0.04f), 0.0f, 0.45f,
+                                2.5f));
     fovsdf__mat(b, 4);
     x = fovsdf__at(b, fovsdf_sphere(b, 0.35f), -0.25f, 0.0f, 0.0f);
     fovsdf__mat(b, 6);
@@ -4783,20 +5007,24 @@ FOVSDF__PRIV int32_t fovsdf__scene_primitives(fovsdf_builder *b, fovsdf_builtin 
     x = fovsdf_intersect(b, fovsdf_sphere(b, 0.5f), fovsdf_box(b, 0.4f, 0.4f, 0.4f));
     r = fovsdf_union(b, r, fovsdf__at(b, x, -3.0f, 0.4f, 5.0f));
     fovsdf__mat(b, 2);
-    x = fovsdf_smooth_subtract(b, fovsdf_box(b, 0.45f, 0.45f, 0.45f), fovsdf_sphere(b, 0.55f), 0.1f);
+    x = fovsdf_smooth_subtract(b, fovsdf_box(b, 0.45f, 0.45f, 0.45f), fovsdf_sphere(b, 0.55f),
+                               0.1f);
     r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.45f, 5.0f));
     fovsdf__mat(b, 3);
     x = fovsdf_smooth_intersect(b, fovsdf_sphere(b, 0.55f), fovsdf_cylinder(b, 0.6f, 0.4f), 0.1f);
     r = fovsdf_union(b, r, fovsdf__at(b, x, 3.0f, 0.5f, 5.0f));
     fovsdf__mat(b, 4); /* a mirrored pair of rounded boxes, scaled */
-    x = fovsdf_mirror(b, fovsdf__at(b, fovsdf_round(b, fovsdf_box(b, 0.1f, 0.3f, 0.1f), 0.05f), 0.5f, 0.0f, 0.0f), 1);
+    x = fovsdf_mirror(b,
+                      fovsdf__at(b, fovsdf_round(b, fovsdf_box(b, 0.1f, 0.3f, 0.1f), 0.05f), 0.5f,
+                                 0.0f, 0.0f), 1);
     r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_scale(b, x, 1.2f), 0.0f, 0.42f, 7.5f));
     fovsdf__mat(b, 6); /* a short row of repeated small spheres */
     x = fovsdf_repeat(b, fovsdf_sphere(b, 0.12f), 0.5f, 0.0f, 0.0f, 6, 0, 0);
     r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.12f, -1.5f));
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
-    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.6f, 0.8f, -0.4f, 1.0f, 0.95f, 0.85f, 0.0f, 16.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.6f, 0.8f, -0.4f, 1.0f, 0.95f, 0.85f, 0.0f,
+                  16.0f);
     o->scene.ambient[0] = 0.18f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.25f;
     fovsdf__view(o, 0.0f, 2.6f, -7.0f, 0.0f, 0.4f, 2.5f, 50.0f, 60.0f);
     return r;
@@ -4822,7 +5050,8 @@ FOVSDF__PRIV int32_t fovsdf__scene_columns(fovsdf_builder *b, fovsdf_builtin *o)
     col = fovsdf_repeat(b, col, 4.0f, 0.0f, 4.0f, 4, 0, 4);
     r = fovsdf_union(b, r, col);
     fovsdf__mat(b, 2);
-    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.3f), 0.0f, 0.3f, 0.0f), 8.0f, 0.0f, 8.0f, 2, 0, 2);
+    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.3f), 0.0f, 0.3f, 0.0f), 8.0f, 0.0f, 8.0f,
+                      2, 0, 2);
     r = fovsdf_union(b, r, fovsdf__at(b, x, 2.0f, 0.0f, 2.0f));
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
@@ -4855,7 +5084,8 @@ FOVSDF__PRIV int32_t fovsdf__scene_temple(fovsdf_builder *b, fovsdf_builtin *o)
     r = fovsdf_union(b, r, t);
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
-    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.45f, 0.35f, 1.2f, 1.05f, 0.85f, 0.0f, 12.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.45f, 0.35f, 1.2f, 1.05f, 0.85f,
+                  0.0f, 12.0f);
     o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.22f; o->scene.ambient[2] = 0.28f;
     fovsdf__view(o, -14.0f, 6.0f, -22.0f, 0.0f, 2.0f, 0.0f, 45.0f, 400.0f);
     return r;
@@ -4880,7 +5110,8 @@ FOVSDF__PRIV int32_t fovsdf__scene_atrium(fovsdf_builder *b, fovsdf_builtin *o)
     bay = fovsdf_union(b, bay, fovsdf__at(b, fovsdf_box(b, 0.4f, 0.12f, 0.4f), 0.0f, 3.2f, 0.0f));
     fovsdf__mat(b, 7);
     arch = fovsdf__at(b, fovsdf_box(b, 0.35f, 0.8f, 1.25f), 0.0f, 4.1f, 1.25f);
-    x = fovsdf__at(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.5f, 0.95f), 0.0f, 0.0f, 1.0f, 90.0f), 0.0f, 3.4f, 1.25f);
+    x = fovsdf__at(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.5f, 0.95f), 0.0f, 0.0f, 1.0f, 90.0f),
+                   0.0f, 3.4f, 1.25f);
     arch = fovsdf_subtract(b, arch, x);
     bay = fovsdf_union(b, bay, arch);
     fovsdf__mat(b, 4);
@@ -4890,23 +5121,35 @@ FOVSDF__PRIV int32_t fovsdf__scene_atrium(fovsdf_builder *b, fovsdf_builtin *o)
     up = fovsdf_union(b, up, fovsdf__at(b, fovsdf_box(b, 0.35f, 0.2f, 1.25f), 0.0f, 7.3f, 1.25f));
     bay = fovsdf_union(b, bay, up);
     fovsdf__mat(b, 6); /* hanging rings in each bay */
-    bay = fovsdf_union(b, bay, fovsdf__at(b, fovsdf_rotate(b, fovsdf_torus(b, 0.3f, 0.04f), 0.0f, 0.0f, 1.0f, 90.0f), 0.0f, 2.3f, 1.25f));
+    bay = fovsdf_union(b, bay,
+                       fovsdf__at(b,
+                                  fovsdf_rotate(b, fovsdf_torus(b, 0.3f, 0.04f), 0.0f, 0.0f, 1.0f,
+                                                90.0f), 0.0f, 2.3f, 1.25f));
     bay = fovsdf_repeat(b, bay, 0.0f, 0.0f, 2.5f, 0, 0, 5);
     r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, bay, 4.0f, 0.0f, -1.25f), 1));
     /* the gallery floor between arcade and wall */
     fovsdf__mat(b, 0);
-    r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, fovsdf_box(b, 1.5f, 0.15f, 15.0f), 5.5f, 4.75f, 0.0f), 1));
+    r = fovsdf_union(b, r,
+                     fovsdf_mirror(b,
+                                   fovsdf__at(b, fovsdf_box(b, 1.5f, 0.15f, 15.0f), 5.5f, 4.75f,
+                                              0.0f), 1));
     /* fountain and statues in the court */
     fovsdf__mat(b, 3);
-    x = fovsdf_subtract(b, fovsdf_cylinder(b, 0.3f, 1.2f), fovsdf__at(b, fovsdf_cylinder(b, 0.3f, 1.05f), 0.0f, 0.2f, 0.0f));
+    x = fovsdf_subtract(b, fovsdf_cylinder(b, 0.3f, 1.2f),
+                        fovsdf__at(b, fovsdf_cylinder(b, 0.3f, 1.05f), 0.0f, 0.2f, 0.0f));
     r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.3f, 2.0f));
     fovsdf__mat(b, 2);
-    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.35f), 0.0f, 1.25f, 0.0f), 0.0f, 0.0f, 5.0f, 0, 0, 2);
-    x = fovsdf_union(b, x, fovsdf_repeat(b, fovsdf__at(b, fovsdf_box(b, 0.25f, 0.45f, 0.25f), 0.0f, 0.45f, 0.0f), 0.0f, 0.0f, 5.0f, 0, 0, 2));
+    x = fovsdf_repeat(b, fovsdf__at(b, fovsdf_sphere(b, 0.35f), 0.0f, 1.25f, 0.0f), 0.0f, 0.0f,
+                      5.0f, 0, 0, 2);
+    x = fovsdf_union(b, x,
+                     fovsdf_repeat(b,
+                                   fovsdf__at(b, fovsdf_box(b, 0.25f, 0.45f, 0.25f), 0.0f, 0.45f,
+                                              0.0f), 0.0f, 0.0f, 5.0f, 0, 0, 2));
     r = fovsdf_union(b, r, fovsdf_mirror(b, fovsdf__at(b, x, 2.2f, 0.0f, 0.0f), 1));
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
-    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, 0.35f, 0.9f, 0.25f, 1.1f, 1.0f, 0.85f, 0.0f, 16.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, 0.35f, 0.9f, 0.25f, 1.1f, 1.0f, 0.85f, 0.0f,
+                  16.0f);
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, -8.0f, 1.5f, 1.2f, 0.8f, 4.0f, 16.0f);
     fovsdf__light(&o->scene, FOVSDF_LIGHT_POINT, 0.0f, 2.5f, 9.0f, 0.8f, 1.0f, 1.5f, 4.0f, 16.0f);
     o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.12f;
@@ -4937,14 +5180,17 @@ FOVSDF__PRIV int32_t fovsdf__scene_thin(fovsdf_builder *b, fovsdf_builtin *o)
     r = fovsdf_union(b, r, fovsdf__at(b, x, -1.7f, 0.6f, 0.0f));
     fovsdf__mat(b, 7); /* a plate with a grid of holes (subtraction) */
     x = fovsdf_box(b, 0.6f, 0.5f, 0.02f);
-    y = fovsdf_repeat(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.1f, 0.03f), 1.0f, 0.0f, 0.0f, 90.0f), 0.1f, 0.1f, 0.0f, 5, 4, 0);
+    y = fovsdf_repeat(b, fovsdf_rotate(b, fovsdf_cylinder(b, 0.1f, 0.03f), 1.0f, 0.0f, 0.0f, 90.0f),
+                      0.1f, 0.1f, 0.0f, 5, 4, 0);
     r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_subtract(b, x, y), 1.6f, 0.6f, 0.0f));
     fovsdf__mat(b, 4); /* thin box frames */
-    x = fovsdf_repeat(b, fovsdf_box_frame(b, 0.15f, 0.15f, 0.15f, 0.006f), 0.4f, 0.0f, 0.0f, 2, 0, 0);
+    x = fovsdf_repeat(b, fovsdf_box_frame(b, 0.15f, 0.15f, 0.15f, 0.006f), 0.4f, 0.0f, 0.0f, 2, 0,
+                      0);
     r = fovsdf_union(b, r, fovsdf__at(b, x, 0.0f, 0.16f, -0.6f));
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
-    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.4f, 0.8f, -0.5f, 1.0f, 1.0f, 0.95f, 0.0f, 24.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.4f, 0.8f, -0.5f, 1.0f, 1.0f, 0.95f, 0.0f,
+                  24.0f);
     o->scene.ambient[0] = o->scene.ambient[1] = o->scene.ambient[2] = 0.2f;
     fovsdf__view(o, 0.2f, 1.1f, -3.2f, 0.0f, 0.7f, 0.6f, 55.0f, 40.0f);
     return r;
@@ -4957,12 +5203,19 @@ FOVSDF__PRIV int32_t fovsdf__scene_fractals(fovsdf_builder *b, fovsdf_builtin *o
     fovsdf__mat(b, 1);
     r = fovsdf_plane(b, 0.0f, 1.0f, 0.0f, 0.0f);
     fovsdf__mat(b, 3);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_menger(b, 1.0f, 4), 0.0f, 1.0f, 0.0f, 25.0f), -1.7f, 1.0f, 0.3f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b,
+                                fovsdf_rotate(b, fovsdf_menger(b, 1.0f, 4), 0.0f, 1.0f, 0.0f,
+                                              25.0f), -1.7f, 1.0f, 0.3f));
     fovsdf__mat(b, 4);
-    r = fovsdf_union(b, r, fovsdf__at(b, fovsdf_rotate(b, fovsdf_mandelbulb(b, 8.0f, 8), 1.0f, 0.0f, 0.0f, -90.0f), 1.5f, 1.15f, 0.0f));
+    r = fovsdf_union(b, r,
+                     fovsdf__at(b,
+                                fovsdf_rotate(b, fovsdf_mandelbulb(b, 8.0f, 8), 1.0f, 0.0f, 0.0f,
+                                              -90.0f), 1.5f, 1.15f, 0.0f));
     fovsdf_scene_init(&o->scene);
     o->scene.num_lights = 0;
-    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.7f, -0.6f, 1.0f, 0.95f, 0.9f, 0.0f, 16.0f);
+    fovsdf__light(&o->scene, FOVSDF_LIGHT_DIRECTIONAL, -0.5f, 0.7f, -0.6f, 1.0f, 0.95f, 0.9f, 0.0f,
+                  16.0f);
     o->scene.ambient[0] = 0.2f; o->scene.ambient[1] = 0.2f; o->scene.ambient[2] = 0.24f;
     fovsdf__view(o, 0.0f, 1.9f, -5.0f, 0.0f, 1.0f, 0.0f, 50.0f, 40.0f);
     return r;
@@ -4970,7 +5223,8 @@ FOVSDF__PRIV int32_t fovsdf__scene_fractals(fovsdf_builder *b, fovsdf_builtin *o
 
 FOVSDF_API const char *fovsdf_builtin_name(uint32_t id)
 {
-    static const char *const names[] = { "primitives", "columns", "temple", "atrium", "thin", "fractals" };
+    static const char *const names[] =
+        { "primitives", "columns", "temple", "atrium", "thin", "fractals" };
     return id < (uint32_t)_FOVSDF_SCENE_NUM ? names[id] : "unknown";
 }
 
@@ -4984,7 +5238,8 @@ FOVSDF_API fov_result fovsdf_builtin_size(uint32_t id, size_t *bytes)
     FOV_MEMSET(&dummy, 0, sizeof dummy);
     r = fovsdf_program_size(&dummy, fovsdf__scene_nodes[id], 0, &prog);
     if (r != FOV_OK) return r;
-    *bytes = 16u + fov__align(sizeof(fovsdf_program)) + fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]) + prog;
+    *bytes = 16u + fov__align(sizeof(fovsdf_program)) +
+        fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]) + prog;
     return FOV_OK;
 }
 
@@ -5018,8 +5273,10 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
     if (b.err != FOV_OK) return b.err;
     if (root < 0) return FOV_ERR_INVALID_ARG;
     r = fovsdf_program_build(prog, nodes, b.count, root,
-                             base + fov__align(sizeof(fovsdf_program)) + fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]),
-                             bytes - (size_t)(base - (unsigned char *)mem) - fov__align(sizeof(fovsdf_program)) -
+                             base + fov__align(sizeof(fovsdf_program)) +
+                             fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]),
+                             bytes - (size_t)(base - (unsigned char *)mem) -
+                             fov__align(sizeof(fovsdf_program)) -
                                  fov__align(sizeof(fovsdf_node) * fovsdf__scene_nodes[id]));
     if (r != FOV_OK) return r;
     fovsdf_scene_set_program(&o->scene, prog);
@@ -5031,9 +5288,9 @@ FOVSDF_API fov_result fovsdf_builtin_init(uint32_t id, fovsdf_builtin *o, void *
 #ifdef FOVSDF_DOUBLE
 /* Double-precision classic sphere tracing of a double distance callback (the reference for
    the numerical-stability tests). */
-FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double ro[3], const double rd[3],
-                                       double t_start, double t_max, double eps, uint32_t max_steps,
-                                       double *t_hit, uint32_t *kind)
+FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double ro[3],
+                                       const double rd[3], double t_start, double t_max, double eps,
+                                       uint32_t max_steps, double *t_hit, uint32_t *kind)
 {
     double t = t_start;
     uint32_t i;

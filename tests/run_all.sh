@@ -88,6 +88,8 @@ three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# line length budgets of the headers, and every FOV*__ macro tested by #if defined
+run_section style bash tests/style.sh
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 # no tracked file cites the internal background documents; each header has REFERENCES

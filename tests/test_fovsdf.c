@@ -1038,7 +1038,7 @@ static void test_plane_rays(void)
             rd[2] = (float)(cos(a) * sin(az));
             te = (double)ro[1] / -(double)rd[1];
             /* exact up to 1e-4 t: the hit refinement's secant step, certified by an empty ball
-               where the spheres cannot verify it (grazing angles; fovsdf.h, fovsdf__march) */
+               where the spheres cannot verify it (grazing angles; fovsdf.h, fovsdf__refine) */
             tol = dmax((double)eps, 1e-4 * te);
             memset(&h, 0, sizeof h);
             memset(&g, 0, sizeof g);
@@ -2381,7 +2381,7 @@ static void test_param_variants(void)
         check(bad == 0 && worst <= 1.0, N("params_%s_hits_analytic", label),
               "%d rays did not hit; worst |dt| / max(eps, 1e-4 t) = %.3g", bad, worst);
     }
-    /* hit refinement (fovsdf.h, fovsdf__march): a secant step through the last two samples,
+    /* hit refinement (fovsdf.h, fovsdf__refine): a secant step through the last two samples,
        kept only when its end point's sphere overlaps the last sample's (near normal incidence:
        90, 80 degrees) or when one empty ball off the ray contains the segment it jumps
        (grazing angles; issue 10 item 1: the unverified secant jumped thin surfaces). With a

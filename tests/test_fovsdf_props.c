@@ -270,7 +270,7 @@ static float floor_wall2(const float p[3], void *u)
 }
 /* ---- item 1: the empty-ball certificate of the secant step ------------------------------
    At grazing angles the secant's end point lies beyond the last sample's sphere and the hit
-   refinement certifies the move with one empty ball off the ray (fovsdf.h, fovsdf__march).
+   refinement certifies the move with one empty ball off the ray (fovsdf.h, fovsdf__refine).
    (a) A floor alone at 0.5 .. 30 degrees: the hit is exact again (relative 1e-5; the plain
    fallback stops up to thr / sin(angle) short: 1e-4 relative with eps 1e-4 at 0.5 degrees,
    0.2 with a pixel cone of 2.4e-3). (b) A thin wall (0.05 and 0.1 of the threshold thick,
