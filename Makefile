@@ -27,11 +27,11 @@ $(BUILD)/sdf_basic: examples/sdf_basic.c fovsdf.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
-$(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h
+$(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
-$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h tests/common/fovrun.h
+$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
@@ -74,7 +74,7 @@ bench-pt: $(BUILD)/bench_pt
 	@mkdir -p bench/results
 	nice ./$(BUILD)/bench_pt $(if $(FULL),--full) $(BENCH_ARGS)
 
-$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h tests/common/fovmetrics.h
+$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h examples/fovmetrics.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
 

@@ -108,6 +108,9 @@ FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} run_section fuzz bash
 
 # --- examples: they build warning-free and the demo's tracers agree with the ground truth --
 run_section examples bash tests/examples.sh
+# every program: --help / -h exit 0 with a usage text, an unknown option exits 2; the examples
+# build copied out alone (the fov headers and examples/*.h)
+run_section programs bash tests/programs.sh
 
 # --- compile matrix, freestanding builds, other targets -----------------------------------
 run_section compile_matrix bash tests/compile/run.sh
