@@ -1,7 +1,10 @@
 # fov - foveated rendering single-header libraries.
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures,
 #                then a fovlp frame sequence (out/lp/) and a fovpt image (out/pt_basic.ppm)
-#   make test    the whole test suite (closing line: "N passed, N failed")
+#   make test    the whole test suite (closing line: "N passed, N failed");
+#                make test T=fovsdf runs only the sections whose name contains fovsdf
+#                (comma-separated patterns: T=fuzz, T=compile, T=examples,programs, T=metrics;
+#                the section names are listed at the top of tests/run_all.sh)
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
 #                          moving camera and gaze, bench/results/lp_moving.csv;
@@ -60,7 +63,7 @@ demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	@echo "images: out/ (fovsdf scenes per tracer), out/lp/ (fovlp frames), out/pt_basic.ppm (fovpt)"
 
 test:
-	@bash tests/run_all.sh
+	@T='$(T)' bash tests/run_all.sh
 
 # tests/fuzz/run.sh reads FUZZ_SECONDS, FUZZ_TARGETS, FUZZ_MAX_LEN, FUZZ_TIMEOUT, FUZZ_FLAGS
 fuzz:

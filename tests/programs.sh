@@ -12,7 +12,7 @@ P=0; F=0
 ok() { echo "PASS $1"; P=$((P + 1)); }
 bad() { echo "FAIL $1"; F=$((F + 1)); }
 CC=${CC:-gcc}
-STD="-std=c99 -D_POSIX_C_SOURCE=200809L -O1 -Wall -Wextra -Werror"
+STD="-std=c99 -D_POSIX_C_SOURCE=200809L -O0 -Wall -Wextra -Werror"
 
 # NAME SOURCE FLAGS...
 program() {
