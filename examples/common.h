@@ -111,7 +111,9 @@ static inline int fovex_oiiotool(const char *in, const char *extra, const char *
 }
 
 /* Writes an 8-bit PNG through oiiotool: the pixels go to "<path>.tmp.ppm" (or .pgm) first,
-   which is removed afterwards. FOVEX_ERR_TOOL when oiiotool is missing or fails. */
+   which is removed afterwards. --nosoftwareattrib keeps the command line (with the temporary
+   name) out of the file's metadata, so the same pixels give the same bytes.
+   FOVEX_ERR_TOOL when oiiotool is missing or fails. */
 static inline int fovex_write_png(const char *path, const float *px, int w, int h, int c)
 {
     char tmp[4096];
@@ -119,7 +121,7 @@ static inline int fovex_write_png(const char *path, const float *px, int w, int 
     if (!path || strlen(path) + 9 > sizeof tmp) return FOVEX_ERR_ARG;
     sprintf(tmp, "%s.tmp.%s", path, c == 3 ? "ppm" : "pgm");
     err = fovex_write_pnm(tmp, px, w, h, c);
-    if (!err) err = fovex_oiiotool(tmp, "", path);
+    if (!err) err = fovex_oiiotool(tmp, "--nosoftwareattrib", path);
     remove(tmp);
     return err;
 }
