@@ -1,7 +1,10 @@
 # fov - foveated rendering single-header libraries.
 #   make demo    render the built-in scenes with every tracer into out/ and print the figures,
 #                then a fovlp frame sequence (out/lp/) and a fovpt image (out/pt_basic.ppm)
-#   make test    the whole test suite (closing line: "N passed, N failed")
+#   make test    the whole test suite (closing line: "N passed, N failed");
+#                make test T=fovsdf runs only the sections whose name contains fovsdf
+#                (comma-separated patterns: T=fuzz, T=compile, T=examples,programs, T=metrics;
+#                the section names are listed at the top of tests/run_all.sh)
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
 #                          moving camera and gaze, bench/results/lp_moving.csv;
@@ -31,11 +34,11 @@ $(BUILD)/sdf_basic: examples/sdf_basic.c fovsdf.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
-$(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h
+$(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
-$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h tests/common/fovmetrics.h tests/common/fovrun.h
+$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
@@ -74,7 +77,7 @@ gallery: $(BUILD)/gallery
 	python3 examples/gallery_png.py docs/img $(BUILD)/gallery_ppm/*.ppm
 
 test:
-	@bash tests/run_all.sh
+	@T='$(T)' bash tests/run_all.sh
 
 # tests/fuzz/run.sh reads FUZZ_SECONDS, FUZZ_TARGETS, FUZZ_MAX_LEN, FUZZ_TIMEOUT, FUZZ_FLAGS
 fuzz:
@@ -88,7 +91,7 @@ bench-pt: $(BUILD)/bench_pt
 	@mkdir -p bench/results
 	nice ./$(BUILD)/bench_pt $(if $(FULL),--full) $(BENCH_ARGS)
 
-$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h tests/common/fovmetrics.h
+$(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h examples/fovmetrics.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
 

@@ -24,8 +24,8 @@
 #define FOVIMG_IMPLEMENTATION
 #include "../tests/common/fovimg.h"
 #define FOVM_IMPLEMENTATION
-#include "../tests/common/fovmetrics.h"
-#include "../tests/common/fovrun.h"
+#include "../examples/fovmetrics.h"
+#include "../examples/fovrun.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -96,6 +96,17 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : (x > y ? 1 : 0);
 }
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: bench_heads [options]\n"
+          "safe against heuristic head starts of IPR, SKIP and FIPR (heuristic_start 0 and 1)\n"
+          "  --size W H          image size (default 320 180)\n"
+          "  --runs N            timing runs, median (default 3, at most 31)\n"
+          "  --scenes a,b,...    scenes (default primitives,columns,temple,atrium,thin,fractals,shells,needles)\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 180, id;
@@ -105,10 +116,11 @@ int main(int argc, char **argv)
     static unsigned char pmem[1 << 18];
     fovsdf_program prog;
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--size") && a + 2 < argc) { W = (uint32_t)atoi(argv[a + 1]); H = (uint32_t)atoi(argv[a + 2]); a += 2; }
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--size") && a + 2 < argc) { W = (uint32_t)atoi(argv[a + 1]); H = (uint32_t)atoi(argv[a + 2]); a += 2; }
         else if (!strcmp(argv[a], "--runs") && a + 1 < argc) runs = atoi(argv[++a]);
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
-        else { fprintf(stderr, "usage: bench_heads [--size W H] [--runs N] [--scenes a,b]\n"); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     if (runs < 1) runs = 1;
     if (runs > 31) runs = 31;

@@ -51,7 +51,7 @@
 #include "../fovlp.h"
 #include "../examples/lp_sdf_shade.h"
 #define FOVM_IMPLEMENTATION
-#include "../tests/common/fovmetrics.h"
+#include "../examples/fovmetrics.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -406,6 +406,24 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
     free(ecc); free(tmp); free(mem);
 }
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: bench_lp [options]\n"
+          "fovlp samples, speed-up and error per ring (bench/results/lp.csv), then a moving sequence\n"
+          "  --full              every scene and preset at four sigmas (hours)\n"
+          "  --hd                1280x720 (default 640x360)\n"
+          "  --shadows           shade with soft shadows\n"
+          "  --runs N            timing runs (default 3)\n"
+          "  --frames N          frames per configuration (default 20)\n"
+          "  --scenes a,b,...    scenes\n"
+          "  --moving-scenes a,b scenes of the moving camera and gaze sequence (default primitives,columns)\n"
+          "  --moving-frames N   frames of the moving sequence (default 12)\n"
+          "  --out FILE          CSV (default bench/results/lp.csv)\n"
+          "  --fovea-study       what limits the fovea's PSNR, printed\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
@@ -420,7 +438,8 @@ int main(int argc, char **argv)
     double t_start = now_ms();
 
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--full")) full = 1;
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--full")) full = 1;
         else if (!strcmp(argv[a], "--hd")) { W = 1280; H = 720; }
         else if (!strcmp(argv[a], "--runs") && a + 1 < argc) runs = atoi(argv[++a]);
         else if (!strcmp(argv[a], "--frames") && a + 1 < argc) frames = atoi(argv[++a]);
@@ -430,7 +449,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--fovea-study")) study = 1;
         else if (!strcmp(argv[a], "--moving-scenes") && a + 1 < argc) mscenes = argv[++a];
         else if (!strcmp(argv[a], "--moving-frames") && a + 1 < argc) mframes = atoi(argv[++a]);
-        else { fprintf(stderr, "unknown argument %s (see the comment at the top of bench_lp.c)\n", argv[a]); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     if (!scenes) scenes = full ? "primitives,columns,temple,atrium,thin,fractals" : "primitives,columns,temple,thin,fractals";
     if (!mscenes) mscenes = full ? scenes : "primitives,columns";

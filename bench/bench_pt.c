@@ -578,6 +578,23 @@ static void row(FILE *csv, const char *scene, const char *method, const char *ga
     else fprintf(csv, "nan,%u\n", spp_f);
 }
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: bench_pt [options]\n"
+          "every fovpt method on the code-written scenes, gaze at the centre and near a corner\n"
+          "  --quick             fewer scenes\n"
+          "  --full              640x480, ground truth 1024 spp\n"
+          "  --throughput        only the fovpt / Embree ray-rate rows\n"
+          "  --temporal          only pt_temporal.csv, written beside FILE\n"
+          "  --fovea-spp         prints how the Cornell box's fovea error falls with spp\n"
+          "  --w W, --h H        image size (default 320 x 240)\n"
+          "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
+          "  --threads N         render threads (default 2)\n"
+          "  --out FILE          CSV (default bench/results/pt.csv)\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
@@ -586,7 +603,8 @@ int main(int argc, char **argv)
     FILE *csv;
     double t_start = now_ms();
     for (i = 1; i < argc; ++i) {
-        if (!strcmp(argv[i], "--full")) full = 1;
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[i], "--full")) full = 1;
         else if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--throughput")) only_tp = 1;
         else if (!strcmp(argv[i], "--temporal")) only_temporal = 1;
@@ -596,7 +614,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) out_path = argv[++i];
-        else { fprintf(stderr, "usage: %s [--quick] [--full] [--throughput] [--temporal] [--fovea-spp] [--w W --h H] [--gt-spp N] [--threads N] [--out FILE]\n", argv[0]); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[i]); usage(stderr); return 2; }
     }
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }

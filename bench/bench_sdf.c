@@ -45,8 +45,8 @@
 #define FOVIMG_IMPLEMENTATION
 #include "../tests/common/fovimg.h"
 #define FOVM_IMPLEMENTATION
-#include "../tests/common/fovmetrics.h"
-#include "../tests/common/fovrun.h"
+#include "../examples/fovmetrics.h"
+#include "../examples/fovrun.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -100,6 +100,23 @@ static void progress(int done, int total, const char *what)
     fflush(stderr);
 }
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: bench_sdf [options]\n"
+          "run time against error for every fovsdf method (bench/results/sdf.csv)\n"
+          "  --full              every method, spp, gaze, fovea and refresh (hours)\n"
+          "  --hd                1920x1080 (default 640x360)\n"
+          "  --runs N            timing runs, median (default 5)\n"
+          "  --threads N         render threads (default the number of cores)\n"
+          "  --scenes a,b,...    scenes (default primitives,columns,temple,atrium,thin,fractals)\n"
+          "  --shadows           shade with shadow rays\n"
+          "  --out FILE          CSV (default bench/results/sdf.csv)\n"
+          "  --plots-only        only redraw the plots of FILE\n"
+          "  --fov-grid          classic, fipr and cone_fov at every fovea and refresh, 1 and 16 spp\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360;
@@ -114,7 +131,8 @@ int main(int argc, char **argv)
     const uint32_t spps[3] = { 1, 4, 16 };
 
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--full")) full = 1;
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--full")) full = 1;
         else if (!strcmp(argv[a], "--hd")) { W = 1920; H = 1080; }
         else if (!strcmp(argv[a], "--runs") && a + 1 < argc) runs = atoi(argv[++a]);
         else if (!strcmp(argv[a], "--threads") && a + 1 < argc) nthreads = atoi(argv[++a]);
@@ -123,7 +141,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--plots-only")) plots_only = 1;
         else if (!strcmp(argv[a], "--fov-grid")) fov_grid = 1;
-        else { fprintf(stderr, "unknown option %s (see the comment at the top of bench_sdf.c)\n", argv[a]); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     if (runs < 1) runs = 1;
 

@@ -39,6 +39,18 @@ static double now_s(void)
 
 typedef struct smp_ref { fs_ref r; float ro[3], rd[3]; } smp_ref;
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: bench_stress [options]\n"
+          "fovsdf on the six stress scenes, every method at 1 and 4 spp (bench/results/stress.csv)\n"
+          "  --size W H          image size (default 240 135)\n"
+          "  --out FILE          CSV (default bench/results/stress.csv)\n"
+          "  --far D             distance of the far stress scene (default 1e6)\n"
+          "  --kind K            only stress scene K (0..5)\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 240, H = 135, spps[2] = { 1, 4 };
@@ -47,10 +59,12 @@ int main(int argc, char **argv)
     int a, kind, si, only = -1;
     FILE *csv;
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--size") && a + 2 < argc) { W = (uint32_t)atoi(argv[a + 1]); H = (uint32_t)atoi(argv[a + 2]); a += 2; }
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--size") && a + 2 < argc) { W = (uint32_t)atoi(argv[a + 1]); H = (uint32_t)atoi(argv[a + 2]); a += 2; }
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outp = argv[++a];
         else if (!strcmp(argv[a], "--far") && a + 1 < argc) far_d = atof(argv[++a]);
         else if (!strcmp(argv[a], "--kind") && a + 1 < argc) only = atoi(argv[++a]);
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     csv = fopen(outp, "w");
     if (!csv) { fprintf(stderr, "cannot write %s\n", outp); return 1; }

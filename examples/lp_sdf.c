@@ -63,6 +63,22 @@ static double psnr(const float *a, const float *b, const uint8_t *mask, uint8_t 
     return 10.0 * log10((double)n / se);
 }
 
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: lp_sdf [options]\n"
+          "renders a fovsdf scene through fovlp (log-polar foveation, TAA) with a moving gaze and camera\n"
+          "  --width W           image width (default 640)\n"
+          "  --height H          image height (default 360)\n"
+          "  --frames N          frames (default 24)\n"
+          "  --scene ID          fovsdf built-in scene 0..5 (default 0, primitives)\n"
+          "  --preset P          0 Fov, 1 K Fov, 2 C Fov (default), 3 C K Fov\n"
+          "  --no-taa            without temporal anti-aliasing\n"
+          "  --out DIR           writes DIR/lp_<scene>_<NNN>.ppm (default out); - writes no files\n"
+          "  --check             frame 0 against a full-resolution render; exit 1 on failure\n"
+          "  -h, --help          this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, frames = 24, scene = 0, preset = FOVLP_PRESET_C_FOV, f, rows;
@@ -82,7 +98,8 @@ int main(int argc, char **argv)
     float base_pos[3], base_target[3];
 
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--width") && a + 1 < argc) W = (uint32_t)atoi(argv[++a]);
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--width") && a + 1 < argc) W = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--height") && a + 1 < argc) H = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--frames") && a + 1 < argc) frames = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--scene") && a + 1 < argc) scene = (uint32_t)atoi(argv[++a]);
@@ -90,7 +107,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) out = argv[++a];
         else if (!strcmp(argv[a], "--no-taa")) taa = 0;
         else if (!strcmp(argv[a], "--check")) check = 1;
-        else { fprintf(stderr, "unknown argument %s (see the comment at the top of lp_sdf.c)\n", argv[a]); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
 
     /* the scene (fovsdf) */

@@ -8,8 +8,9 @@
 #include "fovpt.h"
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-int main(void)
+int main(int argc, char **argv)
 {
     static uint8_t pixels[320 * 240 * 3];
     fovpt_material mat[4];
@@ -27,6 +28,12 @@ int main(void)
     void *scene_mem, *ctx_mem;
     fov_result r;
     uint32_t n;
+    if (argc > 1) { /* no options: -h / --help prints the usage (exit 0), anything else exits 2 */
+        int help = !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h");
+        fputs("usage: pt_basic > pt_basic.ppm\n  writes a 320x240 PPM to stdout, the rays per layer to stderr; no options\n"
+              "  -h, --help  this text\n", help ? stdout : stderr);
+        return help ? 0 : 2;
+    }
 
     fovpt_material_init(&mat[0]);                       /* grey Lambert */
     fovpt_material_init(&mat[1]);                       /* the lamp */

@@ -4,6 +4,7 @@
 #include "fovsdf.h"
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static float scene_sdf(const float p[3], void *user)
 {
@@ -13,7 +14,7 @@ static float scene_sdf(const float p[3], void *user)
     return sphere < ground ? sphere : ground;
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
     static uint8_t pixels[320 * 240 * 3];
     fovsdf_scene scene;
@@ -24,6 +25,12 @@ int main(void)
     fovsdf_stats stats = { 0 };
     fov_gaze gaze = { 160.0f, 120.0f };
     fov_result r;
+    if (argc > 1) { /* no options: -h / --help prints the usage (exit 0), anything else exits 2 */
+        int help = !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h");
+        fputs("usage: sdf_basic > basic.ppm\n  writes a 320x240 PPM to stdout; no options\n  -h, --help  this text\n",
+              help ? stdout : stderr);
+        return help ? 0 : 2;
+    }
 
     fovsdf_scene_init(&scene);            /* one sun, a sky gradient */
     scene.dist = scene_sdf;

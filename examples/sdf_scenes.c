@@ -19,12 +19,11 @@
    classic tracer must match the ground truth's hit mask on >= 95% of the pixels (its quarter
    pixel cone dilates sub-pixel wires, more so at small sizes) with a finite image.          */
 #define FOVSDF_IMPLEMENTATION
-#include "../fovsdf.h"
-#define FOVIMG_IMPLEMENTATION
-#include "../tests/common/fovimg.h"
+#include "fovsdf.h"
+#include "common.h"
 #define FOVM_IMPLEMENTATION
-#include "../tests/common/fovmetrics.h"
-#include "../tests/common/fovrun.h"
+#include "fovmetrics.h"
+#include "fovrun.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -41,19 +40,34 @@ typedef struct frame {
 static void to_display(const float *lin, float *disp, size_t n)
 {
     size_t i;
-    for (i = 0; i < n; ++i) disp[i] = fovimg_linear_to_srgb(lin[i] < 0.0f ? 0.0f : (lin[i] > 1.0f ? 1.0f : lin[i]));
+    for (i = 0; i < n; ++i) disp[i] = fovex_linear_to_srgb(lin[i] < 0.0f ? 0.0f : (lin[i] > 1.0f ? 1.0f : lin[i]));
 }
 
 static void save(const char *dir, const char *scene, const char *what, const float *disp, int w, int h, int png)
 {
     char path[512];
-    fovimg img;
-    img.w = w; img.h = h; img.c = 3; img.px = (float *)disp;
     snprintf(path, sizeof path, "%s/%s_%s.%s", dir, scene, what, png ? "png" : "ppm");
-    if (fovimg_write_any(path, &img) != 0 && png) {
+    if ((png ? fovex_write_png(path, disp, w, h, 3) : fovex_write_pnm(path, disp, w, h, 3)) != 0 && png) {
         snprintf(path, sizeof path, "%s/%s_%s.ppm", dir, scene, what);
-        fovimg_write_any(path, &img);
+        fovex_write_pnm(path, disp, w, h, 3);
     }
+}
+
+/* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
+static void usage(FILE *f)
+{
+    fputs("usage: sdf_scenes [options]\n"
+          "renders every built-in scene with every fovsdf tracer and the ground truth, prints the figures\n"
+          "  --width W           image width (default 640)\n"
+          "  --height H          image height (default 360)\n"
+          "  --spp N             samples per pixel (default 1)\n"
+          "  --gaze X,Y          gaze point in pixels (default the image centre)\n"
+          "  --threads N         render threads (default the number of cores)\n"
+          "  --scenes a,b,...    scenes (default primitives,columns,temple,atrium,thin,fractals)\n"
+          "  --out DIR           images and DIR/demo.csv (default out)\n"
+          "  --check             test mode: each tracer against classic and the ground truth; exit 1 on failure\n"
+          "  --no-images         write no images and no CSV\n"
+          "  -h, --help          this text\n", f);
 }
 
 int main(int argc, char **argv)
@@ -68,7 +82,8 @@ int main(int argc, char **argv)
     char path[512];
 
     for (a = 1; a < argc; ++a) {
-        if (!strcmp(argv[a], "--width") && a + 1 < argc) W = (uint32_t)atoi(argv[++a]);
+        if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else if (!strcmp(argv[a], "--width") && a + 1 < argc) W = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--height") && a + 1 < argc) H = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--spp") && a + 1 < argc) spp = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--threads") && a + 1 < argc) nthreads = atoi(argv[++a]);
@@ -77,11 +92,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outdir = argv[++a];
         else if (!strcmp(argv[a], "--check")) check = 1;
         else if (!strcmp(argv[a], "--no-images")) images = 0;
-        else { fprintf(stderr, "unknown option %s (see the comment at the top of sdf_scenes.c)\n", argv[a]); return 2; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     if (nthreads < 1) nthreads = 1;
     if (gx < 0.0f) { gx = 0.5f * (float)W; gy = 0.5f * (float)H; }
-    png = fovimg_have_oiiotool();
+    png = fovex_have_oiiotool();
     if (images) {
         snprintf(path, sizeof path, "mkdir -p '%s'", outdir);
         if (system(path) != 0) { fprintf(stderr, "cannot create %s\n", outdir); return 1; }

@@ -13,7 +13,13 @@
 #include <stdlib.h>
 #include <string.h>
 static uint64_t fnv(uint64_t h, const void *p, size_t n){const unsigned char*c=(const unsigned char*)p;while(n--){h^=*c++;h*=1099511628211ull;}return h;}
-int main(void){
+int main(int argc, char **argv){
+  if (argc > 1) { /* no options: -h / --help prints the usage (exit 0), anything else exits 2 */
+    int help = !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h");
+    fputs("usage: heads_hashes\n  prints the want[][][] table of tests/test_fovsdf_heads.c for the fovsdf.h under -I;"
+          " no options\n  -h, --help  this text\n", help ? stdout : stderr);
+    return help ? 0 : 2;
+  }
   const uint32_t methods[3] = { FOVSDF_METHOD_IPR, FOVSDF_METHOD_SKIP, FOVSDF_METHOD_FIPR };
   static float rgb[96 * 64 * 3], dep[96 * 64], st[96 * 64];
   uint32_t id, mi, s;

@@ -4,6 +4,21 @@
 # Exit status 1 when anything failed. Logs: build/logs/<section>.log.
 # Under CI=true a missing toolchain is a failure, never a skip (tests/compile and
 # tests/xtarget enforce that).
+#
+# Selection: T=<pattern>[,<pattern>...] (make test T=fovsdf) runs only the sections whose name
+# contains one of the patterns (shell glob characters allowed), and builds only their programs;
+# the closing line stays. A T that matches no section exits 2 and lists the sections. Without
+# T everything runs. The sections, in order:
+#   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
+#     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf,
+#     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
+#     api_stress, versions, style shared refs, unit_metrics unit_metrics_sanitizers
+#     flip_reference
+#   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
+# e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
+# With T set, the suite block below runs twice: once to list the section names (run_section
+# and build_test only record), then for real; keep every command in it inside run_section,
+# build_test or three_builds.
 set -u
 cd "$(dirname "$0")/.."
 mkdir -p build/logs build/tests
@@ -12,10 +27,30 @@ TOTAL_P=0
 TOTAL_F=0
 T0=$(date +%s)
 
+# selected NAME: true without T, or when NAME contains one of T's comma-separated patterns
+T=${T:-}
+SEL_LISTING= SEL_LAST_BUILD= SEL_BUILDS= SEL_ALL=()
+selected() {
+    local pat
+    [ -z "$T" ] && return 0
+    IFS=, read -ra SEL_PATS <<<"$T"
+    for pat in "${SEL_PATS[@]}"; do
+        [ -n "$pat" ] && [[ $1 == *$pat* ]] && return 0
+    done
+    return 1
+}
+
 # run_section NAME COMMAND...: the command must print "N passed, N failed" as a line.
 run_section() {
     local name=$1; shift
     local log=build/logs/$name.log t1 rc summary p f
+    if [ -n "$SEL_LISTING" ]; then
+        SEL_ALL+=("$name")
+        if selected "$name" && [ -n "$SEL_LAST_BUILD" ]; then SEL_BUILDS+=" $SEL_LAST_BUILD "; fi
+        SEL_LAST_BUILD=
+        return 0
+    fi
+    selected "$name" || return 0
     t1=$(date +%s)
     "$@" >"$log" 2>&1
     rc=$?
@@ -38,6 +73,8 @@ run_section() {
 # build_test NAME SOURCE FLAGS...: compile a test program; a compile failure is a failure.
 build_test() {
     local name=$1 src=$2; shift 2
+    if [ -n "$SEL_LISTING" ]; then SEL_LAST_BUILD=$name; return 0; fi
+    if [ -n "$T" ] && [[ $SEL_BUILDS != *" $name "* ]]; then return 1; fi
     if ! $CC "$src" -o "build/tests/$name" "$@" >"build/logs/build_$name.log" 2>&1; then
         echo "FAIL [build] $name: compile error, see build/logs/build_$name.log"
         sed 's/^/    /' "build/logs/build_$name.log" | head -20
@@ -50,6 +87,7 @@ build_test() {
 WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror -ffp-contract=off"
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
+suite() {
 # --- unit tests ---------------------------------------------------------------------------
 # three builds of each library test program: libm, FOV_NO_LIBM, sanitizers
 three_builds() {
@@ -114,12 +152,32 @@ FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} run_section fuzz bash
 
 # --- examples: they build warning-free and the demo's tracers agree with the ground truth --
 run_section examples bash tests/examples.sh
+# the README: at most 250 lines, quick starts up front, its programs build and run, links
 run_section readme bash tests/readme.sh
+# every program: --help / -h exit 0 with a usage text, an unknown option exits 2; the examples
+# build copied out alone (the fov headers and examples/*.h)
+run_section programs bash tests/programs.sh
 
 # --- compile matrix, freestanding builds, other targets -----------------------------------
 run_section compile_matrix bash tests/compile/run.sh
 run_section cross_targets bash tests/xtarget/run.sh
 run_section cmake_consumers bash tests/cmake/run.sh
+}
+
+if [ -n "$T" ]; then
+    SEL_LISTING=1
+    suite
+    SEL_LISTING=
+    n=0
+    for s in "${SEL_ALL[@]}"; do selected "$s" && n=$((n + 1)); done
+    if [ "$n" -eq 0 ]; then
+        echo "run_all.sh: T=$T matches no section; the sections are:" >&2
+        printf '  %s\n' "${SEL_ALL[@]}" >&2
+        exit 2
+    fi
+    echo "T=$T: $n of ${#SEL_ALL[@]} sections"
+fi
+suite
 
 echo "suite took $(( $(date +%s) - T0 )) s"
 echo "$TOTAL_P passed, $TOTAL_F failed"

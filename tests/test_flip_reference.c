@@ -27,7 +27,7 @@
 #define FOVIMG_IMPLEMENTATION
 #include "fovimg.h"
 #define FOVM_IMPLEMENTATION
-#include "fovmetrics.h"
+#include "../examples/fovmetrics.h"
 
 #include <stdio.h>
 #include <stdlib.h>

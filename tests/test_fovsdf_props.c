@@ -33,16 +33,6 @@
 
 #define TOL_FRAC 0.02
 
-static void info(const char *fmt, ...)
-{
-    va_list ap;
-    printf("INFO ");
-    va_start(ap, fmt);
-    vprintf(fmt, ap);
-    va_end(ap);
-    printf("\n");
-}
-
 static char g_nm[160];
 static const char *N2(const char *fmt, const char *a, const char *b)
 {
@@ -203,7 +193,7 @@ static void test_props(void)
                         check(A->recon_bad == 0, N2("props_rebuilt_rays_match_render_%s_%s", mn, tag),
                               "%ld of %ld pixels: the rebuilt sample rays do not reproduce the depth", A->recon_bad, A->px);
                     } else {
-                        info("props %s %s: %ld of %ld hits behind the first surface (worst %.3g), %ld of %ld traced pixels start past the first hit, %ld rebuilt pixels differ",
+                        fovcheck_info("props %s %s: %ld of %ld hits behind the first surface (worst %.3g), %ld of %ld traced pixels start past the first hit, %ld rebuilt pixels differ",
                              mn, tag, A->behind, A->hits, A->worst, A->start_bad, A->px, A->recon_bad);
                     }
                     check(A->tmax_bad == 0, N2("props_no_hit_beyond_t_max_%s_%s", mn, tag),
@@ -355,7 +345,7 @@ static void test_ball_certificate(void)
         check(bad == 0, N2("ball_never_jumps_a_thin_wall_%s%s", fovsdf_method_name(m), ""),
               "%d of %d rays (eps 0.05, a floor at 0.5 .. 5 degrees, a wall 0.0025 or 0.005 thick before it) hit behind the wall, worst by %.3g",
               bad, n, worst);
-        if (m == FOVSDF_METHOD_CLASSIC) info("ball certificate refused on %d %d %d %d of 64 wall rays at 0.5/1/2/5 degrees (classic)",
+        if (m == FOVSDF_METHOD_CLASSIC) fovcheck_info("ball certificate refused on %d %d %d %d of 64 wall rays at 0.5/1/2/5 degrees (classic)",
                                             refused[0], refused[1], refused[2], refused[3]);
         if (m == FOVSDF_METHOD_CLASSIC)
             check(refused[0] > 0 && refused[1] > 0 && refused[2] > 0 && refused[3] > 0, "ball_certificate_refuses_the_wall",
@@ -566,7 +556,7 @@ static void test_wide_fov(void)
             if (!r.near) ++falseh;
         }
         snprintf(nm, sizeof nm, "wide_no_false_hits_fov%g_%ux%u", (double)fovs[c], W, H);
-        info("%s: %ld false hits of %ld hits, %u pixels (%.2f %% of the pixels)", nm, falseh, hits, W * H,
+        fovcheck_info("%s: %ld false hits of %ld hits, %u pixels (%.2f %% of the pixels)", nm, falseh, hits, W * H,
              100.0 * (double)falseh / (double)(W * H));
         check(falseh == 0, nm, "%ld of %ld hits (%u pixels) where the reference ray never comes within one pixel footprint",
               falseh, hits, W * H);

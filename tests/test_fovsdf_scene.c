@@ -46,15 +46,6 @@
 /* ==== checks ============================================================================== */
 
 
-static void info(const char *fmt, ...)
-{
-    va_list ap;
-    printf("INFO ");
-    va_start(ap, fmt);
-    vprintf(fmt, ap);
-    va_end(ap);
-    printf("\n");
-}
 
 /* ==== deterministic random numbers ======================================================== */
 typedef struct Rng { uint64_t s; } Rng;
@@ -687,7 +678,7 @@ static void s1_multi(const char *name, Sc *s, int root, const double c[3], doubl
     snprintf(nm, sizeof nm, "s1_%s_bounds_exact_near_surface", name);
     check(near_n > 0 && near_bad == 0, nm, "%d of %d points with exact < %.2g where the program (q.eps %.4g) differs",
           near_bad, near_n, NEAR_THR, EPS_NEAR);
-    if (near_diff_null) info("s1_%s: with q = NULL the program differs from exact at %d of %d points with exact < %.2g (bounds of small groups)",
+    if (near_diff_null) fovcheck_info("s1_%s: with q = NULL the program differs from exact at %d of %d points with exact < %.2g (bounds of small groups)",
                              name, near_diff_null, near_n, NEAR_THR);
     {   /* sphere tracing the program vs the exact function */
         int rays = 0, hm = 0, both = 0, dbad = 0;
@@ -1109,7 +1100,7 @@ static void section2_random(const char *pre, int NSCENES, int grouped)
     check(near_n > 1000 && near_bad == 0, nm,
           "%ld of %ld points with exact < %.2g where the program (q.eps %.4g) differs (worst %.3g)", near_bad, near_n, NEAR_THR,
           EPS_NEAR, worst_near);
-    info("%s: with q.eps = 0 the bounded program differs from exact at %ld of %ld points with exact < %.2g (%.2f%%)", pre,
+    fovcheck_info("%s: with q.eps = 0 the bounded program differs from exact at %ld of %ld points with exact < %.2g (%.2f%%)", pre,
          near_null_diff, near_n, NEAR_THR, near_n ? 100.0 * (double)near_null_diff / (double)near_n : 0.0);
     snprintf(nm, sizeof nm, "%s_prims_accounting", pre);
     check(acc_n > 0 && acc_bad == 0, nm, "%ld of %ld evaluations where prims + prims_skipped != program.prims",
@@ -1126,12 +1117,12 @@ static void section2_random(const char *pre, int NSCENES, int grouped)
     check(rays > 0 && scenes_hm_over == 0, nm,
           "%d scenes with more than 0.1%% hit/miss disagreement; worst scene %d: %d of %d rays; total %ld of %ld",
           scenes_hm_over, worst_hm_scene, worst_hm, W * H, hm_bad, rays);
-    info("%s: hit/miss disagreements %ld of %ld rays (%.4f%%)", pre, hm_bad, rays, rays ? 100.0 * (double)hm_bad / (double)rays : 0.0);
+    fovcheck_info("%s: hit/miss disagreements %ld of %ld rays (%.4f%%)", pre, hm_bad, rays, rays ? 100.0 * (double)hm_bad / (double)rays : 0.0);
     snprintf(nm, sizeof nm, "%s_trace_depth", pre);
     check(both_hit > 0 && depth_bad == 0, nm,
           "%ld of %ld rays where both hit with |t - t_ref| / t_ref > 1e-3; worst %.3g (scene %d: t %.7g, t_ref %.7g)", depth_bad,
           both_hit, worst_depth, wd_scene, wd_t, wd_ref);
-    info("%s: worst relative depth difference %.3g over %ld rays that both hit", pre, worst_depth, both_hit);
+    fovcheck_info("%s: worst relative depth difference %.3g over %ld rays that both hit", pre, worst_depth, both_hit);
     sc_free(s);
 }
 
@@ -1393,7 +1384,7 @@ static void section2_graphs(void)
             if (e.d > ref + tol_of(ref)) larger++;
         }
         check(bad == 0, "s2_graph_bounded_subtrahend_conservative", "%d violations (sign, |value| > |exact|, or near-surface)", bad);
-        info("s2: bounded subtrahend group: program > exact (less deep inside the solid, conservative) at %d of 2000 points", larger);
+        fovcheck_info("s2: bounded subtrahend group: program > exact (less deep inside the solid, conservative) at %d of 2000 points", larger);
     } else {
         check(0, "s2_graph_bounded_subtrahend_conservative", "fovsdf_program_build: %s", fovsdf_result_string(r));
     }
@@ -1656,7 +1647,7 @@ static void nacc_report(const NAcc acc[4], const char *setup)
     for (m = 0; m < 4; ++m) {
         const NAcc *a = &acc[m];
         nacc_merge(&all, a);
-        info("s4_%s %s: worst relative depth error %.3g (abs %.3g) = %.3g x envelope (at |cos| %.2f); hit point at most %.3g "
+        fovcheck_info("s4_%s %s: worst relative depth error %.3g (abs %.3g) = %.3g x envelope (at |cos| %.2f); hit point at most %.3g "
              "thresholds from the surface; %d clear hits, %d clear misses, %d exhausted",
              setup, fovsdf_method_name(m), a->worst_rel, a->worst_abs, a->worst_ratio, a->wr_cos, a->worst_surf, a->clear_hit,
              a->clear_miss, a->exhausted);
@@ -1856,7 +1847,7 @@ static void section4_scaled(void)
             for (m = 0; m < 4; ++m) nacc_init(&one[m]);
             nsetup_run(&su, one);
             for (m = 0; m < 4; ++m) nacc_merge(&acc[m], &one[m]);
-            info("s4_%s r=%g: worst relative depth error (classic, relaxed, autorelaxed, bv2018) %.3g %.3g %.3g %.3g", nm, r,
+            fovcheck_info("s4_%s r=%g: worst relative depth error (classic, relaxed, autorelaxed, bv2018) %.3g %.3g %.3g %.3g", nm, r,
                  one[0].worst_rel, one[1].worst_rel, one[2].worst_rel, one[3].worst_rel);
         }
         nacc_report(acc, nm);
@@ -1914,7 +1905,7 @@ static void section4_grazing(void)
                         if (!(fabs(y) <= thr + 4.0 * FE * (cl + (double)h.t))) hit_far++;
                     }
                     if (oi == 0 && cone == 0)
-                        info("s4_grazing %g rad %s: %s at t %.7g (plane at %.7g, relative %.2g), %u steps", a, fovsdf_method_name(m),
+                        fovcheck_info("s4_grazing %g rad %s: %s at t %.7g (plane at %.7g, relative %.2g), %u steps", a, fovsdf_method_name(m),
                              h.kind == FOVSDF_HIT ? "HIT" : (h.kind == FOVSDF_MISS ? "MISS" : "EXHAUSTED"), (double)h.t, t_true,
                              ((double)h.t - t_true) / t_true, h.steps);
                 }
@@ -2143,7 +2134,7 @@ static void section4_render(void)
             continue;
         }
         if (su->kind == 2) {
-            info("s4_render_%s: %d of %d pixels hit or exhausted", su->name, hits, W * H);
+            fovcheck_info("s4_render_%s: %d of %d pixels hit or exhausted", su->name, hits, W * H);
             continue;
         }
         /* hit mask vs the double reference where the reference is clear */
@@ -2167,7 +2158,7 @@ static void section4_render(void)
         check(clear > W * H / 2 && mask_bad == 0 && st.exhausted == 0, nm,
               "%d of %d clear pixels where the hit mask disagrees with the reference; %lu primary rays exhausted their steps",
               mask_bad, clear, (unsigned long)st.exhausted);
-        info("s4_render_%s: %d of %d pixels hit, %d clear", su->name, hits, W * H, clear);
+        fovcheck_info("s4_render_%s: %d of %d pixels hit, %d clear", su->name, hits, W * H, clear);
     }
     sc_free(s);
 }
@@ -2228,6 +2219,6 @@ int main(void)
     section4_inside();
     section4_render();
     section5_compact();
-    info("run time %.2f s", (double)(clock() - t0) / CLOCKS_PER_SEC);
+    fovcheck_info("run time %.2f s", (double)(clock() - t0) / CLOCKS_PER_SEC);
     return fovcheck_summary();
 }

@@ -1,6 +1,6 @@
 /*
  * test_metrics.c - unit tests for tests/common/fovimg.h and
- * tests/common/fovmetrics.h.
+ * examples/fovmetrics.h.
  *
  * Build and run (from the repository root; no data files are needed, the
  * file-format checks write temporary files to $TMPDIR or /tmp):
@@ -14,7 +14,7 @@
 #define FOVIMG_IMPLEMENTATION
 #include "fovimg.h"
 #define FOVM_IMPLEMENTATION
-#include "fovmetrics.h"
+#include "../examples/fovmetrics.h"
 
 #include <stdio.h>
 #include <stdlib.h>

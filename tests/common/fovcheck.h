@@ -47,6 +47,18 @@ static inline const char *fovcheck_name(const char *fmt, ...)
     return fovcheck__name;
 }
 
+/* Prints an "INFO ..." line: a figure the run reports, no check. */
+static inline void fovcheck_info(const char *fmt, ...) FOVCHECK_PRINTF(1, 2);
+static inline void fovcheck_info(const char *fmt, ...)
+{
+    va_list ap;
+    printf("INFO ");
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+    printf("\n");
+}
+
 /* Prints the closing line; returns the process exit status. */
 static int fovcheck_summary(void)
 {

@@ -127,6 +127,7 @@ int fovimg_read_any(const char *path, fovimg *img);
 #include <string.h>
 #include <math.h>
 #include <time.h>
+#include "../../examples/common.h" /* sRGB encoding, PNM writer, oiiotool bridge */
 
 #ifdef __cplusplus
 extern "C" {
@@ -220,9 +221,7 @@ float fovimg_srgb_to_linear(float v)
 
 float fovimg_linear_to_srgb(float v)
 {
-    double x = (double)v;
-    if (x <= 0.0031308) return (float)(x * 12.92);
-    return (float)(1.055 * pow(x, 1.0 / 2.4) - 0.055);
+    return fovex_linear_to_srgb(v);
 }
 
 void fovimg_image_srgb_to_linear(fovimg *img)
@@ -243,10 +242,7 @@ void fovimg_image_linear_to_srgb(fovimg *img)
 
 unsigned char fovimg_float_to_u8(float v)
 {
-    double x = (double)v;
-    if (!(x > 0.0)) return 0;      /* also NaN */
-    if (x >= 1.0) return 255;
-    return (unsigned char)floor(x * 255.0 + 0.5);
+    return fovex_float_to_u8(v);   /* clamp (NaN -> 0), round half up */
 }
 
 float fovimg_u8_to_float(unsigned char v)
@@ -344,26 +340,12 @@ static long fovimg__remaining(FILE *f)
 
 int fovimg_write_pnm(const char *path, const fovimg *img)
 {
-    FILE *f;
-    unsigned char *row;
-    size_t rowlen, y, i;
-    int ok = 1;
+    int err;
     if (!path || !fovimg__valid(img)) return FOVIMG_ERR_ARG;
-    rowlen = (size_t)img->w * (size_t)img->c;
-    row = (unsigned char *)malloc(rowlen);
-    if (!row) return FOVIMG_ERR_NOMEM;
-    f = fopen(path, "wb");
-    if (!f) { free(row); return FOVIMG_ERR_OPEN; }
-    if (fprintf(f, "%s\n%d %d\n255\n", img->c == 3 ? "P6" : "P5",
-                img->w, img->h) < 0) ok = 0;
-    for (y = 0; ok && y < (size_t)img->h; y++) {
-        const float *src = img->px + y * rowlen;
-        for (i = 0; i < rowlen; i++) row[i] = fovimg_float_to_u8(src[i]);
-        if (fwrite(row, 1, rowlen, f) != rowlen) ok = 0;
-    }
-    if (fclose(f) != 0) ok = 0;
-    free(row);
-    return ok ? FOVIMG_OK : FOVIMG_ERR_IO;
+    err = fovex_write_pnm(path, img->px, img->w, img->h, img->c);
+    if (err == FOVEX_ERR_NOMEM) return FOVIMG_ERR_NOMEM;
+    if (err == FOVEX_ERR_OPEN) return FOVIMG_ERR_OPEN;
+    return err ? FOVIMG_ERR_IO : FOVIMG_OK;
 }
 
 int fovimg_read_pnm(const char *path, fovimg *img)
@@ -690,7 +672,7 @@ done:
 
 int fovimg_have_oiiotool(void)
 {
-    return system("command -v oiiotool >/dev/null 2>&1") == 0;
+    return fovex_have_oiiotool();
 }
 
 /* Lower-case extension including the dot, or "" (copied into out). */
@@ -731,45 +713,13 @@ static int fovimg__mktemp(char *buf, size_t bufsz, const char *ext)
     return FOVIMG_ERR_OPEN;
 }
 
-/* Append s to dst (capacity cap) wrapped in single quotes for sh. */
-static int fovimg__shquote(char *dst, size_t cap, const char *s)
-{
-    size_t len = strlen(dst);
-    const char *p;
-    if (len + 2 >= cap) return 0;
-    dst[len++] = '\'';
-    for (p = s; *p; p++) {
-        if (*p == '\'') {
-            if (len + 5 >= cap) return 0;
-            memcpy(dst + len, "'\\''", 4);
-            len += 4;
-        } else {
-            if (len + 2 >= cap) return 0;
-            dst[len++] = *p;
-        }
-    }
-    if (len + 2 >= cap) return 0;
-    dst[len++] = '\'';
-    dst[len] = '\0';
-    return 1;
-}
-
 /* Run: oiiotool <in> [extra] -o <out>, quietly. */
 static int fovimg__oiio(const char *in, const char *extra, const char *out)
 {
-    size_t cap = strlen(in) * 4 + strlen(out) * 4 + strlen(extra) + 96;
-    char *cmd = (char *)malloc(cap);
-    int rc, ok;
-    if (!cmd) return FOVIMG_ERR_NOMEM;
-    strcpy(cmd, "oiiotool ");
-    ok = fovimg__shquote(cmd, cap, in);
-    if (ok) { strcat(cmd, " "); strcat(cmd, extra); strcat(cmd, " -o "); }
-    ok = ok && fovimg__shquote(cmd, cap, out);
-    if (ok) strcat(cmd, " >/dev/null 2>&1");
-    if (!ok) { free(cmd); return FOVIMG_ERR_ARG; }
-    rc = system(cmd);
-    free(cmd);
-    return rc == 0 ? FOVIMG_OK : FOVIMG_ERR_TOOL;
+    int err = fovex_oiiotool(in, extra, out);
+    if (err == FOVEX_ERR_NOMEM) return FOVIMG_ERR_NOMEM;
+    if (err == FOVEX_ERR_ARG) return FOVIMG_ERR_ARG;
+    return err ? FOVIMG_ERR_TOOL : FOVIMG_OK;
 }
 
 int fovimg_write_any(const char *path, const fovimg *img)

@@ -27,30 +27,16 @@
 #ifdef FOV_HAVE_FOVLP
 #include "tiny_lp.h"
 #endif
+#include "tiny_all.h"
 
 int main(void)
 {
     fov_result r = FOV_OK;
     (void)r;
-#ifdef FOV_HAVE_FOVSDF
     {
-        static uint8_t rgb[TINY_W * TINY_H * 3];
-        uint64_t evals = 0;
-        int e = tiny_render(rgb, &evals);
+        int e = tiny_render_all();
         if (e != 0) return e;
     }
-#endif
-#ifdef FOV_HAVE_FOVPT
-    {
-        static uint8_t rgb2[TINY_PT_W * TINY_PT_H * 3];
-        uint64_t rays = 0;
-        int e = tiny_pt_render(rgb2, &rays);
-        if (e != 0) return 100 + e;
-    }
-#endif
-#ifdef FOV_HAVE_FOVLP
-    if (tiny_lp() != 0) return tiny_lp();
-#endif
 #if defined(FOV_HAVE_FOVSDF) && defined(FOV_HAVE_FOVLP) && defined(FOV_HAVE_FOVPT)
     { /* the shared result codes read the same in every header */
         int code;

@@ -7,27 +7,7 @@
    and no C library function except memset/memcpy (which compilers may emit for struct
    copies), links it with hooks_stub_fns.c and runs it: the render must use the hooks.
    HOOKS_PARTIAL defines only FOV_SQRTF: the header must stop with an #error. */
-#include <stddef.h>
-
-#ifdef __cplusplus
-extern "C" {
-#endif
-float hook_sqrtf(float x);
-float hook_floorf(float x);
-float hook_sinf(float x);
-float hook_cosf(float x);
-float hook_tanf(float x);
-float hook_atan2f(float y, float x);
-float hook_expf(float x);
-float hook_logf(float x);
-float hook_powf(float x, float y);
-void *hook_memset(void *p, int v, size_t n);
-void *hook_memcpy(void *d, const void *s, size_t n);
-void hook_assert(int ok, const char *what, int line);
-int hooks_stub_render(void);
-#ifdef __cplusplus
-}
-#endif
+#include "hooks_stub.h"
 
 #if defined(HOOKS_PARTIAL)
 #define FOV_SQRTF(x) hook_sqrtf(x)
@@ -72,28 +52,10 @@ int hooks_stub_render(void);
 #include "fovpt.h"
 #include "tiny_pt.h"
 #endif
+#include "tiny_all.h"
 
 /* 0 on success */
 int hooks_stub_render(void)
 {
-#ifdef FOV_HAVE_FOVSDF
-    {
-        static uint8_t rgb[TINY_W * TINY_H * 3];
-        uint64_t evals = 0;
-        int e = tiny_render(rgb, &evals);
-        if (e != 0) return e;
-    }
-#endif
-#ifdef FOV_HAVE_FOVPT
-    {
-        static uint8_t rgb2[TINY_PT_W * TINY_PT_H * 3];
-        uint64_t rays = 0;
-        int e = tiny_pt_render(rgb2, &rays);
-        if (e != 0) return 100 + e;
-    }
-#endif
-#ifdef FOV_HAVE_FOVLP
-    if (tiny_lp() != 0) return tiny_lp();
-#endif
-    return 0;
+    return tiny_render_all();
 }

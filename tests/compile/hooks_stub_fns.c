@@ -5,19 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-float hook_sqrtf(float x);
-float hook_floorf(float x);
-float hook_sinf(float x);
-float hook_cosf(float x);
-float hook_tanf(float x);
-float hook_atan2f(float y, float x);
-float hook_expf(float x);
-float hook_logf(float x);
-float hook_powf(float x, float y);
-void *hook_memset(void *p, int v, size_t n);
-void *hook_memcpy(void *d, const void *s, size_t n);
-void hook_assert(int ok, const char *what, int line);
-int hooks_stub_render(void);
+#include "hooks_stub.h"
 
 static unsigned long math_calls, mem_calls, assert_calls, assert_failures;
 

@@ -3,7 +3,11 @@
    both into one program. Any public symbol that escapes the STATIC switch (a function or a
    constant table) gives a duplicate-symbol link error; run.sh also checks with nm that no
    fovsdf_/fovlp_/fovpt_ symbol is global in the object. Unused static functions must not
-   warn under -Wall -Werror (the unused attribute). */
+   warn under -Wall -Werror (the unused attribute). two_static_copies_b.c is this file with
+   TWO_STATIC_COPY set to two_static_copy_b. */
+#ifndef TWO_STATIC_COPY
+#define TWO_STATIC_COPY two_static_copy_a
+#endif
 #ifdef FOV_HAVE_FOVSDF
 #define FOVSDF_STATIC
 #define FOVSDF_IMPLEMENTATION
@@ -25,13 +29,13 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
-int two_static_copy_a(unsigned char *rgb, unsigned long *evals);
+int TWO_STATIC_COPY(unsigned char *rgb, unsigned long *evals);
 #ifdef __cplusplus
 }
 #endif
 
 /* renders the tiny scene with this copy; 0 on success */
-int two_static_copy_a(unsigned char *rgb, unsigned long *evals)
+int TWO_STATIC_COPY(unsigned char *rgb, unsigned long *evals)
 {
     *evals = 0;
 #ifdef FOV_HAVE_FOVSDF

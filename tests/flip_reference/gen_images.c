@@ -97,6 +97,13 @@ int main(int argc, char **argv)
     unsigned int seed = 0x12345678u;
     size_t i, n;
 
+    if (argc > 2 || (argc == 2 && argv[1][0] == '-')) { /* -h / --help: exit 0; else 2 */
+        int help = argc == 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"));
+        fputs("usage: gen_images [DIR]\n  writes the test images of tests/test_flip_reference.c into DIR"
+              " (default tests/flip_reference)\n  -h, --help  this text\n", help ? stdout : stderr);
+        return help ? 0 : 2;
+    }
+
     /* 1. gradient and a dimmed copy */
     fovimg_alloc(&a, 64, 64, 3);
     fovimg_alloc(&b, 64, 64, 3);

@@ -167,6 +167,18 @@ static int cmp_write_ppm(const char *dump_path, const char *prefix)
     return 0;
 }
 
+/* -h / --help prints this to stdout (exit 0); wrong arguments print it to stderr (exit 2) */
+static void cmp_usage(FILE *f)
+{
+    fputs("usage: compare [--psnr DB] [--hit PERCENT] LABEL REFERENCE.txt TEST.txt\n"
+          "       compare --ppm DUMP.txt PREFIX\n"
+          "  compares two render_test.c dumps scene by scene (tests/xtarget/run.sh)\n"
+          "  --psnr DB        least PSNR of the 8-bit sRGB image (default 50)\n"
+          "  --hit PERCENT    most pixels whose hit flag differs (default 0.1)\n"
+          "  --ppm            writes PREFIX<scene>.ppm and PREFIX<scene>_hit.pgm per scene\n"
+          "  -h, --help       this text\n", f);
+}
+
 int main(int argc, char **argv)
 {
     double psnr_min = 50.0, hit_max = 0.1;
@@ -174,6 +186,7 @@ int main(int argc, char **argv)
     static cmp_dump ref, tst;
     int a = 1, i, failed = 0;
 
+    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) { cmp_usage(stdout); return 0; }
     if (argc == 4 && strcmp(argv[1], "--ppm") == 0) return cmp_write_ppm(argv[2], argv[3]);
 
     while (a + 1 < argc && argv[a][0] == '-' && argv[a][1] == '-') {
@@ -183,7 +196,7 @@ int main(int argc, char **argv)
         a += 2;
     }
     if (argc - a != 3) {
-        fprintf(stderr, "usage: compare [--psnr DB] [--hit PERCENT] LABEL REF.txt TEST.txt\n");
+        cmp_usage(stderr);
         return 2;
     }
     label = argv[a]; ref_path = argv[a + 1]; test_path = argv[a + 2];

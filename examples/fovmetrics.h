@@ -1,5 +1,5 @@
 /*
- * fovmetrics.h - image-quality metrics for the fov tests and benchmarks:
+ * fovmetrics.h - image-quality metrics for the fov demo, tests and benchmarks:
  * MSE / RMSE / PSNR, SSIM (Wang et al. 2004) and LDR-FLIP (Andersson et
  * al. 2020), each over the whole image or over a selected region
  * (eccentricity band or mask value), plus per-eccentricity-ring summaries.
