@@ -49,9 +49,9 @@ $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 # Embree (Debian libembree-dev) gives the reference ray throughput when it is installed
 EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lembree3)
 
-$(BUILD)/bench_pt: bench/bench_pt.c bench/pt_scenes.h fovpt.h
+$(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h fovpt.h
 	@mkdir -p $(BUILD)
-	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -Ibench $< -lm -pthread $(EMBREE) -o $@
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
 
 $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 	@mkdir -p $(BUILD)
@@ -67,7 +67,7 @@ demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	@echo "images: out/ (fovsdf scenes per tracer), out/lp/ (fovlp frames), out/pt_basic.ppm (fovpt)"
 
 # the README's gallery: deterministic (one thread, no clock, -ffp-contract=off)
-$(BUILD)/gallery: examples/gallery.c examples/lp_sdf_shade.h bench/pt_scenes.h fovsdf.h fovlp.h fovpt.h
+$(BUILD)/gallery: examples/gallery.c examples/lp_sdf_shade.h examples/pt_scenes.h fovsdf.h fovlp.h fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -ffp-contract=off -I. $< -lm -o $@
 

@@ -1,4 +1,4 @@
-/* bench_pt.c - fovpt benchmark: every method on the code-written scenes (bench/pt_scenes.h),
+/* bench_pt.c - fovpt benchmark: every method on the code-written scenes (examples/pt_scenes.h),
    gaze at the centre and near the top-left corner; writes bench/results/pt.csv.
 
    make bench-pt            default run (5 scenes, 320x240, ground truth 512 spp path / 64
@@ -63,7 +63,7 @@
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
-#include "pt_scenes.h"
+#include "examples/pt_scenes.h"
 
 #include <math.h>
 #include <pthread.h>

@@ -18,8 +18,8 @@
 #include "fovlp.h"
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
-#include "examples/lp_sdf_shade.h"
-#include "bench/pt_scenes.h"
+#include "lp_sdf_shade.h"
+#include "pt_scenes.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -340,6 +340,15 @@ static int gallery_pt(uint32_t W, uint32_t H, const char *dir)
     return rc;
 }
 
+static void usage(FILE *f)
+{
+    fputs("usage: gallery [--out DIR] [--width W] [--height H]\n"
+          "  renders the README's gallery as PPM files into DIR (default build/gallery_ppm):\n"
+          "  sdf_<scene>.ppm (full | CONE_FOV | mask), lp_primitives.ppm, pt_cornell.ppm\n"
+          "  --width W, --height H   panel size in pixels (default 480 x 270, 16 .. 4096)\n",
+          f);
+}
+
 int main(int argc, char **argv)
 {
     const char *dir = "build/gallery_ppm";
@@ -349,12 +358,8 @@ int main(int argc, char **argv)
         if (!strcmp(argv[a], "--out") && a + 1 < argc) dir = argv[++a];
         else if (!strcmp(argv[a], "--width") && a + 1 < argc) W = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--height") && a + 1 < argc) H = (uint32_t)atoi(argv[++a]);
-        else if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) {
-            printf("usage: gallery [--out DIR] [--width W] [--height H]\n"
-                   "  renders the README's gallery as PPM files into DIR (default build/gallery_ppm):\n"
-                   "  sdf_<scene>.ppm (full | CONE_FOV | mask), lp_primitives.ppm, pt_cornell.ppm\n");
-            return 0;
-        } else { fprintf(stderr, "unknown argument %s (try --help)\n", argv[a]); return 2; }
+        else if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
+        else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
     if (W < 16 || H < 16 || W > 4096 || H > 4096) { fprintf(stderr, "panel size 16 .. 4096\n"); return 2; }
     fails += gallery_sdf(FOVSDF_SCENE_PRIMITIVES, 0.38f, 0.62f, W, H, dir) != 0;

@@ -36,7 +36,7 @@ if [ -x build/examples/pt_basic ] && build/examples/pt_basic > build/examples/pt
 else
     bad "pt_basic output"
 fi
-if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. -Ibench bench/bench_pt.c -lm -pthread -o build/examples/bench_pt; then
+if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. bench/bench_pt.c -lm -pthread -o build/examples/bench_pt; then
     ok "bench_pt builds"
 else
     bad "bench_pt build"
