@@ -83,6 +83,7 @@ fi
 three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c
 three_builds numerics_fovlp tests/test_fovlp_numerics.c
+three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
