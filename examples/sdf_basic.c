@@ -21,7 +21,7 @@ int main(void)
     fovsdf_config cfg = fovsdf_config_default();
     fovsdf_ctx ctx;
     fovsdf_output out;
-    fovsdf_stats stats = { 0 };
+    fovsdf_stats stats;
     fov_gaze gaze = { 160.0f, 120.0f };
     fov_result r;
 
@@ -34,6 +34,7 @@ int main(void)
     if (r != FOV_OK) { fprintf(stderr, "fovsdf_init: %s\n", fovsdf_result_string(r)); return 1; }
     fovsdf_output_init(&out);
     out.rgb8 = pixels;
+    fovsdf_stats_init(&stats);            /* counters; render calls add to them */
     fovsdf_render_rows(&ctx, 0, 240, &out, &stats);  /* or split rows across threads */
     printf("P6\n320 240\n255\n");
     fwrite(pixels, 1, sizeof pixels, stdout);

@@ -89,6 +89,8 @@ three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# the counters of the three headers: init functions, and counts that add up across calls
+three_builds stats tests/test_stats.c
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
