@@ -156,9 +156,10 @@ CONFIGURATION (define before including the implementation)
 MEMORY
    The caller owns every byte. fovlp_memory_size() gives the context's working memory for a
    config (the per-frame tables: (w + 2 h) floats); fovlp_init() takes it. The sample buffer
-   (ctx.geo.samples slots of 3 floats, optional depth: 1 float) and every image (screen
-   size, explicit row stride) are caller buffers; TAA history (colour, depth, age) too, two
-   copies that you swap every frame. Stack use: below 1 KiB in every entry point.
+   (ctx.geo.samples slots of 3 floats of linear RGB, optional depth: 1 float), every image
+   (screen size, linear RGB floats or fovlp_srgb8_rows' bytes, explicit row stride) are
+   caller buffers; TAA history (colour, depth, age) too, two copies that you swap every
+   frame. Stack use: below 1 KiB in every entry point.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code.
@@ -461,7 +462,9 @@ typedef struct fovlp_taa_config {
 } fovlp_taa_config;
 
 /* A zero-filled config means "all defaults" (listed per field) apart from width and height,
-   which are required. The defaults are the thesis's C Fov mode with the aspect matched. */
+   which are required. The defaults are the thesis's C Fov mode with the aspect matched.
+   fovlp_config_default() gives the same settings filled in (without the g++ -Wextra warning
+   of `= {0}`); then set width and height, or start from fovlp_config_preset(). */
 typedef struct fovlp_config {
     uint32_t width, height; /* screen in pixels, 1 .. FOVLP_MAX_DIM (required) */
     float sigma;            /* buffer compression (> 0; < 1 gives more samples)     0: 1.4 */

@@ -634,7 +634,8 @@ typedef struct fovpt_temporal_cfg {
                                0: 0.9, 0.8, 0.7, 0.5, 0.2, 0.1 */
 } fovpt_temporal_cfg;
 
-/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field);
+   fovpt_config_default() gives the same settings filled in (and no g++ -Wextra warning). */
 typedef struct fovpt_config {
     uint32_t method;        /* fovpt_method                                      0: uniform */
     uint32_t mode;          /* fovpt_mode                                        0: path */

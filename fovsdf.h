@@ -547,7 +547,8 @@ typedef struct fovsdf_acuity {
     float outer_deg;  /* p = 0 beyond (0: never) */
 } fovsdf_acuity;
 
-/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field);
+   fovsdf_config_default() gives the same settings filled in (and no g++ -Wextra warning). */
 typedef struct fovsdf_config {
     uint32_t method;        /* fovsdf_method                                       0: classic */
     uint32_t spp;           /* samples per pixel: 1, 4 or 16 (patterns below)      0: 1 */
