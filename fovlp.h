@@ -658,9 +658,10 @@ FOVLP_API fov_result fovlp_shade_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_
                                       uint64_t *shaded);
 FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out);
 
-/* Reconstruction of screen rows [y0, y1) from the shaded samples into out_rgb (row stride in
-   floats, 0: 3 W); out_depth (W floats per row, may be NULL) gets the depth of the nearest
-   sample (needs sample_depth: FOV_ERR_NULL without). */
+/* Reconstruction of screen rows [y0, y1) from the shaded samples (sample_rgb, linear RGB)
+   into out_rgb (row stride in floats, 0: 3 W). sample_depth is optional (NULL: no depth);
+   out_depth (W floats per row, optional, NULL: not written) gets the depth of the nearest
+   sample and needs sample_depth (FOV_ERR_NULL without). */
 FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
                                             const float *sample_depth, uint32_t y0,
                                             uint32_t y1, float *out_rgb, uint32_t out_stride,

@@ -201,9 +201,8 @@ THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
    context whose settings are read-only; fovpt_trace_rows on disjoint row ranges may run on
    as many threads as you like (each with its own fovpt_stats, summed by fovpt_stats_add),
-   then, after all of them,
-   fovpt_refine_rows (SELECTIVE, JIN) and after that fovpt_resolve_rows, each on disjoint
-   rows. Results do not depend on the split.
+   then, after all of them, fovpt_refine_rows (SELECTIVE, JIN) and after that
+   fovpt_resolve_rows, each on disjoint rows. Results do not depend on the split.
 
 NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
@@ -697,8 +696,8 @@ typedef struct fovpt_output {
 /* Counters. No function resets them: every function that takes a fovpt_stats * (NULL: not
    counted) adds its own counts to what the struct holds, so they accumulate across calls,
    rows and frames until you clear them with fovpt_stats_init (all zero; `= {0}` is the same
-   in C but warns under g++ -Wextra). fovpt_init, fovpt_set_view, fovpt_reset (which clear
-   the image accumulation, cfg.accumulate) and fovpt_resolve_rows never touch them.
+   in C but warns under g++ -Wextra). fovpt_init, fovpt_set_view and fovpt_reset (which may
+   reset the image's accumulation, never the counters) and fovpt_resolve_rows leave them.
      fovpt_trace_rows   samples and camera_rays of its rows, the bounce and shadow rays of
                         their paths, rays, bad_samples; LAYERS, ZONES: layer_targets and
                         layer_samples; SELECTIVE, JIN: the presamples (one per pixel).

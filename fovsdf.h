@@ -962,7 +962,7 @@ FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_
 FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
                                   const fovsdf_scene *scene, const fovsdf_camera *cam,
                                   fov_gaze gaze, void *mem, size_t mem_size);
-FOVSDF_API void fovsdf_output_init(fovsdf_output *out);   /* every pointer NULL, stride 0 */
+FOVSDF_API void fovsdf_output_init(fovsdf_output *out); /* pointers NULL, strides, origin 0 */
 FOVSDF_API void fovsdf_stats_init(fovsdf_stats *stats);   /* every counter 0 */
 FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s); /* acc += s */
 
