@@ -8,24 +8,43 @@
 QUICK START (the library never renders: you shade the positions it hands out)
       #define FOVLP_IMPLEMENTATION
       #include "fovlp.h"
+      #include <stdlib.h>                                      // malloc
 
       fovlp_config cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 1920, 1080);
       size_t bytes;  fovlp_memory_size(&cfg, &bytes);         // a few KiB of tables
       fovlp_ctx ctx; fovlp_init(&ctx, &cfg, malloc(bytes), bytes);
       fovlp_geometry g = ctx.geo;                              // g.samples = sample slots
-      float *srgb = malloc(g.samples * 3 * sizeof(float));    // one colour per sample slot
-      float *img  = malloc(1920 * 1080 * 3 * sizeof(float));
+      float *rgb = (float *)malloc(g.samples * 3 * sizeof(float));   // linear RGB per slot
+      float *img = (float *)malloc(1920 * 1080 * 3 * sizeof(float)); // linear RGB per pixel
+      uint8_t *rgba = (uint8_t *)malloc(1920 * 1080 * 4);           // what you display
       for (;;) {                                               // every frame
           fov_gaze gaze = { eye_x, eye_y };
           fovlp_begin_frame(&ctx, gaze, NULL);                 // camera: only for TAA
-          fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), my_shade, my_user, srgb, NULL, NULL);
-          fovlp_reconstruct_rows(&ctx, srgb, NULL, 0, 1080, img, 0, NULL);
+          fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), my_shade, my_user, rgb, NULL, NULL);
+          fovlp_reconstruct_rows(&ctx, rgb, NULL, 0, 1080, img, 0, NULL);
+          fovlp_srgb8_rows(&ctx, img, 0, 0, 1080, rgba, 0, 4);  // sRGB bytes, alpha 255
       }
-   my_shade(x, y, rgb, depth, user) colours the screen point (x, y) (continuous pixel
-   coordinates, pixel centres at +0.5) with any renderer. Instead of the callback you can ask
-   for the positions as an array (fovlp_samples) and write each sample's colour to
-   srgb[3 * index]. Split the sample rows and the screen rows over threads as you like.
-   examples/lp_sdf.c renders fovsdf.h's scenes through this library.
+   my_shade(x, y, rgb, depth, user) writes the linear RGB colour of the screen point (x, y)
+   (continuous pixel coordinates, pixel centres at +0.5) from any renderer; depth is NULL
+   unless you pass a depth buffer (TAA). Instead of the callback you can ask for the positions
+   as an array (fovlp_samples) and write each sample's colour to rgb[3 * sample.slot]. Split
+   the sample rows and the screen rows over threads as you like. fovlp_srgb8_rows gives 3
+   (RGB, e.g. a PPM) or 4 bytes per pixel; keep img when you need float (HDR) output.
+   With TAA (cfg.taa.enable = 1 before fovlp_init) pass a camera to fovlp_begin_frame, shade
+   and reconstruct with depth, and resolve against a history that you swap every frame:
+      float *sdep = (float *)malloc(g.samples * sizeof(float));      // depth per slot
+      float *dep = (float *)malloc(1920 * 1080 * sizeof(float));      // depth per pixel
+      // and two of each, screen-size: hist[2] (3 floats), hdep[2] (1 float), age[2] (1 byte)
+          fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), my_shade, my_user, rgb, sdep, NULL);
+          fovlp_reconstruct_rows(&ctx, rgb, sdep, 0, 1080, img, 0, dep);
+          fovlp_taa_io io;  fovlp_taa_io_init(&io);
+          io.cur_rgb = img;        io.cur_depth = dep;
+          io.prev_rgb = hist[p];   io.prev_depth = hdep[p];   io.prev_age = age[p];
+          io.out_rgb = hist[1-p];  io.out_depth = hdep[1-p];  io.out_age = age[1-p];
+          fovlp_taa_rows(&ctx, &io, 0, 1080, NULL);            // the first frame needs no prev_*
+          fovlp_srgb8_rows(&ctx, hist[1-p], 0, 0, 1080, rgba, 0, 4);   p = 1 - p;
+   The depths are optional while the camera stands still (see fovlp_taa_io).
+   examples/lp_sdf.c renders fovsdf.h's scenes through this library, with TAA.
 
 THE PIPELINE (in the order the data flows; Andersson & Hansson 2020, "Performance
 Optimizations for Foveated Real-Time Raytracing", LU-CS-EX 2020-64, = "the thesis"; it builds
@@ -68,6 +87,9 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       the shaded depth, depth rejection, history blend 1/age with the age capped at 20
       (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg (always on while
       the camera moves, ours), history reset on a gaze jump.
+   9. Output: every image is linear RGB in floats (the colour space your shading writes);
+      fovlp_srgb8_rows encodes it to 8-bit sRGB (the exact IEC 61966-2-1 curve, correctly
+      rounded, the same bytes in every build) for a display texture or an image file.
 
 CHOICES WHERE THE THESIS IS OPEN OR WRONG (each is tested in tests/test_fovlp.c)
    - atan vs atan2: eq. 3.9's arctan(y'/x') + [y' < 0] 2 pi is only right as atan2; we use
@@ -134,9 +156,10 @@ CONFIGURATION (define before including the implementation)
 MEMORY
    The caller owns every byte. fovlp_memory_size() gives the context's working memory for a
    config (the per-frame tables: (w + 2 h) floats); fovlp_init() takes it. The sample buffer
-   (ctx.geo.samples slots of 3 floats, optional depth: 1 float) and every image (screen
-   size, explicit row stride) are caller buffers; TAA history (colour, depth, age) too, two
-   copies that you swap every frame. Stack use: below 1 KiB in every entry point.
+   (ctx.geo.samples slots of 3 floats of linear RGB, optional depth: 1 float), every image
+   (screen size, linear RGB floats or fovlp_srgb8_rows' bytes, explicit row stride) are
+   caller buffers; TAA history (colour, depth, age) too, two copies that you swap every
+   frame. Stack use: below 1 KiB in every entry point.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code.
@@ -452,7 +475,9 @@ typedef struct fovlp_taa_config {
 } fovlp_taa_config;
 
 /* A zero-filled config means "all defaults" (listed per field) apart from width and height,
-   which are required. The defaults are the thesis's C Fov mode with the aspect matched. */
+   which are required. The defaults are the thesis's C Fov mode with the aspect matched.
+   fovlp_config_default() gives the same settings filled in (without the g++ -Wextra warning
+   of `= {0}`); then set width and height, or start from fovlp_config_preset(). */
 typedef struct fovlp_config {
     uint32_t width, height; /* screen in pixels, 1 .. FOVLP_MAX_DIM (required) */
     float sigma;            /* buffer compression (> 0; < 1 gives more samples)     0: 1.4 */
@@ -549,10 +574,21 @@ typedef struct fovlp_counts {
     float shaded_pct;         /* shaded / (W H) * 100 */
 } fovlp_counts;
 
-/* TAA buffers of one frame. Screen-size, tightly packed (3 floats per pixel for colour).
-   prev_*: what the previous frame's fovlp_taa_rows wrote to out_* (swap them each frame;
-   out_* equal to cur_rgb or prev_* is FOV_ERR_INVALID_ARG).
-   cur_rgb/cur_depth: this frame's reconstruction (fovlp_reconstruct_rows with out_depth). */
+/* TAA buffers of one frame. Screen-size, tightly packed: 3 floats per pixel for colour, one
+   float per pixel for depth, one byte for age. Clear it with fovlp_taa_io_init (all NULL),
+   then set what you have:
+     cur_rgb      required: this frame's image (fovlp_reconstruct_rows, or fovlp_blend_rows)
+     cur_depth    optional, NULL: no depth. This frame's depth (fovlp_reconstruct_rows'
+                  out_depth); required while the camera moves (fovlp_begin_frame given a
+                  camera that differs from the previous frame's), to reproject the history
+     prev_rgb, prev_age   required once a history exists (ctx.history_valid: from the
+                  second frame after fovlp_init, fovlp_reset_history or a gaze jump): what
+                  the previous call wrote to out_rgb / out_age
+     prev_depth   optional like cur_depth: the previous call's out_depth
+     out_rgb, out_age     required: the result (show out_rgb) and the next frame's history
+     out_depth    optional, NULL: not written; give it when the camera may move next frame
+   Keep two sets of prev / out buffers and swap them every frame; out_* equal to cur_rgb or
+   to prev_* is FOV_ERR_INVALID_ARG. */
 typedef struct fovlp_taa_io {
     const float *cur_rgb;
     const float *cur_depth;
@@ -564,6 +600,8 @@ typedef struct fovlp_taa_io {
     uint8_t *out_age;
 } fovlp_taa_io;
 
+/* TAA counters: fovlp_taa_rows adds to them (never resets them); start with
+   fovlp_taa_stats_init (all zero). One per thread, summed by you. */
 typedef struct fovlp_taa_stats {
     uint64_t pixels;
     uint64_t rejected;      /* history rejected (off-screen or depth) */
@@ -598,6 +636,10 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
                                 size_t mem_size);
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
 FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
+/* Clear a fovlp_taa_io (every pointer NULL) or fovlp_taa_stats (every counter 0): the same as
+   `= {0}` in C, without the missing-initializer warning of g++ -Wextra. */
+FOVLP_API void fovlp_taa_io_init(fovlp_taa_io *io);
+FOVLP_API void fovlp_taa_stats_init(fovlp_taa_stats *stats);
 
 /* Mappings (continuous LP coordinates: texel (u, v) covers [u, u+1) x [v, v+1)). Any finite
    screen point maps; lp_to_screen gives FOV_ERR_LIMIT for a u so large that the point lies
@@ -629,9 +671,10 @@ FOVLP_API fov_result fovlp_shade_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_
                                       uint64_t *shaded);
 FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out);
 
-/* Reconstruction of screen rows [y0, y1) from the shaded samples into out_rgb (row stride in
-   floats, 0: 3 W); out_depth (W floats per row, may be NULL) gets the depth of the nearest
-   sample (needs sample_depth: FOV_ERR_NULL without). */
+/* Reconstruction of screen rows [y0, y1) from the shaded samples (sample_rgb, linear RGB)
+   into out_rgb (row stride in floats, 0: 3 W). sample_depth is optional (NULL: no depth);
+   out_depth (W floats per row, optional, NULL: not written) gets the depth of the nearest
+   sample and needs sample_depth (FOV_ERR_NULL without). */
 FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *sample_rgb,
                                             const float *sample_depth, uint32_t y0,
                                             uint32_t y1, float *out_rgb, uint32_t out_stride,
@@ -646,9 +689,26 @@ FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *s
    rows [y0, y1) into out (must not alias in). Copies when cfg.blend is 0. */
 FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in_rgb, uint32_t y0,
                                       uint32_t y1, float *out_rgb);
-/* TAA resolve of screen rows [y0, y1) (see fovlp_taa_io). stats may be NULL. */
+/* TAA resolve of screen rows [y0, y1) (see fovlp_taa_io). stats (may be NULL) is added to. */
 FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io, uint32_t y0,
                                     uint32_t y1, fovlp_taa_stats *stats);
+/* 8-bit sRGB output, for an RGBA8 texture or an image file. fovlp_linear_to_srgb8 encodes one
+   linear value: round(255 srgb(x)) with srgb the exact IEC 61966-2-1 curve (12.92 x up to
+   x = 0.0031308, else 1.055 x^(1/2.4) - 0.055; not gamma 2.2), rounded to nearest, the input
+   clamped to [0, 1]: x <= 0, -inf and NaN give 0, x >= 1 and +inf give 255. It uses no math
+   function (a 255-entry table of the code boundaries and a 416-entry start table, integer
+   compares only: 1.4 KiB), so every build (libm, FOV_NO_LIBM, any target) gives the same
+   byte for the same float, and every byte is the correctly rounded one.
+   fovlp_srgb8_rows encodes screen rows [y0, y1) of a linear float image (3 floats per pixel,
+   as fovlp_reconstruct_rows, fovlp_blend_rows and fovlp_taa_rows write it; rgb_stride in
+   floats, 0: 3 W) into out with `channels` bytes per pixel: 3 (RGB, e.g. a PPM) or 4 (RGBA,
+   alpha 255); out_stride in bytes, 0: channels W. Row y is read at rgb + y rgb_stride and
+   written at out + y out_stride (whole-image buffers, as in the other row functions); rows
+   may be split over threads. Needs only an initialised ctx (no begin_frame). */
+FOVLP_API uint8_t fovlp_linear_to_srgb8(float x);
+FOVLP_API fov_result fovlp_srgb8_rows(const fovlp_ctx *ctx, const float *rgb, uint32_t rgb_stride,
+                                      uint32_t y0, uint32_t y1, uint8_t *out, uint32_t out_stride,
+                                      uint32_t channels);
 /* The scaled Halton (2, 3) offset of a phase (eq. 3.11), in texels; for tests and tools. */
 FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float *ou,
                                   float *ov);
@@ -1914,7 +1974,7 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 /* ---- reconstruction ----------------------------------------------------------------------- */
 /* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
    out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
-FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
+FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, const float *sdep,
                                    float uc, float vc, float edge, float rgb[3], float *depth)
 {
     const fovlp_geometry *g = &ctx->geo;
@@ -1969,9 +2029,9 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
                 if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) continue;
                 slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i;
                 kw = k * w;   /* local sums: rgb may alias the samples */
-                a0 += kw * srgb[3 * slot];
-                a1 += kw * srgb[3 * slot + 1];
-                a2 += kw * srgb[3 * slot + 2];
+                a0 += kw * smp_rgb[3 * slot];
+                a1 += kw * smp_rgb[3 * slot + 1];
+                a2 += kw * smp_rgb[3 * slot + 2];
                 wsum += w;
                 if (w > wbest) { wbest = w; *depth = sdep ? sdep[slot] : 0.0f; }
             }
@@ -2000,7 +2060,8 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
             while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
             if (!fovlp__lp_pos(ctx, (uint32_t)i0, (uint32_t)j, &x, &y)) continue;
             slot = (size_t)(uint32_t)j * g->lp_w + (uint32_t)i0;
-            rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
+            rgb[0] = smp_rgb[3 * slot]; rgb[1] = smp_rgb[3 * slot + 1];
+            rgb[2] = smp_rgb[3 * slot + 2];
             *depth = sdep ? sdep[slot] : 0.0f;
             return 1.0f;
         }
@@ -2009,18 +2070,18 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *srgb, cons
 }
 
 /* One screen pixel (the pipeline's step 7). */
-FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const float *sdep,
+FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *smp_rgb, const float *sdep,
                               uint32_t px, uint32_t py, float rgb[3], float *depth)
 {
     const fovlp_geometry *g = &ctx->geo;
-    const float *cen = srgb + 3u * (size_t)g->centre_slot;
+    const float *cen = smp_rgb + 3u * (size_t)g->centre_slot;
     float cdep = sdep ? sdep[g->centre_slot] : 0.0f;
     float dx = (float)px + 0.5f - ctx->gaze.x, dy = (float)py + 0.5f - ctx->gaze.y;
     float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
         size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_cols + (px - g->disc_x0);
-        rgb[0] = srgb[3 * slot]; rgb[1] = srgb[3 * slot + 1]; rgb[2] = srgb[3 * slot + 2];
+        rgb[0] = smp_rgb[3 * slot]; rgb[1] = smp_rgb[3 * slot + 1]; rgb[2] = smp_rgb[3 * slot + 2];
         *depth = sdep ? sdep[slot] : 0.0f;
         return;
     }
@@ -2028,7 +2089,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
     fovlp__to_lp_fast(ctx, dx, dy, r2, &uc, &vc);
     edge = fov__minf(fov__minf((float)px + 0.5f, (float)g->width - (float)px - 0.5f),
                        fov__minf((float)py + 0.5f, (float)g->height - (float)py - 0.5f));
-    if (!(fovlp__lp_lookup(ctx, srgb, sdep, uc, vc, edge, rgb, depth) > 0.0f)) {
+    if (!(fovlp__lp_lookup(ctx, smp_rgb, sdep, uc, vc, edge, rgb, depth) > 0.0f)) {
         rgb[0] = cen[0]; rgb[1] = cen[1]; rgb[2] = cen[2];
         *depth = cdep;
         return;
@@ -2048,7 +2109,7 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *srgb, const flo
                 float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
                 float rin = FOV__SQRT(ex * ex + ey * ey);
                 float t = ctx->rho[0] > rin ? fov__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
-                const float *q = srgb + 3u * slot;
+                const float *q = smp_rgb + 3u * slot;
                 rgb[0] = fovlp__lerp(q[0], rgb[0], t);
                 rgb[1] = fovlp__lerp(q[1], rgb[1], t);
                 rgb[2] = fovlp__lerp(q[2], rgb[2], t);
@@ -2274,6 +2335,18 @@ FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx
     }
 }
 
+FOVLP_API void fovlp_taa_io_init(fovlp_taa_io *io)
+{
+    if (!io) return;
+    io->cur_rgb = NULL; io->cur_depth = NULL; io->prev_rgb = NULL; io->prev_depth = NULL;
+    io->prev_age = NULL; io->out_rgb = NULL; io->out_depth = NULL; io->out_age = NULL;
+}
+
+FOVLP_API void fovlp_taa_stats_init(fovlp_taa_stats *stats)
+{
+    if (stats) FOV_MEMSET(stats, 0, sizeof *stats);
+}
+
 FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io, uint32_t y0,
                                     uint32_t y1, fovlp_taa_stats *stats)
 {
@@ -2380,6 +2453,115 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             }
             io->out_age[i] = (uint8_t)(periph ? 1u : age);
         }
+    return FOV_OK;
+}
+
+/* ---- 8-bit sRGB output ----------------------------------------------------------------------- */
+/* The exact encoding without math functions. t[k] (k = 0 .. 254) is the bit pattern of the
+   smallest float x with round(255 srgb(x)) >= k + 1, srgb the IEC 61966-2-1 curve in exact
+   arithmetic (computed offline with 60-digit decimals; tests/test_fovlp_srgb8.c recomputes
+   every boundary in double). For x >= 0 the bit patterns of floats are ordered like the
+   floats, so the code of x is the number of t[k] <= bits(x). s[b] starts the count for the
+   bucket b of bits(x) in [2^-13, 1) (exponent and 5 mantissa bits: 13 x 32 buckets, the code
+   at the bucket's lower end); at most 3 boundaries lie inside a bucket. */
+FOVLP_API uint8_t fovlp_linear_to_srgb8(float x)
+{
+    static const uint32_t t[255] = {
+        0x391f22b4, 0x39eeb40e, 0x3a46eb61, 0x3a8b3e5e, 0x3ab3070b, 0x3adacfb8, 0x3b014c33, 0x3b153089,
+        0x3b2914df, 0x3b3cf936, 0x3b50f2d1, 0x3b65fb9b, 0x3b7c3403, 0x3b89d060, 0x3b962333, 0x3ba314bd,
+        0x3bb0a731, 0x3bbedcb7, 0x3bcdb76d, 0x3bdd3967, 0x3bed64af, 0x3bfe3b46, 0x3c07df91, 0x3c10f91b,
+        0x3c1a6b32, 0x3c2436c8, 0x3c2e5cc7, 0x3c38de1a, 0x3c43bba4, 0x3c4ef648, 0x3c5a8ee4, 0x3c668654,
+        0x3c72dd71, 0x3c7f950f, 0x3c865702, 0x3c8d148f, 0x3c940396, 0x3c9b247c, 0x3ca277a6, 0x3ca9fd78,
+        0x3cb1b653, 0x3cb9a298, 0x3cc1c2a9, 0x3cca16e3, 0x3cd29fa4, 0x3cdb5d4b, 0x3ce45032, 0x3ced78b5,
+        0x3cf6d72e, 0x3d0035fc, 0x3d051bb4, 0x3d0a1cec, 0x3d0f39d0, 0x3d14728a, 0x3d19c745, 0x3d1f382c,
+        0x3d24c567, 0x3d2a6f22, 0x3d303584, 0x3d3618b7, 0x3d3c18e4, 0x3d423632, 0x3d4870ca, 0x3d4ec8d2,
+        0x3d553e73, 0x3d5bd1d3, 0x3d628318, 0x3d69526a, 0x3d703fee, 0x3d774bca, 0x3d7e7624, 0x3d82df90,
+        0x3d869372, 0x3d8a56cb, 0x3d8e29ab, 0x3d920c27, 0x3d95fe4f, 0x3d9a0035, 0x3d9e11ec, 0x3da23384,
+        0x3da66510, 0x3daaa6a0, 0x3daef847, 0x3db35a15, 0x3db7cc1b, 0x3dbc4e6b, 0x3dc0e114, 0x3dc58429,
+        0x3dca37b9, 0x3dcefbd6, 0x3dd3d08f, 0x3dd8b5f5, 0x3dddac19, 0x3de2b30a, 0x3de7cad9, 0x3decf395,
+        0x3df22d50, 0x3df77817, 0x3dfcd3fc, 0x3e012087, 0x3e03dfae, 0x3e06a77b, 0x3e0977f6, 0x3e0c5126,
+        0x3e0f3314, 0x3e121dc5, 0x3e151143, 0x3e180d95, 0x3e1b12c2, 0x3e1e20d1, 0x3e2137cb, 0x3e2457b6,
+        0x3e278099, 0x3e2ab27d, 0x3e2ded68, 0x3e313161, 0x3e347e70, 0x3e37d49c, 0x3e3b33ec, 0x3e3e9c67,
+        0x3e420e15, 0x3e4588fb, 0x3e490d22, 0x3e4c9a90, 0x3e50314c, 0x3e53d15d, 0x3e577aca, 0x3e5b2d9a,
+        0x3e5ee9d4, 0x3e62af7e, 0x3e667e9f, 0x3e6a573e, 0x3e6e3962, 0x3e722511, 0x3e761a52, 0x3e7a192c,
+        0x3e7e21a5, 0x3e8119e2, 0x3e8327c7, 0x3e853a86, 0x3e875222, 0x3e896e9d, 0x3e8b8ffc, 0x3e8db641,
+        0x3e8fe170, 0x3e92118b, 0x3e944696, 0x3e968095, 0x3e98bf89, 0x3e9b0377, 0x3e9d4c62, 0x3e9f9a4c,
+        0x3ea1ed38, 0x3ea4452b, 0x3ea6a226, 0x3ea9042e, 0x3eab6b44, 0x3eadd76d, 0x3eb048aa, 0x3eb2bf00,
+        0x3eb53a71, 0x3eb7bb00, 0x3eba40b1, 0x3ebccb85, 0x3ebf5b81, 0x3ec1f0a7, 0x3ec48af9, 0x3ec72a7c,
+        0x3ec9cf32, 0x3ecc791e, 0x3ecf2842, 0x3ed1dca2, 0x3ed49641, 0x3ed75521, 0x3eda1946, 0x3edce2b2,
+        0x3edfb168, 0x3ee2856a, 0x3ee55ebd, 0x3ee83d63, 0x3eeb215d, 0x3eee0ab1, 0x3ef0f95f, 0x3ef3ed6b,
+        0x3ef6e6d8, 0x3ef9e5a8, 0x3efce9de, 0x3efff37e, 0x3f018145, 0x3f030b82, 0x3f049877, 0x3f062827,
+        0x3f07ba92, 0x3f094fb9, 0x3f0ae79f, 0x3f0c8244, 0x3f0e1faa, 0x3f0fbfd2, 0x3f1162be, 0x3f13086e,
+        0x3f14b0e4, 0x3f165c22, 0x3f180a29, 0x3f19bafa, 0x3f1b6e96, 0x3f1d24ff, 0x3f1ede36, 0x3f209a3c,
+        0x3f225913, 0x3f241abc, 0x3f25df38, 0x3f27a689, 0x3f2970af, 0x3f2b3dad, 0x3f2d0d83, 0x3f2ee032,
+        0x3f30b5bd, 0x3f328e24, 0x3f346968, 0x3f36478b, 0x3f38288f, 0x3f3a0c73, 0x3f3bf33a, 0x3f3ddce5,
+        0x3f3fc975, 0x3f41b8eb, 0x3f43ab48, 0x3f45a08f, 0x3f4798bf, 0x3f4993db, 0x3f4b91e3, 0x3f4d92d8,
+        0x3f4f96bd, 0x3f519d92, 0x3f53a758, 0x3f55b411, 0x3f57c3be, 0x3f59d65f, 0x3f5bebf7, 0x3f5e0486,
+        0x3f60200e, 0x3f623e90, 0x3f64600c, 0x3f668485, 0x3f68abfb, 0x3f6ad670, 0x3f6d03e5, 0x3f6f345a,
+        0x3f7167d2, 0x3f739e4d, 0x3f75d7cc, 0x3f781451, 0x3f7a53dd, 0x3f7c9671, 0x3f7edc0e
+    };
+    static const uint8_t s[416] = {
+        0,0,0,0,0,0,0,0,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,
+        1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,
+        1,1,1,1,1,1,1,1,2,2,2,2,2,2,2,2,2,2,2,2,2,2,2,2,2,2,
+        2,2,2,2,3,3,3,3,3,3,3,3,3,3,3,3,3,3,3,3,3,4,4,4,4,4,
+        4,4,4,4,4,5,5,5,5,5,5,5,5,5,5,6,6,6,6,6,6,6,6,6,6,7,
+        7,7,7,7,8,8,8,8,8,9,9,9,9,9,10,10,10,10,10,11,11,11,11,11,12,12,
+        12,12,12,12,13,13,13,14,14,14,15,15,15,16,16,16,16,17,17,17,18,18,18,18,19,19,
+        19,19,20,20,20,20,21,21,21,21,22,22,23,23,23,24,24,25,25,25,26,26,27,27,27,28,
+        28,29,29,29,30,30,30,31,31,31,32,32,32,33,33,33,34,34,35,35,36,36,37,38,38,39,
+        39,40,40,41,41,42,42,43,43,44,44,45,45,46,46,46,47,47,48,48,49,49,49,50,51,52,
+        53,53,54,55,56,56,57,58,58,59,60,60,61,62,62,63,64,64,65,66,66,67,67,68,68,69,
+        70,70,71,72,73,74,75,76,77,78,79,80,81,82,83,84,85,85,86,87,88,89,90,91,91,92,
+        93,94,95,95,96,97,98,98,99,101,102,103,105,106,107,109,110,111,113,114,115,116,118,119,120,121,
+        122,123,124,126,127,128,129,130,131,132,133,134,135,136,137,139,141,143,145,146,148,150,152,153,155,157,
+        158,160,162,163,165,166,168,169,171,172,174,175,177,178,179,181,182,184,185,186,188,190,193,195,198,200,
+        202,205,207,209,212,214,216,218,220,223,225,227,229,231,233,235,237,239,240,242,244,246,248,250,251,253
+    };
+    union { float f; uint32_t u; } b;
+    uint32_t c;
+    b.f = x;
+    if (b.u >= 0x3f800000u) return b.u <= 0x7f800000u ? 255u : 0u; /* >= 1, +inf; NaN, < 0 */
+    if (b.u < t[0]) return 0u;                               /* below the first boundary, +0 */
+    c = s[(b.u - 0x39000000u) >> 18];                          /* t[0] > 2^-13 = 0x39000000 */
+    while (c < 255u && b.u >= t[c]) ++c;
+    return (uint8_t)c;
+}
+
+FOVLP_API fov_result fovlp_srgb8_rows(const fovlp_ctx *ctx, const float *rgb, uint32_t rgb_stride,
+                                      uint32_t y0, uint32_t y1, uint8_t *out, uint32_t out_stride,
+                                      uint32_t channels)
+{
+    uint32_t W, H, x, y, is, os;
+    if (!ctx || !rgb || !out) return FOV_ERR_NULL;
+    W = ctx->geo.width; H = ctx->geo.height;
+    if (!W || !H)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "srgb8_rows: ctx has no screen size (call fovlp_init first)");
+    if (channels != 3u && channels != 4u)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "srgb8_rows: channels must be 3 (RGB) or 4 (RGBA, alpha 255)");
+    if (y0 > y1 || y1 > H)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "srgb8_rows: rows [y0, y1) must satisfy y0 <= y1 <= height");
+    is = rgb_stride ? rgb_stride : 3u * W;
+    os = out_stride ? out_stride : channels * W;
+    if (is < 3u * W)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "srgb8_rows: rgb_stride must be 0 or at least 3 * width floats");
+    if (os < channels * W)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "srgb8_rows: out_stride must be 0 or at least channels * width bytes");
+    for (y = y0; y < y1; ++y) {
+        const float *p = rgb + (size_t)y * is;
+        uint8_t *q = out + (size_t)y * os;
+        for (x = 0; x < W; ++x, p += 3, q += channels) {
+            q[0] = fovlp_linear_to_srgb8(p[0]);
+            q[1] = fovlp_linear_to_srgb8(p[1]);
+            q[2] = fovlp_linear_to_srgb8(p[2]);
+            if (channels == 4u) q[3] = 255u;
+        }
+    }
     return FOV_OK;
 }
 

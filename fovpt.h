@@ -7,6 +7,7 @@
 QUICK START
       #define FOVPT_IMPLEMENTATION
       #include "fovpt.h"
+      #include <stdlib.h>                             // malloc
 
       fovpt_material mat[2];  fovpt_material_init(&mat[0]);  fovpt_material_init(&mat[1]);
       mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 4.0f;   // a lamp
@@ -22,7 +23,9 @@ QUICK START
       fovpt_ctx ctx;  fov_gaze gaze = { 160.0f, 120.0f };
       if (fovpt_init(&ctx, &cfg, &scene, &cam, gaze, malloc(cb), cb) != FOV_OK) ...
       fovpt_output out;  fovpt_output_init(&out);  out.rgb8 = pixels;   // 320*240*3 bytes
-      fovpt_render(&ctx, 0, &out, NULL);              // frame 0; or trace/resolve by rows
+      fovpt_stats st;    fovpt_stats_init(&st);       // counters, optional (NULL: none)
+      fovpt_render(&ctx, 0, &out, &st);               // frame 0; or trace/resolve by rows
+   st adds up over calls (every frame's rays, until fovpt_stats_init clears it).
 
    See examples/pt_basic.c for a complete program.
 
@@ -203,9 +206,9 @@ ERRORS AND LOGGING
 THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
    context whose settings are read-only; fovpt_trace_rows on disjoint row ranges may run on
-   as many threads as you like (each with its own fovpt_stats), then, after all of them,
-   fovpt_refine_rows (SELECTIVE, JIN) and after that fovpt_resolve_rows, each on disjoint
-   rows. Results do not depend on the split.
+   as many threads as you like (each with its own fovpt_stats, summed by fovpt_stats_add),
+   then, after all of them, fovpt_refine_rows (SELECTIVE, JIN) and after that
+   fovpt_resolve_rows, each on disjoint rows. Results do not depend on the split.
 
 NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
@@ -667,7 +670,8 @@ typedef struct fovpt_temporal_cfg {
                                0: 0.9, 0.8, 0.7, 0.5, 0.2, 0.1 */
 } fovpt_temporal_cfg;
 
-/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field);
+   fovpt_config_default() gives the same settings filled in (and no g++ -Wextra warning). */
 typedef struct fovpt_config {
     uint32_t method;        /* fovpt_method                                      0: uniform */
     uint32_t mode;          /* fovpt_mode                                        0: path */
@@ -726,6 +730,24 @@ typedef struct fovpt_output {
     uint8_t *rgb8;  uint32_t rgb8_stride;   /* sRGB-encoded 8-bit RGB, clamped */
 } fovpt_output;
 
+/* Counters. No function resets them: every function that takes a fovpt_stats * (NULL: not
+   counted) adds its own counts to what the struct holds, so they accumulate across calls,
+   rows and frames until you clear them with fovpt_stats_init (all zero; `= {0}` is the same
+   in C but warns under g++ -Wextra). fovpt_init, fovpt_set_view and fovpt_reset (which may
+   reset the image's accumulation, never the counters) and fovpt_resolve_rows leave them.
+     fovpt_trace_rows   samples and camera_rays of its rows, the bounce and shadow rays of
+                        their paths, rays, bad_samples; LAYERS, ZONES: layer_targets and
+                        layer_samples; SELECTIVE, JIN: the presamples (one per pixel).
+     fovpt_refine_rows  SELECTIVE, JIN: the extra samples with their rays (samples,
+                        camera_rays, ...), problematic, extra_samples, reused; other
+                        methods: nothing.
+     fovpt_render       both, for the whole image: the same as the two calls.
+     fovpt_radiance     bounce_rays, shadow_rays, rays (their sum) and bad_samples of the one
+                        path; the ray you pass is yours: not in samples, camera_rays or rays.
+   After any sequence of these calls rays = camera_rays + bounce_rays + shadow_rays.
+   Rendering the same frame twice into one struct (the same frame index, no fovpt_set_view
+   between) doubles every count. With threads give each its own struct and sum them with
+   fovpt_stats_add. */
 typedef struct fovpt_stats {
     uint64_t samples;         /* camera samples */
     uint64_t rays;            /* every ray: camera + bounce + shadow */
@@ -817,7 +839,8 @@ FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const 
                                const float wi[3], float fcos[3], float *pdf);
 
 /* Radiance arriving at org from direction dir (the estimator of the path or Whitted mode of
-   a resolved config). Non-finite results are replaced by 0 (counted in stats). */
+   a resolved config). Non-finite results are replaced by 0 (counted in stats, which is
+   added to: see fovpt_stats). */
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *resolved,
                                     const float org[3], const float dir[3], fovpt_rng *rng,
                                     float rgb[3], fovpt_stats *stats);
@@ -841,7 +864,9 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg,
    history for reuse and smoothing. */
 FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov_gaze gaze);
 FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx);          /* clears accumulation, history */
-/* Phase 1: trace the samples of rows [y0, y1) for frame `frame` (any rows, any thread). */
+/* Phase 1: trace the samples of rows [y0, y1) for frame `frame` (any rows, any thread).
+   stats (may be NULL) is added to, never reset (see fovpt_stats), here and in the calls
+   below. */
 FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
                                       uint32_t y1, fovpt_stats *stats);
 /* Phase 2 (SELECTIVE, JIN; nothing for the other methods), after every row of the frame is
@@ -852,10 +877,14 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
 /* Phase 3, after every row of the frame is refined: reconstruct rows [y0, y1) into out. */
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1,
                                         const fovpt_output *out);
-/* All phases for the whole image. */
+/* All phases for the whole image. frame (here and in trace / refine) picks the random streams:
+   the same frame index renders the same noise, so give each new frame a new index (the
+   progressive mean of cfg.accumulate converges only over distinct frames). */
 FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
                                   fovpt_stats *stats);
-FOVPT_API void fovpt_output_init(fovpt_output *out);
+FOVPT_API void fovpt_output_init(fovpt_output *out);   /* every pointer NULL, stride 0 */
+FOVPT_API void fovpt_stats_init(fovpt_stats *stats);    /* every counter 0 (see fovpt_stats) */
+FOVPT_API void fovpt_stats_add(fovpt_stats *acc, const fovpt_stats *s);   /* acc += s */
 
 /* Foveation building blocks (exposed for tests and for callers with their own pipeline). */
 /* Catmull-Rom weights of v0..v3 at t in [0, 1] (Axblad 2020, Eq. 3.17, with the t^3
@@ -3158,7 +3187,9 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
                                     const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats)
 {
+    uint64_t before = stats ? stats->bounce_rays + stats->shadow_rays : 0u;
     fov_result r = fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
+    if (stats) stats->rays += stats->bounce_rays + stats->shadow_rays - before;
     if (r != FOV_OK && c) FOVPT__FAIL(&c->logger, r, "radiance: scene, ray or config rejected");
     return r;
 }
@@ -3956,6 +3987,19 @@ FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_ou
 FOVPT_API void fovpt_output_init(fovpt_output *out)
 {
     if (out) FOV_MEMSET(out, 0, sizeof *out);
+}
+
+FOVPT_API void fovpt_stats_init(fovpt_stats *stats)
+{
+    if (stats) FOV_MEMSET(stats, 0, sizeof *stats);
+}
+
+FOVPT_API void fovpt_stats_add(fovpt_stats *acc, const fovpt_stats *s)
+{
+    fovpt_stats t;
+    if (!acc || !s) return;
+    t = *s; /* fovpt__add_stats recomputes t.rays (camera + bounce + shadow) */
+    fovpt__add_stats(acc, &t);
 }
 
 /* ---- foveation building blocks --------------------------------------------------------------- */

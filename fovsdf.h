@@ -8,6 +8,7 @@
 QUICK START
       #define FOVSDF_IMPLEMENTATION
       #include "fovsdf.h"
+      #include <math.h>                                      // sqrtf (also with FOV_NO_LIBM)
 
       static float my_sdf(const float p[3], void *user)      // a unit sphere
       { (void)user; return sqrtf(p[0]*p[0] + p[1]*p[1] + p[2]*p[2]) - 1.0f; }
@@ -20,7 +21,8 @@ QUICK START
       fov_gaze gaze = { 160.0f, 120.0f };
       if (fovsdf_init(&ctx, &cfg, &scene, &cam, gaze, NULL, 0) != FOV_OK) ...
       fovsdf_output out;   fovsdf_output_init(&out);  out.rgb8 = pixels;  // 320*240*3 bytes
-      fovsdf_render_rows(&ctx, 0, 240, &out, NULL);          // split rows over threads if you like
+      fovsdf_stats st;     fovsdf_stats_init(&st);    // counters, optional (NULL: none)
+      fovsdf_render_rows(&ctx, 0, 240, &out, &st);           // split rows over threads if you like
 
    See examples/sdf_basic.c (a complete program) and examples/sdf_scenes.c (the built-in
    scenes, all tracers, written to image files).
@@ -202,7 +204,8 @@ ERRORS AND LOGGING
 THREADING
    No function keeps state between calls except in the objects you pass. fovsdf_init fills a
    context that is read-only afterwards: call fovsdf_render_rows / fovsdf_render_tile on
-   disjoint rows or tiles from as many threads as you like, each with its own fovsdf_stats.
+   disjoint rows or tiles from as many threads as you like, each with its own fovsdf_stats
+   (fovsdf_stats_init, then fovsdf_stats_add them up).
    The head-start methods work on grid-aligned tiles: split the rows at multiples of
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
    image is the same either way).
@@ -568,7 +571,8 @@ typedef struct fovsdf_acuity {
     float outer_deg;  /* p = 0 beyond (0: never) */
 } fovsdf_acuity;
 
-/* Rendering settings. A zero-filled config means "all defaults" (listed per field). */
+/* Rendering settings. A zero-filled config means "all defaults" (listed per field);
+   fovsdf_config_default() gives the same settings filled in (and no g++ -Wextra warning). */
 typedef struct fovsdf_config {
     uint32_t method;        /* fovsdf_method                                       0: classic */
     uint32_t spp;           /* samples per pixel: 1, 4 or 16 (patterns below)      0: 1 */
@@ -893,7 +897,12 @@ typedef struct fovsdf_output {
                                     A zero stride means rows of width - origin_x pixels. */
 } fovsdf_output;
 
-/* Deterministic counters; add them up across threads yourself. */
+/* Deterministic counters. Every function that takes a fovsdf_stats * (render_rows / _tile,
+   trace, shade_point, march, distance, normal, soft_shadow, shade; NULL: not counted) adds
+   to it and none resets it, so one struct can sum a frame's calls, or many frames. Start a
+   count with fovsdf_stats_init (all zero; `fovsdf_stats s = {0};` is the same in C, but
+   warns under g++ -Wextra). With threads give each its own and sum them with
+   fovsdf_stats_add. */
 typedef struct fovsdf_stats {
     uint64_t evals;          /* every distance evaluation */
     uint64_t evals_primary;  /* of primary (camera) rays */
@@ -977,8 +986,9 @@ FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_
 FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
                                   const fovsdf_scene *scene, const fovsdf_camera *cam,
                                   fov_gaze gaze, void *mem, size_t mem_size);
-FOVSDF_API void fovsdf_output_init(fovsdf_output *out);
-FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s);
+FOVSDF_API void fovsdf_output_init(fovsdf_output *out); /* pointers NULL, strides, origin 0 */
+FOVSDF_API void fovsdf_stats_init(fovsdf_stats *stats);   /* every counter 0 */
+FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s); /* acc += s */
 
 /* Rows per band for threading: the head-start methods work on grid-aligned tiles, and a call
    whose rows cut a tile repeats that tile's coarse work. Split the image into row ranges that
@@ -3755,6 +3765,11 @@ FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_
 FOVSDF_API void fovsdf_output_init(fovsdf_output *o)
 {
     if (o) FOV_MEMSET(o, 0, sizeof *o);
+}
+
+FOVSDF_API void fovsdf_stats_init(fovsdf_stats *st)
+{
+    if (st) FOV_MEMSET(st, 0, sizeof *st);
 }
 
 FOVSDF_API void fovsdf_stats_add(fovsdf_stats *a, const fovsdf_stats *s)

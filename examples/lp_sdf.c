@@ -34,14 +34,19 @@ static float srgb(float v)
     return v <= 0.0031308f ? 12.92f * v : 1.055f * powf(v, 1.0f / 2.4f) - 0.055f;
 }
 
-static int write_ppm(const char *path, const float *rgb, uint32_t w, uint32_t h)
+/* a linear float image (3 floats per pixel) as an 8-bit sRGB PPM: fovlp_srgb8_rows encodes */
+static int write_ppm(const char *path, const fovlp_ctx *lp, const float *rgb, uint32_t w, uint32_t h)
 {
-    FILE *f = fopen(path, "wb");
-    size_t i, n = (size_t)w * h * 3;
-    if (!f) return -1;
-    fprintf(f, "P6\n%u %u\n255\n", w, h);
-    for (i = 0; i < n; ++i) fputc((int)(srgb(rgb[i]) * 255.0f + 0.5f), f);
-    return fclose(f);
+    uint8_t *px = (uint8_t *)malloc((size_t)w * h * 3);
+    FILE *f = px ? fopen(path, "wb") : NULL;
+    int ok = f != NULL && fovlp_srgb8_rows(lp, rgb, 0, 0, h, px, 0, 3) == FOV_OK;
+    if (ok) {
+        fprintf(f, "P6\n%u %u\n255\n", w, h);
+        ok = fwrite(px, 1, (size_t)w * h * 3, f) == (size_t)w * h * 3;
+    }
+    if (f && fclose(f) != 0) ok = 0;
+    free(px);
+    return ok ? 0 : -1;
 }
 
 /* PSNR of the sRGB encodings over the pixels with mask[i] == want (mask NULL: all) */
@@ -166,6 +171,7 @@ int main(int argc, char **argv)
         fovlp_reconstruct_rows(&lp, samples, sdepth, 0, H, cur, 0, cdep);
         if (taa) {
             fovlp_taa_io io;
+            fovlp_taa_io_init(&io);
             io.cur_rgb = cur; io.cur_depth = cdep;
             io.prev_rgb = hist[ping]; io.prev_depth = hdep[ping]; io.prev_age = age[ping];
             io.out_rgb = hist[1 - ping]; io.out_depth = hdep[1 - ping]; io.out_age = age[1 - ping];
@@ -180,7 +186,7 @@ int main(int argc, char **argv)
         if (strcmp(out, "-") != 0) {
             char path[512];
             snprintf(path, sizeof path, "%s/lp_%s_%03u.ppm", out, fovsdf_builtin_name(scene), f);
-            if (write_ppm(path, img, W, H) != 0) { fprintf(stderr, "cannot write %s (does the directory exist?)\n", path); return 1; }
+            if (write_ppm(path, &lp, img, W, H) != 0) { fprintf(stderr, "cannot write %s (does the directory exist?)\n", path); return 1; }
         }
         if (check && f == 0) {
             /* fovsdf's own full-resolution render of the same frame */
@@ -190,7 +196,7 @@ int main(int argc, char **argv)
             fovsdf_stats st;
             size_t i;
             double p_disc, p_all;
-            memset(&st, 0, sizeof st);
+            fovsdf_stats_init(&st);
             fovsdf_output_init(&o);
             o.rgb = ref;
             if (!taa) {

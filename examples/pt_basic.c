@@ -21,7 +21,7 @@ int main(int argc, char **argv)
     fovpt_config cfg = fovpt_config_default();
     fovpt_ctx ctx;
     fovpt_output out;
-    fovpt_stats stats = { 0 };
+    fovpt_stats stats;
     fov_gaze gaze = { 160.0f, 120.0f };
     float floor_pt[3] = { 0.0f, 0.0f, 0.0f }, up[3] = { 0.0f, 1.0f, 0.0f };
     size_t scene_bytes = 0, ctx_bytes = 0;
@@ -70,6 +70,7 @@ int main(int argc, char **argv)
     }
     fovpt_output_init(&out);
     out.rgb8 = pixels;
+    fovpt_stats_init(&stats);                           /* counters; every call adds to them */
     fovpt_render(&ctx, 0, &out, &stats);                /* or trace/resolve rows on threads */
 
     for (n = 0; n < ctx.lay.count; ++n)

@@ -22,7 +22,7 @@ int main(int argc, char **argv)
     fovsdf_config cfg = fovsdf_config_default();
     fovsdf_ctx ctx;
     fovsdf_output out;
-    fovsdf_stats stats = { 0 };
+    fovsdf_stats stats;
     fov_gaze gaze = { 160.0f, 120.0f };
     fov_result r;
     if (argc > 1) { /* no options: -h / --help prints the usage (exit 0), anything else exits 2 */
@@ -41,6 +41,7 @@ int main(int argc, char **argv)
     if (r != FOV_OK) { fprintf(stderr, "fovsdf_init: %s\n", fovsdf_result_string(r)); return 1; }
     fovsdf_output_init(&out);
     out.rgb8 = pixels;
+    fovsdf_stats_init(&stats);            /* counters; render calls add to them */
     fovsdf_render_rows(&ctx, 0, 240, &out, &stats);  /* or split rows across threads */
     printf("P6\n320 240\n255\n");
     fwrite(pixels, 1, sizeof pixels, stdout);

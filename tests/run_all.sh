@@ -12,7 +12,7 @@
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     api_stress, versions, style shared refs, unit_metrics unit_metrics_sanitizers
+#     srgb8_fovlp, api_stress, versions, stats, style shared refs, unit_metrics unit_metrics_sanitizers
 #     flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
@@ -121,11 +121,14 @@ fi
 three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c
 three_builds numerics_fovlp tests/test_fovlp_numerics.c
+three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# the counters of the three headers: init functions, and counts that add up across calls
+three_builds stats tests/test_stats.c
 # line length budgets of the headers, and every FOV*__ macro tested by #if defined
 run_section style bash tests/style.sh
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers

@@ -202,7 +202,7 @@ static void lp_shade_const(float x, float y, float rgb[3], float *depth, void *u
 typedef struct lp_env {
     fovlp_ctx ctx;
     void *mem;
-    float *srgb, *sdep;
+    float *rgb, *sdep;
     size_t nslots;
 } lp_env;
 
@@ -216,13 +216,13 @@ static fov_result lp_open(lp_env *e, const fovlp_config *cfg)
     r = fovlp_init(&e->ctx, cfg, e->mem, bytes);
     if (r != FOV_OK) return r;
     e->nslots = e->ctx.geo.samples;
-    e->srgb = img_alloc(3u * e->nslots);
+    e->rgb = img_alloc(3u * e->nslots);
     e->sdep = img_alloc(e->nslots);
     return FOV_OK;
 }
 static void lp_close(lp_env *e)
 {
-    free(e->mem); free(e->srgb); free(e->sdep);
+    free(e->mem); free(e->rgb); free(e->sdep);
     memset(e, 0, sizeof *e);
 }
 
@@ -263,13 +263,15 @@ static void lp_frame_checks(lp_env *e, const char *tag_in, float *img, float *de
               (double)c->gaze.x, (double)c->gaze.y, (double)c->jit_u, (double)c->jit_v, (double)c->geo.r_g,
               (double)c->cfg.alpha, (double)c->cfg.sigma);
     }
-    r = fovlp_shade_rows(c, 0, rows, lp_shade, NULL, e->srgb, e->sdep, &shaded);
+    r = fovlp_shade_rows(c, 0, rows, lp_shade, NULL, e->rgb, e->sdep, &shaded);
     for (i = 0; i < n2; ++i)
-        if (s[i].slot < e->nslots && !(e->srgb[3u * s[i].slot] >= 0.05f && e->srgb[3u * s[i].slot] <= 0.95f)) badv++;
-    check(r == FOV_OK && shaded == n && canary_ok(e->srgb, 3u * e->nslots) && canary_ok(e->sdep, e->nslots) && badv == 0,
+        if (s[i].slot < e->nslots &&
+            !(e->rgb[3u * s[i].slot] >= 0.05f && e->rgb[3u * s[i].slot] <= 0.95f)) badv++;
+    check(r == FOV_OK && shaded == n && canary_ok(e->rgb, 3u * e->nslots) &&
+              canary_ok(e->sdep, e->nslots) && badv == 0,
           N("%s_shade", tag), "r %d shaded %llu of %zu, %zu bad", (int)r, (unsigned long long)shaded, n, badv);
     free(s);
-    r = fovlp_reconstruct_rows(c, e->srgb, e->sdep, 0, H, img, 0, dep);
+    r = fovlp_reconstruct_rows(c, e->rgb, e->sdep, 0, H, img, 0, dep);
     /* reconstruction interpolates shaded colours (convex weights): inside [0.05, 0.95] */
     check(r == FOV_OK && canary_ok(img, 3u * W * H) && canary_ok(dep, (size_t)W * H),
           N("%s_reconstruct", tag), "r %d", (int)r);
@@ -287,7 +289,8 @@ static void lp_frame_checks(lp_env *e, const char *tag_in, float *img, float *de
             if (ty % th == 0)
                 for (tx = W; tx-- > 0 && r == FOV_OK;)
                     if (tx % tw == 0)
-                        r = fovlp_reconstruct_tile(c, e->srgb, e->sdep, tx, ty, tx + tw < W ? tx + tw : W,
+                        r = fovlp_reconstruct_tile(c, e->rgb, e->sdep, tx, ty,
+                                                   tx + tw < W ? tx + tw : W,
                                                    ty + th < H ? ty + th : H, img2, 0, dep2);
         for (q = 0; q < 3u * (size_t)W * H; ++q) diff += memcmp(&img[q], &img2[q], sizeof(float)) != 0;
         for (q = 0; q < (size_t)W * H; ++q) diff += memcmp(&dep[q], &dep2[q], sizeof(float)) != 0;
@@ -296,8 +299,8 @@ static void lp_frame_checks(lp_env *e, const char *tag_in, float *img, float *de
     }
     /* a constant scene reconstructs to that constant everywhere (renormalised convex weights:
        an unshaded slot mixed in would pull a pixel down) */
-    r = fovlp_shade_rows(c, 0, rows, lp_shade_const, NULL, e->srgb, e->sdep, NULL);
-    if (r == FOV_OK) r = fovlp_reconstruct_rows(c, e->srgb, e->sdep, 0, H, img, 0, dep);
+    r = fovlp_shade_rows(c, 0, rows, lp_shade_const, NULL, e->rgb, e->sdep, NULL);
+    if (r == FOV_OK) r = fovlp_reconstruct_rows(c, e->rgb, e->sdep, 0, H, img, 0, dep);
     check(r == FOV_OK && count_bad(img, 3u * (size_t)W * H, 0.8f - 1e-5f, 0.8f + 1e-5f) == 0 &&
               count_bad(dep, (size_t)W * H, 2.0f, 2.0f) == 0,
           N("%s_reconstruct_constant", tag), "r %d: %zu values differ from the constant 0.8, %zu depths from 2", (int)r,
@@ -444,10 +447,10 @@ static void case_lp_bad_input(void)
                 memset(&e, 0, sizeof e);
                 e.ctx = ctx;
                 e.nslots = ctx.geo.samples;
-                e.srgb = img_alloc(3u * e.nslots);
+                e.rgb = img_alloc(3u * e.nslots);
                 e.sdep = img_alloc(e.nslots);
                 lp_frame_checks(&e, N("lp_misaligned_%d", off), img, dep);
-                free(e.srgb); free(e.sdep);
+                free(e.rgb); free(e.sdep);
             }
             free(m2); free(img); free(dep);
         }
@@ -661,13 +664,13 @@ static void case_lp_taa(void)
             r = fovlp_begin_frame(&e.ctx, g, &cam);
             if (!(r == FOV_OK)) { ok = 0; continue; }
             rows = fovlp_sample_rows(&e.ctx);
-            r = fovlp_shade_rows(&e.ctx, 0, rows, lp_shade, NULL, e.srgb, e.sdep, NULL);
+            r = fovlp_shade_rows(&e.ctx, 0, rows, lp_shade, NULL, e.rgb, e.sdep, NULL);
             /* hostile depths in the sample buffer: NaN, inf, negative, zero, huge */
             for (i = 0; i < e.nslots; i += 7u) {
                 static const float vals[5] = { 0.0f, -1.0f, 1e30f, 3.0e38f, 1e-30f };
                 e.sdep[i] = (i / 7u) % 6u == 5u ? f_nan() : ((i / 7u) % 6u == 4u ? f_inf() : vals[(i / 7u) % 5u]);
             }
-            if (r == FOV_OK) r = fovlp_reconstruct_rows(&e.ctx, e.srgb, e.sdep, 0, H, cur, 0, cd);
+            if (r == FOV_OK) r = fovlp_reconstruct_rows(&e.ctx, e.rgb, e.sdep, 0, H, cur, 0, cd);
             /* and in the previous depth */
             for (i = 0; i < W * H; i += 5u) hd[b][i] = (i % 2u) ? f_nan() : -f_inf();
             memset(&io, 0, sizeof io);

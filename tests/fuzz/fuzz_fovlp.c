@@ -249,7 +249,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t bytes = 0, k;
     void *mem;
     uint32_t W, H, frames, f, R, x, y;
-    float *srgb = 0, *sdep = 0, *img = 0, *dep = 0, *img2 = 0, *dep2 = 0, *bl = 0, *bl2 = 0;
+    float *rgb = 0, *sdep = 0, *img = 0, *dep = 0, *img2 = 0, *dep2 = 0, *bl = 0, *bl2 = 0;
     float *hist[2], *hdep[2], *tout2, *tdep2;
     uint8_t *age[2], *tage2;
     fovlp_sample *smp = 0, *smp2 = 0;
@@ -289,7 +289,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check_cfg(&ctx.cfg);
     big = ctx.geo.samples > MAX_SAMPLES_FUZZ;
     if (!big) {
-        srgb = (float *)fz_alloc(sizeof(float) * 3u * ctx.geo.samples, 0);
+        rgb = (float *)fz_alloc(sizeof(float) * 3u * ctx.geo.samples, 0);
         sdep = (float *)fz_alloc(sizeof(float) * ctx.geo.samples, 0);
         smp = (fovlp_sample *)fz_alloc(sizeof(fovlp_sample) * ctx.geo.samples, 0);
         smp2 = (fovlp_sample *)fz_alloc(sizeof(fovlp_sample) * ctx.geo.samples, 0);
@@ -447,17 +447,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             {
                 uint64_t shaded = 0;
                 sc.calls = 0;
-                CALL(fovlp_shade_rows(&ctx, 0, s, shade, &sc, srgb, sdep, &shaded), "shade_rows [0, s)");
+                CALL(fovlp_shade_rows(&ctx, 0, s, shade, &sc, rgb, sdep, &shaded),
+                     "shade_rows [0, s)");
                 FZ_CHECK(res == FOV_OK, "shade_rows: %d", (int)res);
-                CALL(fovlp_shade_rows(&ctx, s, R, shade, &sc, srgb, sdep, &shaded), "shade_rows [s, R)");
+                CALL(fovlp_shade_rows(&ctx, s, R, shade, &sc, rgb, sdep, &shaded),
+                     "shade_rows [s, R)");
                 FZ_CHECK(res == FOV_OK && shaded == cnt && sc.calls == cnt, "shade_rows: %llu shaded, %u calls, %zu samples",
                          (unsigned long long)shaded, sc.calls, cnt);
             }
         }
-        FZ_CHECK(fz_canary_ok(srgb, sizeof(float) * 3u * ctx.geo.samples) && fz_canary_ok(sdep, sizeof(float) * ctx.geo.samples),
+        FZ_CHECK(fz_canary_ok(rgb, sizeof(float) * 3u * ctx.geo.samples) &&
+                     fz_canary_ok(sdep, sizeof(float) * ctx.geo.samples),
                  "shade_rows wrote past the sample buffers");
         vr_init(&sr);
-        for (k = 0; k < cnt; ++k) vr_add(&sr, srgb + 3u * smp[k].slot);
+        for (k = 0; k < cnt; ++k) vr_add(&sr, rgb + 3u * smp[k].slot);
         {
             fovlp_counts cn;
             CALL(fovlp_count_samples(&ctx, &cn), "count_samples");
@@ -471,7 +474,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         {
             int with_depth = (f & 1u) == 0u;
             uint32_t cx = xc % (W + 1u), cy = yc % (H + 1u), t;
-            CALL(fovlp_reconstruct_rows(&ctx, srgb, sdep, 0, H, img, 0, dep), "reconstruct_rows");
+            CALL(fovlp_reconstruct_rows(&ctx, rgb, sdep, 0, H, img, 0, dep), "reconstruct_rows");
             FZ_CHECK(res == FOV_OK, "reconstruct_rows: %d", (int)res);
             FZ_CHECK(fz_canary_ok(img, sizeof(float) * 3u * npix) && fz_canary_ok(dep, sizeof(float) * npix),
                      "reconstruct_rows wrote past the image");
@@ -486,8 +489,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             memset(dep2, 0x77, sizeof(float) * npix);
             for (t = 0; t < 4; ++t) {
                 uint32_t x0 = (t & 1u) ? cx : 0u, x1 = (t & 1u) ? W : cx, y0 = (t & 2u) ? cy : 0u, y1 = (t & 2u) ? H : cy;
-                CALL(fovlp_reconstruct_tile(&ctx, srgb, with_depth ? sdep : NULL, x0, y0, x1, y1, img2, stride2,
-                                            with_depth ? dep2 : NULL), "reconstruct_tile");
+                CALL(fovlp_reconstruct_tile(&ctx, rgb, with_depth ? sdep : NULL, x0, y0, x1, y1,
+                                            img2, stride2, with_depth ? dep2 : NULL),
+                     "reconstruct_tile");
                 FZ_CHECK(res == FOV_OK, "reconstruct_tile: %d", (int)res);
             }
             FZ_CHECK(fz_canary_ok(img2, sizeof(float) * img2_len) && fz_canary_ok(dep2, sizeof(float) * npix),
@@ -501,7 +505,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                                  "tile split changed the depth of pixel (%u, %u)", x, y);
                 }
             free(img2); img2 = 0;
-            CALL(fovlp_reconstruct_tile(&ctx, srgb, sdep, 0, 0, W + 1u, H, img, 0, NULL), "reconstruct_tile out of range");
+            CALL(fovlp_reconstruct_tile(&ctx, rgb, sdep, 0, 0, W + 1u, H, img, 0, NULL),
+                 "reconstruct_tile out of range");
             FZ_CHECK(res == FOV_ERR_INVALID_ARG, "reconstruct_tile accepted x1 = W + 1");
         }
 
@@ -571,7 +576,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_CHECK(fz_canary_ok(mem, bytes), "context memory overwritten");
     }
 
-    free(mem); free(srgb); free(sdep); free(smp); free(smp2); free(img); free(dep); free(dep2); free(bl); free(bl2);
+    free(mem); free(rgb); free(sdep); free(smp); free(smp2); free(img); free(dep); free(dep2);
+    free(bl); free(bl2);
     for (k = 0; k < 2; ++k) { free(hist[k]); free(hdep[k]); free(age[k]); }
     free(tout2); free(tdep2); free(tage2);
     return 0;

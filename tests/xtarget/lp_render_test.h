@@ -14,7 +14,7 @@
 
 #define XT_LP_SAMPLES 8192u
 static uint64_t xt_lp_mem[1024];                    /* 8 KiB of context tables */
-static float xt_lp_srgb[XT_LP_SAMPLES * 3];
+static float xt_lp_rgb[XT_LP_SAMPLES * 3];
 static float xt_lp_sdep[XT_LP_SAMPLES];
 static float xt_lp_img[3][XT_W * XT_H * 3];        /* current, history ping, pong */
 static float xt_lp_dep[3][XT_W * XT_H];
@@ -64,9 +64,11 @@ static int xt_lp_scene(uint32_t id, const char *name, uint32_t preset, int taa_f
     for (f = 0; f < frames; f++) {
         r = fovlp_begin_frame(&ctx, gaze, NULL);
         if (r != FOV_OK) { step = "begin_frame"; goto done; }
-        r = fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), xt_lp_shade, NULL, xt_lp_srgb, xt_lp_sdep, &shaded);
+        r = fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), xt_lp_shade, NULL, xt_lp_rgb,
+                             xt_lp_sdep, &shaded);
         if (r != FOV_OK) { step = "shade_rows"; goto done; }
-        r = fovlp_reconstruct_rows(&ctx, xt_lp_srgb, xt_lp_sdep, 0, XT_H, xt_lp_img[0], 0, xt_lp_dep[0]);
+        r = fovlp_reconstruct_rows(&ctx, xt_lp_rgb, xt_lp_sdep, 0, XT_H, xt_lp_img[0], 0,
+                                   xt_lp_dep[0]);
         if (r != FOV_OK) { step = "reconstruct_rows"; goto done; }
         if (taa_frames > 0) {
             fovlp_taa_io io;
