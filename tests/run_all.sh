@@ -88,6 +88,8 @@ three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# fov_camera: one type, the same defaults and handedness in the three headers, rays agree
+three_builds camera tests/test_camera.c
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
