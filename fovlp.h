@@ -65,10 +65,11 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       the innermost ring without a disc: a blend towards the centre sample (no singularity
       at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
       fovlp_blend_rows).
-   8. TAA in screen space (thesis 3.4): reprojection with the previous and current camera and
-      the shaded depth, depth rejection, history blend 1/age with the age capped at 20
-      (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg (always on while
-      the camera moves, ours), history reset on a gaze jump.
+   8. TAA in screen space (thesis 3.4): reprojection with the previous and current camera
+      (the fov_camera you render with, through fovlp_camera_from) and the shaded depth,
+      depth rejection, history blend 1/age with the age capped at 20 (eq. 3.12), optional
+      neighbourhood clamp or variance clip in YCoCg (always on while the camera moves,
+      ours), history reset on a gaze jump.
 
 CHOICES WHERE THE THESIS IS OPEN OR WRONG (each is tested in tests/test_fovlp.c)
    - atan vs atan2: eq. 3.9's arctan(y'/x') + [y' < 0] 2 pi is only right as atan2; we use

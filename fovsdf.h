@@ -180,7 +180,8 @@ ERRORS AND LOGGING
    fovsdf_result_string() never returns NULL. Bad input (NULL pointers, zero, negative,
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
-   rejected with an error code before any work is done; nothing asserts on data. An optional
+   rejected with an error code before any work is done (an off-axis camera, non-zero
+   cam.tan_left .. tan_top, with FOV_ERR_UNSUPPORTED); nothing asserts on data. An optional
    fov_logger in the config receives a specific message with each error (on by default;
    FOV_NO_ERROR_STRINGS removes the texts).
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
