@@ -33,6 +33,7 @@ QUICK START
                             fovpt_gaze_from_point(&eye[1], gaze_target, &g[1]);   // vergence point
       fovpt_init(&ctx[0], &cfg, &scene, &eye[0], g[0], mem0, cb);   // and eye[1], g[1]
    Each eye's eccentricity is then measured from its own gaze point with its own camera.
+   (The same eyes from one camera: eye_offset = -ipd/2 and +ipd/2, see fov_camera.)
 
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
