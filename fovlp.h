@@ -19,7 +19,8 @@ QUICK START (the library never renders: you shade the positions it hands out)
       uint8_t *rgba = (uint8_t *)malloc(1920 * 1080 * 4);           // what you display
       for (;;) {                                               // every frame
           fov_gaze gaze = { eye_x, eye_y };
-          fovlp_begin_frame(&ctx, gaze, NULL);                 // camera: only for TAA
+          fovlp_camera lc;  fovlp_camera_from(&cam, &lc);       // cam: your fov_camera
+          fovlp_begin_frame(&ctx, gaze, &lc);                  // (NULL: a still camera)
           fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx), my_shade, my_user, rgb, NULL, NULL);
           fovlp_reconstruct_rows(&ctx, rgb, NULL, 0, 1080, img, 0, NULL);
           fovlp_srgb8_rows(&ctx, img, 0, 0, 1080, rgba, 0, 4);  // sRGB bytes, alpha 255
@@ -83,10 +84,11 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       the innermost ring without a disc: a blend towards the centre sample (no singularity
       at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
       fovlp_blend_rows).
-   8. TAA in screen space (thesis Sec. 3.4): reprojection with the previous and current camera and
-      the shaded depth, depth rejection, history blend 1/age with the age capped at 20
-      (eq. 3.12), optional neighbourhood clamp or variance clip in YCoCg (always on while
-      the camera moves, ours), history reset on a gaze jump.
+   8. TAA in screen space (thesis Sec. 3.4): reprojection with the previous and current camera
+      (the fov_camera you render with, through fovlp_camera_from) and the shaded depth,
+      depth rejection, history blend 1/age with the age capped at 20 (eq. 3.12), optional
+      neighbourhood clamp or variance clip in YCoCg (always on while the camera moves,
+      ours), history reset on a gaze jump.
    9. Output: every image is linear RGB in floats (the colour space your shading writes);
       fovlp_srgb8_rows encodes it to 8-bit sRGB (the exact IEC 61966-2-1 curve, correctly
       rounded, the same bytes in every build) for a display texture or an image file.
@@ -370,6 +372,53 @@ typedef struct fov_gaze {
     float x, y;
 } fov_gaze;
 
+/* The camera of all three headers: fovsdf_camera and fovpt_camera are this type, and fovlp's
+   TAA takes it through fovlp_camera_from. A pinhole; lengths in world units (the scene's,
+   whatever they are), angles in degrees, image points in pixels.
+   Frame (right-handed, x the usual cross product):
+       fwd = normalize(target - pos), right = normalize(fwd x up), up' = right x fwd.
+   `right` points to the image's right (x, the column, grows that way) and up' to its top
+   (y, the row, grows downwards: row 0 is the top). For the defaults below (pos (0, 0, 5)
+   looking at the origin, up +y): fwd = -z, right = (-z) x (+y) = +x, up' = (+x) x (-z) = +y,
+   so world +x appears on the image's right and world +y at its top (the textbook view of
+   the xy plane, +z towards the viewer). Turned around (pos (0, 0, -5), or pos 0 and target
+   (0, 0, 1): fwd = +z) the camera has world -x on the image's right.
+   Image points: pixel (i, j) covers [i, i+1) x [j, j+1), its centre is (i + 0.5, j + 0.5),
+   y down (as fov_gaze). The ray through image point (x, y) leaves the pinhole
+   pos + eye_offset * right along
+       fwd + sx right + sy up',  sx = -tl + (tl + tr) x / width,  sy = tt - (tt + tb) y / height
+   with tl = tr = tan(fov_y_deg / 2) width / height and tt = tb = tan(fov_y_deg / 2) when the
+   four tangents are 0 (a symmetric frustum), else tl, tr, tb, tt = tan_left .. tan_top
+   (an off-axis frustum, e.g. an HMD eye's; fov_y_deg is then unused).
+   Which header uses which field:
+       pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
+                                                   size: the TAA uses the fovlp image's)
+       eye_offset                                  all three
+       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
+                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
+                                                   for non-zero ones (their tracers and the
+                                                   TAA reprojection assume a symmetric frustum)
+   The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
+   the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
+   width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
+   target is valid too: up all zero means +y, fov_y_deg 0 means 60. Further limits (sizes,
+   coordinate bounds) are each header's; invalid cameras return FOV_ERR_* from init. */
+typedef struct fov_camera {
+    float pos[3];           /* the camera's position, world units */
+    float target[3];        /* a point it looks at; must differ from pos */
+    float up[3];            /* up hint, any length, need not be orthogonal to the view; all
+                               zero: +y. Must not be parallel to target - pos */
+    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
+    uint32_t width, height; /* image size in pixels, >= 1 */
+    float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
+                               (-ipd/2 for the left eye, +ipd/2 for the right one); the view
+                               axis keeps its direction */
+    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
+                               positive for an edge on that side of the axis (left + right
+                               > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
+} fov_camera;
+
 /* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
    f (in pixels) from the image plane; the axis meets the image at its centre plus
    (axis_dx, axis_dy) pixels. f comes from, in this order:
@@ -522,9 +571,12 @@ typedef struct fovlp_geometry {
     uint32_t samples;       /* slots in a sample buffer: lp_slots + disc_cols disc_rows + 1 */
 } fovlp_geometry;
 
-/* Pinhole camera for TAA reprojection, the same model as fovsdf_camera: screen point (x, y)
-   looks along fwd + ((x / W) 2 - 1) tan_half_y (W / H) right - ((y / H) 2 - 1) tan_half_y up;
-   depth = distance along the unit ray. right, up, fwd: orthonormal (fovsdf_ctx has them). */
+/* The camera for TAA reprojection: the shared fov_camera (see its declaration: frame,
+   handedness, pixel convention) in basis form; fovlp_camera_from fills it from a fov_camera,
+   with exactly the pinhole, frame and tan_half_y fovsdf_init derives from that camera (so it
+   equals fovsdf_ctx's origin, right, up, fwd, tan_half_y bit for bit). Screen point (x, y)
+   looks along fwd + ((x / W) 2 - 1) tan_half_y (W / H) right - ((y / H) 2 - 1) tan_half_y up
+   (W x H the fovlp image); depth = distance along the unit ray. right, up, fwd: orthonormal. */
 typedef struct fovlp_camera {
     float pos[3];
     float right[3], up[3], fwd[3];
@@ -635,6 +687,14 @@ FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes);
 FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *mem,
                                 size_t mem_size);
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
+/* The TAA camera of a fov_camera (the one you render with): pos = the pinhole pos +
+   eye_offset * right, the frame of fov_camera, tan_half_y = tan(fov_y_deg / 2) (fov_y_deg 0:
+   60). The size is not used (the TAA uses the fovlp image's). FOV_ERR_UNSUPPORTED for
+   non-zero tan_left .. tan_top (the reprojection assumes a symmetric frustum); else
+   FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside (0, 180),
+   a pinhole beyond float) or FOV_ERR_DEGENERATE (target == pos, up parallel to the view).
+   out is written only on success. */
+FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out);
 FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
 /* Clear a fovlp_taa_io (every pointer NULL) or fovlp_taa_stats (every counter 0): the same as
    `= {0}` in C, without the missing-initializer warning of g++ -Wextra. */
@@ -1057,6 +1117,58 @@ FOV__PRIV const char *fov__result_string(fov_result r)
     default: return "unknown result code";
     }
 #endif
+}
+
+/* ---- the camera (see fov_camera) -------------------------------------------------------- */
+/* The fov_camera defaults (fovsdf_camera_init, fovpt_camera_init). */
+FOV__PRIV void fov__camera_init(fov_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->pos[2] = 5.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+/* The camera's frame (fovsdf_camera_basis, fovlp_camera_from): fwd, right, up = right x fwd,
+   unit and orthogonal. A tiny (1e-30) or huge (1e30) up hint or view vector is valid (it is
+   prescaled). FOV_ERR_NOT_FINITE for NaN or infinite vectors, FOV_ERR_DEGENERATE for a zero
+   or overflowing view vector or an up hint parallel to it. (fovpt keeps its own version of
+   this, see fovpt__camera_setup.) */
+FOV__PRIV fov_result fov__camera_basis(const fov_camera *cam, float right[3], float up[3],
+                                       float fwd[3])
+{
+    float f[3], u[3], r[3], l;
+    int k;
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
+        return FOV_ERR_NOT_FINITE;
+    for (k = 0; k < 3; ++k) {
+        f[k] = cam->target[k] - cam->pos[k];
+        u[k] = cam->up[k];
+    }
+    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
+    fov__prescale(f);
+    fov__prescale(u);
+    l = fov__len(f); /* after the prescale: 0, infinite (target - pos overflowed) or plain */
+    if (!(l > 0.0f) || !fov__finite(l)) return FOV_ERR_DEGENERATE;
+    f[0] /= l; f[1] /= l; f[2] /= l;
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    fov__cross(f, u, r);
+    l = fov__len(r);
+    if (!(l > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
+    r[0] /= l; r[1] /= l; r[2] /= l;
+    fov__cross(r, f, u);
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    for (k = 0; k < 3; ++k) {
+        right[k] = r[k];
+        up[k] = u[k];
+        fwd[k] = f[k];
+    }
+    return FOV_OK;
 }
 
 /* ---- the eccentricity model (see fov_display) ------------------------------------------- */
@@ -1599,6 +1711,35 @@ FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
             fovlp__neq(a->up[i], b->up[i]) || fovlp__neq(a->fwd[i], b->fwd[i]))
             return 1;
     return fovlp__neq(a->tan_half_y, b->tan_half_y);
+}
+
+FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out)
+{
+    float r[3], u[3], f[3], o[3], fov;
+    fov_result e;
+    int k;
+    if (!cam || !out) return FOV_ERR_NULL;
+    if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) ||
+        !fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
+        !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top))
+        return FOV_ERR_NOT_FINITE;
+    if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
+        !fov__is0(cam->tan_top))
+        return FOV_ERR_UNSUPPORTED;
+    fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
+    if (!(fov > 0.0f && fov < 180.0f)) return FOV_ERR_INVALID_ARG;
+    e = fov__camera_basis(cam, r, u, f);
+    if (e != FOV_OK) return e;
+    for (k = 0; k < 3; ++k) o[k] = cam->pos[k] + r[k] * cam->eye_offset; /* as fovsdf_init */
+    if (!fov__finite3(o)) return FOV_ERR_INVALID_ARG;
+    for (k = 0; k < 3; ++k) {
+        out->pos[k] = o[k];
+        out->right[k] = r[k];
+        out->up[k] = u[k];
+        out->fwd[k] = f[k];
+    }
+    out->tan_half_y = FOV__TAN(0.5f * fov * FOV__DEG);
+    return FOV_OK;
 }
 
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam)

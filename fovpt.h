@@ -17,7 +17,8 @@ QUICK START
       d.shapes = sh; d.num_shapes = 2; d.materials = mat; d.num_materials = 2;
       size_t sb;  fovpt_scene_size(&d, &sb);          // caller memory for the scene + BVH
       fovpt_scene scene;  fovpt_scene_build(&scene, &d, malloc(sb), sb);
-      fovpt_camera cam;   fovpt_camera_init(&cam, 320, 240);  cam.pos[2] = -4.0f;
+      fovpt_camera cam;   fovpt_camera_init(&cam, 320, 240);  // = fov_camera, shared
+      cam.pos[2] = 4.0f;  // from (0,0,4) at the origin: world +x right, +y up in the image
       fovpt_config cfg = fovpt_config_default();      // path tracing, 1 spp, NEE, RR
       size_t cb;  fovpt_memory_size(&cfg, &cam, &cb);
       fovpt_ctx ctx;  fov_gaze gaze = { 160.0f, 120.0f };
@@ -36,6 +37,7 @@ QUICK START
                             fovpt_gaze_from_point(&eye[1], gaze_target, &g[1]);   // vergence point
       fovpt_init(&ctx[0], &cfg, &scene, &eye[0], g[0], mem0, cb);   // and eye[1], g[1]
    Each eye's eccentricity is then measured from its own gaze point with its own camera.
+   (The same eyes from one camera: eye_offset = -ipd/2 and +ipd/2, see fov_camera.)
 
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
@@ -417,6 +419,53 @@ typedef struct fov_gaze {
     float x, y;
 } fov_gaze;
 
+/* The camera of all three headers: fovsdf_camera and fovpt_camera are this type, and fovlp's
+   TAA takes it through fovlp_camera_from. A pinhole; lengths in world units (the scene's,
+   whatever they are), angles in degrees, image points in pixels.
+   Frame (right-handed, x the usual cross product):
+       fwd = normalize(target - pos), right = normalize(fwd x up), up' = right x fwd.
+   `right` points to the image's right (x, the column, grows that way) and up' to its top
+   (y, the row, grows downwards: row 0 is the top). For the defaults below (pos (0, 0, 5)
+   looking at the origin, up +y): fwd = -z, right = (-z) x (+y) = +x, up' = (+x) x (-z) = +y,
+   so world +x appears on the image's right and world +y at its top (the textbook view of
+   the xy plane, +z towards the viewer). Turned around (pos (0, 0, -5), or pos 0 and target
+   (0, 0, 1): fwd = +z) the camera has world -x on the image's right.
+   Image points: pixel (i, j) covers [i, i+1) x [j, j+1), its centre is (i + 0.5, j + 0.5),
+   y down (as fov_gaze). The ray through image point (x, y) leaves the pinhole
+   pos + eye_offset * right along
+       fwd + sx right + sy up',  sx = -tl + (tl + tr) x / width,  sy = tt - (tt + tb) y / height
+   with tl = tr = tan(fov_y_deg / 2) width / height and tt = tb = tan(fov_y_deg / 2) when the
+   four tangents are 0 (a symmetric frustum), else tl, tr, tb, tt = tan_left .. tan_top
+   (an off-axis frustum, e.g. an HMD eye's; fov_y_deg is then unused).
+   Which header uses which field:
+       pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
+                                                   size: the TAA uses the fovlp image's)
+       eye_offset                                  all three
+       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
+                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
+                                                   for non-zero ones (their tracers and the
+                                                   TAA reprojection assume a symmetric frustum)
+   The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
+   the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
+   width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
+   target is valid too: up all zero means +y, fov_y_deg 0 means 60. Further limits (sizes,
+   coordinate bounds) are each header's; invalid cameras return FOV_ERR_* from init. */
+typedef struct fov_camera {
+    float pos[3];           /* the camera's position, world units */
+    float target[3];        /* a point it looks at; must differ from pos */
+    float up[3];            /* up hint, any length, need not be orthogonal to the view; all
+                               zero: +y. Must not be parallel to target - pos */
+    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
+    uint32_t width, height; /* image size in pixels, >= 1 */
+    float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
+                               (-ipd/2 for the left eye, +ipd/2 for the right one); the view
+                               axis keeps its direction */
+    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
+                               positive for an edge on that side of the axis (left + right
+                               > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
+} fov_camera;
+
 /* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
    f (in pixels) from the image plane; the axis meets the image at its centre plus
    (axis_dx, axis_dy) pixels. f comes from, in this order:
@@ -570,21 +619,12 @@ typedef struct fovpt_hit {
 
 /* ==== camera ============================================================================== */
 
-/* Pinhole camera, the same convention as fovsdf_camera: pixel (i, j) centre looks along
-      fwd + ((i + 0.5) / width * 2 - 1) * tan(fov_y/2) * aspect * right
-          - ((j + 0.5) / height * 2 - 1) * tan(fov_y/2) * up
-   fwd = normalize(target - pos), right = normalize(fwd x up_hint), up = right x fwd.
-   An asymmetric frustum (OpenVR GetProjectionRaw) replaces the tangents: when any of
-   tan_left .. tan_top is non-zero, x runs from -tan_left to tan_right and y from tan_top
-   (row 0) down to -tan_bottom (all four > 0 ... as tangents of the half-angles). */
-typedef struct fovpt_camera {
-    float pos[3];
-    float target[3];
-    float up[3];            /* all zero: +y */
-    float fov_y_deg;        /* (0, 180); 0: 60 */
-    uint32_t width, height; /* 1 .. FOVPT_MAX_DIM */
-    float tan_left, tan_right, tan_bottom, tan_top; /* all 0: symmetric fov_y_deg */
-} fovpt_camera;
+/* The shared camera, fov_camera (its declaration documents the frame, handedness, pixel
+   convention and defaults). fovpt uses every field: the off-axis tangents tan_left ..
+   tan_top (an HMD eye's frustum; each within 1e6, left + right and bottom + top > 1e-6) and
+   eye_offset (the pinhole pos + eye_offset * right; fovpt_camera_eyes gives the two eyes of
+   a head camera instead by moving pos and target). Size 1 .. FOVPT_MAX_DIM. */
+typedef fov_camera fovpt_camera;
 
 /* ==== rendering settings =================================================================== */
 
@@ -704,6 +744,7 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     fov_gaze gaze;
     fov_ecc_model ecc;
     float right[3], up[3], fwd[3];
+    float origin[3];          /* the pinhole: cam.pos + cam.eye_offset * right */
     float tx0, tx1, ty0, ty1; /* image-plane tangents: x from tx0 to tx1, y from ty0 (top) */
     float *accum;             /* UNIFORM: 4 floats per pixel: rgb sum, weight */
     /* LAYERS: per layer a lattice grid of 4 floats per point (rgb sum, weight; weight 0 =
@@ -776,8 +817,11 @@ FOVPT_API fovpt_config fovpt_config_default(void);
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
 
+/* The fov_camera defaults (the same as fovsdf_camera_init's: pos (0, 0, 5) looking at the
+   origin, up +y, 60 degrees; world +x on the image's right, +y at its top). */
 FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t height);
-/* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5): dir
+/* The ray through image point (x, y) (pixels, continuous; pixel centres at i + 0.5) from the
+   pinhole pos + eye_offset * right (see fov_camera): dir
    unit and finite. Any finite (x, y) off the image works (x = 1e30 gives the ray along the
    image's right axis) until the image-plane offset overflows: then FOV_ERR_INVALID_ARG
    (this function has no logger; fovpt_init and fovpt_set_view log camera errors). */
@@ -786,13 +830,14 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
 /* Per-eye gaze. The image point of world point p seen by this camera (pixels, continuous;
    it may lie off-screen): the gaze to pass to fovpt_init / fovpt_set_view when an eye
    tracker gives a 3D gaze target (the vergence point). For a gaze direction d of this eye,
-   pass p = cam->pos + d. FOV_ERR_INVALID_ARG when p is not in front of the camera (its depth
-   along the view axis <= 1e-6 of its distance) or projects beyond +-2^24 pixels. */
+   pass p = pinhole + d (the pinhole: cam->pos + cam->eye_offset * right, see fov_camera).
+   FOV_ERR_INVALID_ARG when p is not in front of the camera (its depth along the view axis
+   <= 1e-6 of its distance) or projects beyond +-2^24 pixels. */
 FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3],
                                            fov_gaze *gaze);
 /* Stereo: the two eye cameras of a head camera, eyes[0] left and eyes[1] right: positions
    head->pos -/+ ipd/2 along the head's image-right axis, view axes parallel (targets moved
-   alike), the same up, size, field of view and tangents (set each eye's asymmetric tangents
+   alike), the same up, size, field of view, eye_offset and tangents (set each eye's tangents
    afterwards if the headset gives them, e.g. OpenVR GetProjectionRaw). ipd in scene units,
    finite, >= 0. Axblad 2020 and Kim et al. 2021 render the eyes independently: one context
    per eye, each with
@@ -1245,6 +1290,58 @@ FOV__PRIV const char *fov__result_string(fov_result r)
 #endif
 }
 
+/* ---- the camera (see fov_camera) -------------------------------------------------------- */
+/* The fov_camera defaults (fovsdf_camera_init, fovpt_camera_init). */
+FOV__PRIV void fov__camera_init(fov_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->pos[2] = 5.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+/* The camera's frame (fovsdf_camera_basis, fovlp_camera_from): fwd, right, up = right x fwd,
+   unit and orthogonal. A tiny (1e-30) or huge (1e30) up hint or view vector is valid (it is
+   prescaled). FOV_ERR_NOT_FINITE for NaN or infinite vectors, FOV_ERR_DEGENERATE for a zero
+   or overflowing view vector or an up hint parallel to it. (fovpt keeps its own version of
+   this, see fovpt__camera_setup.) */
+FOV__PRIV fov_result fov__camera_basis(const fov_camera *cam, float right[3], float up[3],
+                                       float fwd[3])
+{
+    float f[3], u[3], r[3], l;
+    int k;
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
+        return FOV_ERR_NOT_FINITE;
+    for (k = 0; k < 3; ++k) {
+        f[k] = cam->target[k] - cam->pos[k];
+        u[k] = cam->up[k];
+    }
+    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
+    fov__prescale(f);
+    fov__prescale(u);
+    l = fov__len(f); /* after the prescale: 0, infinite (target - pos overflowed) or plain */
+    if (!(l > 0.0f) || !fov__finite(l)) return FOV_ERR_DEGENERATE;
+    f[0] /= l; f[1] /= l; f[2] /= l;
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    fov__cross(f, u, r);
+    l = fov__len(r);
+    if (!(l > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
+    r[0] /= l; r[1] /= l; r[2] /= l;
+    fov__cross(r, f, u);
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    for (k = 0; k < 3; ++k) {
+        right[k] = r[k];
+        up[k] = u[k];
+        fwd[k] = f[k];
+    }
+    return FOV_OK;
+}
+
 /* ---- the eccentricity model (see fov_display) ------------------------------------------- */
 FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
                                    uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
@@ -1586,28 +1683,28 @@ FOVPT_API fovpt_config fovpt_config_default(void)
 /* ---- camera ------------------------------------------------------------------------------- */
 FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t height)
 {
-    if (!cam) return;
-    FOV_MEMSET(cam, 0, sizeof *cam);
-    cam->target[2] = 1.0f;
-    cam->up[1] = 1.0f;
-    cam->fov_y_deg = 60.0f;
-    cam->width = width;
-    cam->height = height;
+    fov__camera_init(cam, width, height);
 }
 
-/* Basis and image-plane tangents; validates the camera. */
+/* Basis, image-plane tangents and the pinhole (pos itself when eye_offset is 0, bit for
+   bit); validates the camera. */
 FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], float u[3], float f[3],
-                                           float tan4[4])
+                                           float tan4[4], float org[3])
 {
     float lf, lr, fy;
-    int asym;
+    int asym, k;
     if (!cam) return FOV_ERR_NULL;
     if (cam->width == 0 || cam->height == 0) return FOV_ERR_INVALID_ARG;
     if (cam->width > FOVPT_MAX_DIM || cam->height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
     if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up) ||
         !fov__finite(cam->fov_y_deg) || !fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
-        !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top))
+        !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top) ||
+        !fov__finite(cam->eye_offset))
         return FOV_ERR_NOT_FINITE;
+    /* fovpt's own frame, not fov__camera_basis: it normalises without prescaling first and
+       does not renormalise up = r x f, so on ordinary cameras up differs from the shared
+       frame in the last bit (and r, f too for vectors near 1e-15 or 1e15 long); the shared
+       one would change fovpt's images */
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
     if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
@@ -1621,6 +1718,11 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     lr = fov__normalize(r);
     if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE;
     fov__cross(r, f, u);
+    fovpt__copy3(org, cam->pos);
+    if (!fov__is0(cam->eye_offset)) {
+        for (k = 0; k < 3; ++k) org[k] = cam->pos[k] + cam->eye_offset * r[k];
+        if (!fov__finite3(org)) return FOV_ERR_INVALID_ARG; /* a pinhole beyond FLT_MAX */
+    }
     asym = fov__absf(cam->tan_left) > 0.0f || fov__absf(cam->tan_right) > 0.0f ||
            fov__absf(cam->tan_bottom) > 0.0f || fov__absf(cam->tan_top) > 0.0f;
     if (asym) {
@@ -1656,27 +1758,27 @@ FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float
 
 FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
 {
-    float r[3], u[3], f[3], t4[4];
+    float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
     if (!cam || !org || !dir) return FOV_ERR_NULL;
     if (!fov__finite(x) || !fov__finite(y)) return FOV_ERR_NOT_FINITE;
-    e = fovpt__camera_setup(cam, r, u, f, t4);
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
     if (e != FOV_OK) return e;
     if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f)) return FOV_ERR_INVALID_ARG;
-    fovpt__copy3(org, cam->pos);
+    fovpt__copy3(org, o);
     return FOV_OK;
 }
 
 FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3], fov_gaze *gaze)
 {
-    float r[3], u[3], f[3], t4[4], d[3], z, sx, sy, x, y;
+    float r[3], u[3], f[3], t4[4], o[3], d[3], z, sx, sy, x, y;
     fov_result e;
     if (!cam || !p || !gaze) return FOV_ERR_NULL;
     if (!fov__finite3(p)) return FOV_ERR_NOT_FINITE;
-    e = fovpt__camera_setup(cam, r, u, f, t4);
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
     if (e != FOV_OK) return e;
-    /* invert fovpt__primary: direction f + sx r + sy u through (x, y) */
-    fovpt__sub3(d, p, cam->pos);
+    /* invert fovpt__primary: direction f + sx r + sy u through (x, y), from the pinhole */
+    fovpt__sub3(d, p, o);
     fov__prescale(d); /* a point 1e30 away: the ratios below do not depend on |d| */
     z = fov__dot(d, f);
     if (!(z > 1e-6f * fov__len(d))) return FOV_ERR_INVALID_ARG;
@@ -1692,13 +1794,13 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
 
 FOVPT_API fov_result fovpt_camera_eyes(const fovpt_camera *head, float ipd, fovpt_camera eyes[2])
 {
-    float r[3], u[3], f[3], t4[4];
+    float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
     int k, i;
     if (!head || !eyes) return FOV_ERR_NULL;
     if (!fov__finite(ipd)) return FOV_ERR_NOT_FINITE;
     if (!(ipd >= 0.0f)) return FOV_ERR_INVALID_ARG;
-    e = fovpt__camera_setup(head, r, u, f, t4);
+    e = fovpt__camera_setup(head, r, u, f, t4, o);
     if (e != FOV_OK) return e;
     for (i = 0; i < 2; ++i) {
         float s = (i == 0 ? -0.5f : 0.5f) * ipd;
@@ -3279,19 +3381,19 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam, size_t *bytes)
 {
     fovpt_config c;
-    float r[3], u[3], f[3], t4[4];
+    float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
     if (!cfg || !cam || !bytes) return FOV_ERR_NULL;
     e = fovpt_config_resolve(cfg, &c);
     if (e != FOV_OK) return e;
-    e = fovpt__camera_setup(cam, r, u, f, t4);
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
     return fovpt__ctx_bytes(&c, cam, bytes);
 }
 
 FOVPT__PRIV void fovpt__make_view(const fovpt_ctx *ctx, fovpt_view *v)
 {
-    fovpt__copy3(v->pos, ctx->cam.pos);
+    fovpt__copy3(v->pos, ctx->origin);
     fovpt__copy3(v->right, ctx->right); fovpt__copy3(v->up, ctx->up); fovpt__copy3(v->fwd, ctx->fwd);
     v->tan4[0] = ctx->tx0; v->tan4[1] = ctx->tx1; v->tan4[2] = ctx->ty0; v->tan4[3] = ctx->ty1;
 }
@@ -3383,7 +3485,7 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     if (!scene->prims && scene->num_prims) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
     if (!scene->materials) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
     FOV_MEMSET(ctx, 0, sizeof *ctx);
-    e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4);
+    e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4, ctx->origin);
     if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
     if (!fov__finite(gaze.x) || !fov__finite(gaze.y)) FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "gaze");
     e = fovpt__ctx_bytes(&c, cam, &need);
@@ -3442,12 +3544,12 @@ FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
 
 FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov_gaze gaze)
 {
-    float r[3], u[3], f[3], t4[4];
+    float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
     fovpt_camera old;
     int moved;
     if (!ctx || !cam) return FOV_ERR_NULL;
-    e = fovpt__camera_setup(cam, r, u, f, t4);
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
     if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "camera");
     if (cam->width != ctx->cam.width || cam->height != ctx->cam.height)
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "camera size differs from fovpt_init's");
@@ -3460,6 +3562,7 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
             if (old.pos[k] < cam->pos[k] || old.pos[k] > cam->pos[k] || old.target[k] < cam->target[k] ||
                 old.target[k] > cam->target[k] || old.up[k] < cam->up[k] || old.up[k] > cam->up[k])
                 moved = 1;
+        if (old.eye_offset < cam->eye_offset || old.eye_offset > cam->eye_offset) moved = 1;
         if (t4[0] < ctx->tx0 || t4[0] > ctx->tx0 || t4[2] < ctx->ty0 || t4[2] > ctx->ty0 ||
             t4[1] < ctx->tx1 || t4[1] > ctx->tx1 || t4[3] < ctx->ty1 || t4[3] > ctx->ty1)
             moved = 1;
@@ -3473,17 +3576,20 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
            fovpt_ecc_init, before it touches the layer tables) */
         fov_gaze g0 = ctx->gaze;
         fov_ecc_model ecc0 = ctx->ecc;
-        float r0[3], u0[3], f0[3], tt[4];
+        float r0[3], u0[3], f0[3], o0[3], tt[4];
         fovpt__copy3(r0, ctx->right); fovpt__copy3(u0, ctx->up); fovpt__copy3(f0, ctx->fwd);
+        fovpt__copy3(o0, ctx->origin);
         tt[0] = ctx->tx0; tt[1] = ctx->tx1; tt[2] = ctx->ty0; tt[3] = ctx->ty1;
         ctx->cam = *cam;
         ctx->gaze = gaze;
         fovpt__copy3(ctx->right, r); fovpt__copy3(ctx->up, u); fovpt__copy3(ctx->fwd, f);
+        fovpt__copy3(ctx->origin, o);
         ctx->tx0 = t4[0]; ctx->tx1 = t4[1]; ctx->ty0 = t4[2]; ctx->ty1 = t4[3];
         e = fovpt__ctx_view(ctx);
         if (e != FOV_OK) {
             ctx->cam = old; ctx->gaze = g0; ctx->ecc = ecc0;
             fovpt__copy3(ctx->right, r0); fovpt__copy3(ctx->up, u0); fovpt__copy3(ctx->fwd, f0);
+            fovpt__copy3(ctx->origin, o0);
             ctx->tx0 = tt[0]; ctx->tx1 = tt[1]; ctx->ty0 = tt[2]; ctx->ty1 = tt[3];
             FOVPT__FAIL(&ctx->cfg.logger, e, "set_view: gaze or display geometry (the view is unchanged)");
         }
@@ -3540,7 +3646,7 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
         jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
         st->camera_rays++;
-        (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, st);
+        (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st);
         sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
     }
     st->samples += spp;
@@ -3585,7 +3691,8 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
                 st.camera_rays++;
                 st.samples++;
-                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, P->col, &st, &at);
+                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, P->col, &st,
+                                      &at);
                 P->poid = at.poid; P->soid = at.soid;
                 fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
                 P->sc = (at.psc > 65535u ? 65535u : at.psc) | ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
@@ -3666,7 +3773,7 @@ FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const
     if (!(P->t > 0.0f)) return 0;                                         /* 2. p_cur hits */
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
-    fovpt__madd3(v, ctx->cam.pos, P->t, dir);
+    fovpt__madd3(v, ctx->origin, P->t, dir);
     if (!fovpt__project(&ctx->hist_view[prev], W, H, v, &qx, &qy, &dist)) return 0;
     q = ctx->hist[prev] + 8u * ((size_t)qy * W + qx);
     if (!(q[7] < (float)tc->n_reuse_max)) return 0;                        /* 1. reuse count */
@@ -3755,7 +3862,8 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f * (float)(q & 1u) + 0.5f * u,
                                        (float)y + 0.5f * (float)(q >> 1) + 0.5f * v, dir);
                         st.camera_rays++;
-                        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->cam.pos, dir, &rng, rgb, &st, NULL);
+                        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb,
+                                              &st, NULL);
                         for (k = 0; k < 3; ++k) sub[k] += rgb[k];
                     }
                     for (k = 0; k < 3; ++k) sub[k] /= (float)nsd;
@@ -3904,7 +4012,7 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
     a = fovpt_alpha(&ctx->cfg.temporal, &ctx->cfg.selective, fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f));
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
-    fovpt__madd3(v, ctx->cam.pos, cur[3], dir);
+    fovpt__madd3(v, ctx->origin, cur[3], dir);
     w = a;
     ws = a;
     for (k = 0; k < 3; ++k) acc[k] = a * c[k];

@@ -14,8 +14,8 @@ QUICK START
       { (void)user; return sqrtf(p[0]*p[0] + p[1]*p[1] + p[2]*p[2]) - 1.0f; }
 
       fovsdf_scene scene;  fovsdf_scene_init(&scene);  scene.dist = my_sdf;
-      fovsdf_camera cam;   fovsdf_camera_init(&cam, 320, 240);
-      cam.pos[2] = -3.0f;                                    // looks at the origin
+      fovsdf_camera cam;   fovsdf_camera_init(&cam, 320, 240);  // = fov_camera, shared
+      cam.pos[2] = 3.0f;     // from (0,0,3) at the origin: world +x right, +y up in the image
       fovsdf_config cfg = fovsdf_config_default();           // classic sphere tracing
       fovsdf_ctx ctx;
       fov_gaze gaze = { 160.0f, 120.0f };
@@ -182,7 +182,8 @@ ERRORS AND LOGGING
    fovsdf_result_string() never returns NULL. Bad input (NULL pointers, zero, negative,
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
-   rejected with an error code before any work is done; nothing asserts on data. An optional
+   rejected with an error code before any work is done (an off-axis camera, non-zero
+   cam.tan_left .. tan_top, with FOV_ERR_UNSUPPORTED); nothing asserts on data. An optional
    fov_logger in the config receives a specific message with each error (on by default;
    FOV_NO_ERROR_STRINGS removes the texts).
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
@@ -471,6 +472,53 @@ typedef struct fov_gaze {
     float x, y;
 } fov_gaze;
 
+/* The camera of all three headers: fovsdf_camera and fovpt_camera are this type, and fovlp's
+   TAA takes it through fovlp_camera_from. A pinhole; lengths in world units (the scene's,
+   whatever they are), angles in degrees, image points in pixels.
+   Frame (right-handed, x the usual cross product):
+       fwd = normalize(target - pos), right = normalize(fwd x up), up' = right x fwd.
+   `right` points to the image's right (x, the column, grows that way) and up' to its top
+   (y, the row, grows downwards: row 0 is the top). For the defaults below (pos (0, 0, 5)
+   looking at the origin, up +y): fwd = -z, right = (-z) x (+y) = +x, up' = (+x) x (-z) = +y,
+   so world +x appears on the image's right and world +y at its top (the textbook view of
+   the xy plane, +z towards the viewer). Turned around (pos (0, 0, -5), or pos 0 and target
+   (0, 0, 1): fwd = +z) the camera has world -x on the image's right.
+   Image points: pixel (i, j) covers [i, i+1) x [j, j+1), its centre is (i + 0.5, j + 0.5),
+   y down (as fov_gaze). The ray through image point (x, y) leaves the pinhole
+   pos + eye_offset * right along
+       fwd + sx right + sy up',  sx = -tl + (tl + tr) x / width,  sy = tt - (tt + tb) y / height
+   with tl = tr = tan(fov_y_deg / 2) width / height and tt = tb = tan(fov_y_deg / 2) when the
+   four tangents are 0 (a symmetric frustum), else tl, tr, tb, tt = tan_left .. tan_top
+   (an off-axis frustum, e.g. an HMD eye's; fov_y_deg is then unused).
+   Which header uses which field:
+       pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
+                                                   size: the TAA uses the fovlp image's)
+       eye_offset                                  all three
+       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
+                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
+                                                   for non-zero ones (their tracers and the
+                                                   TAA reprojection assume a symmetric frustum)
+   The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
+   the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
+   width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
+   target is valid too: up all zero means +y, fov_y_deg 0 means 60. Further limits (sizes,
+   coordinate bounds) are each header's; invalid cameras return FOV_ERR_* from init. */
+typedef struct fov_camera {
+    float pos[3];           /* the camera's position, world units */
+    float target[3];        /* a point it looks at; must differ from pos */
+    float up[3];            /* up hint, any length, need not be orthogonal to the view; all
+                               zero: +y. Must not be parallel to target - pos */
+    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
+    uint32_t width, height; /* image size in pixels, >= 1 */
+    float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
+                               (-ipd/2 for the left eye, +ipd/2 for the right one); the view
+                               axis keeps its direction */
+    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
+                               positive for an edge on that side of the axis (left + right
+                               > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
+} fov_camera;
+
 /* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
    f (in pixels) from the image plane; the axis meets the image at its centre plus
    (axis_dx, axis_dy) pixels. f comes from, in this order:
@@ -661,23 +709,15 @@ typedef enum fovsdf_finish {
 
 /* ==== camera ============================================================================== */
 
-/* Pinhole camera. Pixel (i, j) centre looks along
-      fwd + ((i + 0.5) / width * 2 - 1) * tan(fov_y/2) * aspect * right
-          - ((j + 0.5) / height * 2 - 1) * tan(fov_y/2) * up
-   with fwd = normalize(target - pos), right = normalize(fwd x up_hint) and up = right x fwd
-   (a right-handed world: with up_hint +y and fwd +z, right is -x ... see fovsdf_camera_basis).
-   eye_offset moves the pinhole along `right` by that many world units (stereo: -ipd/2 for
-   the left eye, +ipd/2 for the right one; render each eye with its own context). pos,
-   eye_offset and the pinhole they give lie within 1e18 of the origin (per component;
-   fovsdf_init rejects more with FOV_ERR_INVALID_ARG, see NUMERICS). */
-typedef struct fovsdf_camera {
-    float pos[3];           /* pinhole position, world units */
-    float target[3];        /* a point the camera looks at (must differ from pos) */
-    float up[3];            /* up hint; all zero: +y. Must not be parallel to target - pos */
-    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
-    uint32_t width, height; /* image size in pixels, 1 .. FOVSDF_MAX_DIM */
-    float eye_offset;       /* stereo offset along the right axis, world units */
-} fovsdf_camera;
+/* The shared camera, fov_camera (its declaration documents the frame, handedness, pixel
+   convention and defaults). fovsdf uses every field but the off-axis tangents: non-zero
+   tan_left .. tan_top make fovsdf_init return FOV_ERR_UNSUPPORTED (the pixel-cone thresholds
+   and the head-start tracers assume a symmetric frustum). Limits: width and height 1 ..
+   FOVSDF_MAX_DIM; pos, eye_offset and the pinhole pos + eye_offset * right lie within 1e18
+   of the origin (per component; fovsdf_init rejects more with FOV_ERR_INVALID_ARG, see
+   NUMERICS). Stereo: eye_offset -ipd/2 for the left eye, +ipd/2 for the right one; render
+   each eye with its own context. */
+typedef fov_camera fovsdf_camera;
 
 /* ==== scenes ============================================================================== */
 
@@ -956,7 +996,10 @@ FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5
                                                               4096 steps */
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
 
-/* Camera and scene helpers */
+/* Camera and scene helpers. fovsdf_camera_init sets the fov_camera defaults (the same as
+   fovpt_camera_init's: pos (0, 0, 5) looking at the origin, up +y, 60 degrees; world +x on
+   the image's right, +y at its top). fovsdf_camera_basis gives the camera's frame (see
+   fov_camera; the one fovsdf_init uses): right, up, fwd unit and orthogonal. */
 FOVSDF_API void fovsdf_camera_init(fovsdf_camera *cam, uint32_t width, uint32_t height);
 FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[3],
                                           float up[3], float fwd[3]);
@@ -1479,6 +1522,58 @@ FOV__PRIV const char *fov__result_string(fov_result r)
 #endif
 }
 
+/* ---- the camera (see fov_camera) -------------------------------------------------------- */
+/* The fov_camera defaults (fovsdf_camera_init, fovpt_camera_init). */
+FOV__PRIV void fov__camera_init(fov_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->pos[2] = 5.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+/* The camera's frame (fovsdf_camera_basis, fovlp_camera_from): fwd, right, up = right x fwd,
+   unit and orthogonal. A tiny (1e-30) or huge (1e30) up hint or view vector is valid (it is
+   prescaled). FOV_ERR_NOT_FINITE for NaN or infinite vectors, FOV_ERR_DEGENERATE for a zero
+   or overflowing view vector or an up hint parallel to it. (fovpt keeps its own version of
+   this, see fovpt__camera_setup.) */
+FOV__PRIV fov_result fov__camera_basis(const fov_camera *cam, float right[3], float up[3],
+                                       float fwd[3])
+{
+    float f[3], u[3], r[3], l;
+    int k;
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
+        return FOV_ERR_NOT_FINITE;
+    for (k = 0; k < 3; ++k) {
+        f[k] = cam->target[k] - cam->pos[k];
+        u[k] = cam->up[k];
+    }
+    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
+    fov__prescale(f);
+    fov__prescale(u);
+    l = fov__len(f); /* after the prescale: 0, infinite (target - pos overflowed) or plain */
+    if (!(l > 0.0f) || !fov__finite(l)) return FOV_ERR_DEGENERATE;
+    f[0] /= l; f[1] /= l; f[2] /= l;
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    fov__cross(f, u, r);
+    l = fov__len(r);
+    if (!(l > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
+    r[0] /= l; r[1] /= l; r[2] /= l;
+    fov__cross(r, f, u);
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    for (k = 0; k < 3; ++k) {
+        right[k] = r[k];
+        up[k] = u[k];
+        fwd[k] = f[k];
+    }
+    return FOV_OK;
+}
+
 /* ---- the eccentricity model (see fov_display) ------------------------------------------- */
 FOV__PRIV fov_result fov__ecc_init(fov_ecc_model *m, const fov_display *d, float cam_fov_y_deg,
                                    uint32_t width, uint32_t height, fov_gaze gaze, uint32_t max_dim)
@@ -1774,41 +1869,14 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
 /* ---- camera, scene defaults, eccentricity -------------------------------------------------- */
 FOVSDF_API void fovsdf_camera_init(fovsdf_camera *cam, uint32_t width, uint32_t height)
 {
-    if (!cam) return;
-    FOV_MEMSET(cam, 0, sizeof *cam);
-    cam->pos[2] = -5.0f;
-    cam->up[1] = 1.0f;
-    cam->fov_y_deg = 60.0f;
-    cam->width = width;
-    cam->height = height;
+    fov__camera_init(cam, width, height);
 }
 
 FOVSDF_API fov_result fovsdf_camera_basis(const fovsdf_camera *cam, float right[3], float up[3],
                                           float fwd[3])
 {
-    float f[3], u[3], r[3], lf, lr;
     if (!cam || !right || !up || !fwd) return FOV_ERR_NULL;
-    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
-        return FOV_ERR_NOT_FINITE;
-    f[0] = cam->target[0] - cam->pos[0];
-    f[1] = cam->target[1] - cam->pos[1];
-    f[2] = cam->target[2] - cam->pos[2];
-    u[0] = cam->up[0]; u[1] = cam->up[1]; u[2] = cam->up[2];
-    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
-    fov__prescale(f); /* a tiny (1e-30) or huge (1e30) up hint or view vector is valid */
-    fov__prescale(u);
-    lf = fovsdf__normalize(f);
-    if (!(lf > 0.0f) || !fov__finite(lf) || !fov__finite3(f)) return FOV_ERR_DEGENERATE;
-    if (!(fovsdf__normalize(u) > 0.0f) || !fov__finite3(u)) return FOV_ERR_DEGENERATE;
-    fov__cross(f, u, r);
-    lr = fovsdf__normalize(r);
-    if (!(lr > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
-    fov__cross(r, f, u);
-    fovsdf__normalize(u);
-    right[0] = r[0]; right[1] = r[1]; right[2] = r[2];
-    up[0] = u[0]; up[1] = u[1]; up[2] = u[2];
-    fwd[0] = f[0]; fwd[1] = f[1]; fwd[2] = f[2];
-    return FOV_OK;
+    return fov__camera_basis(cam, right, up, fwd);
 }
 
 FOVSDF_API void fovsdf_scene_init(fovsdf_scene *s)
@@ -3822,6 +3890,10 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: image larger than FOVSDF_MAX_DIM");
     if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) || !fov__finite(gaze.x) || !fov__finite(gaze.y))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
+    if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
+        !fov__is0(cam->tan_top))
+        FOVSDF__FAIL(lg, FOV_ERR_UNSUPPORTED,
+                     "init: cam.tan_left .. tan_top must be 0 (symmetric frusta only)");
     fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
     r = fovsdf_camera_basis(cam, rt, up, fw);

@@ -242,7 +242,7 @@ static void moving_seq(FILE *mcsv, uint32_t id, const fovsdf_config *scfg, uint3
         bi.camera.pos[0] = base_pos[0] + 0.04f * (float)f;
         bi.camera.target[0] = base_tgt[0] + 0.04f * (float)f;
         fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gz, NULL, 0);
-        cam = lpsdf_camera(&sdf);
+        fovlp_camera_from(&bi.camera, &cam); /* the camera fovsdf_init just took */
         for (v = 0; v < NVAR; ++v) {
             fovlp_begin_frame(&lp[v], gz, &cam);
             if (f < 0) fovlp_reset_history(&lp[v]); /* warm-up: frame 0 is a moving frame */
@@ -379,7 +379,8 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
         float *smp, *sd, *cur, *cd, *hist[2], *hd[2];
         uint8_t *ag[2];
         int f, ping = 0, nfr = v == 0 ? 16 : 20;
-        fovlp_camera cam = lpsdf_camera(&sdf);
+        fovlp_camera cam;
+        fovlp_camera_from(&bi.camera, &cam); /* the camera of open_scene's fovsdf_init */
         lc.cam_fov_y_deg = bi.camera.fov_y_deg;
         lc.taa.enable = 1;
         lc.taa.clamp = v == 2 ? (uint32_t)FOVLP_CLAMP_VARIANCE : 0u;
@@ -571,7 +572,8 @@ int main(int argc, char **argv)
             float diag = sqrtf((float)W * (float)W + (float)H * (float)H);
             fovm_sel fov_sel = fovm_sel_band(ecc, 0.0, 5.0);
             fovm_ring rings[NRINGS];
-            fovlp_camera cam = lpsdf_camera(&sdf);
+            fovlp_camera cam;
+            fovlp_camera_from(&bi.camera, &cam); /* the camera of open_scene's fovsdf_init */
             lc.sigma = cfgs[c].sigma;
             lc.cam_fov_y_deg = bi.camera.fov_y_deg;
             lc.taa.enable = 0;

@@ -162,7 +162,11 @@ int main(int argc, char **argv)
             fprintf(stderr, "fovsdf_init: %s\n", fovsdf_result_string(r));
             return 1;
         }
-        cam = lpsdf_camera(&sdf);
+        /* TAA reprojects with the same camera: its basis form, equal to the fovsdf context's */
+        if ((r = fovlp_camera_from(&bi.camera, &cam)) != FOV_OK) {
+            fprintf(stderr, "fovlp_camera_from: %s\n", fovlp_result_string(r));
+            return 1;
+        }
         if ((r = fovlp_begin_frame(&lp, gaze, &cam)) != FOV_OK) { fprintf(stderr, "begin_frame: %s\n", fovlp_result_string(r)); return 1; }
         memset(&user, 0, sizeof user);
         user.sdf = &sdf;

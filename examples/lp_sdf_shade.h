@@ -1,7 +1,7 @@
 /* lp_sdf_shade.h - the glue between fovlp.h and fovsdf.h used by examples/lp_sdf.c and
    bench/bench_lp.c: a fovlp_shade_fn that shades a screen point with fovsdf_shade_point
-   (the same sample fovsdf_render_rows takes), and the conversion of a fovsdf context's camera into a fovlp_camera for TAA reprojection.
-   Include after fovsdf.h and fovlp.h. */
+   (the same sample fovsdf_render_rows takes). (The TAA camera comes from the same
+   fov_camera through fovlp_camera_from.) Include after fovsdf.h and fovlp.h. */
 #ifndef LP_SDF_SHADE_H
 #define LP_SDF_SHADE_H
 
@@ -23,17 +23,4 @@ static void lpsdf_shade(float x, float y, float rgb[3], float *depth, void *user
     if (depth) *depth = t;
 }
 
-static fovlp_camera lpsdf_camera(const fovsdf_ctx *c)
-{
-    fovlp_camera k;
-    int i;
-    for (i = 0; i < 3; ++i) {
-        k.pos[i] = c->origin[i];
-        k.right[i] = c->right[i];
-        k.up[i] = c->up[i];
-        k.fwd[i] = c->fwd[i];
-    }
-    k.tan_half_y = c->tan_half_y;
-    return k;
-}
 #endif

@@ -12,8 +12,8 @@
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     srgb8_fovlp, api_stress, versions, stats, style shared refs, unit_metrics unit_metrics_sanitizers
-#     flip_reference
+#     srgb8_fovlp, api_stress, versions, stats, camera, style shared refs, unit_metrics
+#     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
 # With T set, the suite block below runs twice: once to list the section names (run_section
@@ -131,6 +131,8 @@ three_builds versions tests/test_versions.c
 three_builds stats tests/test_stats.c
 # line length budgets of the headers, and every FOV*__ macro tested by #if defined
 run_section style bash tests/style.sh
+# fov_camera: one type, the same defaults and handedness in the three headers, rays agree
+three_builds camera tests/test_camera.c
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 # no tracked file cites the internal background documents; each header has REFERENCES

@@ -792,6 +792,7 @@ static void case_pt_sizes(void)
                 fov_result r;
                 const char *tag;
                 fovpt_camera_init(&cam, W, H);
+                cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
                 cam.pos[1] = 1.0f; cam.pos[2] = -4.0f; cam.target[1] = 0.5f;
                 cfg.method = m;
                 cfg.max_depth = 3;
@@ -834,6 +835,7 @@ static void case_pt_scenes(void)
     fovpt_material_init(&mats[2]);
     mats[2].type = FOVPT_MAT_DIELECTRIC;
     fovpt_camera_init(&cam, 16, 12);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -5.0f;
 
     /* zero primitives: the background everywhere (an independent expectation), for every
@@ -861,6 +863,7 @@ static void case_pt_scenes(void)
                     /* no occlusion mask: every pixel belongs to some layer */
                     if (m == FOVPT_METHOD_LAYERS) { fovpt_layers_preset(&c2.layers, FOVPT_LAYERS_KTH_RADIUS); c2.layers.layer[0].radius_deg = 0.0f; }
                     fovpt_camera_init(&cm, W, H);
+                    cm.target[2] = 1.0f; /* fovpt_camera_init's former default target */
                     cm.pos[2] = -5.0f;
                     gz.x = k == 0 ? 0.5f * (float)W : -1e4f;
                     gz.y = k == 2 ? 1e6f : 0.5f * (float)H;
@@ -1067,6 +1070,7 @@ static void case_pt_huge(void)
     r = pt_build(&e, &d);
     check(r == FOV_OK, "pt_big_coords_build", "r %d", (int)r);
     fovpt_camera_init(&cam, 12, 10);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -1e15f;
     if (r == FOV_OK && check(pt_init(&e, &cfg, &cam, g) == FOV_OK, "pt_big_coords_init", "init"))
         pt_render_check(&e, "pt_big_coords", 0.0f, 1e4f);
@@ -1100,6 +1104,7 @@ static void case_pt_huge(void)
             }
             check(agree == 64, "pt_100k_identical_hits", "%u of 64 rays agree with brute force", agree);
             fovpt_camera_init(&cam, 12, 10);
+            cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
             cam.pos[2] = -3.0f;
             if (check(pt_init(&e, &cfg, &cam, g) == FOV_OK, "pt_100k_init", "init"))
                 pt_render_check(&e, "pt_100k", 0.0f, 1e4f);
@@ -1133,6 +1138,7 @@ static void case_pt_bad_input(void)
     d.shapes = &sh; d.num_shapes = 1;
     if (!check(pt_build(&e, &d) == FOV_OK, "pt_bad_scene", "build")) return;
     fovpt_camera_init(&cam, 16, 12);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -4.0f;
     /* cameras */
     for (i = 0; i < 12; ++i) {
@@ -1355,6 +1361,7 @@ static void case_pt_fuzz(void)
         char tag[64];
         snprintf(tag, sizeof tag, "pt_fuzz_%d", it);
         fovpt_camera_init(&cam, W, H);
+        cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
         cam.pos[0] = frand(-1, 1); cam.pos[1] = frand(0, 2); cam.pos[2] = -5.0f;
         cam.fov_y_deg = frand(1.0f, 179.0f);
         if (it % 5 == 1) {   /* asymmetric frustum, off-axis, some extreme */
@@ -1488,6 +1495,7 @@ static void case_pt_temporal(void)
             cfg.temporal.n_reuse_max = 1u + it % 5u;
         }
         fovpt_camera_init(&cam, W, H);
+        cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
         cam.pos[2] = -5.0f;
         g.x = 0.5f * (float)W; g.y = 0.5f * (float)H;
         r = pt_init(&e, &cfg, &cam, g);
@@ -1564,6 +1572,7 @@ static void case_pt_fill_fuzz(void)
         }
         if (urand() < 0.3) cfg.display.fov_y_deg = frand(1.0f, 179.0f);
         fovpt_camera_init(&cam, W, H);
+        cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
         cam.fov_y_deg = frand(1.0f, 179.0f);
         g.x = frand(-2.0f * (float)W, 3.0f * (float)W);
         g.y = frand(-2.0f * (float)H, 3.0f * (float)H);
@@ -1611,6 +1620,7 @@ static void case_pt_fill_fuzz(void)
         cfg.temporal.n_tpi = 1u + (uint32_t)(urand() * 4.0);
         cfg.accumulate = it % 3 == 0 ? 1u : 0u;
         fovpt_camera_init(&cam, W, H);
+        cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
         g.x = frand(-1.0f * (float)W, 2.0f * (float)W);
         g.y = frand(-1.0f * (float)H, 2.0f * (float)H);
         r = pt_init(&e, &cfg, &cam, g);
@@ -1683,6 +1693,7 @@ static void case_pt_user_hook(void)
         r = pt_build(&e, &d);
         if (!check(r == FOV_OK, N("pt_hook_%d_build", mode), "r %d", (int)r)) { pt_free(&e); continue; }
         fovpt_camera_init(&cam, 12, 10);
+        cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
         cam.pos[2] = -3.0f;
         for (m = 0; m < (uint32_t)_FOVPT_METHOD_NUM; ++m) {
             fovpt_config cfg = fovpt_config_default();

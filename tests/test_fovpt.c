@@ -203,8 +203,8 @@ static void test_ecc(void)
 }
 
 /* Per-eye gaze: fovpt_gaze_from_point is the inverse of fovpt_camera_ray (round trip on
-   random cameras, symmetric and asymmetric), analytic values on the default camera,
-   fovpt_camera_eyes' geometry and vergence, bad input. */
+   random cameras, symmetric and asymmetric), analytic values on fovpt_camera_init's former
+   default camera, fovpt_camera_eyes' geometry and vergence, bad input. */
 static void test_eyes(void)
 {
     fovpt_camera c, e[2];
@@ -233,8 +233,9 @@ static void test_eyes(void)
     }
     check(codes && worst < 1e-9, "gaze_from_point: the camera ray through the gaze passes through the point (2000 random cameras)",
           "codes %d, max 1 - cos %g", codes, worst);
-    /* default camera: 320x240, 60 degrees, at the origin looking along +z */
+    /* 320x240, 60 degrees, at the origin looking along +z (fovpt_camera_init's former default) */
     fovpt_camera_init(&c, 320, 240);
+    c.pos[2] = 0.0f; c.target[2] = 1.0f; /* fovpt_camera_init's former default view */
     p[0] = 0.0f; p[1] = 5.0f * (float)tan(30.0 * 3.14159265358979323846 / 180.0); p[2] = 5.0f;
     fovpt_gaze_from_point(&c, p, &g);
     check(fabsf(g.x - 160.0f) < 1e-3f && fabsf(g.y) < 1e-3f, "gaze_from_point: a point on the upper edge of the view -> (160, 0)",
@@ -1037,6 +1038,7 @@ static void test_nee_equivalence(void)
                 float o[3], dd[3], rgb[3];
                 fovpt_rng rng;
                 fovpt_camera_init(&cam, 32, 32);
+                cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
                 cam.pos[2] = -3.0f;
                 fovpt_camera_ray(&cam, frand(0.0f, 32.0f), frand(0.0f, 32.0f), o, dd);
                 fovpt_rng_init(&rng, 21 + (uint32_t)nee, (uint32_t)i, 0, 0);
@@ -1151,6 +1153,7 @@ static void test_render(void)
     cornell(m, sh, &d, 0);
     build(&b, &d);
     fovpt_camera_init(&cam, 48, 32);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -3.0f;
     c.spp = 4;
     r = fovpt_memory_size(&c, &cam, &n);
@@ -1406,6 +1409,7 @@ static void test_layers(void)
     int gi;
     smooth_scene(&F, 0);
     fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
     cam.fov_y_deg = 90.0f;
     c.method = FOVPT_METHOD_LAYERS;
     c.mode = FOVPT_MODE_WHITTED;
@@ -1545,6 +1549,7 @@ static void test_zones(void)
     fov_ecc_model em;
     smooth_scene(&F, 0);
     fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
     cam.fov_y_deg = 90.0f;
     c.method = FOVPT_METHOD_ZONES;
     c.mode = FOVPT_MODE_WHITTED;
@@ -1725,6 +1730,7 @@ static void test_selective_render(void)
     cornell(m, sh, &d, 0);
     build(&b, &d);
     fovpt_camera_init(&cam, W, H);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -3.0f;
     cam.fov_y_deg = 50.0f;
     c.method = FOVPT_METHOD_SELECTIVE;
@@ -1815,6 +1821,7 @@ static void test_temporal(void)
     cornell(m, sh, &d, 0);
     build(&b, &d);
     fovpt_camera_init(&cam, W, H);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -3.0f;
     c.method = FOVPT_METHOD_SELECTIVE;
     c.mode = FOVPT_MODE_WHITTED;
@@ -1971,6 +1978,7 @@ static void test_layers_tiny(void)
         g.x = frand(-2.0f * (float)W, 3.0f * (float)W);
         g.y = frand(-2.0f * (float)H, 3.0f * (float)H);
         fovpt_camera_init(&cam, W, H);
+        cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
         c.method = FOVPT_METHOD_LAYERS;
         c.layers.count = 2u + (uint32_t)(urand() * 3.0);
         for (n = 0; n < c.layers.count; ++n) {
@@ -2031,6 +2039,7 @@ static void test_set_view_atomic(void)
     fov_result r;
     smooth_scene(&F, 0);
     fovpt_camera_init(&cam, 24, 16);
+    cam.pos[2] = 0.0f; cam.target[2] = 1.0f; /* fovpt_camera_init's former default view */
     c.method = FOVPT_METHOD_LAYERS;
     c.display.axis_dx = -3e38f;   /* legal; with a gaze at 3e38 the gaze ray overflows */
     fovpt_memory_size(&c, &cam, &cb);

@@ -330,6 +330,7 @@ static fov_result init_with(fovsdf_config c)
         fovsdf_scene_set_program(&sc, &prog);
     }
     fovsdf_camera_init(&cam, 16, 16);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     return fovsdf_init(&ctx, &c, &sc, &cam, gz, NULL, 0);
 }
 
@@ -572,6 +573,7 @@ static void skip_sign_aware(void)
     sc.dist_ex = rec_sphere;
     sc.user = &u;
     fovsdf_camera_init(&cam, 16, 16);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     c.method = FOVSDF_METHOD_SKIP;
     c.heuristic_start = 1; /* the thesis's variant scales the scene; the safe one does not */
     c.skip_scale = 1.05f;

@@ -174,6 +174,7 @@ static void test_f1(void)
     /* the issue's camera: 1x1, eye_offset 3e38, up (3e38, 3e38, 3e38): the pinhole lies 3e38
        from the origin, where float cannot resolve positions (its square is inf) */
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     cam.eye_offset = 3e38f;
     cam.up[0] = cam.up[1] = cam.up[2] = 3e38f;
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
@@ -182,6 +183,7 @@ static void test_f1(void)
     /* a position beyond the bound */
     rec_init(&lr);
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     cam.pos[0] = 2e18f; cam.target[0] = 2e18f; cam.target[2] = 1.0f;
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
     check(r == FOV_ERR_INVALID_ARG && lr.calls == 1 && strstr(lr.msg, "cam.pos") != NULL, "f1_pos_2e18_rejected",
@@ -189,6 +191,7 @@ static void test_f1(void)
     /* both within the bound, the pinhole beyond it (1e18 + 0.9e18 along right = -x) */
     rec_init(&lr);
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     cam.pos[0] = -1e18f; cam.target[0] = -1e18f; cam.target[2] = 1.0f; cam.eye_offset = 9e17f;
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
     check(r == FOV_ERR_INVALID_ARG && strstr(lr.msg, "pinhole") != NULL, "f1_pinhole_beyond_1e18_rejected",
@@ -216,6 +219,7 @@ static void test_f1(void)
     /* fovsdf_trace and fovsdf_march: a ray origin beyond the bound (the old code: the floor
        8 FLT_EPSILON |ro| overflowed to inf and every ray hit at t_start) */
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
     if (r == FOV_OK) {
         fovsdf_hit h;
@@ -240,6 +244,7 @@ static void test_f1(void)
 
     /* an image point far off the image: a unit ray along the right direction */
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     r = fovsdf_init(&ctx, &cfg, &sc, &cam, g, NULL, 0);
     if (check(r == FOV_OK, "f1_base_camera", "%s", fovsdf_result_string(r))) {
         double u = (1e30 * 2.0 - 1.0) * tan(30.0 * 3.14159265358979 / 180.0), e[3], l, err = 0.0, len;
@@ -404,6 +409,7 @@ static void test_f2_huge_sizes(void)
     r = build(&prog, nodes, b.count, root);
     if (check(r == FOV_OK, "f2_sphere_1e18_build", "%s", fovsdf_result_string(r))) {
         fovsdf_camera_init(&cam, IMG, IMG);
+        cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
         render_check("f2_sphere_1e18_inside_bv2018", &prog, &cam, FOVSDF_METHOD_BV2018, FOVSDF_SHADE_FULL, 60.0f);
         render_check("f2_sphere_1e18_inside_depth", &prog, &cam, FOVSDF_METHOD_BV2018, FOVSDF_SHADE_DEPTH, 60.0f);
     }
@@ -476,6 +482,7 @@ static void test_f2_normal_overflow(void)
     fovsdf_scene_init(&sc);
     sc.dist = near_max_dist;
     fovsdf_camera_init(&cam, 1, 1);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     r = fovsdf_init(&ctx, NULL, &sc, &cam, g, NULL, 0);
     if (!check(r == FOV_OK, "f2_normal_near_flt_max_init", "%s", fovsdf_result_string(r))) return;
     fovsdf_normal(&ctx, p, 1e-2f, n, NULL);
@@ -512,6 +519,7 @@ static void test_f2_lights(void)
     root = fovsdf_sphere(&b, 1.0f);
     if (build(&prog, nodes, b.count, root) != FOV_OK) { check(0, "f2_lights_build", "failed"); return; }
     fovsdf_camera_init(&cam, IMG, IMG);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     fovsdf_scene_init(&sc);
     fovsdf_scene_set_program(&sc, &prog);
     sc.lights[0].v[0] = -0.06f; sc.lights[0].v[1] = -0.06f; sc.lights[0].v[2] = -1e30f;
@@ -557,6 +565,7 @@ static void test_f2_audit(void)
     int kind, si, bad_total = 0, built = 0, nan_total = 0;
     char first[160] = "", first_nan[160] = "";
     fovsdf_camera_init(&cam, IMG, IMG);
+    cam.pos[2] = -5.0f; /* fovsdf_camera_init's former default view */
     for (kind = 0; kind < 22; ++kind)
         for (si = 0; si < 5; ++si) {
             float s = sizes[si], a3[3], c3[3];

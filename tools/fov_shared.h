@@ -92,6 +92,53 @@ typedef struct fov_gaze {
     float x, y;
 } fov_gaze;
 
+/* The camera of all three headers: fovsdf_camera and fovpt_camera are this type, and fovlp's
+   TAA takes it through fovlp_camera_from. A pinhole; lengths in world units (the scene's,
+   whatever they are), angles in degrees, image points in pixels.
+   Frame (right-handed, x the usual cross product):
+       fwd = normalize(target - pos), right = normalize(fwd x up), up' = right x fwd.
+   `right` points to the image's right (x, the column, grows that way) and up' to its top
+   (y, the row, grows downwards: row 0 is the top). For the defaults below (pos (0, 0, 5)
+   looking at the origin, up +y): fwd = -z, right = (-z) x (+y) = +x, up' = (+x) x (-z) = +y,
+   so world +x appears on the image's right and world +y at its top (the textbook view of
+   the xy plane, +z towards the viewer). Turned around (pos (0, 0, -5), or pos 0 and target
+   (0, 0, 1): fwd = +z) the camera has world -x on the image's right.
+   Image points: pixel (i, j) covers [i, i+1) x [j, j+1), its centre is (i + 0.5, j + 0.5),
+   y down (as fov_gaze). The ray through image point (x, y) leaves the pinhole
+   pos + eye_offset * right along
+       fwd + sx right + sy up',  sx = -tl + (tl + tr) x / width,  sy = tt - (tt + tb) y / height
+   with tl = tr = tan(fov_y_deg / 2) width / height and tt = tb = tan(fov_y_deg / 2) when the
+   four tangents are 0 (a symmetric frustum), else tl, tr, tb, tt = tan_left .. tan_top
+   (an off-axis frustum, e.g. an HMD eye's; fov_y_deg is then unused).
+   Which header uses which field:
+       pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
+                                                   size: the TAA uses the fovlp image's)
+       eye_offset                                  all three
+       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
+                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
+                                                   for non-zero ones (their tracers and the
+                                                   TAA reprojection assume a symmetric frustum)
+   The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
+   the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
+   width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
+   target is valid too: up all zero means +y, fov_y_deg 0 means 60. Further limits (sizes,
+   coordinate bounds) are each header's; invalid cameras return FOV_ERR_* from init. */
+typedef struct fov_camera {
+    float pos[3];           /* the camera's position, world units */
+    float target[3];        /* a point it looks at; must differ from pos */
+    float up[3];            /* up hint, any length, need not be orthogonal to the view; all
+                               zero: +y. Must not be parallel to target - pos */
+    float fov_y_deg;        /* vertical field of view in (0, 180) degrees; 0: 60 */
+    uint32_t width, height; /* image size in pixels, >= 1 */
+    float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
+                               (-ipd/2 for the left eye, +ipd/2 for the right one); the view
+                               axis keeps its direction */
+    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
+                               positive for an edge on that side of the axis (left + right
+                               > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
+} fov_camera;
+
 /* Display geometry, for eccentricity. The eye sits on the display's axis at a distance
    f (in pixels) from the image plane; the axis meets the image at its centre plus
    (axis_dx, axis_dy) pixels. f comes from, in this order:
@@ -458,6 +505,58 @@ FOV__PRIV const char *fov__result_string(fov_result r)
     default: return "unknown result code";
     }
 #endif
+}
+
+/* ---- the camera (see fov_camera) -------------------------------------------------------- */
+/* The fov_camera defaults (fovsdf_camera_init, fovpt_camera_init). */
+FOV__PRIV void fov__camera_init(fov_camera *cam, uint32_t width, uint32_t height)
+{
+    if (!cam) return;
+    FOV_MEMSET(cam, 0, sizeof *cam);
+    cam->pos[2] = 5.0f;
+    cam->up[1] = 1.0f;
+    cam->fov_y_deg = 60.0f;
+    cam->width = width;
+    cam->height = height;
+}
+
+/* The camera's frame (fovsdf_camera_basis, fovlp_camera_from): fwd, right, up = right x fwd,
+   unit and orthogonal. A tiny (1e-30) or huge (1e30) up hint or view vector is valid (it is
+   prescaled). FOV_ERR_NOT_FINITE for NaN or infinite vectors, FOV_ERR_DEGENERATE for a zero
+   or overflowing view vector or an up hint parallel to it. (fovpt keeps its own version of
+   this, see fovpt__camera_setup.) */
+FOV__PRIV fov_result fov__camera_basis(const fov_camera *cam, float right[3], float up[3],
+                                       float fwd[3])
+{
+    float f[3], u[3], r[3], l;
+    int k;
+    if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up))
+        return FOV_ERR_NOT_FINITE;
+    for (k = 0; k < 3; ++k) {
+        f[k] = cam->target[k] - cam->pos[k];
+        u[k] = cam->up[k];
+    }
+    if (fov__is0(u[0]) && fov__is0(u[1]) && fov__is0(u[2])) u[1] = 1.0f;
+    fov__prescale(f);
+    fov__prescale(u);
+    l = fov__len(f); /* after the prescale: 0, infinite (target - pos overflowed) or plain */
+    if (!(l > 0.0f) || !fov__finite(l)) return FOV_ERR_DEGENERATE;
+    f[0] /= l; f[1] /= l; f[2] /= l;
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    fov__cross(f, u, r);
+    l = fov__len(r);
+    if (!(l > 1e-6f)) return FOV_ERR_DEGENERATE; /* looking along the up vector */
+    r[0] /= l; r[1] /= l; r[2] /= l;
+    fov__cross(r, f, u);
+    l = fov__len(u);
+    u[0] /= l; u[1] /= l; u[2] /= l;
+    for (k = 0; k < 3; ++k) {
+        right[k] = r[k];
+        up[k] = u[k];
+        fwd[k] = f[k];
+    }
+    return FOV_OK;
 }
 
 /* ---- the eccentricity model (see fov_display) ------------------------------------------- */

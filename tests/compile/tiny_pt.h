@@ -45,6 +45,7 @@ static int tiny_pt_render(uint8_t *rgb, uint64_t *rays)
     if (bytes > sizeof scene_mem) return 3;
     if (fovpt_scene_build(&scene, &desc, scene_mem, sizeof scene_mem) != FOV_OK) return 4;
     fovpt_camera_init(&cam, TINY_PT_W, TINY_PT_H);
+    cam.target[2] = 1.0f; /* fovpt_camera_init's former default target */
     cam.pos[2] = -3.0f;
     gaze.x = 0.5f * (float)TINY_PT_W;
     gaze.y = 0.5f * (float)TINY_PT_H;
