@@ -143,9 +143,22 @@ ERRORS AND LOGGING
    fovlp_result_string() never returns NULL. Bad input (NULL pointers, zero, over-cap or
    overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
    gaze disc that covers the screen) is rejected with an error code before any work is done;
-   nothing asserts on data. An optional fov_logger in the config receives each error (and a
-   warning when an off-screen gaze is clamped); every error return of a function given a
-   valid context or config is logged with its code (tests/fuzz/fuzz_fovlp.c checks it).
+   nothing asserts on data. Messages are on by default (no FOV_DEBUG needed): cfg.logger
+   receives each error once, with its code and a message naming the field or the call and
+   the rule ("config.taa.phases must be 1 .. 256", "shade_rows: call fovlp_begin_frame
+   first", "reconstruct: out_stride below 3 * width"), and a FOV_LOG_WARN when an off-screen
+   gaze is clamped. Print them with
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovlp_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // before fovlp_init: the context keeps a copy
+   Every error return of a function given a valid context or config is logged with its code
+   (tests/fuzz/fuzz_fovlp.c and tests/test_errors.c check it). Code only, nothing logged:
+   a NULL context or config, fovlp_ecc_init, and fovlp_begin_frame on a context fovlp_init
+   never filled (FOV_ERR_INVALID_ARG: it has no logger yet). FOV_NO_ERROR_STRINGS removes
+   the texts (about 4.4 KB of a Cortex-M4 -Os build): the codes and lines still reach the
+   logger with msg "" (never NULL), and fovlp_result_string returns "".
    A result that would not fit in a float is an error, never an infinity: fovlp_spacing
    and fovlp_lp_to_screen give FOV_ERR_LIMIT there. Bad data from the caller's shading
    does not spread: fovlp_taa_rows never writes a NaN or infinite colour into the history

@@ -191,8 +191,21 @@ ERRORS AND LOGGING
    the cap (FOV_ERR_LIMIT); bad layer tables (radii not decreasing with the layer index,
    stride < 1), and every out-of-range config field. Non-finite radiance (from a user hook,
    say) is replaced by black and counted in fovpt_stats.bad_samples: images never hold NaN.
-   An optional fov_logger (desc.logger, cfg.logger) receives the code, a specific message
-   and the source line of each error (texts on unless FOV_NO_ERROR_STRINGS).
+   Messages are on by default (no FOV_DEBUG needed). desc.logger (fovpt_scene_size,
+   fovpt_scene_build) and cfg.logger (fovpt_config_resolve, fovpt_memory_size, fovpt_init,
+   fovpt_radiance and the calls on the context, which keeps a copy) receive each error once:
+   its code, the source line and a message naming the field and the rule, such as
+   "config.layers.layer[2].stride must be >= 1" or "scene: meshes[].indices >= num_vertices".
+   A logger that prints them:
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovpt_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // and desc.logger.func = log_err for the scene
+   No logger, the code only: fovpt_camera_ray, fovpt_gaze_from_point, fovpt_camera_eyes,
+   fovpt_layers_preset, fovpt_tau_fov, fovpt_ecc_init, and a NULL config, description or
+   context. FOV_NO_ERROR_STRINGS drops the texts (about 7 KB of a Cortex-M4 -Os build): the
+   logger still gets each code and line, with msg "" (never NULL); fovpt_result_string "".
 
 THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
@@ -2316,14 +2329,14 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     uint32_t *lights;
     float *cdf, *area, total = 0.0f;
     if (!d) return FOV_ERR_NULL;
-    if (!s) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_init: s is NULL");
+    if (!s) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_build: s is NULL");
     e = fovpt__plan(d, &L);
     if (e != FOV_OK) return e;
-    if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_init: mem is NULL");
+    if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_build: mem is NULL");
     if (bytes < L.total)
-        FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene_init: bytes below fovpt_scene_size");
+        FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene_build: bytes below fovpt_scene_size");
     if (((uintptr_t)mem & 7u) != 0)
-        FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene_init: mem not 8-byte aligned");
+        FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene_build: mem not 8-byte aligned");
     FOV_MEMSET(s, 0, sizeof *s);
     prims = (fovpt__prim *)(void *)(base + L.prims);
     lights = (uint32_t *)(void *)(base + L.lights);
@@ -2398,7 +2411,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     }
     if (nl > 0) {
         if (!(total > 0.0f) || !fov__finite(total))
-            FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "scene_init: total emitted power overflows");
+            FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "scene_build: total emitted power overflows");
         for (i = 0; i < nl; ++i) cdf[i] /= total;
         cdf[nl - 1u] = 1.0f;
     }
@@ -3318,7 +3331,7 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
     if (!s->prims && !s->user_hit && s->num_prims)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
-                    "radiance: scene not built (call fovpt_scene_init)");
+                    "radiance: scene not built (call fovpt_scene_build)");
     if (!fov__finite3(org))
         FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "radiance: org NaN or infinite");
     if (!fov__finite3(dir))
@@ -3522,10 +3535,10 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     if (e != FOV_OK) return e;
     if (!scene->prims && scene->num_prims)
         FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG,
-                    "init: scene.prims NULL (call fovpt_scene_init)");
+                    "init: scene.prims NULL (call fovpt_scene_build)");
     if (!scene->materials)
         FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG,
-                    "init: scene.materials NULL (call fovpt_scene_init)");
+                    "init: scene.materials NULL (call fovpt_scene_build)");
     FOV_MEMSET(ctx, 0, sizeof *ctx);
     e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4);
     if (e != FOV_OK) return fovpt__cam_fail(&c.logger, e, FOV__MSG("init"), __LINE__);

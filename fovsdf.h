@@ -180,9 +180,24 @@ ERRORS AND LOGGING
    fovsdf_result_string() never returns NULL. Bad input (NULL pointers, zero, negative,
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
-   rejected with an error code before any work is done; nothing asserts on data. An optional
-   fov_logger in the config receives a specific message with each error (on by default;
-   FOV_NO_ERROR_STRINGS removes the texts).
+   rejected with an error code before any work is done; nothing asserts on data.
+   Messages are on by default (no FOV_DEBUG needed): set cfg.logger and every failure calls it
+   once, with the code and a message naming the field and the rule, e.g.
+   "config.spp must be 1, 4 or 16 (0: 1)", "init: scene.num_lights above FOVSDF_MAX_LIGHTS",
+   "render_tile/rows: x1 or y1 beyond the image". To see them:
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovsdf_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // the context keeps it: fovsdf_render_* log too
+   The loggers: cfg.logger (fovsdf_config_resolve, fovsdf_memory_size, fovsdf_init and every
+   call on the context), fovsdf_builder.logger, fovsdf_program_check's argument. Functions
+   without one return the code only: fovsdf_camera_basis, fovsdf_ecc_init, fovsdf_march,
+   fovsdf_min_filter, fovsdf_mask_blur, fovsdf_program_size / _build / _compact,
+   fovsdf_builtin_size / _init, fovsdf_trace_ref, and any call given a NULL context or
+   config. FOV_NO_ERROR_STRINGS removes the texts (about 7.5 KB of a Cortex-M4 -Os build):
+   the logger still gets every code and line, with msg "" (never NULL), and
+   fovsdf_result_string returns "".
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
    ends the ray as a miss (every tracer; no evaluation beyond t_max or at a non-finite point,
    hits always at a finite t in [t_start, t_max]), a NaN or infinite albedo channel is taken
@@ -4779,11 +4794,12 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     fov_result r;
     if (!c) return FOV_ERR_NULL;
     if (!o) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "render_tile: output o is NULL");
-    if (x0 > x1 || y0 > y1)
-        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
-                     "render_tile: needs x0 <= x1 and y0 <= y1");
+    if (x0 > x1) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "render_tile: needs x0 <= x1");
+    if (y0 > y1)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "render_tile/rows: needs y0 <= y1");
     if (x1 > c->cam.width || y1 > c->cam.height)
-        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "render_tile: x1 or y1 beyond the image");
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                     "render_tile/rows: x1 or y1 beyond the image");
     r = fovsdf__check_output(c, o, x0, y0, x1, y1);
     if (r != FOV_OK) return r;
     FOV_MEMSET(&local, 0, sizeof local);

@@ -88,6 +88,13 @@ three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds api_stress tests/test_api_stress.c
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
+# errors name the field and the rule, once per failure, in the default build (and with
+# FOV_NO_ERROR_STRINGS: the codes still logged, every message "")
+three_builds errors tests/test_errors.c
+if build_test test_errors_nostrings tests/test_errors.c -std=c99 -O2 $WARN -DFOV_NO_ERROR_STRINGS \
+        -I. -Itests/common -lm; then
+    run_section errors_nostrings build/tests/test_errors_nostrings
+fi
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
