@@ -1484,7 +1484,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     fovpt_config c;
     const fov_logger *lg;
     uint32_t i;
-    if (!in || !out) return FOV_ERR_NULL;
+    if (!in) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&in->logger, FOV_ERR_NULL, "config_resolve: out is NULL");
     c = *in;
     lg = &c.logger;
     if (c.method >= (uint32_t)_FOVPT_METHOD_NUM)
@@ -3391,7 +3392,7 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
     uint32_t n;
     const fov_logger *lg = &c->logger;
     if (c->method >= (uint32_t)_FOVPT_METHOD_NUM)
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.method: unknown (see fovpt_method)");
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "memory_size: config.method unknown");
     if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
         FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED,
                     "config.temporal: reuse and smooth need method SELECTIVE or JIN");

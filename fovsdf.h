@@ -1740,9 +1740,10 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     fovsdf_config c;
     const fov_logger *lg;
     fov_result r;
-    if (!in || !out) return FOV_ERR_NULL;
-    c = *in;
+    if (!in) return FOV_ERR_NULL;
     lg = &in->logger;
+    if (!out) FOVSDF__FAIL(lg, FOV_ERR_NULL, "config_resolve: out is NULL");
+    c = *in;
     r = fov__fields_check(lg, "fovsdf", "config.", &c, fl, 9u, 0, (uint32_t)__LINE__);
     if (r == FOV_OK) r = fov__display_check(lg, "fovsdf", &c.display, 1, (uint32_t)__LINE__);
     if (r != FOV_OK) return r;
