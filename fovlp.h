@@ -1346,7 +1346,7 @@ FOVLP_API fovlp_config fovlp_config_default(void)
 {
     fovlp_config c;
     FOV_MEMSET(&c, 0, sizeof c);
-    if (fovlp__resolve(&c, &c) != FOV_OK) FOV_ASSERT(0); /* all zero resolves: the defaults */
+    if (fovlp__resolve(&c, &c) != FOV_OK) { FOV_ASSERT(0); } /* all zero resolves: the defaults */
     return c;
 }
 
