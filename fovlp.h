@@ -168,9 +168,22 @@ ERRORS AND LOGGING
    fovlp_result_string() never returns NULL. Bad input (NULL pointers, zero, over-cap or
    overflowing sizes, sigma or alpha <= 0, NaN or infinite gaze, camera or parameters, a
    gaze disc that covers the screen) is rejected with an error code before any work is done;
-   nothing asserts on data. An optional fov_logger in the config receives each error (and a
-   warning when an off-screen gaze is clamped); every error return of a function given a
-   valid context or config is logged with its code (tests/fuzz/fuzz_fovlp.c checks it).
+   nothing asserts on data. Messages are on by default (no FOV_DEBUG needed): cfg.logger
+   receives each error once, with its code and a message naming the field or the call and
+   the rule ("config.taa.phases must be 1 .. 256", "shade_rows: call fovlp_begin_frame
+   first", "reconstruct: out_stride below 3 * width"), and a FOV_LOG_WARN when an off-screen
+   gaze is clamped. Print them with
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovlp_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // before fovlp_init: the context keeps a copy
+   Every error return of a function given a valid context or config is logged with its code
+   (tests/fuzz/fuzz_fovlp.c and tests/test_errors.c check it). Code only, nothing logged:
+   a NULL context or config, fovlp_ecc_init, and fovlp_begin_frame on a context fovlp_init
+   never filled (FOV_ERR_INVALID_ARG: it has no logger yet). FOV_NO_ERROR_STRINGS removes
+   the texts (about 4.4 KB of a Cortex-M4 -Os build): the codes and lines still reach the
+   logger with msg "" (never NULL), and fovlp_result_string returns "".
    A result that would not fit in a float is an error, never an infinity: fovlp_spacing
    and fovlp_lp_to_screen give FOV_ERR_LIMIT there. Bad data from the caller's shading
    does not spread: fovlp_taa_rows never writes a NaN or infinite colour into the history
@@ -1098,6 +1111,90 @@ FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result 
     return r;
 }
 #define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+#ifndef FOV_NO_ERROR_STRINGS
+/* Append s (or v in decimal) to the message buf of capacity cap holding n characters. */
+FOV__PRIV uint32_t fov__app(char *buf, uint32_t n, uint32_t cap, const char *s)
+{
+    while (*s && n + 1u < cap) buf[n++] = *s++;
+    buf[n] = 0;
+    return n;
+}
+FOV__PRIV uint32_t fov__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
+{
+    char d[12];
+    uint32_t k = 0;
+    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
+    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
+    buf[n] = 0;
+    return n;
+}
+#endif
+/* Logs the message a b c (composed on the stack; "" under FOV_NO_ERROR_STRINGS), returns r. */
+FOV__PRIV fov_result fov__err3(const fov_logger *lg, const char *tag, fov_result r, const char *a,
+                               const char *b, const char *c, uint32_t line)
+{
+#ifndef FOV_NO_ERROR_STRINGS
+    char buf[112];
+    uint32_t n = fov__app(buf, 0, sizeof buf, a);
+    n = fov__app(buf, n, sizeof buf, b);
+    (void)fov__app(buf, n, sizeof buf, c);
+    return fov__err(lg, tag, r, buf, line);
+#else
+    (void)a; (void)b; (void)c;
+    return fov__err(lg, tag, r, "", line);
+#endif
+}
+/* A float field of a struct for fov__fields_check: byte offset, 1 if it must be >= 0, name. */
+typedef struct fov__field {
+    uint16_t off, nonneg;
+    const char *name;
+} fov__field;
+#define FOV__FIELD(type, member, nonneg) { (uint16_t)offsetof(type, member), nonneg, \
+                                           FOV__MSG(#member) }
+/* Pass 0: the first of the n fields of the struct at base that is NaN or infinite fails with
+   FOV_ERR_NOT_FINITE, "<who><name> is NaN or infinite"; pass 1: the first negative one among
+   those marked nonneg fails with FOV_ERR_INVALID_ARG, "<who><name> must be >= 0". */
+FOV__PRIV fov_result fov__fields_check(const fov_logger *lg, const char *tag, const char *who,
+                                       const void *base, const fov__field *f, uint32_t n,
+                                       int pass, uint32_t line)
+{
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        float x;
+        FOV_MEMCPY(&x, (const unsigned char *)base + f[i].off, sizeof x);
+        if (pass == 0 && !fov__finite(x))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, f[i].name, " is NaN or infinite",
+                             line);
+        if (pass == 1 && f[i].nonneg && x < 0.0f)
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, f[i].name, " must be >= 0", line);
+    }
+    return FOV_OK;
+}
+
+/* The rules of config.display (fov_display): what & 1, every field finite; what & 2,
+   fov_y_deg in [0, 180), pixel_pitch_mm and distance_mm >= 0 and given together. */
+FOV__PRIV fov_result fov__display_check(const fov_logger *lg, const char *tag, const fov_display *d,
+                                        int what, uint32_t line)
+{
+    static const fov__field f[5] = {
+        FOV__FIELD(fov_display, fov_y_deg, 0), FOV__FIELD(fov_display, pixel_pitch_mm, 0),
+        FOV__FIELD(fov_display, distance_mm, 0), FOV__FIELD(fov_display, axis_dx, 0),
+        FOV__FIELD(fov_display, axis_dy, 0) };
+    fov_result r = FOV_OK;
+    if (what & 1) r = fov__fields_check(lg, tag, "config.display.", d, f, 5u, 0, line);
+    if (r != FOV_OK || !(what & 2)) return r;
+    if (d->fov_y_deg < 0.0f || d->fov_y_deg >= 180.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display.fov_y_deg must be in [0, 180)"), line);
+    if (d->pixel_pitch_mm < 0.0f || d->distance_mm < 0.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: pixel_pitch_mm, distance_mm must be >= 0"), line);
+    if (fov__is0(d->pixel_pitch_mm) != fov__is0(d->distance_mm))
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: give pixel_pitch_mm and distance_mm, or neither"),
+                        line);
+    return FOV_OK;
+}
 
 FOV__PRIV const char *fov__result_string(fov_result r)
 {
@@ -1346,52 +1443,63 @@ FOVLP_API const char *fovlp_preset_name(uint32_t preset)
 /* Fills the defaults of the zero fields and validates everything except width/height. */
 FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
 {
+    static const fov__field fl[12] = { /* NaN or infinite: pass 0; negative (1s): pass 1 */
+        FOV__FIELD(fovlp_config, sigma, 1), FOV__FIELD(fovlp_config, alpha, 1),
+        FOV__FIELD(fovlp_config, gaze_angle, 1), FOV__FIELD(fovlp_config, lp_aspect, 1),
+        FOV__FIELD(fovlp_config, match_deg, 1), FOV__FIELD(fovlp_config, cam_fov_y_deg, 1),
+        FOV__FIELD(fovlp_config, blend_start, 1), FOV__FIELD(fovlp_config, blend_end, 1),
+        FOV__FIELD(fovlp_config, taa.clip_gamma, 1), FOV__FIELD(fovlp_config, taa.depth_tol, 1),
+        FOV__FIELD(fovlp_config, taa.reset_deg, 1), FOV__FIELD(fovlp_config, taa.periphery, 1) };
     fovlp_config c = *in;
     const fov_logger *lg = &in->logger;
-    const fovlp_taa_config *t = &c.taa;
-    if (!fov__finite(c.sigma) || !fov__finite(c.alpha) || !fov__finite(c.gaze_angle) ||
-        !fov__finite(c.lp_aspect) || !fov__finite(c.match_deg) ||
-        !fov__finite(c.cam_fov_y_deg) || !fov__finite(c.blend_start) ||
-        !fov__finite(c.blend_end) || !fov__finite(c.display.fov_y_deg) ||
-        !fov__finite(c.display.pixel_pitch_mm) || !fov__finite(c.display.distance_mm) ||
-        !fov__finite(c.display.axis_dx) || !fov__finite(c.display.axis_dy) ||
-        !fov__finite(t->clip_gamma) || !fov__finite(t->depth_tol) ||
-        !fov__finite(t->reset_deg) || !fov__finite(t->periphery))
-        FOVLP__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
-    if (c.sigma < 0.0f || c.alpha < 0.0f || c.gaze_angle < 0.0f || c.lp_aspect < 0.0f ||
-        c.match_deg < 0.0f || c.cam_fov_y_deg < 0.0f || c.blend_start < 0.0f || c.blend_end < 0.0f ||
-        t->clip_gamma < 0.0f || t->depth_tol < 0.0f || t->reset_deg < 0.0f || t->periphery < 0.0f)
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter (sigma, alpha, a_G, ...)");
+    fov_result r = fov__fields_check(lg, "fovlp", "config.", &c, fl, 12u, 0, (uint32_t)__LINE__);
+    if (r == FOV_OK) r = fov__display_check(lg, "fovlp", &c.display, 1, (uint32_t)__LINE__);
+    if (r == FOV_OK) r = fov__fields_check(lg, "fovlp", "config.", &c, fl, 12u, 1, __LINE__);
+    if (r != FOV_OK) return r;
     if (fov__is0(c.sigma)) c.sigma = 1.4f;
-    if (c.sigma < 1e-3f) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "config: sigma below 1e-3 (buffer too large)");
+    if (c.sigma < 1e-3f)
+        FOVLP__FAIL(lg, FOV_ERR_LIMIT, "config.sigma below 1e-3 (buffer too large)");
     if (fov__is0(c.alpha)) c.alpha = 1.0f;
-    if (c.alpha > 16.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: alpha must be in (0, 16]");
-    if (c.no_disc > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: no_disc must be 0 or 1");
+    if (c.alpha > 16.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.alpha must be in (0, 16]");
+    if (c.no_disc > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.no_disc must be 0 or 1");
     if (c.no_disc) c.gaze_angle = 0.0f;
     else if (fov__is0(c.gaze_angle)) c.gaze_angle = 0.20f;
-    if (c.gaze_angle >= 1.5f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: gaze_angle must be below 1.5 rad");
+    if (c.gaze_angle >= 1.5f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.gaze_angle must be below 1.5 rad");
     if (fov__is0(c.match_deg)) c.match_deg = 15.0f;
-    if (c.match_deg >= 89.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: match_deg must be in (0, 89)");
+    if (c.match_deg >= 89.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.match_deg must be in (0, 89)");
     if (c.lp_aspect > 65536.0f || (c.lp_aspect > 0.0f && c.lp_aspect < 1.0f / 65536.0f))
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: lp_aspect out of range");
-    if (c.norm >= (uint32_t)_FOVLP_NORM_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown norm");
-    if (c.edge >= (uint32_t)_FOVLP_EDGE_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown edge");
-    if (c.cam_fov_y_deg >= 180.0f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cam_fov_y_deg must be in (0, 180)");
-    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f || c.display.pixel_pitch_mm < 0.0f ||
-        c.display.distance_mm < 0.0f || fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
-    if (c.blend > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend must be 0 or 1");
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.lp_aspect must be 0 or in [2^-16, 2^16]");
+    if (c.norm >= (uint32_t)_FOVLP_NORM_NUM)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.norm: unknown (see fovlp_norm)");
+    if (c.edge >= (uint32_t)_FOVLP_EDGE_NUM)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.edge: unknown (see fovlp_edge)");
+    if (c.cam_fov_y_deg >= 180.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cam_fov_y_deg must be in (0, 180)");
+    r = fov__display_check(lg, "fovlp", &c.display, 2, (uint32_t)__LINE__);
+    if (r != FOV_OK) return r;
+    if (c.blend > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.blend must be 0 or 1");
     if (fov__is0(c.blend_start)) c.blend_start = 1.0f / 6.0f;
     if (fov__is0(c.blend_end)) c.blend_end = 0.5f;
-    if (!(c.blend_end > c.blend_start)) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: blend_end must exceed blend_start");
-    if (c.taa.enable > 1 || c.taa.jitter_moving > 1 || c.taa.thesis_moving > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa flags must be 0 or 1");
+    if (!(c.blend_end > c.blend_start))
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.blend_end must exceed blend_start");
+    if (c.taa.enable > 1) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.enable must be 0 or 1");
+    if (c.taa.jitter_moving > 1)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.jitter_moving must be 0 or 1");
+    if (c.taa.thesis_moving > 1)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.thesis_moving must be 0 or 1");
     if (c.taa.phases == 0) c.taa.phases = 16;
-    if (c.taa.phases > FOVLP__MAX_PHASES) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.phases must be 1 .. 256");
+    if (c.taa.phases > FOVLP__MAX_PHASES)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.phases must be 1 .. 256");
     if (c.taa.halton_start == 0) c.taa.halton_start = 1;
-    if (c.taa.halton_start > 0x00FFFFFFu) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.halton_start above 2^24");
+    if (c.taa.halton_start > 0x00FFFFFFu)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.halton_start above 2^24");
     if (c.taa.max_age == 0) c.taa.max_age = 20;
-    if (c.taa.max_age > 255) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: taa.max_age must be 1 .. 255");
-    if (c.taa.clamp >= (uint32_t)_FOVLP_CLAMP_NUM) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown taa.clamp");
+    if (c.taa.max_age > 255)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.max_age must be 1 .. 255");
+    if (c.taa.clamp >= (uint32_t)_FOVLP_CLAMP_NUM)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.clamp: unknown (see fovlp_clamp)");
     if (fov__is0(c.taa.clip_gamma)) c.taa.clip_gamma = 1.0f;
     if (fov__is0(c.taa.depth_tol)) c.taa.depth_tol = 0.02f;
     if (fov__is0(c.taa.reset_deg)) c.taa.reset_deg = 2.0f;
@@ -1432,13 +1540,14 @@ FOVLP_API fovlp_config fovlp_config_default(void)
 
 FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *out)
 {
-    fov_result r;
     fovlp_config c;
-    if (!in || !out) return FOV_ERR_NULL;
+    fov_result r = FOV_OK;
+    if (!in) return FOV_ERR_NULL;
+    if (!out) FOVLP__FAIL(&in->logger, FOV_ERR_NULL, "config_resolve: out is NULL");
     if (in->width == 0 || in->height == 0)
-        FOVLP__FAIL(&in->logger, FOV_ERR_INVALID_ARG, "config: width and height must be >= 1");
+        FOVLP__FAIL(&in->logger, FOV_ERR_INVALID_ARG, "config.width and height must be >= 1");
     if (in->width > FOVLP_MAX_DIM || in->height > FOVLP_MAX_DIM)
-        FOVLP__FAIL(&in->logger, FOV_ERR_LIMIT, "config: width or height above FOVLP_MAX_DIM");
+        FOVLP__FAIL(&in->logger, FOV_ERR_LIMIT, "config.width or height above FOVLP_MAX_DIM");
     r = fovlp__resolve(in, &c);
     if (r != FOV_OK) return r;
     *out = c;
@@ -1497,11 +1606,14 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     g->f_px = f_px;
     /* eq. 3.3: the gaze disc radius */
     r_g = c->gaze_angle > 0.0f ? f_px * FOV__TAN(c->gaze_angle) : 0.0f;
-    if (!fov__finite(r_g)) FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "geometry: gaze disc radius not finite");
+    if (!fov__finite(r_g))
+        FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "geometry: gaze disc radius overflows");
     /* eq. 3.4 with the diagonal normaliser, for the sizes */
     xm = c->edge == FOVLP_EDGE_THESIS ? r_g + 1.0f : r_g;
     G_diag = r_g > 0.0f ? fovlp__pow(FOV__LOG(fov__maxf(xm, 1.0f)) / L_diag, c->alpha) : 0.0f;
-    if (G_diag >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
+    if (G_diag >= 0.999f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "geometry: gaze disc covers the screen (gaze_angle too large)");
     /* eq. 3.6, or the aspect that matches the spacings at match_deg (section 5.1 tuning) */
     asp = c->lp_aspect;
     if (!(asp > 0.0f)) {
@@ -1513,10 +1625,12 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     }
     g->lp_aspect = asp;
     hf = FOV__FLOOR(FOV__SQRT(W * H / asp) / c->sigma + 0.5f);
-    if (!(hf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer height above FOVLP_MAX_LP_DIM");
+    if (!(hf <= (float)FOVLP_MAX_LP_DIM))
+        FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer height above FOVLP_MAX_LP_DIM");
     if (hf < 1.0f) hf = 1.0f;
     wf = FOV__FLOOR(hf * asp + 0.5f);
-    if (!(wf <= (float)FOVLP_MAX_LP_DIM)) FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer width above FOVLP_MAX_LP_DIM");
+    if (!(wf <= (float)FOVLP_MAX_LP_DIM))
+        FOVLP__FAIL(lg, FOV_ERR_LIMIT, "geometry: LP buffer width above FOVLP_MAX_LP_DIM");
     if (wf < 1.0f) wf = 1.0f;
     g->lp_w = (uint32_t)wf;
     g->lp_h = (uint32_t)hf;
@@ -1543,7 +1657,8 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     g->L = L;
     g->r_g = r_g;
     G = r_g > 0.0f ? fovlp__pow(FOV__LOG(fov__maxf(xm, 1.0f)) / L, c->alpha) : 0.0f;
-    if (G >= 0.999f) FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: the gaze disc covers the screen (a_G too large)");
+    if (G >= 0.999f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "geometry: gaze disc covers the screen at this gaze");
     g->G = G;
     g->u_g = (float)g->lp_w * G / (1.0f - G);
     g->w_c = (float)g->lp_w + g->u_g;
@@ -1573,13 +1688,14 @@ FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovl
     r = fovlp_config_resolve(cfg, c);
     if (r != FOV_OK) return r;
     if (!fov__finite(gaze.x) || !fov__finite(gaze.y))
-        FOVLP__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "gaze is NaN or infinite");
+        FOVLP__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "gaze.x or gaze.y NaN or infinite");
     *gz = fovlp__clamp_gaze(c, gaze, &clamped);
     if (clamped && c->logger.func)
         c->logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK, FOV__MSG("gaze off-screen: clamped"),
                        (uint32_t)__LINE__, c->logger.user);
     r = fovlp_ecc_init(ecc, &c->display, fovlp__view_fov(c), c->width, c->height, *gz);
-    if (r != FOV_OK) FOVLP__FAIL(&c->logger, r, "display geometry rejected by the eccentricity model");
+    if (r != FOV_OK)
+        FOVLP__FAIL(&c->logger, r, "gaze or config.display: the eye direction overflows");
     return fovlp__geometry(c, *gz, ecc->f_px, g);
 }
 
@@ -1588,7 +1704,8 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, 
     fovlp_config c;
     fov_ecc_model e;
     fov_gaze gz;
-    if (!cfg || !out) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!out) FOVLP__FAIL(&cfg->logger, FOV_ERR_NULL, "geometry_get: out is NULL");
     return fovlp__setup(cfg, gaze, &c, &e, &gz, out);
 }
 
@@ -1603,7 +1720,8 @@ FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes)
     fovlp_geometry g;
     fov_gaze gz;
     fov_result r;
-    if (!cfg || !bytes) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!bytes) FOVLP__FAIL(&cfg->logger, FOV_ERR_NULL, "memory_size: bytes is NULL");
     gz.x = 0.5f * (float)cfg->width;
     gz.y = 0.5f * (float)cfg->height;
     r = fovlp_geometry_get(cfg, gz, &g);
@@ -1621,14 +1739,17 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
     fov_result r;
     size_t need;
     unsigned char *p;
-    if (!ctx || !cfg) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!ctx) FOVLP__FAIL(&cfg->logger, FOV_ERR_NULL, "init: ctx is NULL");
     gz.x = 0.5f * (float)cfg->width;
     gz.y = 0.5f * (float)cfg->height;
     r = fovlp__setup(cfg, gz, &c, &e, &gz, &g);
     if (r != FOV_OK) return r;
     need = fovlp__mem_bytes(&g) + 16u;
-    if (!mem) FOVLP__FAIL(&c.logger, FOV_ERR_NULL, "init: memory is NULL (size it with fovlp_memory_size)");
-    if (mem_size < need) FOVLP__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "init: memory smaller than fovlp_memory_size");
+    if (!mem)
+        FOVLP__FAIL(&c.logger, FOV_ERR_NULL, "init: mem is NULL (size it with fovlp_memory_size)");
+    if (mem_size < need)
+        FOVLP__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "init: mem_size below fovlp_memory_size");
     FOV_MEMSET(ctx, 0, sizeof *ctx);
     ctx->cfg = c;
     ctx->geo = g;
@@ -1675,7 +1796,8 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
     fov_result r;
     uint32_t k, n;
     float m2 = 0.0f, m3 = 0.0f;
-    if (!cfg || !ou || !ov) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!ou || !ov) FOVLP__FAIL(&cfg->logger, FOV_ERR_NULL, "jitter: ou and ov are required");
     r = fovlp__resolve(cfg, &c);
     if (r != FOV_OK) return r;
     n = c.taa.phases;
@@ -1754,15 +1876,19 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
     if (!ctx) return FOV_ERR_NULL;
     if (!ctx->rho || !ctx->cs || !ctx->sn) return FOV_ERR_INVALID_ARG; /* not initialised */
     if (cam) {
-        if (!fovlp__cam_ok(cam)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "begin_frame: camera not finite");
+        if (!fovlp__cam_ok(cam))
+            FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE,
+                        "begin_frame: a cam field NaN or infinite");
         if (!(cam->tan_half_y > 0.0f) || fov__len(cam->fwd) < 0.5f || fov__len(cam->right) < 0.5f ||
             fov__len(cam->up) < 0.5f)
-            FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE, "begin_frame: degenerate camera");
+            FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE,
+                        "begin_frame: cam.tan_half_y <= 0 or fwd, right or up not unit");
     }
     r = fovlp__setup(&ctx->cfg, gaze, &c, &e, &gz, &g);
     if (r != FOV_OK) return r;
     if (g.lp_w != ctx->geo.lp_w || g.lp_h != ctx->geo.lp_h || g.samples != ctx->geo.samples)
-        FOVLP__FAIL(&c.logger, FOV_ERR_DEGENERATE, "begin_frame: sizes changed (context modified?)");
+        FOVLP__FAIL(&c.logger, FOV_ERR_DEGENERATE,
+                    "begin_frame: LP sizes changed (ctx->cfg modified?)");
     /* gaze jump: reset the history */
     if (ctx->in_frame) {
         float a = fovlp_ecc_deg(&e, ctx->gaze.x, ctx->gaze.y);
@@ -1850,9 +1976,13 @@ FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, flo
 
 FOVLP_API fov_result fovlp_screen_to_lp(const fovlp_ctx *ctx, float x, float y, float *u, float *v)
 {
-    if (!ctx || !u || !v) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fov__finite(x) || !fov__finite(y)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "screen_to_lp: point not finite");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!u || !v) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "screen_to_lp: u and v are required");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "screen_to_lp: call fovlp_begin_frame first");
+    if (!fov__finite(x) || !fov__finite(y))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "screen_to_lp: x or y NaN or infinite");
     fovlp__to_lp(ctx, x - ctx->gaze.x, y - ctx->gaze.y, u, v);
     return FOV_OK;
 }
@@ -1861,19 +1991,26 @@ FOVLP_API fov_result fovlp_lp_to_screen(const fovlp_ctx *ctx, float u, float v, 
 {
     const fovlp_geometry *g;
     float t, rho, a;
-    if (!ctx || !x || !y) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fov__finite(u) || !fov__finite(v)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "lp_to_screen: point not finite");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!x || !y) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "lp_to_screen: x and y are required");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "lp_to_screen: call fovlp_begin_frame first");
+    if (!fov__finite(u) || !fov__finite(v))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "lp_to_screen: u or v NaN or infinite");
     g = &ctx->geo;
     t = (u + g->u_g) / g->w_c;                  /* eq. 3.5: u_C / w_C */
-    if (t < 0.0f) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "lp_to_screen: u inside the gaze disc (u < -u_G)");
+    if (t < 0.0f)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "lp_to_screen: u inside the gaze disc (u < -u_G)");
     rho = FOV__EXP(g->L * fovlp__pow(t, 1.0f / ctx->cfg.alpha));   /* eq. 3.7 */
     a = FOVLP__TWO_PI * v / (float)g->lp_h;
     *x = ctx->gaze.x + rho * FOV__COS(a);
     *y = ctx->gaze.y + rho * FOV__SIN(a);
     if (!fov__finite(*x) || !fov__finite(*y)) {   /* u far beyond the buffer */
         *x = ctx->gaze.x; *y = ctx->gaze.y;
-        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "lp_to_screen: the point lies beyond the float range");
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT,
+                    "lp_to_screen: the point lies beyond the float range");
     }
     return FOV_OK;
 }
@@ -1919,9 +2056,14 @@ FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_
 {
     const fovlp_geometry *g;
     float dudr, rad, ang;
-    if (!ctx || !radial_px || !angular_px) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!fov__finite(r)) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "spacing: r not finite");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!radial_px || !angular_px)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
+                    "spacing: radial_px and angular_px are required");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "spacing: call fovlp_begin_frame first");
+    if (!fov__finite(r))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "spacing: r NaN or infinite");
     g = &ctx->geo;
     if (g->r_g > 0.0f && r < g->r_g) { *radial_px = *angular_px = 1.0f; return FOV_OK; }
     r = fov__maxf(r, 1.0f);
@@ -1932,7 +2074,8 @@ FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_
     ang = r * (FOVLP__TWO_PI / (float)g->lp_h);
     if (!fov__finite(rad) || !fov__finite(ang) || (!(dudr > 0.0f) && r > 1.0f)) {
         *radial_px = *angular_px = 0.0f;
-        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT, "spacing: r so large that a spacing exceeds the float range");
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_LIMIT,
+                    "spacing: r so large that a spacing overflows float");
     }
     *radial_px = rad;
     *angular_px = ang;
@@ -2043,11 +2186,16 @@ FOVLP__PRIV void fovlp__visit_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_t r
     }
 }
 
-FOVLP__PRIV fov_result fovlp__rows_ok(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1)
+/* who: "samples" or "shade_rows" (the function named in the message) */
+FOVLP__PRIV fov_result fovlp__rows_ok(const fovlp_ctx *ctx, uint32_t r0, uint32_t r1,
+                                      const char *who)
 {
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!ctx->in_frame)
+        return fov__err3(&ctx->cfg.logger, "fovlp", FOV_ERR_INVALID_ARG, who,
+                         FOV__MSG(": call fovlp_begin_frame first"), "", (uint32_t)__LINE__);
     if (r0 > r1 || r1 > fovlp_sample_rows(ctx))
-        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "sample rows out of range");
+        return fov__err3(&ctx->cfg.logger, "fovlp", FOV_ERR_INVALID_ARG, who,
+                         FOV__MSG(": needs r0 <= r1 <= fovlp_sample_rows"), "", (uint32_t)__LINE__);
     return FOV_OK;
 }
 
@@ -2056,15 +2204,17 @@ FOVLP_API fov_result fovlp_samples(const fovlp_ctx *ctx, uint32_t r0, uint32_t r
 {
     fovlp__visit vi;
     fov_result r;
-    if (!ctx || !count) return FOV_ERR_NULL;
-    r = fovlp__rows_ok(ctx, r0, r1);
+    if (!ctx) return FOV_ERR_NULL;
+    if (!count) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "samples: count is NULL");
+    r = fovlp__rows_ok(ctx, r0, r1, FOV__MSG("samples"));
     if (r != FOV_OK) return r;
     FOV_MEMSET(&vi, 0, sizeof vi);
     vi.out = out;
     vi.cap = out ? cap : 0;
     fovlp__visit_rows(ctx, r0, r1, &vi);
     *count = vi.n;
-    if (vi.overflow) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_TOO_SMALL, "samples: output array too small");
+    if (vi.overflow)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_TOO_SMALL, "samples: cap below the count");
     return FOV_OK;
 }
 
@@ -2074,8 +2224,10 @@ FOVLP_API fov_result fovlp_shade_rows(const fovlp_ctx *ctx, uint32_t r0, uint32_
 {
     fovlp__visit vi;
     fov_result r;
-    if (!ctx || !fn || !rgb) return FOV_ERR_NULL;
-    r = fovlp__rows_ok(ctx, r0, r1);
+    if (!ctx) return FOV_ERR_NULL;
+    if (!fn || !rgb)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "shade_rows: fn and rgb are required");
+    r = fovlp__rows_ok(ctx, r0, r1, FOV__MSG("shade_rows"));
     if (r != FOV_OK) return r;
     FOV_MEMSET(&vi, 0, sizeof vi);
     vi.fn = fn;
@@ -2092,8 +2244,11 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
     const fovlp_geometry *g;
     uint32_t u, v;
     float area;
-    if (!ctx || !out) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!out) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "count_samples: out is NULL");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "count_samples: call fovlp_begin_frame first");
     g = &ctx->geo;
     FOV_MEMSET(out, 0, sizeof *out);
     out->lp_dispatched = (uint64_t)g->lp_cols * g->lp_h;
@@ -2275,13 +2430,25 @@ FOVLP_API fov_result fovlp_reconstruct_tile(const fovlp_ctx *ctx, const float *s
                                             uint32_t out_stride, float *out_depth)
 {
     uint32_t x, y, stride;
-    if (!ctx || !sample_rgb || !out_rgb) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (out_depth && !sample_depth) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "reconstruct: out_depth needs sample_depth");
-    if (x0 > x1 || y0 > y1 || x1 > ctx->geo.width || y1 > ctx->geo.height)
-        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: rows or tile out of range");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!sample_rgb || !out_rgb)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
+                    "reconstruct: sample_rgb and out_rgb are required");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "reconstruct: call fovlp_begin_frame first");
+    if (out_depth && !sample_depth)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "reconstruct: out_depth needs sample_depth");
+    if (x0 > x1 || y0 > y1)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "reconstruct: needs x0 <= x1 and y0 <= y1");
+    if (x1 > ctx->geo.width || y1 > ctx->geo.height)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "reconstruct: x1 or y1 beyond the image");
     stride = out_stride ? out_stride : 3u * ctx->geo.width;
-    if (stride < 3u * ctx->geo.width) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "reconstruct: stride below 3 * width");
+    if (stride < 3u * ctx->geo.width)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "reconstruct: out_stride below 3 * width");
     for (y = y0; y < y1; ++y)
         for (x = x0; x < x1; ++x) {
             float c[3], d;
@@ -2311,11 +2478,15 @@ FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uin
     static const float k[3] = { 0.25f, 0.5f, 0.25f };
     uint32_t W, H, x, y;
     float diag, s, e;
-    if (!ctx || !in || !out) return FOV_ERR_NULL;
-    if (!ctx->in_frame) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
+    if (!ctx) return FOV_ERR_NULL;
+    if (!in || !out) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "blend: in and out are required");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: call fovlp_begin_frame first");
     W = ctx->geo.width; H = ctx->geo.height;
-    if (y0 > y1 || y1 > H) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: rows out of range");
-    if (in == out) FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: out must not alias in");
+    if (y0 > y1 || y1 > H)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: needs y0 <= y1 <= height");
+    if (in == out)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "blend: out must not alias in");
     diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     s = ctx->cfg.blend_start * diag;
     e = ctx->cfg.blend_end * diag;
@@ -2494,22 +2665,31 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     const fovlp_config *c;
     uint32_t W, H, x, y, reproject;
     float diag, asp, per;
-    if (!ctx || !io) return FOV_ERR_NULL;
+    if (!ctx) return FOV_ERR_NULL;
     c = &ctx->cfg;
-    if (!ctx->in_frame) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "call fovlp_begin_frame first");
-    if (!c->taa.enable) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: cfg.taa.enable is 0");
-    if (!io->cur_rgb || !io->out_rgb || !io->out_age) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: cur_rgb, out_rgb and out_age are required");
+    if (!io) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa_rows: io is NULL");
+    if (!ctx->in_frame)
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa_rows: call fovlp_begin_frame first");
+    if (!c->taa.enable)
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa_rows: cfg.taa.enable is 0");
+    if (!io->cur_rgb || !io->out_rgb || !io->out_age)
+        FOVLP__FAIL(&c->logger, FOV_ERR_NULL,
+                    "taa_rows: io.cur_rgb, out_rgb and out_age are required");
     if (ctx->history_valid && (!io->prev_rgb || !io->prev_age))
-        FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: prev_rgb and prev_age are required after the first frame");
+        FOVLP__FAIL(&c->logger, FOV_ERR_NULL,
+                    "taa_rows: io.prev_rgb and prev_age needed after frame 1");
     if ((const float *)io->out_rgb == io->cur_rgb || (const float *)io->out_rgb == io->prev_rgb ||
         (io->out_depth && (const float *)io->out_depth == io->prev_depth) ||
         (const uint8_t *)io->out_age == io->prev_age)   /* neighbourhoods and reprojection read them */
-        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: out_* must not alias cur_rgb or prev_* (swap buffers)");
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "taa_rows: io.out_* must not alias cur_rgb or prev_*");
     W = ctx->geo.width; H = ctx->geo.height;
-    if (y0 > y1 || y1 > H) FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa: rows out of range");
+    if (y0 > y1 || y1 > H)
+        FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "taa_rows: needs y0 <= y1 <= height");
     reproject = ctx->history_valid && ctx->moving;
     if (reproject && (!io->cur_depth || !io->prev_depth))
-        FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa: a moving camera needs cur_depth and prev_depth");
+        FOVLP__FAIL(&c->logger, FOV_ERR_NULL,
+                    "taa_rows: a moving camera needs io.cur_depth and prev_depth");
     diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     per = c->taa.periphery * diag;
     asp = (float)W / (float)H;

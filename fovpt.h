@@ -202,8 +202,21 @@ ERRORS AND LOGGING
    the cap (FOV_ERR_LIMIT); bad layer tables (radii not decreasing with the layer index,
    stride < 1), and every out-of-range config field. Non-finite radiance (from a user hook,
    say) is replaced by black and counted in fovpt_stats.bad_samples: images never hold NaN.
-   An optional fov_logger (desc.logger, cfg.logger) receives the code, a specific message
-   and the source line of each error (texts on unless FOV_NO_ERROR_STRINGS).
+   Messages are on by default (no FOV_DEBUG needed). desc.logger (fovpt_scene_size,
+   fovpt_scene_build) and cfg.logger (fovpt_config_resolve, fovpt_memory_size, fovpt_init,
+   fovpt_radiance and the calls on the context, which keeps a copy) receive each error once:
+   its code, the source line and a message naming the field and the rule, such as
+   "config.layers.layer[2].stride must be >= 1" or "scene: meshes[].indices >= num_vertices".
+   A logger that prints them:
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovpt_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // and desc.logger.func = log_err for the scene
+   No logger, the code only: fovpt_camera_ray, fovpt_gaze_from_point, fovpt_camera_eyes,
+   fovpt_layers_preset, fovpt_tau_fov, fovpt_ecc_init, and a NULL config, description or
+   context. FOV_NO_ERROR_STRINGS drops the texts (about 7 KB of a Cortex-M4 -Os build): the
+   logger still gets each code and line, with msg "" (never NULL); fovpt_result_string "".
 
 THREADING
    No state outside the objects you pass. A built scene is read-only. fovpt_init fills a
@@ -1269,6 +1282,90 @@ FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result 
     return r;
 }
 #define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+#ifndef FOV_NO_ERROR_STRINGS
+/* Append s (or v in decimal) to the message buf of capacity cap holding n characters. */
+FOV__PRIV uint32_t fov__app(char *buf, uint32_t n, uint32_t cap, const char *s)
+{
+    while (*s && n + 1u < cap) buf[n++] = *s++;
+    buf[n] = 0;
+    return n;
+}
+FOV__PRIV uint32_t fov__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
+{
+    char d[12];
+    uint32_t k = 0;
+    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
+    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
+    buf[n] = 0;
+    return n;
+}
+#endif
+/* Logs the message a b c (composed on the stack; "" under FOV_NO_ERROR_STRINGS), returns r. */
+FOV__PRIV fov_result fov__err3(const fov_logger *lg, const char *tag, fov_result r, const char *a,
+                               const char *b, const char *c, uint32_t line)
+{
+#ifndef FOV_NO_ERROR_STRINGS
+    char buf[112];
+    uint32_t n = fov__app(buf, 0, sizeof buf, a);
+    n = fov__app(buf, n, sizeof buf, b);
+    (void)fov__app(buf, n, sizeof buf, c);
+    return fov__err(lg, tag, r, buf, line);
+#else
+    (void)a; (void)b; (void)c;
+    return fov__err(lg, tag, r, "", line);
+#endif
+}
+/* A float field of a struct for fov__fields_check: byte offset, 1 if it must be >= 0, name. */
+typedef struct fov__field {
+    uint16_t off, nonneg;
+    const char *name;
+} fov__field;
+#define FOV__FIELD(type, member, nonneg) { (uint16_t)offsetof(type, member), nonneg, \
+                                           FOV__MSG(#member) }
+/* Pass 0: the first of the n fields of the struct at base that is NaN or infinite fails with
+   FOV_ERR_NOT_FINITE, "<who><name> is NaN or infinite"; pass 1: the first negative one among
+   those marked nonneg fails with FOV_ERR_INVALID_ARG, "<who><name> must be >= 0". */
+FOV__PRIV fov_result fov__fields_check(const fov_logger *lg, const char *tag, const char *who,
+                                       const void *base, const fov__field *f, uint32_t n,
+                                       int pass, uint32_t line)
+{
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        float x;
+        FOV_MEMCPY(&x, (const unsigned char *)base + f[i].off, sizeof x);
+        if (pass == 0 && !fov__finite(x))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, f[i].name, " is NaN or infinite",
+                             line);
+        if (pass == 1 && f[i].nonneg && x < 0.0f)
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, f[i].name, " must be >= 0", line);
+    }
+    return FOV_OK;
+}
+
+/* The rules of config.display (fov_display): what & 1, every field finite; what & 2,
+   fov_y_deg in [0, 180), pixel_pitch_mm and distance_mm >= 0 and given together. */
+FOV__PRIV fov_result fov__display_check(const fov_logger *lg, const char *tag, const fov_display *d,
+                                        int what, uint32_t line)
+{
+    static const fov__field f[5] = {
+        FOV__FIELD(fov_display, fov_y_deg, 0), FOV__FIELD(fov_display, pixel_pitch_mm, 0),
+        FOV__FIELD(fov_display, distance_mm, 0), FOV__FIELD(fov_display, axis_dx, 0),
+        FOV__FIELD(fov_display, axis_dy, 0) };
+    fov_result r = FOV_OK;
+    if (what & 1) r = fov__fields_check(lg, tag, "config.display.", d, f, 5u, 0, line);
+    if (r != FOV_OK || !(what & 2)) return r;
+    if (d->fov_y_deg < 0.0f || d->fov_y_deg >= 180.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display.fov_y_deg must be in [0, 180)"), line);
+    if (d->pixel_pitch_mm < 0.0f || d->distance_mm < 0.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: pixel_pitch_mm, distance_mm must be >= 0"), line);
+    if (fov__is0(d->pixel_pitch_mm) != fov__is0(d->distance_mm))
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: give pixel_pitch_mm and distance_mm, or neither"),
+                        line);
+    return FOV_OK;
+}
 
 FOV__PRIV const char *fov__result_string(fov_result r)
 {
@@ -1541,24 +1638,45 @@ FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *o, uint32_t preset)
 FOVPT__PRIV int fovpt__pos(float v) { return v > 0.0f && fov__finite(v); }
 FOVPT__PRIV int fovpt__bad_f(float v) { return !fov__finite(v); }
 
+/* Logs "config.layers.layer[<i>].<rule>" and returns r. */
+FOVPT__PRIV fov_result fovpt__layer_fail(const fov_logger *lg, fov_result r, uint32_t i,
+                                         const char *rule, uint32_t line)
+{
+#ifndef FOV_NO_ERROR_STRINGS
+    char b[16];
+    uint32_t n = fov__app(b, 0, sizeof b, "[");
+    n = fov__appu(b, n, sizeof b, i);
+    (void)fov__app(b, n, sizeof b, "].");
+    return fov__err3(lg, "fovpt", r, "config.layers.layer", b, rule, line);
+#else
+    (void)i; (void)rule;
+    return fov__err(lg, "fovpt", r, "", line);
+#endif
+}
+
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out)
 {
     fovpt_config c;
     const fov_logger *lg;
     uint32_t i;
-    if (!in || !out) return FOV_ERR_NULL;
+    if (!in) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&in->logger, FOV_ERR_NULL, "config_resolve: out is NULL");
     c = *in;
     lg = &c.logger;
-    if (c.method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
-    if (c.mode >= (uint32_t)_FOVPT_MODE_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mode");
+    if (c.method >= (uint32_t)_FOVPT_METHOD_NUM)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.method: unknown (see fovpt_method)");
+    if (c.mode >= (uint32_t)_FOVPT_MODE_NUM)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.mode: unknown (see fovpt_mode)");
     if (c.spp == 0) c.spp = 1;
-    if (c.spp > FOVPT_MAX_SPP) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "spp above FOVPT_MAX_SPP");
+    if (c.spp > FOVPT_MAX_SPP) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.spp above FOVPT_MAX_SPP");
     if (c.max_depth == 0) c.max_depth = c.mode == FOVPT_MODE_WHITTED ? 3u : 8u;
-    if (c.max_depth > FOVPT_MAX_BOUNCES) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "max_depth above FOVPT_MAX_BOUNCES");
+    if (c.max_depth > FOVPT_MAX_BOUNCES)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.max_depth above FOVPT_MAX_BOUNCES");
     if (c.mode == FOVPT_MODE_WHITTED && c.max_depth > FOVPT_MAX_WHITTED)
-        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "Whitted max_depth above FOVPT_MAX_WHITTED");
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.max_depth above FOVPT_MAX_WHITTED (Whitted)");
     if (c.rr_start == 0) c.rr_start = 3;
-    if (c.no_nee > 1 || c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "no_nee / accumulate: 0 or 1");
+    if (c.no_nee > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.no_nee must be 0 or 1");
+    if (c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.accumulate must be 0 or 1");
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
@@ -1569,36 +1687,58 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         c.layers.snap = snap;
     }
     if (c.layers.count < 2 || c.layers.count > FOVPT_MAX_LAYERS)
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers.count: 2 .. FOVPT_MAX_LAYERS");
-    if (fovpt__bad_f(c.layers.blend_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "layers.blend_deg");
-    if (c.layers.blend_deg < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers.blend_deg < 0");
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.count must be 2 .. FOVPT_MAX_LAYERS");
+    if (fovpt__bad_f(c.layers.blend_deg))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.layers.blend_deg is NaN or infinite");
+    if (c.layers.blend_deg < 0.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.blend_deg must be >= 0");
     if (c.layers.blend_deg <= 0.0f) c.layers.blend_deg = 1.0f;
-    if (c.layers.blend_linear > 1 || c.layers.snap > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layers flags: 0 or 1");
+    if (c.layers.blend_linear > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.blend_linear must be 0 or 1");
+    if (c.layers.snap > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.snap must be 0 or 1");
     for (i = 0; i < c.layers.count; ++i) {
         const fovpt_layer *L = &c.layers.layer[i];
-        if (fovpt__bad_f(L->radius_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "layer radius");
-        if (L->stride < 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer stride d < 1");
-        if (L->stride > 64) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "layer stride d > 64");
-        if (L->spp < 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer spp < 1");
-        if (L->spp > FOVPT_MAX_SPP) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "layer spp above FOVPT_MAX_SPP");
-        if (i == 0 && L->radius_deg < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mask radius < 0");
-        if (i > 0 && !(L->radius_deg > 0.0f && L->radius_deg < 180.0f))
-            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer radius not in (0, 180) degrees");
-        if (i > 1 && !(L->radius_deg < c.layers.layer[i - 1].radius_deg))
-            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer radii must decrease with the index (layer 0 outermost)");
+        const char *bad = 0; /* the broken rule, logged as "config.layers.layer[i].<rule>" */
+        fov_result e = FOV_ERR_INVALID_ARG;
+        if (fovpt__bad_f(L->radius_deg)) {
+            bad = FOV__MSG("radius_deg is NaN or infinite");
+            e = FOV_ERR_NOT_FINITE;
+        }
+        else if (L->stride < 1) bad = FOV__MSG("stride must be >= 1");
+        else if (L->stride > 64) { bad = FOV__MSG("stride above 64"); e = FOV_ERR_LIMIT; }
+        else if (L->spp < 1) bad = FOV__MSG("spp must be >= 1");
+        else if (L->spp > FOVPT_MAX_SPP) {
+            bad = FOV__MSG("spp above FOVPT_MAX_SPP");
+            e = FOV_ERR_LIMIT;
+        }
+        else if (i == 0 && L->radius_deg < 0.0f) bad = FOV__MSG("radius_deg (mask) must be >= 0");
+        else if (i > 0 && !(L->radius_deg > 0.0f && L->radius_deg < 180.0f))
+            bad = FOV__MSG("radius_deg must be in (0, 180)");
+        else if (i > 1 && !(L->radius_deg < c.layers.layer[i - 1].radius_deg))
+            bad = FOV__MSG("radius_deg must be below the previous layer's");
+        if (bad) return fovpt__layer_fail(lg, e, i, bad, (uint32_t)__LINE__);
     }
     if (c.layers.layer[0].radius_deg > 0.0f && !(c.layers.layer[1].radius_deg < c.layers.layer[0].radius_deg))
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "layer 1 radius must lie inside the occlusion mask");
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "config.layers.layer[1].radius_deg must be below layer[0]'s (the mask)");
     /* zones (Polychronakis 2025) */
-    if (fovpt__bad_f(c.zones.inner_deg) || fovpt__bad_f(c.zones.middle_deg) || fovpt__bad_f(c.zones.overlap_px))
-        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "zones");
+    if (fovpt__bad_f(c.zones.inner_deg))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.zones.inner_deg is NaN or infinite");
+    if (fovpt__bad_f(c.zones.middle_deg))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.zones.middle_deg is NaN or infinite");
+    if (fovpt__bad_f(c.zones.overlap_px))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.zones.overlap_px is NaN or infinite");
     if (c.zones.inner_deg <= 0.0f) c.zones.inner_deg = 7.5f;
     if (c.zones.middle_deg <= 0.0f) c.zones.middle_deg = 32.5f;
     if (c.zones.overlap_px <= 0.0f) c.zones.overlap_px = 4.0f;
     if (c.zones.lanczos_a == 0) c.zones.lanczos_a = 3;
-    if (!(c.zones.middle_deg > c.zones.inner_deg) || c.zones.middle_deg >= 180.0f || c.zones.overlap_px > 64.0f ||
-        (c.zones.lanczos_a != 2 && c.zones.lanczos_a != 3))
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "zones: inner < middle < 180, overlap <= 64 px, lanczos_a 2 or 3");
+    if (!(c.zones.middle_deg > c.zones.inner_deg) || c.zones.middle_deg >= 180.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones: needs inner_deg < middle_deg < 180");
+    if (c.zones.overlap_px > 64.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.overlap_px above 64");
+    if (c.zones.lanczos_a != 2 && c.zones.lanczos_a != 3)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.lanczos_a must be 2 or 3 (0: 3)");
     /* selective (Kim et al. 2021) */
     {
         static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
@@ -1608,38 +1748,49 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         fovpt_selective_cfg *s = &c.selective;
         int all0 = 1;
         for (i = 0; i < 5; ++i) {
-            if (fovpt__bad_f(s->e_deg[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.e_deg");
+            if (fovpt__bad_f(s->e_deg[i]))
+                FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.selective.e_deg[] NaN or infinite");
             if (s->e_deg[i] > 0.0f || s->e_deg[i] < 0.0f) all0 = 0;
         }
         if (all0) for (i = 0; i < 5; ++i) s->e_deg[i] = e_def[i];
         for (i = 0; i < 5; ++i)
             if (!(s->e_deg[i] > (i ? s->e_deg[i - 1] : 0.0f)) || s->e_deg[i] >= 180.0f)
-                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective.e_deg must increase, in (0, 180)");
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                            "config.selective.e_deg must increase, within (0, 180)");
         if ((s->n_sd[0] | s->n_sd[1] | s->n_sd[2] | s->n_sd[3]) == 0)
             for (i = 0; i < 4; ++i) s->n_sd[i] = n_def[i];
         for (i = 0; i < 4; ++i)
-            if (s->n_sd[i] > 64) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "selective.n_sd > 64");
+            if (s->n_sd[i] > 64) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.selective.n_sd[] above 64");
         all0 = 1;
         for (i = 0; i < 4; ++i) {
-            if (fovpt__bad_f(s->tau_shape[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.tau_shape");
+            if (fovpt__bad_f(s->tau_shape[i]))
+                FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.selective.tau_shape[] NaN or infinite");
             if (s->tau_shape[i] > 0.0f || s->tau_shape[i] < 0.0f) all0 = 0;
         }
         if (all0) for (i = 0; i < 4; ++i) s->tau_shape[i] = ts_def[i];
         for (i = 0; i < 9; ++i) {
-            if (fovpt__bad_f(s->tau[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "selective.tau");
-            if (s->tau[i] < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective.tau < 0");
+            if (fovpt__bad_f(s->tau[i]))
+                FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.selective.tau[] NaN or infinite");
+            if (s->tau[i] < 0.0f)
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.selective.tau[] must be >= 0");
             if (s->tau[i] <= 0.0f) s->tau[i] = tau_def[i];
         }
-        if (fovpt__bad_f(s->normal_tol_deg)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "normal_tol_deg");
+        if (fovpt__bad_f(s->normal_tol_deg))
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE,
+                        "config.selective.normal_tol_deg is NaN or infinite");
         if (s->normal_tol_deg <= 0.0f) s->normal_tol_deg = 10.0f;
-        if (s->normal_tol_deg > 180.0f || s->fill_centre > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "selective fill / normal_tol_deg");
+        if (s->normal_tol_deg > 180.0f)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.selective.normal_tol_deg above 180");
+        if (s->fill_centre > 1)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.selective.fill_centre must be 0 or 1");
         {
             /* tau_fov shape: positive, and x(t) monotone on both Bezier segments */
             float t0 = s->tau_shape[0], tf = s->tau_shape[1], tp = s->tau_shape[2], tn = s->tau_shape[3];
             float ef = s->e_deg[0], enp = s->e_deg[3];
             if (!(t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
                 tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))
-                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "tau_fov shape: tau'_f >= (tau_f-tau0)/e_f and >= (tau_np-tau_f)/(e_np-e_f), all > 0");
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                            "config.selective.tau_shape: needs all > 0 and x(t) monotone");
         }
     }
     /* temporal (Kim et al. 2021) */
@@ -1647,27 +1798,41 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         static const float a_def[6] = { 0.9f, 0.8f, 0.7f, 0.5f, 0.2f, 0.1f };
         fovpt_temporal_cfg *t = &c.temporal;
         int all0 = 1;
-        if (t->reuse > 1 || t->smooth > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "temporal flags: 0 or 1");
+        if (t->reuse > 1)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.reuse must be 0 or 1");
+        if (t->smooth > 1)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.smooth must be 0 or 1");
         if (t->n_reuse_max == 0) t->n_reuse_max = 5;
-        if (t->n_reuse_max > 5) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "n_reuse_max 1 .. 5");
-        if (fovpt__bad_f(t->tau_reuse) || fovpt__bad_f(t->eps_depth)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "temporal");
-        if (t->tau_reuse < 0.0f || t->eps_depth < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "temporal < 0");
+        if (t->n_reuse_max > 5)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.n_reuse_max must be 1 .. 5");
+        if (fovpt__bad_f(t->tau_reuse))
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.temporal.tau_reuse is NaN or infinite");
+        if (fovpt__bad_f(t->eps_depth))
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.temporal.eps_depth is NaN or infinite");
+        if (t->tau_reuse < 0.0f)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.tau_reuse must be >= 0");
+        if (t->eps_depth < 0.0f)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.eps_depth must be >= 0");
         if (t->tau_reuse <= 0.0f) t->tau_reuse = 1.0f;
         if (t->eps_depth <= 0.0f) t->eps_depth = 0.01f;
         if (t->n_tpi == 0) t->n_tpi = 4;
-        if (t->n_tpi > 4) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "n_tpi 1 .. 4");
+        if (t->n_tpi > 4)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.n_tpi must be 1 .. 4");
         for (i = 0; i < 6; ++i) {
-            if (fovpt__bad_f(t->alpha[i])) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "temporal.alpha");
+            if (fovpt__bad_f(t->alpha[i]))
+                FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.temporal.alpha[] NaN or infinite");
             if (t->alpha[i] > 0.0f || t->alpha[i] < 0.0f) all0 = 0;
         }
         if (all0) for (i = 0; i < 6; ++i) t->alpha[i] = a_def[i];
         for (i = 0; i < 6; ++i)
-            if (!(t->alpha[i] > 0.0f && t->alpha[i] <= 1.0f)) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "alpha in (0, 1]");
+            if (!(t->alpha[i] > 0.0f && t->alpha[i] <= 1.0f))
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.temporal.alpha[] must be in (0, 1]");
     }
     /* display */
-    if (fovpt__bad_f(c.display.fov_y_deg) || fovpt__bad_f(c.display.pixel_pitch_mm) ||
-        fovpt__bad_f(c.display.distance_mm) || fovpt__bad_f(c.display.axis_dx) || fovpt__bad_f(c.display.axis_dy))
-        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "display");
+    {
+        fov_result e = fov__display_check(lg, "fovpt", &c.display, 3, (uint32_t)__LINE__);
+        if (e != FOV_OK) return e;
+    }
     *out = c;
     return FOV_OK;
 }
@@ -1938,69 +2103,96 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     if (!d) return FOV_ERR_NULL;
     lg = &d->logger;
     FOV_MEMSET(L, 0, sizeof *L);
-    if (!d->materials || d->num_materials == 0) FOVPT__FAIL(lg, FOV_ERR_NULL, "no materials");
-    if (d->num_materials > 65536u) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "more than 65536 materials");
-    if (d->num_shapes && !d->shapes) FOVPT__FAIL(lg, FOV_ERR_NULL, "shapes NULL with num_shapes > 0");
-    if (d->num_meshes && !d->meshes) FOVPT__FAIL(lg, FOV_ERR_NULL, "meshes NULL with num_meshes > 0");
-    if (d->num_shapes > FOVPT_MAX_PRIMS || d->num_meshes > FOVPT_MAX_PRIMS) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "counts above FOVPT_MAX_PRIMS");
-    if (!fov__finite3(d->background)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "background");
+    if (!d->materials || d->num_materials == 0)
+        FOVPT__FAIL(lg, FOV_ERR_NULL, "scene: desc.materials NULL or num_materials 0");
+    if (d->num_materials > 65536u)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: desc.num_materials above 65536");
+    if (d->num_shapes && !d->shapes)
+        FOVPT__FAIL(lg, FOV_ERR_NULL, "scene: desc.shapes NULL with num_shapes > 0");
+    if (d->num_meshes && !d->meshes)
+        FOVPT__FAIL(lg, FOV_ERR_NULL, "scene: desc.meshes NULL with num_meshes > 0");
+    if (d->num_shapes > FOVPT_MAX_PRIMS || d->num_meshes > FOVPT_MAX_PRIMS)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT,
+                    "scene: desc.num_shapes or num_meshes above FOVPT_MAX_PRIMS");
+    if (!fov__finite3(d->background))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: desc.background NaN or infinite");
     if (d->background[0] < 0.0f || d->background[1] < 0.0f || d->background[2] < 0.0f)
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "background < 0");
-    if (d->bvh_bins == 1 || d->bvh_bins > FOVPT__BINS_MAX) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_bins: 2 .. 32");
-    if (d->bvh_leaf > FOVPT__LEAF_MAX) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_leaf: 1 .. 16");
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: desc.background must be >= 0");
+    if (d->bvh_bins == 1 || d->bvh_bins > FOVPT__BINS_MAX)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: desc.bvh_bins must be 0 or 2 .. 32");
+    if (d->bvh_leaf > FOVPT__LEAF_MAX)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: desc.bvh_leaf must be 0 .. 16");
     if (d->bvh_max_depth == 1 || d->bvh_max_depth > FOVPT_MAX_BVH_DEPTH)
-        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "bvh_max_depth: 2 .. FOVPT_MAX_BVH_DEPTH");
-    if (d->skip_degenerate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "skip_degenerate: 0 or 1");
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "scene: desc.bvh_max_depth must be 0 or 2 .. FOVPT_MAX_BVH_DEPTH");
+    if (d->skip_degenerate > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: desc.skip_degenerate must be 0 or 1");
     for (i = 0; i < d->num_materials; ++i) {
         const fovpt_material *m = &d->materials[i];
-        if (m->type >= (uint32_t)_FOVPT_MAT_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "material type");
+        if (m->type >= (uint32_t)_FOVPT_MAT_NUM)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                        "scene: materials[].type unknown (see fovpt_material_type)");
         if (!fov__finite3(m->albedo) || !fov__finite3(m->specular) || !fov__finite3(m->emission) ||
             !fov__finite(m->exponent) || !fov__finite(m->ior))
-            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "material value");
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: a materials[] value NaN or infinite");
         for (k = 0; k < 3; ++k) {
             if (!(m->albedo[k] >= 0.0f && m->albedo[k] <= 1.0f) || !(m->specular[k] >= 0.0f && m->specular[k] <= 1.0f))
-                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "albedo / specular outside [0, 1]");
-            if (m->emission[k] < 0.0f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "emission < 0");
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                            "scene: materials[].albedo and specular must be in [0, 1]");
+            if (m->emission[k] < 0.0f)
+                FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: materials[].emission must be >= 0");
         }
-        if (m->exponent < 0.0f || m->exponent > 1e6f) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "Phong exponent outside [0, 1e6]");
-        if (m->type == FOVPT_MAT_DIELECTRIC && !(m->ior > 0.0f && m->ior < 100.0f)) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "ior outside (0, 100)");
+        if (m->exponent < 0.0f || m->exponent > 1e6f)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: materials[].exponent must be in [0, 1e6]");
+        if (m->type == FOVPT_MAT_DIELECTRIC && !(m->ior > 0.0f && m->ior < 100.0f))
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                        "scene: materials[].ior must be in (0, 100) (dielectric)");
     }
     for (i = 0; i < d->num_shapes; ++i) {
         const fovpt_shape *s = &d->shapes[i];
         int em;
-        if (s->material >= d->num_materials) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "shape material index out of range");
+        if (s->material >= d->num_materials)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: shapes[].material >= num_materials");
         em = fovpt__emissive(&d->materials[s->material]);
         if (!fov__finite3(s->p) || !fov__finite3(s->u) || !fov__finite3(s->v) || !fov__finite(s->r))
-            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "shape value");
+            FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: a shapes[] value NaN or infinite");
         switch (s->type) {
         case FOVPT_SHAPE_SPHERE:
-            if (!(s->r > 0.0f)) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "sphere radius <= 0");
-            if (!fov__finite(s->r * s->r * 16.0f)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "sphere radius too large");
+            if (!(s->r > 0.0f))
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "scene: shapes[].r of a sphere must be > 0");
+            if (!fov__finite(s->r * s->r * 16.0f))
+                FOVPT__FAIL(lg, FOV_ERR_LIMIT,
+                            "scene: shapes[].r of a sphere too large (r^2 overflows)");
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
         case FOVPT_SHAPE_PLANE:
             if (!(fov__absf(s->u[0]) > 0.0f || fov__absf(s->u[1]) > 0.0f || fov__absf(s->u[2]) > 0.0f))
-                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "plane normal zero");
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "scene: shapes[].u (plane normal) is zero");
             break;
         case FOVPT_SHAPE_QUAD: {
             float c[3];
             fov__cross(s->u, s->v, c);
             if (!(fov__len(c) > 1e-12f * (fov__dot(s->u, s->u) + fov__dot(s->v, s->v))) || !fov__finite(fov__len(c)))
-                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, em ? "zero-area light (quad)" : "quad of zero area");
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE,
+                            em ? "scene: shapes[]: quad light of zero area"
+                               : "scene: shapes[]: quad of zero area");
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
         }
         case FOVPT_SHAPE_BOX: {
             int flat = 0;
             for (k = 0; k < 3; ++k) {
-                if (s->u[k] < s->p[k]) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "box max < min");
+                if (s->u[k] < s->p[k])
+                    FOVPT__FAIL(lg, FOV_ERR_DEGENERATE,
+                                "scene: shapes[]: box u (max) below p (min)");
                 if (!(s->u[k] > s->p[k])) ++flat;
             }
-            if (flat > 1) FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "box flat in two axes");
+            if (flat > 1)
+                FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "scene: shapes[]: box flat in two axes");
             ++n_bounded;
             break;
         }
-        default: FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "shape type");
+        default: FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: shapes[].type unknown");
         }
     }
     for (i = 0; i < d->num_meshes; ++i) {
@@ -2008,13 +2200,18 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
         uint64_t nv3 = (uint64_t)m->num_triangles * 3u;
         int em;
         if (m->num_triangles == 0) continue;
-        if (!m->positions) FOVPT__FAIL(lg, FOV_ERR_NULL, "mesh positions NULL");
-        if (m->material >= d->num_materials) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mesh material index out of range");
+        if (!m->positions) FOVPT__FAIL(lg, FOV_ERR_NULL, "scene: meshes[].positions is NULL");
+        if (m->material >= d->num_materials)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: meshes[].material >= num_materials");
         if (m->num_triangles > FOVPT_MAX_PRIMS || m->num_vertices > 3u * FOVPT_MAX_PRIMS)
-            FOVPT__FAIL(lg, FOV_ERR_LIMIT, "mesh counts above FOVPT_MAX_PRIMS");
-        if (!m->indices && nv3 > m->num_vertices) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "non-indexed mesh: fewer than 3 vertices per triangle");
+            FOVPT__FAIL(lg, FOV_ERR_LIMIT,
+                        "scene: meshes[] triangle or vertex count above FOVPT_MAX_PRIMS");
+        if (!m->indices && nv3 > m->num_vertices)
+            FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                        "scene: meshes[] without indices: below 3 vertices a triangle");
         for (k = 0; k < m->num_vertices; ++k)
-            if (!fov__finite3(m->positions + 3u * (size_t)k)) FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "mesh vertex NaN or infinite");
+            if (!fov__finite3(m->positions + 3u * (size_t)k))
+                FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: meshes[].positions NaN or infinite");
         em = fovpt__emissive(&d->materials[m->material]);
         for (k = 0; k < m->num_triangles; ++k) {
             uint32_t i0, i1, i2;
@@ -2022,14 +2219,16 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             if (m->indices) {
                 i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u]; i2 = m->indices[3u * (size_t)k + 2u];
                 if (i0 >= m->num_vertices || i1 >= m->num_vertices || i2 >= m->num_vertices)
-                    FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "mesh index out of range");
+                    FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: meshes[].indices >= num_vertices");
             } else {
                 i0 = 3u * k; i1 = i0 + 1u; i2 = i0 + 2u;
             }
             if (!fovpt__tri_area2(m->positions + 3u * (size_t)i0, m->positions + 3u * (size_t)i1,
                                   m->positions + 3u * (size_t)i2, &a2)) {
                 if (!d->skip_degenerate)
-                    FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, em ? "zero-area light (triangle)" : "degenerate (zero-area) triangle");
+                    FOVPT__FAIL(lg, FOV_ERR_DEGENERATE,
+                                em ? "scene: meshes[]: triangle light of zero area"
+                                   : "scene: meshes[]: triangle of zero area");
                 ++skipped;
                 continue;
             }
@@ -2039,7 +2238,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     }
     n_bounded += n_tris;
     n_prims = (uint64_t)d->num_shapes + n_tris;
-    if (n_prims > FOVPT_MAX_PRIMS) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "primitives above FOVPT_MAX_PRIMS");
+    if (n_prims > FOVPT_MAX_PRIMS)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: primitives in total above FOVPT_MAX_PRIMS");
     (void)skipped;
     L->n_prims = (uint32_t)n_prims;
     L->n_bounded = (uint32_t)n_bounded;
@@ -2072,7 +2272,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
                                after the build: the leaf-ordered triangles (v0, e1, e2) */
     sz += 36u * (uint64_t)L->n_bounded;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    if (sz > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene memory overflows size_t");
+    if (sz > (uint64_t)(SIZE_MAX / 2u))
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
     L->total = (size_t)sz;
     return FOV_OK;
 }
@@ -2081,7 +2282,8 @@ FOVPT_API fov_result fovpt_scene_size(const fovpt_scene_desc *desc, size_t *byte
 {
     fovpt__layout L;
     fov_result e;
-    if (!desc || !bytes) return FOV_ERR_NULL;
+    if (!desc) return FOV_ERR_NULL;
+    if (!bytes) FOVPT__FAIL(&desc->logger, FOV_ERR_NULL, "scene_size: bytes is NULL");
     e = fovpt__plan(desc, &L);
     if (e != FOV_OK) return e;
     *bytes = L.total;
@@ -2285,7 +2487,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
             mid = w.count / 2u; /* identical centroids: any split is as good */
         }
         if (w.depth + 1u > cap)
-            FOVPT__FAIL(lg, FOV_ERR_LIMIT, "BVH deeper than bvh_max_depth (FOVPT_MAX_BVH_DEPTH)");
+            FOVPT__FAIL(lg, FOV_ERR_LIMIT,
+                        "scene: BVH deeper than bvh_max_depth (FOVPT_MAX_BVH_DEPTH)");
         FOV_ASSERT(used + 2u <= s->num_nodes);
         nd->a = used; nd->n = 0;
         stack[sp].node = used; stack[sp].start = w.start; stack[sp].count = mid; stack[sp].depth = w.depth + 1u; ++sp;
@@ -2306,12 +2509,15 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     unsigned char *base = (unsigned char *)mem;
     uint32_t *lights;
     float *cdf, *area, total = 0.0f;
-    if (!s || !d) return FOV_ERR_NULL;
+    if (!d) return FOV_ERR_NULL;
+    if (!s) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_build: s is NULL");
     e = fovpt__plan(d, &L);
     if (e != FOV_OK) return e;
-    if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene memory NULL");
-    if (bytes < L.total) FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene memory smaller than fovpt_scene_size");
-    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene memory not 8-byte aligned");
+    if (L.total > 0 && !mem) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_build: mem is NULL");
+    if (bytes < L.total)
+        FOVPT__FAIL(&d->logger, FOV_ERR_TOO_SMALL, "scene_build: bytes below fovpt_scene_size");
+    if (((uintptr_t)mem & 7u) != 0)
+        FOVPT__FAIL(&d->logger, FOV_ERR_INVALID_ARG, "scene_build: mem not 8-byte aligned");
     FOV_MEMSET(s, 0, sizeof *s);
     prims = (fovpt__prim *)(void *)(base + L.prims);
     lights = (uint32_t *)(void *)(base + L.lights);
@@ -2385,7 +2591,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         p->light = ++nl;
     }
     if (nl > 0) {
-        if (!(total > 0.0f) || !fov__finite(total)) FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "total emitted power not finite");
+        if (!(total > 0.0f) || !fov__finite(total))
+            FOVPT__FAIL(&d->logger, FOV_ERR_LIMIT, "scene_build: total emitted power overflows");
         for (i = 0; i < nl; ++i) cdf[i] /= total;
         cdf[nl - 1u] = 1.0f;
     }
@@ -3292,7 +3499,6 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c,
     uint64_t before = stats ? stats->bounce_rays + stats->shadow_rays : 0u;
     fov_result r = fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
     if (stats) stats->rays += stats->bounce_rays + stats->shadow_rays - before;
-    if (r != FOV_OK && c) FOVPT__FAIL(&c->logger, r, "radiance: scene, ray or config rejected");
     return r;
 }
 FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
@@ -3306,14 +3512,27 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
         at->poid = at->soid = FOVPT_PRIM_NONE;
         at->pt = -1.0f;
     }
-    if (!s || !c || !org || !dir || !rng || !rgb) return FOV_ERR_NULL;
+    if (!c) return FOV_ERR_NULL;
+    if (!s || !org || !dir || !rng || !rgb)
+        FOVPT__FAIL(&c->logger, FOV_ERR_NULL, "radiance: s, org, dir, rng and rgb are required");
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
-    if (!s->prims && !s->user_hit && s->num_prims) return FOV_ERR_INVALID_ARG;
-    if (!fov__finite3(org) || !fov__finite3(dir)) return FOV_ERR_NOT_FINITE;
-    if (!(fov__dot(dir, dir) > 0.0f)) return FOV_ERR_DEGENERATE;
-    if (c->mode >= (uint32_t)_FOVPT_MODE_NUM || c->max_depth > FOVPT_MAX_BOUNCES ||
-        (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
-        return FOV_ERR_INVALID_ARG;
+    if (!s->prims && !s->user_hit && s->num_prims)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "radiance: scene not built (call fovpt_scene_build)");
+    if (!fov__finite3(org))
+        FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "radiance: org NaN or infinite");
+    if (!fov__finite3(dir))
+        FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "radiance: dir NaN or infinite");
+    if (!(fov__dot(dir, dir) > 0.0f))
+        FOVPT__FAIL(&c->logger, FOV_ERR_DEGENERATE, "radiance: dir is zero");
+    if (c->mode >= (uint32_t)_FOVPT_MODE_NUM)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "radiance: c.mode unknown (see fovpt_mode)");
+    if (c->max_depth > FOVPT_MAX_BOUNCES)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "radiance: c.max_depth above FOVPT_MAX_BOUNCES");
+    if (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "radiance: c.max_depth above FOVPT_MAX_WHITTED");
     if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
     else fovpt__path(s, c, org, dir, rng, rgb, st, at);
     if (!fov__finite3(rgb)) {
@@ -3358,9 +3577,11 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
     uint64_t px, total = 0;
     uint32_t n;
     const fov_logger *lg = &c->logger;
-    if (c->method >= (uint32_t)_FOVPT_METHOD_NUM) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "method");
+    if (c->method >= (uint32_t)_FOVPT_METHOD_NUM)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "memory_size: config.method unknown");
     if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
-        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED, "temporal reuse / smoothing: SELECTIVE and JIN only (Kim et al. 2021)");
+        FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED,
+                    "config.temporal: reuse and smooth need method SELECTIVE or JIN");
     px = (uint64_t)cam->width * cam->height;
     if (c->method == FOVPT_METHOD_UNIFORM) {
         total = (px * 16u + 15u) & ~(uint64_t)15u;
@@ -3373,9 +3594,21 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
         for (n = 0; n < lay.count; ++n)
             total += (fovpt__grid_cells(cam->width, cam->height, lay.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
     }
-    if (total > (uint64_t)(SIZE_MAX / 2u)) FOVPT__FAIL(lg, FOV_ERR_LIMIT, "context memory overflows size_t");
+    if (total > (uint64_t)(SIZE_MAX / 2u))
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "memory_size: context memory overflows size_t");
     *bytes = (size_t)total;
     return FOV_OK;
+}
+
+/* Logs a fovpt__camera_setup failure as "<who>: <the rule its code stands for>". */
+FOVPT__PRIV fov_result fovpt__cam_fail(const fov_logger *lg, fov_result e, const char *who,
+                                       uint32_t line)
+{
+    const char *m = FOV__MSG(": cam.width or height 0, fov_y_deg not in (0, 180) or bad tan_*");
+    if (e == FOV_ERR_LIMIT) m = FOV__MSG(": cam.width or height above FOVPT_MAX_DIM");
+    if (e == FOV_ERR_NOT_FINITE) m = FOV__MSG(": a cam field NaN or infinite");
+    if (e == FOV_ERR_DEGENERATE) m = FOV__MSG(": cam.target == pos, or up zero or along the view");
+    return fov__err3(lg, "fovpt", e, who, m, "", line);
 }
 
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam, size_t *bytes)
@@ -3383,11 +3616,13 @@ FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_came
     fovpt_config c;
     float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
-    if (!cfg || !cam || !bytes) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!cam || !bytes)
+        FOVPT__FAIL(&cfg->logger, FOV_ERR_NULL, "memory_size: cam and bytes are required");
     e = fovpt_config_resolve(cfg, &c);
     if (e != FOV_OK) return e;
     e = fovpt__camera_setup(cam, r, u, f, t4, o);
-    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
+    if (e != FOV_OK) return fovpt__cam_fail(&c.logger, e, FOV__MSG("memory_size"), __LINE__);
     return fovpt__ctx_bytes(&c, cam, bytes);
 }
 
@@ -3479,20 +3714,30 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     float t4[4];
     size_t need;
     fov_result e;
-    if (!ctx || !cfg || !scene || !cam) return FOV_ERR_NULL;
+    if (!cfg) return FOV_ERR_NULL;
+    if (!ctx) FOVPT__FAIL(&cfg->logger, FOV_ERR_NULL, "init: ctx is NULL");
+    if (!scene) FOVPT__FAIL(&cfg->logger, FOV_ERR_NULL, "init: scene is NULL");
+    if (!cam) FOVPT__FAIL(&cfg->logger, FOV_ERR_NULL, "init: cam is NULL");
     e = fovpt_config_resolve(cfg, &c);
     if (e != FOV_OK) return e;
-    if (!scene->prims && scene->num_prims) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
-    if (!scene->materials) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "scene not built");
+    if (!scene->prims && scene->num_prims)
+        FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG,
+                    "init: scene.prims NULL (call fovpt_scene_build)");
+    if (!scene->materials)
+        FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG,
+                    "init: scene.materials NULL (call fovpt_scene_build)");
     FOV_MEMSET(ctx, 0, sizeof *ctx);
     e = fovpt__camera_setup(cam, ctx->right, ctx->up, ctx->fwd, t4, ctx->origin);
-    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "camera");
-    if (!fov__finite(gaze.x) || !fov__finite(gaze.y)) FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "gaze");
+    if (e != FOV_OK) return fovpt__cam_fail(&c.logger, e, FOV__MSG("init"), __LINE__);
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y))
+        FOVPT__FAIL(&c.logger, FOV_ERR_NOT_FINITE, "init: gaze.x or gaze.y NaN or infinite");
     e = fovpt__ctx_bytes(&c, cam, &need);
     if (e != FOV_OK) return e;
-    if (need > 0 && !mem) FOVPT__FAIL(&c.logger, FOV_ERR_NULL, "context memory NULL");
-    if (bytes < need) FOVPT__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "context memory smaller than fovpt_memory_size");
-    if (((uintptr_t)mem & 7u) != 0) FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "context memory not 8-byte aligned");
+    if (need > 0 && !mem) FOVPT__FAIL(&c.logger, FOV_ERR_NULL, "init: mem is NULL");
+    if (bytes < need)
+        FOVPT__FAIL(&c.logger, FOV_ERR_TOO_SMALL, "init: bytes below fovpt_memory_size");
+    if (((uintptr_t)mem & 7u) != 0)
+        FOVPT__FAIL(&c.logger, FOV_ERR_INVALID_ARG, "init: mem not 8-byte aligned");
     ctx->cfg = c;
     ctx->scene = scene;
     ctx->cam = *cam;
@@ -3501,7 +3746,8 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
     fovpt__lay(&c, &ctx->lay);
     ctx->lanczos = c.method == FOVPT_METHOD_ZONES ? c.zones.lanczos_a : 0u;
     e = fovpt__ctx_view(ctx);
-    if (e != FOV_OK) FOVPT__FAIL(&c.logger, e, "eccentricity model (display)");
+    if (e != FOV_OK)
+        FOVPT__FAIL(&c.logger, e, "init: gaze or config.display: the eye direction overflows");
     ctx->mem = mem;
     ctx->mem_size = bytes;
     if (c.method == FOVPT_METHOD_UNIFORM) {
@@ -3548,12 +3794,16 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     fov_result e;
     fovpt_camera old;
     int moved;
-    if (!ctx || !cam) return FOV_ERR_NULL;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!cam) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "set_view: cam is NULL");
     e = fovpt__camera_setup(cam, r, u, f, t4, o);
-    if (e != FOV_OK) FOVPT__FAIL(&ctx->cfg.logger, e, "camera");
+    if (e != FOV_OK) return fovpt__cam_fail(&ctx->cfg.logger, e, FOV__MSG("set_view"), __LINE__);
     if (cam->width != ctx->cam.width || cam->height != ctx->cam.height)
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "camera size differs from fovpt_init's");
-    if (!fov__finite(gaze.x) || !fov__finite(gaze.y)) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE, "gaze");
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_view: cam.width or height differs from init's");
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE,
+                    "set_view: gaze.x or gaze.y NaN or infinite");
     old = ctx->cam;
     moved = 0;
     {
@@ -3591,7 +3841,8 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
             fovpt__copy3(ctx->right, r0); fovpt__copy3(ctx->up, u0); fovpt__copy3(ctx->fwd, f0);
             fovpt__copy3(ctx->origin, o0);
             ctx->tx0 = tt[0]; ctx->tx1 = tt[1]; ctx->ty0 = tt[2]; ctx->ty1 = tt[3];
-            FOVPT__FAIL(&ctx->cfg.logger, e, "set_view: gaze or display geometry (the view is unchanged)");
+            FOVPT__FAIL(&ctx->cfg.logger, e,
+                        "set_view: gaze or display geometry (the view is unchanged)");
         }
     }
     if (ctx->hist_slots) { /* the frame just rendered becomes history; nothing is reset */
@@ -3665,9 +3916,12 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
 {
     fovpt_stats st;
     uint32_t x, y, n, W, H;
-    if (!ctx || !ctx->scene || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!ctx->scene || (!ctx->accum && !ctx->layer_buf[0]))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "trace_rows: ctx not initialised (fovpt_init)");
     W = ctx->cam.width; H = ctx->cam.height;
-    if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if (y0 > y1 || y1 > H)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "trace_rows: needs y0 <= y1 <= height");
     FOV_MEMSET(&st, 0, sizeof st);
     if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
         for (y = y0; y < y1; ++y)
@@ -3800,7 +4054,8 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
     int jin;
     if (!ctx) return FOV_ERR_NULL;
     W = ctx->cam.width; H = ctx->cam.height;
-    if (y0 > y1 || y1 > H) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if (y0 > y1 || y1 > H)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "refine_rows: needs y0 <= y1 <= height");
     if (!ctx->pre) return FOV_OK; /* nothing to refine for this method */
     FOV_MEMSET(&st, 0, sizeof st);
     sc = &ctx->cfg.selective;
@@ -4033,11 +4288,18 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1, const fovpt_output *out)
 {
     uint32_t x, y, k, W;
-    if (!ctx || !out || (!ctx->accum && !ctx->layer_buf[0])) return FOV_ERR_NULL;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "resolve_rows: out is NULL");
+    if (!ctx->accum && !ctx->layer_buf[0])
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
+                    "resolve_rows: ctx not initialised (fovpt_init)");
     W = ctx->cam.width;
-    if (y0 > y1 || y1 > ctx->cam.height) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "rows outside the image");
+    if (y0 > y1 || y1 > ctx->cam.height)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "resolve_rows: needs y0 <= y1 <= height");
     if ((out->rgb_stride && out->rgb_stride < 3u * W) || (out->rgb8_stride && out->rgb8_stride < 3u * W))
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "output stride below 3 * width");
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
             float c[3] = { 0.0f, 0.0f, 0.0f };
@@ -4084,7 +4346,8 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
 FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out, fovpt_stats *stats)
 {
     fov_result e;
-    if (!ctx || !out) return FOV_ERR_NULL;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "render: out is NULL");
     e = fovpt_trace_rows(ctx, frame, 0, ctx->cam.height, stats);
     if (e != FOV_OK) return e;
     e = fovpt_refine_rows(ctx, frame, 0, ctx->cam.height, stats);

@@ -183,9 +183,24 @@ ERRORS AND LOGGING
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done (an off-axis camera, non-zero
-   cam.tan_left .. tan_top, with FOV_ERR_UNSUPPORTED); nothing asserts on data. An optional
-   fov_logger in the config receives a specific message with each error (on by default;
-   FOV_NO_ERROR_STRINGS removes the texts).
+   cam.tan_left .. tan_top, with FOV_ERR_UNSUPPORTED); nothing asserts on data.
+   Messages are on by default (no FOV_DEBUG needed): set cfg.logger and every failure calls it
+   once, with the code and a message naming the field and the rule, e.g.
+   "config.spp must be 1, 4 or 16 (0: 1)", "init: scene.num_lights above FOVSDF_MAX_LIGHTS",
+   "render_tile/rows: x1 or y1 beyond the image". To see them:
+      static void log_err(const char *tag, uint32_t level, int32_t code, const char *msg,
+                          uint32_t line, void *user)
+      { (void)level; (void)user; fprintf(stderr, "%s %d (%s): %s [line %u]\n", tag, (int)code,
+                fovsdf_result_string((fov_result)code), msg, (unsigned)line); }
+      cfg.logger.func = log_err;            // the context keeps it: fovsdf_render_* log too
+   The loggers: cfg.logger (fovsdf_config_resolve, fovsdf_memory_size, fovsdf_init and every
+   call on the context), fovsdf_builder.logger, fovsdf_program_check's argument. Functions
+   without one return the code only: fovsdf_camera_basis, fovsdf_ecc_init, fovsdf_march,
+   fovsdf_min_filter, fovsdf_mask_blur, fovsdf_program_size / _build / _compact,
+   fovsdf_builtin_size / _init, fovsdf_trace_ref, and any call given a NULL context or
+   config. FOV_NO_ERROR_STRINGS removes the texts (about 7.5 KB of a Cortex-M4 -Os build):
+   the logger still gets every code and line, with msg "" (never NULL), and
+   fovsdf_result_string returns "".
    Non-finite values from your callbacks never reach the image: a NaN or infinite distance
    ends the ray as a miss (every tracer; no evaluation beyond t_max or at a non-finite point,
    hits always at a finite t in [t_start, t_max]), a NaN or infinite albedo channel is taken
@@ -1501,6 +1516,90 @@ FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result 
     return r;
 }
 #define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+#ifndef FOV_NO_ERROR_STRINGS
+/* Append s (or v in decimal) to the message buf of capacity cap holding n characters. */
+FOV__PRIV uint32_t fov__app(char *buf, uint32_t n, uint32_t cap, const char *s)
+{
+    while (*s && n + 1u < cap) buf[n++] = *s++;
+    buf[n] = 0;
+    return n;
+}
+FOV__PRIV uint32_t fov__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
+{
+    char d[12];
+    uint32_t k = 0;
+    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
+    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
+    buf[n] = 0;
+    return n;
+}
+#endif
+/* Logs the message a b c (composed on the stack; "" under FOV_NO_ERROR_STRINGS), returns r. */
+FOV__PRIV fov_result fov__err3(const fov_logger *lg, const char *tag, fov_result r, const char *a,
+                               const char *b, const char *c, uint32_t line)
+{
+#ifndef FOV_NO_ERROR_STRINGS
+    char buf[112];
+    uint32_t n = fov__app(buf, 0, sizeof buf, a);
+    n = fov__app(buf, n, sizeof buf, b);
+    (void)fov__app(buf, n, sizeof buf, c);
+    return fov__err(lg, tag, r, buf, line);
+#else
+    (void)a; (void)b; (void)c;
+    return fov__err(lg, tag, r, "", line);
+#endif
+}
+/* A float field of a struct for fov__fields_check: byte offset, 1 if it must be >= 0, name. */
+typedef struct fov__field {
+    uint16_t off, nonneg;
+    const char *name;
+} fov__field;
+#define FOV__FIELD(type, member, nonneg) { (uint16_t)offsetof(type, member), nonneg, \
+                                           FOV__MSG(#member) }
+/* Pass 0: the first of the n fields of the struct at base that is NaN or infinite fails with
+   FOV_ERR_NOT_FINITE, "<who><name> is NaN or infinite"; pass 1: the first negative one among
+   those marked nonneg fails with FOV_ERR_INVALID_ARG, "<who><name> must be >= 0". */
+FOV__PRIV fov_result fov__fields_check(const fov_logger *lg, const char *tag, const char *who,
+                                       const void *base, const fov__field *f, uint32_t n,
+                                       int pass, uint32_t line)
+{
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        float x;
+        FOV_MEMCPY(&x, (const unsigned char *)base + f[i].off, sizeof x);
+        if (pass == 0 && !fov__finite(x))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, f[i].name, " is NaN or infinite",
+                             line);
+        if (pass == 1 && f[i].nonneg && x < 0.0f)
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, f[i].name, " must be >= 0", line);
+    }
+    return FOV_OK;
+}
+
+/* The rules of config.display (fov_display): what & 1, every field finite; what & 2,
+   fov_y_deg in [0, 180), pixel_pitch_mm and distance_mm >= 0 and given together. */
+FOV__PRIV fov_result fov__display_check(const fov_logger *lg, const char *tag, const fov_display *d,
+                                        int what, uint32_t line)
+{
+    static const fov__field f[5] = {
+        FOV__FIELD(fov_display, fov_y_deg, 0), FOV__FIELD(fov_display, pixel_pitch_mm, 0),
+        FOV__FIELD(fov_display, distance_mm, 0), FOV__FIELD(fov_display, axis_dx, 0),
+        FOV__FIELD(fov_display, axis_dy, 0) };
+    fov_result r = FOV_OK;
+    if (what & 1) r = fov__fields_check(lg, tag, "config.display.", d, f, 5u, 0, line);
+    if (r != FOV_OK || !(what & 2)) return r;
+    if (d->fov_y_deg < 0.0f || d->fov_y_deg >= 180.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display.fov_y_deg must be in [0, 180)"), line);
+    if (d->pixel_pitch_mm < 0.0f || d->distance_mm < 0.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: pixel_pitch_mm, distance_mm must be >= 0"), line);
+    if (fov__is0(d->pixel_pitch_mm) != fov__is0(d->distance_mm))
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: give pixel_pitch_mm and distance_mm, or neither"),
+                        line);
+    return FOV_OK;
+}
 
 FOV__PRIV const char *fov__result_string(fov_result r)
 {
@@ -1762,106 +1861,142 @@ FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void)
 
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out)
 {
+    /* the float fields: NaN or infinite (pass 0), negative (pass 1) */
+    static const fov__field fl[9] = {
+        FOV__FIELD(fovsdf_config, eps, 1),
+        FOV__FIELD(fovsdf_config, eps_px, 1), FOV__FIELD(fovsdf_config, t_max, 1),
+        FOV__FIELD(fovsdf_config, omega, 1), FOV__FIELD(fovsdf_config, ar_beta, 1),
+        FOV__FIELD(fovsdf_config, bv_relax, 1), FOV__FIELD(fovsdf_config, shadow_eps, 1),
+        FOV__FIELD(fovsdf_config, shadow_t0, 1), FOV__FIELD(fovsdf_config, normal_eps, 1) };
+    static const fov__field fa[6] = {
+        FOV__FIELD(fovsdf_config, acuity.A, 1), FOV__FIELD(fovsdf_config, acuity.rate, 1),
+        FOV__FIELD(fovsdf_config, acuity.C, 1), FOV__FIELD(fovsdf_config, acuity.fovea_deg, 1),
+        FOV__FIELD(fovsdf_config, acuity.outer_deg, 1),
+        FOV__FIELD(fovsdf_config, edge_threshold, 1) };
     fovsdf_config c;
     const fov_logger *lg;
-    if (!in || !out) return FOV_ERR_NULL;
-    c = *in;
+    fov_result r;
+    if (!in) return FOV_ERR_NULL;
     lg = &in->logger;
-    if (!fov__finite(c.eps) || !fov__finite(c.eps_px) || !fov__finite(c.t_max) ||
-        !fov__finite(c.omega) || !fov__finite(c.ar_beta) || !fov__finite(c.bv_relax) ||
-        !fov__finite(c.shadow_eps) || !fov__finite(c.shadow_t0) ||
-        !fov__finite(c.normal_eps) || !fov__finite(c.display.fov_y_deg) ||
-        !fov__finite(c.display.pixel_pitch_mm) || !fov__finite(c.display.distance_mm) ||
-        !fov__finite(c.display.axis_dx) || !fov__finite(c.display.axis_dy))
-        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: a parameter is NaN or infinite");
-    if (c.method >= (uint32_t)_FOVSDF_METHOD_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown method");
+    if (!out) FOVSDF__FAIL(lg, FOV_ERR_NULL, "config_resolve: out is NULL");
+    c = *in;
+    r = fov__fields_check(lg, "fovsdf", "config.", &c, fl, 9u, 0, (uint32_t)__LINE__);
+    if (r == FOV_OK) r = fov__display_check(lg, "fovsdf", &c.display, 1, (uint32_t)__LINE__);
+    if (r != FOV_OK) return r;
+    if (c.method >= (uint32_t)_FOVSDF_METHOD_NUM)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.method: unknown (see fovsdf_method)");
     if (c.spp == 0) c.spp = 1;
-    if (c.spp != 1 && c.spp != 4 && c.spp != 16) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: spp must be 1, 4 or 16");
-    if (c.eps_mode >= (uint32_t)_FOVSDF_EPS_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown eps_mode");
-    if (c.eps < 0.0f || c.eps_px < 0.0f || c.t_max < 0.0f || c.omega < 0.0f || c.ar_beta < 0.0f ||
-        c.bv_relax < 0.0f || c.shadow_eps < 0.0f || c.shadow_t0 < 0.0f || c.normal_eps < 0.0f)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative parameter");
+    if (c.spp != 1 && c.spp != 4 && c.spp != 16)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.spp must be 1, 4 or 16 (0: 1)");
+    if (c.eps_mode >= (uint32_t)_FOVSDF_EPS_NUM)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.eps_mode: unknown (see fovsdf_eps_mode)");
+    r = fov__fields_check(lg, "fovsdf", "config.", &c, fl, 9u, 1, (uint32_t)__LINE__);
+    if (r != FOV_OK) return r;
     if (fov__is0(c.eps)) c.eps = 1e-4f;
     if (fov__is0(c.eps_px)) c.eps_px = 0.25f;
     if (c.max_steps == 0) c.max_steps = 256;
-    if (c.max_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: max_steps above FOVSDF_MAX_STEPS");
+    if (c.max_steps > FOVSDF_MAX_STEPS)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config.max_steps above FOVSDF_MAX_STEPS");
     if (fov__is0(c.omega)) c.omega = 1.6f;
-    if (c.omega < 1.0f || c.omega >= 2.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: omega must be in [1, 2)");
+    if (c.omega < 1.0f || c.omega >= 2.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.omega must be in [1, 2) (0: 1.6)");
     if (fov__is0(c.ar_beta)) c.ar_beta = 0.3f;
-    if (c.ar_beta > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ar_beta must be in (0, 1]");
+    if (c.ar_beta > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.ar_beta must be in (0, 1]");
     if (fov__is0(c.bv_relax)) c.bv_relax = 0.9f;
-    if (c.bv_relax > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: bv_relax must be in (0, 1]");
-    if (c.shading >= (uint32_t)_FOVSDF_SHADE_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown shading");
+    if (c.bv_relax > 1.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.bv_relax must be in (0, 1]");
+    if (c.shading >= (uint32_t)_FOVSDF_SHADE_NUM)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.shading: unknown (see fovsdf_shading)");
     if (c.shadow_steps == 0) c.shadow_steps = 64;
-    if (c.shadow_steps > FOVSDF_MAX_STEPS) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: shadow_steps above FOVSDF_MAX_STEPS");
+    if (c.shadow_steps > FOVSDF_MAX_STEPS)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config.shadow_steps above FOVSDF_MAX_STEPS");
     if (fov__is0(c.shadow_eps)) c.shadow_eps = 1e-3f;
     if (c.finish == 0) c.finish = FOVSDF_FINISH_BV2018;
-    if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown finish");
-    if (c.heuristic_start > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: heuristic_start must be 0 (safe) or 1 (thesis)");
+    if (c.finish >= (uint32_t)_FOVSDF_FINISH_NUM)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.finish: unknown (see fovsdf_finish)");
+    if (c.heuristic_start > 1)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "config.heuristic_start must be 0 (safe) or 1 (thesis)");
     if (c.ipr_levels == 0) c.ipr_levels = 3;
-    if (c.ipr_levels > 6) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_levels must be 1 .. 6");
-    if (c.ipr_radius < 0 || c.ipr_radius > 3) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_radius must be 0 .. 3");
+    if (c.ipr_levels > 6) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.ipr_levels must be 1 .. 6");
+    if (c.ipr_radius < 0 || c.ipr_radius > 3)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.ipr_radius must be 0 .. 3");
     if (c.ipr_radius == 0) c.ipr_radius = 1;
-    if (c.ipr_no_filter > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_no_filter must be 0 or 1");
+    if (c.ipr_no_filter > 1)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.ipr_no_filter must be 0 or 1");
     if (c.ipr_tile == 0) c.ipr_tile = 32;
     if (c.ipr_tile > 64 || c.ipr_tile % (1u << (c.ipr_levels - 1u)) != 0)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "config.ipr_tile must be a multiple of 2^(ipr_levels-1), at most 64");
     if (c.method == FOVSDF_METHOD_IPR &&
         fovsdf__ipr_floats(c.ipr_tile, c.ipr_levels,
                            (c.ipr_no_filter || !c.heuristic_start) ? 0 : c.ipr_radius) >
             FOVSDF_TILE_SCRATCH)
-        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: IPR tile working memory above FOVSDF_TILE_SCRATCH");
-    if (!fov__finite(c.skip_scale) || !fov__finite(c.skip_eps))
-        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: skip_scale or skip_eps not finite");
-    if (c.skip_scale < 0.0f || c.skip_eps < 0.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_scale and skip_eps must be > 0");
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT,
+                     "config.ipr_tile: working memory above FOVSDF_TILE_SCRATCH");
+    if (!fov__finite(c.skip_scale))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config.skip_scale is NaN or infinite");
+    if (!fov__finite(c.skip_eps))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config.skip_eps is NaN or infinite");
+    if (c.skip_scale < 0.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.skip_scale must be >= 0");
+    if (c.skip_eps < 0.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.skip_eps must be >= 0");
     if (fov__is0(c.skip_scale)) c.skip_scale = 1.005f;
     if (fov__is0(c.skip_eps)) c.skip_eps = 0.05f;
-    if (c.skip_scale > 2.0f || c.skip_scale < 0.5f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_scale must be in [0.5, 2]");
+    if (c.skip_scale > 2.0f || c.skip_scale < 0.5f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.skip_scale must be in [0.5, 2] (0: 1.005)");
     if (c.skip_block == 0) c.skip_block = 4;
-    if (c.skip_block > 16) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_block must be 1 .. 16");
-    if (c.skip_no_shadow_start > 1) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: skip_no_shadow_start must be 0 or 1");
+    if (c.skip_block > 16)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.skip_block must be 1 .. 16");
+    if (c.skip_no_shadow_start > 1)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.skip_no_shadow_start must be 0 or 1");
     if (c.cone_tile == 0) c.cone_tile = 16;
     if (c.cone_tile > 256 || (c.cone_tile & (c.cone_tile - 1)) != 0)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cone_tile must be a power of two <= 256");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cone_tile must be a power of two <= 256");
     {
         uint32_t lv = 1, tt = c.cone_tile;
         while (tt > 1) { tt >>= 1; ++lv; }
         if (c.cone_levels == 0) c.cone_levels = lv > 1 ? lv - 1 : 1;
-        if (c.cone_levels > lv) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: cone_levels above log2(cone_tile) + 1");
+        if (c.cone_levels > lv)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cone_levels above log2(cone_tile) + 1");
     }
     if (fov__is0(c.shadow_t0)) c.shadow_t0 = 1e-2f;
     {
         fovsdf_acuity d = fovsdf_acuity_default();
-        if (!fov__finite(c.acuity.A) || !fov__finite(c.acuity.rate) || !fov__finite(c.acuity.C) ||
-            !fov__finite(c.acuity.fovea_deg) || !fov__finite(c.acuity.outer_deg) || !fov__finite(c.edge_threshold))
-            FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config: acuity or edge_threshold not finite");
-        if (c.acuity.A < 0.0f || c.acuity.rate < 0.0f || c.acuity.C < 0.0f ||
-            c.acuity.fovea_deg < 0.0f || c.acuity.outer_deg < 0.0f || c.edge_threshold < 0.0f)
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: negative acuity parameter or edge_threshold");
+        r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 6u, 0, (uint32_t)__LINE__);
+        if (r == FOV_OK) r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 6u, 1, __LINE__);
+        if (r != FOV_OK) return r;
         if (fov__is0(c.acuity.A)) c.acuity.A = d.A;
         if (fov__is0(c.acuity.rate)) c.acuity.rate = d.rate;
         if (fov__is0(c.acuity.C)) c.acuity.C = d.C;
         if (fov__is0(c.acuity.fovea_deg)) c.acuity.fovea_deg = d.fovea_deg;
-        if (c.acuity.A + c.acuity.C > 1.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity A + C above 1");
-        if (c.acuity.fovea_deg > 180.0f || (c.acuity.outer_deg > 0.0f && c.acuity.outer_deg <= c.acuity.fovea_deg))
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: acuity.outer_deg must exceed fovea_deg (0: 7.5), fovea_deg <= 180");
+        if (c.acuity.A + c.acuity.C > 1.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.acuity: A + C above 1");
+        if (c.acuity.fovea_deg > 180.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.acuity.fovea_deg must be <= 180");
+        if (c.acuity.outer_deg > 0.0f && c.acuity.outer_deg <= c.acuity.fovea_deg)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                         "config.acuity.outer_deg must exceed fovea_deg (0: 7.5)");
         if (fov__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
-        if (c.fov_mask >= (uint32_t)_FOVSDF_MASK_NUM) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: unknown fov_mask");
+        if (c.fov_mask >= (uint32_t)_FOVSDF_MASK_NUM)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.fov_mask: unknown (see fovsdf_fov_mask)");
         if (c.refresh == 0) c.refresh = 1;
         if (c.refresh != 1 && c.refresh != 2 && c.refresh != 4)
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: refresh must be 1, 2 or 4");
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.refresh must be 1, 2 or 4 (0: 1)");
         if (c.method == FOVSDF_METHOD_FIPR &&
-            (c.ipr_tile % 4u != 0 || fovsdf__fov_cells(c.ipr_tile, c.ipr_no_filter ? 0 : c.ipr_radius, 0) > FOVSDF_FOV_CELLS))
-            FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: FIPR needs ipr_tile a multiple of 4 and its cells within FOVSDF_FOV_CELLS");
+            (c.ipr_tile % 4u != 0 ||
+             fovsdf__fov_cells(c.ipr_tile, c.ipr_no_filter ? 0 : c.ipr_radius, 0) >
+                 FOVSDF_FOV_CELLS))
+            FOVSDF__FAIL(lg, FOV_ERR_LIMIT,
+                         "config.ipr_tile: FIPR needs a multiple of 4, cells in FOVSDF_FOV_CELLS");
         if (c.method == FOVSDF_METHOD_CONE_FOV && c.cone_tile < 4)
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: CONE_FOV needs cone_tile >= 4");
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cone_tile: CONE_FOV needs >= 4");
         if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1, 1) > FOVSDF_FOV_CELLS)
-            FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config: CONE_FOV cone_tile cells above FOVSDF_FOV_CELLS");
+            FOVSDF__FAIL(lg, FOV_ERR_LIMIT,
+                         "config.cone_tile: CONE_FOV cells above FOVSDF_FOV_CELLS");
     }
-    if (c.display.fov_y_deg < 0.0f || c.display.fov_y_deg >= 180.0f ||
-        c.display.pixel_pitch_mm < 0.0f || c.display.distance_mm < 0.0f ||
-        fov__is0(c.display.pixel_pitch_mm) != fov__is0(c.display.distance_mm))
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config: display geometry out of range");
+    r = fov__display_check(lg, "fovsdf", &c.display, 2, (uint32_t)__LINE__);
+    if (r != FOV_OK) return r;
     *out = c;
     return FOV_OK;
 }
@@ -1922,24 +2057,6 @@ FOVSDF__PRIV int fovsdf__coord_ok(const float v[3])
 /* Every linear RGB value the library returns lies in [0, this] (the largest half float). */
 #define FOVSDF__RGB_MAX 65504.0f
 
-#ifndef FOV_NO_ERROR_STRINGS
-FOVSDF__PRIV uint32_t fovsdf__app(char *buf, uint32_t n, uint32_t cap, const char *s)
-{
-    while (*s && n + 1u < cap) buf[n++] = *s++;
-    buf[n] = 0;
-    return n;
-}
-FOVSDF__PRIV uint32_t fovsdf__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
-{
-    char d[12];
-    uint32_t k = 0;
-    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
-    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
-    buf[n] = 0;
-    return n;
-}
-#endif
-
 FOVSDF__PRIV int fovsdf__node_arity(uint32_t t)
 {
     if (t >= FOVSDF_NODE_SPHERE && t <= FOVSDF_NODE_TERRAIN) return 0;
@@ -1967,18 +2084,18 @@ FOVSDF__PRIV fov_result fovsdf__node_fail(const fov_logger *lg, fov_result r, co
 #ifndef FOV_NO_ERROR_STRINGS
     char buf[192];
     uint32_t n = 0;
-    n = fovsdf__app(buf, n, sizeof buf, who);
-    n = fovsdf__app(buf, n, sizeof buf, ": node ");
-    n = fovsdf__appu(buf, n, sizeof buf, index);
-    n = fovsdf__app(buf, n, sizeof buf, " (");
-    n = fovsdf__app(buf, n, sizeof buf, fovsdf__node_name(type));
-    n = fovsdf__app(buf, n, sizeof buf, "): ");
+    n = fov__app(buf, n, sizeof buf, who);
+    n = fov__app(buf, n, sizeof buf, ": node ");
+    n = fov__appu(buf, n, sizeof buf, index);
+    n = fov__app(buf, n, sizeof buf, " (");
+    n = fov__app(buf, n, sizeof buf, fovsdf__node_name(type));
+    n = fov__app(buf, n, sizeof buf, "): ");
     if (field >= 0) {
-        n = fovsdf__app(buf, n, sizeof buf, "f");
-        n = fovsdf__appu(buf, n, sizeof buf, (uint32_t)field);
-        n = fovsdf__app(buf, n, sizeof buf, " ");
+        n = fov__app(buf, n, sizeof buf, "f");
+        n = fov__appu(buf, n, sizeof buf, (uint32_t)field);
+        n = fov__app(buf, n, sizeof buf, " ");
     }
-    (void)fovsdf__app(buf, n, sizeof buf, rule);
+    (void)fov__app(buf, n, sizeof buf, rule);
     return fov__err(lg, "fovsdf", r, buf, line);
 #else
     (void)who; (void)index; (void)type; (void)field; (void)rule;
@@ -1994,9 +2111,11 @@ FOVSDF__PRIV uint32_t fovsdf__node_nf(uint32_t t)
     return t < (uint32_t)_FOVSDF_NODE_NUM ? nf[t] : 0u;
 }
 
-#define FOVSDF__NCK(cond, code, field, rule)                                                                 \
-    do {                                                                                                     \
-        if (!(cond)) return fovsdf__node_fail(lg, code, who, index, n->type, field, FOV__MSG(rule), (uint32_t)__LINE__); \
+#define FOVSDF__NCK(cond, code, field, rule)                                                     \
+    do {                                                                                         \
+        if (!(cond))                                                                             \
+            return fovsdf__node_fail(lg, code, who, index, n->type, field, FOV__MSG(rule),       \
+                                     (uint32_t)__LINE__);                                        \
     } while (0)
 
 /* Validates node n (the node at index `index`): its type, its children (indices in
@@ -2763,8 +2882,10 @@ FOVSDF_API fov_result fovsdf_program_check(const fovsdf_node *nodes, uint32_t co
     uint32_t k;
     if (!nodes) FOVSDF__FAIL(lg, FOV_ERR_NULL, "program_check: nodes is NULL");
     if (count == 0 || root < 0 || (uint32_t)root >= count)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "program_check: count must be > 0 and root in [0, count)");
-    if (count > 0x00ffffffu) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "program_check: more than 2^24 - 1 nodes");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "program_check: count must be > 0 and root in [0, count)");
+    if (count > 0x00ffffffu)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "program_check: more than 2^24 - 1 nodes");
     for (k = 0; k < count; ++k) {
         fov_result r = fovsdf__node_check(&nodes[k], k, count, lg, "program_build");
         if (r != FOV_OK) return r;
@@ -3819,14 +3940,18 @@ FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_
 {
     fovsdf_config c;
     fov_result r;
-    if (!bytes) return FOV_ERR_NULL;
+    const fov_logger *lg = cfg ? &cfg->logger : 0;
+    if (!bytes) FOVSDF__FAIL(lg, FOV_ERR_NULL, "memory_size: bytes is NULL");
     *bytes = 0;
     if (cfg) {
         r = fovsdf_config_resolve(cfg, &c);
         if (r != FOV_OK) return r;
     }
-    if (cam && (cam->width == 0 || cam->height == 0)) return FOV_ERR_INVALID_ARG;
-    if (cam && (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM)) return FOV_ERR_LIMIT;
+    if (cam && (cam->width == 0 || cam->height == 0))
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "memory_size: cam.width and cam.height must be >= 1");
+    if (cam && (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM))
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT,
+                     "memory_size: cam.width or cam.height above FOVSDF_MAX_DIM");
     return FOV_OK;
 }
 
@@ -3849,23 +3974,38 @@ FOVSDF_API void fovsdf_stats_add(fovsdf_stats *a, const fovsdf_stats *s)
     a->prims += s->prims; a->prims_skipped += s->prims_skipped;
 }
 
-FOVSDF__PRIV int fovsdf__scene_ok(const fovsdf_scene *s, fov_result *r)
+FOVSDF__PRIV fov_result fovsdf__scene_check(const fovsdf_scene *s, const fov_logger *lg)
 {
     uint32_t i;
-    if (!s->dist && !s->dist_ex) { *r = FOV_ERR_NULL; return 0; }
-    if (!fov__finite(s->lipschitz) || !fov__finite(s->t_max) || !fov__finite3(s->ambient) ||
-        !fov__finite3(s->sky_zenith) || !fov__finite3(s->sky_horizon)) { *r = FOV_ERR_NOT_FINITE; return 0; }
-    if (s->lipschitz < 0.0f || s->t_max < 0.0f) { *r = FOV_ERR_INVALID_ARG; return 0; }
-    if (s->num_lights > FOVSDF_MAX_LIGHTS) { *r = FOV_ERR_LIMIT; return 0; }
+    if (!s->dist && !s->dist_ex)
+        FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: scene.dist and scene.dist_ex are both NULL");
+    if (!fov__finite(s->lipschitz))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: scene.lipschitz is NaN or infinite");
+    if (!fov__finite(s->t_max))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: scene.t_max is NaN or infinite");
+    if (!fov__finite3(s->ambient))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: scene.ambient is NaN or infinite");
+    if (!fov__finite3(s->sky_zenith) || !fov__finite3(s->sky_horizon))
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE,
+                     "init: scene.sky_zenith or sky_horizon NaN or infinite");
+    if (s->lipschitz < 0.0f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: scene.lipschitz must be >= 0");
+    if (s->t_max < 0.0f) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: scene.t_max must be >= 0");
+    if (s->num_lights > FOVSDF_MAX_LIGHTS)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: scene.num_lights above FOVSDF_MAX_LIGHTS");
     for (i = 0; i < s->num_lights; ++i) {
         const fovsdf_light *L = &s->lights[i];
-        if (!fov__finite3(L->v) || !fov__finite3(L->color) || !fov__finite(L->range) || !fov__finite(L->shadow_k)) {
-            *r = FOV_ERR_NOT_FINITE;
-            return 0;
-        }
-        if (L->type >= (uint32_t)_FOVSDF_LIGHT_NUM || L->range < 0.0f) { *r = FOV_ERR_INVALID_ARG; return 0; }
+        if (!fov__finite3(L->v) || !fov__finite3(L->color) || !fov__finite(L->range) ||
+            !fov__finite(L->shadow_k))
+            FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE,
+                         "init: scene.lights[]: v, color, range or shadow_k not finite");
+        if (L->type >= (uint32_t)_FOVSDF_LIGHT_NUM)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                         "init: scene.lights[].type unknown (see fovsdf_light_type)");
+        if (L->range < 0.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: scene.lights[].range must be >= 0");
     }
-    return 1;
+    return FOV_OK;
 }
 
 FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, const fovsdf_scene *scene,
@@ -3878,39 +4018,51 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
     float tanh, fov, rt[3], up[3], fw[3], rt_o[3];
     uint32_t i;
     fov_ecc_model em;
-    if (!ctx || !scene || !cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx, scene and camera are required");
+    if (!ctx) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx is NULL");
+    if (!scene) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: scene is NULL");
+    if (!cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: cam is NULL");
     if (cfg) {
         r = fovsdf_config_resolve(cfg, &c);
         if (r != FOV_OK) return r;
     } else {
         c = fovsdf_config_default();
     }
-    if (!fovsdf__scene_ok(scene, &r)) FOVSDF__FAIL(lg, r, "init: bad scene");
-    if (cam->width == 0 || cam->height == 0) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: zero image size");
-    if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM) FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: image larger than FOVSDF_MAX_DIM");
+    r = fovsdf__scene_check(scene, lg);
+    if (r != FOV_OK) return r;
+    if (cam->width == 0 || cam->height == 0)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.width and cam.height must be >= 1");
+    if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: cam.width or cam.height above FOVSDF_MAX_DIM");
     if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) || !fov__finite(gaze.x) || !fov__finite(gaze.y))
-        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: NaN or infinite camera or gaze");
+        FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE,
+                     "init: cam.fov_y_deg, cam.eye_offset or gaze NaN or infinite");
     if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
         !fov__is0(cam->tan_top))
         FOVSDF__FAIL(lg, FOV_ERR_UNSUPPORTED,
                      "init: cam.tan_left .. tan_top must be 0 (symmetric frusta only)");
     fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
-    if (!(fov > 0.0f && fov < 180.0f)) FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: field of view must be in (0, 180) degrees");
+    if (!(fov > 0.0f && fov < 180.0f))
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.fov_y_deg must be in (0, 180) (0: 60)");
     r = fovsdf_camera_basis(cam, rt, up, fw);
-    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: camera basis (NaN, target == pos, or up parallel to the view)");
+    if (r == FOV_ERR_NOT_FINITE) FOVSDF__FAIL(lg, r, "init: cam.pos, target or up NaN or infinite");
+    if (r != FOV_OK)
+        FOVSDF__FAIL(lg, r, "init: cam.target == cam.pos, or cam.up zero or along the view");
     /* positions beyond 1e18 cannot be resolved (NUMERICS): their squares overflow float */
     if (!fovsdf__coord_ok(cam->pos))
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.pos beyond 1e18 units from the origin (float cannot resolve it)");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.pos beyond 1e18 units from the origin");
     if (fov__absf(cam->eye_offset) > FOVSDF__MAX_LEN)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.eye_offset beyond 1e18 units (float cannot resolve the pinhole)");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.eye_offset beyond 1e18 units");
     for (i = 0; i < 3; ++i) rt_o[i] = cam->pos[i] + rt[i] * cam->eye_offset;
     if (!fovsdf__coord_ok(rt_o))
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: pinhole (cam.pos + eye_offset * right) beyond 1e18 units from the origin");
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "init: pinhole (cam.pos + eye_offset * right) beyond 1e18 units");
     r = fovsdf_memory_size(&c, cam, &need);
     if (r != FOV_OK) return r;
-    if (mem_size < need || (need > 0 && !mem)) FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: working memory too small");
+    if (mem_size < need || (need > 0 && !mem))
+        FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: mem NULL or mem_size below fovsdf_memory_size");
     r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
-    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "init: display geometry (fov_y_deg, pixel pitch and distance, axis) or gaze");
+    if (r != FOV_OK)
+        FOVSDF__FAIL(lg, r, "init: gaze or config.display: the eye direction overflows");
     /* everything is valid: only now is ctx written (a failed call leaves it as it was) */
     ctx->right[0] = rt[0]; ctx->right[1] = rt[1]; ctx->right[2] = rt[2];
     ctx->up[0] = up[0]; ctx->up[1] = up[1]; ctx->up[2] = up[2];
@@ -3969,12 +4121,14 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
 
 FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
-    if (!c || !ro || !rd) return FOV_ERR_NULL;
+    if (!c) return FOV_ERR_NULL;
+    if (!ro || !rd)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "camera_ray: ro and rd are required");
     if (!fov__finite(px) || !fov__finite(py))
-        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "camera_ray: image point px or py is NaN or infinite");
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "camera_ray: px or py NaN or infinite");
     if (!fovsdf__ray(c, px, py, ro, rd))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
-                     "camera_ray: image point (px, py) so far off the image that its ray direction overflows float");
+                     "camera_ray: (px, py) so far off the image that its ray overflows float");
     return FOV_OK;
 }
 
@@ -3983,13 +4137,23 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *c, const float ro[3], const
 {
     fovsdf__marcher m;
     float l;
-    if (!c || !ro || !rd || !hit) return FOV_ERR_NULL;
-    if (!fov__finite3(ro) || !fov__finite3(rd) || !fov__finite(t_start)) return FOV_ERR_NOT_FINITE;
-    if (t_start < 0.0f) return FOV_ERR_INVALID_ARG;
+    if (!c) return FOV_ERR_NULL;
+    if (!ro || !rd || !hit)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "trace: ro, rd and hit are required");
+    if (!fov__finite3(ro))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "trace: ro NaN or infinite");
+    if (!fov__finite3(rd))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "trace: rd NaN or infinite");
+    if (!fov__finite(t_start))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "trace: t_start NaN or infinite");
+    if (t_start < 0.0f)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: t_start must be >= 0");
     if (!fovsdf__coord_ok(ro))
-        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: ro beyond 1e18 units from the origin (float cannot resolve it)");
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                     "trace: ro beyond 1e18 units from the origin");
     l = fov__len(rd);
-    if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
+    if (!(l > 0.999f && l < 1.001f))
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "trace: rd must have length 1 (+-0.001)");
     fovsdf__marcher_from_ctx(c, &m, ro);
     m.verify_start = 0; /* a user's ray from t_start: hits lie in [t_start, t_max] */
     fovsdf__march(&m, ro, rd, t_start, hit, 0, st);
@@ -4173,12 +4337,13 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     fovsdf__smp r;
     fovsdf_stats local;
     float ro[3], rd[3];
-    if (!c || !rgb) return FOV_ERR_NULL;
+    if (!c) return FOV_ERR_NULL;
+    if (!rgb) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "shade_point: rgb is NULL");
     if (!fov__finite(px) || !fov__finite(py))
-        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "shade_point: image point px or py is NaN or infinite");
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE, "shade_point: px or py NaN or infinite");
     if (!fovsdf__ray(c, px, py, ro, rd))
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
-                     "shade_point: image point (px, py) so far off the image that its ray direction overflows float");
+                     "shade_point: (px, py) so far off the image that its ray overflows float");
     FOV_MEMSET(&local, 0, sizeof local);
     fovsdf__marcher_from_ctx(c, &m, c->origin);
     m.verify_start = 0; /* from the camera */
@@ -4196,9 +4361,14 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
                                              uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1)
 {
     uint32_t w;
+    const fov_logger *lg = &c->cfg.logger;
     if (x0 >= x1 || y0 >= y1) return FOV_OK; /* nothing is written */
-    if (x0 < o->origin_x || y0 < o->origin_y || o->origin_x >= c->cam.width || o->origin_y >= c->cam.height)
-        return FOV_ERR_INVALID_ARG;
+    if (x0 < o->origin_x || y0 < o->origin_y)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "render_tile: x0 or y0 below output.origin_x or origin_y");
+    if (o->origin_x >= c->cam.width || o->origin_y >= c->cam.height)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                     "render_tile: output.origin_x or origin_y outside the image");
     w = x1 - o->origin_x; /* the widest row written */
     if ((o->rgb && o->rgb_stride && o->rgb_stride < 3u * w) ||
         (o->rgb8 && o->rgb8_stride && o->rgb8_stride < 3u * w) ||
@@ -4209,7 +4379,8 @@ FOVSDF__PRIV fov_result fovsdf__check_output(const fovsdf_ctx *c, const fovsdf_o
         (o->steps && o->steps_stride && o->steps_stride < w) ||
         (o->start && o->start_stride && o->start_stride < w) ||
         (o->mask && o->mask_stride && o->mask_stride < w))
-        return FOV_ERR_TOO_SMALL;
+        FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL,
+                     "render_tile: an output *_stride below the tile's width");
     return FOV_OK;
 }
 
@@ -4941,8 +5112,14 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     fovsdf__marcher m;
     uint32_t x, y;
     fov_result r;
-    if (!c || !o) return FOV_ERR_NULL;
-    if (x0 > x1 || y0 > y1 || x1 > c->cam.width || y1 > c->cam.height) return FOV_ERR_INVALID_ARG;
+    if (!c) return FOV_ERR_NULL;
+    if (!o) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "render_tile: output o is NULL");
+    if (x0 > x1) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "render_tile: needs x0 <= x1");
+    if (y0 > y1)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "render_tile/rows: needs y0 <= y1");
+    if (x1 > c->cam.width || y1 > c->cam.height)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                     "render_tile/rows: x1 or y1 beyond the image");
     r = fovsdf__check_output(c, o, x0, y0, x1, y1);
     if (r != FOV_OK) return r;
     FOV_MEMSET(&local, 0, sizeof local);
@@ -5009,7 +5186,7 @@ FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *c)
 FOVSDF_API fov_result fovsdf_render_rows(const fovsdf_ctx *c, uint32_t y0, uint32_t y1,
                                          const fovsdf_output *o, fovsdf_stats *stats)
 {
-    if (!c || !o) return FOV_ERR_NULL;
+    if (!c) return FOV_ERR_NULL;
     return fovsdf_render_tile(c, 0, y0, c->cam.width, y1, o, stats);
 }
 

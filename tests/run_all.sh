@@ -12,7 +12,8 @@
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     srgb8_fovlp, api_stress, versions, stats, camera, style shared refs, unit_metrics
+#     srgb8_fovlp, api_stress, versions, stats, camera, errors errors_nostrings,
+#     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
@@ -133,6 +134,13 @@ three_builds stats tests/test_stats.c
 run_section style bash tests/style.sh
 # fov_camera: one type, the same defaults and handedness in the three headers, rays agree
 three_builds camera tests/test_camera.c
+# errors name the field and the rule, once per failure, in the default build (and with
+# FOV_NO_ERROR_STRINGS: the codes still logged, every message "")
+three_builds errors tests/test_errors.c
+if build_test test_errors_nostrings tests/test_errors.c -std=c99 -O2 $WARN -DFOV_NO_ERROR_STRINGS \
+        -I. -Itests/common -lm; then
+    run_section errors_nostrings build/tests/test_errors_nostrings
+fi
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
 # no tracked file cites the internal background documents; each header has REFERENCES

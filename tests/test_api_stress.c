@@ -13,7 +13,6 @@
  * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
  */
 #define _POSIX_C_SOURCE 200809L
-#define FOV_DEBUG
 #define FOV_IMPL
 #include "fovsdf.h"
 #include "fovlp.h"

@@ -13,7 +13,6 @@
  * values come from double-precision arithmetic here (normalised vectors, analytic plane and
  * sphere distances and hits), never from the library.
  */
-#define FOV_DEBUG
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
 #include "fovcheck.h"

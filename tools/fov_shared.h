@@ -486,6 +486,90 @@ FOV__PRIV fov_result fov__err(const fov_logger *lg, const char *tag, fov_result 
     return r;
 }
 #define FOV__FAIL(lg, tag, r, msg) return fov__err(lg, tag, r, FOV__MSG(msg), (uint32_t)__LINE__)
+#ifndef FOV_NO_ERROR_STRINGS
+/* Append s (or v in decimal) to the message buf of capacity cap holding n characters. */
+FOV__PRIV uint32_t fov__app(char *buf, uint32_t n, uint32_t cap, const char *s)
+{
+    while (*s && n + 1u < cap) buf[n++] = *s++;
+    buf[n] = 0;
+    return n;
+}
+FOV__PRIV uint32_t fov__appu(char *buf, uint32_t n, uint32_t cap, uint32_t v)
+{
+    char d[12];
+    uint32_t k = 0;
+    do { d[k++] = (char)('0' + (int)(v % 10u)); v /= 10u; } while (v > 0u && k < 11u);
+    while (k > 0u && n + 1u < cap) buf[n++] = d[--k];
+    buf[n] = 0;
+    return n;
+}
+#endif
+/* Logs the message a b c (composed on the stack; "" under FOV_NO_ERROR_STRINGS), returns r. */
+FOV__PRIV fov_result fov__err3(const fov_logger *lg, const char *tag, fov_result r, const char *a,
+                               const char *b, const char *c, uint32_t line)
+{
+#ifndef FOV_NO_ERROR_STRINGS
+    char buf[112];
+    uint32_t n = fov__app(buf, 0, sizeof buf, a);
+    n = fov__app(buf, n, sizeof buf, b);
+    (void)fov__app(buf, n, sizeof buf, c);
+    return fov__err(lg, tag, r, buf, line);
+#else
+    (void)a; (void)b; (void)c;
+    return fov__err(lg, tag, r, "", line);
+#endif
+}
+/* A float field of a struct for fov__fields_check: byte offset, 1 if it must be >= 0, name. */
+typedef struct fov__field {
+    uint16_t off, nonneg;
+    const char *name;
+} fov__field;
+#define FOV__FIELD(type, member, nonneg) { (uint16_t)offsetof(type, member), nonneg, \
+                                           FOV__MSG(#member) }
+/* Pass 0: the first of the n fields of the struct at base that is NaN or infinite fails with
+   FOV_ERR_NOT_FINITE, "<who><name> is NaN or infinite"; pass 1: the first negative one among
+   those marked nonneg fails with FOV_ERR_INVALID_ARG, "<who><name> must be >= 0". */
+FOV__PRIV fov_result fov__fields_check(const fov_logger *lg, const char *tag, const char *who,
+                                       const void *base, const fov__field *f, uint32_t n,
+                                       int pass, uint32_t line)
+{
+    uint32_t i;
+    for (i = 0; i < n; ++i) {
+        float x;
+        FOV_MEMCPY(&x, (const unsigned char *)base + f[i].off, sizeof x);
+        if (pass == 0 && !fov__finite(x))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, f[i].name, " is NaN or infinite",
+                             line);
+        if (pass == 1 && f[i].nonneg && x < 0.0f)
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, f[i].name, " must be >= 0", line);
+    }
+    return FOV_OK;
+}
+
+/* The rules of config.display (fov_display): what & 1, every field finite; what & 2,
+   fov_y_deg in [0, 180), pixel_pitch_mm and distance_mm >= 0 and given together. */
+FOV__PRIV fov_result fov__display_check(const fov_logger *lg, const char *tag, const fov_display *d,
+                                        int what, uint32_t line)
+{
+    static const fov__field f[5] = {
+        FOV__FIELD(fov_display, fov_y_deg, 0), FOV__FIELD(fov_display, pixel_pitch_mm, 0),
+        FOV__FIELD(fov_display, distance_mm, 0), FOV__FIELD(fov_display, axis_dx, 0),
+        FOV__FIELD(fov_display, axis_dy, 0) };
+    fov_result r = FOV_OK;
+    if (what & 1) r = fov__fields_check(lg, tag, "config.display.", d, f, 5u, 0, line);
+    if (r != FOV_OK || !(what & 2)) return r;
+    if (d->fov_y_deg < 0.0f || d->fov_y_deg >= 180.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display.fov_y_deg must be in [0, 180)"), line);
+    if (d->pixel_pitch_mm < 0.0f || d->distance_mm < 0.0f)
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: pixel_pitch_mm, distance_mm must be >= 0"), line);
+    if (fov__is0(d->pixel_pitch_mm) != fov__is0(d->distance_mm))
+        return fov__err(lg, tag, FOV_ERR_INVALID_ARG,
+                        FOV__MSG("config.display: give pixel_pitch_mm and distance_mm, or neither"),
+                        line);
+    return FOV_OK;
+}
 
 FOV__PRIV const char *fov__result_string(fov_result r)
 {
