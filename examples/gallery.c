@@ -241,7 +241,7 @@ static int gallery_lp(uint32_t W, uint32_t H, const char *dir)
         for (x = 0; x < W; ++x) lpsdf_shade((float)x + 0.5f, (float)y + 0.5f, full + 3 * ((size_t)y * W + x), NULL, &user);
     panel_put(&s, 0, full);
 
-    cam = lpsdf_camera(&sdf);
+    if (fovlp_camera_from(&bi.camera, &cam) != FOV_OK) return -1; /* the camera fovsdf renders */
     for (f = 0; f < 16; ++f) {
         fovlp_taa_io io;
         if ((r = fovlp_begin_frame(&lp, gaze, &cam)) != FOV_OK) return -1;

@@ -268,7 +268,7 @@ static const fcase lp_cases[] = {
 };
 static fov_result lp_run(int k, const fov_logger *lg)
 {
-    static float srgb[40000 * 3], img[64 * 48 * 3];
+    static float smp_rgb[40000 * 3], img[64 * 48 * 3];
     static unsigned char mem[1 << 16];
     static fovlp_sample smp[4];
     fovlp_config cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 64, 48), out;
@@ -313,8 +313,8 @@ static fov_result lp_run(int k, const fov_logger *lg)
     }
     switch (k) {
     case 12: return fovlp_screen_to_lp(&ctx, 1.0f, 1.0f, &u, &v);
-    case 13: return fovlp_shade_rows(&ctx, 0, 1, lp_shade, NULL, srgb, NULL, NULL);
-    case 14: return fovlp_reconstruct_rows(&ctx, srgb, NULL, 0, 48, img, 0, NULL);
+    case 13: return fovlp_shade_rows(&ctx, 0, 1, lp_shade, NULL, smp_rgb, NULL, NULL);
+    case 14: return fovlp_reconstruct_rows(&ctx, smp_rgb, NULL, 0, 48, img, 0, NULL);
     case 15: return fovlp_taa_rows(&ctx, &io, 0, 48, NULL);
     case 16: gz.x = nan; return fovlp_begin_frame(&ctx, gz, NULL);
     default: break;
@@ -325,15 +325,15 @@ static fov_result lp_run(int k, const fov_logger *lg)
     if (r != FOV_OK) return FOV_OK;
     switch (k) {
     case 17:
-        return fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx) + 1u, lp_shade, NULL, srgb, NULL,
+        return fovlp_shade_rows(&ctx, 0, fovlp_sample_rows(&ctx) + 1u, lp_shade, NULL, smp_rgb, NULL,
                                 NULL);
-    case 18: return fovlp_shade_rows(&ctx, 0, 1, NULL, NULL, srgb, NULL, NULL);
-    case 19: return fovlp_reconstruct_rows(&ctx, srgb, NULL, 0, 48, img, 10, NULL);
-    case 20: return fovlp_reconstruct_rows(&ctx, srgb, NULL, 0, 49, img, 0, NULL);
+    case 18: return fovlp_shade_rows(&ctx, 0, 1, NULL, NULL, smp_rgb, NULL, NULL);
+    case 19: return fovlp_reconstruct_rows(&ctx, smp_rgb, NULL, 0, 48, img, 10, NULL);
+    case 20: return fovlp_reconstruct_rows(&ctx, smp_rgb, NULL, 0, 49, img, 0, NULL);
     case 21: return fovlp_blend_rows(&ctx, img, 0, 48, img);
     case 22:
         io.cur_rgb = img;
-        io.out_rgb = srgb;
+        io.out_rgb = smp_rgb;
         io.out_age = mem;
         return fovlp_taa_rows(&ctx, &io, 0, 48, NULL);
     case 23: return fovlp_samples(&ctx, 0, fovlp_sample_rows(&ctx), smp, 4, &cnt);
