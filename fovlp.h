@@ -1,4 +1,4 @@
-/* fovlp.h - v0.2.1 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.3.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -264,6 +264,12 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.3.0 (2026-12-02) one block shared with fovsdf.h and fovpt.h (tools/fov_shared.h); error
+                      messages on by default, a specific one per failure (FOV_DEBUG no longer
+                      needed); fovlp_camera_from (the TAA camera of a fov_camera);
+                      fovlp_srgb8_rows and fovlp_linear_to_srgb8 (exact 8-bit sRGB, the same
+                      bytes in every build); fovlp_taa_io_init, fovlp_taa_stats_init; the sample
+                      buffer is called rgb (linear RGB; the docs said srgb); REFERENCES.
    0.2.1 (2026-12-01) finite outputs for finite inputs: the TAA blend, history fetch, variance
                       clip (scaled when the moments overflow; moments about the centre pixel),
                       depth test, reconstruction and fovlp_blend_rows no longer overflow for
@@ -295,9 +301,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVLP_VERSION_MAJOR 0
-#define FOVLP_VERSION_MINOR 2
-#define FOVLP_VERSION_PATCH 1
-#define FOVLP_VERSION_STRING "0.2.1"
+#define FOVLP_VERSION_MINOR 3
+#define FOVLP_VERSION_PATCH 0
+#define FOVLP_VERSION_STRING "0.3.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a

@@ -1,4 +1,4 @@
-/* fovpt.h - v0.2.1 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.3.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -299,6 +299,15 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.3.0 (2026-12-02) one block shared with fovsdf.h and fovlp.h (tools/fov_shared.h); error
+                      messages on by default, a specific one per failure naming the field;
+                      fov_camera shared: fovpt_camera is a typedef of it, new field eye_offset
+                      (honoured: the pinhole moves along right); fovpt_camera_init now stands at
+                      (0, 0, 5) looking at the origin (it was at the origin looking along +z);
+                      fovpt_stats_init, fovpt_stats_add, what adds to fovpt_stats documented;
+                      fovpt_radiance adds its rays to stats.rays; fovpt_config_resolve checks
+                      the display; fovpt_ecc_deg finite beyond 1e19 px (the shared model);
+                      REFERENCES cite every paper.
    0.2.1 (2026-12-01) the BVH finds every hit brute force finds: a conservative box test on the
                       SSE and scalar paths (rays lying in a box face, zero direction
                       components, a rounding margin after Ize 2013, padded primitive boxes);
@@ -338,9 +347,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 2
-#define FOVPT_VERSION_PATCH 1
-#define FOVPT_VERSION_STRING "0.2.1"
+#define FOVPT_VERSION_MINOR 3
+#define FOVPT_VERSION_PATCH 0
+#define FOVPT_VERSION_STRING "0.3.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8

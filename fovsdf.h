@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.3.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.4.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -357,6 +357,15 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.4.0 (2026-12-02) one block shared with fovlp.h and fovpt.h (tools/fov_shared.h, regions
+                      FOV_SHARED_BEGIN/END; private names fov__); error messages on by default,
+                      a specific one per failure (FOV_DEBUG no longer needed; msg "" under
+                      FOV_NO_ERROR_STRINGS, never NULL); fovsdf_render_tile logs bad rows;
+                      fov_camera shared: fovsdf_camera is a typedef of it (the same fields in
+                      order, then tan_left .. tan_top; non-zero tangents: FOV_ERR_UNSUPPORTED);
+                      fovsdf_camera_init now stands at (0, 0, 5) looking at the origin (+x right,
+                      +y up; it was (0, 0, -5)); fovsdf_stats_init; one function per tracer
+                      (images unchanged); REFERENCES cite every paper.
    0.3.0 (2026-12-01) accuracy and contract fixes found from outside: the hit refinement never
                       moves a hit past an unverified point (it jumped through thin surfaces);
                       no tracer evaluates or reports a hit beyond t_max or at a non-finite
@@ -397,9 +406,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 3
+#define FOVSDF_VERSION_MINOR 4
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.3.0"
+#define FOVSDF_VERSION_STRING "0.4.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
