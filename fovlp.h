@@ -1564,8 +1564,10 @@ FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *
 FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
                                     uint32_t w, uint32_t h, fov_gaze g)
 { return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVLP_MAX_DIM); }
-FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
-FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
+FOVLP_API float fovlp_ecc_deg(const fov_ecc_model *m, float x, float y)
+{ return fov__ecc_deg(m, x, y); }
+FOVLP_API float fovlp_ecc_ppd(const fov_ecc_model *m)
+{ return fov__ecc_ppd(m); }
 
 /* ---- geometry (eqs. 3.3-3.6, 3.10) -------------------------------------------------------- */
 /* The camera field of view handed to the eccentricity model when the display is all zero:
@@ -1674,7 +1676,8 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     if (S > 0) {
         float x0 = fov__maxf(0.0f, FOV__FLOOR(gaze.x - r_g));
         float y0 = fov__maxf(0.0f, FOV__FLOOR(gaze.y - r_g));
-        uint32_t x1 = fovlp__ceil_u(gaze.x + r_g, c->width), y1 = fovlp__ceil_u(gaze.y + r_g, c->height);
+        uint32_t x1 = fovlp__ceil_u(gaze.x + r_g, c->width),
+            y1 = fovlp__ceil_u(gaze.y + r_g, c->height);
         g->disc_x0 = (uint32_t)x0;
         g->disc_y0 = (uint32_t)y0;
         g->disc_w = x1 > g->disc_x0 ? x1 - g->disc_x0 : 0;
@@ -1718,7 +1721,8 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, 
 /* ---- context ------------------------------------------------------------------------------ */
 FOVLP__PRIV size_t fovlp__mem_bytes(const fovlp_geometry *g)
 {
-    return fov__align(sizeof(float) * (size_t)g->lp_w) + 2u * fov__align(sizeof(float) * (size_t)g->lp_h);
+    return fov__align(sizeof(float) * (size_t)g->lp_w) +
+           2u * fov__align(sizeof(float) * (size_t)g->lp_h);
 }
 
 FOVLP_API fov_result fovlp_memory_size(const fovlp_config *cfg, size_t *bytes)
@@ -1904,7 +1908,8 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
     ctx->prev_cam = ctx->cam;
     ctx->have_cam = (ctx->have_cam & 1u) ? 2u : 0u;
     if (cam) { ctx->cam = *cam; ctx->have_cam |= 1u; }
-    if ((ctx->have_cam & 3u) == 3u) moving = (uint32_t)fovlp__cam_differs(&ctx->cam, &ctx->prev_cam);
+    if ((ctx->have_cam & 3u) == 3u)
+        moving = (uint32_t)fovlp__cam_differs(&ctx->cam, &ctx->prev_cam);
     if (jump) ctx->frame = 0;
     ctx->history_valid = (ctx->frame > 0 && c.taa.enable) ? 1u : 0u;
     ctx->moving = moving;
@@ -1960,7 +1965,8 @@ FOVLP__PRIV void fovlp__to_lp(const fovlp_ctx *ctx, float dx, float dy, float *u
    With alpha = 1 there is no pow; dx, dy are finite (the gaze is). Tolerance (tested in
    tests/test_fovlp.c against fovlp_screen_to_lp): |du| <= 1e-4 (u + 1), |dv| <= 2e-6 h (v
    texels, wrapped). */
-FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, float r2, float *u, float *v)
+FOVLP__PRIV void fovlp__to_lp_fast(const fovlp_ctx *ctx, float dx, float dy, float r2, float *u,
+                                   float *v)
 {
     const fovlp_geometry *g = &ctx->geo;
     float ax = dx < 0.0f ? -dx : dx, ay = dy < 0.0f ? -dy : dy, z, z2, off = 0.0f, a, q;
@@ -2058,7 +2064,8 @@ FOVLP_API float fovlp_density(const fovlp_ctx *ctx, float x, float y)
     return fov__finite(d) ? d : 0.0f;
 }
 
-FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px, float *angular_px)
+FOVLP_API fov_result fovlp_spacing(const fovlp_ctx *ctx, float r, float *radial_px,
+                                   float *angular_px)
 {
     const fovlp_geometry *g;
     float dudr, rad, ang;
@@ -2265,7 +2272,8 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
         }
     out->disc_dispatched = (uint64_t)g->disc_w * g->disc_h;
     for (v = 0; v < g->disc_h; ++v)
-        for (u = 0; u < g->disc_w; ++u) out->disc_shaded += (uint64_t)fovlp__in_disc(ctx, g->disc_x0 + u, g->disc_y0 + v);
+        for (u = 0; u < g->disc_w; ++u)
+            out->disc_shaded += (uint64_t)fovlp__in_disc(ctx, g->disc_x0 + u, g->disc_y0 + v);
     out->shaded = out->lp_shaded + out->disc_shaded + 1u;
     area = (float)g->width * (float)g->height;
     out->dispatched_pct = fovlp__u64f(out->lp_dispatched + out->disc_dispatched) / area * 100.0f;
@@ -2275,7 +2283,8 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 
 /* ---- reconstruction ----------------------------------------------------------------------- */
 /* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
-   out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the weight found (0: none); rgb and the depth of the heaviest tap. */
+   out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the
+   weight found (0: none); rgb and the depth of the heaviest tap. */
 FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, const float *sdep,
                                    float uc, float vc, float edge, float rgb[3], float *depth)
 {
@@ -2285,7 +2294,7 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, c
     /* radius of the largest circle around the gaze inside the screen, less a margin for the
        rounding of gaze + rho cos (the exact test would accept every tap inside it) */
     float in_r = fov__minf(fov__minf(ctx->gaze.x, (float)g->width - ctx->gaze.x),
-                             fov__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
+                           fov__minf(ctx->gaze.y, (float)g->height - ctx->gaze.y)) * 0.999f - 0.01f;
     int32_t i0, j0, di, dj;
     int all_on, clamped = 0, pass;
     rgb[0] = rgb[1] = rgb[2] = 0.0f;
@@ -2308,7 +2317,8 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, c
     all_on = i0 + 1 < (int32_t)g->lp_cols &&
              (ctx->rho[i0 + 1] < in_r ||
               (clamped == 0 && ((ctx->rho[i0 + 1] - ctx->rho[i0]) +
-                                ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge));
+                                ctx->rho[i0 + 1] * (FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f +
+                               0.01f < edge));
     /* pass 0: the weighted mean; where it is not finite, pass 1 sums with half weights
        (exact: the same bits halved), which cannot overflow for finite taps, and doubles the
        mean back saturating at +-FLT_MAX where the weights' rounding pushes it past (taps
@@ -2382,7 +2392,8 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *smp_rgb, const 
     float uc, vc, r, r2, edge;
     /* the gaze disc: its own sample, 1:1 */
     if (g->r_g > 0.0f && dx * dx + dy * dy < g->r_g * g->r_g) {
-        size_t slot = (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_cols + (px - g->disc_x0);
+        size_t slot =
+            (size_t)g->disc_offset + (size_t)(py - g->disc_y0) * g->disc_cols + (px - g->disc_x0);
         rgb[0] = smp_rgb[3 * slot]; rgb[1] = smp_rgb[3 * slot + 1]; rgb[2] = smp_rgb[3 * slot + 2];
         *depth = sdep ? sdep[slot] : 0.0f;
         return;
@@ -2407,10 +2418,13 @@ FOVLP__PRIV void fovlp__pixel(const fovlp_ctx *ctx, const float *smp_rgb, const 
             uint32_t ix = (uint32_t)qx, iy = (uint32_t)qy;
             if (fovlp__in_disc(ctx, ix, iy) && ix >= g->disc_x0 && iy >= g->disc_y0 &&
                 ix - g->disc_x0 < g->disc_w && iy - g->disc_y0 < g->disc_h) {
-                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_cols + (ix - g->disc_x0);
+                size_t slot = (size_t)g->disc_offset + (size_t)(iy - g->disc_y0) * g->disc_cols +
+                    (ix - g->disc_x0);
                 float ex = (float)ix + 0.5f - ctx->gaze.x, ey = (float)iy + 0.5f - ctx->gaze.y;
                 float rin = FOV__SQRT(ex * ex + ey * ey);
-                float t = ctx->rho[0] > rin ? fov__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f) : 1.0f;
+                float t = ctx->rho[0] > rin
+                              ? fov__clampf((r - rin) / (ctx->rho[0] - rin), 0.0f, 1.0f)
+                              : 1.0f;
                 const float *q = smp_rgb + 3u * slot;
                 rgb[0] = fovlp__lerp(q[0], rgb[0], t);
                 rgb[1] = fovlp__lerp(q[1], rgb[1], t);
@@ -2476,8 +2490,8 @@ FOVLP_API fov_result fovlp_reconstruct_rows(const fovlp_ctx *ctx, const float *s
 }
 
 /* ---- Gaussian blend in the periphery (eq. 3.13) --------------------------------------------- */
-FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uint32_t y0, uint32_t y1,
-                                      float *out)
+FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uint32_t y0,
+                                      uint32_t y1, float *out)
 {
     /* separable 1/16 [1 2 1; 2 4 2; 1 2 1], halved: k[a] k[b] sums to 1/2 (exact powers of
        two), so the sum of finite values cannot overflow; doubled back with saturation */
@@ -2500,18 +2514,24 @@ FOVLP_API fov_result fovlp_blend_rows(const fovlp_ctx *ctx, const float *in, uin
         for (x = 0; x < W; ++x) {
             size_t o = 3u * ((size_t)y * W + x);
             float dx = (float)x + 0.5f - ctx->gaze.x, dy = (float)y + 0.5f - ctx->gaze.y;
-            float t = ctx->cfg.blend ? fov__clampf((FOV__SQRT(dx * dx + dy * dy) - s) / (e - s), 0.0f, 1.0f) : 0.0f;
+            float t = ctx->cfg.blend
+                          ? fov__clampf((FOV__SQRT(dx * dx + dy * dy) - s) / (e - s), 0.0f, 1.0f)
+                          : 0.0f;
             float gsum[3] = { 0.0f, 0.0f, 0.0f };
             int32_t a, b, ch;
-            if (!(t > 0.0f)) { out[o] = in[o]; out[o + 1] = in[o + 1]; out[o + 2] = in[o + 2]; continue; }
+            if (!(t > 0.0f)) {
+                out[o] = in[o]; out[o + 1] = in[o + 1]; out[o + 2] = in[o + 2]; continue;
+            }
             for (b = -1; b <= 1; ++b)
                 for (a = -1; a <= 1; ++a) {
                     int32_t xx = (int32_t)x + a, yy = (int32_t)y + b;
                     size_t q;
-                    xx = xx < 0 ? 0 : (xx >= (int32_t)W ? (int32_t)W - 1 : xx);   /* clamp at borders */
+                    /* clamp at borders */
+                    xx = xx < 0 ? 0 : (xx >= (int32_t)W ? (int32_t)W - 1 : xx);
                     yy = yy < 0 ? 0 : (yy >= (int32_t)H ? (int32_t)H - 1 : yy);
                     q = 3u * ((size_t)(uint32_t)yy * W + (uint32_t)xx);
-                    for (ch = 0; ch < 3; ++ch) gsum[ch] += 0.5f * k[a + 1] * k[b + 1] * in[q + (size_t)ch];
+                    for (ch = 0; ch < 3; ++ch)
+                        gsum[ch] += 0.5f * k[a + 1] * k[b + 1] * in[q + (size_t)ch];
                 }
             /* the lerp cannot overflow: inside [min, max] of the pixel and the 3x3 mean */
             for (a = 0; a < 3; ++a)
@@ -2538,8 +2558,8 @@ FOVLP__PRIV void fovlp__from_ycocg(const float c[3], float o[3])
    k = 1 was not finite (a sum of squares, a YCoCg value or the result: colours beyond about
    1e19, or a NaN / inf neighbour when not careful). careful: neighbours with a NaN / inf
    channel are left out (the fast pass, careful = 0, takes every neighbour). */
-FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y, uint32_t mode,
-                               const float h[3], float k, int careful, float r[3])
+FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
+                               uint32_t mode, const float h[3], float k, int careful, float r[3])
 {
     uint32_t W = ctx->geo.width, H = ctx->geo.height;
     const float *p = cur + 3u * ((size_t)y * W + x);
@@ -2602,7 +2622,8 @@ FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t 
             r[ch] = fov__clampf(r[ch] * 1.18059162e21f, -3.4028235e38f, 3.4028235e38f); /* 2^70 */
         return 1;
     }
-    t = (m1[0] + m1[1] + m1[2]) + (m2[0] + m2[1] + m2[2]) + (mn[0] + mn[1] + mn[2]) + (mx[0] + mx[1] + mx[2]);
+    t = (m1[0] + m1[1] + m1[2]) + (m2[0] + m2[1] + m2[2]) + (mn[0] + mn[1] + mn[2]) +
+        (mx[0] + mx[1] + mx[2]);
     return fov__finite(t) && fov__finite3(r);
 }
 
@@ -2618,8 +2639,8 @@ FOVLP__PRIV int fovlp__clip_at(const fovlp_ctx *ctx, const float *cur, uint32_t 
    the colour). Neighbours with a NaN or infinite channel (the caller's shading) are left
    out of the box; with none left h is kept as it is; a non-finite h stays non-finite (the
    caller rejects it). */
-FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x, uint32_t y,
-                                      uint32_t mode, float h[3])
+FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, uint32_t x,
+                                      uint32_t y, uint32_t mode, float h[3])
 {
     float r[3];
     /* the fast pass; if not finite: without the NaN / inf neighbours; then at 2^-70 */
@@ -2630,9 +2651,11 @@ FOVLP__PRIV void fovlp__clamp_history(const fovlp_ctx *ctx, const float *cur, ui
 }
 
 /* Bilinear fetch of the previous colour at continuous (hx, hy), borders clamped. */
-FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx, float hy, float o[3])
+FOVLP__PRIV void fovlp__fetch(const float *img, uint32_t W, uint32_t H, float hx, float hy,
+                              float o[3])
 {
-    float sx = fov__clampf(hx - 0.5f, 0.0f, (float)W - 1.0f), sy = fov__clampf(hy - 0.5f, 0.0f, (float)H - 1.0f);
+    float sx = fov__clampf(hx - 0.5f, 0.0f, (float)W - 1.0f),
+        sy = fov__clampf(hy - 0.5f, 0.0f, (float)H - 1.0f);
     float fx = FOV__FLOOR(sx), fy = FOV__FLOOR(sy), ax = sx - fx, ay = sy - fy;
     uint32_t x0 = (uint32_t)fx, y0 = (uint32_t)fy;
     uint32_t x1 = x0 + 1u < W ? x0 + 1u : x0, y1 = y0 + 1u < H ? y0 + 1u : y0;
@@ -2686,7 +2709,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     "taa_rows: io.prev_rgb and prev_age needed after frame 1");
     if ((const float *)io->out_rgb == io->cur_rgb || (const float *)io->out_rgb == io->prev_rgb ||
         (io->out_depth && (const float *)io->out_depth == io->prev_depth) ||
-        (const uint8_t *)io->out_age == io->prev_age)   /* neighbourhoods and reprojection read them */
+        (const uint8_t *)io->out_age == io->prev_age) /* neighbourhoods and reprojection
+                                                         read them */
         FOVLP__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "taa_rows: io.out_* must not alias cur_rgb or prev_*");
     W = ctx->geo.width; H = ctx->geo.height;
@@ -2710,7 +2734,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (io->out_depth) io->out_depth[i] = dc;
             if (!ctx->history_valid) {
                 /* a non-finite colour from the caller's shading never enters the history */
-                for (ch = 0; ch < 3; ++ch) io->out_rgb[3 * i + ch] = fov__finite(cur[ch]) ? cur[ch] : 0.0f;
+                for (ch = 0; ch < 3; ++ch)
+                    io->out_rgb[3 * i + ch] = fov__finite(cur[ch]) ? cur[ch] : 0.0f;
                 io->out_age[i] = 1;
                 continue;
             }
@@ -2720,9 +2745,12 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                 float sxn = (hx / (float)W * 2.0f - 1.0f) * a->tan_half_y * asp;
                 float syn = (hy / (float)H * 2.0f - 1.0f) * a->tan_half_y;
                 float d[3], wp[3], rel[3], z;
-                for (ch = 0; ch < 3; ++ch) d[ch] = a->fwd[ch] + sxn * a->right[ch] - syn * a->up[ch];
+                for (ch = 0; ch < 3; ++ch)
+                    d[ch] = a->fwd[ch] + sxn * a->right[ch] - syn * a->up[ch];
                 fovlp__normalize(d);
-                for (ch = 0; ch < 3; ++ch) { wp[ch] = a->pos[ch] + dc * d[ch]; rel[ch] = wp[ch] - p->pos[ch]; }
+                for (ch = 0; ch < 3; ++ch) {
+                    wp[ch] = a->pos[ch] + dc * d[ch]; rel[ch] = wp[ch] - p->pos[ch];
+                }
                 z = fov__dot(rel, p->fwd);
                 if (!(z > 1e-6f) || !fov__finite(dc)) {
                     reject = 1;
@@ -2736,11 +2764,14 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     } else {
                         float expect = fovlp__len_safe(rel);
                         float hd = io->prev_depth[(size_t)(uint32_t)hy * W + (uint32_t)hx];
-                        /* NaN, or a distance beyond FLT_MAX: differs (inf <= tol * inf would pass) */
+                        /* NaN, or a distance beyond FLT_MAX: differs (inf <= tol * inf would
+                           pass) */
                         if (!fov__finite(expect) || !fov__finite(hd) ||
                             !(fov__absf(hd - expect) <= c->taa.depth_tol * fov__maxf(hd, expect))) {
-                            float gx = (float)x + 0.5f - ctx->gaze.x, gy = (float)y + 0.5f - ctx->gaze.y;
-                            if (gx * gx + gy * gy > per * per) periph = 1; /* keep, age reset after */
+                            float gx = (float)x + 0.5f - ctx->gaze.x,
+                                gy = (float)y + 0.5f - ctx->gaze.y;
+                            /* keep, age reset after */
+                            if (gx * gx + gy * gy > per * per) periph = 1;
                             else reject = 1;
                         }
                     }
@@ -2794,38 +2825,43 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
 FOVLP_API uint8_t fovlp_linear_to_srgb8(float x)
 {
     static const uint32_t t[255] = {
-        0x391f22b4, 0x39eeb40e, 0x3a46eb61, 0x3a8b3e5e, 0x3ab3070b, 0x3adacfb8, 0x3b014c33, 0x3b153089,
-        0x3b2914df, 0x3b3cf936, 0x3b50f2d1, 0x3b65fb9b, 0x3b7c3403, 0x3b89d060, 0x3b962333, 0x3ba314bd,
-        0x3bb0a731, 0x3bbedcb7, 0x3bcdb76d, 0x3bdd3967, 0x3bed64af, 0x3bfe3b46, 0x3c07df91, 0x3c10f91b,
-        0x3c1a6b32, 0x3c2436c8, 0x3c2e5cc7, 0x3c38de1a, 0x3c43bba4, 0x3c4ef648, 0x3c5a8ee4, 0x3c668654,
-        0x3c72dd71, 0x3c7f950f, 0x3c865702, 0x3c8d148f, 0x3c940396, 0x3c9b247c, 0x3ca277a6, 0x3ca9fd78,
-        0x3cb1b653, 0x3cb9a298, 0x3cc1c2a9, 0x3cca16e3, 0x3cd29fa4, 0x3cdb5d4b, 0x3ce45032, 0x3ced78b5,
-        0x3cf6d72e, 0x3d0035fc, 0x3d051bb4, 0x3d0a1cec, 0x3d0f39d0, 0x3d14728a, 0x3d19c745, 0x3d1f382c,
-        0x3d24c567, 0x3d2a6f22, 0x3d303584, 0x3d3618b7, 0x3d3c18e4, 0x3d423632, 0x3d4870ca, 0x3d4ec8d2,
-        0x3d553e73, 0x3d5bd1d3, 0x3d628318, 0x3d69526a, 0x3d703fee, 0x3d774bca, 0x3d7e7624, 0x3d82df90,
-        0x3d869372, 0x3d8a56cb, 0x3d8e29ab, 0x3d920c27, 0x3d95fe4f, 0x3d9a0035, 0x3d9e11ec, 0x3da23384,
-        0x3da66510, 0x3daaa6a0, 0x3daef847, 0x3db35a15, 0x3db7cc1b, 0x3dbc4e6b, 0x3dc0e114, 0x3dc58429,
-        0x3dca37b9, 0x3dcefbd6, 0x3dd3d08f, 0x3dd8b5f5, 0x3dddac19, 0x3de2b30a, 0x3de7cad9, 0x3decf395,
-        0x3df22d50, 0x3df77817, 0x3dfcd3fc, 0x3e012087, 0x3e03dfae, 0x3e06a77b, 0x3e0977f6, 0x3e0c5126,
-        0x3e0f3314, 0x3e121dc5, 0x3e151143, 0x3e180d95, 0x3e1b12c2, 0x3e1e20d1, 0x3e2137cb, 0x3e2457b6,
-        0x3e278099, 0x3e2ab27d, 0x3e2ded68, 0x3e313161, 0x3e347e70, 0x3e37d49c, 0x3e3b33ec, 0x3e3e9c67,
-        0x3e420e15, 0x3e4588fb, 0x3e490d22, 0x3e4c9a90, 0x3e50314c, 0x3e53d15d, 0x3e577aca, 0x3e5b2d9a,
-        0x3e5ee9d4, 0x3e62af7e, 0x3e667e9f, 0x3e6a573e, 0x3e6e3962, 0x3e722511, 0x3e761a52, 0x3e7a192c,
-        0x3e7e21a5, 0x3e8119e2, 0x3e8327c7, 0x3e853a86, 0x3e875222, 0x3e896e9d, 0x3e8b8ffc, 0x3e8db641,
-        0x3e8fe170, 0x3e92118b, 0x3e944696, 0x3e968095, 0x3e98bf89, 0x3e9b0377, 0x3e9d4c62, 0x3e9f9a4c,
-        0x3ea1ed38, 0x3ea4452b, 0x3ea6a226, 0x3ea9042e, 0x3eab6b44, 0x3eadd76d, 0x3eb048aa, 0x3eb2bf00,
-        0x3eb53a71, 0x3eb7bb00, 0x3eba40b1, 0x3ebccb85, 0x3ebf5b81, 0x3ec1f0a7, 0x3ec48af9, 0x3ec72a7c,
-        0x3ec9cf32, 0x3ecc791e, 0x3ecf2842, 0x3ed1dca2, 0x3ed49641, 0x3ed75521, 0x3eda1946, 0x3edce2b2,
-        0x3edfb168, 0x3ee2856a, 0x3ee55ebd, 0x3ee83d63, 0x3eeb215d, 0x3eee0ab1, 0x3ef0f95f, 0x3ef3ed6b,
-        0x3ef6e6d8, 0x3ef9e5a8, 0x3efce9de, 0x3efff37e, 0x3f018145, 0x3f030b82, 0x3f049877, 0x3f062827,
-        0x3f07ba92, 0x3f094fb9, 0x3f0ae79f, 0x3f0c8244, 0x3f0e1faa, 0x3f0fbfd2, 0x3f1162be, 0x3f13086e,
-        0x3f14b0e4, 0x3f165c22, 0x3f180a29, 0x3f19bafa, 0x3f1b6e96, 0x3f1d24ff, 0x3f1ede36, 0x3f209a3c,
-        0x3f225913, 0x3f241abc, 0x3f25df38, 0x3f27a689, 0x3f2970af, 0x3f2b3dad, 0x3f2d0d83, 0x3f2ee032,
-        0x3f30b5bd, 0x3f328e24, 0x3f346968, 0x3f36478b, 0x3f38288f, 0x3f3a0c73, 0x3f3bf33a, 0x3f3ddce5,
-        0x3f3fc975, 0x3f41b8eb, 0x3f43ab48, 0x3f45a08f, 0x3f4798bf, 0x3f4993db, 0x3f4b91e3, 0x3f4d92d8,
-        0x3f4f96bd, 0x3f519d92, 0x3f53a758, 0x3f55b411, 0x3f57c3be, 0x3f59d65f, 0x3f5bebf7, 0x3f5e0486,
-        0x3f60200e, 0x3f623e90, 0x3f64600c, 0x3f668485, 0x3f68abfb, 0x3f6ad670, 0x3f6d03e5, 0x3f6f345a,
-        0x3f7167d2, 0x3f739e4d, 0x3f75d7cc, 0x3f781451, 0x3f7a53dd, 0x3f7c9671, 0x3f7edc0e
+        0x391f22b4, 0x39eeb40e, 0x3a46eb61, 0x3a8b3e5e, 0x3ab3070b, 0x3adacfb8, 0x3b014c33,
+        0x3b153089, 0x3b2914df, 0x3b3cf936, 0x3b50f2d1, 0x3b65fb9b, 0x3b7c3403, 0x3b89d060,
+        0x3b962333, 0x3ba314bd, 0x3bb0a731, 0x3bbedcb7, 0x3bcdb76d, 0x3bdd3967, 0x3bed64af,
+        0x3bfe3b46, 0x3c07df91, 0x3c10f91b, 0x3c1a6b32, 0x3c2436c8, 0x3c2e5cc7, 0x3c38de1a,
+        0x3c43bba4, 0x3c4ef648, 0x3c5a8ee4, 0x3c668654, 0x3c72dd71, 0x3c7f950f, 0x3c865702,
+        0x3c8d148f, 0x3c940396, 0x3c9b247c, 0x3ca277a6, 0x3ca9fd78, 0x3cb1b653, 0x3cb9a298,
+        0x3cc1c2a9, 0x3cca16e3, 0x3cd29fa4, 0x3cdb5d4b, 0x3ce45032, 0x3ced78b5, 0x3cf6d72e,
+        0x3d0035fc, 0x3d051bb4, 0x3d0a1cec, 0x3d0f39d0, 0x3d14728a, 0x3d19c745, 0x3d1f382c,
+        0x3d24c567, 0x3d2a6f22, 0x3d303584, 0x3d3618b7, 0x3d3c18e4, 0x3d423632, 0x3d4870ca,
+        0x3d4ec8d2, 0x3d553e73, 0x3d5bd1d3, 0x3d628318, 0x3d69526a, 0x3d703fee, 0x3d774bca,
+        0x3d7e7624, 0x3d82df90, 0x3d869372, 0x3d8a56cb, 0x3d8e29ab, 0x3d920c27, 0x3d95fe4f,
+        0x3d9a0035, 0x3d9e11ec, 0x3da23384, 0x3da66510, 0x3daaa6a0, 0x3daef847, 0x3db35a15,
+        0x3db7cc1b, 0x3dbc4e6b, 0x3dc0e114, 0x3dc58429, 0x3dca37b9, 0x3dcefbd6, 0x3dd3d08f,
+        0x3dd8b5f5, 0x3dddac19, 0x3de2b30a, 0x3de7cad9, 0x3decf395, 0x3df22d50, 0x3df77817,
+        0x3dfcd3fc, 0x3e012087, 0x3e03dfae, 0x3e06a77b, 0x3e0977f6, 0x3e0c5126, 0x3e0f3314,
+        0x3e121dc5, 0x3e151143, 0x3e180d95, 0x3e1b12c2, 0x3e1e20d1, 0x3e2137cb, 0x3e2457b6,
+        0x3e278099, 0x3e2ab27d, 0x3e2ded68, 0x3e313161, 0x3e347e70, 0x3e37d49c, 0x3e3b33ec,
+        0x3e3e9c67, 0x3e420e15, 0x3e4588fb, 0x3e490d22, 0x3e4c9a90, 0x3e50314c, 0x3e53d15d,
+        0x3e577aca, 0x3e5b2d9a, 0x3e5ee9d4, 0x3e62af7e, 0x3e667e9f, 0x3e6a573e, 0x3e6e3962,
+        0x3e722511, 0x3e761a52, 0x3e7a192c, 0x3e7e21a5, 0x3e8119e2, 0x3e8327c7, 0x3e853a86,
+        0x3e875222, 0x3e896e9d, 0x3e8b8ffc, 0x3e8db641, 0x3e8fe170, 0x3e92118b, 0x3e944696,
+        0x3e968095, 0x3e98bf89, 0x3e9b0377, 0x3e9d4c62, 0x3e9f9a4c, 0x3ea1ed38, 0x3ea4452b,
+        0x3ea6a226, 0x3ea9042e, 0x3eab6b44, 0x3eadd76d, 0x3eb048aa, 0x3eb2bf00, 0x3eb53a71,
+        0x3eb7bb00, 0x3eba40b1, 0x3ebccb85, 0x3ebf5b81, 0x3ec1f0a7, 0x3ec48af9, 0x3ec72a7c,
+        0x3ec9cf32, 0x3ecc791e, 0x3ecf2842, 0x3ed1dca2, 0x3ed49641, 0x3ed75521, 0x3eda1946,
+        0x3edce2b2, 0x3edfb168, 0x3ee2856a, 0x3ee55ebd, 0x3ee83d63, 0x3eeb215d, 0x3eee0ab1,
+        0x3ef0f95f, 0x3ef3ed6b, 0x3ef6e6d8, 0x3ef9e5a8, 0x3efce9de, 0x3efff37e, 0x3f018145,
+        0x3f030b82, 0x3f049877, 0x3f062827, 0x3f07ba92, 0x3f094fb9, 0x3f0ae79f, 0x3f0c8244,
+        0x3f0e1faa, 0x3f0fbfd2, 0x3f1162be, 0x3f13086e, 0x3f14b0e4, 0x3f165c22, 0x3f180a29,
+        0x3f19bafa, 0x3f1b6e96, 0x3f1d24ff, 0x3f1ede36, 0x3f209a3c, 0x3f225913, 0x3f241abc,
+        0x3f25df38, 0x3f27a689, 0x3f2970af, 0x3f2b3dad, 0x3f2d0d83, 0x3f2ee032, 0x3f30b5bd,
+        0x3f328e24, 0x3f346968, 0x3f36478b, 0x3f38288f, 0x3f3a0c73, 0x3f3bf33a, 0x3f3ddce5,
+        0x3f3fc975, 0x3f41b8eb, 0x3f43ab48, 0x3f45a08f, 0x3f4798bf, 0x3f4993db, 0x3f4b91e3,
+        0x3f4d92d8, 0x3f4f96bd, 0x3f519d92, 0x3f53a758, 0x3f55b411, 0x3f57c3be, 0x3f59d65f,
+        0x3f5bebf7, 0x3f5e0486, 0x3f60200e, 0x3f623e90, 0x3f64600c, 0x3f668485, 0x3f68abfb,
+        0x3f6ad670, 0x3f6d03e5, 0x3f6f345a, 0x3f7167d2, 0x3f739e4d, 0x3f75d7cc, 0x3f781451,
+        0x3f7a53dd, 0x3f7c9671, 0x3f7edc0e
     };
     static const uint8_t s[416] = {
         0,0,0,0,0,0,0,0,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,
@@ -2840,10 +2876,14 @@ FOVLP_API uint8_t fovlp_linear_to_srgb8(float x)
         39,40,40,41,41,42,42,43,43,44,44,45,45,46,46,46,47,47,48,48,49,49,49,50,51,52,
         53,53,54,55,56,56,57,58,58,59,60,60,61,62,62,63,64,64,65,66,66,67,67,68,68,69,
         70,70,71,72,73,74,75,76,77,78,79,80,81,82,83,84,85,85,86,87,88,89,90,91,91,92,
-        93,94,95,95,96,97,98,98,99,101,102,103,105,106,107,109,110,111,113,114,115,116,118,119,120,121,
-        122,123,124,126,127,128,129,130,131,132,133,134,135,136,137,139,141,143,145,146,148,150,152,153,155,157,
-        158,160,162,163,165,166,168,169,171,172,174,175,177,178,179,181,182,184,185,186,188,190,193,195,198,200,
-        202,205,207,209,212,214,216,218,220,223,225,227,229,231,233,235,237,239,240,242,244,246,248,250,251,253
+        93,94,95,95,96,97,98,98,99,101,102,103,105,
+        106,107,109,110,111,113,114,115,116,118,119,120,121,
+        122,123,124,126,127,128,129,130,131,132,133,134,135,
+        136,137,139,141,143,145,146,148,150,152,153,155,157,
+        158,160,162,163,165,166,168,169,171,172,174,175,177,
+        178,179,181,182,184,185,186,188,190,193,195,198,200,
+        202,205,207,209,212,214,216,218,220,223,225,227,229,
+        231,233,235,237,239,240,242,244,246,248,250,251,253
     };
     union { float f; uint32_t u; } b;
     uint32_t c;

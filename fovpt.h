@@ -776,7 +776,8 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     uint32_t layer_nx[FOVPT_MAX_LAYERS], layer_ny[FOVPT_MAX_LAYERS];
     float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
     fovpt_layers_cfg lay;     /* LAYERS: cfg.layers; ZONES: the three zones as static layers */
-    uint32_t lanczos;         /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
+    /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
+    uint32_t lanczos;
     void *pre;                /* SELECTIVE, JIN: presample records, 52 bytes per pixel */
     /* SELECTIVE, JIN with temporal options: a ring of frames, 8 floats per pixel (raw rgb,
        first-hit distance or -1, colour reference rgb, reuse count), and their views */
@@ -1546,7 +1547,8 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #define FOVPT_MAX_PRIMS (1u << 26)
 #endif
 #if FOVPT_MAX_PRIMS > (1u << 26)
-#error "fovpt: FOVPT_MAX_PRIMS above 2^26 (the 4-wide BVH packs a leaf's first primitive in 26 bits)"
+#error \
+"fovpt: FOVPT_MAX_PRIMS above 2^26 (the 4-wide BVH packs a leaf's first primitive in 26 bits)"
 #endif
 #ifndef FOVPT_MAX_BVH_DEPTH
 #define FOVPT_MAX_BVH_DEPTH 64
@@ -1567,8 +1569,10 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #define FOVPT__LEAF_MAX 16u
 
 
-FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z) { d[0] = x; d[1] = y; d[2] = z; }
-FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3]) { d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
+FOVPT__PRIV void fovpt__set3(float d[3], float x, float y, float z)
+{ d[0] = x; d[1] = y; d[2] = z; }
+FOVPT__PRIV void fovpt__copy3(float d[3], const float s[3])
+{ d[0] = s[0]; d[1] = s[1]; d[2] = s[2]; }
 FOVPT__PRIV void fovpt__sub3(float d[3], const float a[3], const float b[3])
 {
     d[0] = a[0] - b[0]; d[1] = a[1] - b[1]; d[2] = a[2] - b[2];
@@ -1579,7 +1583,8 @@ FOVPT__PRIV void fovpt__madd3(float d[3], const float a[3], float s, const float
 }
 FOVPT__PRIV float fovpt__max3(const float v[3]) { return fov__maxf(v[0], fov__maxf(v[1], v[2])); }
 FOVPT__PRIV float fovpt__mean3(const float v[3]) { return (v[0] + v[1] + v[2]) * (1.0f / 3.0f); }
-FOVPT__PRIV int fovpt__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
+FOVPT__PRIV int fovpt__nonzero3(const float v[3])
+{ return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
 /* The unit normal a x b / |a x b| of edges of any finite length: when the cross product
    under- or overflows, each edge is first scaled to a largest component of 1 (the
    direction does not change). n = 0 when the edges are parallel or zero. */
@@ -1614,7 +1619,10 @@ FOVPT_API const char *fovpt_result_string(fov_result r) { return fov__result_str
 FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *d, float fov_y_deg,
                                     uint32_t w, uint32_t h, fov_gaze g)
 { return fov__ecc_init(m, d, fov_y_deg, w, h, g, FOVPT_MAX_DIM); }
-FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y) { return fov__ecc_deg(m, x, y); }
+FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y)
+{
+    return fov__ecc_deg(m, x, y);
+}
 FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
 
 FOVPT_API const char *fovpt_method_name(uint32_t method)
@@ -1636,7 +1644,8 @@ FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *o, uint32_t preset)
     o->layer[0].stride = 4;
     o->layer[0].spp = 4;
     for (i = 1; i < 4; ++i) {
-        o->layer[i].radius_deg = preset == FOVPT_LAYERS_KTH_DIAMETER ? 0.5f * rad[i - 1] : rad[i - 1];
+        o->layer[i].radius_deg =
+            preset == FOVPT_LAYERS_KTH_DIAMETER ? 0.5f * rad[i - 1] : rad[i - 1];
         o->layer[i].stride = 4u - i;
         o->layer[i].spp = 4;
     }
@@ -1728,7 +1737,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
             bad = FOV__MSG("radius_deg must be below the previous layer's");
         if (bad) return fovpt__layer_fail(lg, e, i, bad, (uint32_t)__LINE__);
     }
-    if (c.layers.layer[0].radius_deg > 0.0f && !(c.layers.layer[1].radius_deg < c.layers.layer[0].radius_deg))
+    if (c.layers.layer[0].radius_deg > 0.0f &&
+        !(c.layers.layer[1].radius_deg < c.layers.layer[0].radius_deg))
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
                     "config.layers.layer[1].radius_deg must be below layer[0]'s (the mask)");
     /* zones (Polychronakis 2025) */
@@ -1753,7 +1763,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
         static const uint32_t n_def[4] = { 9, 4, 2, 1 };
         static const float ts_def[4] = { 1.0f, 2.0f, 0.5f, 12.0f };
-        static const float tau_def[9] = { 0.02f, 0.05f, 0.06f, 0.06f, 0.02f, 0.02f, 0.02f, 0.06f, 0.02f };
+        static const float tau_def[9] =
+            { 0.02f, 0.05f, 0.06f, 0.06f, 0.02f, 0.02f, 0.02f, 0.06f, 0.02f };
         fovpt_selective_cfg *s = &c.selective;
         int all0 = 1;
         for (i = 0; i < 5; ++i) {
@@ -1794,7 +1805,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
             FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.selective.fill_centre must be 0 or 1");
         {
             /* tau_fov shape: positive, and x(t) monotone on both Bezier segments */
-            float t0 = s->tau_shape[0], tf = s->tau_shape[1], tp = s->tau_shape[2], tn = s->tau_shape[3];
+            float t0 = s->tau_shape[0], tf = s->tau_shape[1], tp = s->tau_shape[2],
+                tn = s->tau_shape[3];
             float ef = s->e_deg[0], enp = s->e_deg[3];
             if (!(t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
                 tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))
@@ -1862,8 +1874,8 @@ FOVPT_API void fovpt_camera_init(fovpt_camera *cam, uint32_t width, uint32_t hei
 
 /* Basis, image-plane tangents and the pinhole (pos itself when eye_offset is 0, bit for
    bit); validates the camera. */
-FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], float u[3], float f[3],
-                                           float tan4[4], float org[3])
+FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], float u[3],
+                                           float f[3], float tan4[4], float org[3])
 {
     float lf, lr, fy;
     int asym, k;
@@ -1871,9 +1883,9 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     if (cam->width == 0 || cam->height == 0) return FOV_ERR_INVALID_ARG;
     if (cam->width > FOVPT_MAX_DIM || cam->height > FOVPT_MAX_DIM) return FOV_ERR_LIMIT;
     if (!fov__finite3(cam->pos) || !fov__finite3(cam->target) || !fov__finite3(cam->up) ||
-        !fov__finite(cam->fov_y_deg) || !fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
-        !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top) ||
-        !fov__finite(cam->eye_offset))
+        !fov__finite(cam->fov_y_deg) || !fov__finite(cam->tan_left) ||
+        !fov__finite(cam->tan_right) || !fov__finite(cam->tan_bottom) ||
+        !fov__finite(cam->tan_top) || !fov__finite(cam->eye_offset))
         return FOV_ERR_NOT_FINITE;
     /* fovpt's own frame, not fov__camera_basis: it normalises without prescaling first and
        does not renormalise up = r x f, so on ordinary cameras up differs from the shared
@@ -1881,7 +1893,8 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
        one would change fovpt's images */
     fovpt__sub3(f, cam->target, cam->pos);
     fovpt__copy3(u, cam->up);
-    if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f)) fovpt__set3(u, 0.0f, 1.0f, 0.0f);
+    if (!fovpt__nonzero3(u) && !(u[0] < 0.0f || u[1] < 0.0f || u[2] < 0.0f))
+        fovpt__set3(u, 0.0f, 1.0f, 0.0f);
     /* a view vector of 1e-25 or 3e38 and an up hint of 1e-30 or 3e38 are valid: the
        normalisation prescales; a view vector that overflows (target - pos beyond FLT_MAX)
        or is zero is degenerate */
@@ -1900,8 +1913,9 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
     asym = fov__absf(cam->tan_left) > 0.0f || fov__absf(cam->tan_right) > 0.0f ||
            fov__absf(cam->tan_bottom) > 0.0f || fov__absf(cam->tan_top) > 0.0f;
     if (asym) {
-        if (!(cam->tan_left + cam->tan_right > 1e-6f) || !(cam->tan_bottom + cam->tan_top > 1e-6f) ||
-            cam->tan_left > 1e6f || cam->tan_right > 1e6f || cam->tan_top > 1e6f || cam->tan_bottom > 1e6f)
+        if (!(cam->tan_left + cam->tan_right > 1e-6f) ||
+            !(cam->tan_bottom + cam->tan_top > 1e-6f) || cam->tan_left > 1e6f ||
+            cam->tan_right > 1e6f || cam->tan_top > 1e6f || cam->tan_bottom > 1e6f)
             return FOV_ERR_INVALID_ARG;
         tan4[0] = -cam->tan_left; tan4[1] = cam->tan_right;
         tan4[2] = cam->tan_top; tan4[3] = -cam->tan_bottom;
@@ -1919,8 +1933,9 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
 /* The unit direction through image point (x, y); returns its length before normalising,
    0 when it is not finite (x or y so far off the image that the image-plane offset
    overflows: only fovpt_camera_ray can ask for such points). */
-FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float f[3], const float tan4[4],
-                                 uint32_t w, uint32_t h, float x, float y, float dir[3])
+FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float f[3],
+                                 const float tan4[4], uint32_t w, uint32_t h, float x, float y,
+                                 float dir[3])
 {
     float sx = tan4[0] + (tan4[1] - tan4[0]) * (x / (float)w);
     float sy = tan4[2] + (tan4[3] - tan4[2]) * (y / (float)h);
@@ -1930,7 +1945,8 @@ FOVPT__PRIV float fovpt__primary(const float r[3], const float u[3], const float
     return fov__normalize(dir);
 }
 
-FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3], float dir[3])
+FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y, float org[3],
+                                      float dir[3])
 {
     float r[3], u[3], f[3], t4[4], o[3];
     fov_result e;
@@ -1938,12 +1954,14 @@ FOVPT_API fov_result fovpt_camera_ray(const fovpt_camera *cam, float x, float y,
     if (!fov__finite(x) || !fov__finite(y)) return FOV_ERR_NOT_FINITE;
     e = fovpt__camera_setup(cam, r, u, f, t4, o);
     if (e != FOV_OK) return e;
-    if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f)) return FOV_ERR_INVALID_ARG;
+    if (!(fovpt__primary(r, u, f, t4, cam->width, cam->height, x, y, dir) > 0.0f))
+        return FOV_ERR_INVALID_ARG;
     fovpt__copy3(org, o);
     return FOV_OK;
 }
 
-FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3], fov_gaze *gaze)
+FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float p[3],
+                                           fov_gaze *gaze)
 {
     float r[3], u[3], f[3], t4[4], o[3], d[3], z, sx, sy, x, y;
     fov_result e;
@@ -1960,7 +1978,8 @@ FOVPT_API fov_result fovpt_gaze_from_point(const fovpt_camera *cam, const float 
     sy = fov__dot(d, u) / z;
     x = (float)cam->width * ((sx - t4[0]) / (t4[1] - t4[0]));
     y = (float)cam->height * ((sy - t4[2]) / (t4[3] - t4[2]));
-    if (!(fov__absf(x) <= 16777216.0f) || !(fov__absf(y) <= 16777216.0f)) return FOV_ERR_INVALID_ARG;
+    if (!(fov__absf(x) <= 16777216.0f) || !(fov__absf(y) <= 16777216.0f))
+        return FOV_ERR_INVALID_ARG;
     gaze->x = x;
     gaze->y = y;
     return FOV_OK;
@@ -1997,7 +2016,8 @@ FOVPT_API void fovpt_material_init(fovpt_material *m)
     m->exponent = 20.0f;
     m->ior = 1.5f;
 }
-FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, float r, uint32_t material)
+FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, float r,
+                                  uint32_t material)
 {
     if (!s) return;
     FOV_MEMSET(s, 0, sizeof *s);
@@ -2006,7 +2026,8 @@ FOVPT_API void fovpt_shape_sphere(fovpt_shape *s, float cx, float cy, float cz, 
     s->r = r;
     s->material = material;
 }
-FOVPT_API void fovpt_shape_plane(fovpt_shape *s, const float point[3], const float normal[3], uint32_t material)
+FOVPT_API void fovpt_shape_plane(fovpt_shape *s, const float point[3], const float normal[3],
+                                 uint32_t material)
 {
     if (!s || !point || !normal) return;
     FOV_MEMSET(s, 0, sizeof *s);
@@ -2015,8 +2036,8 @@ FOVPT_API void fovpt_shape_plane(fovpt_shape *s, const float point[3], const flo
     fovpt__copy3(s->u, normal);
     s->material = material;
 }
-FOVPT_API void fovpt_shape_quad(fovpt_shape *s, const float corner[3], const float u[3], const float v[3],
-                                uint32_t material)
+FOVPT_API void fovpt_shape_quad(fovpt_shape *s, const float corner[3], const float u[3],
+                                const float v[3], uint32_t material)
 {
     if (!s || !corner || !u || !v) return;
     FOV_MEMSET(s, 0, sizeof *s);
@@ -2026,7 +2047,8 @@ FOVPT_API void fovpt_shape_quad(fovpt_shape *s, const float corner[3], const flo
     fovpt__copy3(s->v, v);
     s->material = material;
 }
-FOVPT_API void fovpt_shape_box(fovpt_shape *s, const float lo[3], const float hi[3], uint32_t material)
+FOVPT_API void fovpt_shape_box(fovpt_shape *s, const float lo[3], const float hi[3],
+                               uint32_t material)
 {
     if (!s || !lo || !hi) return;
     FOV_MEMSET(s, 0, sizeof *s);
@@ -2145,7 +2167,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             !fov__finite(m->exponent) || !fov__finite(m->ior))
             FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: a materials[] value NaN or infinite");
         for (k = 0; k < 3; ++k) {
-            if (!(m->albedo[k] >= 0.0f && m->albedo[k] <= 1.0f) || !(m->specular[k] >= 0.0f && m->specular[k] <= 1.0f))
+            if (!(m->albedo[k] >= 0.0f && m->albedo[k] <= 1.0f) ||
+                !(m->specular[k] >= 0.0f && m->specular[k] <= 1.0f))
                 FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
                             "scene: materials[].albedo and specular must be in [0, 1]");
             if (m->emission[k] < 0.0f)
@@ -2175,13 +2198,15 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             ++n_bounded; n_lights += em ? 1u : 0u;
             break;
         case FOVPT_SHAPE_PLANE:
-            if (!(fov__absf(s->u[0]) > 0.0f || fov__absf(s->u[1]) > 0.0f || fov__absf(s->u[2]) > 0.0f))
+            if (!(fov__absf(s->u[0]) > 0.0f || fov__absf(s->u[1]) > 0.0f ||
+                  fov__absf(s->u[2]) > 0.0f))
                 FOVPT__FAIL(lg, FOV_ERR_DEGENERATE, "scene: shapes[].u (plane normal) is zero");
             break;
         case FOVPT_SHAPE_QUAD: {
             float c[3];
             fov__cross(s->u, s->v, c);
-            if (!(fov__len(c) > 1e-12f * (fov__dot(s->u, s->u) + fov__dot(s->v, s->v))) || !fov__finite(fov__len(c)))
+            if (!(fov__len(c) > 1e-12f * (fov__dot(s->u, s->u) + fov__dot(s->v, s->v))) ||
+                !fov__finite(fov__len(c)))
                 FOVPT__FAIL(lg, FOV_ERR_DEGENERATE,
                             em ? "scene: shapes[]: quad light of zero area"
                                : "scene: shapes[]: quad of zero area");
@@ -2226,7 +2251,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
             uint32_t i0, i1, i2;
             float a2;
             if (m->indices) {
-                i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u]; i2 = m->indices[3u * (size_t)k + 2u];
+                i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u];
+                i2 = m->indices[3u * (size_t)k + 2u];
                 if (i0 >= m->num_vertices || i1 >= m->num_vertices || i2 >= m->num_vertices)
                     FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: meshes[].indices >= num_vertices");
             } else {
@@ -2391,8 +2417,8 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
 }
 
 /* Binned SAH build (Wald 2007), iterative with an explicit work stack. */
-FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint32_t *order, float *pb,
-                                        const fovpt_scene_desc *d)
+FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint32_t *order,
+                                        float *pb, const fovpt_scene_desc *d)
 {
     typedef struct { uint32_t node, start, count, depth; } work;
     work stack[FOVPT_MAX_BVH_DEPTH + 1];
@@ -2419,7 +2445,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         for (i = w.start; i < w.start + w.count; ++i) {
             const float *q = pb + 9u * (size_t)order[i];
             for (k = 0; k < 3; ++k) {
-                nd->b[k] = fov__minf(nd->b[k], q[k]); nd->b[3 + k] = fov__maxf(nd->b[3 + k], q[3 + k]);
+                nd->b[k] = fov__minf(nd->b[k], q[k]);
+                nd->b[3 + k] = fov__maxf(nd->b[3 + k], q[3 + k]);
                 clo[k] = fov__minf(clo[k], q[6 + k]); chi[k] = fov__maxf(chi[k], q[6 + k]);
             }
         }
@@ -2446,14 +2473,18 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
                     if (b >= bins) b = bins - 1u;
                     bin[b].n++;
                     for (k = 0; k < 3; ++k) {
-                        bin[b].lo[k] = fov__minf(bin[b].lo[k], q[k]); bin[b].hi[k] = fov__maxf(bin[b].hi[k], q[3 + k]);
+                        bin[b].lo[k] = fov__minf(bin[b].lo[k], q[k]);
+                        bin[b].hi[k] = fov__maxf(bin[b].hi[k], q[3 + k]);
                     }
                 }
                 /* right sweep: areas and counts of bins b .. bins-1 */
                 for (k = 0; k < 3; ++k) { rlo[k] = FLT_MAX; rhi[k] = -FLT_MAX; }
                 cnt = 0;
                 for (b = bins - 1u; b > 0; --b) {
-                    for (k = 0; k < 3; ++k) { rlo[k] = fov__minf(rlo[k], bin[b].lo[k]); rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]); }
+                    for (k = 0; k < 3; ++k) {
+                        rlo[k] = fov__minf(rlo[k], bin[b].lo[k]);
+                        rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]);
+                    }
                     cnt += bin[b].n;
                     rn[b] = cnt;
                     ra[b] = fovpt__half_area(rlo, rhi);
@@ -2462,7 +2493,10 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
                 cnt = 0;
                 for (b = 0; b + 1u < bins; ++b) { /* split after bin b */
                     float cost;
-                    for (k = 0; k < 3; ++k) { rlo[k] = fov__minf(rlo[k], bin[b].lo[k]); rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]); }
+                    for (k = 0; k < 3; ++k) {
+                        rlo[k] = fov__minf(rlo[k], bin[b].lo[k]);
+                        rhi[k] = fov__maxf(rhi[k], bin[b].hi[k]);
+                    }
                     cnt += bin[b].n;
                     if (cnt == 0 || rn[b + 1u] == 0) continue;
                     cost = fovpt__half_area(rlo, rhi) * (float)cnt + ra[b + 1u] * (float)rn[b + 1u];
@@ -2474,8 +2508,9 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
            boxes: about 80 instructions against about 50 for a triangle, under callgrind).
            Defaults 16 bins, leaf 2, cost 1.5 against 12, 4, 1.0 before: 3.0 -> 3.4 Mrays/s on
            bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. */
-        if (w.count <= leaf || (w.count <= FOVPT__LEAF_MAX &&
-                                (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost))) {
+        if (w.count <= leaf ||
+            (w.count <= FOVPT__LEAF_MAX &&
+             (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost))) {
             nd->a = w.start; nd->n = w.count;
             continue;
         }
@@ -2500,8 +2535,10 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
                         "scene: BVH deeper than bvh_max_depth (FOVPT_MAX_BVH_DEPTH)");
         FOV_ASSERT(used + 2u <= s->num_nodes);
         nd->a = used; nd->n = 0;
-        stack[sp].node = used; stack[sp].start = w.start; stack[sp].count = mid; stack[sp].depth = w.depth + 1u; ++sp;
-        stack[sp].node = used + 1u; stack[sp].start = w.start + mid; stack[sp].count = w.count - mid; stack[sp].depth = w.depth + 1u; ++sp;
+        stack[sp].node = used; stack[sp].start = w.start; stack[sp].count = mid;
+        stack[sp].depth = w.depth + 1u; ++sp;
+        stack[sp].node = used + 1u; stack[sp].start = w.start + mid;
+        stack[sp].count = w.count - mid; stack[sp].depth = w.depth + 1u; ++sp;
         used += 2u;
     }
     s->num_nodes = used;
@@ -2509,7 +2546,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
     return FOV_OK;
 }
 
-FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d, void *mem, size_t bytes)
+FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d, void *mem,
+                                       size_t bytes)
 {
     fovpt__layout L;
     fov_result e;
@@ -2558,12 +2596,16 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                 float a2;
                 fovpt__prim *p;
                 if (m->indices) {
-                    i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u]; i2 = m->indices[3u * (size_t)k + 2u];
+                    i0 = m->indices[3u * (size_t)k]; i1 = m->indices[3u * (size_t)k + 1u];
+                    i2 = m->indices[3u * (size_t)k + 2u];
                 } else {
                     i0 = 3u * k; i1 = i0 + 1u; i2 = i0 + 2u;
                 }
-                v0 = m->positions + 3u * (size_t)i0; v1 = m->positions + 3u * (size_t)i1; v2 = m->positions + 3u * (size_t)i2;
-                if (!fovpt__tri_area2(v0, v1, v2, &a2)) { ++skipped; ++id; continue; } /* ids stay k */
+                v0 = m->positions + 3u * (size_t)i0; v1 = m->positions + 3u * (size_t)i1;
+                v2 = m->positions + 3u * (size_t)i2;
+                if (!fovpt__tri_area2(v0, v1, v2, &a2)) { /* ids stay k */
+                    ++skipped; ++id; continue;
+                }
                 p = &prims[np++];
                 FOV_MEMSET(p, 0, sizeof *p);
                 p->type = FOVPT__TRI; p->material = m->material; p->id = id++;
@@ -2591,7 +2633,9 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         float a;
         if (!fovpt__emissive(m) || p->type == FOVPT_SHAPE_BOX) continue;
         if (p->type == FOVPT_SHAPE_SPHERE) a = 4.0f * FOV__PI * p->r * p->r;
-        else if (p->type == FOVPT_SHAPE_QUAD) { float c[3]; fov__cross(p->b, p->c, c); a = fov__len(c); }
+        else if (p->type == FOVPT_SHAPE_QUAD) {
+            float c[3]; fov__cross(p->b, p->c, c); a = fov__len(c);
+        }
         else a = p->r;
         lights[nl] = i;
         area[nl] = a;
@@ -2623,14 +2667,18 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     for (i = 0; i < nb; ++i) {
         float lo[3], hi[3];
         fovpt__prim_box(&prims[i], lo, hi, 0); /* the public bounds: exact */
-        for (k = 0; k < 3; ++k) { s->bounds_lo[k] = fov__minf(s->bounds_lo[k], lo[k]); s->bounds_hi[k] = fov__maxf(s->bounds_hi[k], hi[k]); }
+        for (k = 0; k < 3; ++k) {
+            s->bounds_lo[k] = fov__minf(s->bounds_lo[k], lo[k]);
+            s->bounds_hi[k] = fov__maxf(s->bounds_hi[k], hi[k]);
+        }
     }
     {
         uint32_t minp = d->bvh_min_prims ? d->bvh_min_prims : 8u;
         uint32_t *order = (uint32_t *)(void *)(base + L.order);
         if (nb >= minp && nb > 0) {
             s->num_nodes = L.n_nodes_max;
-            e = fovpt__build_bvh(s, (fovpt__node *)(void *)(base + L.nodes), order, (float *)(void *)(base + L.pbox), d);
+            e = fovpt__build_bvh(s, (fovpt__node *)(void *)(base + L.nodes), order,
+                                 (float *)(void *)(base + L.pbox), d);
             if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
             s->nodes = base + L.nodes;
             {   /* the build data is spent: reuse it for the triangles in leaf order, so a leaf
@@ -2640,15 +2688,19 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                     const fovpt__prim *p = &prims[order[i]];
                     float *q = lt + 9u * (size_t)i;
                     if (p->type == FOVPT__TRI) {
-                        for (k = 0; k < 3; ++k) { q[k] = p->a[k]; q[3 + k] = p->b[k]; q[6 + k] = p->c[k]; }
+                        for (k = 0; k < 3; ++k) {
+                            q[k] = p->a[k]; q[3 + k] = p->b[k]; q[6 + k] = p->c[k];
+                        }
                     } else {
-                        for (k = 0; k < 9; ++k) q[k] = 0.0f; /* e1 = e2 = 0: det = 0, see fovpt__closest */
+                        /* e1 = e2 = 0: det = 0, see fovpt__closest */
+                        for (k = 0; k < 9; ++k) q[k] = 0.0f;
                     }
                 }
                 s->leaf_tris = lt;
             }
             s->nodes4 = base + L.nodes4;
-            s->num_nodes4 = fovpt__collapse4((const fovpt__node *)s->nodes, (fovpt__node4 *)(void *)(base + L.nodes4));
+            s->num_nodes4 = fovpt__collapse4((const fovpt__node *)s->nodes,
+                                             (fovpt__node4 *)(void *)(base + L.nodes4));
         } else {
             for (i = 0; i < nb; ++i) order[i] = i;
             s->nodes = NULL;
@@ -2712,7 +2764,8 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
         fovpt__sub3(oc, r->o, p->a);
         a = fov__dot(r->d, r->d);
         b = fov__dot(oc, r->d);
-        {   /* discriminant via the closest-approach distance (Hearn-Baker, Ray Tracing Gems ch. 7) */
+        /* discriminant via the closest-approach distance (Hearn-Baker, Ray Tracing Gems ch. 7) */
+        {
             float l[3];
             fovpt__madd3(l, oc, -b / a, r->d);
             disc = a * (p->r * p->r - fov__dot(l, l));
@@ -2781,11 +2834,15 @@ FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside 
 }
 FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
 {
-    float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2]))), sc = 1.0f;
+    float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2]))),
+        sc = 1.0f;
     int i;
     fovpt__copy3(d, dir);
-    if (!(m > 0.0f) || !fov__finite(m) || (m >= 2.3283064365386963e-10f && m <= 4294967296.0f)) return 1.0f;
-    for (i = 0; i < 16 && m >= 65536.0f; ++i) { m *= 1.52587890625e-05f; sc *= 65536.0f; }  /* 2^-16 */
+    if (!(m > 0.0f) || !fov__finite(m) || (m >= 2.3283064365386963e-10f && m <= 4294967296.0f))
+        return 1.0f;
+    for (i = 0; i < 16 && m >= 65536.0f; ++i) { /* 2^-16 */
+        m *= 1.52587890625e-05f; sc *= 65536.0f;
+    }
     for (i = 0; i < 16 && m < 1.52587890625e-05f; ++i) { m *= 65536.0f; sc *= 1.52587890625e-05f; }
     d[0] = dir[0] / sc; d[1] = dir[1] / sc; d[2] = dir[2] / sc;
     return sc; /* d = dir / sc: t along dir = t along d * (1 / sc) */
@@ -2812,8 +2869,8 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
    distance (0 * inf: the ray lies in a slab's face plane, parallel to it), and the exit is
    widened by the rounding margin (FOVPT__BOX_GROW, grow_k = FOVPT__BOX_NEG * max(0, -tmin)).
    The four-box tests in fovpt__closest do the same arithmetic. */
-FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax, float grow_k,
-                               float *tn_out)
+FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax,
+                               float grow_k, float *tn_out)
 {
     const float *b = n->b;
     float a0 = (b[r->nb[0]] - r->o[0]) * r->inv[0], b0 = (b[r->fb[0]] - r->o[0]) * r->inv[0];
@@ -2851,13 +2908,18 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         uint32_t stack[3u * FOVPT_MAX_BVH_DEPTH + 2u], sp = 0, ref = 0;
         float stack_t[3u * FOVPT_MAX_BVH_DEPTH + 2u], tn;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
-        const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1], fz = r->fb[2];
+        const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
+            fz = r->fb[2];
 #if FOVPT__SSE
-        const __m128 vox = _mm_set1_ps(r->o[0]), voy = _mm_set1_ps(r->o[1]), voz = _mm_set1_ps(r->o[2]);
-        const __m128 vix = _mm_set1_ps(r->inv[0]), viy = _mm_set1_ps(r->inv[1]), viz = _mm_set1_ps(r->inv[2]);
-        const __m128 vtmin = _mm_set1_ps(tmin), vgrow = _mm_set1_ps(FOVPT__BOX_GROW), vgk = _mm_set1_ps(gk);
+        const __m128 vox = _mm_set1_ps(r->o[0]), voy = _mm_set1_ps(r->o[1]),
+            voz = _mm_set1_ps(r->o[2]);
+        const __m128 vix = _mm_set1_ps(r->inv[0]), viy = _mm_set1_ps(r->inv[1]),
+            viz = _mm_set1_ps(r->inv[2]);
+        const __m128 vtmin = _mm_set1_ps(tmin), vgrow = _mm_set1_ps(FOVPT__BOX_GROW),
+            vgk = _mm_set1_ps(gk);
 #else
-        const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1], iz = r->inv[2];
+        const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
+            iz = r->inv[2];
 #endif
         if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, gk, &tn)) {
             for (;;) {
@@ -2908,16 +2970,20 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fy]), voy), viy), u0);
                     t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nz]), voz), viz), t0);
                     u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fz]), voz), viz), u0);
-                    hm = (uint32_t)_mm_movemask_ps(_mm_cmple_ps(t0, _mm_add_ps(_mm_mul_ps(u0, vgrow), vgk)));
+                    hm = (uint32_t)_mm_movemask_ps(
+                        _mm_cmple_ps(t0, _mm_add_ps(_mm_mul_ps(u0, vgrow), vgk)));
                     _mm_storeu_ps(tv, t0);
 #else
                     hm = 0;
                     for (j = 0; j < 4; ++j) {
                         const float tm = *tmax;
                         float t0 = tmin, u0 = tm, a, c;
-                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix; t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * iy; t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * iz; t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
+                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix;
+                        t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
+                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * iy;
+                        t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
+                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * iz;
+                        t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
                         tv[j] = t0;
                         if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
@@ -2928,10 +2994,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         continue;
                     }
                     if (nh == 2u) {
-                        const uint32_t j0 = (hm & 1u) ? 0u : (hm & 2u) ? 1u : 2u, j1 = (hm & 8u) ? 3u : (hm & 4u) ? 2u : 1u;
+                        const uint32_t j0 = (hm & 1u) ? 0u : (hm & 2u) ? 1u : 2u,
+                            j1 = (hm & 8u) ? 3u : (hm & 4u) ? 2u : 1u;
                         FOV_ASSERT(sp < 3u * FOVPT_MAX_BVH_DEPTH + 2u);
-                        if (tv[j1] < tv[j0]) { stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0]; ref = nd->child[j1]; }
-                        else { stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1]; ref = nd->child[j0]; }
+                        if (tv[j1] < tv[j0]) {
+                            stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0]; ref = nd->child[j1];
+                        } else {
+                            stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1]; ref = nd->child[j0];
+                        }
                         continue;
                     }
                     nh = 0;
@@ -2939,7 +3009,9 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         if (hm & (1u << j)) {
                             /* insertion by entry distance, ascending (ties: child order) */
                             uint32_t k = nh++;
-                            while (k > 0 && ht[k - 1u] > tv[j]) { ht[k] = ht[k - 1u]; hc[k] = hc[k - 1u]; --k; }
+                            while (k > 0 && ht[k - 1u] > tv[j]) {
+                                ht[k] = ht[k - 1u]; hc[k] = hc[k - 1u]; --k;
+                            }
                             ht[k] = tv[j]; hc[k] = nd->child[j];
                         }
                     }
@@ -2972,8 +3044,8 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     return best;
 }
 
-FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float dir[3], float tmin, float tmax,
-                           fovpt_hit *h, int brute)
+FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float dir[3], float tmin,
+                           float tmax, fovpt_hit *h, int brute)
 {
     fovpt__ray r;
     float t = tmax, un[3];
@@ -2992,7 +3064,9 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0);
         if (slot != FOVPT_PRIM_NONE) {
             t = ts / sc;
-            if (!(t > tmin && t < tmax)) { slot = FOVPT_PRIM_NONE; t = tmax; } /* under/overflow of the rescale */
+            if (!(t > tmin && t < tmax)) { /* under/overflow of the rescale */
+                slot = FOVPT_PRIM_NONE; t = tmax;
+            }
         }
     }
     if (s->user_hit) {
@@ -3033,7 +3107,8 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
             float sg = 1.0f;
             for (k = 0; k < 3; ++k) {
                 float ext = fov__maxf(p->b[k] - p->a[k], 1e-30f);
-                float d0 = fov__absf(h->p[k] - p->a[k]) / ext, d1 = fov__absf(h->p[k] - p->b[k]) / ext;
+                float d0 = fov__absf(h->p[k] - p->a[k]) / ext,
+                    d1 = fov__absf(h->p[k] - p->b[k]) / ext;
                 if (d0 < best) { best = d0; ax = k; sg = -1.0f; }
                 if (d1 < best) { best = d1; ax = k; sg = 1.0f; }
             }
@@ -3046,17 +3121,18 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     return 1;
 }
 
-FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3], float tmin,
-                              float tmax, fovpt_hit *hit)
+FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3],
+                              float tmin, float tmax, fovpt_hit *hit)
 {
     return fovpt__hit(s, org, dir, tmin, tmax, hit, 0);
 }
-FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3], const float dir[3], float tmin,
-                                    float tmax, fovpt_hit *hit)
+FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3], const float dir[3],
+                                    float tmin, float tmax, fovpt_hit *hit)
 {
     return fovpt__hit(s, org, dir, tmin, tmax, hit, 1);
 }
-FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const float dir[3], float tmin, float tmax)
+FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const float dir[3],
+                             float tmin, float tmax)
 {
     fovpt__ray r;
     float t = tmax;
@@ -3084,7 +3160,8 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     if (s->user_hit) {
         float tu = tmax, un[3] = { 0.0f, 0.0f, 0.0f };
         uint32_t um = 0;
-        if (s->user_hit(org, dir, tmin, tmax, &tu, un, &um, s->user) && tu > tmin && tu < tmax) return 1;
+        if (s->user_hit(org, dir, tmin, tmax, &tu, un, &um, s->user) && tu > tmin && tu < tmax)
+            return 1;
     }
     return 0;
 }
@@ -3098,7 +3175,8 @@ FOVPT__PRIV uint32_t fovpt__mix(uint32_t x)
     x ^= x >> 16;
     return x;
 }
-FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint32_t sample, uint32_t frame)
+FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint32_t sample,
+                              uint32_t frame)
 {
     uint32_t k;
     if (!r) return;
@@ -3143,8 +3221,8 @@ FOVPT__PRIV float fovpt__phong_ps(const fovpt_material *m)
     return as + ad > 0.0f ? as / (as + ad) : 0.0f;
 }
 /* f cos and the mixture pdf of a Lambert or Phong material; ns faces wo. */
-FOVPT__PRIV void fovpt__eval_smooth(const fovpt_material *m, const float ns[3], const float wo[3], const float wi[3],
-                                    float fcos[3], float *pdf)
+FOVPT__PRIV void fovpt__eval_smooth(const fovpt_material *m, const float ns[3], const float wo[3],
+                                    const float wi[3], float fcos[3], float *pdf)
 {
     float ci = fov__dot(ns, wi);
     uint32_t k;
@@ -3159,7 +3237,8 @@ FOVPT__PRIV void fovpt__eval_smooth(const fovpt_material *m, const float ns[3], 
         fovpt__reflect(ns, wo, wr);
         c = fov__dot(wr, wi);
         if (c > 0.0f) lobe = FOV__POW(c, a) * (1.0f / (2.0f * FOV__PI));
-        for (k = 0; k < 3; ++k) fcos[k] = (m->albedo[k] / FOV__PI + m->specular[k] * (a + 2.0f) * lobe) * ci;
+        for (k = 0; k < 3; ++k)
+            fcos[k] = (m->albedo[k] / FOV__PI + m->specular[k] * (a + 2.0f) * lobe) * ci;
         *pdf = (1.0f - ps) * ci / FOV__PI + ps * (a + 1.0f) * lobe;
     }
 }
@@ -3174,8 +3253,8 @@ FOVPT__PRIV float fovpt__fresnel(float cosi, float n1, float n2, float *cost)
     return 0.5f * (rs * rs + rp * rp);
 }
 
-FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const float wo[3], fovpt_rng *rng,
-                                float wi[3], float weight[3], float *pdf)
+FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const float wo[3],
+                                fovpt_rng *rng, float wi[3], float weight[3], float *pdf)
 {
     float ns[3], u0, u1, u2;
     uint32_t k;
@@ -3196,7 +3275,8 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
         float ps = fovpt__phong_ps(m), fcos[3];
         if (!(fovpt__mean3(m->specular) + fovpt__mean3(m->albedo) > 0.0f)) return 0;
         if (u0 < ps) { /* Phong lobe about the mirror direction: pdf (a+1)/(2 pi) cos^a */
-            float wr[3], ct = FOV__POW(u1, 1.0f / (m->exponent + 1.0f)), st, ph = 2.0f * FOV__PI * u2;
+            float wr[3], ct = FOV__POW(u1, 1.0f / (m->exponent + 1.0f)), st,
+                ph = 2.0f * FOV__PI * u2;
             st = FOV__SQRT(fov__maxf(0.0f, 1.0f - ct * ct));
             fovpt__reflect(ns, wo, wr);
             fovpt__local(wr, st * FOV__COS(ph), st * FOV__SIN(ph), ct, wi);
@@ -3232,8 +3312,8 @@ FOVPT_API int fovpt_bsdf_sample(const fovpt_material *m, const float n[3], const
     }
 }
 
-FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const float wo[3], const float wi[3],
-                               float fcos[3], float *pdf)
+FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const float wo[3],
+                               const float wi[3], float fcos[3], float *pdf)
 {
     float ns[3];
     if (!fcos || !pdf) return;
@@ -3252,7 +3332,8 @@ FOVPT__PRIV float fovpt__light_pick_pdf(const fovpt_scene *s, uint32_t k)
     return k == 0 ? s->light_cdf[0] : s->light_cdf[k] - s->light_cdf[k - 1u];
 }
 /* Samples a point y (normal ny) on a light; returns the light index. */
-FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, float y[3], float ny[3])
+FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, float y[3],
+                                         float ny[3])
 {
     float u0 = fovpt_rng_next(rng), u1 = fovpt_rng_next(rng), u2 = fovpt_rng_next(rng);
     uint32_t lo = 0, hi = s->num_lights - 1u;
@@ -3263,7 +3344,8 @@ FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, f
     }
     p = (const fovpt__prim *)s->prims + s->lights[lo];
     if (p->type == FOVPT_SHAPE_SPHERE) {
-        float z = 1.0f - 2.0f * u1, r = FOV__SQRT(fov__maxf(0.0f, 1.0f - z * z)), ph = 2.0f * FOV__PI * u2;
+        float z = 1.0f - 2.0f * u1, r = FOV__SQRT(fov__maxf(0.0f, 1.0f - z * z)),
+            ph = 2.0f * FOV__PI * u2;
         fovpt__set3(ny, r * FOV__COS(ph), r * FOV__SIN(ph), z);
         fovpt__madd3(y, p->a, p->r, ny);
     } else if (p->type == FOVPT_SHAPE_QUAD) {
@@ -3280,7 +3362,8 @@ FOVPT__PRIV uint32_t fovpt__light_sample(const fovpt_scene *s, fovpt_rng *rng, f
 }
 FOVPT__PRIV float fovpt__eps_at(const float p[3])
 {
-    return FOVPT_RAY_EPS * (1.0f + fov__maxf(fov__absf(p[0]), fov__maxf(fov__absf(p[1]), fov__absf(p[2]))));
+    return FOVPT_RAY_EPS *
+        (1.0f + fov__maxf(fov__absf(p[0]), fov__maxf(fov__absf(p[1]), fov__absf(p[2]))));
 }
 /* p moved off the surface (normal n) to the side of direction d */
 FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d[3], float o[3])
@@ -3306,10 +3389,12 @@ FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t 
     n[0] = sg * h->n[0]; n[1] = sg * h->n[1]; n[2] = sg * h->n[2];
 }
 
-FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
-                             fovpt_rng *rng, float L[3], fovpt_stats *st, fovpt__attr *at)
+FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                             const float dir[3], fovpt_rng *rng, float L[3], fovpt_stats *st,
+                             fovpt__attr *at)
 {
-    float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f, prev_p[3] = { 0.0f, 0.0f, 0.0f };
+    float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f,
+        prev_p[3] = { 0.0f, 0.0f, 0.0f };
     int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0;
     uint32_t bounce, k;
     fovpt_hit h;
@@ -3342,8 +3427,13 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                     fovpt__sub3(v, h.p, prev_p);
                     d2 = fov__dot(v, v);
                     cl = fov__absf(fov__dot(h.n, v)) / FOV__SQRT(d2);
-                    pl = cl > 0.0f ? fovpt__light_pick_pdf(s, p->light - 1u) * d2 / (s->light_area[p->light - 1u] * cl) : FLT_MAX;
-                    w = fov__finite(pl) ? prev_pdf * prev_pdf / (prev_pdf * prev_pdf + pl * pl) : 0.0f;
+                    pl = cl > 0.0f
+                             ? fovpt__light_pick_pdf(s, p->light - 1u) * d2 /
+                                   (s->light_area[p->light - 1u] * cl)
+                             : FLT_MAX;
+                    w = fov__finite(pl)
+                            ? prev_pdf * prev_pdf / (prev_pdf * prev_pdf + pl * pl)
+                            : 0.0f;
                 }
             }
             for (k = 0; k < 3; ++k) L[k] += beta[k] * m->emission[k] * w;
@@ -3372,7 +3462,8 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                         float pl = fovpt__light_pick_pdf(s, li) * d2 / (s->light_area[li] * cl);
                         float w = pl * pl / (pl * pl + pb * pb);
                         if (fov__finite(pl) && pl > 0.0f)
-                            for (k = 0; k < 3; ++k) L[k] += beta[k] * fcos[k] * lm->emission[k] * w / pl;
+                            for (k = 0; k < 3; ++k)
+                                L[k] += beta[k] * fcos[k] * lm->emission[k] * w / pl;
                     } else if (at) {
                         if (bounce == 0) at->psc++;
                         else if (bounce == 1 && sec) at->ssc++;
@@ -3397,8 +3488,8 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
 }
 
 /* ---- the Whitted-style tracer (Kim et al. 2021; choices in the doc block) --------------- */
-FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, const float org[3], const float dir[3],
-                                float L[3], fovpt_stats *st, fovpt__attr *at)
+FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, const float org[3],
+                                const float dir[3], float L[3], fovpt_stats *st, fovpt__attr *at)
 {
     int sec_done = 0;
     typedef struct { float o[3], d[3], w[3]; uint32_t depth; } branch;
@@ -3441,8 +3532,12 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
                     fovpt__madd3(y, lp->a, lp->r, cx);
                     g = FOV__PI * lp->r * lp->r / (dc * dc);
                 } else {
-                    if (lp->type == FOVPT_SHAPE_QUAD) { fovpt__madd3(y, lp->a, 0.5f, lp->b); fovpt__madd3(y, y, 0.5f, lp->c); }
-                    else { fovpt__madd3(y, lp->a, 1.0f / 3.0f, lp->b); fovpt__madd3(y, y, 1.0f / 3.0f, lp->c); }
+                    if (lp->type == FOVPT_SHAPE_QUAD) {
+                        fovpt__madd3(y, lp->a, 0.5f, lp->b); fovpt__madd3(y, y, 0.5f, lp->c);
+                    } else {
+                        fovpt__madd3(y, lp->a, 1.0f / 3.0f, lp->b);
+                        fovpt__madd3(y, y, 1.0f / 3.0f, lp->c);
+                    }
                     g = -1.0f;
                 }
                 fovpt__sub3(v, y, h.p);
@@ -3478,7 +3573,9 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
             float ci = fov__dot(h.n, wo), nn[3], n1, n2, cost, F;
             branch *nb;
             if (ci > 0.0f) { fovpt__copy3(nn, h.n); n1 = 1.0f; n2 = m->ior; }
-            else { nn[0] = -h.n[0]; nn[1] = -h.n[1]; nn[2] = -h.n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci; }
+            else {
+                nn[0] = -h.n[0]; nn[1] = -h.n[1]; nn[2] = -h.n[2]; n1 = m->ior; n2 = 1.0f; ci = -ci;
+            }
             F = fovpt__fresnel(ci, n1, n2, &cost);
             nb = &stack[sp++];
             fovpt__reflect(nn, wo, nb->d);
@@ -3499,20 +3596,21 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
     }
 }
 
-FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
-                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
-                                      fovpt__attr *at);
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c,
+                                       const float org[3], const float dir[3], fovpt_rng *rng,
+                                       float rgb[3], fovpt_stats *stats, fovpt__attr *at);
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
-                                    const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats)
+                                    const float dir[3], fovpt_rng *rng, float rgb[3],
+                                    fovpt_stats *stats)
 {
     uint64_t before = stats ? stats->bounce_rays + stats->shadow_rays : 0u;
     fov_result r = fovpt__radiance(s, c, org, dir, rng, rgb, stats, NULL);
     if (stats) stats->rays += stats->bounce_rays + stats->shadow_rays - before;
     return r;
 }
-FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c, const float org[3],
-                                      const float dir[3], fovpt_rng *rng, float rgb[3], fovpt_stats *stats,
-                                      fovpt__attr *at)
+FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config *c,
+                                       const float org[3], const float dir[3], fovpt_rng *rng,
+                                       float rgb[3], fovpt_stats *stats, fovpt__attr *at)
 {
     fovpt_stats local;
     fovpt_stats *st = stats ? stats : &local;
@@ -3581,14 +3679,16 @@ FOVPT__PRIV uint32_t fovpt__hist_slots(const fovpt_config *c)
     return (c->temporal.smooth ? c->temporal.n_tpi : 1u) + 1u;
 }
 
-FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam, size_t *bytes)
+FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camera *cam,
+                                        size_t *bytes)
 {
     uint64_t px, total = 0;
     uint32_t n;
     const fov_logger *lg = &c->logger;
     if (c->method >= (uint32_t)_FOVPT_METHOD_NUM)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "memory_size: config.method unknown");
-    if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE && c->method != FOVPT_METHOD_JIN)
+    if ((c->temporal.reuse || c->temporal.smooth) && c->method != FOVPT_METHOD_SELECTIVE &&
+        c->method != FOVPT_METHOD_JIN)
         FOVPT__FAIL(lg, FOV_ERR_UNSUPPORTED,
                     "config.temporal: reuse and smooth need method SELECTIVE or JIN");
     px = (uint64_t)cam->width * cam->height;
@@ -3601,7 +3701,8 @@ FOVPT__PRIV fov_result fovpt__ctx_bytes(const fovpt_config *c, const fovpt_camer
         fovpt_layers_cfg lay;
         fovpt__lay(c, &lay);
         for (n = 0; n < lay.count; ++n)
-            total += (fovpt__grid_cells(cam->width, cam->height, lay.layer[n].stride) * 16u + 15u) & ~(uint64_t)15u;
+            total += (fovpt__grid_cells(cam->width, cam->height, lay.layer[n].stride) * 16u + 15u) &
+                     ~(uint64_t)15u;
     }
     if (total > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "memory_size: context memory overflows size_t");
@@ -3620,7 +3721,8 @@ FOVPT__PRIV fov_result fovpt__cam_fail(const fov_logger *lg, fov_result e, const
     return fov__err3(lg, "fovpt", e, who, m, "", line);
 }
 
-FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam, size_t *bytes)
+FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
+                                       size_t *bytes)
 {
     fovpt_config c;
     float r[3], u[3], f[3], t4[4], o[3];
@@ -3638,13 +3740,14 @@ FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_came
 FOVPT__PRIV void fovpt__make_view(const fovpt_ctx *ctx, fovpt_view *v)
 {
     fovpt__copy3(v->pos, ctx->origin);
-    fovpt__copy3(v->right, ctx->right); fovpt__copy3(v->up, ctx->up); fovpt__copy3(v->fwd, ctx->fwd);
+    fovpt__copy3(v->right, ctx->right); fovpt__copy3(v->up, ctx->up);
+    fovpt__copy3(v->fwd, ctx->fwd);
     v->tan4[0] = ctx->tx0; v->tan4[1] = ctx->tx1; v->tan4[2] = ctx->ty0; v->tan4[3] = ctx->ty1;
 }
 /* The pixel of a view that sees world point p (0 when behind or off the image); its
    distance from the view's pinhole in *dist. */
-FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, const float p[3], uint32_t *px, uint32_t *py,
-                               float *dist)
+FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, const float p[3],
+                               uint32_t *px, uint32_t *py, float *dist)
 {
     float d[3], z, sx, sy, x, y;
     fovpt__sub3(d, p, v->pos);
@@ -3670,8 +3773,8 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
     fovpt_layers_cfg *L = &ctx->lay;
     fov_result e;
     uint32_t n;
-    int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f || d.pixel_pitch_mm < 0.0f ||
-                d.distance_mm > 0.0f || d.distance_mm < 0.0f;
+    int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f ||
+                d.pixel_pitch_mm < 0.0f || d.distance_mm > 0.0f || d.distance_mm < 0.0f;
     if (!given) {
         /* the camera frustum: f = H / (ty0 - ty1); the axis at the image point of tangent 0 */
         float fpx = (float)cam->height / (ctx->ty0 - ctx->ty1);
@@ -3682,8 +3785,10 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
     e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
     if (e != FOV_OK) return e;
     if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
-        float gxf = fov__clampf(FOV__FLOOR(ctx->gaze.x), -1e9f, 1e9f), gyf = fov__clampf(FOV__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
-        int32_t gx = (int32_t)gxf, gy = (int32_t)gyf; /* 32-bit: no 64-bit division helpers on MCUs */
+        float gxf = fov__clampf(FOV__FLOOR(ctx->gaze.x), -1e9f, 1e9f),
+            gyf = fov__clampf(FOV__FLOOR(ctx->gaze.y), -1e9f, 1e9f);
+        /* 32-bit: no 64-bit division helpers on MCUs */
+        int32_t gx = (int32_t)gxf, gy = (int32_t)gyf;
         float r0 = L->layer[0].radius_deg, to_deg = 1.0f / (ctx->ecc.f_px * FOV__DEG);
         if (ctx->cfg.method == FOVPT_METHOD_ZONES) /* overlap_px at the gaze, in degrees */
             L->blend_deg = ctx->cfg.zones.overlap_px / fov__maxf(fovpt_ecc_ppd(&ctx->ecc), 1e-6f);
@@ -3778,7 +3883,8 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
         uint32_t n;
         for (n = 0; n < ctx->lay.count; ++n) {
             ctx->layer_buf[n] = (float *)(void *)p;
-            p += fov__align((size_t)fovpt__grid_cells(cam->width, cam->height, ctx->lay.layer[n].stride) * 16u);
+            p += fov__align((size_t)fovpt__grid_cells(cam->width, cam->height,
+                                                      ctx->lay.layer[n].stride) * 16u);
         }
     }
     return fovpt_reset(ctx);
@@ -3793,7 +3899,8 @@ FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)
     for (n = 0; n < FOVPT_MAX_LAYERS; ++n)
         if (ctx->layer_buf[n])
             FOV_MEMSET(ctx->layer_buf[n], 0,
-                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height, ctx->lay.layer[n].stride) * 16u);
+                       (size_t)fovpt__grid_cells(ctx->cam.width, ctx->cam.height,
+                                                 ctx->lay.layer[n].stride) * 16u);
     return FOV_OK;
 }
 
@@ -3818,8 +3925,9 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
     {
         uint32_t k;
         for (k = 0; k < 3; ++k)
-            if (old.pos[k] < cam->pos[k] || old.pos[k] > cam->pos[k] || old.target[k] < cam->target[k] ||
-                old.target[k] > cam->target[k] || old.up[k] < cam->up[k] || old.up[k] > cam->up[k])
+            if (old.pos[k] < cam->pos[k] || old.pos[k] > cam->pos[k] ||
+                old.target[k] < cam->target[k] || old.target[k] > cam->target[k] ||
+                old.up[k] < cam->up[k] || old.up[k] > cam->up[k])
                 moved = 1;
         if (old.eye_offset < cam->eye_offset || old.eye_offset > cam->eye_offset) moved = 1;
         if (t4[0] < ctx->tx0 || t4[0] > ctx->tx0 || t4[2] < ctx->ty0 || t4[2] > ctx->ty0 ||
@@ -3827,7 +3935,8 @@ FOVPT_API fov_result fovpt_set_view(fovpt_ctx *ctx, const fovpt_camera *cam, fov
             moved = 1;
         /* LAYERS: the lattices move with the gaze */
         if (ctx->cfg.method != FOVPT_METHOD_UNIFORM &&
-            (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y || gaze.y > ctx->gaze.y))
+            (gaze.x < ctx->gaze.x || gaze.x > ctx->gaze.x || gaze.y < ctx->gaze.y ||
+             gaze.y > ctx->gaze.y))
             moved = 1;
     }
     {
@@ -3879,7 +3988,8 @@ FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
     s->rays = s->camera_rays + s->bounce_rays + s->shadow_rays;
     if (!d) return;
     d->samples += s->samples; d->rays += s->rays; d->camera_rays += s->camera_rays;
-    d->bounce_rays += s->bounce_rays; d->shadow_rays += s->shadow_rays; d->bad_samples += s->bad_samples;
+    d->bounce_rays += s->bounce_rays; d->shadow_rays += s->shadow_rays;
+    d->bad_samples += s->bad_samples;
     for (n = 0; n < FOVPT_MAX_LAYERS; ++n) {
         d->layer_targets[n] += s->layer_targets[n];
         d->layer_samples[n] += s->layer_samples[n];
@@ -3892,8 +4002,8 @@ FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
 }
 
 /* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
-FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp, uint32_t sample0,
-                              float sum[3], fovpt_stats *st)
+FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp,
+                              uint32_t sample0, float sum[3], fovpt_stats *st)
 {
     uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
     float t4[4];
@@ -3921,7 +4031,8 @@ FOVPT__PRIV void fovpt__store(float *acc, const float sum[3], uint32_t spp, uint
     }
 }
 
-FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
+FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
+                                      fovpt_stats *stats)
 {
     fovpt_stats st;
     uint32_t x, y, n, W, H;
@@ -3937,7 +4048,8 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
             for (x = 0; x < W; ++x) {
                 float sum[3];
                 fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &st);
-                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp, ctx->cfg.accumulate);
+                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp,
+                             ctx->cfg.accumulate);
             }
     } else if (ctx->pre) {
         /* SELECTIVE, JIN step 1 (Kim et al. 2021, Fig. 4 A-3): one ray through each pixel centre,
@@ -3951,14 +4063,16 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 fovpt_rng rng;
                 float dir[3];
                 fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
-                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
+                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
+                               (float)y + 0.5f, dir);
                 st.camera_rays++;
                 st.samples++;
                 (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, P->col, &st,
                                       &at);
                 P->poid = at.poid; P->soid = at.soid;
                 fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
-                P->sc = (at.psc > 65535u ? 65535u : at.psc) | ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
+                P->sc = (at.psc > 65535u ? 65535u : at.psc) |
+                        ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
                 P->t = at.pt;
             }
     } else {
@@ -3994,17 +4108,20 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
 /* ---- SELECTIVE and JIN: subpixel inspection and multisampling (Kim et al. 2021, Sec. 4.6) */
 /* Step 1 of the two-step test: the threshold of the most sensitive discordant attribute
    (Table 1), else tau_col. tau[]: col, poid, psn, psc, pte, soid, ssn, ssc, ste. */
-FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre *P, const fovpt__pre *const Q[3], float cos_tol)
+FOVPT__PRIV float fovpt__tau_sel(const fovpt_selective_cfg *sc, const fovpt__pre *P,
+                                 const fovpt__pre *const Q[3], float cos_tol)
 {
     float m = FLT_MAX;
     uint32_t k;
     for (k = 0; k < 3; ++k) {
         const fovpt__pre *q = Q[k];
         if (P->poid != q->poid) m = fov__minf(m, sc->tau[1]);
-        else if (P->poid != FOVPT_PRIM_NONE && fov__dot(P->pn, q->pn) < cos_tol) m = fov__minf(m, sc->tau[2]);
+        else if (P->poid != FOVPT_PRIM_NONE && fov__dot(P->pn, q->pn) < cos_tol)
+            m = fov__minf(m, sc->tau[2]);
         if ((P->sc & 0xFFFFu) != (q->sc & 0xFFFFu)) m = fov__minf(m, sc->tau[3]);
         if (P->soid != q->soid) m = fov__minf(m, sc->tau[5]);
-        else if (P->soid != FOVPT_PRIM_NONE && fov__dot(P->sn, q->sn) < cos_tol) m = fov__minf(m, sc->tau[6]);
+        else if (P->soid != FOVPT_PRIM_NONE && fov__dot(P->sn, q->sn) < cos_tol)
+            m = fov__minf(m, sc->tau[6]);
         if ((P->sc >> 16) != (q->sc >> 16)) m = fov__minf(m, sc->tau[7]);
         /* texture flags (pte, ste): no textures, never discordant */
     }
@@ -4018,7 +4135,9 @@ FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3
     uint32_t c, k;
     for (c = 0; c < 3; ++c) {
         float mx = P->col[c], mn = P->col[c];
-        for (k = 0; k < 3; ++k) { mx = fov__maxf(mx, Q[k]->col[c]); mn = fov__minf(mn, Q[k]->col[c]); }
+        for (k = 0; k < 3; ++k) {
+            mx = fov__maxf(mx, Q[k]->col[c]); mn = fov__minf(mn, Q[k]->col[c]);
+        }
         if (mx + mn > 0.0f && (mx - mn) > tau * kc[c] * (mx + mn)) return 1;
     }
     return 0;
@@ -4026,9 +4145,11 @@ FOVPT__PRIV int fovpt__contrast(const fovpt__pre *P, const fovpt__pre *const Q[3
 
 /* Kim et al. 2021, step 2 (Sec. 4.4): temporal pixel reuse test (conditions 1-5, see the doc
    block); on success the previous frame's colour in rgb and the reuse count in cur[7]. */
-FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const fovpt__pre *P, float rgb[3], float *cur)
+FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const fovpt__pre *P,
+                             float rgb[3], float *cur)
 {
-    uint32_t W = ctx->cam.width, H = ctx->cam.height, prev = (ctx->hist_cur + ctx->hist_slots - 1u) % ctx->hist_slots, qx, qy;
+    uint32_t W = ctx->cam.width, H = ctx->cam.height,
+        prev = (ctx->hist_cur + ctx->hist_slots - 1u) % ctx->hist_slots, qx, qy;
     float dir[3], v[3], dist, t4[4], con;
     const float *q;
     const fovpt_temporal_cfg *tc = &ctx->cfg.temporal;
@@ -4053,7 +4174,8 @@ FOVPT__PRIV int fovpt__reuse(const fovpt_ctx *ctx, uint32_t x, uint32_t y, const
     return 1;
 }
 
-FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1, fovpt_stats *stats)
+FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
+                                       fovpt_stats *stats)
 {
     fovpt_stats st;
     uint32_t x, y, W, H, q;
@@ -4075,23 +4197,28 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
             const fovpt__pre *P = pre + ((size_t)y * W + x);
-            float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), tf = 1.0f, pix[3] = { 0.0f, 0.0f, 0.0f };
+            float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), tf = 1.0f,
+                pix[3] = { 0.0f, 0.0f, 0.0f };
             uint32_t zone = 0, nsd = 4, mx, my;
-            float *cur = ctx->hist_slots ? ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x) : NULL;
+            float *cur =
+                ctx->hist_slots ? ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x) : NULL;
             if (cur) { /* the current frame's history record */
                 fovpt__copy3(cur + 4, P->col);
                 cur[3] = P->t;
                 cur[7] = 0.0f;
             }
             if (!jin) {
-                zone = e <= sc->e_deg[0] ? 0u : e <= sc->e_deg[1] ? 1u : e <= sc->e_deg[2] ? 2u : e <= sc->e_deg[3] ? 3u : 4u;
+                zone = e <= sc->e_deg[0] ? 0u : e <= sc->e_deg[1] ? 1u
+                     : e <= sc->e_deg[2] ? 2u : e <= sc->e_deg[3] ? 3u : 4u;
                 if (zone == 4u) { /* peripheral pixel region: the presample alone */
-                    fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), P->col, 1u, ctx->cfg.accumulate);
+                    fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), P->col, 1u,
+                                 ctx->cfg.accumulate);
                     if (cur) fovpt__copy3(cur, P->col);
                     continue;
                 }
             }
-            if (cur && ctx->cfg.temporal.reuse && ctx->hist_valid > 0 && fovpt__reuse(ctx, x, y, P, pix, cur)) {
+            if (cur && ctx->cfg.temporal.reuse && ctx->hist_valid > 0 &&
+                fovpt__reuse(ctx, x, y, P, pix, cur)) {
                 fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), pix, 1u, ctx->cfg.accumulate);
                 fovpt__copy3(cur, pix);
                 st.reused++;
@@ -4123,7 +4250,8 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                         fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 1u + q * 4096u + s2, frame);
                         u = ((float)(s2 % mx) + fovpt_rng_next(&rng)) / (float)mx;
                         v = ((float)(s2 / mx) + fovpt_rng_next(&rng)) / (float)my;
-                        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f * (float)(q & 1u) + 0.5f * u,
+                        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H,
+                                       (float)x + 0.5f * (float)(q & 1u) + 0.5f * u,
                                        (float)y + 0.5f * (float)(q >> 1) + 0.5f * v, dir);
                         st.camera_rays++;
                         (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb,
@@ -4138,7 +4266,8 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                     fovpt__copy3(sub, P->col); /* Jin et al.: the pixel-centre colour */
                 } else { /* Kim et al. 2021, Fig. 2: bilinear from the 4 pixel centres */
                     for (k = 0; k < 3; ++k)
-                        sub[k] = 0.5625f * P->col[k] + 0.1875f * (Q[0]->col[k] + Q[1]->col[k]) + 0.0625f * Q[2]->col[k];
+                        sub[k] = 0.5625f * P->col[k] + 0.1875f * (Q[0]->col[k] + Q[1]->col[k]) +
+                            0.0625f * Q[2]->col[k];
                 }
                 for (k = 0; k < 3; ++k) pix[k] += 0.25f * sub[k];
             }
@@ -4170,10 +4299,12 @@ FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
 /* ZONES: Lanczos upsampling (Polychronakis 2025, Sec. 4.2) of lattice n at lattice position
    (kx + fx, ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
    untraced taps dropped (weights renormalised); 0 when nothing is traced nearby. */
-FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky, float fx, float fy, float c[3])
+FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky,
+                                     float fx, float fy, float c[3])
 {
     const float *buf = ctx->layer_buf[n];
-    int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n], ny = (int32_t)ctx->layer_ny[n];
+    int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n],
+        ny = (int32_t)ctx->layer_ny[n];
     float acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f, wx[6], wy[6];
     for (i = 0; i < 2 * a; ++i) {
         wx[i] = fovpt__lanczos_w(fx - (float)(i - a + 1), (float)a);
@@ -4196,20 +4327,23 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
         }
     }
     if (!(ws > 0.05f)) return 0;
-    c[0] = fov__maxf(acc[0] / ws, 0.0f); c[1] = fov__maxf(acc[1] / ws, 0.0f); c[2] = fov__maxf(acc[2] / ws, 0.0f);
+    c[0] = fov__maxf(acc[0] / ws, 0.0f); c[1] = fov__maxf(acc[1] / ws, 0.0f);
+    c[2] = fov__maxf(acc[2] / ws, 0.0f);
     return 1;
 }
 
 /* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (Axblad 2020,
    Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when
    unavailable. */
-FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y, float c[3])
+FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y,
+                                   float c[3])
 {
     const float *buf = ctx->layer_buf[n];
     uint32_t d = ctx->lay.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n];
     int32_t kx, ky, i, j, ok = 1;
     float fx, fy, wx[4], wy[4], acc[3] = { 0.0f, 0.0f, 0.0f };
-    int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n], ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
+    int32_t rx = (int32_t)x - (int32_t)ctx->layer_ox[n],
+        ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
     if (nx == 0 || ny == 0) return 0;   /* no lattice point (never, see fovpt__ctx_view) */
     kx = rx >= 0 ? rx / (int32_t)d : -(((-rx) + (int32_t)d - 1) / (int32_t)d);
     ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
@@ -4273,7 +4407,8 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
     const float *cur = ctx->hist[ctx->hist_cur] + 8u * ((size_t)y * W + x);
     float a, w, ws, acc[3], dir[3], v[3], t4[4];
     if (!(cur[3] > 0.0f) || ctx->hist_valid == 0) return; /* no first hit: nothing to follow */
-    a = fovpt_alpha(&ctx->cfg.temporal, &ctx->cfg.selective, fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f));
+    a = fovpt_alpha(&ctx->cfg.temporal, &ctx->cfg.selective,
+                    fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f));
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f, (float)y + 0.5f, dir);
     fovpt__madd3(v, ctx->origin, cur[3], dir);
@@ -4287,14 +4422,16 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
         w *= 1.0f - a;
         if (!fovpt__project(&ctx->hist_view[slot], W, H, v, &qx, &qy, &dist)) continue;
         q = ctx->hist[slot] + 8u * ((size_t)qy * W + qx);
-        if (!(q[3] > 0.0f) || !(fov__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3])) continue;
+        if (!(q[3] > 0.0f) || !(fov__absf(dist - q[3]) <= ctx->cfg.temporal.eps_depth * q[3]))
+            continue;
         for (k = 0; k < 3; ++k) acc[k] += w * q[k];
         ws += w;
     }
     for (k = 0; k < 3; ++k) c[k] = acc[k] / ws;
 }
 
-FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1, const fovpt_output *out)
+FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1,
+                                        const fovpt_output *out)
 {
     uint32_t x, y, k, W;
     if (!ctx) return FOV_ERR_NULL;
@@ -4306,7 +4443,8 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
     if (y0 > y1 || y1 > ctx->cam.height)
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
                     "resolve_rows: needs y0 <= y1 <= height");
-    if ((out->rgb_stride && out->rgb_stride < 3u * W) || (out->rgb8_stride && out->rgb8_stride < 3u * W))
+    if ((out->rgb_stride && out->rgb_stride < 3u * W) ||
+        (out->rgb8_stride && out->rgb8_stride < 3u * W))
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
                     "resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
     for (y = y0; y < y1; ++y) {
@@ -4329,7 +4467,8 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                            has a value (the background layer covers every pixel) */
                         uint32_t m;
                         int got = 0;
-                        for (m = top + 1u; m < L->count && !got; ++m) got = fovpt__layer_value(ctx, m, x, y, c);
+                        for (m = top + 1u; m < L->count && !got; ++m)
+                            got = fovpt__layer_value(ctx, m, x, y, c);
                         if (!got) c[0] = c[1] = c[2] = 0.0f;
                     }
                     for (n = top + 1u; n < L->count; ++n) {
@@ -4340,11 +4479,13 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                 }
             }
             if (out->rgb) {
-                float *o = out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
+                float *o =
+                    out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
                 o[0] = c[0]; o[1] = c[1]; o[2] = c[2];
             }
             if (out->rgb8) {
-                uint8_t *o = out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
+                uint8_t *o =
+                    out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
                 o[0] = fovpt__srgb8(c[0]); o[1] = fovpt__srgb8(c[1]); o[2] = fovpt__srgb8(c[2]);
             }
         }
@@ -4352,7 +4493,8 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
     return FOV_OK;
 }
 
-FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out, fovpt_stats *stats)
+FOVPT_API fov_result fovpt_render(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
+                                  fovpt_stats *stats)
 {
     fov_result e;
     if (!ctx) return FOV_ERR_NULL;
@@ -4395,7 +4537,8 @@ FOVPT_API void fovpt_catmull_rom(float t, float w[4])
 }
 
 /* y of a quadratic Bezier (x0,y0) (x1,y1) (x2,y2) at x = e, x monotone on [0, 1]. */
-FOVPT__PRIV float fovpt__bezier_y(float x0, float y0, float x1, float y1, float x2, float y2, float e)
+FOVPT__PRIV float fovpt__bezier_y(float x0, float y0, float x1, float y1, float x2, float y2,
+                                  float e)
 {
     float A = x0 - 2.0f * x1 + x2, B = 2.0f * (x1 - x0), C = x0 - e, t, u;
     if (fov__absf(A) <= 1e-6f * (fov__absf(B) + 1e-30f)) {
@@ -4418,8 +4561,8 @@ FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *s, float e, float 
     *out = 0.0f;
     t0 = s->tau_shape[0]; tf = s->tau_shape[1]; tp = s->tau_shape[2]; tn = s->tau_shape[3];
     ef = s->e_deg[0]; enp = s->e_deg[3];
-    if (!fov__finite(e) || !fov__finite(t0) || !fov__finite(tf) || !fov__finite(tp) || !fov__finite(tn) ||
-        !fov__finite(ef) || !fov__finite(enp))
+    if (!fov__finite(e) || !fov__finite(t0) || !fov__finite(tf) || !fov__finite(tp) ||
+        !fov__finite(tn) || !fov__finite(ef) || !fov__finite(enp))
         return FOV_ERR_NOT_FINITE;
     if (!(ef > 0.0f && enp > ef && t0 > 0.0f && tf > 0.0f && tn > 0.0f && tp > 0.0f) ||
         tp < (tf - t0) / ef || tp < (tn - tf) / (enp - ef))

@@ -2000,7 +2000,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
                          "config.ipr_tile: FIPR needs a multiple of 4, cells in FOVSDF_FOV_CELLS");
         if (c.method == FOVSDF_METHOD_CONE_FOV && c.cone_tile < 4)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cone_tile: CONE_FOV needs >= 4");
-        if (c.method == FOVSDF_METHOD_CONE_FOV && fovsdf__fov_cells(c.cone_tile, 1, 1) > FOVSDF_FOV_CELLS)
+        if (c.method == FOVSDF_METHOD_CONE_FOV &&
+            fovsdf__fov_cells(c.cone_tile, 1, 1) > FOVSDF_FOV_CELLS)
             FOVSDF__FAIL(lg, FOV_ERR_LIMIT,
                          "config.cone_tile: CONE_FOV cells above FOVSDF_FOV_CELLS");
     }
@@ -2154,19 +2155,26 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
                     "beyond 1e18 in magnitude (the float envelope of scene lengths)");
     }
     switch (t) {
-    case FOVSDF_NODE_SPHERE: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be > 0"); break;
+    case FOVSDF_NODE_SPHERE:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be > 0");
+        break;
     case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: case FOVSDF_NODE_BOX_FRAME:
-        for (k = 0; k < 3u; ++k) FOVSDF__NCK(f[k] > 0.0f, FOV_ERR_INVALID_ARG, (int)k, "half extent must be > 0");
+        for (k = 0; k < 3u; ++k)
+            FOVSDF__NCK(f[k] > 0.0f, FOV_ERR_INVALID_ARG, (int)k, "half extent must be > 0");
         if (t == FOVSDF_NODE_ROUND_BOX)
-            FOVSDF__NCK(f[3] >= 0.0f && f[3] <= f[0] && f[3] <= f[1] && f[3] <= f[2], FOV_ERR_INVALID_ARG, 3,
+            FOVSDF__NCK(f[3] >= 0.0f && f[3] <= f[0] && f[3] <= f[1] && f[3] <= f[2],
+                        FOV_ERR_INVALID_ARG, 3,
                         "rounding radius must be in [0, the smallest half extent]");
-        if (t == FOVSDF_NODE_BOX_FRAME) FOVSDF__NCK(f[3] > 0.0f, FOV_ERR_INVALID_ARG, 3, "frame thickness must be > 0");
+        if (t == FOVSDF_NODE_BOX_FRAME)
+            FOVSDF__NCK(f[3] > 0.0f, FOV_ERR_INVALID_ARG, 3, "frame thickness must be > 0");
         break;
     case FOVSDF_NODE_TORUS:
         FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "major radius must be >= 0");
         FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "minor radius must be > 0");
         break;
-    case FOVSDF_NODE_CAPSULE: FOVSDF__NCK(f[6] > 0.0f, FOV_ERR_INVALID_ARG, 6, "radius must be > 0"); break;
+    case FOVSDF_NODE_CAPSULE:
+        FOVSDF__NCK(f[6] > 0.0f, FOV_ERR_INVALID_ARG, 6, "radius must be > 0");
+        break;
     case FOVSDF_NODE_CYLINDER:
         FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half height must be > 0");
         FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "radius must be > 0");
@@ -2175,7 +2183,8 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
         FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half height must be > 0");
         FOVSDF__NCK(f[1] >= 0.0f, FOV_ERR_INVALID_ARG, 1, "bottom radius must be >= 0");
         FOVSDF__NCK(f[2] >= 0.0f, FOV_ERR_INVALID_ARG, 2, "top radius must be >= 0");
-        FOVSDF__NCK(f[1] > 0.0f || f[2] > 0.0f, FOV_ERR_INVALID_ARG, 1, "bottom or top radius must be > 0");
+        FOVSDF__NCK(f[1] > 0.0f || f[2] > 0.0f, FOV_ERR_INVALID_ARG, 1,
+                    "bottom or top radius must be > 0");
         break;
     case FOVSDF_NODE_PLANE:
         FOVSDF__NCK(!(fov__is0(f[0]) && fov__is0(f[1]) && fov__is0(f[2])), FOV_ERR_DEGENERATE, 0,
@@ -2183,20 +2192,25 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
         break;
     case FOVSDF_NODE_MENGER:
         FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "half size must be > 0");
-        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 8, FOV_ERR_INVALID_ARG, -1, "i0 iterations must be 1 .. 8");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 8, FOV_ERR_INVALID_ARG, -1,
+                    "i0 iterations must be 1 .. 8");
         break;
     case FOVSDF_NODE_MANDELBULB:
-        FOVSDF__NCK(f[0] >= 2.0f && f[0] <= 16.0f, FOV_ERR_INVALID_ARG, 0, "power must be in [2, 16]");
-        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 32, FOV_ERR_INVALID_ARG, -1, "i0 iterations must be 1 .. 32");
+        FOVSDF__NCK(f[0] >= 2.0f && f[0] <= 16.0f, FOV_ERR_INVALID_ARG, 0,
+                    "power must be in [2, 16]");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 32, FOV_ERR_INVALID_ARG, -1,
+                    "i0 iterations must be 1 .. 32");
         break;
     case FOVSDF_NODE_TERRAIN:
         FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "amplitude must be >= 0");
         FOVSDF__NCK(f[1] > 0.0f, FOV_ERR_INVALID_ARG, 1, "frequency must be > 0");
         FOVSDF__NCK(f[2] > 0.0f && f[2] <= 1.0f, FOV_ERR_INVALID_ARG, 2,
-                    "distance scale must be in (0, 1] (fovsdf_terrain sets it from the slope bound)");
-        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 12, FOV_ERR_INVALID_ARG, -1, "i0 octaves must be 1 .. 12");
+            "distance scale must be in (0, 1] (fovsdf_terrain sets it from the slope bound)");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 12, FOV_ERR_INVALID_ARG, -1,
+                    "i0 octaves must be 1 .. 12");
         break;
-    case FOVSDF_NODE_SMOOTH_UNION: case FOVSDF_NODE_SMOOTH_SUBTRACT: case FOVSDF_NODE_SMOOTH_INTERSECT:
+    case FOVSDF_NODE_SMOOTH_UNION: case FOVSDF_NODE_SMOOTH_SUBTRACT:
+    case FOVSDF_NODE_SMOOTH_INTERSECT:
         FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "blend radius k must be > 0");
         break;
     case FOVSDF_NODE_ROTATE: {
@@ -2210,19 +2224,27 @@ FOVSDF__PRIV fov_result fovsdf__node_check(const fovsdf_node *n, uint32_t index,
             }
         break;
     }
-    case FOVSDF_NODE_SCALE: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "scale must be > 0"); break;
+    case FOVSDF_NODE_SCALE:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "scale must be > 0");
+        break;
     case FOVSDF_NODE_REPEAT:
         for (k = 0; k < 3u; ++k) {
-            FOVSDF__NCK(f[k] >= 0.0f, FOV_ERR_INVALID_ARG, (int)k, "period must be >= 0 (0: no repetition)");
+            FOVSDF__NCK(f[k] >= 0.0f, FOV_ERR_INVALID_ARG, (int)k,
+                        "period must be >= 0 (0: no repetition)");
             FOVSDF__NCK(n->i[k] >= 0 && n->i[k] <= 1000000, FOV_ERR_INVALID_ARG, -1,
                         "i0..i2 copies each side must be 0 .. 1000000 (0: infinite)");
         }
         break;
     case FOVSDF_NODE_MIRROR:
-        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 7, FOV_ERR_INVALID_ARG, -1, "i0 axis mask must be 1 .. 7");
+        FOVSDF__NCK(n->i[0] >= 1 && n->i[0] <= 7, FOV_ERR_INVALID_ARG, -1,
+                    "i0 axis mask must be 1 .. 7");
         break;
-    case FOVSDF_NODE_ROUND: FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be >= 0"); break;
-    case FOVSDF_NODE_ONION: FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "thickness must be > 0"); break;
+    case FOVSDF_NODE_ROUND:
+        FOVSDF__NCK(f[0] >= 0.0f, FOV_ERR_INVALID_ARG, 0, "radius must be >= 0");
+        break;
+    case FOVSDF_NODE_ONION:
+        FOVSDF__NCK(f[0] > 0.0f, FOV_ERR_INVALID_ARG, 0, "thickness must be > 0");
+        break;
     default: break; /* union, subtract, intersect, translate: children and lengths only */
     }
     return FOV_OK;
@@ -2394,8 +2416,10 @@ FOVSDF_API int32_t fovsdf_rotate(fovsdf_builder *b, int32_t x, float ax, float a
     float a[3], f[9], c, s, t;
     a[0] = ax; a[1] = ay; a[2] = az;
     if (!fov__finite3(a) || !fov__finite(angle_deg))
-        return FOVSDF__BAD(b, FOV_ERR_NOT_FINITE, "builder: rotate axis or angle is NaN or infinite");
-    if (!(fovsdf__normalize(a) > 0.0f)) return FOVSDF__BAD(b, FOV_ERR_DEGENERATE, "builder: rotate axis is zero");
+        return FOVSDF__BAD(b, FOV_ERR_NOT_FINITE,
+                           "builder: rotate axis or angle is NaN or infinite");
+    if (!(fovsdf__normalize(a) > 0.0f))
+        return FOVSDF__BAD(b, FOV_ERR_DEGENERATE, "builder: rotate axis is zero");
     c = FOV__COS(angle_deg * FOV__DEG);
     s = FOV__SIN(angle_deg * FOV__DEG);
     t = 1.0f - c;
@@ -3703,11 +3727,15 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
         mp->eps_cone < 0.0f || !(mp->eps > 0.0f || mp->eps_cone > 0.0f) || !(mp->t_max > 0.0f) ||
         t_start < 0.0f || scene->lipschitz < 0.0f)
         return FOV_ERR_INVALID_ARG;
-    if (!fovsdf__coord_ok(ro)) return FOV_ERR_INVALID_ARG; /* beyond 1e18: float cannot resolve it (NUMERICS) */
+    /* beyond 1e18: float cannot resolve it (NUMERICS) */
+    if (!fovsdf__coord_ok(ro)) return FOV_ERR_INVALID_ARG;
     if (mp->max_steps > FOVSDF_MAX_STEPS) return FOV_ERR_LIMIT;
-    if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f)) return FOV_ERR_INVALID_ARG;
-    if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f)) return FOV_ERR_INVALID_ARG;
-    if (mp->method == FOVSDF_METHOD_BV2018 && !(mp->bv_relax > 0.0f && mp->bv_relax <= 1.0f)) return FOV_ERR_INVALID_ARG;
+    if (mp->method == FOVSDF_METHOD_RELAXED && !(mp->omega >= 1.0f && mp->omega < 2.0f))
+        return FOV_ERR_INVALID_ARG;
+    if (mp->method == FOVSDF_METHOD_AUTORELAXED && !(mp->ar_beta > 0.0f && mp->ar_beta <= 1.0f))
+        return FOV_ERR_INVALID_ARG;
+    if (mp->method == FOVSDF_METHOD_BV2018 && !(mp->bv_relax > 0.0f && mp->bv_relax <= 1.0f))
+        return FOV_ERR_INVALID_ARG;
     l = fov__len(rd);
     if (!(l > 0.999f && l < 1.001f)) return FOV_ERR_INVALID_ARG;
     m.sc = scene;
@@ -3945,7 +3973,8 @@ FOVSDF_API float fovsdf_u01(uint32_t seed, uint32_t x, uint32_t y, uint32_t fram
     return (float)(h >> 8) * (1.0f / 16777216.0f); /* 24 bits: exact in float */
 }
 
-FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam, size_t *bytes)
+FOVSDF_API fov_result fovsdf_memory_size(const fovsdf_config *cfg, const fovsdf_camera *cam,
+                                         size_t *bytes)
 {
     fovsdf_config c;
     fov_result r;
@@ -4017,8 +4046,9 @@ FOVSDF__PRIV fov_result fovsdf__scene_check(const fovsdf_scene *s, const fov_log
     return FOV_OK;
 }
 
-FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, const fovsdf_scene *scene,
-                                  const fovsdf_camera *cam, fov_gaze gaze, void *mem, size_t mem_size)
+FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
+                                  const fovsdf_scene *scene, const fovsdf_camera *cam,
+                                  fov_gaze gaze, void *mem, size_t mem_size)
 {
     fovsdf_config c;
     const fov_logger *lg = cfg ? &cfg->logger : 0;
@@ -4042,7 +4072,8 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg, con
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.width and cam.height must be >= 1");
     if (cam->width > FOVSDF_MAX_DIM || cam->height > FOVSDF_MAX_DIM)
         FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "init: cam.width or cam.height above FOVSDF_MAX_DIM");
-    if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) || !fov__finite(gaze.x) || !fov__finite(gaze.y))
+    if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) || !fov__finite(gaze.x) ||
+        !fov__finite(gaze.y))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE,
                      "init: cam.fov_y_deg, cam.eye_offset or gaze NaN or infinite");
     if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
@@ -4114,7 +4145,8 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
     {
         /* a point so far off the image that u or v overflowed: the same direction from the
            offset scaled down by its largest component (px / width cannot overflow) */
-        float a = px / (float)c->cam.width - 0.5f, b = 0.5f - py / (float)c->cam.height, k, f = 1.0f;
+        float a = px / (float)c->cam.width - 0.5f, b = 0.5f - py / (float)c->cam.height, k,
+            f = 1.0f;
         k = fov__maxf(fov__absf(a), fov__absf(b));
         if (k > 1.0f && fov__finite(k)) { a /= k; b /= k; f = 1.0f / k; }
         u = a * 2.0f * c->tan_half_y * c->aspect;
@@ -4128,7 +4160,8 @@ FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3
     return 0;
 }
 
-FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
+FOVSDF_API fov_result fovsdf_camera_ray(const fovsdf_ctx *c, float px, float py, float ro[3],
+                                        float rd[3])
 {
     if (!c) return FOV_ERR_NULL;
     if (!ro || !rd)
@@ -4537,7 +4570,8 @@ FOVSDF_API fov_result fovsdf_mask_blur(const float *rgb, uint32_t rgb_stride, co
     int32_t R, i, j, x, y;
     if (!rgb || !mask || !out) return FOV_ERR_NULL;
     if (!fov__finite(sigma)) return FOV_ERR_NOT_FINITE;
-    if (w == 0 || h == 0 || !(sigma >= 0.05f) || sigma > 8.0f || rgb == out) return FOV_ERR_INVALID_ARG;
+    if (w == 0 || h == 0 || !(sigma >= 0.05f) || sigma > 8.0f || rgb == out)
+        return FOV_ERR_INVALID_ARG;
     if (w > FOVSDF_MAX_DIM || h > FOVSDF_MAX_DIM) return FOV_ERR_LIMIT;
     if (rgb_stride == 0) rgb_stride = 3u * w;
     if (out_stride == 0) out_stride = 3u * w;
@@ -5223,8 +5257,8 @@ FOVSDF__PRIV void fovsdf__light(fovsdf_scene *s, uint32_t type, float x, float y
     L->shadow_k = k;
 }
 
-FOVSDF__PRIV void fovsdf__view(fovsdf_builtin *o, float px, float py, float pz, float tx, float ty, float tz,
-                               float fov, float t_max)
+FOVSDF__PRIV void fovsdf__view(fovsdf_builtin *o, float px, float py, float pz, float tx, float ty,
+                               float tz, float fov, float t_max)
 {
     fovsdf_camera_init(&o->camera, 640, 360);
     o->camera.pos[0] = px; o->camera.pos[1] = py; o->camera.pos[2] = pz;
@@ -5569,7 +5603,8 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
     uint32_t i;
     if (!scene || !ro || !rd || !t_hit || !kind) return FOV_ERR_NULL;
     if (!scene->dist_d) return FOV_ERR_UNSUPPORTED;
-    if (max_steps == 0 || !(eps > 0.0) || !(t_max > 0.0) || !(t_start >= 0.0)) return FOV_ERR_INVALID_ARG;
+    if (max_steps == 0 || !(eps > 0.0) || !(t_max > 0.0) || !(t_start >= 0.0))
+        return FOV_ERR_INVALID_ARG;
     *kind = FOVSDF_EXHAUSTED;
     for (i = 0; i < max_steps; ++i) {
         double p[3], d;
