@@ -17,9 +17,9 @@
 #     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
-# With T set, the suite block below runs twice: once to list the section names (run_section
-# and build_test only record), then for real; keep every command in it inside run_section,
-# build_test or three_builds.
+# The suite block below runs twice: once to list the sections and test programs (run_section
+# and build_test only record; the programs are then compiled JOBS at a time), then for real;
+# keep every command in it inside run_section, build_test or three_builds.
 set -u
 cd "$(dirname "$0")/.."
 mkdir -p build/logs build/tests
@@ -72,11 +72,21 @@ run_section() {
 }
 
 # build_test NAME SOURCE FLAGS...: compile a test program; a compile failure is a failure.
+# The listing pass records every build; they are then compiled JOBS at a time (default: the
+# number of CPUs) before the first section runs, and build_test reads each one's exit status.
+SEL_CMDS=()
 build_test() {
-    local name=$1 src=$2; shift 2
-    if [ -n "$SEL_LISTING" ]; then SEL_LAST_BUILD=$name; return 0; fi
+    local name=$1 src=$2 rc; shift 2
+    if [ -n "$SEL_LISTING" ]; then SEL_LAST_BUILD=$name; SEL_CMDS+=("$name $src $*"); return 0; fi
     if [ -n "$T" ] && [[ $SEL_BUILDS != *" $name "* ]]; then return 1; fi
-    if ! $CC "$src" -o "build/tests/$name" "$@" >"build/logs/build_$name.log" 2>&1; then
+    if [ -f "build/logs/build_$name.rc" ]; then
+        rc=$(cat "build/logs/build_$name.rc")
+        rm -f "build/logs/build_$name.rc"
+    else
+        $CC "$src" -o "build/tests/$name" "$@" >"build/logs/build_$name.log" 2>&1
+        rc=$?
+    fi
+    if [ "$rc" -ne 0 ]; then
         echo "FAIL [build] $name: compile error, see build/logs/build_$name.log"
         sed 's/^/    /' "build/logs/build_$name.log" | head -20
         TOTAL_F=$((TOTAL_F + 1))
@@ -84,6 +94,13 @@ build_test() {
     fi
     return 0
 }
+# prebuild_one NAME SOURCE FLAGS...: compile, leave the exit status in build/logs/build_NAME.rc
+prebuild_one() {
+    local name=$1 src=$2; shift 2
+    $CC "$src" -o "build/tests/$name" "$@" >"build/logs/build_$name.log" 2>&1
+    echo $? >"build/logs/build_$name.rc"
+}
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror -ffp-contract=off"
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
@@ -177,10 +194,10 @@ run_section cross_targets bash tests/xtarget/run.sh
 run_section cmake_consumers bash tests/cmake/run.sh
 }
 
+SEL_LISTING=1
+suite
+SEL_LISTING=
 if [ -n "$T" ]; then
-    SEL_LISTING=1
-    suite
-    SEL_LISTING=
     n=0
     for s in "${SEL_ALL[@]}"; do selected "$s" && n=$((n + 1)); done
     if [ "$n" -eq 0 ]; then
@@ -190,6 +207,18 @@ if [ -n "$T" ]; then
     fi
     echo "T=$T: $n of ${#SEL_ALL[@]} sections"
 fi
+# the test programs, JOBS compiles at a time (flags hold no quoted spaces: word splitting is safe)
+rm -f build/logs/build_*.rc
+nb=0
+for c in "${SEL_CMDS[@]}"; do
+    read -ra args <<<"$c"
+    if [ -n "$T" ] && [[ $SEL_BUILDS != *" ${args[0]} "* ]]; then continue; fi
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
+    prebuild_one "${args[@]}" &
+    nb=$((nb + 1))
+done
+wait
+echo "built $nb test programs in $(( $(date +%s) - T0 )) s ($JOBS at a time)"
 suite
 
 echo "suite took $(( $(date +%s) - T0 )) s"
