@@ -151,7 +151,7 @@ CONFIGURATION (define before including the implementation)
    FOVLP_MAX_DIM        hard cap on the screen width and height          (default 65536)
    FOVLP_MAX_LP_DIM     hard cap on the LP buffer width and height       (default 65536)
    FOVLP_MAX_SAMPLES    hard cap on the sample slots (LP + disc + 1)     (default 2^28)
-   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 

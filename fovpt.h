@@ -173,7 +173,7 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
-   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 

@@ -162,7 +162,7 @@ CONFIGURATION (define before including the implementation)
    FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
    FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
                         it references software-double routines on a single-precision FPU)
-   Shared by the three headers (the list is in the FOV_SHARED_BEGIN decl block below):
+   Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
 
@@ -357,8 +357,8 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   0.4.0 (2026-12-02) one block shared with fovlp.h and fovpt.h (tools/fov_shared.h, regions
-                      FOV_SHARED_BEGIN/END; private names fov__); error messages on by default,
+   0.4.0 (2026-12-02) one block shared with fovlp.h and fovpt.h (tools/fov_shared.h, marked
+                      regions; private names fov__); error messages on by default,
                       a specific one per failure (FOV_DEBUG no longer needed; msg "" under
                       FOV_NO_ERROR_STRINGS, never NULL); fovsdf_render_tile logs bad rows;
                       fov_camera shared: fovsdf_camera is a typedef of it (the same fields in

@@ -15,7 +15,7 @@ bad() { echo "FAIL $1"; F=$((F + 1)); }
 
 # This file matches its own patterns, so it is left out of the scan.
 PAT="seed ?0[0-9]{2}|seed0[0-9]|\bnotes? (seed|section|[0-9])|\bnotes'|notes/"
-PAT="$PAT|shared/seeds|shared/notes|seeds/|\bboth seeds\b|\bthe seed's"
+PAT="$PAT|shared/(seeds|notes)|seeds/|\bboth seeds\b|\bthe seed's"
 PAT="$PAT|(^|[ (;])00[0-4]([):,]|'s| (Eq|Table|Fig|sec|ch)\b)|\bas in 00[0-4]\b"
 
 # kind_of FILE: sets K to the kind of FILE (no subshell: this runs once per tracked file)

@@ -50,6 +50,16 @@ if compare .; then ok "the shared regions are byte-identical in fovsdf.h, fovlp.
 else bad "shared regions differ between headers"; fi
 if python3 tools/sync_shared.py --check; then ok "the headers' copies equal tools/fov_shared.h (sync_shared.py --check)"
 else bad "a header's copy differs from tools/fov_shared.h: run python3 tools/sync_shared.py"; fi
+# tools that know nothing but the two words: every line naming them is a marker line, and the
+# text from each line containing FOV_SHARED_BEGIN to the next containing FOV_SHARED_END is the
+# same in the three headers
+stray=$(grep -n 'FOV_SHARED_BEGIN\|FOV_SHARED_END' fovsdf.h fovlp.h fovpt.h | grep -v ':/\* ==== FOV_SHARED_')
+plain() { awk '/FOV_SHARED_BEGIN/{on=1} on{print} /FOV_SHARED_END/{on=0}' "$1" | cksum; }
+if [ -z "$stray" ] && [ "$(plain fovsdf.h)" = "$(plain fovlp.h)" ] && [ "$(plain fovsdf.h)" = "$(plain fovpt.h)" ]; then
+    ok "FOV_SHARED_BEGIN / FOV_SHARED_END appear only on marker lines; a plain scan sees equal blocks"
+else
+    bad "the marker words appear outside marker lines: ${stray:-a plain scan sees different blocks}"
+fi
 lines=$(for r in $(grep -oE '^/\* ==== FOV_SHARED_BEGIN [a-z_]+' fovsdf.h | awk '{print $4}'); do region fovsdf.h "$r"; done | wc -l)
 if [ "$lines" -ge 300 ]; then ok "shared regions hold $lines lines per header"; else bad "shared regions only $lines lines"; fi
 

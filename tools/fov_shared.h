@@ -1,7 +1,7 @@
 /* fov_shared.h - the code fovsdf.h, fovlp.h and fovpt.h share, in one place.
 
    Not a header to include: tools/sync_shared.py copies each region below (from its
-   FOV_SHARED_BEGIN line to its FOV_SHARED_END line) over the region of the same name in the
+   BEGIN marker line to its END marker line) over the region of the same name in the
    three headers, so the headers stay single files. tests/shared.sh checks that the three
    copies are byte-identical and equal to this file. Names: public fov_ / FOV_, private
    fov__ / FOV__. */
