@@ -245,6 +245,9 @@ static void fz_render(fz_in *in, const fovpt_scene *s, float scale)
     cfg.temporal.reuse = fz_pick(in, 2);
     cfg.temporal.smooth = fz_pick(in, 2);
     if (fz_u8(in) < 16) cfg.spp = fz_u32(in); /* out of range sometimes */
+    /* a valid but large spp (up to FOVPT_MAX_SPP) renders millions of samples: keep each input
+       fast (libFuzzer's -timeout); the range check above FOVPT_MAX_SPP is still exercised */
+    if (cfg.spp > 16u && cfg.spp <= FOVPT_MAX_SPP) cfg.spp = 16u;
     fovpt_camera_init(&cam, W, H);
     for (k = 0; k < 3; ++k) { cam.pos[k] = fz_float(in, -3.0f * scale, 3.0f * scale); cam.target[k] = fz_float(in, -scale, scale); }
     cam.fov_y_deg = fz_unit_range(in, 10.0f, 120.0f);
