@@ -13,7 +13,6 @@ prims_px_full / prims_smp_fov x the sample ratio; wall-time speed-up = speedup; 
 hits_pct_full / hits_pct_fov; fovea = psnr_fovea (TAA output against 16 spp),
 psnr_fovea_ref (against 256 spp), psnr_gt_fovea_ref (the 16-spp ground truth against 256).
 """
-import csv
 import os
 import sys
 
@@ -22,9 +21,7 @@ import readme_sections
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
 
 
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+read = readme_sections.read_csv
 
 
 def cfov_table(rows, sigma=1.7):

@@ -15,6 +15,13 @@ import sys
 README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "README.md")
 
 
+def read_csv(path):
+    """The rows of a benchmark CSV as dicts keyed by its header line."""
+    import csv
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
 def write_sections(path, script, sections):
     """Replace each section named in `sections` (name -> list of lines) of `path`; exit 1 when
     a section's markers are missing or repeated."""

@@ -16,7 +16,6 @@ usage: python3 bench/sdf_tables.py [bench/results/sdf.csv]
              stress  bench/results/stress.csv (make bench-stress): per method and spp, the
                      sums over the six stress scenes
 """
-import csv
 import os
 import sys
 from collections import defaultdict
@@ -26,9 +25,7 @@ import readme_sections
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
 
 
-def read(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
+read = readme_sections.read_csv
 
 
 def mean_table(rows, foveas=None, gazes=None):
