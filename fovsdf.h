@@ -160,6 +160,7 @@ CONFIGURATION (define before including the implementation)
    FOVSDF_MAX_STEPS     hard cap on march steps per ray               (default 65536)
    FOVSDF_MAX_DIM       hard cap on image width and height            (default 65536)
    FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
+   FOVSDF_BATCH         points per batch callback, lanes of the batch evaluator (default 32)
    FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
                         it references software-double routines on a single-precision FPU)
    Shared by the three headers (listed in the shared declarations block below):
@@ -764,6 +765,37 @@ typedef struct fovsdf_query {
 
 typedef float (*fovsdf_dist_fn)(const float p[3], void *user);
 typedef float (*fovsdf_dist_ex_fn)(const float p[3], fovsdf_query *q, void *user);
+
+/* A cone that contains a set of points: every point p of the set has p = apex + t u with u a
+   unit vector within the half-angle atan(tan_half) of axis and t in [t0, t1] (the distance
+   from the apex along the ray). CONE and CONE_FOV hand one to batch callbacks (the top-level
+   tile's cone, or a smaller one as the pyramid splits), so a callback can prune its scene:
+   whatever it drops must not change the distance at any point of the cone. */
+typedef struct fovsdf_ray_cone {
+    float apex[3];
+    float axis[3];          /* unit */
+    float tan_half;         /* >= 0 */
+    float t0, t1;           /* 0 <= t0 <= t1 */
+} fovsdf_ray_cone;
+
+/* A batch of points for a batch distance callback, as arrays (structure of arrays). The
+   library fills n, x, y, z, eps, inflate, d (with NaN: a distance the callback leaves
+   unwritten is a miss, FLT_MAX) and material, and reads d and material back; the callback
+   adds its primitive counts to prims and prims_skipped. Each point must get exactly the value
+   the per-point callbacks (if the scene has them too) would give it with the same inflate and
+   eps: the library uses either, and the images then do not depend on which. */
+typedef struct fovsdf_batch {
+    uint32_t n;              /* points, 1 .. FOVSDF_BATCH */
+    const float *x, *y, *z;  /* the points */
+    const float *eps;        /* per point: the hit threshold there (as fovsdf_query.eps) */
+    float inflate;           /* as fovsdf_query.inflate, one value for the batch */
+    float *d;                /* out: n distances */
+    int32_t *material;       /* NULL (not wanted) or out: n material ids (fovsdf_query) */
+    uint32_t prims;          /* out, accumulated: primitive evaluations */
+    uint32_t prims_skipped;  /* out, accumulated: primitive evaluations skipped by bounds */
+    const fovsdf_ray_cone *cone; /* NULL or a cone that contains every point of the batch */
+} fovsdf_batch;
+typedef void (*fovsdf_dist_batch_fn)(fovsdf_batch *b, void *user);
 typedef void (*fovsdf_albedo_fn)(const float p[3], int32_t material, float rgb[3], void *user);
 #ifdef FOVSDF_DOUBLE
 typedef double (*fovsdf_dist_d_fn)(const double p[3], void *user);
@@ -806,6 +838,9 @@ typedef struct fovsdf_scene {
     float ambient[3];           /* added to every hit's light */
     float sky_zenith[3];        /* sky colour straight up */
     float sky_horizon[3];       /* sky colour at the horizon and below */
+    fovsdf_dist_batch_fn dist_batch; /* optional batch callback (fovsdf_batch): every tracer,
+                                   normal and shadow ray evaluates through it when it is set
+                                   (with per-point callbacks too: single points use those) */
 #ifdef FOVSDF_DOUBLE
     fovsdf_dist_d_fn dist_d;    /* optional double distance for the reference tracer */
 #endif
@@ -1095,6 +1130,11 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
 /* Distance at p (counts one evaluation); material may be NULL. */
 FOVSDF_API float fovsdf_distance(const fovsdf_ctx *ctx, const float p[3], int32_t *material,
                                  fovsdf_stats *stats);
+/* Distances at n points given as arrays (structure of arrays; material may be NULL): one
+   evaluation each, through the scene's batch callback when it has one. n 0: nothing. */
+FOVSDF_API fov_result fovsdf_distance_batch(const fovsdf_ctx *ctx, uint32_t n, const float *x,
+                                            const float *y, const float *z, float *d,
+                                            int32_t *material, fovsdf_stats *stats);
 /* Unit normal by the tetrahedron technique: 4 evaluations at +-h. */
 FOVSDF_API void fovsdf_normal(const fovsdf_ctx *ctx, const float p[3], float h, float n[3],
                               fovsdf_stats *stats);
@@ -1184,6 +1224,12 @@ FOVSDF_API fov_result fovsdf_program_compact(fovsdf_program *prog, void *dst, si
 /* Evaluate (the signature of fovsdf_dist_ex_fn; user = const fovsdf_program *). q may be
    NULL. */
 FOVSDF_API float fovsdf_program_eval(const float p[3], fovsdf_query *q, void *user);
+/* Evaluate a batch (the signature of fovsdf_dist_batch_fn): each point gets exactly
+   fovsdf_program_eval's value, material and counts (bit for bit), whatever the batch. Each
+   instruction runs over the batch in plain loops the compiler vectorises; a bounding sphere
+   skips its subtree when no point of the batch needs it, and the points that could skip get
+   the bound's value. Any n (it works in chunks of FOVSDF_BATCH); NULL arrays: nothing. */
+FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user);
 
 /* Built-in scenes: size query, then build into caller memory (which must outlive use). */
 FOVSDF_API const char *fovsdf_builtin_name(uint32_t id);   /* never NULL */
@@ -1760,6 +1806,23 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 /* ==== FOV_SHARED_END impl ==================================================================== */
 
 #define FOVSDF__PRIV FOV__PRIV
+#if defined(_MSC_VER) && !defined(__cplusplus)
+#define FOVSDF__INL static __inline
+#else
+#define FOVSDF__INL static inline
+#endif
+/* gcc's -O2 cost model ("very cheap") does not vectorise loops with selects: the batch
+   evaluator asks for its dynamic model (clang vectorises them at -O2 as they are) */
+#if defined(__GNUC__) && !defined(__clang__) && !defined(FOVSDF_NO_SIMD) && __GNUC__ >= 8
+#define FOVSDF__VEC __attribute__((optimize("vect-cost-model=dynamic")))
+#else
+#define FOVSDF__VEC
+#endif
+#if defined(__cplusplus) || defined(_MSC_VER)
+#define FOVSDF__RESTRICT __restrict
+#else
+#define FOVSDF__RESTRICT restrict
+#endif
 #define FOVSDF__FAIL(lg, r, msg) FOV__FAIL(lg, "fovsdf", r, msg)
 
 #ifndef FOVSDF_MAX_STEPS
@@ -1770,6 +1833,42 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #endif
 #ifndef FOVSDF_MAX_STACK
 #define FOVSDF_MAX_STACK 32
+#endif
+#ifndef FOVSDF_BATCH /* points per batch callback and lanes of the batch evaluator */
+#define FOVSDF_BATCH 32
+#endif
+/* The batch evaluator's loops are plain C over FOVSDF__L lanes (FOVSDF_BATCH rounded up to a
+   multiple of 8), which compilers vectorise; the one hand-written part is the square root
+   (compilers keep sqrtf scalar while errno may be set), for the libm sqrtf only (a math hook
+   or FOV_NO_LIBM keeps its own, lane by lane). FOVSDF_NO_SIMD: no intrinsics. */
+#define FOVSDF__L ((((FOVSDF_BATCH) + 7) / 8) * 8)
+#if !defined(FOVSDF_NO_SIMD) && !defined(FOV__HOOKED_MATH) && !defined(FOV_NO_LIBM)
+#if defined(__AVX__)
+#include <immintrin.h>
+#define FOVSDF__SQRT_AVX 1
+#elif defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#include <emmintrin.h>
+#define FOVSDF__SQRT_SSE 1
+#elif defined(__wasm_simd128__)
+#include <wasm_simd128.h>
+#define FOVSDF__SQRT_WASM 1
+#elif defined(__ARM_NEON) && defined(__aarch64__)
+#include <arm_neon.h>
+#define FOVSDF__SQRT_NEON 1
+#endif
+#endif
+#if defined(FOVSDF_NO_SIMD)
+#define FOVSDF_SIMD_NAME "scalar"
+#elif defined(__AVX2__)
+#define FOVSDF_SIMD_NAME "avx2"
+#elif defined(__SSE2__) || defined(_M_X64)
+#define FOVSDF_SIMD_NAME "sse2"
+#elif defined(__ARM_NEON)
+#define FOVSDF_SIMD_NAME "neon"
+#elif defined(__wasm_simd128__)
+#define FOVSDF_SIMD_NAME "simd128"
+#else
+#define FOVSDF_SIMD_NAME "scalar"
 #endif
 #ifndef FOVSDF_TILE_SCRATCH /* floats of per-call working memory on the stack (IPR tiles) */
 #define FOVSDF_TILE_SCRATCH 1024
@@ -1812,12 +1911,19 @@ FOVSDF__PRIV size_t fovsdf__fov_cells(uint32_t tile, int32_t r, int cone)
 
 
 /* NaN gives a: a NaN never survives a clamp (bit for bit the plain clamp otherwise) */
-FOVSDF__PRIV float fovsdf__clampf(float x, float a, float b)
+FOVSDF__PRIV float fovsdf__nan(void)
+{
+    uint32_t u = 0x7fc00000u;
+    float f;
+    FOV_MEMCPY(&f, &u, sizeof f);
+    return f;
+}
+FOVSDF__INL float fovsdf__clampf(float x, float a, float b)
 {
     return x >= a ? (x > b ? b : x) : a;
 }
-FOVSDF__PRIV float fovsdf__len2f(float x, float y) { return FOV__SQRT(x * x + y * y); }
-FOVSDF__PRIV float fovsdf__len3f(float x, float y, float z)
+FOVSDF__INL float fovsdf__len2f(float x, float y) { return FOV__SQRT(x * x + y * y); }
+FOVSDF__INL float fovsdf__len3f(float x, float y, float z)
 {
     return FOV__SQRT(x * x + y * y + z * z);
 }
@@ -2043,6 +2149,7 @@ FOVSDF_API void fovsdf_scene_set_program(fovsdf_scene *s, const fovsdf_program *
     if (!s) return;
     s->dist = 0;
     s->dist_ex = fovsdf_program_eval;
+    s->dist_batch = fovsdf_program_eval_batch;
     s->user = (void *)(uintptr_t)prog; /* the evaluator only reads through it */
 }
 
@@ -2996,13 +3103,13 @@ FOVSDF_API fov_result fovsdf_program_build(fovsdf_program *prog, const fovsdf_no
 
 /* ---- primitive distance functions (canonical exact forms after Quilez; the thesis's
         Sec. 2.2.1 lists the same set) ------------------------------------------------------ */
-FOVSDF__PRIV float fovsdf__sd_box(float x, float y, float z, float bx, float by, float bz)
+FOVSDF__INL float fovsdf__sd_box(float x, float y, float z, float bx, float by, float bz)
 {
     float qx = fov__absf(x) - bx, qy = fov__absf(y) - by, qz = fov__absf(z) - bz;
     float o = fovsdf__len3f(fov__maxf(qx, 0.0f), fov__maxf(qy, 0.0f), fov__maxf(qz, 0.0f));
     return o + fov__minf(fov__maxf(qx, fov__maxf(qy, qz)), 0.0f);
 }
-FOVSDF__PRIV float fovsdf__sd_frame3(float ax, float ay, float az)
+FOVSDF__INL float fovsdf__sd_frame3(float ax, float ay, float az)
 {
     return fovsdf__len3f(fov__maxf(ax, 0.0f), fov__maxf(ay, 0.0f), fov__maxf(az, 0.0f)) +
            fov__minf(fov__maxf(ax, fov__maxf(ay, az)), 0.0f);
@@ -3274,6 +3381,437 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         : FLT_MAX;
 }
 
+/* ---- the batch evaluator: fovsdf_program_eval over a batch, instruction by instruction ------
+   Every lane computes exactly what fovsdf_program_eval computes for its point (the same float
+   operations in the same order), so a batch never changes a value. Bounds: a lane whose test
+   says "skip" takes the bound's value; the subtree runs when at least one active lane needs
+   it, and at its end the skipping lanes get the bound's value back (a pending record); lanes
+   that an outer record already decided are inactive and do not count. */
+typedef struct fovsdf__bscr {
+    float vs[FOVSDF_MAX_STACK][FOVSDF__L];
+    int32_t ms[FOVSDF_MAX_STACK][FOVSDF__L];
+    float ps[FOVSDF_MAX_STACK][3][FOVSDF__L];
+    float p[3][FOVSDF__L], q[3][FOVSDF__L], t[FOVSDF__L], u[FOVSDF__L], e[FOVSDF__L];
+    float bv[FOVSDF__MAX_DEPTH][FOVSDF__L];       /* pending bounds: the bound's value */
+    int32_t bm[FOVSDF__MAX_DEPTH][FOVSDF__L];     /* 1: the lane takes it */
+    int32_t act[FOVSDF__MAX_DEPTH + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
+    uint32_t bj[FOVSDF__MAX_DEPTH], bslot[FOVSDF__MAX_DEPTH], nact[FOVSDF__MAX_DEPTH + 1];
+} fovsdf__bscr;
+
+/* Branch-free selects for the lane loops (gcc leaves "x > 0 ? x : 0" a branch, which stops
+   vectorisation); the same values as the ternaries, NaN and signed zeros included. */
+typedef union fovsdf__fu { float f; uint32_t u; } fovsdf__fu;
+FOVSDF__INL float fovsdf__sel(int c, float a, float b) /* c ? a : b */
+{
+    fovsdf__fu x, y;
+    uint32_t m = 0u - (uint32_t)(c != 0);
+    x.f = a; y.f = b;
+    x.u = (x.u & m) | (y.u & ~m);
+    return x.f;
+}
+FOVSDF__INL int32_t fovsdf__seli(int c, int32_t a, int32_t b)
+{
+    int32_t m = -(int32_t)(c != 0);
+    return (a & m) | (b & ~m);
+}
+FOVSDF__INL float fovsdf__vmax(float a, float b) { return fovsdf__sel(a > b, a, b); }
+FOVSDF__INL float fovsdf__vmin(float a, float b) { return fovsdf__sel(a < b, a, b); }
+FOVSDF__INL float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
+{
+    return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
+}
+FOVSDF__INL int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+
+/* v[i] = sqrt(v[i]) over the lanes, exactly FOV__SQRT's value. */
+FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
+{
+    uint32_t i;
+#if defined(FOVSDF__SQRT_AVX)
+    for (i = 0; i < FOVSDF__L; i += 8)
+        _mm256_storeu_ps(v + i, _mm256_sqrt_ps(_mm256_loadu_ps(v + i)));
+#elif defined(FOVSDF__SQRT_SSE)
+    for (i = 0; i < FOVSDF__L; i += 4)
+        _mm_storeu_ps(v + i, _mm_sqrt_ps(_mm_loadu_ps(v + i)));
+#elif defined(FOVSDF__SQRT_WASM)
+    for (i = 0; i < FOVSDF__L; i += 4)
+        wasm_v128_store(v + i, wasm_f32x4_sqrt(wasm_v128_load(v + i)));
+#elif defined(FOVSDF__SQRT_NEON)
+    for (i = 0; i < FOVSDF__L; i += 4) vst1q_f32(v + i, vsqrtq_f32(vld1q_f32(v + i)));
+#else
+    for (i = 0; i < FOVSDF__L; ++i) v[i] = FOV__SQRT(v[i]);
+#endif
+}
+
+/* One primitive over the lanes at (x, y, z) into d (no inflation, no NaN guard), with the
+   float operations of fovsdf__prim in its order; t and u are scratch lanes. */
+FOVSDF__PRIV FOVSDF__VEC void fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
+                                     const float *FOVSDF__RESTRICT y,
+                                     const float *FOVSDF__RESTRICT z, float *FOVSDF__RESTRICT d,
+                                     float *FOVSDF__RESTRICT t, float *FOVSDF__RESTRICT u)
+{
+    const float *f = in->f;
+    const uint32_t n = FOVSDF__L; /* a constant trip count: the loops vectorise at -O2 */
+    uint32_t i;
+    switch (in->sub) {
+    case FOVSDF_NODE_SPHERE:
+        for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = t[i] - f[0];
+        break;
+    case FOVSDF_NODE_BOX:
+    case FOVSDF_NODE_ROUND_BOX: {
+        float r = in->sub == FOVSDF_NODE_BOX ? 0.0f : f[3];
+        float bx = in->sub == FOVSDF_NODE_BOX ? f[0] : f[0] - f[3];
+        float by = in->sub == FOVSDF_NODE_BOX ? f[1] : f[1] - f[3];
+        float bz = in->sub == FOVSDF_NODE_BOX ? f[2] : f[2] - f[3];
+        for (i = 0; i < n; ++i) {
+            float qx = fovsdf__vmax(fov__absf(x[i]) - bx, 0.0f);
+            float qy = fovsdf__vmax(fov__absf(y[i]) - by, 0.0f);
+            float qz = fovsdf__vmax(fov__absf(z[i]) - bz, 0.0f);
+            t[i] = qx * qx + qy * qy + qz * qz;
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) {
+            float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
+                qz = fov__absf(z[i]) - bz;
+            d[i] = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+        }
+        if (in->sub == FOVSDF_NODE_ROUND_BOX) for (i = 0; i < n; ++i) d[i] = d[i] - r;
+        break;
+    }
+    case FOVSDF_NODE_TORUS:
+        for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) {
+            float a = t[i] - f[0];
+            t[i] = a * a + y[i] * y[i];
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = t[i] - f[1];
+        break;
+    case FOVSDF_NODE_CYLINDER:
+        for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) {
+            float dx = t[i] - f[1], dy = fov__absf(y[i]) - f[0];
+            float mx = fovsdf__vmax(dx, 0.0f), my = fovsdf__vmax(dy, 0.0f);
+            u[i] = fovsdf__vmin(fovsdf__vmax(dx, dy), 0.0f);
+            t[i] = mx * mx + my * my;
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = u[i] + t[i];
+        break;
+    case FOVSDF_NODE_CAPSULE: {
+        float bax = f[3] - f[0], bay = f[4] - f[1], baz = f[5] - f[2];
+        float bb = bax * bax + bay * bay + baz * baz;
+        for (i = 0; i < n; ++i) {
+            float pax = x[i] - f[0], pay = y[i] - f[1], paz = z[i] - f[2], h, ex, ey, ez;
+            h = fovsdf__sel(bb > 0.0f,
+                            fovsdf__vclamp((pax * bax + pay * bay + paz * baz) / bb, 0.0f, 1.0f),
+                            0.0f);
+            ex = pax - bax * h; ey = pay - bay * h; ez = paz - baz * h;
+            t[i] = ex * ex + ey * ey + ez * ez;
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = t[i] - f[6];
+        break;
+    }
+    case FOVSDF_NODE_PLANE:
+        for (i = 0; i < n; ++i) d[i] = x[i] * f[0] + y[i] * f[1] + z[i] * f[2] + f[3];
+        break;
+    default:
+        for (i = 0; i < n; ++i) {
+            float p[3];
+            p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
+            d[i] = fovsdf__prim(in, p);
+        }
+        break;
+    }
+}
+
+/* nb <= FOVSDF_BATCH points starting at point k0 of b. Every loop runs over all FOVSDF__L
+   lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
+   them at -O2); lanes past nb repeat the last point and are inactive. */
+FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b, uint32_t k0,
+                                     uint32_t nb, fovsdf__bscr *s)
+{
+    const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
+    const uint32_t n = FOVSDF__L;
+    float inflate = (b->inflate > 0.0f && fov__finite(b->inflate)) ? b->inflate : 1.0f;
+    int scaled = inflate < 1.0f || inflate > 1.0f;
+    uint32_t pc = 0, cnt = prog->count, i, prims = 0, skipped = 0, lv = 0, bsp = 0;
+    int32_t vsp = 0, psp = 0;
+    for (i = 0; i < n; ++i) {
+        uint32_t k = k0 + (i < nb ? i : nb - 1u);
+        s->p[0][i] = b->x[k]; s->p[1][i] = b->y[k]; s->p[2][i] = b->z[k];
+        s->e[i] = b->eps ? b->eps[k] : 0.0f;
+        s->act[0][i] = i < nb ? 1 : 0;
+    }
+    s->nact[0] = nb;
+    for (;;) {
+        const fovsdf__ins *in;
+        /* subtrees that ended: the lanes that skipped them take the bound's value */
+        while (bsp > 0 && s->bj[bsp - 1] == pc) {
+            float *FOVSDF__RESTRICT V = s->vs[s->bslot[bsp - 1]];
+            int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
+            const float *FOVSDF__RESTRICT BV = s->bv[bsp - 1];
+            const int32_t *FOVSDF__RESTRICT BM = s->bm[bsp - 1];
+            for (i = 0; i < n; ++i) {
+                int32_t bm = BM[i];
+                V[i] = fovsdf__sel(bm, BV[i], V[i]);
+                M[i] = fovsdf__seli(bm, -1, M[i]);
+            }
+            --bsp;
+            --lv;
+        }
+        if (pc >= cnt) break;
+        in = &code[pc];
+        switch (in->op) {
+        case FOVSDF__OP_PRIM: {
+            float *FOVSDF__RESTRICT d = s->vs[vsp];
+            int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
+            int32_t mat = in->material;
+            if (scaled) {
+                float sc = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate;
+                float *FOVSDF__RESTRICT QX = s->q[0], *FOVSDF__RESTRICT QY = s->q[1],
+                      *FOVSDF__RESTRICT QZ = s->q[2];
+                const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
+                            *FOVSDF__RESTRICT Z = s->p[2];
+                for (i = 0; i < n; ++i) {
+                    QX[i] = X[i] / sc; QY[i] = Y[i] / sc; QZ[i] = Z[i] / sc;
+                }
+                fovsdf__prim_lanes(in, QX, QY, QZ, d, s->t, s->u);
+                for (i = 0; i < n; ++i) d[i] = d[i] * sc;
+            } else {
+                fovsdf__prim_lanes(in, s->p[0], s->p[1], s->p[2], d, s->t, s->u);
+            }
+            for (i = 0; i < n; ++i) {
+                float v = d[i];
+                d[i] = fovsdf__sel((v <= 0.0f) | (v > 0.0f), v, FLT_MAX);
+                M[i] = mat;
+            }
+            ++vsp;
+            prims += s->nact[lv];
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_BIN: {
+            float *FOVSDF__RESTRICT A = s->vs[vsp - 2];
+            const float *FOVSDF__RESTRICT B = s->vs[vsp - 1];
+            int32_t *FOVSDF__RESTRICT MA = s->ms[vsp - 2];
+            const int32_t *FOVSDF__RESTRICT MB = s->ms[vsp - 1];
+            float k = in->f[0];
+            --vsp;
+            switch (in->sub) {
+            case FOVSDF_NODE_UNION:
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = B[i];
+                    int ta = a < c;
+                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            case FOVSDF_NODE_SUBTRACT:
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = -B[i];
+                    int ta = a > c;
+                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            case FOVSDF_NODE_INTERSECT:
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = B[i];
+                    int ta = a > c;
+                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            case FOVSDF_NODE_SMOOTH_UNION:
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = B[i], h, r;
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
+                    h = fovsdf__vclamp(0.5f + 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    r = c + (a - c) * h - k * h * (1.0f - h);
+                    ta = fovsdf__seli(fin, h > 0.5f, a < c);
+                    A[i] = fovsdf__sel(fin, r, fovsdf__vmin(a, c));
+                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            case FOVSDF_NODE_SMOOTH_SUBTRACT:
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = B[i], h, r;
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
+                    h = fovsdf__vclamp(0.5f - 0.5f * (a + c) / k, 0.0f, 1.0f);
+                    r = a + (-c - a) * h + k * h * (1.0f - h);
+                    ta = fovsdf__seli(fin, !(h > 0.5f), a > -c);
+                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, -c));
+                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            default: /* smooth intersection */
+                for (i = 0; i < n; ++i) {
+                    float a = A[i], c = B[i], h, r;
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
+                    h = fovsdf__vclamp(0.5f - 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    r = c + (a - c) * h + k * h * (1.0f - h);
+                    ta = fovsdf__seli(fin, h > 0.5f, a > c);
+                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, c));
+                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
+                }
+                break;
+            }
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_UNARY: {
+            float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
+            if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
+            else for (i = 0; i < n; ++i) V[i] = fov__absf(V[i]) - r;
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_PUSHP: {
+            const float *f = in->f;
+            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
+                  *FOVSDF__RESTRICT Z = s->p[2];
+            float *FOVSDF__RESTRICT SX = s->ps[psp][0], *FOVSDF__RESTRICT SY = s->ps[psp][1],
+                  *FOVSDF__RESTRICT SZ = s->ps[psp][2];
+            int k;
+            for (i = 0; i < n; ++i) { SX[i] = X[i]; SY[i] = Y[i]; SZ[i] = Z[i]; }
+            ++psp;
+            switch (in->sub) {
+            case FOVSDF_NODE_TRANSLATE: {
+                float a = f[0], c = f[1], e = f[2];
+                for (i = 0; i < n; ++i) { X[i] -= a; Y[i] -= c; Z[i] -= e; }
+                break;
+            }
+            case FOVSDF_NODE_ROTATE:
+                for (i = 0; i < n; ++i) {
+                    float x = SX[i], y = SY[i], z = SZ[i];
+                    X[i] = f[0] * x + f[3] * y + f[6] * z;
+                    Y[i] = f[1] * x + f[4] * y + f[7] * z;
+                    Z[i] = f[2] * x + f[5] * y + f[8] * z;
+                }
+                break;
+            case FOVSDF_NODE_SCALE: {
+                float sc = f[0];
+                for (i = 0; i < n; ++i) { X[i] /= sc; Y[i] /= sc; Z[i] /= sc; }
+                break;
+            }
+            case FOVSDF_NODE_REPEAT:
+                for (k = 0; k < 3; ++k) {
+                    float *FOVSDF__RESTRICT P = s->p[k], per = f[k], lim = (float)in->i[k];
+                    if (!(per > 0.0f)) continue;
+                    if (in->i[k] > 0) {
+                        for (i = 0; i < n; ++i) {
+                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
+                            c = fovsdf__vclamp(c, -lim, lim);
+                            P[i] -= per * c;
+                        }
+                    } else {
+                        for (i = 0; i < n; ++i) {
+                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
+                            P[i] -= per * c;
+                        }
+                    }
+                }
+                break;
+            default: /* mirror */
+                for (k = 0; k < 3; ++k)
+                    if (in->i[0] & (1 << k)) {
+                        float *FOVSDF__RESTRICT P = s->p[k];
+                        for (i = 0; i < n; ++i) P[i] = fov__absf(P[i]);
+                    }
+                break;
+            }
+            ++pc;
+            break;
+        }
+        case FOVSDF__OP_POPP: {
+            float *FOVSDF__RESTRICT V = s->vs[vsp - 1], sc = in->f[0];
+            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
+                  *FOVSDF__RESTRICT Z = s->p[2];
+            const float *FOVSDF__RESTRICT SX = s->ps[psp - 1][0],
+                        *FOVSDF__RESTRICT SY = s->ps[psp - 1][1],
+                        *FOVSDF__RESTRICT SZ = s->ps[psp - 1][2];
+            --psp;
+            for (i = 0; i < n; ++i) { X[i] = SX[i]; Y[i] = SY[i]; Z[i] = SZ[i]; }
+            if (sc < 1.0f || sc > 1.0f) for (i = 0; i < n; ++i) V[i] *= sc;
+            ++pc;
+            break;
+        }
+        default: { /* BOUND */
+            const float *f = in->f;
+            const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
+                        *FOVSDF__RESTRICT Z = s->p[2], *FOVSDF__RESTRICT E = s->e;
+            const int32_t *FOVSDF__RESTRICT ACT = s->act[lv];
+            int32_t *FOVSDF__RESTRICT BM = s->bm[bsp];
+            float *FOVSDF__RESTRICT T = s->t;
+            float cx = f[0], cy = f[1], cz = f[2], lim0 = 1.25f * f[3] + f[4];
+            uint32_t nskip = 0, na = s->nact[lv];
+            if (scaled) { ++pc; break; } /* inflation: evaluate everything (as the scalar) */
+            for (i = 0; i < n; ++i) {
+                float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz,
+                      d2 = dx * dx + dy * dy + dz * dz;
+                float lim = lim0 + 4.0f * E[i];
+                int32_t sk = (d2 > lim * lim) & ACT[i];
+                T[i] = d2;
+                BM[i] = sk;
+                nskip += (uint32_t)sk;
+            }
+            skipped += nskip * (uint32_t)in->i[0];
+            if (nskip == 0) { ++pc; break; }
+            fovsdf__sqrt_lanes(T);
+            if (nskip == na) { /* every lane that counts skips: jump */
+                float *FOVSDF__RESTRICT V = s->vs[vsp], r = f[3];
+                int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
+                for (i = 0; i < n; ++i) { V[i] = T[i] - r; M[i] = -1; }
+                ++vsp;
+                pc = in->jump;
+                break;
+            }
+            FOV_ASSERT(bsp < FOVSDF__MAX_DEPTH);
+            {
+                float *FOVSDF__RESTRICT BV = s->bv[bsp], r = f[3];
+                int32_t *FOVSDF__RESTRICT A2 = s->act[lv + 1];
+                for (i = 0; i < n; ++i) {
+                    BV[i] = T[i] - r;
+                    A2[i] = ACT[i] & (BM[i] ^ 1);
+                }
+            }
+            s->nact[lv + 1] = na - nskip;
+            s->bj[bsp] = in->jump;
+            s->bslot[bsp] = (uint32_t)vsp;
+            ++bsp;
+            ++lv;
+            ++pc;
+            break;
+        }
+        }
+    }
+    b->prims += prims;
+    b->prims_skipped += skipped;
+    for (i = 0; i < nb; ++i) {
+        float v = vsp > 0 ? s->vs[0][i] : FLT_MAX;
+        b->d[k0 + i] = fov__isnan(v) ? FLT_MAX : fovsdf__clampf(v, -FLT_MAX, FLT_MAX);
+        if (b->material) b->material[k0 + i] = vsp > 0 ? s->ms[0][i] : -1;
+    }
+}
+
+FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
+{
+    const fovsdf_program *prog = (const fovsdf_program *)user;
+    fovsdf__bscr s;
+    uint32_t k;
+    if (!b || !b->x || !b->y || !b->z || !b->d) return;
+    if (!prog || !prog->code || prog->count == 0) {
+        for (k = 0; k < b->n; ++k) b->d[k] = FLT_MAX;
+        return;
+    }
+    for (k = 0; k < b->n; k += FOVSDF__L)
+        fovsdf__eval_lanes(prog, b, k, b->n - k < FOVSDF__L ? b->n - k : FOVSDF__L, &s);
+}
+
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
 typedef struct fovsdf__marcher {
     const fovsdf_scene *sc;
@@ -3301,13 +3839,53 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
         d = sc->dist_ex(p, &q, sc->user);
         if (mat) *mat = q.material;
         if (st) { st->prims += q.prims; st->prims_skipped += q.prims_skipped; }
-    } else {
+    } else if (sc->dist) {
         d = sc->dist(p, sc->user);
         if (mat) *mat = 0;
+    } else { /* a batch callback alone: a batch of one */
+        fovsdf_batch b;
+        int32_t m = 0;
+        d = fovsdf__nan();
+        b.n = 1; b.x = &p[0]; b.y = &p[1]; b.z = &p[2]; b.eps = &eps; b.inflate = inflate;
+        b.d = &d; b.material = &m; b.prims = 0; b.prims_skipped = 0; b.cone = 0;
+        sc->dist_batch(&b, sc->user);
+        if (mat) *mat = m;
+        if (st) { st->prims += b.prims; st->prims_skipped += b.prims_skipped; }
     }
     if (st) st->evals++;
     d *= inv_lip;
     return fov__finite(d) ? d : FLT_MAX;
+}
+
+/* n <= FOVSDF_BATCH counted evaluations at (x, y, z)[i] with thresholds eps[i] (as
+   fovsdf__eval_in for each point: the same values, materials and counts), through the batch
+   callback when the scene has one, else point by point. mat may be NULL. */
+FOVSDF__PRIV void fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                     const float *x, const float *y, const float *z,
+                                     const float *eps, float inflate, const fovsdf_ray_cone *cone,
+                                     float *d, int32_t *mat, fovsdf_stats *st)
+{
+    uint32_t i;
+    if (sc->dist_batch) {
+        fovsdf_batch b;
+        float nan = fovsdf__nan();
+        for (i = 0; i < n; ++i) d[i] = nan;
+        if (mat) for (i = 0; i < n; ++i) mat[i] = 0;
+        b.n = n; b.x = x; b.y = y; b.z = z; b.eps = eps; b.inflate = inflate; b.d = d;
+        b.material = mat; b.prims = 0; b.prims_skipped = 0; b.cone = cone;
+        sc->dist_batch(&b, sc->user);
+        if (st) { st->prims += b.prims; st->prims_skipped += b.prims_skipped; st->evals += n; }
+        for (i = 0; i < n; ++i) {
+            float v = d[i] * inv_lip;
+            d[i] = fov__finite(v) ? v : FLT_MAX;
+        }
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        float p[3];
+        p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
+        d[i] = fovsdf__eval_in(sc, inv_lip, p, eps[i], inflate, mat ? &mat[i] : 0, st);
+    }
 }
 FOVSDF__PRIV float fovsdf__eval_sc(const fovsdf_scene *sc, float inv_lip, const float p[3],
                                    float eps, int32_t *mat, fovsdf_stats *st)
@@ -3718,7 +4296,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     fovsdf__marcher m;
     float l;
     if (!scene || !mp || !ro || !rd || !hit) return FOV_ERR_NULL;
-    if (!scene->dist && !scene->dist_ex) return FOV_ERR_NULL;
+    if (!scene->dist && !scene->dist_ex && !scene->dist_batch) return FOV_ERR_NULL;
     if (!fov__finite3(ro) || !fov__finite3(rd) || !fov__finite(t_start) || !fov__finite(mp->eps) ||
         !fov__finite(mp->eps_cone) || !fov__finite(mp->t_max) || !fov__finite(mp->omega) ||
         !fov__finite(mp->ar_beta) || !fov__finite(mp->bv_relax) || !fov__finite(scene->lipschitz))
@@ -3764,6 +4342,25 @@ FOVSDF_API float fovsdf_distance(const fovsdf_ctx *c, const float p[3], int32_t 
 {
     if (!c || !p) return FLT_MAX;
     return fovsdf__eval_sc(&c->scene, 1.0f / c->scene.lipschitz, p, c->cfg.eps, material, st);
+}
+
+FOVSDF_API fov_result fovsdf_distance_batch(const fovsdf_ctx *c, uint32_t n, const float *x,
+                                            const float *y, const float *z, float *d,
+                                            int32_t *material, fovsdf_stats *st)
+{
+    float eps[FOVSDF_BATCH];
+    uint32_t k, i;
+    if (!c) return FOV_ERR_NULL;
+    if (n == 0) return FOV_OK;
+    if (!x || !y || !z || !d)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "distance_batch: x, y, z or d is NULL");
+    for (i = 0; i < FOVSDF_BATCH; ++i) eps[i] = c->cfg.eps;
+    for (k = 0; k < n; k += FOVSDF_BATCH) {
+        uint32_t m = n - k < FOVSDF_BATCH ? n - k : FOVSDF_BATCH;
+        fovsdf__eval_batch(&c->scene, 1.0f / c->scene.lipschitz, m, x + k, y + k, z + k, eps,
+                           1.0f, 0, d + k, material ? material + k : 0, st);
+    }
+    return FOV_OK;
 }
 
 FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, float n[3],
@@ -4015,8 +4612,9 @@ FOVSDF_API void fovsdf_stats_add(fovsdf_stats *a, const fovsdf_stats *s)
 FOVSDF__PRIV fov_result fovsdf__scene_check(const fovsdf_scene *s, const fov_logger *lg)
 {
     uint32_t i;
-    if (!s->dist && !s->dist_ex)
-        FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: scene.dist and scene.dist_ex are both NULL");
+    if (!s->dist && !s->dist_ex && !s->dist_batch)
+        FOVSDF__FAIL(lg, FOV_ERR_NULL,
+                     "init: scene.dist, scene.dist_ex and scene.dist_batch are all NULL");
     if (!fov__finite(s->lipschitz))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: scene.lipschitz is NaN or infinite");
     if (!fov__finite(s->t_max))

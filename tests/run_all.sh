@@ -126,6 +126,7 @@ three_builds accel_fovsdf tests/test_fovsdf_accel.c
 three_builds contract_fovsdf tests/test_fovsdf_contract.c
 three_builds heads_fovsdf tests/test_fovsdf_heads.c
 three_builds props_fovsdf tests/test_fovsdf_props.c
+three_builds batch_fovsdf tests/test_fovsdf_batch.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
