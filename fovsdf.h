@@ -3444,10 +3444,10 @@ FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
 
 /* One primitive over the lanes at (x, y, z) into d (no inflation, no NaN guard), with the
    float operations of fovsdf__prim in its order; t and u are scratch lanes. */
-FOVSDF__PRIV FOVSDF__VEC void fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
-                                     const float *FOVSDF__RESTRICT y,
-                                     const float *FOVSDF__RESTRICT z, float *FOVSDF__RESTRICT d,
-                                     float *FOVSDF__RESTRICT t, float *FOVSDF__RESTRICT u)
+FOVSDF__PRIV FOVSDF__VEC void
+fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
+                   const float *FOVSDF__RESTRICT y, const float *FOVSDF__RESTRICT z,
+                   float *FOVSDF__RESTRICT d, float *FOVSDF__RESTRICT t, float *FOVSDF__RESTRICT u)
 {
     const float *f = in->f;
     const uint32_t n = FOVSDF__L; /* a constant trip count: the loops vectorise at -O2 */
@@ -3532,8 +3532,8 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__prim_lanes(const fovsdf__ins *in, const fl
 /* nb <= FOVSDF_BATCH points starting at point k0 of b. Every loop runs over all FOVSDF__L
    lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
    them at -O2); lanes past nb repeat the last point and are inactive. */
-FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b, uint32_t k0,
-                                     uint32_t nb, fovsdf__bscr *s)
+FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
+                                                 uint32_t k0, uint32_t nb, fovsdf__bscr *s)
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
