@@ -3917,236 +3917,6 @@ FOVSDF__PRIV float fovsdf__mg(const fovsdf__marcher *m, float t)
     return 0.01f * fovsdf__thr(m, t) + 0.5f * (m->ulp0 + m->ulp1 * t);
 }
 
-/* Empty-ball certificate of a forward secant move from a hit at t (distance d > 0) to t2 >
-   t + d (see the hit refinement, fovsdf__refine): a ball around c = F + H n, F = p(t2), n the
-   outward normal at F, H the radius of the ball tangent at F through A = p(t + d), is empty
-   when its radius is at most f(c) (Lipschitz 1); when A and F lie within f(c) + mg of c (less
-   the test's rounding), so does the segment between them (convexity), and no point of it is
-   inside by more than mg. Returns 1 and the refined hit in *tr, *dr (and *mat) then; 0 with
-   nothing changed otherwise. 4 evaluations: F, two forward differences, c (1 when F is
-   already no better than the plain refinement would be). */
-FOVSDF__PRIV int fovsdf__ball_cert(const fovsdf__marcher *m, const float ro[3], const float rd[3],
-                                   float t, float d, float sl, float t2, float mg, float *tr,
-                                   float *dr, int32_t *mat, fovsdf_stats *st)
-{
-    float a[3], f[3], c[3], n[3], q[3], fb, fc, e, s, ha, h2, hr, r, u;
-    int32_t m2 = 0;
-    int i;
-    if (!(t2 <= m->t_max) || !(t2 > t + d)) return 0;
-    for (i = 0; i < 3; ++i) { a[i] = ro[i] + rd[i] * (t + d); f[i] = ro[i] + rd[i] * t2; }
-    if (!fov__finite3(a) || !fov__finite3(f)) return 0;
-    fb = fovsdf__eval_sc(m->sc, m->inv_lip, f, fovsdf__thr(m, t2), mat ? &m2 : 0, st);
-    /* the secant found the surface (F at least 4 times closer than the hit; a ray running
-       along a curved surface keeps the hit where the threshold stopped it), and F is not
-       inside by more than the margin */
-    if (!(fov__absf(fb) <= 0.25f * d && fb > -fovsdf__mg(m, t2))) return 0;
-    /* the normal: the secant's slope sl is the derivative along the ray; two forward
-       differences from F across it give the rest. The step: at least the threshold, and large
-       enough that the float noise of the differences (u, 8 ulps of the position) tilts n by
-       less than sqrt(mg / H) (a tilt theta lowers f(c) by H theta^2 / 2); H is about
-       (t2 - t)^2 / (2 d) for a plane (sin(incidence) = d / (t2 - t)) */
-    u = m->ulp0 + m->ulp1 * t2;
-    s = t2 - t;
-    e = fov__maxf(fovsdf__thr(m, t2), FOV__SQRT(u * (s * s / (2.0f * d))));
-    {
-        float ax[3] = { 0.0f, 0.0f, 0.0f }, b1[3], b2[3], g1, g2;
-        int k = fov__absf(rd[0]) <= fov__absf(rd[1])
-                    ? (fov__absf(rd[0]) <= fov__absf(rd[2]) ? 0 : 2)
-                    : (fov__absf(rd[1]) <= fov__absf(rd[2]) ? 1 : 2);
-        ax[k] = 1.0f;
-        fov__cross(rd, ax, b1);
-        if (!(fovsdf__normalize(b1) > 0.0f)) return 0;
-        fov__cross(rd, b1, b2);
-        for (i = 0; i < 3; ++i) q[i] = f[i] + e * b1[i];
-        if (!fov__finite3(q)) return 0;
-        g1 = fovsdf__eval_sc(m->sc, m->inv_lip, q, fovsdf__thr(m, t2), 0, st) - fb;
-        for (i = 0; i < 3; ++i) q[i] = f[i] + e * b2[i];
-        if (!fov__finite3(q)) return 0;
-        g2 = fovsdf__eval_sc(m->sc, m->inv_lip, q, fovsdf__thr(m, t2), 0, st) - fb;
-        for (i = 0; i < 3; ++i) n[i] = sl * e * rd[i] + g1 * b1[i] + g2 * b2[i];
-    }
-    if (!(fovsdf__normalize(n) > 0.0f)) return 0;
-    for (i = 0; i < 3; ++i) q[i] = a[i] - f[i];
-    ha = fov__dot(q, n); /* A's height above the tangent plane at F */
-    h2 = fov__dot(q, q);
-    if (!(ha > 0.0f)) return 0;
-    hr = h2 / (2.0f * ha);  /* the ball through A tangent at F */
-    /* |A - c|, |F - c| and f(c) round by a few ulps of H: that must leave most of the margin */
-    if (!(hr <= FLT_MAX) || !(8.0f * FLT_EPSILON * hr < mg)) return 0;
-    for (i = 0; i < 3; ++i) c[i] = f[i] + hr * n[i];
-    if (!fov__finite3(c)) return 0;
-    fc = fovsdf__eval_sc(m->sc, m->inv_lip, c, fovsdf__thr(m, t2), 0, st);
-    if (!(fc > 0.0f) || !(fc < FLT_MAX)) return 0;
-    r = fc + mg - 4.0f * FLT_EPSILON * hr;
-    for (i = 0; i < 3; ++i) { a[i] -= c[i]; f[i] -= c[i]; }
-    if (!(fov__len(a) <= r && fov__len(f) <= r)) return 0;
-    *tr = t2; *dr = fb;
-    if (mat) *mat = m2;
-    return 1;
-}
-
-/* A tracer's result, the input of the hit refinement: the last sample (t, d), the one before
-   it (pt, pd; hp when there is one), the steps taken and the outcome (fovsdf_hit_kind). */
-typedef struct fovsdf__trace {
-    float t, d, pt, pd;
-    int hp;
-    uint32_t steps, kind;
-} fovsdf__trace;
-
-/* One counted evaluation at ro + t rd at SDF scale inflate. A point that overflows (a camera
-   near FLT_MAX) is never evaluated: FLT_MAX, a miss. */
-FOVSDF__PRIV float fovsdf__eval_ray(const fovsdf__marcher *m, const float ro[3], const float rd[3],
-                                    float t, float inflate, int32_t *mat, fovsdf_stats *st)
-{
-    float p[3];
-    p[0] = ro[0] + rd[0] * t; p[1] = ro[1] + rd[1] * t; p[2] = ro[2] + rd[2] * t;
-    return fov__finite3(p) ? fovsdf__eval_in(m->sc, m->inv_lip, p, fovsdf__thr(m, t), inflate,
-                                             mat, st)
-                           : FLT_MAX;
-}
-
-/* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
-FOVSDF__PRIV void fovsdf__trace_classic(const fovsdf__marcher *m, const float ro[3],
-                                        const float rd[3], float t0, int32_t *mat,
-                                        fovsdf_stats *st, fovsdf__trace *o)
-{
-    float t = t0, d = 0.0f, pt = t0, pd = 0.0f;
-    int hp = 0;
-    uint32_t steps = 0, kind = FOVSDF_MISS;
-    for (;;) {
-        if (t > m->t_max) break;
-        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
-        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
-        ++steps;
-        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
-        pt = t; pd = d; hp = 1;
-        t += d;
-    }
-    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
-}
-
-/* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the unbounding
-   sphere at the new point does not overlap the previous one the step may have jumped a
-   surface: go back to the safe point tp + rp and continue with omega = 1. */
-FOVSDF__PRIV void fovsdf__trace_relaxed(const fovsdf__marcher *m, const float ro[3],
-                                        const float rd[3], float t0, int32_t *mat,
-                                        fovsdf_stats *st, fovsdf__trace *o)
-{
-    float t = t0, d = 0.0f, pt = t0, pd = 0.0f, om = m->omega, tp = t0, rp = 0.0f;
-    int hp = 0, have = 0;
-    uint32_t steps = 0, kind = FOVSDF_MISS;
-    for (;;) {
-        if (t > m->t_max) break;
-        if (steps >= m->max_steps) { /* the last relaxed step is unverified: fall back */
-            kind = FOVSDF_EXHAUSTED;
-            if (have && t > tp + rp) { t = tp + rp; d = rp; }
-            break;
-        }
-        d = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
-        ++steps;
-        if (have && om > 1.0f && d + rp < t - tp) { t = tp + rp; om = 1.0f; have = 0; continue; }
-        if (d < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
-        tp = t; rp = d; have = 1;
-        pt = t; pd = d; hp = 1;
-        /* an over-relaxed step may only leave the range after the overlap test has seen
-           its end point: stop it at t_max (a plain step past t_max is a safe miss) */
-        t = (t + d > m->t_max) ? t + d : fov__minf(t + om * d, m->t_max);
-    }
-    o->t = t; o->d = d; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
-}
-
-/* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average, weight
-   beta) and step omega * d with omega = 2 / (1 - m), the step that reaches the surface
-   predicted by the line; back-step to a plain step when the spheres at t and t + z do not
-   overlap. A step never ends past t_max; when a plain step would, the sphere at t already
-   proves the rest of the range empty: a miss. */
-FOVSDF__PRIV void fovsdf__trace_autorelaxed(const fovsdf__marcher *m, const float ro[3],
-                                            const float rd[3], float t0, int32_t *mat,
-                                            fovsdf_stats *st, fovsdf__trace *o)
-{
-    float t = t0, pt = t0, pd = 0.0f, r, z, sl = -1.0f;
-    int hp = 0;
-    uint32_t steps = 0, kind = FOVSDF_MISS;
-    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
-    ++steps;
-    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
-    z = r;
-    while (kind == FOVSDF_MISS) {
-        float T, R, M, om;
-        if (!(t + r <= m->t_max)) break;
-        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
-        T = fov__minf(t + z, m->t_max);
-        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
-        ++steps;
-        /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of T) */
-        if (z > r && T - t > fov__absf(R) + r) { sl = -1.0f; z = r; continue; }
-        M = (R - r) / fov__maxf(T - t, 1e-20f);
-        sl += m->beta * (M - sl);
-        pt = t; pd = r; hp = 1;
-        t = T; r = R;
-        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
-        om = 2.0f / (1.0f - fovsdf__clampf(sl, -1.0f, 0.9f));
-        z = r * fov__maxf(1.0f, om);
-    }
-    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
-}
-
-/* Balint & Valasek 2018: fit a line through the last two distance samples and step
-   d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step when the
-   spheres do not overlap. Steps end at t_max at the latest (as AUTORELAXED). */
-FOVSDF__PRIV void fovsdf__trace_bv2018(const fovsdf__marcher *m, const float ro[3],
-                                       const float rd[3], float t0, int32_t *mat,
-                                       fovsdf_stats *st, fovsdf__trace *o)
-{
-    float t = t0, pt = t0, pd = 0.0f, r, z, dp = 0.0f, rp = 0.0f;
-    int hp = 0, have = 0;
-    uint32_t steps = 0, kind = FOVSDF_MISS;
-    r = fovsdf__eval_ray(m, ro, rd, t, m->inflate, mat, st);
-    ++steps;
-    if (r < fovsdf__thr(m, t)) kind = FOVSDF_HIT;
-    while (kind == FOVSDF_MISS) {
-        float T, R;
-        if (!(t + r <= m->t_max)) break;
-        if (steps >= m->max_steps) { kind = FOVSDF_EXHAUSTED; break; }
-        z = r;
-        if (have) {
-            float den = dp + rp - r, fac = den > 1e-20f ? (dp - rp + r) / den : 16.0f;
-            z = r * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
-        }
-        T = fov__minf(t + z, m->t_max);
-        R = fovsdf__eval_ray(m, ro, rd, T, m->inflate, mat, st);
-        ++steps;
-        if (have && z > r && T - t > r + fov__absf(R)) { have = 0; continue; }
-        dp = T - t; rp = r; have = 1;
-        pt = t; pd = r; hp = 1;
-        t = T; r = R;
-        if (r < fovsdf__thr(m, t)) { kind = FOVSDF_HIT; break; }
-    }
-    o->t = t; o->d = r; o->pt = pt; o->pd = pd; o->hp = hp; o->steps = steps; o->kind = kind;
-}
-
-/* One refinement move of the hit (*t, *d) by dt, evaluated at the exact scene (inflate 1):
-   kept when t + dt is in [t0, t_max], lowers |d|, is not inside by more than the margin, and
-   passes no point the march has not verified: a backward move or one of at most d (inside
-   the last sample's sphere), or a forward one whose end sphere (radius d2) overlaps that
-   sphere, d + d2 + 2 mg >= dt. Returns 1 with *t, *d (and *mat) moved, else 0 with nothing
-   changed. One evaluation. */
-FOVSDF__PRIV int fovsdf__refine_move(const fovsdf__marcher *m, const float ro[3],
-                                     const float rd[3], float t0, float dt, float mg, float *t,
-                                     float *d, int32_t *mat, fovsdf_stats *st)
-{
-    float t2 = *t + dt, d2;
-    int32_t m2 = 0;
-    if (!(t2 <= m->t_max && t2 >= t0)) return 0;
-    d2 = fovsdf__eval_ray(m, ro, rd, t2, 1.0f, mat ? &m2 : 0, st);
-    if (!(fov__absf(d2) < fov__absf(*d) && d2 > -fovsdf__mg(m, t2) &&
-          (dt <= fov__maxf(*d, 0.0f) || dt <= *d + d2 + 2.0f * mg)))
-        return 0;
-    *t = t2; *d = d2;
-    if (mat) *mat = m2;
-    return 1;
-}
-
 /* Hit refinement (every tracer): the threshold stops a ray up to eps (or a fraction of a pixel
    cone) short of the surface along the ray, which at grazing angles slides the hit point, and
    every texture on it, by that fraction of a pixel. One secant step through the last two
@@ -4157,7 +3927,7 @@ FOVSDF__PRIV int fovsdf__refine_move(const fovsdf__marcher *m, const float ro[3]
    - the sphere at its end point (radius d2) overlaps that one, d + d2 + 2 mg >= dt (then
      no point of the segment is inside by more than mg): roughly normal incidence, a
      plane at |cos(incidence)| = c while d (1/c - 1) <= 2 mg; or else
-   - one empty ball off the ray holds the segment it jumps (fovsdf__ball_cert): with
+   - one empty ball off the ray holds the segment it jumps (below): with
      A = p(t + d) and F = p(t + dt) the secant's end point, n the outward normal at F
      (the secant's slope along the ray and two forward differences across it), the ball
      around c = F + H n through A tangent to the plane at F (H = |A - F|^2 / (2 h_A),
@@ -4184,38 +3954,79 @@ FOVSDF__PRIV int fovsdf__refine_move(const fovsdf__marcher *m, const float ro[3]
    the shading offsets cover; it is also the
    depth the contract allows inside (NUMERICS: tol is 2 % of the threshold plus 8 ulps):
    a wall thinner than 2 mg is below what the refinement can see. */
-FOVSDF__PRIV void fovsdf__refine(const fovsdf__marcher *m, const float ro[3], const float rd[3],
-                                 float t0, fovsdf__trace *o, int32_t *mat, fovsdf_stats *st)
+
+/* Empty-ball certificate of a forward secant move from a hit at t (distance d > 0) to t2 >
+   t + d (see the hit refinement): a ball around c = F + H n, F = p(t2), n the
+   outward normal at F, H the radius of the ball tangent at F through A = p(t + d), is empty
+   when its radius is at most f(c) (Lipschitz 1); when A and F lie within f(c) + mg of c (less
+   the test's rounding), so does the segment between them (convexity), and no point of it is
+   inside by more than mg. 4 evaluations: F, two forward differences, c (1 when F is
+   already no better than the plain refinement would be). */
+
+/* ---- the march as a resumable state machine -------------------------------------------------
+   Every tracer and the hit refinement are written once, as a coroutine over fovsdf__mco: it
+   runs until it needs a distance, leaves the point in q (threshold qe, SDF scale qi) and
+   returns 1; whoever evaluates puts the distance and material in res, resm and calls it again.
+   fovsdf__march evaluates point by point; the wavefront (fovsdf__wave) evaluates the requests
+   of many rays in one batch. Both run the same code on the same values, so an image does not
+   depend on which one marched it, nor on how rays were grouped into batches. A point that
+   overflows (a camera near FLT_MAX) is never evaluated: it reads FLT_MAX, a miss, and leaves
+   the material alone. */
+typedef struct fovsdf__mco {
+    float ro[3], rd[3], t0;    /* the ray and its start */
+    float ec;                  /* the ray's own eps_cone (per_ray: scaled by its footprint) */
+    float q[3], qe, qi;        /* the pending evaluation: point, threshold, SDF scale */
+    float res;                 /* its result */
+    int32_t resm;
+    uint32_t pc;               /* where to resume (0: start) */
+    int got;                   /* 1: the last request was evaluated (a finite point) */
+    uint32_t evals;            /* evaluations so far */
+    /* tracer state (the result is t, d, steps, kind, mat) */
+    float t, d, pt, pd, om, tp, rp, z, sl, dp, T, R;
+    int hp, have, scaled;
+    uint32_t steps, kind;
+    int32_t mat, m2, mb;
+    /* refinement and ball certificate */
+    float t1, d1, dt, mg, tt, dd, slope, lim, tb, db, t2, fb, e, g1, a[3], f[3], b1[3], b2[3];
+    int ok;
+} fovsdf__mco;
+
+/* Yield a request at point w->q (already set), resume point k. */
+#define FOVSDF__YIELD_P(k, thr_, infl_)                                                             \
+    do {                                                                                            \
+        w->qe = (thr_); w->qi = (infl_); w->got = 1; w->pc = (k);                                    \
+        return 1;                                                                                   \
+    case (k):;                                                                                      \
+    } while (0)
+/* Request ro + tt rd (FLT_MAX without an evaluation when that overflows). */
+#define FOVSDF__YIELD_T(k, tt_, infl_)                                                              \
+    do {                                                                                            \
+        w->q[0] = w->ro[0] + w->rd[0] * (tt_); w->q[1] = w->ro[1] + w->rd[1] * (tt_);                \
+        w->q[2] = w->ro[2] + w->rd[2] * (tt_);                                                      \
+        if (!fov__finite3(w->q)) { w->res = FLT_MAX; w->got = 0; break; }                           \
+        w->qe = fovsdf__thr(m, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);                    \
+        return 1;                                                                                   \
+    case (k):;                                                                                      \
+    } while (0)
+
+FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, const float ro[3],
+                                   const float rd[3], float t0)
 {
-    if (o->kind != FOVSDF_HIT) return;
-    if (!o->hp && o->d > 0.0f && fov__finite(o->d)) {
-        /* hit at the first evaluation (a head start next to the surface): one plain step
-           (inside the sample's sphere) gives the second sample the secant needs (kept only
-           when it gets closer) */
-        float t1 = o->t, d1 = o->d;
-        if (fovsdf__refine_move(m, ro, rd, t0, o->d, 0.0f, &o->t, &o->d, mat, st)) {
-            o->pt = t1; o->pd = d1; o->hp = 1;
-        }
-    }
-    if (o->hp && o->pt < o->t && o->pd > o->d) {
-        float t = o->t, d = o->d, slope = (d - o->pd) / (t - o->pt), dt = -d / slope;
-        float lim = 64.0f * fov__absf(d), mg = fovsdf__mg(m, t), tb = t, db = d;
-        int32_t mb = 0;
-        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
-           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
-           (within the sphere; one evaluation) */
-        if (d > 0.0f && fov__finite(dt) && dt > d + 2.0f * mg &&
-            fovsdf__ball_cert(m, ro, rd, t, d, slope, t + fov__minf(dt, 1024.0f * d), mg, &tb,
-                              &db, mat ? &mb : 0, st)) {
-            o->t = tb; o->d = db;
-            if (mat) *mat = mb;
-            dt = 0.0f;
-        } else {
-            dt = fovsdf__clampf(dt, -lim, lim);
-            if (d > 0.0f && dt > d + 2.0f * mg) dt = d;
-        }
-        if (!fov__is0(dt) && fov__finite(dt))
-            (void)fovsdf__refine_move(m, ro, rd, t0, dt, mg, &o->t, &o->d, mat, st);
+    w->ro[0] = ro[0]; w->ro[1] = ro[1]; w->ro[2] = ro[2];
+    w->rd[0] = rd[0]; w->rd[1] = rd[1]; w->rd[2] = rd[2];
+    w->t0 = t0;
+    w->pc = 0;
+    w->evals = 0;
+    w->mat = 0;
+    w->scaled = 0;
+    w->ec = m->eps_cone;
+    if (m->per_ray && m->eps_cone > 0.0f) {
+        /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
+           subtends pixel_angle cos^2(theta) radially and pixel_angle cos(theta) tangentially;
+           the smaller one, so wide fields of view do not turn near misses into hits */
+        float cz = fovsdf__clampf(fov__dot(rd, m->fwd), 0.0f, 1.0f);
+        w->ec = m->eps_cone * cz * cz;
+        w->scaled = 1;
     }
 }
 
@@ -4223,46 +4034,295 @@ FOVSDF__PRIV void fovsdf__refine(const fovsdf__marcher *m, const float ro[3], co
    one tracer, then the hit refinement. Contract (every method): evaluations only at finite
    points with t <= t_max; a hit has a finite t in [t0, t_max] (t0 after the head-start
    check); a refinement never moves a hit past a point of the ray it has not verified (see
-   fovsdf__refine). */
+   the refinement below). Returns 1 with a request, 0 when done (kind, t, d, steps, mat). */
+FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
+{
+    fovsdf__marcher mr;
+    const fovsdf__marcher *m = m0;
+    float v, den, fac, M, om, u, s, q[3], n[3], c[3], ha, h2, hr, rr, g2;
+    int i, k;
+    if (w->scaled) { mr = *m0; mr.eps_cone = w->ec; m = &mr; }
+    switch (w->pc) {
+    case 0:
+        w->kind = FOVSDF_MISS;
+        if (!(w->t0 <= m->t_max)) { /* nothing to march: a miss for every method */
+            w->t = m->t_max; w->d = 0.0f; w->steps = 0;
+            w->pc = 9999u;
+            return 0;
+        }
+        if (m->verify_start && w->t0 > 0.0f) {
+            /* a heuristic head start (IPR, SKIP) can lie past the surface, inside it: one
+               evaluation tells, and such a ray starts over from the camera */
+            FOVSDF__YIELD_T(1u, w->t0, m->inflate);
+            if (w->res < 0.0f) w->t0 = 0.0f;
+        }
+        w->t = w->t0; w->d = 0.0f; w->pt = w->t0; w->pd = 0.0f; w->hp = 0; w->have = 0;
+        w->steps = 0; w->kind = FOVSDF_MISS;
+        if (m->method == FOVSDF_METHOD_RELAXED) {
+            /* Keinert et al. 2014, over-relaxed sphere tracing: step omega * d; when the
+               unbounding sphere at the new point does not overlap the previous one the step may
+               have jumped a surface: go back to the safe point tp + rp and continue with
+               omega = 1. */
+            w->om = m->omega; w->tp = w->t0; w->rp = 0.0f;
+            for (;;) {
+                if (w->t > m->t_max) break;
+                if (w->steps >= m->max_steps) { /* the last relaxed step is unverified */
+                    w->kind = FOVSDF_EXHAUSTED;
+                    if (w->have && w->t > w->tp + w->rp) { w->t = w->tp + w->rp; w->d = w->rp; }
+                    break;
+                }
+                FOVSDF__YIELD_T(10u, w->t, m->inflate);
+                w->d = w->res;
+                if (w->got) w->mat = w->resm;
+                ++w->steps;
+                if (w->have && w->om > 1.0f && w->d + w->rp < w->t - w->tp) {
+                    w->t = w->tp + w->rp; w->om = 1.0f; w->have = 0;
+                    continue;
+                }
+                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                w->tp = w->t; w->rp = w->d; w->have = 1;
+                w->pt = w->t; w->pd = w->d; w->hp = 1;
+                /* an over-relaxed step may only leave the range after the overlap test has
+                   seen its end point: stop it at t_max (a plain step past t_max is a safe
+                   miss) */
+                w->t = (w->t + w->d > m->t_max) ? w->t + w->d
+                                                : fov__minf(w->t + w->om * w->d, m->t_max);
+            }
+        } else if (m->method == FOVSDF_METHOD_AUTORELAXED) {
+            /* Ban & Valasek 2023: smooth the slope m of d along the ray (exponential average,
+               weight beta) and step omega * d with omega = 2 / (1 - m), the step that reaches
+               the surface predicted by the line; back-step to a plain step when the spheres at
+               t and t + z do not overlap. A step never ends past t_max; when a plain step
+               would, the sphere at t already proves the rest of the range empty: a miss.
+               (d is the distance r at t.) */
+            w->sl = -1.0f;
+            FOVSDF__YIELD_T(20u, w->t, m->inflate);
+            w->d = w->res;
+            if (w->got) w->mat = w->resm;
+            ++w->steps;
+            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            w->z = w->d;
+            while (w->kind == FOVSDF_MISS) {
+                if (!(w->t + w->d <= m->t_max)) break;
+                if (w->steps >= m->max_steps) { w->kind = FOVSDF_EXHAUSTED; break; }
+                w->T = fov__minf(w->t + w->z, m->t_max);
+                FOVSDF__YIELD_T(21u, w->T, m->inflate);
+                w->R = w->res;
+                if (w->got) w->mat = w->resm;
+                ++w->steps;
+                /* (a plain step, z = r, needs no test: T - t may exceed r by the rounding of
+                   T) */
+                if (w->z > w->d && w->T - w->t > fov__absf(w->R) + w->d) {
+                    w->sl = -1.0f; w->z = w->d;
+                    continue;
+                }
+                M = (w->R - w->d) / fov__maxf(w->T - w->t, 1e-20f);
+                w->sl += m->beta * (M - w->sl);
+                w->pt = w->t; w->pd = w->d; w->hp = 1;
+                w->t = w->T; w->d = w->R;
+                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                om = 2.0f / (1.0f - fovsdf__clampf(w->sl, -1.0f, 0.9f));
+                w->z = w->d * fov__maxf(1.0f, om);
+            }
+        } else if (m->method == FOVSDF_METHOD_BV2018) {
+            /* Balint & Valasek 2018: fit a line through the last two distance samples and step
+               d * (1 + relax * (dp - rp + d) / (dp + rp - d)), falling back to a plain step
+               when the spheres do not overlap. Steps end at t_max at the latest (as
+               AUTORELAXED). */
+            w->dp = 0.0f; w->rp = 0.0f;
+            FOVSDF__YIELD_T(30u, w->t, m->inflate);
+            w->d = w->res;
+            if (w->got) w->mat = w->resm;
+            ++w->steps;
+            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            while (w->kind == FOVSDF_MISS) {
+                if (!(w->t + w->d <= m->t_max)) break;
+                if (w->steps >= m->max_steps) { w->kind = FOVSDF_EXHAUSTED; break; }
+                w->z = w->d;
+                if (w->have) {
+                    den = w->dp + w->rp - w->d;
+                    fac = den > 1e-20f ? (w->dp - w->rp + w->d) / den : 16.0f;
+                    w->z = w->d * (1.0f + m->relax * fovsdf__clampf(fac, 0.0f, 16.0f));
+                }
+                w->T = fov__minf(w->t + w->z, m->t_max);
+                FOVSDF__YIELD_T(31u, w->T, m->inflate);
+                w->R = w->res;
+                if (w->got) w->mat = w->resm;
+                ++w->steps;
+                if (w->have && w->z > w->d && w->T - w->t > w->d + fov__absf(w->R)) {
+                    w->have = 0;
+                    continue;
+                }
+                w->dp = w->T - w->t; w->rp = w->d; w->have = 1;
+                w->pt = w->t; w->pd = w->d; w->hp = 1;
+                w->t = w->T; w->d = w->R;
+                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+            }
+        } else {
+            /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
+            for (;;) {
+                if (w->t > m->t_max) break;
+                if (w->steps >= m->max_steps) { w->kind = FOVSDF_EXHAUSTED; break; }
+                FOVSDF__YIELD_T(40u, w->t, m->inflate);
+                w->d = w->res;
+                if (w->got) w->mat = w->resm;
+                ++w->steps;
+                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                w->pt = w->t; w->pd = w->d; w->hp = 1;
+                w->t += w->d;
+            }
+        }
+        /* the hit refinement (see the comment above) */
+        if (w->kind != FOVSDF_HIT) goto done;
+        if (!w->hp && w->d > 0.0f && fov__finite(w->d)) {
+            /* hit at the first evaluation (a head start next to the surface): one plain step
+               (inside the sample's sphere) gives the second sample the secant needs (kept only
+               when it gets closer) */
+            w->t1 = w->t; w->d1 = w->d;
+            w->dt = w->d; w->mg = 0.0f;
+            w->t2 = w->t + w->dt;
+            if (w->t2 <= m->t_max && w->t2 >= w->t0) {
+                FOVSDF__YIELD_T(50u, w->t2, 1.0f);
+                w->m2 = w->got ? w->resm : 0;
+                v = w->res;
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                    (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
+                    w->t = w->t2; w->d = v; w->mat = w->m2;
+                    w->pt = w->t1; w->pd = w->d1; w->hp = 1;
+                }
+            }
+        }
+        if (!(w->hp && w->pt < w->t && w->pd > w->d)) goto done;
+        w->tt = w->t; w->dd = w->d;
+        w->slope = (w->dd - w->pd) / (w->tt - w->pt);
+        w->dt = -w->dd / w->slope;
+        w->lim = 64.0f * fov__absf(w->dd);
+        w->mg = fovsdf__mg(m, w->tt);
+        w->tb = w->tt; w->db = w->dd; w->mb = 0;
+        w->ok = 0;
+        /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
+           verified by the spheres: try the empty ball (up to 1024 |d| ahead), else move by d
+           (within the sphere; one evaluation) */
+        if (w->dd > 0.0f && fov__finite(w->dt) && w->dt > w->dd + 2.0f * w->mg) {
+            /* the empty-ball certificate (see its comment above) */
+            w->t2 = w->tt + fov__minf(w->dt, 1024.0f * w->dd);
+            if (!(w->t2 <= m->t_max) || !(w->t2 > w->tt + w->dd)) goto ball_end;
+            for (i = 0; i < 3; ++i) {
+                w->a[i] = w->ro[i] + w->rd[i] * (w->tt + w->dd);
+                w->f[i] = w->ro[i] + w->rd[i] * w->t2;
+            }
+            if (!fov__finite3(w->a) || !fov__finite3(w->f)) goto ball_end;
+            w->q[0] = w->f[0]; w->q[1] = w->f[1]; w->q[2] = w->f[2];
+            FOVSDF__YIELD_P(60u, fovsdf__thr(m, w->t2), 1.0f);
+            w->fb = w->res; w->m2 = w->resm;
+            /* the secant found the surface (F at least 4 times closer than the hit; a ray
+               running along a curved surface keeps the hit where the threshold stopped it),
+               and F is not inside by more than the margin */
+            if (!(fov__absf(w->fb) <= 0.25f * w->dd && w->fb > -fovsdf__mg(m, w->t2)))
+                goto ball_end;
+            /* the normal: the secant's slope is the derivative along the ray; two forward
+               differences from F across it give the rest. The step: at least the threshold,
+               and large enough that the float noise of the differences (u, 8 ulps of the
+               position) tilts n by less than sqrt(mg / H) (a tilt theta lowers f(c) by
+               H theta^2 / 2); H is about (t2 - t)^2 / (2 d) for a plane (sin(incidence) =
+               d / (t2 - t)) */
+            u = m->ulp0 + m->ulp1 * w->t2;
+            s = w->t2 - w->tt;
+            w->e = fov__maxf(fovsdf__thr(m, w->t2), FOV__SQRT(u * (s * s / (2.0f * w->dd))));
+            {
+                float ax[3] = { 0.0f, 0.0f, 0.0f };
+                k = fov__absf(w->rd[0]) <= fov__absf(w->rd[1])
+                        ? (fov__absf(w->rd[0]) <= fov__absf(w->rd[2]) ? 0 : 2)
+                        : (fov__absf(w->rd[1]) <= fov__absf(w->rd[2]) ? 1 : 2);
+                ax[k] = 1.0f;
+                fov__cross(w->rd, ax, w->b1);
+            }
+            if (!(fovsdf__normalize(w->b1) > 0.0f)) goto ball_end;
+            fov__cross(w->rd, w->b1, w->b2);
+            for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b1[i];
+            if (!fov__finite3(w->q)) goto ball_end;
+            FOVSDF__YIELD_P(61u, fovsdf__thr(m, w->t2), 1.0f);
+            w->g1 = w->res - w->fb;
+            for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b2[i];
+            if (!fov__finite3(w->q)) goto ball_end;
+            FOVSDF__YIELD_P(62u, fovsdf__thr(m, w->t2), 1.0f);
+            g2 = w->res - w->fb;
+            for (i = 0; i < 3; ++i)
+                n[i] = w->slope * w->e * w->rd[i] + w->g1 * w->b1[i] + g2 * w->b2[i];
+            if (!(fovsdf__normalize(n) > 0.0f)) goto ball_end;
+            for (i = 0; i < 3; ++i) q[i] = w->a[i] - w->f[i];
+            ha = fov__dot(q, n); /* A's height above the tangent plane at F */
+            h2 = fov__dot(q, q);
+            if (!(ha > 0.0f)) goto ball_end;
+            hr = h2 / (2.0f * ha); /* the ball through A tangent at F */
+            /* |A - c|, |F - c| and f(c) round by a few ulps of H: that must leave most of the
+               margin */
+            if (!(hr <= FLT_MAX) || !(8.0f * FLT_EPSILON * hr < w->mg)) goto ball_end;
+            for (i = 0; i < 3; ++i) c[i] = w->f[i] + hr * n[i];
+            if (!fov__finite3(c)) goto ball_end;
+            /* keep what the test needs after the evaluation: c in a, hr in b2[0] */
+            for (i = 0; i < 3; ++i) { w->a[i] -= c[i]; w->f[i] -= c[i]; w->q[i] = c[i]; }
+            w->b2[0] = hr;
+            FOVSDF__YIELD_P(63u, fovsdf__thr(m, w->t2), 1.0f);
+            v = w->res; /* f(c) */
+            if (!(v > 0.0f) || !(v < FLT_MAX)) goto ball_end;
+            rr = v + w->mg - 4.0f * FLT_EPSILON * w->b2[0];
+            if (!(fov__len(w->a) <= rr && fov__len(w->f) <= rr)) goto ball_end;
+            w->tb = w->t2; w->db = w->fb; w->mb = w->m2;
+            w->ok = 1;
+        ball_end:;
+        }
+        if (w->ok) {
+            w->t = w->tb; w->d = w->db; w->mat = w->mb;
+            w->dt = 0.0f;
+        } else {
+            w->dt = fovsdf__clampf(w->dt, -w->lim, w->lim);
+            if (w->dd > 0.0f && w->dt > w->dd + 2.0f * w->mg) w->dt = w->dd;
+        }
+        if (!fov__is0(w->dt) && fov__finite(w->dt)) {
+            /* one refinement move of the hit (t, d) by dt, evaluated at the exact scene
+               (inflate 1): kept when t + dt is in [t0, t_max], lowers |d|, is not inside by
+               more than the margin, and passes no point the march has not verified: a backward
+               move or one of at most d (inside the last sample's sphere), or a forward one
+               whose end sphere (radius d2) overlaps that sphere, d + d2 + 2 mg >= dt */
+            w->t2 = w->t + w->dt;
+            if (w->t2 <= m->t_max && w->t2 >= w->t0) {
+                FOVSDF__YIELD_T(51u, w->t2, 1.0f);
+                w->m2 = w->got ? w->resm : 0;
+                v = w->res;
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                    (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
+                    w->t = w->t2; w->d = v; w->mat = w->m2;
+                }
+            }
+        }
+    done:
+        w->pc = 9999u;
+        return 0;
+    default:
+        return 0;
+    }
+}
+#undef FOVSDF__YIELD_P
+#undef FOVSDF__YIELD_T
+
+/* The march point by point (a coroutine fed one evaluation at a time). */
 FOVSDF__PRIV void fovsdf__march(const fovsdf__marcher *m, const float ro[3], const float rd[3],
                                 float t0, fovsdf_hit *h, int32_t *mat, fovsdf_stats *st)
 {
-    uint32_t ev0;
-    fovsdf_stats local;
-    fovsdf__marcher mr;
-    fovsdf__trace o;
-    if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
-    ev0 = (uint32_t)st->evals;
-    h->kind = FOVSDF_MISS;
-    if (!(t0 <= m->t_max)) { /* nothing to march: a miss for every method */
-        h->t = m->t_max; h->dist = 0.0f; h->steps = 0; h->evals = 0;
-        return;
+    fovsdf__mco w;
+    fovsdf__mco_init(m, &w, ro, rd, t0);
+    if (mat) w.mat = *mat; /* untouched unless an evaluation reports one */
+    while (fovsdf__mco_run(m, &w)) {
+        w.res = fovsdf__eval_in(m->sc, m->inv_lip, w.q, w.qe, w.qi, &w.resm, st);
+        ++w.evals;
     }
-    if (m->per_ray && m->eps_cone > 0.0f) {
-        /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
-           subtends pixel_angle cos^2(theta) radially and pixel_angle cos(theta) tangentially;
-           the smaller one, so wide fields of view do not turn near misses into hits */
-        float cz = fovsdf__clampf(fov__dot(rd, m->fwd), 0.0f, 1.0f);
-        mr = *m;
-        mr.eps_cone = m->eps_cone * cz * cz;
-        m = &mr;
-    }
-    if (m->verify_start && t0 > 0.0f) {
-        /* a heuristic head start (IPR, SKIP) can lie past the surface, inside it: one
-           evaluation tells, and such a ray starts over from the camera */
-        if (fovsdf__eval_ray(m, ro, rd, t0, m->inflate, 0, st) < 0.0f) t0 = 0.0f;
-    }
-    if (m->method == FOVSDF_METHOD_RELAXED) fovsdf__trace_relaxed(m, ro, rd, t0, mat, st, &o);
-    else if (m->method == FOVSDF_METHOD_AUTORELAXED)
-        fovsdf__trace_autorelaxed(m, ro, rd, t0, mat, st, &o);
-    else if (m->method == FOVSDF_METHOD_BV2018) fovsdf__trace_bv2018(m, ro, rd, t0, mat, st, &o);
-    else fovsdf__trace_classic(m, ro, rd, t0, mat, st, &o);
-    fovsdf__refine(m, ro, rd, t0, &o, mat, st);
-    h->kind = o.kind;
-    h->t = o.kind == FOVSDF_MISS ? m->t_max : o.t;
-    h->dist = o.d;
-    h->steps = o.steps;
-    h->evals = (uint32_t)st->evals - ev0;
+    h->kind = w.kind;
+    h->t = w.kind == FOVSDF_MISS ? m->t_max : w.t;
+    h->dist = w.d;
+    h->steps = w.steps;
+    h->evals = w.evals;
+    if (mat) *mat = w.mat;
 }
 
 FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher *m,
