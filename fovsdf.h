@@ -4423,66 +4423,104 @@ FOVSDF_API fov_result fovsdf_distance_batch(const fovsdf_ctx *c, uint32_t n, con
     return FOV_OK;
 }
 
+/* The tetrahedron technique: n = sum_i k_i f(p + h k_i), k_i = (+-1, +-1, +-1) with an even
+   number of minus signs; 4 evaluations. */
+static const float fovsdf__tet[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f },
+                                         { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
+
+/* The normal from the 4 distances (FLT_MAX already mapped to 0). */
+FOVSDF__PRIV void fovsdf__normal_from(const float dv[4], float n[3])
+{
+    int i;
+    n[0] = n[1] = n[2] = 0.0f;
+    for (i = 0; i < 4; ++i) {
+        n[0] += fovsdf__tet[i][0] * dv[i]; n[1] += fovsdf__tet[i][1] * dv[i];
+        n[2] += fovsdf__tet[i][2] * dv[i];
+    }
+    if (!fov__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums
+                               to 0, so differences from the first give the same normal */
+        n[0] = n[1] = n[2] = 0.0f;
+        for (i = 1; i < 4; ++i) {
+            float d = dv[i] - dv[0];
+            n[0] += fovsdf__tet[i][0] * d; n[1] += fovsdf__tet[i][1] * d;
+            n[2] += fovsdf__tet[i][2] * d;
+        }
+    }
+    if (!(fovsdf__normalize(n) > 0.0f)) { n[0] = 0.0f; n[1] = 1.0f; n[2] = 0.0f; }
+}
+
 FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, float n[3],
                               fovsdf_stats *st)
 {
-    /* tetrahedron technique: n = sum_i k_i f(p + h k_i), k_i = (+-1, +-1, +-1) with an even
-       number of minus signs; 4 evaluations. */
-    static const float k[4][3] = { { 1.0f, -1.0f, -1.0f }, { -1.0f, -1.0f, 1.0f },
-                                   { -1.0f, 1.0f, -1.0f }, { 1.0f, 1.0f, 1.0f } };
     fovsdf_stats local;
     int i;
     float inv, dv[4];
     if (!c || !p || !n) return;
     if (!st) { FOV_MEMSET(&local, 0, sizeof local); st = &local; }
     inv = 1.0f / c->scene.lipschitz;
-    n[0] = n[1] = n[2] = 0.0f;
     for (i = 0; i < 4; ++i) {
         float q[3], d;
-        q[0] = p[0] + h * k[i][0]; q[1] = p[1] + h * k[i][1]; q[2] = p[2] + h * k[i][2];
+        q[0] = p[0] + h * fovsdf__tet[i][0]; q[1] = p[1] + h * fovsdf__tet[i][1];
+        q[2] = p[2] + h * fovsdf__tet[i][2];
         d = fovsdf__eval_sc(&c->scene, inv, q, 0.0f, 0, st);
-        if (d >= FLT_MAX) d = 0.0f;
-        dv[i] = d;
-        n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
-    }
-    if (!fov__finite3(n)) { /* distances near FLT_MAX overflowed the sums: each k column sums to 0,
-                                  so differences from the first give the same normal */
-        n[0] = n[1] = n[2] = 0.0f;
-        for (i = 1; i < 4; ++i) {
-            float d = dv[i] - dv[0];
-            n[0] += k[i][0] * d; n[1] += k[i][1] * d; n[2] += k[i][2] * d;
-        }
+        dv[i] = d >= FLT_MAX ? 0.0f : d;
     }
     st->evals_normal += 4;
-    if (!(fovsdf__normalize(n) > 0.0f)) { n[0] = 0.0f; n[1] = 1.0f; n[2] = 0.0f; }
+    fovsdf__normal_from(dv, n);
 }
 
-/* Algorithm 2 core; evaluates the scene scaled by inflate (Skipping Spheres' low-resolution
-   shadow rays) and returns in *t_out where the penumbra began (the first t with k h / t < 1),
-   or the distance reached when the light was never attenuated. */
+/* Algorithm 2 as a stepper (the shadow rays of the wavefront and of fovsdf__shadow): evaluates
+   the scene at p + t l, and ends with res (the light fraction) and t_att, where the penumbra
+   began (the first t with k h / t < 1; t when the light was never attenuated). */
+typedef struct fovsdf__sco {
+    float p[3], l[3], t, t_end, k, res, floor0, t_att;
+    uint32_t i, evals;
+} fovsdf__sco;
+
+/* Starts a shadow ray; returns 1 when it needs an evaluation (at p + t l). */
+FOVSDF__PRIV int fovsdf__sco_init(const fovsdf_ctx *c, fovsdf__sco *s, const float p[3],
+                                  const float l[3], float t_start, float t_end, float k,
+                                  fovsdf_stats *st)
+{
+    s->p[0] = p[0]; s->p[1] = p[1]; s->p[2] = p[2];
+    s->l[0] = l[0]; s->l[1] = l[1]; s->l[2] = l[2];
+    s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->k = k; s->t_att = -1.0f;
+    s->i = 0; s->evals = 0;
+    if (!(s->t > 0.0f)) s->t = 1e-6f;
+    s->floor0 = 8.0f * FLT_EPSILON * fov__len(p);
+    st->shadow_rays++;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+}
+/* Feeds the distance h at p + t l; returns 1 when the ray needs another one. */
+FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
+{
+    ++s->evals;
+    if (s->t_att < 0.0f && s->k * h < s->t) s->t_att = s->t;
+    s->res = fov__minf(s->res, s->k * h / s->t);
+    if (s->res < c->cfg.shadow_eps) { s->res = 0.0f; return 0; }
+    s->t += fov__maxf(h, s->floor0 + 8.0f * FLT_EPSILON * s->t);
+    ++s->i;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+}
+
+/* Algorithm 2 core, point by point, on the scene scaled by inflate (Skipping Spheres'
+   low-resolution shadow rays); *t_out: where the penumbra began, or the distance reached. */
 FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const float l[3],
                                   float t_start, float t_end, float k, float inflate, float *t_out,
                                   fovsdf_stats *st)
 {
-    float res = 1.0f, t = t_start, inv, floor0, t_att = -1.0f;
-    uint32_t i;
-    uint64_t e0 = st->evals;
-    if (!(t > 0.0f)) t = 1e-6f;
-    inv = 1.0f / c->scene.lipschitz;
-    floor0 = 8.0f * FLT_EPSILON * fov__len(p);
-    st->shadow_rays++;
-    for (i = 0; i < c->cfg.shadow_steps && t < t_end; ++i) {
+    fovsdf__sco s;
+    float inv = 1.0f / c->scene.lipschitz;
+    int more = fovsdf__sco_init(c, &s, p, l, t_start, t_end, k, st);
+    while (more) {
         float q[3], h;
-        q[0] = p[0] + l[0] * t; q[1] = p[1] + l[1] * t; q[2] = p[2] + l[2] * t;
+        q[0] = s.p[0] + s.l[0] * s.t; q[1] = s.p[1] + s.l[1] * s.t; q[2] = s.p[2] + s.l[2] * s.t;
         h = fovsdf__eval_in(&c->scene, inv, q, c->cfg.eps, inflate, 0, st);
-        if (t_att < 0.0f && k * h < t) t_att = t;
-        res = fov__minf(res, k * h / t);
-        if (res < c->cfg.shadow_eps) { res = 0.0f; break; }
-        t += fov__maxf(h, floor0 + 8.0f * FLT_EPSILON * t);
+        more = fovsdf__sco_next(c, &s, h);
     }
-    st->evals_shadow += st->evals - e0;
-    *t_out = t_att >= 0.0f ? t_att : t;
-    return fovsdf__clampf(res, 0.0f, 1.0f);
+    st->evals_shadow += s.evals;
+    *t_out = s.t_att >= 0.0f ? s.t_att : s.t;
+    return fovsdf__clampf(s.res, 0.0f, 1.0f);
 }
 
 FOVSDF_API float fovsdf_soft_shadow(const fovsdf_ctx *c, const float p[3], const float l[3],
@@ -4558,6 +4596,34 @@ FOVSDF__PRIV int fovsdf__light_dir(const fovsdf_ctx *c, uint32_t i, const float 
     return 1;
 }
 
+/* Light i at a hit p with normal n: 0 when it adds nothing (no light reaches p, or p faces
+   away: no shadow ray either); else its direction l, ndl, att and, when it casts a shadow
+   here, shadow 1 with the shadow ray's start q (p off the surface by off), t0, dist and k. */
+typedef struct fovsdf__lit { float l[3], ndl, att, q[3], t0, dist, k; int shadow; } fovsdf__lit;
+FOVSDF__PRIV int fovsdf__light_prep(const fovsdf_ctx *c, uint32_t i, const float p[3],
+                                    const float n[3], float off, const float *sh_start,
+                                    fovsdf__lit *o)
+{
+    const fovsdf_light *L = &c->scene.lights[i];
+    if (!fovsdf__light_dir(c, i, p, o->l, &o->dist, &o->att)) return 0;
+    o->ndl = fov__dot(n, o->l);
+    if (o->ndl <= 0.0f) return 0; /* facing away: no light, no shadow ray */
+    o->shadow = 0;
+    if (c->cfg.shading == FOVSDF_SHADE_FULL && L->shadow_k >= 0.0f) {
+        o->k = L->shadow_k > 0.0f ? L->shadow_k : 16.0f;
+        o->t0 = c->cfg.shadow_t0;
+        if (sh_start && sh_start[i] > o->t0) o->t0 = sh_start[i];
+        o->q[0] = p[0] + n[0] * off; o->q[1] = p[1] + n[1] * off; o->q[2] = p[2] + n[2] * off;
+        o->shadow = o->t0 < o->dist; /* else fully lit */
+    }
+    return 1;
+}
+/* The offset of shadow rays from the surface at p. */
+FOVSDF__PRIV float fovsdf__shadow_off(const fovsdf_ctx *c, const float p[3])
+{
+    return fov__maxf(2.0f * c->cfg.eps, 16.0f * FLT_EPSILON * fov__len(p));
+}
+
 FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const float n[3],
                                 int32_t material, float rgb[3], const float *sh_start,
                                 fovsdf_stats *st)
@@ -4566,22 +4632,16 @@ FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const flo
     uint32_t i;
     fovsdf__albedo(c, p, material, alb);
     acc[0] = c->scene.ambient[0]; acc[1] = c->scene.ambient[1]; acc[2] = c->scene.ambient[2];
-    off = fov__maxf(2.0f * c->cfg.eps, 16.0f * FLT_EPSILON * fov__len(p));
+    off = fovsdf__shadow_off(c, p);
     for (i = 0; i < c->scene.num_lights; ++i) {
         const fovsdf_light *L = &c->scene.lights[i];
-        float l[3], dist, att, ndl, sh = 1.0f;
-        if (!fovsdf__light_dir(c, i, p, l, &dist, &att)) continue;
-        ndl = fov__dot(n, l);
-        if (ndl <= 0.0f) continue; /* facing away: no light, no shadow ray */
-        if (c->cfg.shading == FOVSDF_SHADE_FULL && L->shadow_k >= 0.0f) {
-            float q[3], k = L->shadow_k > 0.0f ? L->shadow_k : 16.0f, tr, t0 = c->cfg.shadow_t0;
-            if (sh_start && sh_start[i] > t0) t0 = sh_start[i];
-            q[0] = p[0] + n[0] * off; q[1] = p[1] + n[1] * off; q[2] = p[2] + n[2] * off;
-            sh = t0 >= dist ? 1.0f : fovsdf__shadow(c, q, l, t0, dist, k, 1.0f, &tr, st);
-        }
-        acc[0] += L->color[0] * ndl * att * sh;
-        acc[1] += L->color[1] * ndl * att * sh;
-        acc[2] += L->color[2] * ndl * att * sh;
+        fovsdf__lit lt;
+        float sh = 1.0f, tr;
+        if (!fovsdf__light_prep(c, i, p, n, off, sh_start, &lt)) continue;
+        if (lt.shadow) sh = fovsdf__shadow(c, lt.q, lt.l, lt.t0, lt.dist, lt.k, 1.0f, &tr, st);
+        acc[0] += L->color[0] * lt.ndl * lt.att * sh;
+        acc[1] += L->color[1] * lt.ndl * lt.att * sh;
+        acc[2] += L->color[2] * lt.ndl * lt.att * sh;
     }
     /* NaN (0 * inf): 0 */
     for (i = 0; i < 3u; ++i) rgb[i] = fovsdf__clampf(alb[i] * acc[i], 0.0f, FOVSDF__RGB_MAX);
@@ -5002,32 +5062,304 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
     fovsdf__shade_ray(c, m0, ro, rd, &h, mat, sh_start, sh_ref_t, sh_tol, r->col, st);
 }
 
-/* One pixel: all samples, shading, outputs. */
-FOVSDF__PRIV void fovsdf__pixel(const fovsdf_ctx *c, const fovsdf__marcher *m0, uint32_t x,
-                                uint32_t y, const fovsdf_output *o, fovsdf_stats *st, float t_start,
-                                int known_miss, const float *sh_start, float sh_ref_t, float sh_tol)
+
+/* ---- the wavefront ---------------------------------------------------------------------------
+   The pixels a tile renders are queued (fovsdf__wave_pixel) and rendered together
+   (fovsdf__wave_flush): their sample rays march as one batch, each step evaluating up to
+   FOVSDF_BATCH pending requests in one call (rays that finish leave, the others keep the batch
+   full); then the normals of all hits (4 points each), then each light's shadow rays, the same
+   way. Each ray runs the same coroutine as a single march and every value is exactly the
+   per-point one, so images and counts do not depend on FOVSDF_WAVE, FOVSDF_BATCH or the
+   caller's split into rows and tiles. Stack: about FOVSDF_WAVE * 0.4 KiB (50 KiB at 128). */
+#ifndef FOVSDF_WAVE
+#define FOVSDF_WAVE 128
+#endif
+#if FOVSDF_WAVE < 16
+#error "fovsdf: FOVSDF_WAVE must be at least 16 (one pixel's 16 samples)"
+#endif
+
+typedef struct fovsdf__wjob {
+    uint32_t x, y;
+    float t_start, sh_ref_t, sh_tol;
+    int known_miss, has_sh;
+    float sh[FOVSDF_MAX_LIGHTS];
+} fovsdf__wjob;
+
+typedef struct fovsdf__wray {
+    fovsdf__mco mc;                 /* the march */
+    float p[3], n[3], col[3], alb[3], acc[3], dv[4], off, ndl, att;
+    uint32_t sev;                   /* shading evaluations */
+    int hit, lit, prep, shadow;     /* lit: Lambert with lights; prep, shadow: the current light */
+} fovsdf__wray;
+
+typedef struct fovsdf__wave {
+    const fovsdf_ctx *c;
+    const fovsdf__marcher *m;
+    const fovsdf_output *o;
+    fovsdf_stats *st;
+    uint32_t nj, cap;
+    fovsdf__wjob job[FOVSDF_WAVE];
+    fovsdf__wray ray[FOVSDF_WAVE];
+    fovsdf__sco sco[FOVSDF_WAVE];
+    uint32_t q[FOVSDF_WAVE];        /* ring of rays waiting for an evaluation */
+    float bx[FOVSDF__L + 4], by[FOVSDF__L + 4], bz[FOVSDF__L + 4], be[FOVSDF__L + 4],
+        bd[FOVSDF__L + 4];
+    int32_t bm[FOVSDF__L + 4];
+    uint32_t bk[FOVSDF__L + 4];
+} fovsdf__wave;
+
+FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const fovsdf_output *o,
+                                    fovsdf_stats *st)
 {
-    float acc[3] = { 0.0f, 0.0f, 0.0f }, tnear = c->t_max;
-    uint32_t s, spp = c->cfg.spp, nhit = 0;
-    int32_t mnear = -1;
-    uint32_t nsteps = 0;
-    uint64_t e0 = st->evals;
-    for (s = 0; s < spp; ++s) {
-        float ox, oy;
-        fovsdf__smp r;
-        fovsdf__sample_offset(spp, s, &ox, &oy);
-        fovsdf__sample(c, m0, (float)x + 0.5f + ox, (float)y + 0.5f + oy, t_start, known_miss,
-                       sh_start, sh_ref_t, sh_tol, &r, st);
-        nsteps += r.steps;
-        if (r.hit) {
-            ++nhit;
-            if (r.t < tnear) { tnear = r.t; mnear = r.mat; }
+    w->c = c; w->m = 0; w->o = o; w->st = st; w->nj = 0;
+    w->cap = FOVSDF_WAVE / c->cfg.spp;
+}
+
+/* March every queued request of the ring (head 0, cnt entries) to the end. */
+FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, uint32_t cnt)
+{
+    const fovsdf__marcher *m = w->m;
+    uint32_t head = 0, nb, i;
+    while (cnt > 0) {
+        float qi = w->ray[w->q[head]].mc.qi;
+        for (nb = 0; nb < FOVSDF_BATCH && nb < cnt; ++nb) { /* one SDF scale per batch */
+            const fovsdf__mco *mc = &w->ray[w->q[(head + nb) % FOVSDF_WAVE]].mc;
+            if (mc->qi < qi || mc->qi > qi) break;
+            w->bx[nb] = mc->q[0]; w->by[nb] = mc->q[1]; w->bz[nb] = mc->q[2];
+            w->be[nb] = mc->qe;
         }
-        acc[0] += r.col[0]; acc[1] += r.col[1]; acc[2] += r.col[2];
+        fovsdf__eval_batch(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, 0, w->bd,
+                           w->bm, w->st);
+        for (i = 0; i < nb; ++i) {
+            uint32_t k = w->q[head];
+            fovsdf__mco *mc = &w->ray[k].mc;
+            head = (head + 1u) % FOVSDF_WAVE;
+            --cnt;
+            mc->res = w->bd[i]; mc->resm = w->bm[i]; ++mc->evals;
+            if (fovsdf__mco_run(m, mc)) { w->q[(head + cnt) % FOVSDF_WAVE] = k; ++cnt; }
+        }
     }
-    acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
-    fovsdf__put(c, o, x, y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u),
-                (uint32_t)(st->evals - e0), known_miss ? c->t_max : t_start, nsteps, mnear, 1u);
+}
+
+/* The shadow rays w->sco[k] of the rays in w->q[0 .. cnt) to the end. */
+FOVSDF__PRIV void fovsdf__wave_shadows(fovsdf__wave *w, uint32_t cnt)
+{
+    const fovsdf_ctx *c = w->c;
+    uint32_t head = 0, nb, i;
+    float inv = 1.0f / c->scene.lipschitz;
+    for (i = 0; i < FOVSDF_BATCH; ++i) w->be[i] = c->cfg.eps;
+    while (cnt > 0) {
+        for (nb = 0; nb < FOVSDF_BATCH && nb < cnt; ++nb) {
+            const fovsdf__sco *s = &w->sco[w->q[(head + nb) % FOVSDF_WAVE]];
+            w->bx[nb] = s->p[0] + s->l[0] * s->t; w->by[nb] = s->p[1] + s->l[1] * s->t;
+            w->bz[nb] = s->p[2] + s->l[2] * s->t;
+        }
+        fovsdf__eval_batch(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd, 0,
+                           w->st);
+        for (i = 0; i < nb; ++i) {
+            uint32_t k = w->q[head];
+            head = (head + 1u) % FOVSDF_WAVE;
+            --cnt;
+            if (fovsdf__sco_next(c, &w->sco[k], w->bd[i])) {
+                w->q[(head + cnt) % FOVSDF_WAVE] = k;
+                ++cnt;
+            }
+        }
+    }
+}
+
+/* Normals of the rays k with ray[k].lit or NORMALS shading: 4 points each, in batches. */
+FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float *hn)
+{
+    const fovsdf_ctx *c = w->c;
+    float inv = 1.0f / c->scene.lipschitz;
+    uint32_t k, i, nb = 0, j;
+    for (i = 0; i < FOVSDF__L + 4u; ++i) w->be[i] = 0.0f;
+    for (k = 0; k <= nr; ++k) {
+        if (k < nr && w->ray[k].lit) {
+            const fovsdf__wray *r = &w->ray[k];
+            for (i = 0; i < 4; ++i) {
+                w->bx[nb] = r->p[0] + hn[k] * fovsdf__tet[i][0];
+                w->by[nb] = r->p[1] + hn[k] * fovsdf__tet[i][1];
+                w->bz[nb] = r->p[2] + hn[k] * fovsdf__tet[i][2];
+                w->bk[nb] = 4u * k + i;
+                ++nb;
+            }
+        }
+        if (nb + 4u > FOVSDF__L || (k == nr && nb > 0)) {
+            for (j = 0; j < nb; j += FOVSDF_BATCH)
+                fovsdf__eval_batch(&c->scene, inv, nb - j < FOVSDF_BATCH ? nb - j : FOVSDF_BATCH,
+                                   w->bx + j, w->by + j, w->bz + j, w->be + j, 1.0f, 0,
+                                   w->bd + j, 0, w->st);
+            for (j = 0; j < nb; ++j)
+                w->ray[w->bk[j] / 4u].dv[w->bk[j] % 4u] = w->bd[j] >= FLT_MAX ? 0.0f : w->bd[j];
+            nb = 0;
+        }
+    }
+}
+
+/* Render the queued pixels (see above). */
+FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
+{
+    const fovsdf_ctx *c = w->c;
+    const fovsdf__marcher *m = w->m;
+    fovsdf_stats *st = w->st;
+    uint32_t spp = c->cfg.spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
+    float hn[FOVSDF_WAVE];
+    int shading = c->cfg.shading == FOVSDF_SHADE_FULL || c->cfg.shading == FOVSDF_SHADE_NO_SHADOWS;
+    if (w->nj == 0) return;
+    /* 1. the sample rays, marched as one wavefront */
+    for (k = 0; k < nr; ++k) {
+        const fovsdf__wjob *jb = &w->job[k / spp];
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ox, oy, ro[3], rd[3];
+        fovsdf__sample_offset(spp, k % spp, &ox, &oy);
+        fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
+        if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
+            mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
+        } else if (fovsdf__mco_run(m, mc)) {
+            w->q[cnt++] = k;
+        }
+    }
+    fovsdf__wave_march(w, cnt);
+    /* 2. what each ray needs for its colour (as fovsdf__sample and fovsdf__shade_ray) */
+    for (k = 0; k < nr; ++k) {
+        fovsdf__wray *r = &w->ray[k];
+        const fovsdf__mco *mc = &r->mc;
+        st->rays++;
+        st->evals_primary += mc->evals;
+        if (mc->kind == FOVSDF_EXHAUSTED) st->exhausted++;
+        r->hit = mc->kind != FOVSDF_MISS;
+        if (r->hit) st->hits++;
+        r->sev = 0; r->lit = 0;
+        if (!r->hit) {
+            if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS)
+                r->col[0] = r->col[1] = r->col[2] = 0.0f;
+            else fovsdf_sky(c, mc->rd, r->col);
+            continue;
+        }
+        r->p[0] = mc->ro[0] + mc->rd[0] * mc->t; r->p[1] = mc->ro[1] + mc->rd[1] * mc->t;
+        r->p[2] = mc->ro[2] + mc->rd[2] * mc->t;
+        if (c->cfg.shading == FOVSDF_SHADE_DEPTH) {
+            r->col[0] = r->col[1] = r->col[2] = 1.0f - mc->t / c->t_max;
+        } else if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+            r->col[0] = r->col[1] = r->col[2] = 0.0f;
+        } else {
+            /* half the ray's own pixel footprint (as the hit threshold: pixel_angle cos^2) */
+            float cz = fovsdf__clampf(fov__dot(mc->rd, c->fwd), 0.0f, 1.0f);
+            hn[k] = c->cfg.normal_eps > 0.0f
+                        ? c->cfg.normal_eps
+                        : fov__maxf(fov__maxf(1e-4f, 0.5f * c->pixel_angle * cz * cz * mc->t),
+                                    4.0f * (m->ulp0 + m->ulp1 * mc->t));
+            r->lit = 1;
+        }
+    }
+    /* 3. normals */
+    fovsdf__wave_normals(w, nr, hn);
+    for (k = 0; k < nr; ++k) {
+        fovsdf__wray *r = &w->ray[k];
+        if (!r->lit) continue;
+        st->evals_normal += 4;
+        r->sev += 4;
+        fovsdf__normal_from(r->dv, r->n);
+        if (fov__dot(r->n, r->mc.rd) > 0.0f && r->mc.d < 0.0f) {
+            r->n[0] = -r->n[0]; r->n[1] = -r->n[1]; r->n[2] = -r->n[2];
+        }
+        if (!shading) {
+            r->col[0] = 0.5f + 0.5f * r->n[0]; r->col[1] = 0.5f + 0.5f * r->n[1];
+            r->col[2] = 0.5f + 0.5f * r->n[2];
+            r->lit = 0;
+            continue;
+        }
+        fovsdf__albedo(c, r->p, r->mc.mat, r->alb);
+        r->acc[0] = c->scene.ambient[0]; r->acc[1] = c->scene.ambient[1];
+        r->acc[2] = c->scene.ambient[2];
+        r->off = fovsdf__shadow_off(c, r->p);
+    }
+    /* 4. lights in order, each with its shadow rays as one wavefront (as fovsdf__shade) */
+    for (li = 0; li < c->scene.num_lights; ++li) {
+        const fovsdf_light *L = &c->scene.lights[li];
+        cnt = 0;
+        for (k = 0; k < nr; ++k) {
+            fovsdf__wray *r = &w->ray[k];
+            const fovsdf__wjob *jb = &w->job[k / spp];
+            fovsdf__lit lt;
+            r->prep = 0;
+            if (!r->lit) continue;
+            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off,
+                                    (jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)
+                                        ? jb->sh : NULL,
+                                    &lt))
+                continue;
+            r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
+            if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k, st))
+                w->q[cnt++] = k;
+        }
+        fovsdf__wave_shadows(w, cnt);
+        for (k = 0; k < nr; ++k) {
+            fovsdf__wray *r = &w->ray[k];
+            float sh = 1.0f;
+            if (!r->prep) continue;
+            if (r->shadow) {
+                sh = fovsdf__clampf(w->sco[k].res, 0.0f, 1.0f);
+                st->evals_shadow += w->sco[k].evals;
+                r->sev += w->sco[k].evals;
+            }
+            r->acc[0] += L->color[0] * r->ndl * r->att * sh;
+            r->acc[1] += L->color[1] * r->ndl * r->att * sh;
+            r->acc[2] += L->color[2] * r->ndl * r->att * sh;
+        }
+    }
+    /* 5. colours and pixels */
+    for (j = 0; j < w->nj; ++j) {
+        const fovsdf__wjob *jb = &w->job[j];
+        float acc[3] = { 0.0f, 0.0f, 0.0f }, tnear = c->t_max;
+        uint32_t nhit = 0, nsteps = 0, ev = 0;
+        int32_t mnear = -1;
+        for (s = 0; s < spp; ++s) {
+            fovsdf__wray *r = &w->ray[j * spp + s];
+            if (r->lit) {
+                int i;
+                /* NaN (0 * inf): 0 */
+                for (i = 0; i < 3; ++i)
+                    r->col[i] = fovsdf__clampf(r->alb[i] * r->acc[i], 0.0f, FOVSDF__RGB_MAX);
+            }
+            if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+                uint32_t ne = r->mc.evals + r->sev;
+                fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
+            }
+            nsteps += r->mc.steps;
+            ev += r->mc.evals + r->sev;
+            if (r->hit) {
+                ++nhit;
+                if (r->mc.t < tnear) { tnear = r->mc.t; mnear = r->mc.mat; }
+            }
+            acc[0] += r->col[0]; acc[1] += r->col[1]; acc[2] += r->col[2];
+        }
+        acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
+        fovsdf__put(c, w->o, jb->x, jb->y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), ev,
+                    jb->known_miss ? c->t_max : jb->t_start, nsteps, mnear, 1u);
+    }
+    w->nj = 0;
+}
+
+/* Queue pixel (x, y): its sample rays march from t_start (known_miss: proven empty); sh_start
+   as fovsdf__sample's. */
+FOVSDF__PRIV void fovsdf__wave_pixel(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t x,
+                                     uint32_t y, float t_start, int known_miss,
+                                     const float *sh_start, float sh_ref_t, float sh_tol)
+{
+    fovsdf__wjob *jb;
+    uint32_t i;
+    if (w->nj > 0 && w->m != m) fovsdf__wave_flush(w);
+    w->m = m;
+    jb = &w->job[w->nj];
+    jb->x = x; jb->y = y; jb->t_start = t_start; jb->known_miss = known_miss;
+    jb->has_sh = sh_start != NULL; jb->sh_ref_t = sh_ref_t; jb->sh_tol = sh_tol;
+    if (sh_start)
+        for (i = 0; i < w->c->scene.num_lights; ++i) jb->sh[i] = sh_start[i];
+    if (++w->nj >= w->cap) fovsdf__wave_flush(w);
 }
 
 FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3],
@@ -5149,8 +5481,8 @@ typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf_
 FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
                                     const fovsdf__marcher *mp, uint32_t x0, uint32_t y0,
                                     uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
-                                    uint32_t rx1, uint32_t ry1, const fovsdf_output *o,
-                                    fovsdf_stats *st)
+                                    uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+        fovsdf__wave *wv)
 {
     fovsdf__cell stk[4 * 10];
     int sp = 0;
@@ -5170,13 +5502,13 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
         if (t < 0.0f) { /* proven empty: no full-resolution marching */
             for (y = py0; y < py1; ++y)
                 for (x = px0; x < px1; ++x)
-                    fovsdf__pixel(c, mp, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
+                    fovsdf__wave_pixel(wv, mp, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
             continue;
         }
         if ((cl.x1 - cl.x0 <= 1 && cl.y1 - cl.y0 <= 1) || cl.level >= c->cfg.cone_levels) {
             for (y = py0; y < py1; ++y)
                 for (x = px0; x < px1; ++x)
-                    fovsdf__pixel(c, mp, x, y, o, st, t, 0, NULL, 0.0f, 0.0f);
+                    fovsdf__wave_pixel(wv, mp, x, y, t, 0, NULL, 0.0f, 0.0f);
             continue;
         }
         {
@@ -5294,7 +5626,8 @@ FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, in
 
 FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
                                    uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                   uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+                                   uint32_t ry1, fovsdf_stats *st,
+        fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -5340,7 +5673,7 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                 int32_t pv = (int32_t)(y / 2u) - ((int32_t)(ty / 2u) - (int32_t)apr[L - 2u]);
                 t0 = fovsdf__ipr_min(lv[L - 2u], side[L - 2u], pu, pv, r);
             }
-            fovsdf__pixel(c, m, x, y, o, st, t0 < c->t_max ? t0 : c->t_max, 0, NULL, 0.0f, 0.0f);
+            fovsdf__wave_pixel(wv, m, x, y, t0 < c->t_max ? t0 : c->t_max, 0, NULL, 0.0f, 0.0f);
         }
 }
 
@@ -5366,7 +5699,8 @@ FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher
    starts from it) and no apron: only the cells over the requested pixels are marched. */
 FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
                                         uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                        uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+                                        uint32_t ry1, fovsdf_stats *st,
+        fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -5395,8 +5729,8 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
         for (x = rx0; x < rx1; ++x) {
             float t0 =
                 L > 1u ? lv[L - 2u][(size_t)((y - ty) / 2u) * side[L - 2u] + (x - tx) / 2u] : 0.0f;
-            if (t0 < 0.0f) fovsdf__pixel(c, m, x, y, o, st, 0.0f, 1, NULL, 0.0f, 0.0f);
-            else fovsdf__pixel(c, m, x, y, o, st, t0, 0, NULL, 0.0f, 0.0f);
+            if (t0 < 0.0f) fovsdf__wave_pixel(wv, m, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
+            else fovsdf__wave_pixel(wv, m, x, y, t0, 0, NULL, 0.0f, 0.0f);
         }
 }
 
@@ -5423,7 +5757,8 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
    certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
 FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx,
                                     uint32_t cy, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                    uint32_t ry1, const fovsdf_output *o, fovsdf_stats *st)
+                                    uint32_t ry1, fovsdf_stats *st,
+        fovsdf__wave *wv)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
     uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
@@ -5438,8 +5773,7 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
             fovsdf__safe_start(c, m, (float)bx0, (float)by0, (float)bx1, (float)by1, 0.0f, st);
         for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
             for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
-                fovsdf__pixel(c, m, x, y, o, st, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f,
-                              0.0f);
+                fovsdf__wave_pixel(wv, m, x, y, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f, 0.0f);
         return;
     }
     if (c->cam_dist < 0.0f) s_eff = 1.0f / s_eff; /* camera inside: deflate */
@@ -5476,8 +5810,7 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     tol = fov__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
     for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
         for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
-            fovsdf__pixel(c, m, x, y, o, st, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0,
-                          has_sh ? sh : NULL, t_low, tol);
+            fovsdf__wave_pixel(wv, m, x, y, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
 }
 
 /* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
@@ -5713,7 +6046,8 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
 FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
                                    const fovsdf__marcher *mp, uint32_t tx, uint32_t ty,
                                    uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
-                                   const fovsdf_output *o, fovsdf_stats *st)
+                                   const fovsdf_output *o, fovsdf_stats *st,
+        fovsdf__wave *wv)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];
@@ -5782,7 +6116,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                         for (a = -f.r; a <= f.r; ++a)
                             t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
                 }
-                fovsdf__pixel(c, mp, x, y, o, st, t0, miss, NULL, 0.0f, 0.0f);
+                fovsdf__wave_pixel(wv, mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
             } else if (!due) {
                 if (o->mask)
                     o->mask[(size_t)(y - o->origin_y) *
@@ -5811,6 +6145,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
 {
     fovsdf_stats local;
     fovsdf__marcher m;
+    fovsdf__wave wv;
     uint32_t x, y;
     fov_result r;
     if (!c) return FOV_ERR_NULL;
@@ -5825,6 +6160,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     if (r != FOV_OK) return r;
     FOV_MEMSET(&local, 0, sizeof local);
     fovsdf__marcher_from_ctx(c, &m, c->origin);
+    fovsdf__wave_init(&wv, c, o, &local);
     if (c->cfg.method == FOVSDF_METHOD_SKIP) {
         fovsdf__marcher mp = m;
         uint32_t B = c->cfg.skip_block, cx, cy;
@@ -5832,7 +6168,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
         for (cy = y0 / B; cy * B < y1; ++cy)
             for (cx = x0 / B; cx * B < x1; ++cx)
-                fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, o, &local);
+                fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
@@ -5842,7 +6178,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 (c->cfg.heuristic_start ? fovsdf__ipr_tile : fovsdf__ipr_tile_safe)(
                     c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
-                    ty + T < y1 ? ty + T : y1, o, &local);
+                    ty + T < y1 ? ty + T : y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx,
@@ -5852,7 +6188,8 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         for (ty = y0 - y0 % T; ty < y1; ty += T)
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__fov_tile(c, &m, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0,
-                                 tx + T < x1 ? tx + T : x1, ty + T < y1 ? ty + T : y1, o, &local);
+                                 tx + T < x1 ? tx + T : x1, ty + T < y1 ? ty + T : y1, o, &local,
+                                 &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_CONE) {
         fovsdf__marcher mp = m;
         uint32_t T = c->cfg.cone_tile, tx, ty;
@@ -5861,12 +6198,13 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
             for (tx = x0 - x0 % T; tx < x1; tx += T)
                 fovsdf__cone_tile(c, &m, &mp, tx, ty, tx + T < c->cam.width ? tx + T : c->cam.width,
                                   ty + T < c->cam.height ? ty + T : c->cam.height, x0, y0, x1, y1,
-                                  o, &local);
+                                  &local, &wv);
     } else {
         for (y = y0; y < y1; ++y)
             for (x = x0; x < x1; ++x)
-                fovsdf__pixel(c, &m, x, y, o, &local, 0.0f, 0, NULL, 0.0f, 0.0f);
+                fovsdf__wave_pixel(&wv, &m, x, y, 0.0f, 0, NULL, 0.0f, 0.0f);
     }
+    fovsdf__wave_flush(&wv); /* the pixels still queued */
     if (stats) fovsdf_stats_add(stats, &local);
     return FOV_OK;
 }
