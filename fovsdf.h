@@ -3992,21 +3992,21 @@ typedef struct fovsdf__mco {
 } fovsdf__mco;
 
 /* Yield a request at point w->q (already set), resume point k. */
-#define FOVSDF__YIELD_P(k, thr_, infl_)                                                             \
-    do {                                                                                            \
-        w->qe = (thr_); w->qi = (infl_); w->got = 1; w->pc = (k);                                    \
-        return 1;                                                                                   \
-    case (k):;                                                                                      \
+#define FOVSDF__YIELD_P(k, thr_, infl_)                                                            \
+    do {                                                                                           \
+        w->qe = (thr_); w->qi = (infl_); w->got = 1; w->pc = (k);                                  \
+        return 1;                                                                                  \
+    case (k):;                                                                                     \
     } while (0)
 /* Request ro + tt rd (FLT_MAX without an evaluation when that overflows). */
-#define FOVSDF__YIELD_T(k, tt_, infl_)                                                              \
-    do {                                                                                            \
-        w->q[0] = w->ro[0] + w->rd[0] * (tt_); w->q[1] = w->ro[1] + w->rd[1] * (tt_);                \
-        w->q[2] = w->ro[2] + w->rd[2] * (tt_);                                                      \
-        if (!fov__finite3(w->q)) { w->res = FLT_MAX; w->got = 0; break; }                           \
-        w->qe = fovsdf__thr(m, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);                    \
-        return 1;                                                                                   \
-    case (k):;                                                                                      \
+#define FOVSDF__YIELD_T(k, tt_, infl_)                                                             \
+    do {                                                                                           \
+        w->q[0] = w->ro[0] + w->rd[0] * (tt_); w->q[1] = w->ro[1] + w->rd[1] * (tt_);              \
+        w->q[2] = w->ro[2] + w->rd[2] * (tt_);                                                     \
+        if (!fov__finite3(w->q)) { w->res = FLT_MAX; w->got = 0; break; }                          \
+        w->qe = fovsdf__thr(m, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);                   \
+        return 1;                                                                                  \
+    case (k):;                                                                                     \
     } while (0)
 
 FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, const float ro[3],
@@ -5810,7 +5810,8 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
     tol = fov__maxf(4.0f * c->cfg.skip_eps, 0.02f * t_low);
     for (y = (by0 > ry0 ? by0 : ry0); y < (by1 < ry1 ? by1 : ry1); ++y)
         for (x = (bx0 > rx0 ? bx0 : rx0); x < (bx1 < rx1 ? bx1 : rx1); ++x)
-            fovsdf__wave_pixel(wv, m, x, y, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0, has_sh ? sh : NULL, t_low, tol);
+            fovsdf__wave_pixel(wv, m, x, y, h.kind == FOVSDF_MISS ? 0.0f : t_low, 0,
+                               has_sh ? sh : NULL, t_low, tol);
 }
 
 /* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
@@ -6144,7 +6145,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
                                          uint32_t y1, const fovsdf_output *o, fovsdf_stats *stats)
 {
     fovsdf_stats local;
-    fovsdf__marcher m;
+    fovsdf__marcher m, mp; /* mp: the pixels' marcher, alive until the last flush */
     fovsdf__wave wv;
     uint32_t x, y;
     fov_result r;
@@ -6162,7 +6163,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
     fovsdf__marcher_from_ctx(c, &m, c->origin);
     fovsdf__wave_init(&wv, c, o, &local);
     if (c->cfg.method == FOVSDF_METHOD_SKIP) {
-        fovsdf__marcher mp = m;
+        mp = m;
         uint32_t B = c->cfg.skip_block, cx, cy;
         mp.method = c->cfg.finish - 1u;
         mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
@@ -6170,7 +6171,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
             for (cx = x0 / B; cx * B < x1; ++cx)
                 fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
-        fovsdf__marcher mp = m;
+        mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
         mp.method = c->cfg.finish - 1u; /* every level traces with the finishing tracer */
         mp.verify_start = (int)c->cfg.heuristic_start;
@@ -6180,7 +6181,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
                     c, &mp, tx, ty, tx > x0 ? tx : x0, ty > y0 ? ty : y0, tx + T < x1 ? tx + T : x1,
                     ty + T < y1 ? ty + T : y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_FIPR || c->cfg.method == FOVSDF_METHOD_CONE_FOV) {
-        fovsdf__marcher mp = m;
+        mp = m;
         uint32_t T = c->cfg.method == FOVSDF_METHOD_FIPR ? c->cfg.ipr_tile : c->cfg.cone_tile, tx,
             ty;
         mp.method = c->cfg.finish - 1u;
@@ -6191,7 +6192,7 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
                                  tx + T < x1 ? tx + T : x1, ty + T < y1 ? ty + T : y1, o, &local,
                                  &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_CONE) {
-        fovsdf__marcher mp = m;
+        mp = m;
         uint32_t T = c->cfg.cone_tile, tx, ty;
         mp.method = c->cfg.finish - 1u; /* fovsdf_finish -> fovsdf_method */
         for (ty = y0 - y0 % T; ty < y1; ty += T)

@@ -127,6 +127,8 @@ three_builds contract_fovsdf tests/test_fovsdf_contract.c
 three_builds heads_fovsdf tests/test_fovsdf_heads.c
 three_builds props_fovsdf tests/test_fovsdf_props.c
 three_builds batch_fovsdf tests/test_fovsdf_batch.c
+three_builds wave_fovsdf tests/test_fovsdf_wave.c
+run_section wave_variants bash tests/wave_variants.sh
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells

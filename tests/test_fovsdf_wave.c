@@ -1,0 +1,167 @@
+/* test_fovsdf_wave.c - the wavefront renderer of fovsdf.h gives the same bytes whatever feeds
+   it: a scene's batch callback or its per-point one, any split of the image into rows and
+   tiles, and (for the ray tracers) the point-by-point path of fovsdf_shade_point. Prints
+   "INFO hash" lines that tests/wave_variants.sh compares across builds with other
+   FOVSDF_BATCH, FOVSDF_WAVE and FOVSDF_NO_SIMD (built with WAVE_HASH_ONLY: the hashes only). */
+#define FOVSDF_IMPLEMENTATION
+#include "fovsdf.h"
+#include "fovcheck.h"
+
+#include <string.h>
+
+#ifndef IMG_W /* smaller under the sanitizers (10x slower) */
+#if defined(__SANITIZE_ADDRESS__)
+#define IMG_W 24
+#define IMG_H 14
+#else
+#define IMG_W 48
+#define IMG_H 27
+#endif
+#endif
+#define W IMG_W
+#define H IMG_H
+static float g_rgb[W * H * 3], g_depth[W * H], g_start[W * H];
+static uint32_t g_ev[W * H], g_steps[W * H];
+static int32_t g_mat[W * H];
+static uint8_t g_hit[W * H], g_mask[W * H];
+static const fov_gaze g_gaze = { 0.35f, 0.55f };
+
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    size_t i;
+    for (i = 0; i < n; ++i) { h ^= b[i]; h *= 1099511628211ull; }
+    return h;
+}
+
+/* Renders into the globals; split: 0 whole, k > 0 rows of k, -k tiles of k x k. */
+static uint64_t render(const fovsdf_ctx *c, int split, fovsdf_stats *st)
+{
+    fovsdf_output o;
+    uint64_t h = 1469598103934665603ull;
+    fovsdf_output_init(&o);
+    o.rgb = g_rgb; o.depth = g_depth; o.start = g_start; o.evals = g_ev; o.steps = g_steps;
+    o.material = g_mat; o.hit = g_hit; o.mask = g_mask;
+    memset(g_mask, 9, sizeof g_mask);
+    fovsdf_stats_init(st);
+    if (split == 0) {
+        fovsdf_render_rows(c, 0, H, &o, st);
+    } else if (split > 0) {
+        uint32_t y, k = (uint32_t)split;
+        for (y = 0; y < H; y += k) fovsdf_render_rows(c, y, y + k < H ? y + k : H, &o, st);
+    } else {
+        uint32_t x, y, k = (uint32_t)-split;
+        for (y = 0; y < H; y += k)
+            for (x = 0; x < W; x += k)
+                fovsdf_render_tile(c, x, y, x + k < W ? x + k : W, y + k < H ? y + k : H, &o, st);
+    }
+    h = fnv(h, g_rgb, sizeof g_rgb); h = fnv(h, g_depth, sizeof g_depth);
+    h = fnv(h, g_start, sizeof g_start); h = fnv(h, g_ev, sizeof g_ev);
+    h = fnv(h, g_steps, sizeof g_steps); h = fnv(h, g_mat, sizeof g_mat);
+    h = fnv(h, g_hit, sizeof g_hit); h = fnv(h, g_mask, sizeof g_mask);
+    return h;
+}
+static uint64_t stats_hash(const fovsdf_stats *st)
+{
+    return fnv(1469598103934665603ull, st, sizeof *st);
+}
+
+/* A user batch callback: the program point by point (what a user wraps around a C SDF). */
+static void batch_by_points(fovsdf_batch *b, void *user)
+{
+    uint32_t i;
+    for (i = 0; i < b->n; ++i) {
+        fovsdf_query q;
+        float p[3];
+        memset(&q, 0, sizeof q);
+        q.inflate = b->inflate; q.eps = b->eps ? b->eps[i] : 0.0f; q.want_material = 1;
+        p[0] = b->x[i]; p[1] = b->y[i]; p[2] = b->z[i];
+        b->d[i] = fovsdf_program_eval(p, &q, user);
+        if (b->material) b->material[i] = q.material;
+        b->prims += q.prims; b->prims_skipped += q.prims_skipped;
+    }
+}
+
+int main(void)
+{
+    static unsigned char mem[1 << 20];
+    uint32_t id, meth;
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+        fovsdf_builtin bi;
+        fovsdf_camera cam;
+        if (fovsdf_builtin_init(id, &bi, mem, sizeof mem) != FOV_OK) {
+            check(0, "builtin", "%u", id);
+            continue;
+        }
+        cam = bi.camera; cam.width = W; cam.height = H;
+        for (meth = 0; meth < (uint32_t)_FOVSDF_METHOD_NUM; ++meth) {
+            fovsdf_config cfg = fovsdf_config_default();
+            fovsdf_scene sp = bi.scene, su = bi.scene;
+            fovsdf_ctx c;
+            fovsdf_stats st, st2;
+            uint64_t h0, s0, h1, s1;
+            const char *mn = fovsdf_method_name(meth);
+            int k, bad;
+            cfg.method = meth;
+            cfg.spp = (meth + id) % 3 == 0 ? 4u : 1u;
+            cfg.heuristic_start = id & 1u;
+            cfg.shading = (id == 1 && meth == 2) ? FOVSDF_SHADE_STEPS : FOVSDF_SHADE_FULL;
+            if (fovsdf_init(&c, &cfg, &bi.scene, &cam, g_gaze, 0, 0) != FOV_OK) {
+                check(0, "init", "%s %s", bi.name, mn);
+                continue;
+            }
+            h0 = render(&c, 0, &st); s0 = stats_hash(&st);
+            fovcheck_info("hash %s %s %016llx %016llx", bi.name, mn, (unsigned long long)h0,
+                          (unsigned long long)s0);
+#ifdef WAVE_HASH_ONLY /* tests/wave_variants.sh: the hashes are what it compares */
+            check(h0 != 0, fovcheck_name("%s_%s_rendered", bi.name, mn), "-");
+            continue;
+#endif
+            /* per-point callbacks only: the library batches around them */
+            sp.dist_batch = 0;
+            fovsdf_init(&c, &cfg, &sp, &cam, g_gaze, 0, 0);
+            h1 = render(&c, 0, &st2); s1 = stats_hash(&st2);
+            check(h1 == h0 && s1 == s0, fovcheck_name("%s_%s_per_point_same", bi.name, mn),
+                  "%016llx vs %016llx", (unsigned long long)h1, (unsigned long long)h0);
+            /* a user batch callback that evaluates point by point */
+            su.dist_batch = batch_by_points;
+            fovsdf_init(&c, &cfg, &su, &cam, g_gaze, 0, 0);
+            h1 = render(&c, 0, &st2); s1 = stats_hash(&st2);
+            check(h1 == h0 && s1 == s0, fovcheck_name("%s_%s_user_batch_same", bi.name, mn),
+                  "%016llx vs %016llx", (unsigned long long)h1, (unsigned long long)h0);
+            /* any split into rows and tiles (the split changes only the cost) */
+            fovsdf_init(&c, &cfg, &bi.scene, &cam, g_gaze, 0, 0);
+            bad = 0;
+            {
+                static const int splits[3] = { 1, 5, -7 };
+                for (k = 0; k < 3; ++k) {
+                    h1 = render(&c, splits[k], &st2);
+                    if (h1 != h0) bad |= 1 << k;
+                }
+            }
+            check(bad == 0, fovcheck_name("%s_%s_split_same", bi.name, mn), "splits %x differ",
+                  bad);
+            /* the ray tracers: each pixel equals the point-by-point path (fovsdf_shade_point) */
+            if (meth <= (uint32_t)FOVSDF_METHOD_BV2018 && cfg.spp == 1u && id % 2 == 0 &&
+                cfg.shading == FOVSDF_SHADE_FULL) {
+                uint32_t x, y, diff = 0;
+                (void)render(&c, 0, &st2);
+                for (y = 0; y < H; ++y)
+                    for (x = 0; x < W; ++x) {
+                        float rgb[3], t;
+                        int32_t m;
+                        fovsdf_shade_point(&c, (float)x + 0.5f, (float)y + 0.5f, rgb, &t, &m, 0);
+                        /* (a hit at exactly t_max is depth t_max and material -1 in the image,
+                           the hit's material from fovsdf_shade_point) */
+                        if (memcmp(rgb, &g_rgb[3 * (y * W + x)], sizeof rgb) != 0 ||
+                            memcmp(&t, &g_depth[y * W + x], sizeof t) != 0 ||
+                            (t < c.t_max && m != g_mat[y * W + x]))
+                            ++diff;
+                    }
+                check(diff == 0, fovcheck_name("%s_%s_equals_shade_point", bi.name, mn),
+                      "%u pixels differ", diff);
+            }
+        }
+    }
+    return fovcheck_summary();
+}

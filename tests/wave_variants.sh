@@ -1,0 +1,34 @@
+#!/bin/bash
+# wave_variants.sh - the wavefront's images and counts do not depend on how many rays are in
+# flight (FOVSDF_WAVE), how many points a batch holds (FOVSDF_BATCH) or on the SIMD paths
+# (FOVSDF_NO_SIMD): tests/test_fovsdf_wave.c built with each variant passes its own checks and
+# prints the same "INFO hash" lines as the default build.
+cd "$(dirname "$0")/.." || exit 2
+CC=${CC:-gcc}
+OUT=build/wave_variants
+mkdir -p "$OUT"
+FL="-std=c99 -O2 -DIMG_W=32 -DIMG_H=18 -DWAVE_HASH_ONLY -ffp-contract=off -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Werror -I. -Itests/common"
+pass=0; fail=0
+ok() { echo "PASS $1"; pass=$((pass + 1)); }
+bad() { echo "FAIL $1: $2"; fail=$((fail + 1)); }
+run() { # name, flags
+    if ! $CC $FL $2 tests/test_fovsdf_wave.c -o "$OUT/$1" -lm 2>"$OUT/$1.err"; then
+        bad "$1_builds" "$(head -3 "$OUT/$1.err")"; return 1
+    fi
+    "$OUT/$1" >"$OUT/$1.txt" 2>&1
+    if grep -q '^[0-9]* passed, 0 failed' "$OUT/$1.txt"; then ok "$1_own_checks"
+    else bad "$1_own_checks" "$(grep '^FAIL' "$OUT/$1.txt" | head -3)"; fi
+    grep '^INFO hash' "$OUT/$1.txt" >"$OUT/$1.hash"
+}
+run default ""
+n=$(wc -l <"$OUT/default.hash")
+[ "$n" -ge 54 ] && ok "default_prints_hashes" || bad "default_prints_hashes" "$n lines"
+for v in "batch1_wave16:-DFOVSDF_BATCH=1 -DFOVSDF_WAVE=16" "batch7_wave40:-DFOVSDF_BATCH=7 -DFOVSDF_WAVE=40" \
+         "batch64_wave256:-DFOVSDF_BATCH=64 -DFOVSDF_WAVE=256" "no_simd:-DFOVSDF_NO_SIMD"; do
+    name=${v%%:*}; flags=${v#*:}
+    run "$name" "$flags" || continue
+    if cmp -s "$OUT/default.hash" "$OUT/$name.hash"; then ok "${name}_same_bytes"
+    else bad "${name}_same_bytes" "$(diff "$OUT/default.hash" "$OUT/$name.hash" | head -2 | tr '\n' ' ')"; fi
+done
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
