@@ -1122,6 +1122,15 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], con
    hit distance (t_max for a miss), material the hit's id (-1 for a miss); both may be NULL. */
 FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *ctx, float px, float py, float rgb[3],
                                          float *t, int32_t *material, fovsdf_stats *stats);
+/* n samples at once, each exactly fovsdf_shade_point's (bit for bit), marched and shaded as one
+   wavefront: the positions another header hands out (fovlp_samples: its fovlp_sample array is
+   x, y, slot, so pass &samples[0].x with stride 3). Point i is (xy[i stride], xy[i stride + 1])
+   (stride in floats; 0: 2); rgb gets 3 floats per point, t and material (both may be NULL) one
+   each. Every point is checked before any work (NaN: FOV_ERR_NOT_FINITE; a ray that overflows:
+   FOV_ERR_INVALID_ARG). */
+FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *ctx, uint32_t n, const float *xy,
+                                          uint32_t stride, float *rgb, float *t,
+                                          int32_t *material, fovsdf_stats *stats);
 /* March one ray through a scene without a context, with explicit parameters (a ray tracer:
    classic, relaxed, autorelaxed or bv2018; per-image methods such as CONE are rejected). */
 FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *params,
@@ -5079,7 +5088,8 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
 #endif
 
 typedef struct fovsdf__wjob {
-    uint32_t x, y;
+    uint32_t x, y;             /* the pixel; for fovsdf_shade_points: the point's index */
+    float px, py;              /* fovsdf_shade_points: the image point */
     float t_start, sh_ref_t, sh_tol;
     int known_miss, has_sh;
     float sh[FOVSDF_MAX_LIGHTS];
@@ -5097,7 +5107,9 @@ typedef struct fovsdf__wave {
     const fovsdf__marcher *m;
     const fovsdf_output *o;
     fovsdf_stats *st;
-    uint32_t nj, cap;
+    uint32_t nj, cap, spp;
+    float *prgb, *pt;          /* fovsdf_shade_points: the outputs (points mode when prgb) */
+    int32_t *pmat;
     fovsdf__wjob job[FOVSDF_WAVE];
     fovsdf__wray ray[FOVSDF_WAVE];
     fovsdf__sco sco[FOVSDF_WAVE];
@@ -5112,7 +5124,9 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
                                     fovsdf_stats *st)
 {
     w->c = c; w->m = 0; w->o = o; w->st = st; w->nj = 0;
+    w->spp = c->cfg.spp;
     w->cap = FOVSDF_WAVE / c->cfg.spp;
+    w->prgb = 0; w->pt = 0; w->pmat = 0;
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
@@ -5204,7 +5218,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
     const fovsdf_ctx *c = w->c;
     const fovsdf__marcher *m = w->m;
     fovsdf_stats *st = w->st;
-    uint32_t spp = c->cfg.spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
+    uint32_t spp = w->spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
     float hn[FOVSDF_WAVE];
     int shading = c->cfg.shading == FOVSDF_SHADE_FULL || c->cfg.shading == FOVSDF_SHADE_NO_SHADOWS;
     if (w->nj == 0) return;
@@ -5213,8 +5227,12 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         const fovsdf__wjob *jb = &w->job[k / spp];
         fovsdf__mco *mc = &w->ray[k].mc;
         float ox, oy, ro[3], rd[3];
-        fovsdf__sample_offset(spp, k % spp, &ox, &oy);
-        fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        if (w->prgb) {
+            fovsdf__ray(c, jb->px, jb->py, ro, rd);
+        } else {
+            fovsdf__sample_offset(spp, k % spp, &ox, &oy);
+            fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        }
         fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
         if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
             mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
@@ -5329,6 +5347,15 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
                 uint32_t ne = r->mc.evals + r->sev;
                 fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
             }
+            if (w->prgb) { /* as fovsdf_shade_point */
+                float *o3 = w->prgb + 3u * (size_t)jb->x;
+                o3[0] = fovsdf__clampf(r->col[0], 0.0f, FOVSDF__RGB_MAX);
+                o3[1] = fovsdf__clampf(r->col[1], 0.0f, FOVSDF__RGB_MAX);
+                o3[2] = fovsdf__clampf(r->col[2], 0.0f, FOVSDF__RGB_MAX);
+                if (w->pt) w->pt[jb->x] = r->hit ? r->mc.t : c->t_max;
+                if (w->pmat) w->pmat[jb->x] = r->hit ? r->mc.mat : -1;
+                continue;
+            }
             nsteps += r->mc.steps;
             ev += r->mc.evals + r->sev;
             if (r->hit) {
@@ -5337,6 +5364,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
             }
             acc[0] += r->col[0]; acc[1] += r->col[1]; acc[2] += r->col[2];
         }
+        if (w->prgb) continue;
         acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
         fovsdf__put(c, w->o, jb->x, jb->y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), ev,
                     jb->known_miss ? c->t_max : jb->t_start, nsteps, mnear, 1u);
@@ -5385,6 +5413,48 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     rgb[2] = fovsdf__clampf(r.col[2], 0.0f, FOVSDF__RGB_MAX);
     if (t) *t = r.hit ? r.t : c->t_max;
     if (material) *material = r.mat;
+    if (stats) fovsdf_stats_add(stats, &local);
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *c, uint32_t n, const float *xy,
+                                          uint32_t stride, float *rgb, float *t,
+                                          int32_t *material, fovsdf_stats *stats)
+{
+    fovsdf__marcher m;
+    fovsdf__wave wv;
+    fovsdf_stats local;
+    uint32_t i;
+    if (!c) return FOV_ERR_NULL;
+    if (n == 0) return FOV_OK;
+    if (!xy || !rgb) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "shade_points: xy or rgb is NULL");
+    if (stride == 0) stride = 2;
+    if (stride < 2)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "shade_points: stride must be 0 or >= 2");
+    for (i = 0; i < n; ++i) { /* every point is checked before any work */
+        float ro[3], rd[3], px = xy[(size_t)i * stride], py = xy[(size_t)i * stride + 1u];
+        if (!fov__finite(px) || !fov__finite(py))
+            FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE,
+                         "shade_points: a point's x or y is NaN or infinite");
+        if (!fovsdf__ray(c, px, py, ro, rd))
+            FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                         "shade_points: a point so far off the image that its ray overflows");
+    }
+    FOV_MEMSET(&local, 0, sizeof local);
+    fovsdf__marcher_from_ctx(c, &m, c->origin);
+    m.verify_start = 0; /* from the camera */
+    fovsdf__wave_init(&wv, c, 0, &local);
+    wv.spp = 1; wv.cap = FOVSDF_WAVE; wv.prgb = rgb; wv.pt = t; wv.pmat = material;
+    for (i = 0; i < n; ++i) {
+        fovsdf__wjob *jb = &wv.job[wv.nj];
+        wv.m = &m;
+        jb->x = i; jb->y = 0;
+        jb->px = xy[(size_t)i * stride]; jb->py = xy[(size_t)i * stride + 1u];
+        jb->t_start = 0.0f; jb->known_miss = 0; jb->has_sh = 0;
+        jb->sh_ref_t = 0.0f; jb->sh_tol = 0.0f;
+        if (++wv.nj >= wv.cap) fovsdf__wave_flush(&wv);
+    }
+    fovsdf__wave_flush(&wv);
     if (stats) fovsdf_stats_add(stats, &local);
     return FOV_OK;
 }

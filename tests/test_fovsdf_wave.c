@@ -163,5 +163,58 @@ int main(void)
             }
         }
     }
+    /* fovsdf_shade_points: each point bit for bit fovsdf_shade_point's, counters summed */
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; id += 2) {
+        fovsdf_builtin bi;
+        fovsdf_camera cam;
+        fovsdf_config cfg = fovsdf_config_default();
+        fovsdf_ctx c;
+        fovsdf_stats s1, s2;
+        static float xy[3 * 300], rgb1[3 * 300], rgb2[3 * 300], t1[300], t2[300];
+        static int32_t m1[300], m2[300];
+        uint32_t i, diff = 0, seed = 7u + id;
+        fovsdf_builtin_init(id, &bi, mem, sizeof mem);
+        cam = bi.camera; cam.width = W; cam.height = H;
+        cfg.method = id == 2 ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_CLASSIC;
+        fovsdf_init(&c, &cfg, &bi.scene, &cam, g_gaze, 0, 0);
+        for (i = 0; i < 300; ++i) { /* stride 3, as fovlp_sample: x, y, slot */
+            seed = seed * 1664525u + 1013904223u;
+            xy[3 * i] = (float)(seed >> 8) * (1.3f * (float)W / 16777216.0f) - 0.15f * (float)W;
+            seed = seed * 1664525u + 1013904223u;
+            xy[3 * i + 1] = (float)(seed >> 8) * (1.3f * (float)H / 16777216.0f) - 0.15f * (float)H;
+            xy[3 * i + 2] = -1.0f;
+        }
+        fovsdf_stats_init(&s1); fovsdf_stats_init(&s2);
+        for (i = 0; i < 300; ++i)
+            fovsdf_shade_point(&c, xy[3 * i], xy[3 * i + 1], rgb1 + 3 * i, &t1[i], &m1[i], &s1);
+        check(fovsdf_shade_points(&c, 300, xy, 3, rgb2, t2, m2, &s2) == FOV_OK,
+              fovcheck_name("%s_shade_points_ok", bi.name), "-");
+        for (i = 0; i < 300; ++i)
+            if (memcmp(rgb1 + 3 * i, rgb2 + 3 * i, 12) || memcmp(&t1[i], &t2[i], 4) ||
+                m1[i] != m2[i])
+                ++diff;
+        check(diff == 0 && memcmp(&s1, &s2, sizeof s1) == 0,
+              fovcheck_name("%s_shade_points_equal_shade_point", bi.name),
+              "%u points differ, evals %llu vs %llu", diff, (unsigned long long)s1.evals,
+              (unsigned long long)s2.evals);
+        check(fovsdf_shade_points(&c, 300, xy, 3, rgb2, 0, 0, 0) == FOV_OK &&
+                  memcmp(rgb1, rgb2, sizeof rgb1) == 0,
+              fovcheck_name("%s_shade_points_optional_outputs", bi.name), "-");
+        if (id == 0) {
+            float bad[4] = { 1.0f, 2.0f, 3.0f, 0.0f };
+            fov_result e1, e2, e3, e4, e5;
+            bad[3] = bad[3] / bad[3]; /* NaN */
+            e1 = fovsdf_shade_points(&c, 2, bad, 0, rgb2, 0, 0, 0);
+            e2 = fovsdf_shade_points(&c, 2, 0, 0, rgb2, 0, 0, 0);
+            e3 = fovsdf_shade_points(&c, 2, xy, 1, rgb2, 0, 0, 0);
+            bad[3] = 3e38f; bad[2] = 3e38f;
+            e4 = fovsdf_shade_points(&c, 2, bad, 0, rgb2, 0, 0, 0);
+            e5 = fovsdf_shade_points(&c, 0, 0, 0, 0, 0, 0, 0);
+            check(e1 == FOV_ERR_NOT_FINITE && e2 == FOV_ERR_NULL && e3 == FOV_ERR_INVALID_ARG &&
+                      e5 == FOV_OK && (e4 == FOV_OK || e4 == FOV_ERR_INVALID_ARG),
+                  "shade_points_errors", "%d %d %d %d %d", (int)e1, (int)e2, (int)e3, (int)e4,
+                  (int)e5);
+        }
+    }
     return fovcheck_summary();
 }
