@@ -1843,8 +1843,22 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #ifndef FOVSDF_MAX_STACK
 #define FOVSDF_MAX_STACK 32
 #endif
-#ifndef FOVSDF_BATCH /* points per batch callback and lanes of the batch evaluator */
+/* Points per batch callback and lanes of the batch evaluator; and rays in flight per render
+   call (the wavefront). Both only set speed and stack (see MEMORY), never a value: 32 and 128
+   on 64-bit CPUs, 16 and 32 elsewhere (wasm32, 32-bit ARM); FOVSDF_BATCH 1 evaluates a built-in
+   program point by point (the least stack). */
+#if defined(__x86_64__) || defined(_M_X64) || defined(__aarch64__) || defined(_M_ARM64)
+#define FOVSDF__BIG_STACK 1
+#endif
+#ifndef FOVSDF_BATCH
+#ifdef FOVSDF__BIG_STACK
 #define FOVSDF_BATCH 32
+#else
+#define FOVSDF_BATCH 16
+#endif
+#endif
+#if FOVSDF_BATCH < 1
+#error "fovsdf: FOVSDF_BATCH must be at least 1"
 #endif
 /* The batch evaluator's loops are plain C over FOVSDF__L lanes (FOVSDF_BATCH rounded up to a
    multiple of 8), which compilers vectorise; the one hand-written part is the square root
@@ -3364,7 +3378,9 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             const float *f = in->f;
             float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
                 d2 = dx * dx + dy * dy + dz * dz;
-            float lim = 1.25f * f[3] + f[4] + 4.0f * eps; /* margin r/4 + band + 4 eps */
+            /* margin r/4 + band + 4 eps (a negative eps, from the shadow proofs, shrinks it to
+               at most 0: the bound's value wherever the point is off its centre) */
+            float lim = fov__maxf(1.25f * f[3] + f[4] + 4.0f * eps, 0.0f);
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
             if (!(inflate < 1.0f || inflate > 1.0f) && d2 > lim * lim) {
@@ -3396,15 +3412,16 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
    says "skip" takes the bound's value; the subtree runs when at least one active lane needs
    it, and at its end the skipping lanes get the bound's value back (a pending record); lanes
    that an outer record already decided are inactive and do not count. */
+#define FOVSDF__BREC 16 /* pending bounds at once; a batch that needs more goes point by point */
 typedef struct fovsdf__bscr {
     float vs[FOVSDF_MAX_STACK][FOVSDF__L];
     int32_t ms[FOVSDF_MAX_STACK][FOVSDF__L];
     float ps[FOVSDF_MAX_STACK][3][FOVSDF__L];
     float p[3][FOVSDF__L], q[3][FOVSDF__L], t[FOVSDF__L], u[FOVSDF__L], e[FOVSDF__L];
-    float bv[FOVSDF__MAX_DEPTH][FOVSDF__L];       /* pending bounds: the bound's value */
-    int32_t bm[FOVSDF__MAX_DEPTH][FOVSDF__L];     /* 1: the lane takes it */
-    int32_t act[FOVSDF__MAX_DEPTH + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
-    uint32_t bj[FOVSDF__MAX_DEPTH], bslot[FOVSDF__MAX_DEPTH], nact[FOVSDF__MAX_DEPTH + 1];
+    float bv[FOVSDF__BREC][FOVSDF__L];       /* pending bounds: the bound's value */
+    int32_t bm[FOVSDF__BREC][FOVSDF__L];     /* 1: the lane takes it */
+    int32_t act[FOVSDF__BREC + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
+    uint32_t bj[FOVSDF__BREC], bslot[FOVSDF__BREC], nact[FOVSDF__BREC + 1];
 } fovsdf__bscr;
 
 /* Branch-free selects for the lane loops (gcc leaves "x > 0 ? x : 0" a branch, which stops
@@ -3541,8 +3558,8 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
 /* nb <= FOVSDF_BATCH points starting at point k0 of b. Every loop runs over all FOVSDF__L
    lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
    them at -O2); lanes past nb repeat the last point and are inactive. */
-FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
-                                                 uint32_t k0, uint32_t nb, fovsdf__bscr *s)
+FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
+                                                uint32_t k0, uint32_t nb, fovsdf__bscr *s)
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
@@ -3762,7 +3779,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             for (i = 0; i < n; ++i) {
                 float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz,
                       d2 = dx * dx + dy * dy + dz * dz;
-                float lim = lim0 + 4.0f * E[i];
+                float lim = fovsdf__vmax(lim0 + 4.0f * E[i], 0.0f);
                 int32_t sk = (d2 > lim * lim) & ACT[i];
                 T[i] = d2;
                 BM[i] = sk;
@@ -3779,7 +3796,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
                 pc = in->jump;
                 break;
             }
-            FOV_ASSERT(bsp < FOVSDF__MAX_DEPTH);
+            if (bsp >= FOVSDF__BREC) return 0; /* too deep: the caller goes point by point */
             {
                 float *FOVSDF__RESTRICT BV = s->bv[bsp], r = f[3];
                 int32_t *FOVSDF__RESTRICT A2 = s->act[lv + 1];
@@ -3805,20 +3822,46 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
         b->d[k0 + i] = fov__isnan(v) ? FLT_MAX : fovsdf__clampf(v, -FLT_MAX, FLT_MAX);
         if (b->material) b->material[k0 + i] = vsp > 0 ? s->ms[0][i] : -1;
     }
+    return 1;
+}
+
+/* Points k0 .. k0 + n of b through fovsdf_program_eval, one by one. */
+FOVSDF__PRIV void fovsdf__eval_points(const fovsdf_program *prog, fovsdf_batch *b, uint32_t k0,
+                                      uint32_t n)
+{
+    uint32_t i;
+    for (i = k0; i < k0 + n; ++i) {
+        fovsdf_query q;
+        float p[3];
+        q.inflate = b->inflate; q.eps = b->eps ? b->eps[i] : 0.0f; q.want_material = 1;
+        q.material = 0; q.prims = 0; q.prims_skipped = 0;
+        p[0] = b->x[i]; p[1] = b->y[i]; p[2] = b->z[i];
+        b->d[i] = fovsdf_program_eval(p, &q, (void *)(uintptr_t)prog);
+        if (b->material) b->material[i] = q.material;
+        b->prims += q.prims; b->prims_skipped += q.prims_skipped;
+    }
 }
 
 FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 {
     const fovsdf_program *prog = (const fovsdf_program *)user;
-    fovsdf__bscr s;
     uint32_t k;
     if (!b || !b->x || !b->y || !b->z || !b->d) return;
     if (!prog || !prog->code || prog->count == 0) {
         for (k = 0; k < b->n; ++k) b->d[k] = FLT_MAX;
         return;
     }
-    for (k = 0; k < b->n; k += FOVSDF__L)
-        fovsdf__eval_lanes(prog, b, k, b->n - k < FOVSDF__L ? b->n - k : FOVSDF__L, &s);
+#if FOVSDF_BATCH == 1
+    fovsdf__eval_points(prog, b, 0, b->n); /* the least stack */
+#else
+    {
+        fovsdf__bscr s;
+        for (k = 0; k < b->n; k += FOVSDF__L) {
+            uint32_t n = b->n - k < FOVSDF__L ? b->n - k : FOVSDF__L;
+            if (!fovsdf__eval_lanes(prog, b, k, n, &s)) fovsdf__eval_points(prog, b, k, n);
+        }
+    }
+#endif
 }
 
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
@@ -4482,7 +4525,8 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
    the scene at p + t l, and ends with res (the light fraction) and t_att, where the penumbra
    began (the first t with k h / t < 1; t when the light was never attenuated). */
 typedef struct fovsdf__sco {
-    float p[3], l[3], t, t_end, k, res, floor0, t_att;
+    float p[3], l[3], t, t_end, t_stop, k, res, floor0, t_att; /* t_stop <= t_end: see the
+                                                                 wavefront's shadow proof */
     uint32_t i, evals;
 } fovsdf__sco;
 
@@ -4493,12 +4537,13 @@ FOVSDF__PRIV int fovsdf__sco_init(const fovsdf_ctx *c, fovsdf__sco *s, const flo
 {
     s->p[0] = p[0]; s->p[1] = p[1]; s->p[2] = p[2];
     s->l[0] = l[0]; s->l[1] = l[1]; s->l[2] = l[2];
-    s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->k = k; s->t_att = -1.0f;
+    s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->t_stop = t_end; s->k = k;
+    s->t_att = -1.0f;
     s->i = 0; s->evals = 0;
     if (!(s->t > 0.0f)) s->t = 1e-6f;
     s->floor0 = 8.0f * FLT_EPSILON * fov__len(p);
     st->shadow_rays++;
-    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_stop;
 }
 /* Feeds the distance h at p + t l; returns 1 when the ray needs another one. */
 FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
@@ -4509,7 +4554,7 @@ FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
     if (s->res < c->cfg.shadow_eps) { s->res = 0.0f; return 0; }
     s->t += fov__maxf(h, s->floor0 + 8.0f * FLT_EPSILON * s->t);
     ++s->i;
-    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_stop;
 }
 
 /* Algorithm 2 core, point by point, on the scene scaled by inflate (Skipping Spheres'
@@ -5081,7 +5126,11 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
    per-point one, so images and counts do not depend on FOVSDF_WAVE, FOVSDF_BATCH or the
    caller's split into rows and tiles. Stack: about FOVSDF_WAVE * 0.4 KiB (50 KiB at 128). */
 #ifndef FOVSDF_WAVE
+#ifdef FOVSDF__BIG_STACK
 #define FOVSDF_WAVE 128
+#else
+#define FOVSDF_WAVE 32
+#endif
 #endif
 #if FOVSDF_WAVE < 16
 #error "fovsdf: FOVSDF_WAVE must be at least 16 (one pixel's 16 samples)"
@@ -5102,6 +5151,29 @@ typedef struct fovsdf__wray {
     int hit, lit, prep, shadow;     /* lit: Lambert with lights; prep, shadow: the current light */
 } fovsdf__wray;
 
+/* The shadow proof of a group of shadow rays (fovsdf__wave_flush, step 4): rays q_i + t l_i,
+   t in [t0_i, dist_i], all within R + th t of the axis point c + t a (R: the origins' spread
+   around c; th: max |l_i - a|, 0 for a directional light). Lipschitz 1 along the axis: if
+   F = f(c + s a), every ray point with t in [s, s + d] has f >= F - d - R - th (s + d), so
+   k f >= t there while d <= (k (F - R - th s) - s) / (k (1 + th) + 1). The axis march extends
+   a run of such steps; a step that fails starts the run again further on. A run that reaches
+   T = max dist_i proves that from its start (split) on every sample of every ray has
+   k h / t >= 1: Algorithm 2's minimum cannot drop there, so each ray marches only up to
+   split and its light fraction is the same value, without the far samples. A point light:
+   the rays converge on it, so the march runs over the fraction u of the way from c to the
+   light at distance D instead: ray i is at (1 - u) q_i + u L, within (1 - u) R of the axis
+   point c + u D a, at t = u dist_i <= u T, and a step d in u is safe while
+   d <= (k (F - (1 - u) R) - u T) / (k D + T); the split is u * dist_i per ray. */
+typedef struct fovsdf__gco {
+    float c[3], a[3], R, th, T, k, s, start, eps, split, mg, D; /* D > 0: point light at c + D a,
+                                                                   s is the fraction u */
+    uint32_t evals, n0, n;          /* axis evaluations; members gm[n0 .. n0 + n) */
+    int done;
+} fovsdf__gco;
+#ifndef FOVSDF_SHADOW_GROUP /* shadow rays per proof (0: no proofs) */
+#define FOVSDF_SHADOW_GROUP 16
+#endif
+
 typedef struct fovsdf__wave {
     const fovsdf_ctx *c;
     const fovsdf__marcher *m;
@@ -5114,6 +5186,8 @@ typedef struct fovsdf__wave {
     fovsdf__wray ray[FOVSDF_WAVE];
     fovsdf__sco sco[FOVSDF_WAVE];
     uint32_t q[FOVSDF_WAVE];        /* ring of rays waiting for an evaluation */
+    fovsdf__gco grp[FOVSDF_WAVE];   /* shadow proofs of groups of rays (one per ray at most) */
+    uint32_t gm[FOVSDF_WAVE];       /* the rays of each group, group after group */
     float bx[FOVSDF__L + 4], by[FOVSDF__L + 4], bz[FOVSDF__L + 4], be[FOVSDF__L + 4],
         bd[FOVSDF__L + 4];
     int32_t bm[FOVSDF__L + 4];
@@ -5179,6 +5253,123 @@ FOVSDF__PRIV void fovsdf__wave_shadows(fovsdf__wave *w, uint32_t cnt)
                 ++cnt;
             }
         }
+    }
+}
+
+/* Consumes the axis distance F at c + s a; 1 while the proof needs another evaluation. */
+FOVSDF__PRIV int fovsdf__gco_next(fovsdf__gco *g, float F)
+{
+    float kk = g->k * (1.0f / 1.001f); /* 0.1 % margin on k h / t >= 1 against rounding */
+    float room, d, end = g->D > 0.0f ? 1.0f : g->T;
+    ++g->evals;
+    if (g->D > 0.0f) {
+        room = F - g->mg - (1.0f - g->s) * g->R;
+        d = (kk * room - g->s * g->T) / (kk * g->D + g->T);
+    } else {
+        room = F - g->mg - g->R - g->th * g->s;
+        d = (kk * room - g->s) / (kk * (1.0f + g->th) + 1.0f);
+    }
+    if (d > 1e-3f * g->s + 1e-6f && fov__finite(d)) {
+        g->s += d;
+    } else { /* not provable here: a new run starts further on */
+        float adv = g->D > 0.0f ? fov__maxf(room, 0.0f) / g->D
+                                : fov__maxf(room, 0.0f) / (1.0f + g->th);
+        g->s = fov__maxf(g->s + adv, 2.0f * g->s + (g->D > 0.0f ? 1e-3f / g->D : 1e-3f));
+        g->start = g->s;
+    }
+    if (g->s >= end) { g->split = g->start; g->done = 1; return 0; }
+    if (g->evals >= 16u || !fov__finite(g->s)) { g->split = FLT_MAX; g->done = 1; return 0; }
+    return 1;
+}
+
+/* Shadow proofs for the shadow rays w->gm[0 .. nm) of light li, in groups of
+   FOVSDF_SHADOW_GROUP consecutive rays; lowers each ray's t_stop to its group's split. */
+FOVSDF__PRIV void fovsdf__wave_proofs(fovsdf__wave *w, uint32_t li, uint32_t nm)
+{
+    const fovsdf_ctx *c = w->c;
+    const fovsdf_light *L = &c->scene.lights[li];
+    float inv = 1.0f / c->scene.lipschitz;
+    int program = c->scene.dist_batch == fovsdf_program_eval_batch ||
+                  (!c->scene.dist_batch && c->scene.dist_ex == fovsdf_program_eval);
+    uint32_t ng = 0, g, i, j, nb, pend;
+    if (FOVSDF_SHADOW_GROUP < 2 || nm < 2) return;
+    for (g = 0; g * FOVSDF_SHADOW_GROUP < nm; ++g) {
+        fovsdf__gco *G = &w->grp[ng];
+        float lo[3], hi[3], r2 = 0.0f, off = 0.0f, s0 = FLT_MAX;
+        G->n0 = g * FOVSDF_SHADOW_GROUP;
+        G->n = nm - G->n0 < FOVSDF_SHADOW_GROUP ? nm - G->n0 : FOVSDF_SHADOW_GROUP;
+        G->T = 0.0f; G->k = w->sco[w->gm[G->n0]].k;
+        for (j = 0; j < 3; ++j) lo[j] = hi[j] = w->sco[w->gm[G->n0]].p[j];
+        for (i = 0; i < G->n; ++i) {
+            const fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+            for (j = 0; j < 3; ++j) {
+                lo[j] = fov__minf(lo[j], sc->p[j]); hi[j] = fov__maxf(hi[j], sc->p[j]);
+            }
+            G->T = fov__maxf(G->T, sc->t_end);
+            s0 = fov__minf(s0, sc->t);
+        }
+        for (j = 0; j < 3; ++j) G->c[j] = 0.5f * (lo[j] + hi[j]);
+        G->D = 0.0f;
+        if (L->type == FOVSDF_LIGHT_POINT) {
+            for (j = 0; j < 3; ++j) G->a[j] = L->v[j] - G->c[j];
+            G->D = fovsdf__normalize(G->a);
+            if (!(G->D > 0.0f)) continue;
+        } else {
+            for (j = 0; j < 3; ++j) G->a[j] = w->sco[w->gm[G->n0]].l[j];
+        }
+        for (i = 0; i < G->n; ++i) {
+            const fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+            float d[3];
+            for (j = 0; j < 3; ++j) d[j] = sc->p[j] - G->c[j];
+            r2 = fov__maxf(r2, fov__dot(d, d));
+            off = fov__maxf(off, w->ray[w->gm[G->n0 + i]].off);
+        }
+        /* widened by a few ulps of the sums (and of the positions: mg) */
+        G->R = FOV__SQRT(r2) * 1.0001f + 1e-6f;
+        G->th = 0.0f; /* a directional light: parallel rays; a point light: the fraction form */
+        /* a point light's ray leaves q = p + off n towards L from p: off more from the axis */
+        G->mg = 16.0f * FLT_EPSILON * (fov__len(G->c) + G->T) + 1e-6f + (G->D > 0.0f ? off : 0.0f);
+        /* the built-in program decides its bounds with the threshold: for the axis point, a
+           threshold lowered by the largest ray-axis distance / 4 makes it skip a bound
+           whenever any ray point could (so its value is never above theirs minus the
+           distance); other callbacks are taken as Lipschitz 1 as they are */
+        G->eps = program ? c->cfg.eps - 0.25f * (G->R + G->mg) : c->cfg.eps;
+        G->s = fov__maxf(s0, 2.0f * G->R);
+        if (G->D > 0.0f) G->s = fov__minf(G->s / G->T, 1.0f); /* as a fraction (t <= u T) */
+        G->start = G->s;
+        G->evals = 0; G->done = 0; G->split = FLT_MAX;
+        /* a group spread over more than a tenth of its range proves nothing worth the cost */
+        if (!fov__finite(G->R) || !fov__finite(G->T) || !(G->R < 0.1f * G->T) ||
+            !(G->s < (G->D > 0.0f ? 1.0f : G->T)))
+            continue;
+        ++ng;
+    }
+    /* the axis marches as one wavefront */
+    for (pend = ng; pend > 0;) {
+        uint32_t idx[FOVSDF_BATCH];
+        for (g = 0, nb = 0; g < ng && nb < FOVSDF_BATCH; ++g) {
+            const fovsdf__gco *G = &w->grp[g];
+            if (G->done) continue;
+            float sa = G->D > 0.0f ? G->s * G->D : G->s;
+            w->bx[nb] = G->c[0] + G->a[0] * sa; w->by[nb] = G->c[1] + G->a[1] * sa;
+            w->bz[nb] = G->c[2] + G->a[2] * sa; w->be[nb] = G->eps;
+            idx[nb++] = g;
+        }
+        if (nb == 0) break;
+        fovsdf__eval_batch(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd, 0,
+                           w->st);
+        for (i = 0; i < nb; ++i)
+            if (!fovsdf__gco_next(&w->grp[idx[i]], w->bd[i])) --pend;
+    }
+    for (g = 0; g < ng; ++g) {
+        const fovsdf__gco *G = &w->grp[g];
+        w->st->evals_shadow += G->evals;
+        w->ray[w->gm[G->n0]].sev += G->evals; /* the group's first ray carries its cost */
+        if (G->split < FLT_MAX)
+            for (i = 0; i < G->n; ++i) {
+                fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+                sc->t_stop = fov__minf(sc->t_end, G->D > 0.0f ? G->split * sc->t_end : G->split);
+            }
     }
 }
 
@@ -5312,9 +5503,14 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
                 continue;
             r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
             if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k, st))
-                w->q[cnt++] = k;
+                w->gm[cnt++] = k;
         }
-        fovsdf__wave_shadows(w, cnt);
+        fovsdf__wave_proofs(w, li, cnt);
+        for (k = 0, j = 0; k < cnt; ++k) { /* the rays with samples left before their split */
+            const fovsdf__sco *sc = &w->sco[w->gm[k]];
+            if (sc->t < sc->t_stop) w->q[j++] = w->gm[k];
+        }
+        fovsdf__wave_shadows(w, j);
         for (k = 0; k < nr; ++k) {
             fovsdf__wray *r = &w->ray[k];
             float sh = 1.0f;
