@@ -1827,6 +1827,15 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #else
 #define FOVSDF__VEC
 #endif
+/* the tile functions keep their own frames (inlined into fovsdf_render_tile, FIPR's 13 KiB of
+   cells would be on every method's stack) */
+#if defined(__GNUC__) || defined(__clang__)
+#define FOVSDF__NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define FOVSDF__NOINLINE __declspec(noinline)
+#else
+#define FOVSDF__NOINLINE
+#endif
 #if defined(__cplusplus) || defined(_MSC_VER)
 #define FOVSDF__RESTRICT __restrict
 #else
@@ -1859,6 +1868,16 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #endif
 #if FOVSDF_BATCH < 1
 #error "fovsdf: FOVSDF_BATCH must be at least 1"
+#endif
+#ifndef FOVSDF_WAVE
+#ifdef FOVSDF__BIG_STACK
+#define FOVSDF_WAVE 128
+#else
+#define FOVSDF_WAVE 32
+#endif
+#endif
+#if FOVSDF_WAVE < 1
+#error "fovsdf: FOVSDF_WAVE must be at least 1 (and at least config.spp)"
 #endif
 /* The batch evaluator's loops are plain C over FOVSDF__L lanes (FOVSDF_BATCH rounded up to a
    multiple of 8), which compilers vectorise; the one hand-written part is the square root
@@ -2026,6 +2045,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.spp == 0) c.spp = 1;
     if (c.spp != 1 && c.spp != 4 && c.spp != 16)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.spp must be 1, 4 or 16 (0: 1)");
+    if (c.spp > FOVSDF_WAVE)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config.spp above FOVSDF_WAVE (rays in flight)");
     if (c.eps_mode >= (uint32_t)_FOVSDF_EPS_NUM)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.eps_mode: unknown (see fovsdf_eps_mode)");
     r = fov__fields_check(lg, "fovsdf", "config.", &c, fl, 9u, 1, (uint32_t)__LINE__);
@@ -5125,16 +5146,6 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
    way. Each ray runs the same coroutine as a single march and every value is exactly the
    per-point one, so images and counts do not depend on FOVSDF_WAVE, FOVSDF_BATCH or the
    caller's split into rows and tiles. Stack: about FOVSDF_WAVE * 0.4 KiB (50 KiB at 128). */
-#ifndef FOVSDF_WAVE
-#ifdef FOVSDF__BIG_STACK
-#define FOVSDF_WAVE 128
-#else
-#define FOVSDF_WAVE 32
-#endif
-#endif
-#if FOVSDF_WAVE < 16
-#error "fovsdf: FOVSDF_WAVE must be at least 16 (one pixel's 16 samples)"
-#endif
 
 typedef struct fovsdf__wjob {
     uint32_t x, y;             /* the pixel; for fovsdf_shade_points: the point's index */
@@ -5292,12 +5303,18 @@ FOVSDF__PRIV void fovsdf__wave_proofs(fovsdf__wave *w, uint32_t li, uint32_t nm)
     int program = c->scene.dist_batch == fovsdf_program_eval_batch ||
                   (!c->scene.dist_batch && c->scene.dist_ex == fovsdf_program_eval);
     uint32_t ng = 0, g, i, j, nb, pend;
-    if (FOVSDF_SHADOW_GROUP < 2 || nm < 2) return;
+#if FOVSDF_SHADOW_GROUP < 2
+    (void)L; (void)inv; (void)program; (void)ng; (void)g; (void)i; (void)j; (void)nb; (void)pend;
+    (void)nm;
+    return;
+#else
+    if (nm < FOVSDF_SHADOW_GROUP / 2u) return; /* small groups cost more than they save */
     for (g = 0; g * FOVSDF_SHADOW_GROUP < nm; ++g) {
         fovsdf__gco *G = &w->grp[ng];
         float lo[3], hi[3], r2 = 0.0f, off = 0.0f, s0 = FLT_MAX;
         G->n0 = g * FOVSDF_SHADOW_GROUP;
         G->n = nm - G->n0 < FOVSDF_SHADOW_GROUP ? nm - G->n0 : FOVSDF_SHADOW_GROUP;
+        if (G->n < FOVSDF_SHADOW_GROUP / 2u) continue;
         G->T = 0.0f; G->k = w->sco[w->gm[G->n0]].k;
         for (j = 0; j < 3; ++j) lo[j] = hi[j] = w->sco[w->gm[G->n0]].p[j];
         for (i = 0; i < G->n; ++i) {
@@ -5371,6 +5388,7 @@ FOVSDF__PRIV void fovsdf__wave_proofs(fovsdf__wave *w, uint32_t li, uint32_t nm)
                 sc->t_stop = fov__minf(sc->t_end, G->D > 0.0f ? G->split * sc->t_end : G->split);
             }
     }
+#endif
 }
 
 /* Normals of the rays k with ray[k].lit or NORMALS shading: 4 points each, in batches. */
@@ -5744,11 +5762,10 @@ typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf_
 /* Depth-first cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to
    the image only, so the cells and results do not depend on how the caller splits the image),
    writing the pixels inside the requested region [rx0,rx1) x [ry0,ry1). */
-FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
-                                    const fovsdf__marcher *mp, uint32_t x0, uint32_t y0,
-                                    uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
-                                    uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
+                  uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
+                  uint32_t rx1, uint32_t ry1, fovsdf_stats *st, fovsdf__wave *wv)
 {
     fovsdf__cell stk[4 * 10];
     int sp = 0;
@@ -5890,10 +5907,10 @@ FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, in
     return t;
 }
 
-FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
-                                   uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                   uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                 uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                 fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -5963,10 +5980,10 @@ FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher
    the certified start of fovsdf__safe_start over its own pixels, from its parent's, in place of
    the thin ray's hit; no minimum filter is needed (each cone contains every sample ray that
    starts from it) and no apron: only the cells over the requested pixels are marched. */
-FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
-                                        uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                        uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                      uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                      fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -6021,10 +6038,10 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
    Like IPR this is a heuristic: neither scaling nor early termination guarantees that small
    objects are seen. That is the thesis variant (heuristic_start 1); the default marches one
    certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
-FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx,
-                                    uint32_t cy, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                    uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, uint32_t cy,
+                  uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                  fovsdf__wave *wv)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
     uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
@@ -6310,11 +6327,10 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
     }
 }
 
-FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
-                                   const fovsdf__marcher *mp, uint32_t tx, uint32_t ty,
-                                   uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
-                                   const fovsdf_output *o, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
+                 uint32_t tx, uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
+                 const fovsdf_output *o, fovsdf_stats *st, fovsdf__wave *wv)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];

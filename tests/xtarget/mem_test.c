@@ -18,9 +18,10 @@
 #ifndef XT_EXTERNAL_IMPL
 #define FOVSDF_IMPLEMENTATION
 #endif
-/* the least stack: 16 rays in flight (a pixel's worth), programs evaluated point by point */
+/* the least stack: 4 rays in flight (config.spp must not exceed it), programs evaluated point
+   by point */
 #ifndef FOVSDF_WAVE
-#define FOVSDF_WAVE 16
+#define FOVSDF_WAVE 4
 #endif
 #ifndef FOVSDF_BATCH
 #define FOVSDF_BATCH 1
