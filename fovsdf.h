@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.4.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.5.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -160,7 +160,15 @@ CONFIGURATION (define before including the implementation)
    FOVSDF_MAX_STEPS     hard cap on march steps per ray               (default 65536)
    FOVSDF_MAX_DIM       hard cap on image width and height            (default 65536)
    FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
-   FOVSDF_BATCH         points per batch callback, lanes of the batch evaluator (default 32)
+   FOVSDF_BATCH         points per batch callback and lanes of the batch evaluator
+                        (default 32 on 64-bit CPUs, 16 elsewhere; 1: point by point)
+   FOVSDF_WAVE          sample rays in flight per render call (default 128 on 64-bit CPUs,
+                        32 elsewhere; at least config.spp)
+   FOVSDF_SHADOW_GROUP  shadow rays per shadow proof (default 16; 0: no proofs)
+   FOVSDF_NO_SIMD       no intrinsics (the batch evaluator's square root); the loops stay
+                        plain C either way (what the compiler vectorises; FOVSDF_SIMD_NAME
+                        names the instruction set the build targets: "avx2", "sse2", "neon",
+                        "simd128" or "scalar")
    FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
                         it references software-double routines on a single-precision FPU)
    Shared by the three headers (listed in the shared declarations block below):
@@ -176,7 +184,10 @@ MEMORY
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
    CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB). Lower the two macros for small
-   stacks (configs that need more are then FOV_ERR_LIMIT).
+   stacks (configs that need more are then FOV_ERR_LIMIT). The wavefront adds about
+   FOVSDF_WAVE * 0.6 KiB (77 KiB at 128, 19 KiB at 32) and the batch evaluator about
+   FOVSDF_BATCH * 1.4 KiB (45 KiB at 32; nothing at 1); tests/xtarget/mem_test.c renders
+   Primitives on a Cortex-M4 with FOVSDF_WAVE 4 and FOVSDF_BATCH 1 in 5.4 KiB of stack.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code.
@@ -225,7 +236,30 @@ THREADING
    (fovsdf_stats_init, then fovsdf_stats_add them up).
    The head-start methods work on grid-aligned tiles: split the rows at multiples of
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
-   image is the same either way).
+   image is the same either way). Threads stay with you (examples/fovrun.h runs bands of rows
+   on pthreads): give each worker whole bands of band_rows rows (or more) across the full
+   width, handed out from a shared counter; one call's pixels form the wavefront, so calls of
+   at least FOVSDF_WAVE / spp pixels keep the batches full (a call of one pixel works, with
+   batches of its own samples only).
+
+BATCHED EVALUATION
+   Every tracer, normal and shadow ray of a render call evaluates the scene in batches of up
+   to FOVSDF_BATCH points (structure of arrays, fovsdf_batch): through scene.dist_batch when
+   it is set, else point by point through dist_ex / dist (the library batches around them).
+   A batch callback must give each point what the per-point callback would (the library uses
+   either: fovsdf_distance and fovsdf_shade_point go point by point); its values are taken as
+   they are (NaN, infinite or unwritten: FLT_MAX, a miss). Built-in programs have both
+   (fovsdf_scene_set_program). Each ray runs the same state machine either way, so images do
+   not depend on the batch size, on FOVSDF_WAVE, on the split into rows and tiles, or on
+   which callback form evaluated them (tests/test_fovsdf_wave.c, tests/wave_variants.sh).
+   Shadow proofs: for a group of up to FOVSDF_SHADOW_GROUP shadow rays of one light, one
+   march along a tube (parallel rays) or a cone (rays converging on a point light) that
+   contains them proves k h / t >= 1 (no attenuation) for all samples beyond a split; the rays
+   stop there and keep the same light fraction (Algorithm 2 takes a minimum). It needs a
+   distance that never overestimates (Lipschitz 1 after scene.lipschitz, as every head start
+   here does); for the built-in programs the proof's own evaluations use a threshold lowered
+   so that their bounding spheres are skipped wherever a ray point's could be. Which rays form
+   a group depends on the call, so per-pixel evaluation counts do (the image does not).
 
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
@@ -358,6 +392,15 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.5.0 (2026-12-02) wavefront rendering: a render call's pixels march, get their normals and
+                      their shadow rays as batches (FOVSDF_WAVE rays in flight); a batch
+                      distance interface (fovsdf_batch, scene.dist_batch, fovsdf_ray_cone,
+                      fovsdf_distance_batch) with a vectorised evaluator for built-in programs
+                      (fovsdf_program_eval_batch, the same value as fovsdf_program_eval for every
+                      point); fovsdf_shade_points (n points at once, for fovlp.h); shadow
+                      proofs for groups of shadow rays skip the samples that cannot change a
+                      light fraction. Images are unchanged (bit for bit); per-pixel evaluation
+                      counts drop. config.spp above FOVSDF_WAVE is FOV_ERR_LIMIT.
    0.4.0 (2026-12-02) one block shared with fovlp.h and fovpt.h (tools/fov_shared.h, marked
                       regions; private names fov__); error messages on by default,
                       a specific one per failure (FOV_DEBUG no longer needed; msg "" under
@@ -407,9 +450,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 4
+#define FOVSDF_VERSION_MINOR 5
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.4.0"
+#define FOVSDF_VERSION_STRING "0.5.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
