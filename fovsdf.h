@@ -5116,9 +5116,8 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
-FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, uint32_t cnt)
+FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t cnt)
 {
-    const fovsdf__marcher *m = w->m;
     uint32_t head = 0, nb, i;
     while (cnt > 0) {
         float qi = w->ray[w->q[head]].mc.qi;
@@ -5198,40 +5197,22 @@ FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float
     }
 }
 
-/* Render the queued pixels (see above). */
-FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
+/* Steps 2 to 4 of a flush: the colour of each marched ray w->ray[0 .. nr) into ray[k].col,
+   as fovsdf__shade_ray (per: rays per job, whose SKIP shadow head starts they use; 0: none);
+   ray[k].sev: its shading evaluations. */
+FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t nr,
+                                     uint32_t per)
 {
     const fovsdf_ctx *c = w->c;
-    const fovsdf__marcher *m = w->m;
     fovsdf_stats *st = w->st;
-    uint32_t spp = c->cfg.spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
+    uint32_t k, cnt, li;
     float hn[FOVSDF_WAVE];
     int shading = c->cfg.shading == FOVSDF_SHADE_FULL || c->cfg.shading == FOVSDF_SHADE_NO_SHADOWS;
-    if (w->nj == 0) return;
-    /* 1. the sample rays, marched as one wavefront */
-    for (k = 0; k < nr; ++k) {
-        const fovsdf__wjob *jb = &w->job[k / spp];
-        fovsdf__mco *mc = &w->ray[k].mc;
-        float ox, oy, ro[3], rd[3];
-        fovsdf__sample_offset(spp, k % spp, &ox, &oy);
-        fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
-        fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
-        if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
-            mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
-        } else if (fovsdf__mco_run(m, mc)) {
-            w->q[cnt++] = k;
-        }
-    }
-    fovsdf__wave_march(w, cnt);
     /* 2. what each ray needs for its colour (as fovsdf__sample and fovsdf__shade_ray) */
     for (k = 0; k < nr; ++k) {
         fovsdf__wray *r = &w->ray[k];
         const fovsdf__mco *mc = &r->mc;
-        st->rays++;
-        st->evals_primary += mc->evals;
-        if (mc->kind == FOVSDF_EXHAUSTED) st->exhausted++;
         r->hit = mc->kind != FOVSDF_MISS;
-        if (r->hit) st->hits++;
         r->sev = 0; r->lit = 0;
         if (!r->hit) {
             if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS)
@@ -5283,12 +5264,12 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         cnt = 0;
         for (k = 0; k < nr; ++k) {
             fovsdf__wray *r = &w->ray[k];
-            const fovsdf__wjob *jb = &w->job[k / spp];
+            const fovsdf__wjob *jb = per ? &w->job[k / per] : 0;
             fovsdf__lit lt;
             r->prep = 0;
             if (!r->lit) continue;
             if (!fovsdf__light_prep(c, li, r->p, r->n, r->off,
-                                    (jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)
+                                    (jb && jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)
                                         ? jb->sh : NULL,
                                     &lt))
                 continue;
@@ -5311,6 +5292,52 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
             r->acc[2] += L->color[2] * r->ndl * r->att * sh;
         }
     }
+    for (k = 0; k < nr; ++k) {
+        fovsdf__wray *r = &w->ray[k];
+        if (r->lit) {
+            int i;
+            /* NaN (0 * inf): 0 */
+            for (i = 0; i < 3; ++i)
+                r->col[i] = fovsdf__clampf(r->alb[i] * r->acc[i], 0.0f, FOVSDF__RGB_MAX);
+        }
+        if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+            uint32_t ne = r->mc.evals + r->sev;
+            fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
+        }
+    }
+}
+
+/* Render the queued pixels (see above). */
+FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
+{
+    const fovsdf_ctx *c = w->c;
+    const fovsdf__marcher *m = w->m;
+    fovsdf_stats *st = w->st;
+    uint32_t spp = c->cfg.spp, nr = w->nj * spp, k, j, s, cnt = 0;
+    if (w->nj == 0) return;
+    /* 1. the sample rays, marched as one wavefront */
+    for (k = 0; k < nr; ++k) {
+        const fovsdf__wjob *jb = &w->job[k / spp];
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ox, oy, ro[3], rd[3];
+        fovsdf__sample_offset(spp, k % spp, &ox, &oy);
+        fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
+        if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
+            mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
+        } else if (fovsdf__mco_run(m, mc)) {
+            w->q[cnt++] = k;
+        }
+    }
+    fovsdf__wave_march(w, m, cnt);
+    for (k = 0; k < nr; ++k) { /* as fovsdf__sample */
+        const fovsdf__mco *mc = &w->ray[k].mc;
+        st->rays++;
+        st->evals_primary += mc->evals;
+        if (mc->kind == FOVSDF_EXHAUSTED) st->exhausted++;
+        if (mc->kind != FOVSDF_MISS) st->hits++;
+    }
+    fovsdf__wave_shade(w, m, nr, spp);
     /* 5. colours and pixels */
     for (j = 0; j < w->nj; ++j) {
         const fovsdf__wjob *jb = &w->job[j];
@@ -5318,17 +5345,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         uint32_t nhit = 0, nsteps = 0, ev = 0;
         int32_t mnear = -1;
         for (s = 0; s < spp; ++s) {
-            fovsdf__wray *r = &w->ray[j * spp + s];
-            if (r->lit) {
-                int i;
-                /* NaN (0 * inf): 0 */
-                for (i = 0; i < 3; ++i)
-                    r->col[i] = fovsdf__clampf(r->alb[i] * r->acc[i], 0.0f, FOVSDF__RGB_MAX);
-            }
-            if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
-                uint32_t ne = r->mc.evals + r->sev;
-                fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
-            }
+            const fovsdf__wray *r = &w->ray[j * spp + s];
             nsteps += r->mc.steps;
             ev += r->mc.evals + r->sev;
             if (r->hit) {
@@ -5360,6 +5377,60 @@ FOVSDF__PRIV void fovsdf__wave_pixel(fovsdf__wave *w, const fovsdf__marcher *m, 
     if (sh_start)
         for (i = 0; i < w->c->scene.num_lights; ++i) jb->sh[i] = sh_start[i];
     if (++w->nj >= w->cap) fovsdf__wave_flush(w);
+}
+
+/* The head-start passes' rays as one wavefront, in the ray slots only (the queued pixels wait:
+   their rays are set up when they are flushed): n <= FOVSDF_WAVE rays through image points
+   (px[k], py[k]) marched from t0[k] with m, each exactly as fovsdf__march (into h[k] and, when
+   mat is not NULL, mat[k]). The evaluations count into st->evals, nowhere else. */
+FOVSDF__PRIV void fovsdf__wave_rays(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                    const float *px, const float *py, const float *t0,
+                                    fovsdf_hit *h, int32_t *mat)
+{
+    uint32_t k, cnt = 0;
+    FOV_ASSERT(n <= FOVSDF_WAVE);
+    for (k = 0; k < n; ++k) {
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ro[3], rd[3];
+        fovsdf__ray(w->c, px[k], py[k], ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, t0[k]);
+        if (fovsdf__mco_run(m, mc)) w->q[cnt++] = k;
+    }
+    fovsdf__wave_march(w, m, cnt);
+    for (k = 0; k < n; ++k) {
+        const fovsdf__mco *mc = &w->ray[k].mc;
+        h[k].kind = mc->kind;
+        h[k].t = mc->kind == FOVSDF_MISS ? m->t_max : mc->t;
+        h[k].dist = mc->d;
+        h[k].steps = mc->steps;
+        h[k].evals = mc->evals;
+        if (mat) mat[k] = mc->mat;
+    }
+}
+
+/* Colours of n <= FOVSDF_WAVE rays already marched (h[k], material mat[k]) through image points
+   (px[k], py[k]), each exactly as fovsdf__shade_ray without shadow head starts, into
+   rgb[3 k .. 3 k + 2], as one wavefront in the ray slots only (as fovsdf__wave_rays). */
+FOVSDF__PRIV void fovsdf__wave_shade_rays(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                          const float *px, const float *py, const fovsdf_hit *h,
+                                          const int32_t *mat, float *rgb)
+{
+    uint32_t k;
+    FOV_ASSERT(n <= FOVSDF_WAVE);
+    for (k = 0; k < n; ++k) {
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ro[3], rd[3];
+        fovsdf__ray(w->c, px[k], py[k], ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, 0.0f);
+        mc->kind = h[k].kind; mc->t = h[k].t; mc->d = h[k].dist; mc->mat = mat[k];
+        mc->steps = 0; mc->evals = 0; /* a STEPS heat map counts the shading only */
+        mc->pc = 9999u;
+    }
+    fovsdf__wave_shade(w, m, n, 0);
+    for (k = 0; k < n; ++k) {
+        rgb[3u * k] = w->ray[k].col[0]; rgb[3u * k + 1u] = w->ray[k].col[1];
+        rgb[3u * k + 2u] = w->ray[k].col[2];
+    }
 }
 
 FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3],
@@ -5857,23 +5928,30 @@ FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *
    tile grid only, never on the caller's split. */
 typedef struct fovsdf__mid {
     float tc;              /* CONE_FOV: the cell cone's t; -1 proven empty; -2 unknown (apron) */
-    float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there */
+    float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there; while
+                              its march is requested, th holds its start */
     float rgb[3];          /* its colour, once shaded */
     int32_t mat;
     uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
+    uint8_t req;           /* requested this round: 1 its march, 2 its shading */
 } fovsdf__mid;
 
 typedef struct fovsdf__fovt {
     const fovsdf_ctx *c;
     const fovsdf__marcher *mp; /* mid rays and sample rays */
     fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
-    float *l0;                 /* FIPR level 0: t, or -1 before it is traced */
+    float *l0;                 /* FIPR level 0: t, or -1 before it is traced (-3: requested) */
     float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown */
     int32_t mu0, mv0, lu0, lv0, r;
     uint32_t ms, ls;
     float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
     int cone, safe;            /* CONE_FOV; FIPR with heuristic_start 0 */
     fovsdf_stats *st;
+    fovsdf__wave *wv;          /* the wavefront the requests run in */
+    int miss;                  /* a value the current pixel needs is not there yet */
+    uint32_t nrm, nrl;         /* requests of this round: mid cells and level-0 cells */
+    uint32_t *rqm, *rql;       /* their indices in mid and l0 */
+    fovsdf__mid dummy;         /* what a missing mid cell reads as */
 } fovsdf__fovt;
 
 FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh rank of a tile */
@@ -5887,6 +5965,8 @@ FOVSDF__PRIV int32_t fovsdf__fdiv2(int32_t a) /* floor(a / 2) */
     return (a - (a < 0 ? 1 : 0)) / 2;
 }
 
+/* FIPR level-0 cell (i, j): one ray through its centre from the camera, requested on first use
+   (f->miss until the round's wavefront has traced it; see fovsdf__fov_tile). */
 FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
 {
     float *q;
@@ -5894,13 +5974,12 @@ FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
                j < f->lv0 + (int32_t)f->ls);
     q = f->l0 + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
     if (*q < 0.0f) {
-        float ro[3], rd[3];
-        fovsdf_hit h;
-        uint64_t e0 = f->st->evals;
-        fovsdf__ray(f->c, ((float)i + 0.5f) * 4.0f, ((float)j + 0.5f) * 4.0f, ro, rd);
-        fovsdf__march(f->mp, ro, rd, 0.0f, &h, 0, f->st);
-        *q = h.kind == FOVSDF_MISS ? f->c->t_max : h.t;
-        f->st->evals_lowres += f->st->evals - e0;
+        if (*q > -2.0f) { /* untouched: request it */
+            *q = -3.0f;
+            f->rql[f->nrl++] = (uint32_t)(q - f->l0);
+        }
+        f->miss = 1;
+        return 0.0f;
     }
     return *q;
 }
@@ -5933,57 +6012,121 @@ FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
     return m->tc;
 }
 
-/* Mid cell (u, v): traced on first use, shaded when `shade`. */
+/* Mid cell (u, v): its march requested on first use, its shading when `shade` (f->miss and a
+   dummy cell until the round's wavefront has run them, fovsdf__fov_run). */
 FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
 {
     const fovsdf_ctx *c = f->c;
     fovsdf__mid *m;
-    float ro[3], rd[3];
     FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
                v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
     if (m->state == 2 || (m->state == 1 && !shade)) return m;
-    fovsdf__ray(c, ((float)u + 0.5f) * 2.0f, ((float)v + 0.5f) * 2.0f, ro, rd);
-    if (m->state == 0) {
-        fovsdf_hit h;
-        int32_t mat = 0;
+    if (m->state == 0 && !(m->req & 1u)) {
         float t0 = 0.0f;
-        uint64_t e0;
         if (f->cone) {
             t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
         } else if (f->safe) {
             t0 = fovsdf__fov_tc(f, u, v); /* -1: proven empty, below */
         } else {
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
+            int miss = f->miss;
+            f->miss = 0;
             t0 = c->t_max;
             for (b = -f->r; b <= f->r; ++b)
                 for (a = -f->r; a <= f->r; ++a) t0 = fov__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
+            if (f->miss) return &f->dummy; /* its start needs level-0 rays first */
+            f->miss = miss;
         }
-        e0 = f->st->evals; /* after the level-0 rays, which count themselves */
         if ((f->cone || f->safe) && fov__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
-            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
+            m->th = c->t_max; m->dist = 0.0f; m->kind = (uint8_t)FOVSDF_MISS; m->mat = -1;
+            m->state = 1;
+            if (!shade) return m;
         } else {
-            fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
+            if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+            m->req |= 1u;
+            m->th = t0;
         }
-        /* the interpolated pixels report this ray's depth: a hit must lie in [0, t_max] (a
-           tracer's hit beyond t_max, or a non-finite one, is a miss) */
-        if (h.kind != FOVSDF_MISS && !(h.t >= 0.0f && h.t <= c->t_max)) {
-            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
+    }
+    if (shade && !(m->req & 2u)) {
+        if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+        m->req |= 2u;
+    }
+    f->miss = 1;
+    return &f->dummy;
+}
+
+/* The requests of one round as wavefronts: the level-0 rays, then the mid rays (their starts
+   need the level-0 ones), then the shading of mid rays; every value exactly as the cell's own
+   march and fovsdf__shade_ray. */
+FOVSDF__PRIV void fovsdf__fov_run(fovsdf__fovt *f)
+{
+    const fovsdf_ctx *c = f->c;
+    float px[FOVSDF_WAVE], py[FOVSDF_WAVE], t0[FOVSDF_WAVE], rgb[3 * FOVSDF_WAVE];
+    fovsdf_hit h[FOVSDF_WAVE];
+    int32_t mat[FOVSDF_WAVE];
+    uint32_t id[FOVSDF_WAVE], i, k, n, pass;
+    for (i = 0; i < f->nrl; i += n) {
+        n = f->nrl - i < FOVSDF_WAVE ? f->nrl - i : FOVSDF_WAVE;
+        for (k = 0; k < n; ++k) {
+            uint32_t q = f->rql[i + k];
+            px[k] = ((float)(f->lu0 + (int32_t)(q % f->ls)) + 0.5f) * 4.0f;
+            py[k] = ((float)(f->lv0 + (int32_t)(q / f->ls)) + 0.5f) * 4.0f;
+            t0[k] = 0.0f;
         }
-        m->th = h.kind == FOVSDF_MISS ? c->t_max : h.t;
-        m->dist = h.dist;
-        m->kind = (uint8_t)h.kind;
-        m->mat = h.kind == FOVSDF_MISS ? -1 : mat;
-        m->state = 1;
-        f->st->evals_lowres += f->st->evals - e0;
+        fovsdf__wave_rays(f->wv, f->mp, n, px, py, t0, h, 0);
+        for (k = 0; k < n; ++k) {
+            f->l0[f->rql[i + k]] = h[k].kind == FOVSDF_MISS ? c->t_max : h[k].t;
+            f->st->evals_lowres += h[k].evals;
+        }
     }
-    if (shade) {
-        fovsdf_hit h;
-        h.kind = (fovsdf_hit_kind)m->kind; h.t = m->th; h.dist = m->dist; h.steps = 0; h.evals = 0;
-        fovsdf__shade_ray(c, f->mp, ro, rd, &h, m->mat, NULL, 0.0f, 0.0f, m->rgb, f->st);
-        m->state = 2;
-    }
-    return m;
+    f->nrl = 0;
+    for (pass = 1; pass <= 2; ++pass) /* 1: marches, 2: shading */
+        for (i = 0; i < f->nrm;) {
+            for (n = 0; n < FOVSDF_WAVE && i < f->nrm; ++i) {
+                fovsdf__mid *m = &f->mid[f->rqm[i]];
+                int32_t u = f->mu0 + (int32_t)(f->rqm[i] % f->ms),
+                    v = f->mv0 + (int32_t)(f->rqm[i] / f->ms);
+                if (!(m->req & pass)) continue;
+                px[n] = ((float)u + 0.5f) * 2.0f; py[n] = ((float)v + 0.5f) * 2.0f;
+                t0[n] = m->th;
+                if (pass == 2u) {
+                    h[n].kind = m->kind; h[n].t = m->th; h[n].dist = m->dist; h[n].steps = 0;
+                    h[n].evals = 0;
+                    mat[n] = m->mat;
+                }
+                id[n++] = f->rqm[i];
+            }
+            if (n == 0) continue;
+            if (pass == 1u) {
+                fovsdf__wave_rays(f->wv, f->mp, n, px, py, t0, h, mat);
+                for (k = 0; k < n; ++k) {
+                    fovsdf__mid *m = &f->mid[id[k]];
+                    fovsdf_hit *hk = &h[k];
+                    /* the interpolated pixels report this ray's depth: a hit must lie in
+                       [0, t_max] (a tracer's hit beyond t_max, or a non-finite one, is a miss) */
+                    if (hk->kind != FOVSDF_MISS && !(hk->t >= 0.0f && hk->t <= c->t_max)) {
+                        hk->kind = FOVSDF_MISS; hk->t = c->t_max; hk->dist = 0.0f;
+                    }
+                    m->th = hk->kind == FOVSDF_MISS ? c->t_max : hk->t;
+                    m->dist = hk->dist;
+                    m->kind = (uint8_t)hk->kind;
+                    m->mat = hk->kind == FOVSDF_MISS ? -1 : mat[k];
+                    m->state = 1;
+                    f->st->evals_lowres += hk->evals;
+                }
+            } else {
+                fovsdf__wave_shade_rays(f->wv, f->mp, n, px, py, h, mat, rgb);
+                for (k = 0; k < n; ++k) {
+                    fovsdf__mid *m = &f->mid[id[k]];
+                    m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
+                    m->rgb[2] = rgb[3u * k + 2u];
+                    m->state = 2;
+                }
+            }
+        }
+    for (i = 0; i < f->nrm; ++i) f->mid[f->rqm[i]].req = 0;
+    f->nrm = 0;
 }
 
 /* Step 2: Sobel on level 0 (FIPR) or the mid level (CONE_FOV) around cell (i, j). */
@@ -6052,11 +6195,14 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];
+    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS], done[64u * 64u / 32u];
     fovsdf__fovt f;
-    uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh;
+    uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh, left;
     int32_t am;
     int due;
     f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
+    f.wv = wv; f.rqm = rqm; f.rql = rql; f.nrm = 0; f.nrl = 0; f.miss = 0;
+    FOV_MEMSET(&f.dummy, 0, sizeof f.dummy);
     f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
     f.safe = !f.cone && !c->cfg.heuristic_start;
     f.r = f.cone ? 1 : (c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius);
@@ -6073,7 +6219,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     f.lv0 = (int32_t)(ty / 4u) - (am + 1) / 2 - f.r;
     FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS &&
                (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
-    for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
+    for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; mid[i].req = 0; }
     if (!f.cone)
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
@@ -6086,11 +6232,23 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
         if (f.t_ring < 0.0f) f.t_ring = c->t_max; /* the whole neighbourhood is empty */
         fovsdf__fov_cones(&f, mc, tx, ty, T);
     }
+    /* rounds: each pixel goes as far as the cells it needs allow; what they miss is requested
+       and traced (or shaded) as one wavefront (fovsdf__fov_run) before the next round, so a
+       tile traces and shades exactly the cells a lazy pass over its pixels would, with the
+       same values */
+    FOV_ASSERT((rx1 - rx0) * (ry1 - ry0) <= 64u * 64u);
+    for (i = 0; i < 64u * 64u / 32u; ++i) done[i] = 0;
+    for (;;) {
+    left = 0;
     for (y = ry0; y < ry1; ++y)
         for (x = rx0; x < rx1; ++x) {
             int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
-            float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
+            uint32_t pi = (y - ry0) * (rx1 - rx0) + (x - rx0);
+            float w, p;
             int in;
+            if (done[pi / 32u] & (1u << (pi % 32u))) continue;
+            f.miss = 0;
+            w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f);
             /* step 3: the mask */
             if (w <= c->cfg.acuity.fovea_deg) in = 1;
             else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
@@ -6101,6 +6259,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                       fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u),
                                        f.cone ? v : (int32_t)(y / 4u)));
             }
+            if (f.miss) { ++left; continue; }
             /* step 4: render */
             if (in) {
                 float t0;
@@ -6117,6 +6276,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                         for (a = -f.r; a <= f.r; ++a)
                             t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
                 }
+                if (f.miss) { ++left; continue; }
                 fovsdf__wave_pixel(wv, mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
             } else if (!due) {
                 if (o->mask)
@@ -6135,10 +6295,16 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                         col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
                         col[2] += wt * m->rgb[2];
                     }
+                if (f.miss) { ++left; continue; }
                 fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f,
                             0u, own->mat, 0u);
             }
+            done[pi / 32u] |= 1u << (pi % 32u);
         }
+    if (left == 0) break;
+    FOV_ASSERT(f.nrm > 0 || f.nrl > 0);
+    fovsdf__fov_run(&f);
+    }
 }
 
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1,
