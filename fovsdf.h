@@ -5526,6 +5526,58 @@ FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher
 #ifndef FOVSDF_CONE_SLACK
 #define FOVSDF_CONE_SLACK 0.0f
 #endif
+
+/* fovsdf__cone_march for n cones as one wavefront: cone j (unit axis a, k = tan(half-angle))
+   marches from its t to where it stops (-1: it reached t_max), each exactly as
+   fovsdf__cone_march (the same values, evaluations and counts), the evaluations of all the
+   cones still marching in batches of FOVSDF_BATCH. act: scratch for n indices. */
+typedef struct fovsdf__wcone { float a[3], k, t; uint32_t i; } fovsdf__wcone;
+FOVSDF__PRIV int fovsdf__wcone_go(const fovsdf__marcher *m, fovsdf__wcone *q)
+{
+    if (q->i >= m->max_steps || q->t > m->t_max) { /* as the loop's end and its first test */
+        if (q->t > m->t_max) q->t = -1.0f;
+        return 0;
+    }
+    return 1;
+}
+FOVSDF__PRIV void fovsdf__wave_cones(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                     fovsdf__wcone *cn, uint32_t *act)
+{
+    const fovsdf_ctx *c = w->c;
+    uint32_t na = 0, j, i, nb, keep;
+    uint64_t e = 0;
+    for (j = 0; j < n; ++j) {
+        cn[j].i = 0;
+        if (fovsdf__wcone_go(m, &cn[j])) act[na++] = j;
+    }
+    for (i = 0; i < FOVSDF_BATCH; ++i) w->be[i] = m->eps;
+    while (na > 0) {
+        keep = 0;
+        for (j = 0; j < na; j += nb) {
+            nb = na - j < FOVSDF_BATCH ? na - j : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *q = &cn[act[j + i]];
+                w->bx[i] = c->origin[0] + q->a[0] * q->t; w->by[i] = c->origin[1] + q->a[1] * q->t;
+                w->bz[i] = c->origin[2] + q->a[2] * q->t;
+            }
+            fovsdf__eval_batch(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd,
+                               0, w->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                uint32_t id = act[j + i];
+                fovsdf__wcone *q = &cn[id];
+                /* as fovsdf__cone_march */
+                float f = w->bd[i] - (m->ulp0 + m->ulp1 * q->t);
+                if (f <= q->t * q->k * (1.0f + FOVSDF_CONE_SLACK) + m->eps) continue;
+                q->t += (f - q->t * q->k) / (1.0f + q->k);
+                ++q->i;
+                if (fovsdf__wcone_go(m, q)) act[keep++] = id;
+            }
+        }
+        na = keep;
+    }
+    w->st->evals_lowres += e;
+}
 /* Cone of the pixel rectangle [x0, x1) x [y0, y1): unit axis a and k = tan(half-angle). */
 FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, float x1, float y1,
                                      float a[3])
@@ -6148,43 +6200,93 @@ FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
 
 /* Step 1 of CONE_FOV: the cone pyramid over the tile, down to 2x2-pixel cells (cone_levels
    permitting), storing each cell's t in the mid cells it covers. The cells are the tile's own
-   grid, not clipped to the image, so 2x2 cells stay aligned. */
+   grid, not clipped to the image, so 2x2 cells stay aligned. The cones march as one wavefront
+   (as fovsdf__wave_cones: each exactly as fovsdf__cone_march), a cell's children joining as
+   soon as it stops; the first, besides the tile's, is the apron's cone (f->t_ring: one cone over
+   the tile widened by the apron's 2x2 cells, which lie in the neighbouring tiles, gives their
+   rays a safe start). A cell marches only after its parent, so the cells in flight never
+   outnumber the tile's 2x2 cells. */
 FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, uint32_t tx,
                                     uint32_t ty, uint32_t T)
 {
     const fovsdf_ctx *c = f->c;
-    fovsdf__cell stk[4 * 10];
-    int sp = 1;
-    stk[0].x0 = tx; stk[0].y0 = ty; stk[0].x1 = tx + T; stk[0].y1 = ty + T; stk[0].level = 1;
-    stk[0].t = 0.0f;
-    while (sp > 0) {
-        fovsdf__cell cl = stk[--sp];
-        float a[3], k, t;
-        if (cl.x0 >= c->cam.width || cl.y0 >= c->cam.height) continue; /* off the image */
-        k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        /* as CONE */
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOV__SQRT(1.0f + k * k)), f->st);
-        if (t < 0.0f || cl.x1 - cl.x0 <= 2u || cl.level >= c->cfg.cone_levels) {
-            uint32_t u, v;
-            for (v = cl.y0 / 2u; v < cl.y1 / 2u; ++v)
-                for (u = cl.x0 / 2u; u < cl.x1 / 2u; ++u)
-                    f->mid[(size_t)((int32_t)v - f->mv0) * f->ms +
-                           (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
-            continue;
+    fovsdf__wave *w = f->wv;
+    fovsdf__wcone cn[FOVSDF_FOV_CELLS + 4];
+    /* a slot's cell: its offset in the tile (x | y << 16) and width; slot 1 is the apron's */
+    uint32_t pos[FOVSDF_FOV_CELLS + 4], wid[FOVSDF_FOV_CELLS + 4], act[FOVSDF_FOV_CELLS + 4],
+        fr[FOVSDF_FOV_CELLS + 4], lev[FOVSDF_FOV_CELLS + 4];
+    uint32_t na = 2, nf = 0, j, i, nb, q, keep;
+    uint64_t e = 0;
+    for (j = FOVSDF_FOV_CELLS + 4u; j-- > 2u;) fr[nf++] = j; /* free slots */
+    pos[0] = 0; wid[0] = T; lev[0] = 1;
+    cn[0].k = fovsdf__cell_cone(c, (float)tx, (float)ty, (float)(tx + T), (float)(ty + T), cn[0].a);
+    cn[0].t = 0.0f;
+    cn[1].k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f, (float)(tx + T) + 2.0f,
+                                (float)(ty + T) + 2.0f, cn[1].a);
+    cn[1].t = 0.0f;
+    act[0] = 0; act[1] = 1; cn[0].i = 0; cn[1].i = 0;
+    for (i = 0; i < FOVSDF_BATCH; ++i) w->be[i] = mc->eps;
+    while (na > 0) {
+        /* the cones that stopped leave (fovsdf__wcone_go), their children join */
+        keep = 0;
+        for (j = 0; j < na; ++j) {
+            uint32_t id = act[j], x0, y0, S, L;
+            float t;
+            if (fovsdf__wcone_go(mc, &cn[id])) { act[keep++] = id; continue; }
+            if (id == 1u) { f->t_ring = cn[1].t < 0.0f ? c->t_max : cn[1].t; continue; }
+            x0 = tx + (pos[id] & 0xffffu); y0 = ty + (pos[id] >> 16); S = wid[id]; L = lev[id];
+            t = cn[id].t;
+            fr[nf++] = id;
+            if (t < 0.0f || S <= 2u || L >= c->cfg.cone_levels) {
+                uint32_t u, v;
+                for (v = y0 / 2u; v < (y0 + S) / 2u; ++v)
+                    for (u = x0 / 2u; u < (x0 + S) / 2u; ++u)
+                        f->mid[(size_t)((int32_t)v - f->mv0) * f->ms +
+                               (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
+                continue;
+            }
+            for (q = 0; q < 4u; ++q) {
+                uint32_t h = S / 2u, cx = x0 + ((q & 1u) ? h : 0u), cy = y0 + ((q & 2u) ? h : 0u);
+                uint32_t k;
+                fovsdf__wcone *ch;
+                if (cx >= c->cam.width || cy >= c->cam.height) continue; /* off the image */
+                FOV_ASSERT(nf > 0);
+                k = fr[--nf];
+                ch = &cn[k];
+                pos[k] = (cx - tx) | (cy - ty) << 16; wid[k] = h; lev[k] = L + 1u;
+                ch->k = fovsdf__cell_cone(c, (float)cx, (float)cy, (float)(cx + h),
+                                          (float)(cy + h), ch->a);
+                ch->t = t * (1.0f / FOV__SQRT(1.0f + ch->k * ch->k)); /* as CONE */
+                ch->i = 0;
+                act[na++] = k; /* examined later in this pass */
+            }
         }
-        {
-            uint32_t h = (cl.x1 - cl.x0) / 2u, q;
-            for (q = 4; q-- > 0;) {
-                fovsdf__cell ch;
-                ch.x0 = cl.x0 + ((q & 1) ? h : 0); ch.x1 = ch.x0 + h;
-                ch.y0 = cl.y0 + ((q & 2) ? h : 0); ch.y1 = ch.y0 + h;
-                ch.level = cl.level + 1;
-                ch.t = t;
-                FOV_ASSERT(sp < (int)(sizeof stk / sizeof stk[0]));
-                stk[sp++] = ch;
+        na = keep;
+        /* one step of every cone in flight */
+        for (j = 0; j < na; j += nb) {
+            nb = na - j < FOVSDF_BATCH ? na - j : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *p = &cn[act[j + i]];
+                w->bx[i] = c->origin[0] + p->a[0] * p->t; w->by[i] = c->origin[1] + p->a[1] * p->t;
+                w->bz[i] = c->origin[2] + p->a[2] * p->t;
+            }
+            fovsdf__eval_batch(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0,
+                               w->bd, 0, w->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                fovsdf__wcone *p = &cn[act[j + i]];
+                /* as fovsdf__cone_march */
+                float d = w->bd[i] - (mc->ulp0 + mc->ulp1 * p->t);
+                if (d <= p->t * p->k * (1.0f + FOVSDF_CONE_SLACK) + mc->eps) {
+                    p->i = 0xffffffffu; /* stopped: no more steps (t <= t_max stays) */
+                } else {
+                    p->t += (d - p->t * p->k) / (1.0f + p->k);
+                    ++p->i;
+                }
             }
         }
     }
+    w->st->evals_lowres += e;
 }
 
 FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
@@ -6223,15 +6325,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     if (!f.cone)
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
-    if (f.cone) {
-        /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
-           by them gives their rays a safe start */
-        float a[3], k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f,
-                                          (float)(tx + T) + 2.0f, (float)(ty + T) + 2.0f, a);
-        f.t_ring = fovsdf__cone_march(c, mc, a, k, 0.0f, st);
-        if (f.t_ring < 0.0f) f.t_ring = c->t_max; /* the whole neighbourhood is empty */
-        fovsdf__fov_cones(&f, mc, tx, ty, T);
-    }
+    if (f.cone) fovsdf__fov_cones(&f, mc, tx, ty, T);
     /* rounds: each pixel goes as far as the cells it needs allow; what they miss is requested
        and traced (or shaded) as one wavefront (fovsdf__fov_run) before the next round, so a
        tile traces and shades exactly the cells a lazy pass over its pixels would, with the
