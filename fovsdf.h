@@ -6289,6 +6289,74 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
     w->st->evals_lowres += e;
 }
 
+/* Steps 3 and 4 for pixel (x, y) of a FIPR / CONE_FOV tile, as far as the cells it needs allow:
+   0 when one is missing (requested: f->miss), else 1 (the pixel is queued or written). *ps
+   keeps its mask decision between rounds. */
+FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint8_t *ps, int due,
+                                   const fovsdf_output *o)
+{
+    const fovsdf_ctx *c = f->c;
+    int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
+    f->miss = 0;
+    if (*ps == 0u) {
+        /* step 3: the mask */
+        float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
+        int in;
+        if (w <= c->cfg.acuity.fovea_deg) in = 1;
+        else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
+        else {
+            p = fovsdf_acuity_p(&c->cfg.acuity, w);
+            in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
+                 (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
+                  fovsdf__fov_edge(f, f->cone ? u : (int32_t)(x / 4u),
+                                   f->cone ? v : (int32_t)(y / 4u)));
+        }
+        if (f->miss) return 0;
+        *ps = in ? 2u : 1u;
+    }
+    /* step 4: render */
+    if (*ps == 2u) {
+        float t0;
+        int miss = 0;
+        if (f->cone || f->safe) {
+            t0 = f->cone ? f->mid[(size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0)].tc
+                         : fovsdf__fov_tc(f, u, v);
+            miss = t0 < 0.0f;
+            if (miss) t0 = 0.0f;
+        } else {
+            int32_t a, b;
+            t0 = c->t_max;
+            for (b = -f->r; b <= f->r; ++b)
+                for (a = -f->r; a <= f->r; ++a)
+                    t0 = fov__minf(t0, fovsdf__fov_mid(f, u + a, v + b, 0)->th);
+            if (f->miss) return 0;
+        }
+        fovsdf__wave_pixel(f->wv, f->mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
+    } else if (!due) {
+        if (o->mask)
+            o->mask[(size_t)(y - o->origin_y) *
+                    (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
+                    (x - o->origin_x)] = 2u;
+    } else {
+        int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
+        float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f,
+            col[3] = { 0.0f, 0.0f, 0.0f };
+        const fovsdf__mid *own = fovsdf__fov_mid(f, u, v, 1);
+        for (b = 0; b < 2; ++b)
+            for (a = 0; a < 2; ++a) {
+                const fovsdf__mid *m = fovsdf__fov_mid(f, ua + a, va + b, 1);
+                float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
+                col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
+                col[2] += wt * m->rgb[2];
+            }
+        if (f->miss) return 0;
+        fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u,
+                    own->mat, 0u);
+    }
+    *ps = 3u;
+    return 1;
+}
+
 FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
                                    const fovsdf__marcher *mp, uint32_t tx, uint32_t ty,
                                    uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
@@ -6297,7 +6365,9 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];
-    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS], done[64u * 64u / 32u];
+    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS];
+    uint8_t ps[4u * FOVSDF_FOV_CELLS]; /* per pixel: 0 unknown, 1 outside the mask, 2 inside,
+                                          3 done (a tile has at most 4 pixels per mid cell) */
     fovsdf__fovt f;
     uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh, left;
     int32_t am;
@@ -6326,78 +6396,23 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
     if (f.cone) fovsdf__fov_cones(&f, mc, tx, ty, T);
-    /* rounds: each pixel goes as far as the cells it needs allow; what they miss is requested
-       and traced (or shaded) as one wavefront (fovsdf__fov_run) before the next round, so a
-       tile traces and shades exactly the cells a lazy pass over its pixels would, with the
-       same values */
-    FOV_ASSERT((rx1 - rx0) * (ry1 - ry0) <= 64u * 64u);
-    for (i = 0; i < 64u * 64u / 32u; ++i) done[i] = 0;
+    /* rounds: each pixel goes as far as the cells it needs allow; the cells it misses are
+       requested and marched (or shaded) as one wavefront (fovsdf__fov_run) before the next
+       round. A pixel requests a cell only on the path the lazy pass took (every value it read
+       before was final), so the tile traces and shades exactly the cells that pass did, with
+       the same values; only the order of the queued pixels differs. */
+    FOV_ASSERT((rx1 - rx0) * (ry1 - ry0) <= 4u * FOVSDF_FOV_CELLS);
+    for (i = 0; i < (rx1 - rx0) * (ry1 - ry0); ++i) ps[i] = 0;
     for (;;) {
-    left = 0;
-    for (y = ry0; y < ry1; ++y)
-        for (x = rx0; x < rx1; ++x) {
-            int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
-            uint32_t pi = (y - ry0) * (rx1 - rx0) + (x - rx0);
-            float w, p;
-            int in;
-            if (done[pi / 32u] & (1u << (pi % 32u))) continue;
-            f.miss = 0;
-            w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f);
-            /* step 3: the mask */
-            if (w <= c->cfg.acuity.fovea_deg) in = 1;
-            else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
-            else {
-                p = fovsdf_acuity_p(&c->cfg.acuity, w);
-                in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
-                     (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
-                      fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u),
-                                       f.cone ? v : (int32_t)(y / 4u)));
+        left = 0;
+        for (y = ry0; y < ry1; ++y)
+            for (x = rx0; x < rx1; ++x) {
+                uint8_t *q = &ps[(y - ry0) * (rx1 - rx0) + (x - rx0)];
+                if (*q != 3u && !fovsdf__fov_pixel(&f, x, y, q, due, o)) ++left;
             }
-            if (f.miss) { ++left; continue; }
-            /* step 4: render */
-            if (in) {
-                float t0;
-                int miss = 0;
-                if (f.cone || f.safe) {
-                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc
-                        : fovsdf__fov_tc(&f, u, v);
-                    miss = t0 < 0.0f;
-                    if (miss) t0 = 0.0f;
-                } else {
-                    int32_t a, b;
-                    t0 = c->t_max;
-                    for (b = -f.r; b <= f.r; ++b)
-                        for (a = -f.r; a <= f.r; ++a)
-                            t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
-                }
-                if (f.miss) { ++left; continue; }
-                fovsdf__wave_pixel(wv, mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
-            } else if (!due) {
-                if (o->mask)
-                    o->mask[(size_t)(y - o->origin_y) *
-                            (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
-                            (x - o->origin_x)] = 2u;
-            } else {
-                int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
-                float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f,
-                    col[3] = { 0.0f, 0.0f, 0.0f };
-                const fovsdf__mid *own = fovsdf__fov_mid(&f, u, v, 1);
-                for (b = 0; b < 2; ++b)
-                    for (a = 0; a < 2; ++a) {
-                        const fovsdf__mid *m = fovsdf__fov_mid(&f, ua + a, va + b, 1);
-                        float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                        col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
-                        col[2] += wt * m->rgb[2];
-                    }
-                if (f.miss) { ++left; continue; }
-                fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f,
-                            0u, own->mat, 0u);
-            }
-            done[pi / 32u] |= 1u << (pi % 32u);
-        }
-    if (left == 0) break;
-    FOV_ASSERT(f.nrm > 0 || f.nrl > 0);
-    fovsdf__fov_run(&f);
+        if (left == 0) break;
+        FOV_ASSERT(f.nrm > 0 || f.nrl > 0);
+        fovsdf__fov_run(&f);
     }
 }
 
