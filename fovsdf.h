@@ -5985,7 +5985,8 @@ typedef struct fovsdf__mid {
     float rgb[3];          /* its colour, once shaded */
     int32_t mat;
     uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
-    uint8_t req;           /* requested this round: 1 its march, 2 its shading */
+    uint8_t req;           /* requested this round: 1 its march, 2 its shading, 4 its cone
+                              (safe FIPR; tc is -3 meanwhile) */
 } fovsdf__mid;
 
 typedef struct fovsdf__fovt {
@@ -5993,7 +5994,8 @@ typedef struct fovsdf__fovt {
     const fovsdf__marcher *mp; /* mid rays and sample rays */
     fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
     float *l0;                 /* FIPR level 0: t, or -1 before it is traced (-3: requested) */
-    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown */
+    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown,
+                                  -3 requested */
     int32_t mu0, mv0, lu0, lv0, r;
     uint32_t ms, ls;
     float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
@@ -6001,8 +6003,8 @@ typedef struct fovsdf__fovt {
     fovsdf_stats *st;
     fovsdf__wave *wv;          /* the wavefront the requests run in */
     int miss;                  /* a value the current pixel needs is not there yet */
-    uint32_t nrm, nrl;         /* requests of this round: mid cells and level-0 cells */
-    uint32_t *rqm, *rql;       /* their indices in mid and l0 */
+    uint32_t nrm, nrl, nrs;    /* requests of this round: mid cells, level-0 rays and cones */
+    uint32_t *rqm, *rql, *rqs; /* their indices in mid, l0 and l0s */
     fovsdf__mid dummy;         /* what a missing mid cell reads as */
 } fovsdf__fovt;
 
@@ -6045,10 +6047,13 @@ FOVSDF__PRIV float fovsdf__fov_l0s(fovsdf__fovt *f, int32_t i, int32_t j)
     FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls &&
                j < f->lv0 + (int32_t)f->ls);
     q = f->l0s + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
-    if (*q < -1.5f)
-        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4),
-                                (float)(4 * j + 4), 0.0f, f->st);
-    return *q;
+    if (*q > -1.5f) return *q;
+    if (*q > -2.5f) { /* unknown: request its cone (-3) */
+        *q = -3.0f;
+        f->rqs[f->nrs++] = (uint32_t)(q - f->l0s);
+    }
+    f->miss = 1;
+    return -1.0f;
 }
 FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
 {
@@ -6056,12 +6061,22 @@ FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
     FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
                v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
-    if (m->tc < -1.5f) {
-        float tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
-        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2),
-                                   (float)(2 * v + 2), tp, f->st);
+    if (m->tc > -1.5f) return m->tc;
+    if (m->tc > -2.5f) {
+        int miss = f->miss;
+        float tp;
+        f->miss = 0;
+        tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+        if (f->miss) return -1.0f; /* the parent's cone first */
+        f->miss = miss;
+        /* as fovsdf__safe_start: the parent's cone is empty up to t_max, so is this one */
+        if (tp < 0.0f) { m->tc = -1.0f; return -1.0f; }
+        if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+        m->req |= 4u; /* its cone */
+        m->tc = -3.0f;
     }
-    return m->tc;
+    f->miss = 1;
+    return -1.0f;
 }
 
 /* Mid cell (u, v): its march requested on first use, its shading when `shade` (f->miss and a
@@ -6079,7 +6094,11 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
         if (f->cone) {
             t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
         } else if (f->safe) {
+            int miss = f->miss;
+            f->miss = 0;
             t0 = fovsdf__fov_tc(f, u, v); /* -1: proven empty, below */
+            if (f->miss) return &f->dummy; /* its cone first */
+            f->miss = miss;
         } else {
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
             int miss = f->miss;
@@ -6117,7 +6136,7 @@ FOVSDF__PRIV void fovsdf__fov_run(fovsdf__fovt *f)
     float px[FOVSDF_WAVE], py[FOVSDF_WAVE], t0[FOVSDF_WAVE], rgb[3 * FOVSDF_WAVE];
     fovsdf_hit h[FOVSDF_WAVE];
     int32_t mat[FOVSDF_WAVE];
-    uint32_t id[FOVSDF_WAVE], i, k, n, pass;
+    uint32_t id[FOVSDF_WAVE], act[FOVSDF_WAVE], i, j, k, n, pass;
     for (i = 0; i < f->nrl; i += n) {
         n = f->nrl - i < FOVSDF_WAVE ? f->nrl - i : FOVSDF_WAVE;
         for (k = 0; k < n; ++k) {
@@ -6133,6 +6152,38 @@ FOVSDF__PRIV void fovsdf__fov_run(fovsdf__fovt *f)
         }
     }
     f->nrl = 0;
+    /* safe FIPR's cones (fovsdf__safe_start): level 0's from the camera and the mid cells'
+       from their parents', which the request found already marched: one wavefront */
+    for (i = 0, j = 0; i < f->nrs || j < f->nrm;) {
+        fovsdf__wcone cn[FOVSDF_WAVE];
+        for (n = 0; n < FOVSDF_WAVE && (i < f->nrs || j < f->nrm);) {
+            float x0, y0, s = 4.0f, tp = 0.0f;
+            if (i < f->nrs) {
+                uint32_t q = f->rqs[i++];
+                x0 = 4.0f * (float)(f->lu0 + (int32_t)(q % f->ls));
+                y0 = 4.0f * (float)(f->lv0 + (int32_t)(q / f->ls));
+                id[n] = q;
+            } else {
+                uint32_t q = f->rqm[j++];
+                int32_t u = f->mu0 + (int32_t)(q % f->ms), v = f->mv0 + (int32_t)(q / f->ms);
+                if (!(f->mid[q].req & 4u)) continue;
+                x0 = 2.0f * (float)u; y0 = 2.0f * (float)v; s = 2.0f;
+                tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+                id[n] = q | 0x80000000u;
+            }
+            cn[n].k = fovsdf__cell_cone(c, x0, y0, x0 + s, y0 + s, cn[n].a);
+            cn[n].t = tp * (1.0f / FOV__SQRT(1.0f + cn[n].k * cn[n].k));
+            t0[n] = tp;
+            ++n;
+        }
+        fovsdf__wave_cones(f->wv, f->mp, n, cn, act);
+        for (k = 0; k < n; ++k) {
+            float t = cn[k].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[k].t, t0[k]), f->mp->t_max);
+            if (id[k] & 0x80000000u) f->mid[id[k] & 0x7fffffffu].tc = t;
+            else f->l0s[id[k]] = t;
+        }
+    }
+    f->nrs = 0;
     for (pass = 1; pass <= 2; ++pass) /* 1: marches, 2: shading */
         for (i = 0; i < f->nrm;) {
             for (n = 0; n < FOVSDF_WAVE && i < f->nrm; ++i) {
@@ -6321,6 +6372,7 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
         if (f->cone || f->safe) {
             t0 = f->cone ? f->mid[(size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0)].tc
                          : fovsdf__fov_tc(f, u, v);
+            if (f->miss) return 0;
             miss = t0 < 0.0f;
             if (miss) t0 = 0.0f;
         } else {
@@ -6365,7 +6417,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];
-    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS];
+    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS], rqs[FOVSDF_FOV_CELLS];
     uint8_t ps[4u * FOVSDF_FOV_CELLS]; /* per pixel: 0 unknown, 1 outside the mask, 2 inside,
                                           3 done (a tile has at most 4 pixels per mid cell) */
     fovsdf__fovt f;
@@ -6373,7 +6425,8 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
     int32_t am;
     int due;
     f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
-    f.wv = wv; f.rqm = rqm; f.rql = rql; f.nrm = 0; f.nrl = 0; f.miss = 0;
+    f.wv = wv; f.rqm = rqm; f.rql = rql; f.rqs = rqs; f.nrm = 0; f.nrl = 0; f.nrs = 0;
+    f.miss = 0;
     FOV_MEMSET(&f.dummy, 0, sizeof f.dummy);
     f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
     f.safe = !f.cone && !c->cfg.heuristic_start;
@@ -6411,7 +6464,7 @@ FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                 if (*q != 3u && !fovsdf__fov_pixel(&f, x, y, q, due, o)) ++left;
             }
         if (left == 0) break;
-        FOV_ASSERT(f.nrm > 0 || f.nrl > 0);
+        FOV_ASSERT(f.nrm > 0 || f.nrl > 0 || f.nrs > 0);
         fovsdf__fov_run(&f);
     }
 }
