@@ -5752,8 +5752,9 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
                                    uint32_t ry1, fovsdf_stats *st,
         fovsdf__wave *wv)
 {
-    float scratch[FOVSDF_TILE_SCRATCH];
+    float scratch[FOVSDF_TILE_SCRATCH], px[FOVSDF_WAVE], py[FOVSDF_WAVE], ts[FOVSDF_WAVE];
     float *lv[6];
+    fovsdf_hit h[FOVSDF_WAVE];
     uint32_t side[6], apr[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, l, x, y;
     int32_t r = c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius;
     size_t off = 0;
@@ -5769,23 +5770,27 @@ FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m
         uint32_t S = 1u << (L - 1u - l), u, v;
         int32_t c0x = (int32_t)(tx / S) - (int32_t)apr[l],
             c0y = (int32_t)(ty / S) - (int32_t)apr[l];
-        for (v = 0; v < side[l]; ++v)
-            for (u = 0; u < side[l]; ++u) {
-                int32_t cx = c0x + (int32_t)u, cy = c0y + (int32_t)v;
-                float ro[3], rd[3], t0 = 0.0f;
-                fovsdf_hit h;
+        uint32_t n = side[l] * side[l], i, j, nb;
+        for (i = 0; i < n; i += nb) { /* the level's rays as one wavefront, FOVSDF_WAVE at once */
+            nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+            for (j = 0; j < nb; ++j) {
+                int32_t cx, cy;
+                u = (i + j) % side[l]; v = (i + j) / side[l];
+                cx = c0x + (int32_t)u; cy = c0y + (int32_t)v;
+                ts[j] = 0.0f;
                 if (l > 0) { /* parent cell and its neighbours, in the parent's array */
                     int32_t pu = ((cx >= 0 ? cx : cx - 1) / 2) -
                         ((int32_t)(tx / (S * 2u)) - (int32_t)apr[l - 1]);
                     int32_t pv = ((cy >= 0 ? cy : cy - 1) / 2) -
                         ((int32_t)(ty / (S * 2u)) - (int32_t)apr[l - 1]);
-                    t0 = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
+                    ts[j] = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
                 }
-                fovsdf__ray(c, ((float)cx + 0.5f) * (float)S, ((float)cy + 0.5f) * (float)S, ro,
-                            rd);
-                fovsdf__march(m, ro, rd, t0, &h, 0, st);
-                lv[l][(size_t)v * side[l] + u] = h.kind == FOVSDF_MISS ? c->t_max : h.t;
+                px[j] = ((float)cx + 0.5f) * (float)S; py[j] = ((float)cy + 0.5f) * (float)S;
             }
+            fovsdf__wave_rays(wv, m, nb, px, py, ts, h, 0);
+            for (j = 0; j < nb; ++j)
+                lv[l][i + j] = h[j].kind == FOVSDF_MISS ? c->t_max : h[j].t;
+        }
     }
     st->evals_lowres += st->evals - e0;
     for (y = ry0; y < ry1; ++y)
@@ -5825,11 +5830,13 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
                                         uint32_t ry1, fovsdf_stats *st,
         fovsdf__wave *wv)
 {
-    float scratch[FOVSDF_TILE_SCRATCH];
+    float scratch[FOVSDF_TILE_SCRATCH], ts[FOVSDF_WAVE];
     float *lv[6];
+    fovsdf__wcone cn[FOVSDF_WAVE];
     uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width,
-        H = c->cam.height, l, x, y;
+        H = c->cam.height, l, x, y, id[FOVSDF_WAVE], act[FOVSDF_WAVE];
     size_t off = 0;
+    (void)st; /* the cones count into wv's, the same */
     for (l = 0; l + 1u < L; ++l) {
         side[l] = T >> (L - 1u - l);
         lv[l] = scratch + off;
@@ -5838,15 +5845,34 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
     FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
     for (l = 0; l + 1u < L; ++l) {
         uint32_t S = 1u << (L - 1u - l), u, v;
-        /* the cells over the requested pixels (their parents lie over them too) */
-        for (v = (ry0 - ty) / S; v <= (ry1 - 1u - ty) / S; ++v)
-            for (u = (rx0 - tx) / S; u <= (rx1 - 1u - tx) / S; ++u) {
-                uint32_t x0 = tx + u * S, y0 = ty + v * S;
-                float tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
-                lv[l][(size_t)v * side[l] + u] =
-                    fovsdf__safe_start(c, m, (float)x0, (float)y0, (float)(x0 + S < W ? x0 + S : W),
-                                       (float)(y0 + S < H ? y0 + S : H), tp, st);
+        /* the cells over the requested pixels (their parents lie over them too), their cones
+           (fovsdf__safe_start's) as one wavefront, FOVSDF_WAVE at once */
+        uint32_t u0 = (rx0 - tx) / S, v0 = (ry0 - ty) / S, nu = (rx1 - 1u - tx) / S - u0 + 1u,
+            n = nu * ((ry1 - 1u - ty) / S - v0 + 1u), i, j, nb, k;
+        for (i = 0; i < n; i += nb) {
+            nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+            for (j = k = 0; j < nb; ++j) {
+                uint32_t x0, y0;
+                float tp;
+                u = u0 + (i + j) % nu; v = v0 + (i + j) / nu;
+                x0 = tx + u * S; y0 = ty + v * S;
+                tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
+                if (tp < 0.0f) { /* the parent's cone is empty up to t_max: so is this one */
+                    lv[l][(size_t)v * side[l] + u] = -1.0f;
+                    continue;
+                }
+                cn[k].k = fovsdf__cell_cone(c, (float)x0, (float)y0,
+                                            (float)(x0 + S < W ? x0 + S : W),
+                                            (float)(y0 + S < H ? y0 + S : H), cn[k].a);
+                cn[k].t = tp * (1.0f / FOV__SQRT(1.0f + cn[k].k * cn[k].k));
+                ts[k] = tp;
+                id[k++] = v * side[l] + u;
             }
+            fovsdf__wave_cones(wv, m, k, cn, act);
+            for (j = 0; j < k; ++j)
+                lv[l][id[j]] =
+                    cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, ts[j]), m->t_max);
+        }
     }
     for (y = ry0; y < ry1; ++y)
         for (x = rx0; x < rx1; ++x) {
