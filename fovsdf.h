@@ -5596,59 +5596,138 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
     return FOV__SQRT(fov__maxf(1.0f - cmin * cmin, 0.0f)) / cmin * 1.0001f + 1e-6f;
 }
 
-typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
+/* A cell of the cone pyramid: its pixel rectangle relative to the tile's corner, its level and
+   its parent's t. */
+typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
 
-/* Depth-first cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to
-   the image only, so the cells and results do not depend on how the caller splits the image),
-   writing the pixels inside the requested region [rx0,rx1) x [ry0,ry1). */
+#ifndef FOVSDF_CONE_SLOTS /* cones in flight per CONE tile (each keeps a 40-cell stack) */
+#define FOVSDF_CONE_SLOTS 16
+#endif
+#if FOVSDF_CONE_SLOTS < 1
+#error "fovsdf: FOVSDF_CONE_SLOTS must be at least 1"
+#endif
+
+/* The cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to the image
+   only, so the cells and results do not depend on how the caller splits the image), writing the
+   pixels inside the requested region [rx0,rx1) x [ry0,ry1). The cones march as one wavefront:
+   FOVSDF_CONE_SLOTS slots, each walking its part of the tree depth first on its own stack (a
+   cell's children wait there for it; at most 3 per level), an idle slot taking the oldest cell
+   of the fullest stack; every cone exactly as fovsdf__cone_march, so the cells, their t and the
+   counts are those of a single depth-first walk; only the order of the queued pixels differs. */
 FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
                                     const fovsdf__marcher *mp, uint32_t x0, uint32_t y0,
                                     uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
                                     uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
         fovsdf__wave *wv)
 {
-    fovsdf__cell stk[4 * 10];
-    int sp = 0;
-    stk[0].x0 = x0; stk[0].y0 = y0; stk[0].x1 = x1; stk[0].y1 = y1; stk[0].level = 1;
-    stk[0].t = 0.0f;
-    sp = 1;
-    while (sp > 0) {
-        fovsdf__cell cl = stk[--sp];
-        float a[3], k, t, cs;
-        uint32_t x, y, px0, py0, px1, py1;
-        px0 = cl.x0 > rx0 ? cl.x0 : rx0; px1 = cl.x1 < rx1 ? cl.x1 : rx1;
-        py0 = cl.y0 > ry0 ? cl.y0 : ry0; py1 = cl.y1 < ry1 ? cl.y1 : ry1;
-        if (px0 >= px1 || py0 >= py1) continue; /* not requested */
-        k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        cs = 1.0f / FOV__SQRT(1.0f + k * k); /* cos(alpha) */
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * cs, st);
-        if (t < 0.0f) { /* proven empty: no full-resolution marching */
-            for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x)
-                    fovsdf__wave_pixel(wv, mp, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
-            continue;
+    fovsdf__cell stk[FOVSDF_CONE_SLOTS][4 * 10], cur[FOVSDF_CONE_SLOTS];
+    fovsdf__wcone cn[FOVSDF_CONE_SLOTS];
+    uint32_t sp[FOVSDF_CONE_SLOTS], s, i, nb, act[FOVSDF_CONE_SLOTS];
+    int busy[FOVSDF_CONE_SLOTS];
+    uint64_t e = 0;
+    for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) { sp[s] = 0; busy[s] = 0; }
+    stk[0][0].x0 = 0; stk[0][0].y0 = 0; stk[0][0].x1 = (uint16_t)(x1 - x0);
+    stk[0][0].y1 = (uint16_t)(y1 - y0); stk[0][0].level = 1; stk[0][0].t = 0.0f;
+    sp[0] = 1;
+    (void)st; /* the cones count into wv's, the same */
+    for (;;) {
+        uint32_t na = 0;
+        for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) {
+            for (;;) {
+                fovsdf__cell *cl = &cur[s];
+                uint32_t px0, py0, px1, py1, x, y;
+                float t;
+                if (!busy[s]) { /* the next cell: its own stack's top, or the oldest elsewhere */
+                    uint32_t v = s, k;
+                    if (sp[s] == 0) {
+                        for (k = 0; k < FOVSDF_CONE_SLOTS; ++k)
+                            if (sp[k] > sp[v]) v = k;
+                        if (sp[v] == 0) break; /* no cell left anywhere */
+                        *cl = stk[v][0];
+                        for (k = 1; k < sp[v]; ++k) stk[v][k - 1] = stk[v][k];
+                        --sp[v];
+                    } else {
+                        *cl = stk[s][--sp[s]];
+                    }
+                    px0 = x0 + cl->x0 > rx0 ? x0 + cl->x0 : rx0;
+                    px1 = x0 + cl->x1 < rx1 ? x0 + cl->x1 : rx1;
+                    py0 = y0 + cl->y0 > ry0 ? y0 + cl->y0 : ry0;
+                    py1 = y0 + cl->y1 < ry1 ? y0 + cl->y1 : ry1;
+                    if (px0 >= px1 || py0 >= py1) continue; /* not requested */
+                    cn[s].k = fovsdf__cell_cone(c, (float)(x0 + cl->x0), (float)(y0 + cl->y0),
+                                                (float)(x0 + cl->x1), (float)(y0 + cl->y1),
+                                                cn[s].a);
+                    /* from the parent's t shortened by cos(alpha) */
+                    cn[s].t = cl->t * (1.0f / FOV__SQRT(1.0f + cn[s].k * cn[s].k));
+                    cn[s].i = 0;
+                    busy[s] = 1;
+                }
+                if (fovsdf__wcone_go(mc, &cn[s])) { act[na++] = s; break; }
+                /* the cone stopped */
+                busy[s] = 0;
+                t = cn[s].t;
+                px0 = x0 + cl->x0 > rx0 ? x0 + cl->x0 : rx0;
+                px1 = x0 + cl->x1 < rx1 ? x0 + cl->x1 : rx1;
+                py0 = y0 + cl->y0 > ry0 ? y0 + cl->y0 : ry0;
+                py1 = y0 + cl->y1 < ry1 ? y0 + cl->y1 : ry1;
+                if (t < 0.0f) { /* proven empty: no full-resolution marching */
+                    for (y = py0; y < py1; ++y)
+                        for (x = px0; x < px1; ++x)
+                            fovsdf__wave_pixel(wv, mp, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
+                    continue;
+                }
+                if ((cl->x1 - cl->x0 <= 1 && cl->y1 - cl->y0 <= 1) ||
+                    cl->level >= c->cfg.cone_levels) {
+                    for (y = py0; y < py1; ++y)
+                        for (x = px0; x < px1; ++x)
+                            fovsdf__wave_pixel(wv, mp, x, y, t, 0, NULL, 0.0f, 0.0f);
+                    continue;
+                }
+                {
+                    uint32_t xm = cl->x0 + (uint32_t)(cl->x1 - cl->x0 + 1) / 2u,
+                        ym = cl->y0 + (uint32_t)(cl->y1 - cl->y0 + 1) / 2u, q;
+                    for (q = 4; q-- > 0;) { /* pushed in reverse: taken in scan order */
+                        fovsdf__cell ch;
+                        ch.x0 = (uint16_t)((q & 1) ? xm : cl->x0);
+                        ch.x1 = (q & 1) ? cl->x1 : (uint16_t)xm;
+                        ch.y0 = (uint16_t)((q & 2) ? ym : cl->y0);
+                        ch.y1 = (q & 2) ? cl->y1 : (uint16_t)ym;
+                        if (ch.x0 >= ch.x1 || ch.y0 >= ch.y1) continue;
+                        ch.level = (uint16_t)(cl->level + 1u);
+                        ch.t = t;
+                        FOV_ASSERT(sp[s] < 4u * 10u);
+                        stk[s][sp[s]++] = ch;
+                    }
+                }
+            }
         }
-        if ((cl.x1 - cl.x0 <= 1 && cl.y1 - cl.y0 <= 1) || cl.level >= c->cfg.cone_levels) {
-            for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x)
-                    fovsdf__wave_pixel(wv, mp, x, y, t, 0, NULL, 0.0f, 0.0f);
-            continue;
-        }
-        {
-            uint32_t xm = cl.x0 + (cl.x1 - cl.x0 + 1) / 2, ym = cl.y0 + (cl.y1 - cl.y0 + 1) / 2;
-            uint32_t q;
-            for (q = 4; q-- > 0;) { /* pushed in reverse: processed in scan order */
-                fovsdf__cell ch;
-                ch.x0 = (q & 1) ? xm : cl.x0; ch.x1 = (q & 1) ? cl.x1 : xm;
-                ch.y0 = (q & 2) ? ym : cl.y0; ch.y1 = (q & 2) ? cl.y1 : ym;
-                if (ch.x0 >= ch.x1 || ch.y0 >= ch.y1) continue;
-                ch.level = cl.level + 1;
-                ch.t = t;
-                FOV_ASSERT(sp < (int)(sizeof stk / sizeof stk[0]));
-                stk[sp++] = ch;
+        if (na == 0) break; /* nothing in flight and no cell left */
+        /* one step of every cone in flight (as fovsdf__cone_march) */
+        for (i = 0; i < FOVSDF_BATCH; ++i) wv->be[i] = mc->eps;
+        for (s = 0; s < na; s += nb) {
+            nb = na - s < FOVSDF_BATCH ? na - s : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *p = &cn[act[s + i]];
+                wv->bx[i] = c->origin[0] + p->a[0] * p->t;
+                wv->by[i] = c->origin[1] + p->a[1] * p->t;
+                wv->bz[i] = c->origin[2] + p->a[2] * p->t;
+            }
+            fovsdf__eval_batch(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f, 0,
+                               wv->bd, 0, wv->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                fovsdf__wcone *p = &cn[act[s + i]];
+                float d = wv->bd[i] - (mc->ulp0 + mc->ulp1 * p->t);
+                if (d <= p->t * p->k * (1.0f + FOVSDF_CONE_SLACK) + mc->eps) {
+                    p->i = 0xffffffffu; /* stopped (t <= t_max stays) */
+                } else {
+                    p->t += (d - p->t * p->k) / (1.0f + p->k);
+                    ++p->i;
+                }
             }
         }
     }
+    wv->st->evals_lowres += e;
 }
 
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
