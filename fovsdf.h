@@ -5268,11 +5268,8 @@ FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, 
             fovsdf__lit lt;
             r->prep = 0;
             if (!r->lit) continue;
-            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off,
-                                    (jb && jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)
-                                        ? jb->sh : NULL,
-                                    &lt))
-                continue;
+            if (jb && !(jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)) jb = 0;
+            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off, jb ? jb->sh : NULL, &lt)) continue;
             r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
             if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k, st))
                 w->q[cnt++] = k;
@@ -5600,8 +5597,8 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
    its parent's t. */
 typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
 
-#ifndef FOVSDF_CONE_SLOTS /* cones in flight per CONE tile (each keeps a 40-cell stack) */
-#define FOVSDF_CONE_SLOTS 16
+#ifndef FOVSDF_CONE_SLOTS /* cones in flight per CONE tile (each keeps a 40-cell stack, 640 B) */
+#define FOVSDF_CONE_SLOTS (FOVSDF_WAVE / 8)
 #endif
 #if FOVSDF_CONE_SLOTS < 1
 #error "fovsdf: FOVSDF_CONE_SLOTS must be at least 1"
