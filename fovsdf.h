@@ -5115,6 +5115,31 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
     w->cap = FOVSDF_WAVE / c->cfg.spp;
 }
 
+/* The wavefront's evaluations: n <= FOVSDF_BATCH points as fovsdf__eval_batch, or point by point
+   when they fill less than FOVSDF_WAVE_MIN lanes of a batch (the same values, materials and
+   counts either way): the batch evaluator of a built-in program always runs FOVSDF__L lanes,
+   which costs about as much as 10 single evaluations (callgrind, 160x90, primitives). A scene
+   with a batch callback only is always evaluated in batches. */
+#ifndef FOVSDF_WAVE_MIN
+#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 2) / 3)
+#endif
+FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                    const float *x, const float *y, const float *z,
+                                    const float *eps, float inflate, float *d, int32_t *mat,
+                                    fovsdf_stats *st)
+{
+    uint32_t i;
+    if (n >= (uint32_t)(FOVSDF_WAVE_MIN) || (!sc->dist_ex && !sc->dist)) {
+        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        float p[3];
+        p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
+        d[i] = fovsdf__eval_in(sc, inv_lip, p, eps[i], inflate, mat ? &mat[i] : 0, st);
+    }
+}
+
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
 FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t cnt)
 {
@@ -5127,8 +5152,8 @@ FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, 
             w->bx[nb] = mc->q[0]; w->by[nb] = mc->q[1]; w->bz[nb] = mc->q[2];
             w->be[nb] = mc->qe;
         }
-        fovsdf__eval_batch(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, 0, w->bd,
-                           w->bm, w->st);
+        fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm,
+                          w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             fovsdf__mco *mc = &w->ray[k].mc;
@@ -5153,8 +5178,7 @@ FOVSDF__PRIV void fovsdf__wave_shadows(fovsdf__wave *w, uint32_t cnt)
             w->bx[nb] = s->p[0] + s->l[0] * s->t; w->by[nb] = s->p[1] + s->l[1] * s->t;
             w->bz[nb] = s->p[2] + s->l[2] * s->t;
         }
-        fovsdf__eval_batch(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd, 0,
-                           w->st);
+        fovsdf__wave_eval(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             head = (head + 1u) % FOVSDF_WAVE;
@@ -5187,9 +5211,9 @@ FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float
         }
         if (nb + 4u > FOVSDF__L || (k == nr && nb > 0)) {
             for (j = 0; j < nb; j += FOVSDF_BATCH)
-                fovsdf__eval_batch(&c->scene, inv, nb - j < FOVSDF_BATCH ? nb - j : FOVSDF_BATCH,
-                                   w->bx + j, w->by + j, w->bz + j, w->be + j, 1.0f, 0,
-                                   w->bd + j, 0, w->st);
+                fovsdf__wave_eval(&c->scene, inv, nb - j < FOVSDF_BATCH ? nb - j : FOVSDF_BATCH,
+                                  w->bx + j, w->by + j, w->bz + j, w->be + j, 1.0f, w->bd + j, 0,
+                                  w->st);
             for (j = 0; j < nb; ++j)
                 w->ray[w->bk[j] / 4u].dv[w->bk[j] % 4u] = w->bd[j] >= FLT_MAX ? 0.0f : w->bd[j];
             nb = 0;
@@ -5557,8 +5581,8 @@ FOVSDF__PRIV void fovsdf__wave_cones(fovsdf__wave *w, const fovsdf__marcher *m, 
                 w->bx[i] = c->origin[0] + q->a[0] * q->t; w->by[i] = c->origin[1] + q->a[1] * q->t;
                 w->bz[i] = c->origin[2] + q->a[2] * q->t;
             }
-            fovsdf__eval_batch(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd,
-                               0, w->st);
+            fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
+                              w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 uint32_t id = act[j + i];
@@ -5597,8 +5621,13 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
    its parent's t. */
 typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
 
-#ifndef FOVSDF_CONE_SLOTS /* cones in flight per CONE tile (each keeps a 40-cell stack, 640 B) */
-#define FOVSDF_CONE_SLOTS (FOVSDF_WAVE / 8)
+/* Cones in flight per CONE tile (each slot keeps a 40-cell stack, 640 bytes). 1 by default: with
+   the built-in programs' batch evaluator (a bounded subtree runs when any lane needs it, and
+   the cones of a tile are spread over it) 32 slots cost 3 % more instructions than one
+   (callgrind, primitives 640x360: 2.95e9 against 2.86e9, 1 slot the same as marching each
+   cone alone); a batch callback that gains from width may want more. */
+#ifndef FOVSDF_CONE_SLOTS
+#define FOVSDF_CONE_SLOTS 1
 #endif
 #if FOVSDF_CONE_SLOTS < 1
 #error "fovsdf: FOVSDF_CONE_SLOTS must be at least 1"
@@ -5709,8 +5738,8 @@ FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *
                 wv->by[i] = c->origin[1] + p->a[1] * p->t;
                 wv->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__eval_batch(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f, 0,
-                               wv->bd, 0, wv->st);
+            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f,
+                              wv->bd, 0, wv->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[s + i]];
@@ -6423,8 +6452,8 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
                 w->bx[i] = c->origin[0] + p->a[0] * p->t; w->by[i] = c->origin[1] + p->a[1] * p->t;
                 w->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__eval_batch(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0,
-                               w->bd, 0, w->st);
+            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
+                              w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[j + i]];

@@ -1,8 +1,8 @@
 #!/bin/bash
 # wave_variants.sh - the wavefront's images and counts do not depend on how many rays are in
 # flight (FOVSDF_WAVE), how many points a batch holds (FOVSDF_BATCH) or on the SIMD paths
-# (FOVSDF_NO_SIMD), nor on how many cones of a CONE tile are in flight (FOVSDF_CONE_SLOTS, by
-# default FOVSDF_WAVE / 8: 2, 5 and 32 in the variants, 1 in cone_slots1):
+# (FOVSDF_NO_SIMD), nor on how many cones of a CONE tile are in flight (FOVSDF_CONE_SLOTS, 1 by
+# default, 5 and 32 in the cone_slots variants, where idle slots take other slots' cells):
 # tests/test_fovsdf_wave.c built with each variant passes its own checks and prints the same
 # "INFO hash" lines as the default build.
 cd "$(dirname "$0")/.." || exit 2
@@ -27,7 +27,7 @@ n=$(wc -l <"$OUT/default.hash")
 [ "$n" -ge 54 ] && ok "default_prints_hashes" || bad "default_prints_hashes" "$n lines"
 for v in "batch1_wave16:-DFOVSDF_BATCH=1 -DFOVSDF_WAVE=16" "batch7_wave40:-DFOVSDF_BATCH=7 -DFOVSDF_WAVE=40" \
          "batch64_wave256:-DFOVSDF_BATCH=64 -DFOVSDF_WAVE=256" "no_simd:-DFOVSDF_NO_SIMD" \
-         "cone_slots1:-DFOVSDF_CONE_SLOTS=1"; do
+         "cone_slots5:-DFOVSDF_CONE_SLOTS=5" "cone_slots32:-DFOVSDF_CONE_SLOTS=32"; do
     name=${v%%:*}; flags=${v#*:}
     run "$name" "$flags" || continue
     if cmp -s "$OUT/default.hash" "$OUT/$name.hash"; then ok "${name}_same_bytes"
