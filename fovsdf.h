@@ -5257,10 +5257,34 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
     w->prgb = 0; w->pt = 0; w->pmat = 0;
 }
 
-/* March every queued request of the ring (head 0, cnt entries) to the end. */
-FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, uint32_t cnt)
+/* The wavefront's evaluations: n <= FOVSDF_BATCH points as fovsdf__eval_batch, or point by point
+   when they fill less than FOVSDF_WAVE_MIN lanes of a batch (the same values, materials and
+   counts either way): the batch evaluator of a built-in program always runs FOVSDF__L lanes,
+   which costs about as much as 10 single evaluations (callgrind, 160x90, primitives). A scene
+   with a batch callback only is always evaluated in batches. */
+#ifndef FOVSDF_WAVE_MIN
+#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 2) / 3)
+#endif
+FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                    const float *x, const float *y, const float *z,
+                                    const float *eps, float inflate, float *d, int32_t *mat,
+                                    fovsdf_stats *st)
 {
-    const fovsdf__marcher *m = w->m;
+    uint32_t i;
+    if (n >= (uint32_t)(FOVSDF_WAVE_MIN) || (!sc->dist_ex && !sc->dist)) {
+        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+        return;
+    }
+    for (i = 0; i < n; ++i) {
+        float p[3];
+        p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
+        d[i] = fovsdf__eval_in(sc, inv_lip, p, eps[i], inflate, mat ? &mat[i] : 0, st);
+    }
+}
+
+/* March every queued request of the ring (head 0, cnt entries) to the end. */
+FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t cnt)
+{
     uint32_t head = 0, nb, i;
     while (cnt > 0) {
         float qi = w->ray[w->q[head]].mc.qi;
@@ -5270,8 +5294,8 @@ FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, uint32_t cnt)
             w->bx[nb] = mc->q[0]; w->by[nb] = mc->q[1]; w->bz[nb] = mc->q[2];
             w->be[nb] = mc->qe;
         }
-        fovsdf__eval_batch(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, 0, w->bd,
-                           w->bm, w->st);
+        fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm,
+                          w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             fovsdf__mco *mc = &w->ray[k].mc;
@@ -5296,8 +5320,7 @@ FOVSDF__PRIV void fovsdf__wave_shadows(fovsdf__wave *w, uint32_t cnt)
             w->bx[nb] = s->p[0] + s->l[0] * s->t; w->by[nb] = s->p[1] + s->l[1] * s->t;
             w->bz[nb] = s->p[2] + s->l[2] * s->t;
         }
-        fovsdf__eval_batch(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd, 0,
-                           w->st);
+        fovsdf__wave_eval(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             head = (head + 1u) % FOVSDF_WAVE;
@@ -5454,9 +5477,9 @@ FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float
         }
         if (nb + 4u > FOVSDF__L || (k == nr && nb > 0)) {
             for (j = 0; j < nb; j += FOVSDF_BATCH)
-                fovsdf__eval_batch(&c->scene, inv, nb - j < FOVSDF_BATCH ? nb - j : FOVSDF_BATCH,
-                                   w->bx + j, w->by + j, w->bz + j, w->be + j, 1.0f, 0,
-                                   w->bd + j, 0, w->st);
+                fovsdf__wave_eval(&c->scene, inv, nb - j < FOVSDF_BATCH ? nb - j : FOVSDF_BATCH,
+                                  w->bx + j, w->by + j, w->bz + j, w->be + j, 1.0f, w->bd + j, 0,
+                                  w->st);
             for (j = 0; j < nb; ++j)
                 w->ray[w->bk[j] / 4u].dv[w->bk[j] % 4u] = w->bd[j] >= FLT_MAX ? 0.0f : w->bd[j];
             nb = 0;
@@ -5464,44 +5487,22 @@ FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float
     }
 }
 
-/* Render the queued pixels (see above). */
-FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
+/* Steps 2 to 4 of a flush: the colour of each marched ray w->ray[0 .. nr) into ray[k].col,
+   as fovsdf__shade_ray (per: rays per job, whose SKIP shadow head starts they use; 0: none);
+   ray[k].sev: its shading evaluations. */
+FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t nr,
+                                     uint32_t per)
 {
     const fovsdf_ctx *c = w->c;
-    const fovsdf__marcher *m = w->m;
     fovsdf_stats *st = w->st;
-    uint32_t spp = w->spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
+    uint32_t k, j, cnt, li;
     float hn[FOVSDF_WAVE];
     int shading = c->cfg.shading == FOVSDF_SHADE_FULL || c->cfg.shading == FOVSDF_SHADE_NO_SHADOWS;
-    if (w->nj == 0) return;
-    /* 1. the sample rays, marched as one wavefront */
-    for (k = 0; k < nr; ++k) {
-        const fovsdf__wjob *jb = &w->job[k / spp];
-        fovsdf__mco *mc = &w->ray[k].mc;
-        float ox, oy, ro[3], rd[3];
-        if (w->prgb) {
-            fovsdf__ray(c, jb->px, jb->py, ro, rd);
-        } else {
-            fovsdf__sample_offset(spp, k % spp, &ox, &oy);
-            fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
-        }
-        fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
-        if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
-            mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
-        } else if (fovsdf__mco_run(m, mc)) {
-            w->q[cnt++] = k;
-        }
-    }
-    fovsdf__wave_march(w, cnt);
     /* 2. what each ray needs for its colour (as fovsdf__sample and fovsdf__shade_ray) */
     for (k = 0; k < nr; ++k) {
         fovsdf__wray *r = &w->ray[k];
         const fovsdf__mco *mc = &r->mc;
-        st->rays++;
-        st->evals_primary += mc->evals;
-        if (mc->kind == FOVSDF_EXHAUSTED) st->exhausted++;
         r->hit = mc->kind != FOVSDF_MISS;
-        if (r->hit) st->hits++;
         r->sev = 0; r->lit = 0;
         if (!r->hit) {
             if (c->cfg.shading == FOVSDF_SHADE_DEPTH || c->cfg.shading == FOVSDF_SHADE_STEPS)
@@ -5553,15 +5554,12 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         cnt = 0;
         for (k = 0; k < nr; ++k) {
             fovsdf__wray *r = &w->ray[k];
-            const fovsdf__wjob *jb = &w->job[k / spp];
+            const fovsdf__wjob *jb = per ? &w->job[k / per] : 0;
             fovsdf__lit lt;
             r->prep = 0;
             if (!r->lit) continue;
-            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off,
-                                    (jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)
-                                        ? jb->sh : NULL,
-                                    &lt))
-                continue;
+            if (jb && !(jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)) jb = 0;
+            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off, jb ? jb->sh : NULL, &lt)) continue;
             r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
             if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k, st))
                 w->gm[cnt++] = k;
@@ -5586,6 +5584,56 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
             r->acc[2] += L->color[2] * r->ndl * r->att * sh;
         }
     }
+    for (k = 0; k < nr; ++k) {
+        fovsdf__wray *r = &w->ray[k];
+        if (r->lit) {
+            int i;
+            /* NaN (0 * inf): 0 */
+            for (i = 0; i < 3; ++i)
+                r->col[i] = fovsdf__clampf(r->alb[i] * r->acc[i], 0.0f, FOVSDF__RGB_MAX);
+        }
+        if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
+            uint32_t ne = r->mc.evals + r->sev;
+            fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
+        }
+    }
+}
+
+/* Render the queued pixels (see above). */
+FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
+{
+    const fovsdf_ctx *c = w->c;
+    const fovsdf__marcher *m = w->m;
+    fovsdf_stats *st = w->st;
+    uint32_t spp = w->spp, nr = w->nj * spp, k, j, s, cnt = 0;
+    if (w->nj == 0) return;
+    /* 1. the sample rays, marched as one wavefront */
+    for (k = 0; k < nr; ++k) {
+        const fovsdf__wjob *jb = &w->job[k / spp];
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ox, oy, ro[3], rd[3];
+        if (w->prgb) {
+            fovsdf__ray(c, jb->px, jb->py, ro, rd);
+        } else {
+            fovsdf__sample_offset(spp, k % spp, &ox, &oy);
+            fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        }
+        fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
+        if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
+            mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
+        } else if (fovsdf__mco_run(m, mc)) {
+            w->q[cnt++] = k;
+        }
+    }
+    fovsdf__wave_march(w, m, cnt);
+    for (k = 0; k < nr; ++k) { /* as fovsdf__sample */
+        const fovsdf__mco *mc = &w->ray[k].mc;
+        st->rays++;
+        st->evals_primary += mc->evals;
+        if (mc->kind == FOVSDF_EXHAUSTED) st->exhausted++;
+        if (mc->kind != FOVSDF_MISS) st->hits++;
+    }
+    fovsdf__wave_shade(w, m, nr, spp);
     /* 5. colours and pixels */
     for (j = 0; j < w->nj; ++j) {
         const fovsdf__wjob *jb = &w->job[j];
@@ -5593,17 +5641,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         uint32_t nhit = 0, nsteps = 0, ev = 0;
         int32_t mnear = -1;
         for (s = 0; s < spp; ++s) {
-            fovsdf__wray *r = &w->ray[j * spp + s];
-            if (r->lit) {
-                int i;
-                /* NaN (0 * inf): 0 */
-                for (i = 0; i < 3; ++i)
-                    r->col[i] = fovsdf__clampf(r->alb[i] * r->acc[i], 0.0f, FOVSDF__RGB_MAX);
-            }
-            if (c->cfg.shading == FOVSDF_SHADE_STEPS) {
-                uint32_t ne = r->mc.evals + r->sev;
-                fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
-            }
+            const fovsdf__wray *r = &w->ray[j * spp + s];
             if (w->prgb) { /* as fovsdf_shade_point */
                 float *o3 = w->prgb + 3u * (size_t)jb->x;
                 o3[0] = fovsdf__clampf(r->col[0], 0.0f, FOVSDF__RGB_MAX);
@@ -5645,6 +5683,60 @@ FOVSDF__PRIV void fovsdf__wave_pixel(fovsdf__wave *w, const fovsdf__marcher *m, 
     if (sh_start)
         for (i = 0; i < w->c->scene.num_lights; ++i) jb->sh[i] = sh_start[i];
     if (++w->nj >= w->cap) fovsdf__wave_flush(w);
+}
+
+/* The head-start passes' rays as one wavefront, in the ray slots only (the queued pixels wait:
+   their rays are set up when they are flushed): n <= FOVSDF_WAVE rays through image points
+   (px[k], py[k]) marched from t0[k] with m, each exactly as fovsdf__march (into h[k] and, when
+   mat is not NULL, mat[k]). The evaluations count into st->evals, nowhere else. */
+FOVSDF__PRIV void fovsdf__wave_rays(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                    const float *px, const float *py, const float *t0,
+                                    fovsdf_hit *h, int32_t *mat)
+{
+    uint32_t k, cnt = 0;
+    FOV_ASSERT(n <= FOVSDF_WAVE);
+    for (k = 0; k < n; ++k) {
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ro[3], rd[3];
+        fovsdf__ray(w->c, px[k], py[k], ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, t0[k]);
+        if (fovsdf__mco_run(m, mc)) w->q[cnt++] = k;
+    }
+    fovsdf__wave_march(w, m, cnt);
+    for (k = 0; k < n; ++k) {
+        const fovsdf__mco *mc = &w->ray[k].mc;
+        h[k].kind = mc->kind;
+        h[k].t = mc->kind == FOVSDF_MISS ? m->t_max : mc->t;
+        h[k].dist = mc->d;
+        h[k].steps = mc->steps;
+        h[k].evals = mc->evals;
+        if (mat) mat[k] = mc->mat;
+    }
+}
+
+/* Colours of n <= FOVSDF_WAVE rays already marched (h[k], material mat[k]) through image points
+   (px[k], py[k]), each exactly as fovsdf__shade_ray without shadow head starts, into
+   rgb[3 k .. 3 k + 2], as one wavefront in the ray slots only (as fovsdf__wave_rays). */
+FOVSDF__PRIV void fovsdf__wave_shade_rays(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                          const float *px, const float *py, const fovsdf_hit *h,
+                                          const int32_t *mat, float *rgb)
+{
+    uint32_t k;
+    FOV_ASSERT(n <= FOVSDF_WAVE);
+    for (k = 0; k < n; ++k) {
+        fovsdf__mco *mc = &w->ray[k].mc;
+        float ro[3], rd[3];
+        fovsdf__ray(w->c, px[k], py[k], ro, rd);
+        fovsdf__mco_init(m, mc, ro, rd, 0.0f);
+        mc->kind = h[k].kind; mc->t = h[k].t; mc->d = h[k].dist; mc->mat = mat[k];
+        mc->steps = 0; mc->evals = 0; /* a STEPS heat map counts the shading only */
+        mc->pc = 9999u;
+    }
+    fovsdf__wave_shade(w, m, n, 0);
+    for (k = 0; k < n; ++k) {
+        rgb[3u * k] = w->ray[k].col[0]; rgb[3u * k + 1u] = w->ray[k].col[1];
+        rgb[3u * k + 2u] = w->ray[k].col[2];
+    }
 }
 
 FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py, float rgb[3],
@@ -5782,6 +5874,58 @@ FOVSDF__PRIV float fovsdf__cone_march(const fovsdf_ctx *c, const fovsdf__marcher
 #ifndef FOVSDF_CONE_SLACK
 #define FOVSDF_CONE_SLACK 0.0f
 #endif
+
+/* fovsdf__cone_march for n cones as one wavefront: cone j (unit axis a, k = tan(half-angle))
+   marches from its t to where it stops (-1: it reached t_max), each exactly as
+   fovsdf__cone_march (the same values, evaluations and counts), the evaluations of all the
+   cones still marching in batches of FOVSDF_BATCH. act: scratch for n indices. */
+typedef struct fovsdf__wcone { float a[3], k, t; uint32_t i; } fovsdf__wcone;
+FOVSDF__PRIV int fovsdf__wcone_go(const fovsdf__marcher *m, fovsdf__wcone *q)
+{
+    if (q->i >= m->max_steps || q->t > m->t_max) { /* as the loop's end and its first test */
+        if (q->t > m->t_max) q->t = -1.0f;
+        return 0;
+    }
+    return 1;
+}
+FOVSDF__PRIV void fovsdf__wave_cones(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t n,
+                                     fovsdf__wcone *cn, uint32_t *act)
+{
+    const fovsdf_ctx *c = w->c;
+    uint32_t na = 0, j, i, nb, keep;
+    uint64_t e = 0;
+    for (j = 0; j < n; ++j) {
+        cn[j].i = 0;
+        if (fovsdf__wcone_go(m, &cn[j])) act[na++] = j;
+    }
+    for (i = 0; i < FOVSDF_BATCH; ++i) w->be[i] = m->eps;
+    while (na > 0) {
+        keep = 0;
+        for (j = 0; j < na; j += nb) {
+            nb = na - j < FOVSDF_BATCH ? na - j : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *q = &cn[act[j + i]];
+                w->bx[i] = c->origin[0] + q->a[0] * q->t; w->by[i] = c->origin[1] + q->a[1] * q->t;
+                w->bz[i] = c->origin[2] + q->a[2] * q->t;
+            }
+            fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
+                              w->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                uint32_t id = act[j + i];
+                fovsdf__wcone *q = &cn[id];
+                /* as fovsdf__cone_march */
+                float f = w->bd[i] - (m->ulp0 + m->ulp1 * q->t);
+                if (f <= q->t * q->k * (1.0f + FOVSDF_CONE_SLACK) + m->eps) continue;
+                q->t += (f - q->t * q->k) / (1.0f + q->k);
+                ++q->i;
+                if (fovsdf__wcone_go(m, q)) act[keep++] = id;
+            }
+        }
+        na = keep;
+    }
+    w->st->evals_lowres += e;
+}
 /* Cone of the pixel rectangle [x0, x1) x [y0, y1): unit axis a and k = tan(half-angle). */
 FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, float x1, float y1,
                                      float a[3])
@@ -5800,58 +5944,142 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
     return FOV__SQRT(fov__maxf(1.0f - cmin * cmin, 0.0f)) / cmin * 1.0001f + 1e-6f;
 }
 
-typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
+/* A cell of the cone pyramid: its pixel rectangle relative to the tile's corner, its level and
+   its parent's t. */
+typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
 
-/* Depth-first cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to
-   the image only, so the cells and results do not depend on how the caller splits the image),
-   writing the pixels inside the requested region [rx0,rx1) x [ry0,ry1). */
+/* Cones in flight per CONE tile (each slot keeps a 40-cell stack, 640 bytes). 1 by default: with
+   the built-in programs' batch evaluator (a bounded subtree runs when any lane needs it, and
+   the cones of a tile are spread over it) 32 slots cost 3 % more instructions than one
+   (callgrind, primitives 640x360: 2.95e9 against 2.86e9, 1 slot the same as marching each
+   cone alone); a batch callback that gains from width may want more. */
+#ifndef FOVSDF_CONE_SLOTS
+#define FOVSDF_CONE_SLOTS 1
+#endif
+#if FOVSDF_CONE_SLOTS < 1
+#error "fovsdf: FOVSDF_CONE_SLOTS must be at least 1"
+#endif
+
+/* The cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to the image
+   only, so the cells and results do not depend on how the caller splits the image), writing the
+   pixels inside the requested region [rx0,rx1) x [ry0,ry1). The cones march as one wavefront:
+   FOVSDF_CONE_SLOTS slots, each walking its part of the tree depth first on its own stack (a
+   cell's children wait there for it; at most 3 per level), an idle slot taking the oldest cell
+   of the fullest stack; every cone exactly as fovsdf__cone_march, so the cells, their t and the
+   counts are those of a single depth-first walk; only the order of the queued pixels differs. */
 FOVSDF__PRIV FOVSDF__NOINLINE void
 fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
                   uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
                   uint32_t rx1, uint32_t ry1, fovsdf_stats *st, fovsdf__wave *wv)
 {
-    fovsdf__cell stk[4 * 10];
-    int sp = 0;
-    stk[0].x0 = x0; stk[0].y0 = y0; stk[0].x1 = x1; stk[0].y1 = y1; stk[0].level = 1;
-    stk[0].t = 0.0f;
-    sp = 1;
-    while (sp > 0) {
-        fovsdf__cell cl = stk[--sp];
-        float a[3], k, t, cs;
-        uint32_t x, y, px0, py0, px1, py1;
-        px0 = cl.x0 > rx0 ? cl.x0 : rx0; px1 = cl.x1 < rx1 ? cl.x1 : rx1;
-        py0 = cl.y0 > ry0 ? cl.y0 : ry0; py1 = cl.y1 < ry1 ? cl.y1 : ry1;
-        if (px0 >= px1 || py0 >= py1) continue; /* not requested */
-        k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        cs = 1.0f / FOV__SQRT(1.0f + k * k); /* cos(alpha) */
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * cs, st);
-        if (t < 0.0f) { /* proven empty: no full-resolution marching */
-            for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x)
-                    fovsdf__wave_pixel(wv, mp, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
-            continue;
+    fovsdf__cell stk[FOVSDF_CONE_SLOTS][4 * 10], cur[FOVSDF_CONE_SLOTS];
+    fovsdf__wcone cn[FOVSDF_CONE_SLOTS];
+    uint32_t sp[FOVSDF_CONE_SLOTS], s, i, nb, act[FOVSDF_CONE_SLOTS];
+    int busy[FOVSDF_CONE_SLOTS];
+    uint64_t e = 0;
+    for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) { sp[s] = 0; busy[s] = 0; }
+    stk[0][0].x0 = 0; stk[0][0].y0 = 0; stk[0][0].x1 = (uint16_t)(x1 - x0);
+    stk[0][0].y1 = (uint16_t)(y1 - y0); stk[0][0].level = 1; stk[0][0].t = 0.0f;
+    sp[0] = 1;
+    (void)st; /* the cones count into wv's, the same */
+    for (;;) {
+        uint32_t na = 0;
+        for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) {
+            for (;;) {
+                fovsdf__cell *cl = &cur[s];
+                uint32_t px0, py0, px1, py1, x, y;
+                float t;
+                if (!busy[s]) { /* the next cell: its own stack's top, or the oldest elsewhere */
+                    uint32_t v = s, k;
+                    if (sp[s] == 0) {
+                        for (k = 0; k < FOVSDF_CONE_SLOTS; ++k)
+                            if (sp[k] > sp[v]) v = k;
+                        if (sp[v] == 0) break; /* no cell left anywhere */
+                        *cl = stk[v][0];
+                        for (k = 1; k < sp[v]; ++k) stk[v][k - 1] = stk[v][k];
+                        --sp[v];
+                    } else {
+                        *cl = stk[s][--sp[s]];
+                    }
+                    px0 = x0 + cl->x0 > rx0 ? x0 + cl->x0 : rx0;
+                    px1 = x0 + cl->x1 < rx1 ? x0 + cl->x1 : rx1;
+                    py0 = y0 + cl->y0 > ry0 ? y0 + cl->y0 : ry0;
+                    py1 = y0 + cl->y1 < ry1 ? y0 + cl->y1 : ry1;
+                    if (px0 >= px1 || py0 >= py1) continue; /* not requested */
+                    cn[s].k = fovsdf__cell_cone(c, (float)(x0 + cl->x0), (float)(y0 + cl->y0),
+                                                (float)(x0 + cl->x1), (float)(y0 + cl->y1),
+                                                cn[s].a);
+                    /* from the parent's t shortened by cos(alpha) */
+                    cn[s].t = cl->t * (1.0f / FOV__SQRT(1.0f + cn[s].k * cn[s].k));
+                    cn[s].i = 0;
+                    busy[s] = 1;
+                }
+                if (fovsdf__wcone_go(mc, &cn[s])) { act[na++] = s; break; }
+                /* the cone stopped */
+                busy[s] = 0;
+                t = cn[s].t;
+                px0 = x0 + cl->x0 > rx0 ? x0 + cl->x0 : rx0;
+                px1 = x0 + cl->x1 < rx1 ? x0 + cl->x1 : rx1;
+                py0 = y0 + cl->y0 > ry0 ? y0 + cl->y0 : ry0;
+                py1 = y0 + cl->y1 < ry1 ? y0 + cl->y1 : ry1;
+                if (t < 0.0f) { /* proven empty: no full-resolution marching */
+                    for (y = py0; y < py1; ++y)
+                        for (x = px0; x < px1; ++x)
+                            fovsdf__wave_pixel(wv, mp, x, y, 0.0f, 1, NULL, 0.0f, 0.0f);
+                    continue;
+                }
+                if ((cl->x1 - cl->x0 <= 1 && cl->y1 - cl->y0 <= 1) ||
+                    cl->level >= c->cfg.cone_levels) {
+                    for (y = py0; y < py1; ++y)
+                        for (x = px0; x < px1; ++x)
+                            fovsdf__wave_pixel(wv, mp, x, y, t, 0, NULL, 0.0f, 0.0f);
+                    continue;
+                }
+                {
+                    uint32_t xm = cl->x0 + (uint32_t)(cl->x1 - cl->x0 + 1) / 2u,
+                        ym = cl->y0 + (uint32_t)(cl->y1 - cl->y0 + 1) / 2u, q;
+                    for (q = 4; q-- > 0;) { /* pushed in reverse: taken in scan order */
+                        fovsdf__cell ch;
+                        ch.x0 = (uint16_t)((q & 1) ? xm : cl->x0);
+                        ch.x1 = (q & 1) ? cl->x1 : (uint16_t)xm;
+                        ch.y0 = (uint16_t)((q & 2) ? ym : cl->y0);
+                        ch.y1 = (q & 2) ? cl->y1 : (uint16_t)ym;
+                        if (ch.x0 >= ch.x1 || ch.y0 >= ch.y1) continue;
+                        ch.level = (uint16_t)(cl->level + 1u);
+                        ch.t = t;
+                        FOV_ASSERT(sp[s] < 4u * 10u);
+                        stk[s][sp[s]++] = ch;
+                    }
+                }
+            }
         }
-        if ((cl.x1 - cl.x0 <= 1 && cl.y1 - cl.y0 <= 1) || cl.level >= c->cfg.cone_levels) {
-            for (y = py0; y < py1; ++y)
-                for (x = px0; x < px1; ++x)
-                    fovsdf__wave_pixel(wv, mp, x, y, t, 0, NULL, 0.0f, 0.0f);
-            continue;
-        }
-        {
-            uint32_t xm = cl.x0 + (cl.x1 - cl.x0 + 1) / 2, ym = cl.y0 + (cl.y1 - cl.y0 + 1) / 2;
-            uint32_t q;
-            for (q = 4; q-- > 0;) { /* pushed in reverse: processed in scan order */
-                fovsdf__cell ch;
-                ch.x0 = (q & 1) ? xm : cl.x0; ch.x1 = (q & 1) ? cl.x1 : xm;
-                ch.y0 = (q & 2) ? ym : cl.y0; ch.y1 = (q & 2) ? cl.y1 : ym;
-                if (ch.x0 >= ch.x1 || ch.y0 >= ch.y1) continue;
-                ch.level = cl.level + 1;
-                ch.t = t;
-                FOV_ASSERT(sp < (int)(sizeof stk / sizeof stk[0]));
-                stk[sp++] = ch;
+        if (na == 0) break; /* nothing in flight and no cell left */
+        /* one step of every cone in flight (as fovsdf__cone_march) */
+        for (i = 0; i < FOVSDF_BATCH; ++i) wv->be[i] = mc->eps;
+        for (s = 0; s < na; s += nb) {
+            nb = na - s < FOVSDF_BATCH ? na - s : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *p = &cn[act[s + i]];
+                wv->bx[i] = c->origin[0] + p->a[0] * p->t;
+                wv->by[i] = c->origin[1] + p->a[1] * p->t;
+                wv->bz[i] = c->origin[2] + p->a[2] * p->t;
+            }
+            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f,
+                              wv->bd, 0, wv->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                fovsdf__wcone *p = &cn[act[s + i]];
+                float d = wv->bd[i] - (mc->ulp0 + mc->ulp1 * p->t);
+                if (d <= p->t * p->k * (1.0f + FOVSDF_CONE_SLACK) + mc->eps) {
+                    p->i = 0xffffffffu; /* stopped (t <= t_max stays) */
+                } else {
+                    p->t += (d - p->t * p->k) / (1.0f + p->k);
+                    ++p->i;
+                }
             }
         }
     }
+    wv->st->evals_lowres += e;
 }
 
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
@@ -5955,8 +6183,9 @@ fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uin
                  uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
                  fovsdf__wave *wv)
 {
-    float scratch[FOVSDF_TILE_SCRATCH];
+    float scratch[FOVSDF_TILE_SCRATCH], px[FOVSDF_WAVE], py[FOVSDF_WAVE], ts[FOVSDF_WAVE];
     float *lv[6];
+    fovsdf_hit h[FOVSDF_WAVE];
     uint32_t side[6], apr[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, l, x, y;
     int32_t r = c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius;
     size_t off = 0;
@@ -5972,23 +6201,27 @@ fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uin
         uint32_t S = 1u << (L - 1u - l), u, v;
         int32_t c0x = (int32_t)(tx / S) - (int32_t)apr[l],
             c0y = (int32_t)(ty / S) - (int32_t)apr[l];
-        for (v = 0; v < side[l]; ++v)
-            for (u = 0; u < side[l]; ++u) {
-                int32_t cx = c0x + (int32_t)u, cy = c0y + (int32_t)v;
-                float ro[3], rd[3], t0 = 0.0f;
-                fovsdf_hit h;
+        uint32_t n = side[l] * side[l], i, j, nb;
+        for (i = 0; i < n; i += nb) { /* the level's rays as one wavefront, FOVSDF_WAVE at once */
+            nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+            for (j = 0; j < nb; ++j) {
+                int32_t cx, cy;
+                u = (i + j) % side[l]; v = (i + j) / side[l];
+                cx = c0x + (int32_t)u; cy = c0y + (int32_t)v;
+                ts[j] = 0.0f;
                 if (l > 0) { /* parent cell and its neighbours, in the parent's array */
                     int32_t pu = ((cx >= 0 ? cx : cx - 1) / 2) -
                         ((int32_t)(tx / (S * 2u)) - (int32_t)apr[l - 1]);
                     int32_t pv = ((cy >= 0 ? cy : cy - 1) / 2) -
                         ((int32_t)(ty / (S * 2u)) - (int32_t)apr[l - 1]);
-                    t0 = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
+                    ts[j] = fovsdf__ipr_min(lv[l - 1], side[l - 1], pu, pv, r);
                 }
-                fovsdf__ray(c, ((float)cx + 0.5f) * (float)S, ((float)cy + 0.5f) * (float)S, ro,
-                            rd);
-                fovsdf__march(m, ro, rd, t0, &h, 0, st);
-                lv[l][(size_t)v * side[l] + u] = h.kind == FOVSDF_MISS ? c->t_max : h.t;
+                px[j] = ((float)cx + 0.5f) * (float)S; py[j] = ((float)cy + 0.5f) * (float)S;
             }
+            fovsdf__wave_rays(wv, m, nb, px, py, ts, h, 0);
+            for (j = 0; j < nb; ++j)
+                lv[l][i + j] = h[j].kind == FOVSDF_MISS ? c->t_max : h[j].t;
+        }
     }
     st->evals_lowres += st->evals - e0;
     for (y = ry0; y < ry1; ++y)
@@ -6028,11 +6261,13 @@ fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx
                       uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
                       fovsdf__wave *wv)
 {
-    float scratch[FOVSDF_TILE_SCRATCH];
+    float scratch[FOVSDF_TILE_SCRATCH], ts[FOVSDF_WAVE];
     float *lv[6];
+    fovsdf__wcone cn[FOVSDF_WAVE];
     uint32_t side[6], L = c->cfg.ipr_levels, T = c->cfg.ipr_tile, W = c->cam.width,
-        H = c->cam.height, l, x, y;
+        H = c->cam.height, l, x, y, id[FOVSDF_WAVE], act[FOVSDF_WAVE];
     size_t off = 0;
+    (void)st; /* the cones count into wv's, the same */
     for (l = 0; l + 1u < L; ++l) {
         side[l] = T >> (L - 1u - l);
         lv[l] = scratch + off;
@@ -6041,15 +6276,34 @@ fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx
     FOV_ASSERT(off <= FOVSDF_TILE_SCRATCH);
     for (l = 0; l + 1u < L; ++l) {
         uint32_t S = 1u << (L - 1u - l), u, v;
-        /* the cells over the requested pixels (their parents lie over them too) */
-        for (v = (ry0 - ty) / S; v <= (ry1 - 1u - ty) / S; ++v)
-            for (u = (rx0 - tx) / S; u <= (rx1 - 1u - tx) / S; ++u) {
-                uint32_t x0 = tx + u * S, y0 = ty + v * S;
-                float tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
-                lv[l][(size_t)v * side[l] + u] =
-                    fovsdf__safe_start(c, m, (float)x0, (float)y0, (float)(x0 + S < W ? x0 + S : W),
-                                       (float)(y0 + S < H ? y0 + S : H), tp, st);
+        /* the cells over the requested pixels (their parents lie over them too), their cones
+           (fovsdf__safe_start's) as one wavefront, FOVSDF_WAVE at once */
+        uint32_t u0 = (rx0 - tx) / S, v0 = (ry0 - ty) / S, nu = (rx1 - 1u - tx) / S - u0 + 1u,
+            n = nu * ((ry1 - 1u - ty) / S - v0 + 1u), i, j, nb, k;
+        for (i = 0; i < n; i += nb) {
+            nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+            for (j = k = 0; j < nb; ++j) {
+                uint32_t x0, y0;
+                float tp;
+                u = u0 + (i + j) % nu; v = v0 + (i + j) / nu;
+                x0 = tx + u * S; y0 = ty + v * S;
+                tp = l > 0 ? lv[l - 1][(size_t)(v / 2u) * side[l - 1] + u / 2u] : 0.0f;
+                if (tp < 0.0f) { /* the parent's cone is empty up to t_max: so is this one */
+                    lv[l][(size_t)v * side[l] + u] = -1.0f;
+                    continue;
+                }
+                cn[k].k = fovsdf__cell_cone(c, (float)x0, (float)y0,
+                                            (float)(x0 + S < W ? x0 + S : W),
+                                            (float)(y0 + S < H ? y0 + S : H), cn[k].a);
+                cn[k].t = tp * (1.0f / FOV__SQRT(1.0f + cn[k].k * cn[k].k));
+                ts[k] = tp;
+                id[k++] = v * side[l] + u;
             }
+            fovsdf__wave_cones(wv, m, k, cn, act);
+            for (j = 0; j < k; ++j)
+                lv[l][id[j]] =
+                    cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, ts[j]), m->t_max);
+        }
     }
     for (y = ry0; y < ry1; ++y)
         for (x = rx0; x < rx1; ++x) {
@@ -6183,23 +6437,32 @@ fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, ui
    tile grid only, never on the caller's split. */
 typedef struct fovsdf__mid {
     float tc;              /* CONE_FOV: the cell cone's t; -1 proven empty; -2 unknown (apron) */
-    float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there */
+    float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there; while
+                              its march is requested, th holds its start */
     float rgb[3];          /* its colour, once shaded */
     int32_t mat;
     uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
+    uint8_t req;           /* requested this round: 1 its march, 2 its shading, 4 its cone
+                              (safe FIPR; tc is -3 meanwhile) */
 } fovsdf__mid;
 
 typedef struct fovsdf__fovt {
     const fovsdf_ctx *c;
     const fovsdf__marcher *mp; /* mid rays and sample rays */
     fovsdf__mid *mid;          /* mid cells (u, v), u in [mu0, mu0 + ms) */
-    float *l0;                 /* FIPR level 0: t, or -1 before it is traced */
-    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown */
+    float *l0;                 /* FIPR level 0: t, or -1 before it is traced (-3: requested) */
+    float *l0s;                /* safe FIPR level 0: the cells' certified starts; -2 unknown,
+                                  -3 requested */
     int32_t mu0, mv0, lu0, lv0, r;
     uint32_t ms, ls;
     float t_ring;              /* CONE_FOV: start of the apron cells (a cone over tile + apron) */
     int cone, safe;            /* CONE_FOV; FIPR with heuristic_start 0 */
     fovsdf_stats *st;
+    fovsdf__wave *wv;          /* the wavefront the requests run in */
+    int miss;                  /* a value the current pixel needs is not there yet */
+    uint32_t nrm, nrl, nrs;    /* requests of this round: mid cells, level-0 rays and cones */
+    uint32_t *rqm, *rql, *rqs; /* their indices in mid, l0 and l0s */
+    fovsdf__mid dummy;         /* what a missing mid cell reads as */
 } fovsdf__fovt;
 
 FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh rank of a tile */
@@ -6213,6 +6476,8 @@ FOVSDF__PRIV int32_t fovsdf__fdiv2(int32_t a) /* floor(a / 2) */
     return (a - (a < 0 ? 1 : 0)) / 2;
 }
 
+/* FIPR level-0 cell (i, j): one ray through its centre from the camera, requested on first use
+   (f->miss until the round's wavefront has traced it; see fovsdf__fov_tile). */
 FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
 {
     float *q;
@@ -6220,13 +6485,12 @@ FOVSDF__PRIV float fovsdf__fov_l0(fovsdf__fovt *f, int32_t i, int32_t j)
                j < f->lv0 + (int32_t)f->ls);
     q = f->l0 + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
     if (*q < 0.0f) {
-        float ro[3], rd[3];
-        fovsdf_hit h;
-        uint64_t e0 = f->st->evals;
-        fovsdf__ray(f->c, ((float)i + 0.5f) * 4.0f, ((float)j + 0.5f) * 4.0f, ro, rd);
-        fovsdf__march(f->mp, ro, rd, 0.0f, &h, 0, f->st);
-        *q = h.kind == FOVSDF_MISS ? f->c->t_max : h.t;
-        f->st->evals_lowres += f->st->evals - e0;
+        if (*q > -2.0f) { /* untouched: request it */
+            *q = -3.0f;
+            f->rql[f->nrl++] = (uint32_t)(q - f->l0);
+        }
+        f->miss = 1;
+        return 0.0f;
     }
     return *q;
 }
@@ -6240,10 +6504,13 @@ FOVSDF__PRIV float fovsdf__fov_l0s(fovsdf__fovt *f, int32_t i, int32_t j)
     FOV_ASSERT(i >= f->lu0 && j >= f->lv0 && i < f->lu0 + (int32_t)f->ls &&
                j < f->lv0 + (int32_t)f->ls);
     q = f->l0s + (size_t)(j - f->lv0) * f->ls + (size_t)(i - f->lu0);
-    if (*q < -1.5f)
-        *q = fovsdf__safe_start(f->c, f->mp, (float)(4 * i), (float)(4 * j), (float)(4 * i + 4),
-                                (float)(4 * j + 4), 0.0f, f->st);
-    return *q;
+    if (*q > -1.5f) return *q;
+    if (*q > -2.5f) { /* unknown: request its cone (-3) */
+        *q = -3.0f;
+        f->rqs[f->nrs++] = (uint32_t)(q - f->l0s);
+    }
+    f->miss = 1;
+    return -1.0f;
 }
 FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
 {
@@ -6251,65 +6518,175 @@ FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
     FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
                v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
-    if (m->tc < -1.5f) {
-        float tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
-        m->tc = fovsdf__safe_start(f->c, f->mp, (float)(2 * u), (float)(2 * v), (float)(2 * u + 2),
-                                   (float)(2 * v + 2), tp, f->st);
+    if (m->tc > -1.5f) return m->tc;
+    if (m->tc > -2.5f) {
+        int miss = f->miss;
+        float tp;
+        f->miss = 0;
+        tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+        if (f->miss) return -1.0f; /* the parent's cone first */
+        f->miss = miss;
+        /* as fovsdf__safe_start: the parent's cone is empty up to t_max, so is this one */
+        if (tp < 0.0f) { m->tc = -1.0f; return -1.0f; }
+        if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+        m->req |= 4u; /* its cone */
+        m->tc = -3.0f;
     }
-    return m->tc;
+    f->miss = 1;
+    return -1.0f;
 }
 
-/* Mid cell (u, v): traced on first use, shaded when `shade`. */
+/* Mid cell (u, v): its march requested on first use, its shading when `shade` (f->miss and a
+   dummy cell until the round's wavefront has run them, fovsdf__fov_run). */
 FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
 {
     const fovsdf_ctx *c = f->c;
     fovsdf__mid *m;
-    float ro[3], rd[3];
     FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
                v < f->mv0 + (int32_t)f->ms);
     m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
     if (m->state == 2 || (m->state == 1 && !shade)) return m;
-    fovsdf__ray(c, ((float)u + 0.5f) * 2.0f, ((float)v + 0.5f) * 2.0f, ro, rd);
-    if (m->state == 0) {
-        fovsdf_hit h;
-        int32_t mat = 0;
+    if (m->state == 0 && !(m->req & 1u)) {
         float t0 = 0.0f;
-        uint64_t e0;
         if (f->cone) {
             t0 = m->tc >= 0.0f ? m->tc : f->t_ring;
         } else if (f->safe) {
+            int miss = f->miss;
+            f->miss = 0;
             t0 = fovsdf__fov_tc(f, u, v); /* -1: proven empty, below */
+            if (f->miss) return &f->dummy; /* its cone first */
+            f->miss = miss;
         } else {
             int32_t i = fovsdf__fdiv2(u), j = fovsdf__fdiv2(v), a, b;
+            int miss = f->miss;
+            f->miss = 0;
             t0 = c->t_max;
             for (b = -f->r; b <= f->r; ++b)
                 for (a = -f->r; a <= f->r; ++a) t0 = fov__minf(t0, fovsdf__fov_l0(f, i + a, j + b));
+            if (f->miss) return &f->dummy; /* its start needs level-0 rays first */
+            f->miss = miss;
         }
-        e0 = f->st->evals; /* after the level-0 rays, which count themselves */
         if ((f->cone || f->safe) && fov__is0(m->tc + 1.0f)) { /* the cone proved the cell empty */
-            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
+            m->th = c->t_max; m->dist = 0.0f; m->kind = (uint8_t)FOVSDF_MISS; m->mat = -1;
+            m->state = 1;
+            if (!shade) return m;
         } else {
-            fovsdf__march(f->mp, ro, rd, t0, &h, &mat, f->st);
+            if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+            m->req |= 1u;
+            m->th = t0;
         }
-        /* the interpolated pixels report this ray's depth: a hit must lie in [0, t_max] (a
-           tracer's hit beyond t_max, or a non-finite one, is a miss) */
-        if (h.kind != FOVSDF_MISS && !(h.t >= 0.0f && h.t <= c->t_max)) {
-            h.kind = FOVSDF_MISS; h.t = c->t_max; h.dist = 0.0f;
+    }
+    if (shade && !(m->req & 2u)) {
+        if (!m->req) f->rqm[f->nrm++] = (uint32_t)(m - f->mid);
+        m->req |= 2u;
+    }
+    f->miss = 1;
+    return &f->dummy;
+}
+
+/* The requests of one round as wavefronts: the level-0 rays, then the mid rays (their starts
+   need the level-0 ones), then the shading of mid rays; every value exactly as the cell's own
+   march and fovsdf__shade_ray. */
+FOVSDF__PRIV void fovsdf__fov_run(fovsdf__fovt *f)
+{
+    const fovsdf_ctx *c = f->c;
+    float px[FOVSDF_WAVE], py[FOVSDF_WAVE], t0[FOVSDF_WAVE], rgb[3 * FOVSDF_WAVE];
+    fovsdf_hit h[FOVSDF_WAVE];
+    int32_t mat[FOVSDF_WAVE];
+    uint32_t id[FOVSDF_WAVE], act[FOVSDF_WAVE], i, j, k, n, pass;
+    for (i = 0; i < f->nrl; i += n) {
+        n = f->nrl - i < FOVSDF_WAVE ? f->nrl - i : FOVSDF_WAVE;
+        for (k = 0; k < n; ++k) {
+            uint32_t q = f->rql[i + k];
+            px[k] = ((float)(f->lu0 + (int32_t)(q % f->ls)) + 0.5f) * 4.0f;
+            py[k] = ((float)(f->lv0 + (int32_t)(q / f->ls)) + 0.5f) * 4.0f;
+            t0[k] = 0.0f;
         }
-        m->th = h.kind == FOVSDF_MISS ? c->t_max : h.t;
-        m->dist = h.dist;
-        m->kind = (uint8_t)h.kind;
-        m->mat = h.kind == FOVSDF_MISS ? -1 : mat;
-        m->state = 1;
-        f->st->evals_lowres += f->st->evals - e0;
+        fovsdf__wave_rays(f->wv, f->mp, n, px, py, t0, h, 0);
+        for (k = 0; k < n; ++k) {
+            f->l0[f->rql[i + k]] = h[k].kind == FOVSDF_MISS ? c->t_max : h[k].t;
+            f->st->evals_lowres += h[k].evals;
+        }
     }
-    if (shade) {
-        fovsdf_hit h;
-        h.kind = (fovsdf_hit_kind)m->kind; h.t = m->th; h.dist = m->dist; h.steps = 0; h.evals = 0;
-        fovsdf__shade_ray(c, f->mp, ro, rd, &h, m->mat, NULL, 0.0f, 0.0f, m->rgb, f->st);
-        m->state = 2;
+    f->nrl = 0;
+    /* safe FIPR's cones (fovsdf__safe_start): level 0's from the camera and the mid cells'
+       from their parents', which the request found already marched: one wavefront */
+    for (i = 0, j = 0; i < f->nrs || j < f->nrm;) {
+        fovsdf__wcone cn[FOVSDF_WAVE];
+        for (n = 0; n < FOVSDF_WAVE && (i < f->nrs || j < f->nrm);) {
+            float x0, y0, s = 4.0f, tp = 0.0f;
+            if (i < f->nrs) {
+                uint32_t q = f->rqs[i++];
+                x0 = 4.0f * (float)(f->lu0 + (int32_t)(q % f->ls));
+                y0 = 4.0f * (float)(f->lv0 + (int32_t)(q / f->ls));
+                id[n] = q;
+            } else {
+                uint32_t q = f->rqm[j++];
+                int32_t u = f->mu0 + (int32_t)(q % f->ms), v = f->mv0 + (int32_t)(q / f->ms);
+                if (!(f->mid[q].req & 4u)) continue;
+                x0 = 2.0f * (float)u; y0 = 2.0f * (float)v; s = 2.0f;
+                tp = fovsdf__fov_l0s(f, fovsdf__fdiv2(u), fovsdf__fdiv2(v));
+                id[n] = q | 0x80000000u;
+            }
+            cn[n].k = fovsdf__cell_cone(c, x0, y0, x0 + s, y0 + s, cn[n].a);
+            cn[n].t = tp * (1.0f / FOV__SQRT(1.0f + cn[n].k * cn[n].k));
+            t0[n] = tp;
+            ++n;
+        }
+        fovsdf__wave_cones(f->wv, f->mp, n, cn, act);
+        for (k = 0; k < n; ++k) {
+            float t = cn[k].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[k].t, t0[k]), f->mp->t_max);
+            if (id[k] & 0x80000000u) f->mid[id[k] & 0x7fffffffu].tc = t;
+            else f->l0s[id[k]] = t;
+        }
     }
-    return m;
+    f->nrs = 0;
+    for (pass = 1; pass <= 2; ++pass) /* 1: marches, 2: shading */
+        for (i = 0; i < f->nrm;) {
+            for (n = 0; n < FOVSDF_WAVE && i < f->nrm; ++i) {
+                fovsdf__mid *m = &f->mid[f->rqm[i]];
+                int32_t u = f->mu0 + (int32_t)(f->rqm[i] % f->ms),
+                    v = f->mv0 + (int32_t)(f->rqm[i] / f->ms);
+                if (!(m->req & pass)) continue;
+                px[n] = ((float)u + 0.5f) * 2.0f; py[n] = ((float)v + 0.5f) * 2.0f;
+                t0[n] = m->th;
+                if (pass == 2u) {
+                    h[n].kind = m->kind; h[n].t = m->th; h[n].dist = m->dist; h[n].steps = 0;
+                    h[n].evals = 0;
+                    mat[n] = m->mat;
+                }
+                id[n++] = f->rqm[i];
+            }
+            if (n == 0) continue;
+            if (pass == 1u) {
+                fovsdf__wave_rays(f->wv, f->mp, n, px, py, t0, h, mat);
+                for (k = 0; k < n; ++k) {
+                    fovsdf__mid *m = &f->mid[id[k]];
+                    fovsdf_hit *hk = &h[k];
+                    /* the interpolated pixels report this ray's depth: a hit must lie in
+                       [0, t_max] (a tracer's hit beyond t_max, or a non-finite one, is a miss) */
+                    if (hk->kind != FOVSDF_MISS && !(hk->t >= 0.0f && hk->t <= c->t_max)) {
+                        hk->kind = FOVSDF_MISS; hk->t = c->t_max; hk->dist = 0.0f;
+                    }
+                    m->th = hk->kind == FOVSDF_MISS ? c->t_max : hk->t;
+                    m->dist = hk->dist;
+                    m->kind = (uint8_t)hk->kind;
+                    m->mat = hk->kind == FOVSDF_MISS ? -1 : mat[k];
+                    m->state = 1;
+                    f->st->evals_lowres += hk->evals;
+                }
+            } else {
+                fovsdf__wave_shade_rays(f->wv, f->mp, n, px, py, h, mat, rgb);
+                for (k = 0; k < n; ++k) {
+                    fovsdf__mid *m = &f->mid[id[k]];
+                    m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
+                    m->rgb[2] = rgb[3u * k + 2u];
+                    m->state = 2;
+                }
+            }
+        }
+    for (i = 0; i < f->nrm; ++i) f->mid[f->rqm[i]].req = 0;
+    f->nrm = 0;
 }
 
 /* Step 2: Sobel on level 0 (FIPR) or the mid level (CONE_FOV) around cell (i, j). */
@@ -6331,43 +6708,162 @@ FOVSDF__PRIV int fovsdf__fov_edge(fovsdf__fovt *f, int32_t i, int32_t j)
 
 /* Step 1 of CONE_FOV: the cone pyramid over the tile, down to 2x2-pixel cells (cone_levels
    permitting), storing each cell's t in the mid cells it covers. The cells are the tile's own
-   grid, not clipped to the image, so 2x2 cells stay aligned. */
+   grid, not clipped to the image, so 2x2 cells stay aligned. The cones march as one wavefront
+   (as fovsdf__wave_cones: each exactly as fovsdf__cone_march), a cell's children joining as
+   soon as it stops; the first, besides the tile's, is the apron's cone (f->t_ring: one cone over
+   the tile widened by the apron's 2x2 cells, which lie in the neighbouring tiles, gives their
+   rays a safe start). A cell marches only after its parent, so the cells in flight never
+   outnumber the tile's 2x2 cells. */
 FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, uint32_t tx,
                                     uint32_t ty, uint32_t T)
 {
     const fovsdf_ctx *c = f->c;
-    fovsdf__cell stk[4 * 10];
-    int sp = 1;
-    stk[0].x0 = tx; stk[0].y0 = ty; stk[0].x1 = tx + T; stk[0].y1 = ty + T; stk[0].level = 1;
-    stk[0].t = 0.0f;
-    while (sp > 0) {
-        fovsdf__cell cl = stk[--sp];
-        float a[3], k, t;
-        if (cl.x0 >= c->cam.width || cl.y0 >= c->cam.height) continue; /* off the image */
-        k = fovsdf__cell_cone(c, (float)cl.x0, (float)cl.y0, (float)cl.x1, (float)cl.y1, a);
-        /* as CONE */
-        t = fovsdf__cone_march(c, mc, a, k, cl.t * (1.0f / FOV__SQRT(1.0f + k * k)), f->st);
-        if (t < 0.0f || cl.x1 - cl.x0 <= 2u || cl.level >= c->cfg.cone_levels) {
-            uint32_t u, v;
-            for (v = cl.y0 / 2u; v < cl.y1 / 2u; ++v)
-                for (u = cl.x0 / 2u; u < cl.x1 / 2u; ++u)
-                    f->mid[(size_t)((int32_t)v - f->mv0) * f->ms +
-                           (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
-            continue;
+    fovsdf__wave *w = f->wv;
+    fovsdf__wcone cn[FOVSDF_FOV_CELLS + 4];
+    /* a slot's cell: its offset in the tile (x | y << 16) and width; slot 1 is the apron's */
+    uint32_t pos[FOVSDF_FOV_CELLS + 4], wid[FOVSDF_FOV_CELLS + 4], act[FOVSDF_FOV_CELLS + 4],
+        fr[FOVSDF_FOV_CELLS + 4], lev[FOVSDF_FOV_CELLS + 4];
+    uint32_t na = 2, nf = 0, j, i, nb, q, keep;
+    uint64_t e = 0;
+    for (j = FOVSDF_FOV_CELLS + 4u; j-- > 2u;) fr[nf++] = j; /* free slots */
+    pos[0] = 0; wid[0] = T; lev[0] = 1;
+    cn[0].k = fovsdf__cell_cone(c, (float)tx, (float)ty, (float)(tx + T), (float)(ty + T), cn[0].a);
+    cn[0].t = 0.0f;
+    cn[1].k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f, (float)(tx + T) + 2.0f,
+                                (float)(ty + T) + 2.0f, cn[1].a);
+    cn[1].t = 0.0f;
+    act[0] = 0; act[1] = 1; cn[0].i = 0; cn[1].i = 0;
+    for (i = 0; i < FOVSDF_BATCH; ++i) w->be[i] = mc->eps;
+    while (na > 0) {
+        /* the cones that stopped leave (fovsdf__wcone_go), their children join */
+        keep = 0;
+        for (j = 0; j < na; ++j) {
+            uint32_t id = act[j], x0, y0, S, L;
+            float t;
+            if (fovsdf__wcone_go(mc, &cn[id])) { act[keep++] = id; continue; }
+            if (id == 1u) { f->t_ring = cn[1].t < 0.0f ? c->t_max : cn[1].t; continue; }
+            x0 = tx + (pos[id] & 0xffffu); y0 = ty + (pos[id] >> 16); S = wid[id]; L = lev[id];
+            t = cn[id].t;
+            fr[nf++] = id;
+            if (t < 0.0f || S <= 2u || L >= c->cfg.cone_levels) {
+                uint32_t u, v;
+                for (v = y0 / 2u; v < (y0 + S) / 2u; ++v)
+                    for (u = x0 / 2u; u < (x0 + S) / 2u; ++u)
+                        f->mid[(size_t)((int32_t)v - f->mv0) * f->ms +
+                               (size_t)((int32_t)u - f->mu0)].tc = t < 0.0f ? -1.0f : t;
+                continue;
+            }
+            for (q = 0; q < 4u; ++q) {
+                uint32_t h = S / 2u, cx = x0 + ((q & 1u) ? h : 0u), cy = y0 + ((q & 2u) ? h : 0u);
+                uint32_t k;
+                fovsdf__wcone *ch;
+                if (cx >= c->cam.width || cy >= c->cam.height) continue; /* off the image */
+                FOV_ASSERT(nf > 0);
+                k = fr[--nf];
+                ch = &cn[k];
+                pos[k] = (cx - tx) | (cy - ty) << 16; wid[k] = h; lev[k] = L + 1u;
+                ch->k = fovsdf__cell_cone(c, (float)cx, (float)cy, (float)(cx + h),
+                                          (float)(cy + h), ch->a);
+                ch->t = t * (1.0f / FOV__SQRT(1.0f + ch->k * ch->k)); /* as CONE */
+                ch->i = 0;
+                act[na++] = k; /* examined later in this pass */
+            }
         }
-        {
-            uint32_t h = (cl.x1 - cl.x0) / 2u, q;
-            for (q = 4; q-- > 0;) {
-                fovsdf__cell ch;
-                ch.x0 = cl.x0 + ((q & 1) ? h : 0); ch.x1 = ch.x0 + h;
-                ch.y0 = cl.y0 + ((q & 2) ? h : 0); ch.y1 = ch.y0 + h;
-                ch.level = cl.level + 1;
-                ch.t = t;
-                FOV_ASSERT(sp < (int)(sizeof stk / sizeof stk[0]));
-                stk[sp++] = ch;
+        na = keep;
+        /* one step of every cone in flight */
+        for (j = 0; j < na; j += nb) {
+            nb = na - j < FOVSDF_BATCH ? na - j : FOVSDF_BATCH;
+            for (i = 0; i < nb; ++i) {
+                const fovsdf__wcone *p = &cn[act[j + i]];
+                w->bx[i] = c->origin[0] + p->a[0] * p->t; w->by[i] = c->origin[1] + p->a[1] * p->t;
+                w->bz[i] = c->origin[2] + p->a[2] * p->t;
+            }
+            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
+                              w->st);
+            e += nb;
+            for (i = 0; i < nb; ++i) {
+                fovsdf__wcone *p = &cn[act[j + i]];
+                /* as fovsdf__cone_march */
+                float d = w->bd[i] - (mc->ulp0 + mc->ulp1 * p->t);
+                if (d <= p->t * p->k * (1.0f + FOVSDF_CONE_SLACK) + mc->eps) {
+                    p->i = 0xffffffffu; /* stopped: no more steps (t <= t_max stays) */
+                } else {
+                    p->t += (d - p->t * p->k) / (1.0f + p->k);
+                    ++p->i;
+                }
             }
         }
     }
+    w->st->evals_lowres += e;
+}
+
+/* Steps 3 and 4 for pixel (x, y) of a FIPR / CONE_FOV tile, as far as the cells it needs allow:
+   0 when one is missing (requested: f->miss), else 1 (the pixel is queued or written). *ps
+   keeps its mask decision between rounds. */
+FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint8_t *ps, int due,
+                                   const fovsdf_output *o)
+{
+    const fovsdf_ctx *c = f->c;
+    int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
+    f->miss = 0;
+    if (*ps == 0u) {
+        /* step 3: the mask */
+        float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
+        int in;
+        if (w <= c->cfg.acuity.fovea_deg) in = 1;
+        else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
+        else {
+            p = fovsdf_acuity_p(&c->cfg.acuity, w);
+            in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
+                 (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
+                  fovsdf__fov_edge(f, f->cone ? u : (int32_t)(x / 4u),
+                                   f->cone ? v : (int32_t)(y / 4u)));
+        }
+        if (f->miss) return 0;
+        *ps = in ? 2u : 1u;
+    }
+    /* step 4: render */
+    if (*ps == 2u) {
+        float t0;
+        int miss = 0;
+        if (f->cone || f->safe) {
+            t0 = f->cone ? f->mid[(size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0)].tc
+                         : fovsdf__fov_tc(f, u, v);
+            if (f->miss) return 0;
+            miss = t0 < 0.0f;
+            if (miss) t0 = 0.0f;
+        } else {
+            int32_t a, b;
+            t0 = c->t_max;
+            for (b = -f->r; b <= f->r; ++b)
+                for (a = -f->r; a <= f->r; ++a)
+                    t0 = fov__minf(t0, fovsdf__fov_mid(f, u + a, v + b, 0)->th);
+            if (f->miss) return 0;
+        }
+        fovsdf__wave_pixel(f->wv, f->mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
+    } else if (!due) {
+        if (o->mask)
+            o->mask[(size_t)(y - o->origin_y) *
+                    (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
+                    (x - o->origin_x)] = 2u;
+    } else {
+        int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
+        float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f,
+            col[3] = { 0.0f, 0.0f, 0.0f };
+        const fovsdf__mid *own = fovsdf__fov_mid(f, u, v, 1);
+        for (b = 0; b < 2; ++b)
+            for (a = 0; a < 2; ++a) {
+                const fovsdf__mid *m = fovsdf__fov_mid(f, ua + a, va + b, 1);
+                float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
+                col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
+                col[2] += wt * m->rgb[2];
+            }
+        if (f->miss) return 0;
+        fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u,
+                    own->mat, 0u);
+    }
+    *ps = 3u;
+    return 1;
 }
 
 FOVSDF__PRIV FOVSDF__NOINLINE void
@@ -6377,11 +6873,17 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];
+    uint32_t rqm[FOVSDF_FOV_CELLS], rql[FOVSDF_FOV_CELLS], rqs[FOVSDF_FOV_CELLS];
+    uint8_t ps[4u * FOVSDF_FOV_CELLS]; /* per pixel: 0 unknown, 1 outside the mask, 2 inside,
+                                          3 done (a tile has at most 4 pixels per mid cell) */
     fovsdf__fovt f;
-    uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh;
+    uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh, left;
     int32_t am;
     int due;
     f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
+    f.wv = wv; f.rqm = rqm; f.rql = rql; f.rqs = rqs; f.nrm = 0; f.nrl = 0; f.nrs = 0;
+    f.miss = 0;
+    FOV_MEMSET(&f.dummy, 0, sizeof f.dummy);
     f.cone = c->cfg.method == FOVSDF_METHOD_CONE_FOV;
     f.safe = !f.cone && !c->cfg.heuristic_start;
     f.r = f.cone ? 1 : (c->cfg.ipr_no_filter ? 0 : c->cfg.ipr_radius);
@@ -6398,72 +6900,29 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
     f.lv0 = (int32_t)(ty / 4u) - (am + 1) / 2 - f.r;
     FOV_ASSERT((size_t)f.ms * f.ms <= FOVSDF_FOV_CELLS &&
                (f.cone || (size_t)f.ls * f.ls <= FOVSDF_FOV_CELLS));
-    for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; }
+    for (i = 0; i < f.ms * f.ms; ++i) { mid[i].tc = -2.0f; mid[i].state = 0; mid[i].req = 0; }
     if (!f.cone)
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
-    if (f.cone) {
-        /* the apron's 2x2 cells lie in the neighbouring tiles: one cone over the tile widened
-           by them gives their rays a safe start */
-        float a[3], k = fovsdf__cell_cone(c, (float)tx - 2.0f, (float)ty - 2.0f,
-                                          (float)(tx + T) + 2.0f, (float)(ty + T) + 2.0f, a);
-        f.t_ring = fovsdf__cone_march(c, mc, a, k, 0.0f, st);
-        if (f.t_ring < 0.0f) f.t_ring = c->t_max; /* the whole neighbourhood is empty */
-        fovsdf__fov_cones(&f, mc, tx, ty, T);
+    if (f.cone) fovsdf__fov_cones(&f, mc, tx, ty, T);
+    /* rounds: each pixel goes as far as the cells it needs allow; the cells it misses are
+       requested and marched (or shaded) as one wavefront (fovsdf__fov_run) before the next
+       round. A pixel requests a cell only on the path the lazy pass took (every value it read
+       before was final), so the tile traces and shades exactly the cells that pass did, with
+       the same values; only the order of the queued pixels differs. */
+    FOV_ASSERT((rx1 - rx0) * (ry1 - ry0) <= 4u * FOVSDF_FOV_CELLS);
+    for (i = 0; i < (rx1 - rx0) * (ry1 - ry0); ++i) ps[i] = 0;
+    for (;;) {
+        left = 0;
+        for (y = ry0; y < ry1; ++y)
+            for (x = rx0; x < rx1; ++x) {
+                uint8_t *q = &ps[(y - ry0) * (rx1 - rx0) + (x - rx0)];
+                if (*q != 3u && !fovsdf__fov_pixel(&f, x, y, q, due, o)) ++left;
+            }
+        if (left == 0) break;
+        FOV_ASSERT(f.nrm > 0 || f.nrl > 0 || f.nrs > 0);
+        fovsdf__fov_run(&f);
     }
-    for (y = ry0; y < ry1; ++y)
-        for (x = rx0; x < rx1; ++x) {
-            int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
-            float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
-            int in;
-            /* step 3: the mask */
-            if (w <= c->cfg.acuity.fovea_deg) in = 1;
-            else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
-            else {
-                p = fovsdf_acuity_p(&c->cfg.acuity, w);
-                in = fovsdf_u01(c->cfg.seed, x, y, 0) < p &&
-                     (c->cfg.fov_mask == FOVSDF_MASK_ACUITY ||
-                      fovsdf__fov_edge(&f, f.cone ? u : (int32_t)(x / 4u),
-                                       f.cone ? v : (int32_t)(y / 4u)));
-            }
-            /* step 4: render */
-            if (in) {
-                float t0;
-                int miss = 0;
-                if (f.cone || f.safe) {
-                    t0 = f.cone ? mid[(size_t)(v - f.mv0) * f.ms + (size_t)(u - f.mu0)].tc
-                        : fovsdf__fov_tc(&f, u, v);
-                    miss = t0 < 0.0f;
-                    if (miss) t0 = 0.0f;
-                } else {
-                    int32_t a, b;
-                    t0 = c->t_max;
-                    for (b = -f.r; b <= f.r; ++b)
-                        for (a = -f.r; a <= f.r; ++a)
-                            t0 = fov__minf(t0, fovsdf__fov_mid(&f, u + a, v + b, 0)->th);
-                }
-                fovsdf__wave_pixel(wv, mp, x, y, t0, miss, NULL, 0.0f, 0.0f);
-            } else if (!due) {
-                if (o->mask)
-                    o->mask[(size_t)(y - o->origin_y) *
-                            (o->mask_stride ? o->mask_stride : c->cam.width - o->origin_x) +
-                            (x - o->origin_x)] = 2u;
-            } else {
-                int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1, a, b;
-                float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f,
-                    col[3] = { 0.0f, 0.0f, 0.0f };
-                const fovsdf__mid *own = fovsdf__fov_mid(&f, u, v, 1);
-                for (b = 0; b < 2; ++b)
-                    for (a = 0; a < 2; ++a) {
-                        const fovsdf__mid *m = fovsdf__fov_mid(&f, ua + a, va + b, 1);
-                        float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                        col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
-                        col[2] += wt * m->rgb[2];
-                    }
-                fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f,
-                            0u, own->mat, 0u);
-            }
-        }
 }
 
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1,
