@@ -3390,8 +3390,13 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
 typedef struct fovsdf__bscr {
     float vs[FOVSDF_MAX_STACK][FOVSDF__L];
     int32_t ms[FOVSDF_MAX_STACK][FOVSDF__L];
-    float ps[FOVSDF_MAX_STACK][3][FOVSDF__L];
-    float p[3][FOVSDF__L], q[3][FOVSDF__L], t[FOVSDF__L], u[FOVSDF__L], e[FOVSDF__L];
+    /* the point stack: a transform writes the axes it changes into the next level's storage
+       and points the others at its parent's (no copies; popping just drops the level);
+       level 0 is the batch's own arrays when the batch fills every lane */
+    float ps[FOVSDF_MAX_STACK + 1][3][FOVSDF__L];
+    const float *pp[FOVSDF_MAX_STACK + 1][3];
+    float q[3][FOVSDF__L], w[5][FOVSDF__L]; /* scaled points, primitive scratch */
+    float e4[FOVSDF__L];                         /* 4 eps per lane (the bound's margin) */
     float bv[FOVSDF__MAX_DEPTH][FOVSDF__L];       /* pending bounds: the bound's value */
     int32_t bm[FOVSDF__MAX_DEPTH][FOVSDF__L];     /* 1: the lane takes it */
     int32_t act[FOVSDF__MAX_DEPTH + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
@@ -3421,6 +3426,46 @@ FOVSDF__INL float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf 
     return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
 }
 FOVSDF__INL int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+/* A primitive's value v at SDF scale sc with fovsdf_program_eval's last resort: NaN becomes
+   FLT_MAX (v * 1 is v for every v that is not NaN). */
+FOVSDF__INL float fovsdf__pfin(float v, float sc)
+{
+    float r = v * sc;
+    return fovsdf__sel((r <= 0.0f) | (r > 0.0f), r, FLT_MAX);
+}
+/* 1 when x is +0 (x - x0 is then x for every x, -0 included) */
+FOVSDF__INL int fovsdf__is_p0(float x)
+{
+    fovsdf__fu u;
+    u.f = x;
+    return u.u == 0u;
+}
+/* FOV__FLOOR(x) without a branch, so the loops vectorise (SSE2 has no floor instruction and
+   gcc keeps floorf a call or a branch): |x| < 2^23 is truncated by an integer conversion and
+   moved down by one when that rounded up (x < 0 not integral); any larger |x| is integral
+   already (as are inf and NaN), and floorf returns it unchanged, so it passes through. libm's
+   floorf keeps the sign of x (floor(-0) = -0); FOV_NO_LIBM's fov__floorf gives +0 there, and so
+   does this without libm. Math hooks: the hook, lane by lane. */
+FOVSDF__INL float fovsdf__vfloor(float x)
+{
+#if defined(FOV__HOOKED_MATH)
+    return FOV__FLOOR(x);
+#else
+    fovsdf__fu r;
+    int in = (x > -8388608.0f) & (x < 8388608.0f);
+    float xi = fovsdf__sel(in, x, 0.0f), c = (float)(int32_t)xi;
+#if !defined(FOV_NO_LIBM)
+    fovsdf__fu sx;
+    sx.f = x;
+#endif
+    c = fovsdf__sel(c > xi, c - 1.0f, c);
+    r.f = fovsdf__sel(in, c, x);
+#if !defined(FOV_NO_LIBM)
+    r.u |= sx.u & 0x80000000u; /* the result's sign is x's (0 and -1 < x < 0 included) */
+#endif
+    return r.f;
+#endif
+}
 
 /* v[i] = sqrt(v[i]) over the lanes, exactly FOV__SQRT's value. */
 FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
@@ -3442,28 +3487,32 @@ FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
 #endif
 }
 
-/* One primitive over the lanes at (x, y, z) into d (no inflation, no NaN guard), with the
-   float operations of fovsdf__prim in its order; t and u are scratch lanes. */
+/* One primitive over the lanes at (x, y, z) into d, times sc, NaN made FLT_MAX (fovsdf__pfin),
+   with the float operations of fovsdf__prim in its order; w: five scratch lanes. Every
+   primitive but the mandelbulb and the terrain (sin, atan2, pow) runs vectorised. */
 FOVSDF__PRIV FOVSDF__VEC void
 fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                    const float *FOVSDF__RESTRICT y, const float *FOVSDF__RESTRICT z,
-                   float *FOVSDF__RESTRICT d, float *FOVSDF__RESTRICT t, float *FOVSDF__RESTRICT u)
+                   float *FOVSDF__RESTRICT d, float sc, float (*w)[FOVSDF__L])
 {
     const float *f = in->f;
     const uint32_t n = FOVSDF__L; /* a constant trip count: the loops vectorise at -O2 */
+    float *FOVSDF__RESTRICT t = w[0], *FOVSDF__RESTRICT u = w[1];
     uint32_t i;
     switch (in->sub) {
-    case FOVSDF_NODE_SPHERE:
+    case FOVSDF_NODE_SPHERE: {
+        float r = f[0];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[0];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r, sc);
         break;
+    }
     case FOVSDF_NODE_BOX:
     case FOVSDF_NODE_ROUND_BOX: {
-        float r = in->sub == FOVSDF_NODE_BOX ? 0.0f : f[3];
-        float bx = in->sub == FOVSDF_NODE_BOX ? f[0] : f[0] - f[3];
-        float by = in->sub == FOVSDF_NODE_BOX ? f[1] : f[1] - f[3];
-        float bz = in->sub == FOVSDF_NODE_BOX ? f[2] : f[2] - f[3];
+        int rb = in->sub == FOVSDF_NODE_ROUND_BOX;
+        float r = rb ? f[3] : 0.0f;
+        float bx = rb ? f[0] - f[3] : f[0], by = rb ? f[1] - f[3] : f[1],
+              bz = rb ? f[2] - f[3] : f[2];
         for (i = 0; i < n; ++i) {
             float qx = fovsdf__vmax(fov__absf(x[i]) - bx, 0.0f);
             float qy = fovsdf__vmax(fov__absf(y[i]) - by, 0.0f);
@@ -3471,41 +3520,86 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             t[i] = qx * qx + qy * qy + qz * qz;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) {
-            float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
-                qz = fov__absf(z[i]) - bz;
-            d[i] = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+        if (rb) {
+            for (i = 0; i < n; ++i) {
+                float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
+                      qz = fov__absf(z[i]) - bz;
+                float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+                d[i] = fovsdf__pfin(o - r, sc);
+            }
+        } else {
+            for (i = 0; i < n; ++i) {
+                float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
+                      qz = fov__absf(z[i]) - bz;
+                float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+                d[i] = fovsdf__pfin(o, sc);
+            }
         }
-        if (in->sub == FOVSDF_NODE_ROUND_BOX) for (i = 0; i < n; ++i) d[i] = d[i] - r;
         break;
     }
-    case FOVSDF_NODE_TORUS:
+    case FOVSDF_NODE_BOX_FRAME: { /* fovsdf__sd_box_frame: three frame3 terms */
+        float *FOVSDF__RESTRICT t2 = w[2], *FOVSDF__RESTRICT t3 = w[3];
+        float ax = f[0], ay = f[1], az = f[2], e = f[3];
+        for (i = 0; i < n; ++i) {
+            float px = fov__absf(x[i]) - ax, py = fov__absf(y[i]) - ay,
+                  pz = fov__absf(z[i]) - az;
+            float qx = fov__absf(px + e) - e, qy = fov__absf(py + e) - e,
+                  qz = fov__absf(pz + e) - e;
+            float mpx = fovsdf__vmax(px, 0.0f), mpy = fovsdf__vmax(py, 0.0f),
+                  mpz = fovsdf__vmax(pz, 0.0f);
+            float mqx = fovsdf__vmax(qx, 0.0f), mqy = fovsdf__vmax(qy, 0.0f),
+                  mqz = fovsdf__vmax(qz, 0.0f);
+            t[i] = mpx * mpx + mqy * mqy + mqz * mqz;
+            t2[i] = mqx * mqx + mpy * mpy + mqz * mqz;
+            t3[i] = mqx * mqx + mqy * mqy + mpz * mpz;
+        }
+        fovsdf__sqrt_lanes(t);
+        fovsdf__sqrt_lanes(t2);
+        fovsdf__sqrt_lanes(t3);
+        for (i = 0; i < n; ++i) {
+            float px = fov__absf(x[i]) - ax, py = fov__absf(y[i]) - ay,
+                  pz = fov__absf(z[i]) - az;
+            float qx = fov__absf(px + e) - e, qy = fov__absf(py + e) - e,
+                  qz = fov__absf(pz + e) - e;
+            float r1 = t[i] + fovsdf__vmin(fovsdf__vmax(px, fovsdf__vmax(qy, qz)), 0.0f);
+            float r2 = t2[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(py, qz)), 0.0f);
+            float r3 = t3[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, pz)), 0.0f);
+            d[i] = fovsdf__pfin(fovsdf__vmin(fovsdf__vmin(r1, r2), r3), sc);
+        }
+        break;
+    }
+    case FOVSDF_NODE_TORUS: {
+        float r0 = f[0], r1 = f[1];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
         for (i = 0; i < n; ++i) {
-            float a = t[i] - f[0];
+            float a = t[i] - r0;
             t[i] = a * a + y[i] * y[i];
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[1];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r1, sc);
         break;
-    case FOVSDF_NODE_CYLINDER:
+    }
+    case FOVSDF_NODE_CYLINDER: {
+        float h = f[0], r = f[1];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
         for (i = 0; i < n; ++i) {
-            float dx = t[i] - f[1], dy = fov__absf(y[i]) - f[0];
+            float dx = t[i] - r, dy = fov__absf(y[i]) - h;
             float mx = fovsdf__vmax(dx, 0.0f), my = fovsdf__vmax(dy, 0.0f);
             u[i] = fovsdf__vmin(fovsdf__vmax(dx, dy), 0.0f);
             t[i] = mx * mx + my * my;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = u[i] + t[i];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(u[i] + t[i], sc);
         break;
+    }
     case FOVSDF_NODE_CAPSULE: {
         float bax = f[3] - f[0], bay = f[4] - f[1], baz = f[5] - f[2];
-        float bb = bax * bax + bay * bay + baz * baz;
+        float bb = bax * bax + bay * bay + baz * baz, ox = f[0], oy = f[1], oz = f[2];
+        float r = f[6];
         for (i = 0; i < n; ++i) {
-            float pax = x[i] - f[0], pay = y[i] - f[1], paz = z[i] - f[2], h, ex, ey, ez;
+            float pax = x[i] - ox, pay = y[i] - oy, paz = z[i] - oz, h, ex, ey, ez;
             h = fovsdf__sel(bb > 0.0f,
                             fovsdf__vclamp((pax * bax + pay * bay + paz * baz) / bb, 0.0f, 1.0f),
                             0.0f);
@@ -3513,82 +3607,185 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             t[i] = ex * ex + ey * ey + ez * ez;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[6];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r, sc);
         break;
     }
-    case FOVSDF_NODE_PLANE:
-        for (i = 0; i < n; ++i) d[i] = x[i] * f[0] + y[i] * f[1] + z[i] * f[2] + f[3];
+    case FOVSDF_NODE_CONE: { /* fovsdf__sd_cone */
+        float h = f[0], r1 = f[1], r2 = f[2];
+        float k2x = r2 - r1, k2y = 2.0f * h;
+        float kk = k2x * k2x + k2y * k2y;
+        for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) {
+            float qx = t[i], qy = y[i];
+            float cax = qx - fovsdf__vmin(qx, fovsdf__sel(qy < 0.0f, r1, r2)),
+                  cay = fov__absf(qy) - h;
+            float tt = fovsdf__vclamp(((r2 - qx) * k2x + (h - qy) * k2y) / kk, 0.0f, 1.0f);
+            float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
+            u[i] = fovsdf__sel((cbx < 0.0f) & (cay < 0.0f), -1.0f, 1.0f);
+            t[i] = fovsdf__vmin(cax * cax + cay * cay, cbx * cbx + cby * cby);
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(u[i] * t[i], sc);
         break;
+    }
+    case FOVSDF_NODE_PLANE: {
+        float a = f[0], b = f[1], c = f[2], e = f[3];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(x[i] * a + y[i] * b + z[i] * c + e, sc);
+        break;
+    }
+    case FOVSDF_NODE_MENGER: { /* fovsdf__sd_menger at p / f[0], times f[0] */
+        float *FOVSDF__RESTRICT qx = w[0], *FOVSDF__RESTRICT qy = w[1],
+              *FOVSDF__RESTRICT qz = w[2], *FOVSDF__RESTRICT d0 = w[3],
+              *FOVSDF__RESTRICT dm = w[4];
+        float s0 = f[0], s = 1.0f;
+        int32_t m, it = in->i[0];
+        for (i = 0; i < n; ++i) {
+            float ax, ay, az;
+            qx[i] = x[i] / s0; qy[i] = y[i] / s0; qz[i] = z[i] / s0;
+            ax = fovsdf__vmax(fov__absf(qx[i]) - 1.0f, 0.0f);
+            ay = fovsdf__vmax(fov__absf(qy[i]) - 1.0f, 0.0f);
+            az = fovsdf__vmax(fov__absf(qz[i]) - 1.0f, 0.0f);
+            d0[i] = ax * ax + ay * ay + az * az;
+        }
+        fovsdf__sqrt_lanes(d0);
+        for (i = 0; i < n; ++i) {
+            float ax = fov__absf(qx[i]) - 1.0f, ay = fov__absf(qy[i]) - 1.0f,
+                  az = fov__absf(qz[i]) - 1.0f;
+            d0[i] = d0[i] + fovsdf__vmin(fovsdf__vmax(ax, fovsdf__vmax(ay, az)), 0.0f);
+            dm[i] = d0[i];
+        }
+        /* every lane runs the iterations; those whose box distance is beyond 1 (the scalar
+           returns the box there) take d0 below */
+        for (m = 0; m < it; ++m) {
+            float s3 = s * 3.0f;
+            for (i = 0; i < n; ++i) {
+                float vx = qx[i] * s, vy = qy[i] * s, vz = qz[i] * s, rx, ry, rz, c;
+                vx = vx - 2.0f * fovsdf__vfloor(vx * 0.5f);
+                vy = vy - 2.0f * fovsdf__vfloor(vy * 0.5f);
+                vz = vz - 2.0f * fovsdf__vfloor(vz * 0.5f);
+                rx = fov__absf(1.0f - 3.0f * fov__absf(vx - 1.0f));
+                ry = fov__absf(1.0f - 3.0f * fov__absf(vy - 1.0f));
+                rz = fov__absf(1.0f - 3.0f * fov__absf(vz - 1.0f));
+                c = (fovsdf__vmin(fovsdf__vmax(rx, ry),
+                                  fovsdf__vmin(fovsdf__vmax(ry, rz), fovsdf__vmax(rz, rx))) -
+                     1.0f) / s3;
+                dm[i] = fovsdf__vmax(dm[i], c);
+            }
+            s = s3;
+        }
+        for (i = 0; i < n; ++i)
+            d[i] = fovsdf__pfin(fovsdf__sel(d0[i] <= 1.0f, dm[i], d0[i]) * s0, sc);
+        break;
+    }
     default:
         for (i = 0; i < n; ++i) {
             float p[3];
             p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
-            d[i] = fovsdf__prim(in, p);
+            d[i] = fovsdf__pfin(fovsdf__prim(in, p), sc);
         }
         break;
     }
 }
 
+/* One blend over the lanes A = A op B (materials MA, MB when wm): BODY sets r, the value, and
+   ta, 1 when A's material wins, from the operands a and c (no top-level commas in BODY). */
+#define FOVSDF__BLEND(BODY)                                                                   \
+    do {                                                                                       \
+        if (wm) {                                                                              \
+            for (i = 0; i < n; ++i) {                                                          \
+                float a = A[i], c = B[i], r;                                                   \
+                int ta;                                                                        \
+                BODY                                                                           \
+                A[i] = r;                                                                      \
+                MA[i] = fovsdf__seli(ta, MA[i], MB[i]);                                        \
+            }                                                                                  \
+        } else {                                                                               \
+            for (i = 0; i < n; ++i) {                                                          \
+                float a = A[i], c = B[i], r;                                                   \
+                int ta;                                                                        \
+                BODY                                                                           \
+                A[i] = r;                                                                      \
+                (void)ta;                                                                      \
+            }                                                                                  \
+        }                                                                                      \
+    } while (0)
+
 /* nb <= FOVSDF_BATCH points starting at point k0 of b. Every loop runs over all FOVSDF__L
    lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
-   them at -O2); lanes past nb repeat the last point and are inactive. */
+   them at -O2); lanes past nb repeat the last point and are inactive. Materials are tracked
+   only when b->material asks for them. */
 FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
                                                  uint32_t k0, uint32_t nb, fovsdf__bscr *s)
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
     float inflate = (b->inflate > 0.0f && fov__finite(b->inflate)) ? b->inflate : 1.0f;
-    int scaled = inflate < 1.0f || inflate > 1.0f;
+    int scaled = inflate < 1.0f || inflate > 1.0f, wm = b->material != 0;
     uint32_t pc = 0, cnt = prog->count, i, prims = 0, skipped = 0, lv = 0, bsp = 0;
+    uint32_t nj = 0xffffffffu; /* where the innermost pending subtree ends */
     int32_t vsp = 0, psp = 0;
-    for (i = 0; i < n; ++i) {
-        uint32_t k = k0 + (i < nb ? i : nb - 1u);
-        s->p[0][i] = b->x[k]; s->p[1][i] = b->y[k]; s->p[2][i] = b->z[k];
-        s->e[i] = b->eps ? b->eps[k] : 0.0f;
-        s->act[0][i] = i < nb ? 1 : 0;
+    {
+        float *FOVSDF__RESTRICT E4 = s->e4;
+        int32_t *FOVSDF__RESTRICT A0 = s->act[0];
+        if (nb == n) { /* a full batch: level 0 is the batch's arrays */
+            s->pp[0][0] = b->x + k0; s->pp[0][1] = b->y + k0; s->pp[0][2] = b->z + k0;
+            if (b->eps) {
+                const float *FOVSDF__RESTRICT EP = b->eps + k0;
+                for (i = 0; i < n; ++i) E4[i] = 4.0f * EP[i];
+            } else {
+                for (i = 0; i < n; ++i) E4[i] = 0.0f;
+            }
+            for (i = 0; i < n; ++i) A0[i] = 1;
+        } else {
+            float *FOVSDF__RESTRICT X = s->ps[0][0], *FOVSDF__RESTRICT Y = s->ps[0][1],
+                  *FOVSDF__RESTRICT Z = s->ps[0][2];
+            for (i = 0; i < n; ++i) {
+                uint32_t k = k0 + (i < nb ? i : nb - 1u);
+                X[i] = b->x[k]; Y[i] = b->y[k]; Z[i] = b->z[k];
+                E4[i] = b->eps ? 4.0f * b->eps[k] : 0.0f;
+                A0[i] = i < nb ? 1 : 0;
+            }
+            s->pp[0][0] = X; s->pp[0][1] = Y; s->pp[0][2] = Z;
+        }
     }
     s->nact[0] = nb;
     for (;;) {
         const fovsdf__ins *in;
         /* subtrees that ended: the lanes that skipped them take the bound's value */
-        while (bsp > 0 && s->bj[bsp - 1] == pc) {
+        while (pc == nj) {
             float *FOVSDF__RESTRICT V = s->vs[s->bslot[bsp - 1]];
-            int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
             const float *FOVSDF__RESTRICT BV = s->bv[bsp - 1];
             const int32_t *FOVSDF__RESTRICT BM = s->bm[bsp - 1];
-            for (i = 0; i < n; ++i) {
-                int32_t bm = BM[i];
-                V[i] = fovsdf__sel(bm, BV[i], V[i]);
-                M[i] = fovsdf__seli(bm, -1, M[i]);
+            for (i = 0; i < n; ++i) V[i] = fovsdf__sel(BM[i], BV[i], V[i]);
+            if (wm) {
+                int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
+                for (i = 0; i < n; ++i) M[i] = fovsdf__seli(BM[i], -1, M[i]);
             }
             --bsp;
             --lv;
+            nj = bsp > 0 ? s->bj[bsp - 1] : 0xffffffffu;
         }
         if (pc >= cnt) break;
         in = &code[pc];
         switch (in->op) {
         case FOVSDF__OP_PRIM: {
             float *FOVSDF__RESTRICT d = s->vs[vsp];
-            int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
-            int32_t mat = in->material;
+            const float *X = s->pp[psp][0], *Y = s->pp[psp][1], *Z = s->pp[psp][2];
             if (scaled) {
                 float sc = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate;
                 float *FOVSDF__RESTRICT QX = s->q[0], *FOVSDF__RESTRICT QY = s->q[1],
                       *FOVSDF__RESTRICT QZ = s->q[2];
-                const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                            *FOVSDF__RESTRICT Z = s->p[2];
                 for (i = 0; i < n; ++i) {
                     QX[i] = X[i] / sc; QY[i] = Y[i] / sc; QZ[i] = Z[i] / sc;
                 }
-                fovsdf__prim_lanes(in, QX, QY, QZ, d, s->t, s->u);
-                for (i = 0; i < n; ++i) d[i] = d[i] * sc;
+                fovsdf__prim_lanes(in, QX, QY, QZ, d, sc, s->w);
             } else {
-                fovsdf__prim_lanes(in, s->p[0], s->p[1], s->p[2], d, s->t, s->u);
+                fovsdf__prim_lanes(in, X, Y, Z, d, 1.0f, s->w);
             }
-            for (i = 0; i < n; ++i) {
-                float v = d[i];
-                d[i] = fovsdf__sel((v <= 0.0f) | (v > 0.0f), v, FLT_MAX);
-                M[i] = mat;
+            if (wm) {
+                int32_t *FOVSDF__RESTRICT M = s->ms[vsp], mat = in->material;
+                for (i = 0; i < n; ++i) M[i] = mat;
             }
             ++vsp;
             prims += s->nact[lv];
@@ -3604,58 +3801,40 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             --vsp;
             switch (in->sub) {
             case FOVSDF_NODE_UNION:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i];
-                    int ta = a < c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(ta = a < c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_SUBTRACT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = -B[i];
-                    int ta = a > c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(c = -c; ta = a > c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_INTERSECT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i];
-                    int ta = a > c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(ta = a > c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_SMOOTH_UNION:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f + 0.5f * (c - a) / k, 0.0f, 1.0f);
-                    r = c + (a - c) * h - k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f + 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    float v = c + (a - c) * h - k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, h > 0.5f, a < c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmin(a, c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmin(a, c));
+                });
                 break;
             case FOVSDF_NODE_SMOOTH_SUBTRACT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f - 0.5f * (a + c) / k, 0.0f, 1.0f);
-                    r = a + (-c - a) * h + k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f - 0.5f * (a + c) / k, 0.0f, 1.0f);
+                    float v = a + (-c - a) * h + k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, !(h > 0.5f), a > -c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, -c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmax(a, -c));
+                });
                 break;
             default: /* smooth intersection */
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f - 0.5f * (c - a) / k, 0.0f, 1.0f);
-                    r = c + (a - c) * h + k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f - 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    float v = c + (a - c) * h + k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, h > 0.5f, a > c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmax(a, c));
+                });
                 break;
             }
             ++pc;
@@ -3670,57 +3849,70 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
         }
         case FOVSDF__OP_PUSHP: {
             const float *f = in->f;
-            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                  *FOVSDF__RESTRICT Z = s->p[2];
-            float *FOVSDF__RESTRICT SX = s->ps[psp][0], *FOVSDF__RESTRICT SY = s->ps[psp][1],
-                  *FOVSDF__RESTRICT SZ = s->ps[psp][2];
+            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
+                        *FOVSDF__RESTRICT Z = s->pp[psp][2];
+            float *FOVSDF__RESTRICT OX = s->ps[psp + 1][0],
+                  *FOVSDF__RESTRICT OY = s->ps[psp + 1][1],
+                  *FOVSDF__RESTRICT OZ = s->ps[psp + 1][2];
+            const float **O = s->pp[psp + 1];
             int k;
-            for (i = 0; i < n; ++i) { SX[i] = X[i]; SY[i] = Y[i]; SZ[i] = Z[i]; }
+            O[0] = X; O[1] = Y; O[2] = Z; /* axes the transform leaves alone */
             ++psp;
             switch (in->sub) {
             case FOVSDF_NODE_TRANSLATE: {
                 float a = f[0], c = f[1], e = f[2];
-                for (i = 0; i < n; ++i) { X[i] -= a; Y[i] -= c; Z[i] -= e; }
+                if (!fovsdf__is_p0(a)) { for (i = 0; i < n; ++i) OX[i] = X[i] - a; O[0] = OX; }
+                if (!fovsdf__is_p0(c)) { for (i = 0; i < n; ++i) OY[i] = Y[i] - c; O[1] = OY; }
+                if (!fovsdf__is_p0(e)) { for (i = 0; i < n; ++i) OZ[i] = Z[i] - e; O[2] = OZ; }
                 break;
             }
-            case FOVSDF_NODE_ROTATE:
+            case FOVSDF_NODE_ROTATE: { /* world -> object: R^T p */
+                float r0 = f[0], r1 = f[1], r2 = f[2], r3 = f[3], r4 = f[4], r5 = f[5],
+                      r6 = f[6], r7 = f[7], r8 = f[8];
                 for (i = 0; i < n; ++i) {
-                    float x = SX[i], y = SY[i], z = SZ[i];
-                    X[i] = f[0] * x + f[3] * y + f[6] * z;
-                    Y[i] = f[1] * x + f[4] * y + f[7] * z;
-                    Z[i] = f[2] * x + f[5] * y + f[8] * z;
+                    float px = X[i], py = Y[i], pz = Z[i];
+                    OX[i] = r0 * px + r3 * py + r6 * pz;
+                    OY[i] = r1 * px + r4 * py + r7 * pz;
+                    OZ[i] = r2 * px + r5 * py + r8 * pz;
                 }
+                O[0] = OX; O[1] = OY; O[2] = OZ;
                 break;
+            }
             case FOVSDF_NODE_SCALE: {
                 float sc = f[0];
-                for (i = 0; i < n; ++i) { X[i] /= sc; Y[i] /= sc; Z[i] /= sc; }
+                for (i = 0; i < n; ++i) { OX[i] = X[i] / sc; OY[i] = Y[i] / sc; OZ[i] = Z[i] / sc; }
+                O[0] = OX; O[1] = OY; O[2] = OZ;
                 break;
             }
             case FOVSDF_NODE_REPEAT:
                 for (k = 0; k < 3; ++k) {
-                    float *FOVSDF__RESTRICT P = s->p[k], per = f[k], lim = (float)in->i[k];
+                    const float *FOVSDF__RESTRICT P = s->pp[psp - 1][k];
+                    float *FOVSDF__RESTRICT Q = s->ps[psp][k], per = f[k], lim = (float)in->i[k];
                     if (!(per > 0.0f)) continue;
                     if (in->i[k] > 0) {
                         for (i = 0; i < n; ++i) {
-                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            float c = fovsdf__vfloor(P[i] / per + 0.5f);
                             c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
                             c = fovsdf__vclamp(c, -lim, lim);
-                            P[i] -= per * c;
+                            Q[i] = P[i] - per * c;
                         }
                     } else {
                         for (i = 0; i < n; ++i) {
-                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            float c = fovsdf__vfloor(P[i] / per + 0.5f);
                             c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
-                            P[i] -= per * c;
+                            Q[i] = P[i] - per * c;
                         }
                     }
+                    O[k] = Q;
                 }
                 break;
             default: /* mirror */
                 for (k = 0; k < 3; ++k)
                     if (in->i[0] & (1 << k)) {
-                        float *FOVSDF__RESTRICT P = s->p[k];
-                        for (i = 0; i < n; ++i) P[i] = fov__absf(P[i]);
+                        const float *FOVSDF__RESTRICT P = s->pp[psp - 1][k];
+                        float *FOVSDF__RESTRICT Q = s->ps[psp][k];
+                        for (i = 0; i < n; ++i) Q[i] = fov__absf(P[i]);
+                        O[k] = Q;
                     }
                 break;
             }
@@ -3729,31 +3921,25 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
         }
         case FOVSDF__OP_POPP: {
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], sc = in->f[0];
-            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                  *FOVSDF__RESTRICT Z = s->p[2];
-            const float *FOVSDF__RESTRICT SX = s->ps[psp - 1][0],
-                        *FOVSDF__RESTRICT SY = s->ps[psp - 1][1],
-                        *FOVSDF__RESTRICT SZ = s->ps[psp - 1][2];
-            --psp;
-            for (i = 0; i < n; ++i) { X[i] = SX[i]; Y[i] = SY[i]; Z[i] = SZ[i]; }
+            --psp; /* the parent's point is still there */
             if (sc < 1.0f || sc > 1.0f) for (i = 0; i < n; ++i) V[i] *= sc;
             ++pc;
             break;
         }
         default: { /* BOUND */
             const float *f = in->f;
-            const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                        *FOVSDF__RESTRICT Z = s->p[2], *FOVSDF__RESTRICT E = s->e;
+            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
+                        *FOVSDF__RESTRICT Z = s->pp[psp][2], *FOVSDF__RESTRICT E4 = s->e4;
             const int32_t *FOVSDF__RESTRICT ACT = s->act[lv];
             int32_t *FOVSDF__RESTRICT BM = s->bm[bsp];
-            float *FOVSDF__RESTRICT T = s->t;
+            float *FOVSDF__RESTRICT T = s->w[0];
             float cx = f[0], cy = f[1], cz = f[2], lim0 = 1.25f * f[3] + f[4];
             uint32_t nskip = 0, na = s->nact[lv];
             if (scaled) { ++pc; break; } /* inflation: evaluate everything (as the scalar) */
             for (i = 0; i < n; ++i) {
                 float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz,
                       d2 = dx * dx + dy * dy + dz * dz;
-                float lim = lim0 + 4.0f * E[i];
+                float lim = lim0 + E4[i];
                 int32_t sk = (d2 > lim * lim) & ACT[i];
                 T[i] = d2;
                 BM[i] = sk;
@@ -3764,8 +3950,11 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             fovsdf__sqrt_lanes(T);
             if (nskip == na) { /* every lane that counts skips: jump */
                 float *FOVSDF__RESTRICT V = s->vs[vsp], r = f[3];
-                int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
-                for (i = 0; i < n; ++i) { V[i] = T[i] - r; M[i] = -1; }
+                for (i = 0; i < n; ++i) V[i] = T[i] - r;
+                if (wm) {
+                    int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
+                    for (i = 0; i < n; ++i) M[i] = -1;
+                }
                 ++vsp;
                 pc = in->jump;
                 break;
@@ -3782,6 +3971,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             s->nact[lv + 1] = na - nskip;
             s->bj[bsp] = in->jump;
             s->bslot[bsp] = (uint32_t)vsp;
+            nj = in->jump;
             ++bsp;
             ++lv;
             ++pc;
@@ -3791,12 +3981,27 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
     }
     b->prims += prims;
     b->prims_skipped += skipped;
-    for (i = 0; i < nb; ++i) {
-        float v = vsp > 0 ? s->vs[0][i] : FLT_MAX;
-        b->d[k0 + i] = fov__isnan(v) ? FLT_MAX : fovsdf__clampf(v, -FLT_MAX, FLT_MAX);
-        if (b->material) b->material[k0 + i] = vsp > 0 ? s->ms[0][i] : -1;
+    {
+        float *FOVSDF__RESTRICT D = b->d + k0;
+        const float *FOVSDF__RESTRICT V = s->vs[0];
+        /* finite always: NaN and +-inf become FLT_MAX and +-FLT_MAX (fovsdf_program_eval) */
+        if (vsp > 0) {
+            for (i = 0; i < nb; ++i) {
+                float v = V[i];
+                D[i] = fovsdf__sel((v <= 0.0f) | (v > 0.0f), fovsdf__vclamp(v, -FLT_MAX, FLT_MAX),
+                                   FLT_MAX);
+            }
+        } else {
+            for (i = 0; i < nb; ++i) D[i] = FLT_MAX;
+        }
+        if (wm) {
+            int32_t *FOVSDF__RESTRICT M = b->material + k0;
+            const int32_t *FOVSDF__RESTRICT MS = s->ms[0];
+            for (i = 0; i < nb; ++i) M[i] = vsp > 0 ? MS[i] : -1;
+        }
     }
 }
+#undef FOVSDF__BLEND
 
 FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 {
