@@ -3997,7 +3997,8 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
         if (wm) {
             int32_t *FOVSDF__RESTRICT M = b->material + k0;
             const int32_t *FOVSDF__RESTRICT MS = s->ms[0];
-            for (i = 0; i < nb; ++i) M[i] = vsp > 0 ? MS[i] : -1;
+            if (vsp > 0) for (i = 0; i < nb; ++i) M[i] = MS[i];
+            else for (i = 0; i < nb; ++i) M[i] = -1;
         }
     }
 }
@@ -4065,24 +4066,32 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
 /* n <= FOVSDF_BATCH counted evaluations at (x, y, z)[i] with thresholds eps[i] (as
    fovsdf__eval_in for each point: the same values, materials and counts), through the batch
    callback when the scene has one, else point by point. mat may be NULL. */
-FOVSDF__PRIV void fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n,
-                                     const float *x, const float *y, const float *z,
-                                     const float *eps, float inflate, const fovsdf_ray_cone *cone,
-                                     float *d, int32_t *mat, fovsdf_stats *st)
+FOVSDF__PRIV FOVSDF__VEC void
+fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n, const float *x,
+                   const float *y, const float *z, const float *eps, float inflate,
+                   const fovsdf_ray_cone *cone, float *d, int32_t *mat, fovsdf_stats *st)
 {
     uint32_t i;
     if (sc->dist_batch) {
         fovsdf_batch b;
-        float nan = fovsdf__nan();
-        for (i = 0; i < n; ++i) d[i] = nan;
-        if (mat) for (i = 0; i < n; ++i) mat[i] = 0;
+        const fovsdf_program *pg = (const fovsdf_program *)sc->user;
+        /* a built-in program writes every distance and material, finite: no defaults, and
+           at Lipschitz 1 nothing to scale */
+        int own = sc->dist_batch == fovsdf_program_eval_batch && pg && pg->code && pg->count > 0;
+        if (!own) {
+            float nan = fovsdf__nan();
+            for (i = 0; i < n; ++i) d[i] = nan;
+            if (mat) for (i = 0; i < n; ++i) mat[i] = 0;
+        }
         b.n = n; b.x = x; b.y = y; b.z = z; b.eps = eps; b.inflate = inflate; b.d = d;
         b.material = mat; b.prims = 0; b.prims_skipped = 0; b.cone = cone;
         sc->dist_batch(&b, sc->user);
         if (st) { st->prims += b.prims; st->prims_skipped += b.prims_skipped; st->evals += n; }
-        for (i = 0; i < n; ++i) {
-            float v = d[i] * inv_lip;
-            d[i] = fov__finite(v) ? v : FLT_MAX;
+        if (!own || inv_lip < 1.0f || inv_lip > 1.0f) {
+            for (i = 0; i < n; ++i) {
+                float v = d[i] * inv_lip;
+                d[i] = fovsdf__sel(fovsdf__vfinite(v), v, FLT_MAX);
+            }
         }
         return;
     }
@@ -4177,6 +4186,17 @@ FOVSDF__PRIV float fovsdf__mg(const fovsdf__marcher *m, float t)
    depend on which one marched it, nor on how rays were grouped into batches. A point that
    overflows (a camera near FLT_MAX) is never evaluated: it reads FLT_MAX, a miss, and leaves
    the material alone. */
+/* fovsdf__thr and fovsdf__mg with the ray's own eps_cone ec (the same operations) */
+FOVSDF__INL float fovsdf__thr_ec(const fovsdf__marcher *m, float ec, float t)
+{
+    float a = m->eps, b = ec * t, c = m->ulp0 + m->ulp1 * t;
+    return fov__maxf(a, fov__maxf(b, c));
+}
+FOVSDF__INL float fovsdf__mg_ec(const fovsdf__marcher *m, float ec, float t)
+{
+    return 0.01f * fovsdf__thr_ec(m, ec, t) + 0.5f * (m->ulp0 + m->ulp1 * t);
+}
+
 typedef struct fovsdf__mco {
     float ro[3], rd[3], t0;    /* the ray and its start */
     float ec;                  /* the ray's own eps_cone (per_ray: scaled by its footprint) */
@@ -4188,7 +4208,7 @@ typedef struct fovsdf__mco {
     uint32_t evals;            /* evaluations so far */
     /* tracer state (the result is t, d, steps, kind, mat) */
     float t, d, pt, pd, om, tp, rp, z, sl, dp, T, R;
-    int hp, have, scaled;
+    int hp, have;
     uint32_t steps, kind;
     int32_t mat, m2, mb;
     /* refinement and ball certificate */
@@ -4209,7 +4229,7 @@ typedef struct fovsdf__mco {
         w->q[0] = w->ro[0] + w->rd[0] * (tt_); w->q[1] = w->ro[1] + w->rd[1] * (tt_);              \
         w->q[2] = w->ro[2] + w->rd[2] * (tt_);                                                     \
         if (!fov__finite3(w->q)) { w->res = FLT_MAX; w->got = 0; break; }                          \
-        w->qe = fovsdf__thr(m, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);                   \
+        w->qe = fovsdf__thr_ec(m, w->ec, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);         \
         return 1;                                                                                  \
     case (k):;                                                                                     \
     } while (0)
@@ -4223,7 +4243,6 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
     w->pc = 0;
     w->evals = 0;
     w->mat = 0;
-    w->scaled = 0;
     w->ec = m->eps_cone;
     if (m->per_ray && m->eps_cone > 0.0f) {
         /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
@@ -4231,7 +4250,6 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
            the smaller one, so wide fields of view do not turn near misses into hits */
         float cz = fovsdf__clampf(fov__dot(rd, m->fwd), 0.0f, 1.0f);
         w->ec = m->eps_cone * cz * cz;
-        w->scaled = 1;
     }
 }
 
@@ -4240,13 +4258,10 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
    points with t <= t_max; a hit has a finite t in [t0, t_max] (t0 after the head-start
    check); a refinement never moves a hit past a point of the ray it has not verified (see
    the refinement below). Returns 1 with a request, 0 when done (kind, t, d, steps, mat). */
-FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
+FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m, fovsdf__mco *w)
 {
-    fovsdf__marcher mr;
-    const fovsdf__marcher *m = m0;
     float v, den, fac, M, om, u, s, q[3], n[3], c[3], ha, h2, hr, rr, g2;
     int i, k;
-    if (w->scaled) { mr = *m0; mr.eps_cone = w->ec; m = &mr; }
     switch (w->pc) {
     case 0:
         w->kind = FOVSDF_MISS;
@@ -4284,7 +4299,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                     w->t = w->tp + w->rp; w->om = 1.0f; w->have = 0;
                     continue;
                 }
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 w->tp = w->t; w->rp = w->d; w->have = 1;
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 /* an over-relaxed step may only leave the range after the overlap test has
@@ -4305,7 +4320,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             w->d = w->res;
             if (w->got) w->mat = w->resm;
             ++w->steps;
-            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) w->kind = FOVSDF_HIT;
             w->z = w->d;
             while (w->kind == FOVSDF_MISS) {
                 if (!(w->t + w->d <= m->t_max)) break;
@@ -4325,7 +4340,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->sl += m->beta * (M - w->sl);
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t = w->T; w->d = w->R;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 om = 2.0f / (1.0f - fovsdf__clampf(w->sl, -1.0f, 0.9f));
                 w->z = w->d * fov__maxf(1.0f, om);
             }
@@ -4339,7 +4354,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             w->d = w->res;
             if (w->got) w->mat = w->resm;
             ++w->steps;
-            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) w->kind = FOVSDF_HIT;
             while (w->kind == FOVSDF_MISS) {
                 if (!(w->t + w->d <= m->t_max)) break;
                 if (w->steps >= m->max_steps) { w->kind = FOVSDF_EXHAUSTED; break; }
@@ -4361,7 +4376,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->dp = w->T - w->t; w->rp = w->d; w->have = 1;
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t = w->T; w->d = w->R;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
             }
         } else {
             /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
@@ -4372,7 +4387,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->d = w->res;
                 if (w->got) w->mat = w->resm;
                 ++w->steps;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t += w->d;
             }
@@ -4390,7 +4405,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 FOVSDF__YIELD_T(50u, w->t2, 1.0f);
                 w->m2 = w->got ? w->resm : 0;
                 v = w->res;
-                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg_ec(m, w->ec, w->t2) &&
                     (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
                     w->t = w->t2; w->d = v; w->mat = w->m2;
                     w->pt = w->t1; w->pd = w->d1; w->hp = 1;
@@ -4402,7 +4417,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
         w->slope = (w->dd - w->pd) / (w->tt - w->pt);
         w->dt = -w->dd / w->slope;
         w->lim = 64.0f * fov__absf(w->dd);
-        w->mg = fovsdf__mg(m, w->tt);
+        w->mg = fovsdf__mg_ec(m, w->ec, w->tt);
         w->tb = w->tt; w->db = w->dd; w->mb = 0;
         w->ok = 0;
         /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
@@ -4418,12 +4433,12 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             }
             if (!fov__finite3(w->a) || !fov__finite3(w->f)) goto ball_end;
             w->q[0] = w->f[0]; w->q[1] = w->f[1]; w->q[2] = w->f[2];
-            FOVSDF__YIELD_P(60u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(60u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             w->fb = w->res; w->m2 = w->resm;
             /* the secant found the surface (F at least 4 times closer than the hit; a ray
                running along a curved surface keeps the hit where the threshold stopped it),
                and F is not inside by more than the margin */
-            if (!(fov__absf(w->fb) <= 0.25f * w->dd && w->fb > -fovsdf__mg(m, w->t2)))
+            if (!(fov__absf(w->fb) <= 0.25f * w->dd && w->fb > -fovsdf__mg_ec(m, w->ec, w->t2)))
                 goto ball_end;
             /* the normal: the secant's slope is the derivative along the ray; two forward
                differences from F across it give the rest. The step: at least the threshold,
@@ -4433,7 +4448,8 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                d / (t2 - t)) */
             u = m->ulp0 + m->ulp1 * w->t2;
             s = w->t2 - w->tt;
-            w->e = fov__maxf(fovsdf__thr(m, w->t2), FOV__SQRT(u * (s * s / (2.0f * w->dd))));
+            w->e = fov__maxf(fovsdf__thr_ec(m, w->ec, w->t2),
+                             FOV__SQRT(u * (s * s / (2.0f * w->dd))));
             {
                 float ax[3] = { 0.0f, 0.0f, 0.0f };
                 k = fov__absf(w->rd[0]) <= fov__absf(w->rd[1])
@@ -4446,11 +4462,11 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             fov__cross(w->rd, w->b1, w->b2);
             for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b1[i];
             if (!fov__finite3(w->q)) goto ball_end;
-            FOVSDF__YIELD_P(61u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(61u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             w->g1 = w->res - w->fb;
             for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b2[i];
             if (!fov__finite3(w->q)) goto ball_end;
-            FOVSDF__YIELD_P(62u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(62u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             g2 = w->res - w->fb;
             for (i = 0; i < 3; ++i)
                 n[i] = w->slope * w->e * w->rd[i] + w->g1 * w->b1[i] + g2 * w->b2[i];
@@ -4468,7 +4484,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             /* keep what the test needs after the evaluation: c in a, hr in b2[0] */
             for (i = 0; i < 3; ++i) { w->a[i] -= c[i]; w->f[i] -= c[i]; w->q[i] = c[i]; }
             w->b2[0] = hr;
-            FOVSDF__YIELD_P(63u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(63u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             v = w->res; /* f(c) */
             if (!(v > 0.0f) || !(v < FLT_MAX)) goto ball_end;
             rr = v + w->mg - 4.0f * FLT_EPSILON * w->b2[0];
@@ -4495,7 +4511,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 FOVSDF__YIELD_T(51u, w->t2, 1.0f);
                 w->m2 = w->got ? w->resm : 0;
                 v = w->res;
-                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg_ec(m, w->ec, w->t2) &&
                     (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
                     w->t = w->t2; w->d = v; w->mat = w->m2;
                 }
