@@ -1811,10 +1811,13 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #else
 #define FOVSDF__INL static inline
 #endif
-/* gcc's -O2 cost model ("very cheap") does not vectorise loops with selects: the batch
-   evaluator asks for its dynamic model (clang vectorises them at -O2 as they are) */
+/* gcc's -O2 cost model ("very cheap") does not vectorise loops with selects, and under its
+   default -ftrapping-math it keeps "a > b ? a : b" a branch: the batch evaluator and its
+   inline helpers ask for the dynamic model and no-trapping-math (the same IEEE operations and
+   values; only floating-point exception flags, which the library never reads, may differ),
+   so min and max become maxps / minps. clang vectorises them at -O2 as they are. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(FOVSDF_NO_SIMD) && __GNUC__ >= 8
-#define FOVSDF__VEC __attribute__((optimize("vect-cost-model=dynamic")))
+#define FOVSDF__VEC __attribute__((optimize("vect-cost-model=dynamic", "no-trapping-math")))
 #else
 #define FOVSDF__VEC
 #endif
@@ -3403,10 +3406,12 @@ typedef struct fovsdf__bscr {
     uint32_t bj[FOVSDF__MAX_DEPTH], bslot[FOVSDF__MAX_DEPTH], nact[FOVSDF__MAX_DEPTH + 1];
 } fovsdf__bscr;
 
-/* Branch-free selects for the lane loops (gcc leaves "x > 0 ? x : 0" a branch, which stops
-   vectorisation); the same values as the ternaries, NaN and signed zeros included. */
+/* Branch-free selects for the lane loops; the same values as the ternaries, NaN and signed
+   zeros included. vmax and vmin are the ternaries themselves (maxps / minps compute exactly
+   a > b ? a : b and a < b ? a : b); every helper the lane loops call carries FOVSDF__VEC, or
+   gcc would not inline it into them (fovsdf__vabs is fov__absf). */
 typedef union fovsdf__fu { float f; uint32_t u; } fovsdf__fu;
-FOVSDF__INL float fovsdf__sel(int c, float a, float b) /* c ? a : b */
+FOVSDF__INL FOVSDF__VEC float fovsdf__sel(int c, float a, float b) /* c ? a : b */
 {
     fovsdf__fu x, y;
     uint32_t m = 0u - (uint32_t)(c != 0);
@@ -3414,27 +3419,28 @@ FOVSDF__INL float fovsdf__sel(int c, float a, float b) /* c ? a : b */
     x.u = (x.u & m) | (y.u & ~m);
     return x.f;
 }
-FOVSDF__INL int32_t fovsdf__seli(int c, int32_t a, int32_t b)
+FOVSDF__INL FOVSDF__VEC int32_t fovsdf__seli(int c, int32_t a, int32_t b)
 {
     int32_t m = -(int32_t)(c != 0);
     return (a & m) | (b & ~m);
 }
-FOVSDF__INL float fovsdf__vmax(float a, float b) { return fovsdf__sel(a > b, a, b); }
-FOVSDF__INL float fovsdf__vmin(float a, float b) { return fovsdf__sel(a < b, a, b); }
-FOVSDF__INL float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmax(float a, float b) { return a > b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmin(float a, float b) { return a < b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
 {
     return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
 }
-FOVSDF__INL int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+FOVSDF__INL FOVSDF__VEC int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vabs(float a) { return a < 0.0f ? -a : a; } /* fov__absf */
 /* A primitive's value v at SDF scale sc with fovsdf_program_eval's last resort: NaN becomes
    FLT_MAX (v * 1 is v for every v that is not NaN). */
-FOVSDF__INL float fovsdf__pfin(float v, float sc)
+FOVSDF__INL FOVSDF__VEC float fovsdf__pfin(float v, float sc)
 {
     float r = v * sc;
     return fovsdf__sel((r <= 0.0f) | (r > 0.0f), r, FLT_MAX);
 }
 /* 1 when x is +0 (x - x0 is then x for every x, -0 included) */
-FOVSDF__INL int fovsdf__is_p0(float x)
+FOVSDF__INL FOVSDF__VEC int fovsdf__is_p0(float x)
 {
     fovsdf__fu u;
     u.f = x;
@@ -3446,7 +3452,7 @@ FOVSDF__INL int fovsdf__is_p0(float x)
    already (as are inf and NaN), and floorf returns it unchanged, so it passes through. libm's
    floorf keeps the sign of x (floor(-0) = -0); FOV_NO_LIBM's fov__floorf gives +0 there, and so
    does this without libm. Math hooks: the hook, lane by lane. */
-FOVSDF__INL float fovsdf__vfloor(float x)
+FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
 {
 #if defined(FOV__HOOKED_MATH)
     return FOV__FLOOR(x);
@@ -3468,7 +3474,7 @@ FOVSDF__INL float fovsdf__vfloor(float x)
 }
 
 /* v[i] = sqrt(v[i]) over the lanes, exactly FOV__SQRT's value. */
-FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
+FOVSDF__INL FOVSDF__VEC void fovsdf__sqrt_lanes(float *v)
 {
     uint32_t i;
 #if defined(FOVSDF__SQRT_AVX)
@@ -3514,23 +3520,23 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         float bx = rb ? f[0] - f[3] : f[0], by = rb ? f[1] - f[3] : f[1],
               bz = rb ? f[2] - f[3] : f[2];
         for (i = 0; i < n; ++i) {
-            float qx = fovsdf__vmax(fov__absf(x[i]) - bx, 0.0f);
-            float qy = fovsdf__vmax(fov__absf(y[i]) - by, 0.0f);
-            float qz = fovsdf__vmax(fov__absf(z[i]) - bz, 0.0f);
+            float qx = fovsdf__vmax(fovsdf__vabs(x[i]) - bx, 0.0f);
+            float qy = fovsdf__vmax(fovsdf__vabs(y[i]) - by, 0.0f);
+            float qz = fovsdf__vmax(fovsdf__vabs(z[i]) - bz, 0.0f);
             t[i] = qx * qx + qy * qy + qz * qz;
         }
         fovsdf__sqrt_lanes(t);
         if (rb) {
             for (i = 0; i < n; ++i) {
-                float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
-                      qz = fov__absf(z[i]) - bz;
+                float qx = fovsdf__vabs(x[i]) - bx, qy = fovsdf__vabs(y[i]) - by,
+                      qz = fovsdf__vabs(z[i]) - bz;
                 float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
                 d[i] = fovsdf__pfin(o - r, sc);
             }
         } else {
             for (i = 0; i < n; ++i) {
-                float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
-                      qz = fov__absf(z[i]) - bz;
+                float qx = fovsdf__vabs(x[i]) - bx, qy = fovsdf__vabs(y[i]) - by,
+                      qz = fovsdf__vabs(z[i]) - bz;
                 float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
                 d[i] = fovsdf__pfin(o, sc);
             }
@@ -3541,10 +3547,10 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         float *FOVSDF__RESTRICT t2 = w[2], *FOVSDF__RESTRICT t3 = w[3];
         float ax = f[0], ay = f[1], az = f[2], e = f[3];
         for (i = 0; i < n; ++i) {
-            float px = fov__absf(x[i]) - ax, py = fov__absf(y[i]) - ay,
-                  pz = fov__absf(z[i]) - az;
-            float qx = fov__absf(px + e) - e, qy = fov__absf(py + e) - e,
-                  qz = fov__absf(pz + e) - e;
+            float px = fovsdf__vabs(x[i]) - ax, py = fovsdf__vabs(y[i]) - ay,
+                  pz = fovsdf__vabs(z[i]) - az;
+            float qx = fovsdf__vabs(px + e) - e, qy = fovsdf__vabs(py + e) - e,
+                  qz = fovsdf__vabs(pz + e) - e;
             float mpx = fovsdf__vmax(px, 0.0f), mpy = fovsdf__vmax(py, 0.0f),
                   mpz = fovsdf__vmax(pz, 0.0f);
             float mqx = fovsdf__vmax(qx, 0.0f), mqy = fovsdf__vmax(qy, 0.0f),
@@ -3557,10 +3563,10 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         fovsdf__sqrt_lanes(t2);
         fovsdf__sqrt_lanes(t3);
         for (i = 0; i < n; ++i) {
-            float px = fov__absf(x[i]) - ax, py = fov__absf(y[i]) - ay,
-                  pz = fov__absf(z[i]) - az;
-            float qx = fov__absf(px + e) - e, qy = fov__absf(py + e) - e,
-                  qz = fov__absf(pz + e) - e;
+            float px = fovsdf__vabs(x[i]) - ax, py = fovsdf__vabs(y[i]) - ay,
+                  pz = fovsdf__vabs(z[i]) - az;
+            float qx = fovsdf__vabs(px + e) - e, qy = fovsdf__vabs(py + e) - e,
+                  qz = fovsdf__vabs(pz + e) - e;
             float r1 = t[i] + fovsdf__vmin(fovsdf__vmax(px, fovsdf__vmax(qy, qz)), 0.0f);
             float r2 = t2[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(py, qz)), 0.0f);
             float r3 = t3[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, pz)), 0.0f);
@@ -3585,7 +3591,7 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
         for (i = 0; i < n; ++i) {
-            float dx = t[i] - r, dy = fov__absf(y[i]) - h;
+            float dx = t[i] - r, dy = fovsdf__vabs(y[i]) - h;
             float mx = fovsdf__vmax(dx, 0.0f), my = fovsdf__vmax(dy, 0.0f);
             u[i] = fovsdf__vmin(fovsdf__vmax(dx, dy), 0.0f);
             t[i] = mx * mx + my * my;
@@ -3619,7 +3625,7 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         for (i = 0; i < n; ++i) {
             float qx = t[i], qy = y[i];
             float cax = qx - fovsdf__vmin(qx, fovsdf__sel(qy < 0.0f, r1, r2)),
-                  cay = fov__absf(qy) - h;
+                  cay = fovsdf__vabs(qy) - h;
             float tt = fovsdf__vclamp(((r2 - qx) * k2x + (h - qy) * k2y) / kk, 0.0f, 1.0f);
             float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
             u[i] = fovsdf__sel((cbx < 0.0f) & (cay < 0.0f), -1.0f, 1.0f);
@@ -3643,15 +3649,15 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         for (i = 0; i < n; ++i) {
             float ax, ay, az;
             qx[i] = x[i] / s0; qy[i] = y[i] / s0; qz[i] = z[i] / s0;
-            ax = fovsdf__vmax(fov__absf(qx[i]) - 1.0f, 0.0f);
-            ay = fovsdf__vmax(fov__absf(qy[i]) - 1.0f, 0.0f);
-            az = fovsdf__vmax(fov__absf(qz[i]) - 1.0f, 0.0f);
+            ax = fovsdf__vmax(fovsdf__vabs(qx[i]) - 1.0f, 0.0f);
+            ay = fovsdf__vmax(fovsdf__vabs(qy[i]) - 1.0f, 0.0f);
+            az = fovsdf__vmax(fovsdf__vabs(qz[i]) - 1.0f, 0.0f);
             d0[i] = ax * ax + ay * ay + az * az;
         }
         fovsdf__sqrt_lanes(d0);
         for (i = 0; i < n; ++i) {
-            float ax = fov__absf(qx[i]) - 1.0f, ay = fov__absf(qy[i]) - 1.0f,
-                  az = fov__absf(qz[i]) - 1.0f;
+            float ax = fovsdf__vabs(qx[i]) - 1.0f, ay = fovsdf__vabs(qy[i]) - 1.0f,
+                  az = fovsdf__vabs(qz[i]) - 1.0f;
             d0[i] = d0[i] + fovsdf__vmin(fovsdf__vmax(ax, fovsdf__vmax(ay, az)), 0.0f);
             dm[i] = d0[i];
         }
@@ -3664,9 +3670,9 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                 vx = vx - 2.0f * fovsdf__vfloor(vx * 0.5f);
                 vy = vy - 2.0f * fovsdf__vfloor(vy * 0.5f);
                 vz = vz - 2.0f * fovsdf__vfloor(vz * 0.5f);
-                rx = fov__absf(1.0f - 3.0f * fov__absf(vx - 1.0f));
-                ry = fov__absf(1.0f - 3.0f * fov__absf(vy - 1.0f));
-                rz = fov__absf(1.0f - 3.0f * fov__absf(vz - 1.0f));
+                rx = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vx - 1.0f));
+                ry = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vy - 1.0f));
+                rz = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vz - 1.0f));
                 c = (fovsdf__vmin(fovsdf__vmax(rx, ry),
                                   fovsdf__vmin(fovsdf__vmax(ry, rz), fovsdf__vmax(rz, rx))) -
                      1.0f) / s3;
@@ -3720,10 +3726,10 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
-    float inflate = (b->inflate > 0.0f && fov__finite(b->inflate)) ? b->inflate : 1.0f;
+    float inflate = (b->inflate > 0.0f && fovsdf__vfinite(b->inflate)) ? b->inflate : 1.0f;
     int scaled = inflate < 1.0f || inflate > 1.0f, wm = b->material != 0;
     uint32_t pc = 0, cnt = prog->count, i, prims = 0, skipped = 0, lv = 0, bsp = 0;
-    uint32_t nj = 0xffffffffu; /* where the innermost pending subtree ends */
+    uint32_t nj = cnt; /* where the innermost pending subtree (or the program) ends */
     int32_t vsp = 0, psp = 0;
     {
         float *FOVSDF__RESTRICT E4 = s->e4;
@@ -3752,11 +3758,15 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
     s->nact[0] = nb;
     for (;;) {
         const fovsdf__ins *in;
-        /* subtrees that ended: the lanes that skipped them take the bound's value */
-        while (pc == nj) {
-            float *FOVSDF__RESTRICT V = s->vs[s->bslot[bsp - 1]];
-            const float *FOVSDF__RESTRICT BV = s->bv[bsp - 1];
-            const int32_t *FOVSDF__RESTRICT BM = s->bm[bsp - 1];
+        /* a subtree that ended: the lanes that skipped it take the bound's value */
+        if (pc == nj) {
+            float *FOVSDF__RESTRICT V;
+            const float *FOVSDF__RESTRICT BV;
+            const int32_t *FOVSDF__RESTRICT BM;
+            if (bsp == 0) break; /* the program's end */
+            V = s->vs[s->bslot[bsp - 1]];
+            BV = s->bv[bsp - 1];
+            BM = s->bm[bsp - 1];
             for (i = 0; i < n; ++i) V[i] = fovsdf__sel(BM[i], BV[i], V[i]);
             if (wm) {
                 int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
@@ -3764,9 +3774,9 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             }
             --bsp;
             --lv;
-            nj = bsp > 0 ? s->bj[bsp - 1] : 0xffffffffu;
+            nj = bsp > 0 ? s->bj[bsp - 1] : cnt;
+            continue;
         }
-        if (pc >= cnt) break;
         in = &code[pc];
         switch (in->op) {
         case FOVSDF__OP_PRIM: {
@@ -3843,7 +3853,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
         case FOVSDF__OP_UNARY: {
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
             if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
-            else for (i = 0; i < n; ++i) V[i] = fov__absf(V[i]) - r;
+            else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
             ++pc;
             break;
         }
@@ -3911,7 +3921,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
                     if (in->i[0] & (1 << k)) {
                         const float *FOVSDF__RESTRICT P = s->pp[psp - 1][k];
                         float *FOVSDF__RESTRICT Q = s->ps[psp][k];
-                        for (i = 0; i < n; ++i) Q[i] = fov__absf(P[i]);
+                        for (i = 0; i < n; ++i) Q[i] = fovsdf__vabs(P[i]);
                         O[k] = Q;
                     }
                 break;
@@ -4066,7 +4076,7 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
 /* n <= FOVSDF_BATCH counted evaluations at (x, y, z)[i] with thresholds eps[i] (as
    fovsdf__eval_in for each point: the same values, materials and counts), through the batch
    callback when the scene has one, else point by point. mat may be NULL. */
-FOVSDF__PRIV FOVSDF__VEC void
+FOVSDF__PRIV void
 fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n, const float *x,
                    const float *y, const float *z, const float *eps, float inflate,
                    const fovsdf_ray_cone *cone, float *d, int32_t *mat, fovsdf_stats *st)
@@ -4090,7 +4100,7 @@ fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n, const floa
         if (!own || inv_lip < 1.0f || inv_lip > 1.0f) {
             for (i = 0; i < n; ++i) {
                 float v = d[i] * inv_lip;
-                d[i] = fovsdf__sel(fovsdf__vfinite(v), v, FLT_MAX);
+                d[i] = fov__finite(v) ? v : FLT_MAX;
             }
         }
         return;
