@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.4.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.5.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -160,7 +160,15 @@ CONFIGURATION (define before including the implementation)
    FOVSDF_MAX_STEPS     hard cap on march steps per ray               (default 65536)
    FOVSDF_MAX_DIM       hard cap on image width and height            (default 65536)
    FOVSDF_MAX_STACK     value stack depth of the scene program        (default 32)
-   FOVSDF_BATCH         points per batch callback, lanes of the batch evaluator (default 32)
+   FOVSDF_BATCH         points per batch callback and lanes of the batch evaluator
+                        (default 32 on 64-bit CPUs, 16 elsewhere; 1: point by point)
+   FOVSDF_WAVE          sample rays in flight per render call (default 128 on 64-bit CPUs,
+                        32 elsewhere; at least config.spp)
+   FOVSDF_SHADOW_GROUP  shadow rays per shadow proof (default 16; 0: no proofs)
+   FOVSDF_NO_SIMD       no intrinsics (the batch evaluator's square root); the loops stay
+                        plain C either way (what the compiler vectorises; FOVSDF_SIMD_NAME
+                        names the instruction set the build targets: "avx2", "sse2", "neon",
+                        "simd128" or "scalar")
    FOVSDF_DOUBLE        also compile the double-precision reference tracer (hosted builds;
                         it references software-double routines on a single-precision FPU)
    Shared by the three headers (listed in the shared declarations block below):
@@ -176,7 +184,10 @@ MEMORY
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
    CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB). Lower the two macros for small
-   stacks (configs that need more are then FOV_ERR_LIMIT).
+   stacks (configs that need more are then FOV_ERR_LIMIT). The wavefront adds about
+   FOVSDF_WAVE * 0.6 KiB (77 KiB at 128, 19 KiB at 32) and the batch evaluator about
+   FOVSDF_BATCH * 1.4 KiB (45 KiB at 32; nothing at 1); tests/xtarget/mem_test.c renders
+   Primitives on a Cortex-M4 with FOVSDF_WAVE 4 and FOVSDF_BATCH 1 in 5.4 KiB of stack.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code.
@@ -225,7 +236,30 @@ THREADING
    (fovsdf_stats_init, then fovsdf_stats_add them up).
    The head-start methods work on grid-aligned tiles: split the rows at multiples of
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
-   image is the same either way).
+   image is the same either way). Threads stay with you (examples/fovrun.h runs bands of rows
+   on pthreads): give each worker whole bands of band_rows rows (or more) across the full
+   width, handed out from a shared counter; one call's pixels form the wavefront, so calls of
+   at least FOVSDF_WAVE / spp pixels keep the batches full (a call of one pixel works, with
+   batches of its own samples only).
+
+BATCHED EVALUATION
+   Every tracer, normal and shadow ray of a render call evaluates the scene in batches of up
+   to FOVSDF_BATCH points (structure of arrays, fovsdf_batch): through scene.dist_batch when
+   it is set, else point by point through dist_ex / dist (the library batches around them).
+   A batch callback must give each point what the per-point callback would (the library uses
+   either: fovsdf_distance and fovsdf_shade_point go point by point); its values are taken as
+   they are (NaN, infinite or unwritten: FLT_MAX, a miss). Built-in programs have both
+   (fovsdf_scene_set_program). Each ray runs the same state machine either way, so images do
+   not depend on the batch size, on FOVSDF_WAVE, on the split into rows and tiles, or on
+   which callback form evaluated them (tests/test_fovsdf_wave.c, tests/wave_variants.sh).
+   Shadow proofs: for a group of up to FOVSDF_SHADOW_GROUP shadow rays of one light, one
+   march along a tube (parallel rays) or a cone (rays converging on a point light) that
+   contains them proves k h / t >= 1 (no attenuation) for all samples beyond a split; the rays
+   stop there and keep the same light fraction (Algorithm 2 takes a minimum). It needs a
+   distance that never overestimates (Lipschitz 1 after scene.lipschitz, as every head start
+   here does); for the built-in programs the proof's own evaluations use a threshold lowered
+   so that their bounding spheres are skipped wherever a ray point's could be. Which rays form
+   a group depends on the call, so per-pixel evaluation counts do (the image does not).
 
 NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establish it)
    - The library computes in float only (no double anywhere unless FOVSDF_DOUBLE).
@@ -358,6 +392,15 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.5.0 (2026-12-02) wavefront rendering: a render call's pixels march, get their normals and
+                      their shadow rays as batches (FOVSDF_WAVE rays in flight); a batch
+                      distance interface (fovsdf_batch, scene.dist_batch, fovsdf_ray_cone,
+                      fovsdf_distance_batch) with a vectorised evaluator for built-in programs
+                      (fovsdf_program_eval_batch, the same value as fovsdf_program_eval for every
+                      point); fovsdf_shade_points (n points at once, for fovlp.h); shadow
+                      proofs for groups of shadow rays skip the samples that cannot change a
+                      light fraction. Images are unchanged (bit for bit); per-pixel evaluation
+                      counts drop. config.spp above FOVSDF_WAVE is FOV_ERR_LIMIT.
    0.4.0 (2026-12-02) one block shared with fovlp.h and fovpt.h (tools/fov_shared.h, marked
                       regions; private names fov__); error messages on by default,
                       a specific one per failure (FOV_DEBUG no longer needed; msg "" under
@@ -407,9 +450,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 4
+#define FOVSDF_VERSION_MINOR 5
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.4.0"
+#define FOVSDF_VERSION_STRING "0.5.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
@@ -1122,6 +1165,15 @@ FOVSDF_API fov_result fovsdf_trace(const fovsdf_ctx *ctx, const float ro[3], con
    hit distance (t_max for a miss), material the hit's id (-1 for a miss); both may be NULL. */
 FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *ctx, float px, float py, float rgb[3],
                                          float *t, int32_t *material, fovsdf_stats *stats);
+/* n samples at once, each exactly fovsdf_shade_point's (bit for bit), marched and shaded as one
+   wavefront: the positions another header hands out (fovlp_samples: its fovlp_sample array is
+   x, y, slot, so pass &samples[0].x with stride 3). Point i is (xy[i stride], xy[i stride + 1])
+   (stride in floats; 0: 2); rgb gets 3 floats per point, t and material (both may be NULL) one
+   each. Every point is checked before any work (NaN: FOV_ERR_NOT_FINITE; a ray that overflows:
+   FOV_ERR_INVALID_ARG). */
+FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *ctx, uint32_t n, const float *xy,
+                                          uint32_t stride, float *rgb, float *t,
+                                          int32_t *material, fovsdf_stats *stats);
 /* March one ray through a scene without a context, with explicit parameters (a ray tracer:
    classic, relaxed, autorelaxed or bv2018; per-image methods such as CONE are rejected). */
 FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march_params *params,
@@ -1821,6 +1873,15 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #else
 #define FOVSDF__VEC
 #endif
+/* the tile functions keep their own frames (inlined into fovsdf_render_tile, FIPR's 13 KiB of
+   cells would be on every method's stack) */
+#if defined(__GNUC__) || defined(__clang__)
+#define FOVSDF__NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define FOVSDF__NOINLINE __declspec(noinline)
+#else
+#define FOVSDF__NOINLINE
+#endif
 #if defined(__cplusplus) || defined(_MSC_VER)
 #define FOVSDF__RESTRICT __restrict
 #else
@@ -1837,8 +1898,32 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #ifndef FOVSDF_MAX_STACK
 #define FOVSDF_MAX_STACK 32
 #endif
-#ifndef FOVSDF_BATCH /* points per batch callback and lanes of the batch evaluator */
+/* Points per batch callback and lanes of the batch evaluator; and rays in flight per render
+   call (the wavefront). Both only set speed and stack (see MEMORY), never a value: 32 and 128
+   on 64-bit CPUs, 16 and 32 elsewhere (wasm32, 32-bit ARM); FOVSDF_BATCH 1 evaluates a built-in
+   program point by point (the least stack). */
+#if defined(__x86_64__) || defined(_M_X64) || defined(__aarch64__) || defined(_M_ARM64)
+#define FOVSDF__BIG_STACK 1
+#endif
+#ifndef FOVSDF_BATCH
+#ifdef FOVSDF__BIG_STACK
 #define FOVSDF_BATCH 32
+#else
+#define FOVSDF_BATCH 16
+#endif
+#endif
+#if FOVSDF_BATCH < 1
+#error "fovsdf: FOVSDF_BATCH must be at least 1"
+#endif
+#ifndef FOVSDF_WAVE
+#ifdef FOVSDF__BIG_STACK
+#define FOVSDF_WAVE 128
+#else
+#define FOVSDF_WAVE 32
+#endif
+#endif
+#if FOVSDF_WAVE < 1
+#error "fovsdf: FOVSDF_WAVE must be at least 1 (and at least config.spp)"
 #endif
 /* The batch evaluator's loops are plain C over FOVSDF__L lanes (FOVSDF_BATCH rounded up to a
    multiple of 8), which compilers vectorise; the one hand-written part is the square root
@@ -2006,6 +2091,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.spp == 0) c.spp = 1;
     if (c.spp != 1 && c.spp != 4 && c.spp != 16)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.spp must be 1, 4 or 16 (0: 1)");
+    if (c.spp > FOVSDF_WAVE)
+        FOVSDF__FAIL(lg, FOV_ERR_LIMIT, "config.spp above FOVSDF_WAVE (rays in flight)");
     if (c.eps_mode >= (uint32_t)_FOVSDF_EPS_NUM)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.eps_mode: unknown (see fovsdf_eps_mode)");
     r = fov__fields_check(lg, "fovsdf", "config.", &c, fl, 9u, 1, (uint32_t)__LINE__);
@@ -3358,7 +3445,9 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             const float *f = in->f;
             float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
                 d2 = dx * dx + dy * dy + dz * dz;
-            float lim = 1.25f * f[3] + f[4] + 4.0f * eps; /* margin r/4 + band + 4 eps */
+            /* margin r/4 + band + 4 eps (a negative eps, from the shadow proofs, shrinks it to
+               at most 0: the bound's value wherever the point is off its centre) */
+            float lim = fov__maxf(1.25f * f[3] + f[4] + 4.0f * eps, 0.0f);
             /* With inflation each primitive grows about its own origin, which a bound of the
                exact scene does not cover: evaluate everything then. */
             if (!(inflate < 1.0f || inflate > 1.0f) && d2 > lim * lim) {
@@ -3390,6 +3479,7 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
    says "skip" takes the bound's value; the subtree runs when at least one active lane needs
    it, and at its end the skipping lanes get the bound's value back (a pending record); lanes
    that an outer record already decided are inactive and do not count. */
+#define FOVSDF__BREC 16 /* pending bounds at once; a batch that needs more goes point by point */
 typedef struct fovsdf__bscr {
     float vs[FOVSDF_MAX_STACK][FOVSDF__L];
     int32_t ms[FOVSDF_MAX_STACK][FOVSDF__L];
@@ -3400,10 +3490,10 @@ typedef struct fovsdf__bscr {
     const float *pp[FOVSDF_MAX_STACK + 1][3];
     float q[3][FOVSDF__L], w[5][FOVSDF__L]; /* scaled points, primitive scratch */
     float e4[FOVSDF__L];                         /* 4 eps per lane (the bound's margin) */
-    float bv[FOVSDF__MAX_DEPTH][FOVSDF__L];       /* pending bounds: the bound's value */
-    int32_t bm[FOVSDF__MAX_DEPTH][FOVSDF__L];     /* 1: the lane takes it */
-    int32_t act[FOVSDF__MAX_DEPTH + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
-    uint32_t bj[FOVSDF__MAX_DEPTH], bslot[FOVSDF__MAX_DEPTH], nact[FOVSDF__MAX_DEPTH + 1];
+    float bv[FOVSDF__BREC][FOVSDF__L];       /* pending bounds: the bound's value */
+    int32_t bm[FOVSDF__BREC][FOVSDF__L];     /* 1: the lane takes it */
+    int32_t act[FOVSDF__BREC + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
+    uint32_t bj[FOVSDF__BREC], bslot[FOVSDF__BREC], nact[FOVSDF__BREC + 1];
 } fovsdf__bscr;
 
 /* Branch-free selects for the lane loops; the same values as the ternaries, NaN and signed
@@ -3721,8 +3811,8 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
    lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
    them at -O2); lanes past nb repeat the last point and are inactive. Materials are tracked
    only when b->material asks for them. */
-FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
-                                                 uint32_t k0, uint32_t nb, fovsdf__bscr *s)
+FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
+                                                uint32_t k0, uint32_t nb, fovsdf__bscr *s)
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
@@ -3949,7 +4039,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             for (i = 0; i < n; ++i) {
                 float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz,
                       d2 = dx * dx + dy * dy + dz * dz;
-                float lim = lim0 + E4[i];
+                float lim = fovsdf__vmax(lim0 + E4[i], 0.0f);
                 int32_t sk = (d2 > lim * lim) & ACT[i];
                 T[i] = d2;
                 BM[i] = sk;
@@ -3969,7 +4059,7 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
                 pc = in->jump;
                 break;
             }
-            FOV_ASSERT(bsp < FOVSDF__MAX_DEPTH);
+            if (bsp >= FOVSDF__BREC) return 0; /* too deep: the caller goes point by point */
             {
                 float *FOVSDF__RESTRICT BV = s->bv[bsp], r = f[3];
                 int32_t *FOVSDF__RESTRICT A2 = s->act[lv + 1];
@@ -4011,21 +4101,47 @@ FOVSDF__PRIV FOVSDF__VEC void fovsdf__eval_lanes(const fovsdf_program *prog, fov
             else for (i = 0; i < nb; ++i) M[i] = -1;
         }
     }
+    return 1;
+}
+
+/* Points k0 .. k0 + n of b through fovsdf_program_eval, one by one. */
+FOVSDF__PRIV void fovsdf__eval_points(const fovsdf_program *prog, fovsdf_batch *b, uint32_t k0,
+                                      uint32_t n)
+{
+    uint32_t i;
+    for (i = k0; i < k0 + n; ++i) {
+        fovsdf_query q;
+        float p[3];
+        q.inflate = b->inflate; q.eps = b->eps ? b->eps[i] : 0.0f; q.want_material = 1;
+        q.material = 0; q.prims = 0; q.prims_skipped = 0;
+        p[0] = b->x[i]; p[1] = b->y[i]; p[2] = b->z[i];
+        b->d[i] = fovsdf_program_eval(p, &q, (void *)(uintptr_t)prog);
+        if (b->material) b->material[i] = q.material;
+        b->prims += q.prims; b->prims_skipped += q.prims_skipped;
+    }
 }
 #undef FOVSDF__BLEND
 
 FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 {
     const fovsdf_program *prog = (const fovsdf_program *)user;
-    fovsdf__bscr s;
     uint32_t k;
     if (!b || !b->x || !b->y || !b->z || !b->d) return;
     if (!prog || !prog->code || prog->count == 0) {
         for (k = 0; k < b->n; ++k) b->d[k] = FLT_MAX;
         return;
     }
-    for (k = 0; k < b->n; k += FOVSDF__L)
-        fovsdf__eval_lanes(prog, b, k, b->n - k < FOVSDF__L ? b->n - k : FOVSDF__L, &s);
+#if FOVSDF_BATCH == 1
+    fovsdf__eval_points(prog, b, 0, b->n); /* the least stack */
+#else
+    {
+        fovsdf__bscr s;
+        for (k = 0; k < b->n; k += FOVSDF__L) {
+            uint32_t n = b->n - k < FOVSDF__L ? b->n - k : FOVSDF__L;
+            if (!fovsdf__eval_lanes(prog, b, k, n, &s)) fovsdf__eval_points(prog, b, k, n);
+        }
+    }
+#endif
 }
 
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
@@ -4704,7 +4820,8 @@ FOVSDF_API void fovsdf_normal(const fovsdf_ctx *c, const float p[3], float h, fl
    the scene at p + t l, and ends with res (the light fraction) and t_att, where the penumbra
    began (the first t with k h / t < 1; t when the light was never attenuated). */
 typedef struct fovsdf__sco {
-    float p[3], l[3], t, t_end, k, res, floor0, t_att;
+    float p[3], l[3], t, t_end, t_stop, k, res, floor0, t_att; /* t_stop <= t_end: see the
+                                                                 wavefront's shadow proof */
     uint32_t i, evals;
 } fovsdf__sco;
 
@@ -4715,12 +4832,13 @@ FOVSDF__PRIV int fovsdf__sco_init(const fovsdf_ctx *c, fovsdf__sco *s, const flo
 {
     s->p[0] = p[0]; s->p[1] = p[1]; s->p[2] = p[2];
     s->l[0] = l[0]; s->l[1] = l[1]; s->l[2] = l[2];
-    s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->k = k; s->t_att = -1.0f;
+    s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->t_stop = t_end; s->k = k;
+    s->t_att = -1.0f;
     s->i = 0; s->evals = 0;
     if (!(s->t > 0.0f)) s->t = 1e-6f;
     s->floor0 = 8.0f * FLT_EPSILON * fov__len(p);
     st->shadow_rays++;
-    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_stop;
 }
 /* Feeds the distance h at p + t l; returns 1 when the ray needs another one. */
 FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
@@ -4731,7 +4849,7 @@ FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
     if (s->res < c->cfg.shadow_eps) { s->res = 0.0f; return 0; }
     s->t += fov__maxf(h, s->floor0 + 8.0f * FLT_EPSILON * s->t);
     ++s->i;
-    return s->i < c->cfg.shadow_steps && s->t < s->t_end;
+    return s->i < c->cfg.shadow_steps && s->t < s->t_stop;
 }
 
 /* Algorithm 2 core, point by point, on the scene scaled by inflate (Skipping Spheres'
@@ -5302,15 +5420,10 @@ FOVSDF__PRIV void fovsdf__sample(const fovsdf_ctx *c, const fovsdf__marcher *m0,
    way. Each ray runs the same coroutine as a single march and every value is exactly the
    per-point one, so images and counts do not depend on FOVSDF_WAVE, FOVSDF_BATCH or the
    caller's split into rows and tiles. Stack: about FOVSDF_WAVE * 0.4 KiB (50 KiB at 128). */
-#ifndef FOVSDF_WAVE
-#define FOVSDF_WAVE 128
-#endif
-#if FOVSDF_WAVE < 16
-#error "fovsdf: FOVSDF_WAVE must be at least 16 (one pixel's 16 samples)"
-#endif
 
 typedef struct fovsdf__wjob {
-    uint32_t x, y;
+    uint32_t x, y;             /* the pixel; for fovsdf_shade_points: the point's index */
+    float px, py;              /* fovsdf_shade_points: the image point */
     float t_start, sh_ref_t, sh_tol;
     int known_miss, has_sh;
     float sh[FOVSDF_MAX_LIGHTS];
@@ -5323,16 +5436,43 @@ typedef struct fovsdf__wray {
     int hit, lit, prep, shadow;     /* lit: Lambert with lights; prep, shadow: the current light */
 } fovsdf__wray;
 
+/* The shadow proof of a group of shadow rays (fovsdf__wave_flush, step 4): rays q_i + t l_i,
+   t in [t0_i, dist_i], all within R + th t of the axis point c + t a (R: the origins' spread
+   around c; th: max |l_i - a|, 0 for a directional light). Lipschitz 1 along the axis: if
+   F = f(c + s a), every ray point with t in [s, s + d] has f >= F - d - R - th (s + d), so
+   k f >= t there while d <= (k (F - R - th s) - s) / (k (1 + th) + 1). The axis march extends
+   a run of such steps; a step that fails starts the run again further on. A run that reaches
+   T = max dist_i proves that from its start (split) on every sample of every ray has
+   k h / t >= 1: Algorithm 2's minimum cannot drop there, so each ray marches only up to
+   split and its light fraction is the same value, without the far samples. A point light:
+   the rays converge on it, so the march runs over the fraction u of the way from c to the
+   light at distance D instead: ray i is at (1 - u) q_i + u L, within (1 - u) R of the axis
+   point c + u D a, at t = u dist_i <= u T, and a step d in u is safe while
+   d <= (k (F - (1 - u) R) - u T) / (k D + T); the split is u * dist_i per ray. */
+typedef struct fovsdf__gco {
+    float c[3], a[3], R, th, T, k, s, start, eps, split, mg, D; /* D > 0: point light at c + D a,
+                                                                   s is the fraction u */
+    uint32_t evals, n0, n;          /* axis evaluations; members gm[n0 .. n0 + n) */
+    int done;
+} fovsdf__gco;
+#ifndef FOVSDF_SHADOW_GROUP /* shadow rays per proof (0: no proofs) */
+#define FOVSDF_SHADOW_GROUP 16
+#endif
+
 typedef struct fovsdf__wave {
     const fovsdf_ctx *c;
     const fovsdf__marcher *m;
     const fovsdf_output *o;
     fovsdf_stats *st;
-    uint32_t nj, cap;
+    uint32_t nj, cap, spp;
+    float *prgb, *pt;          /* fovsdf_shade_points: the outputs (points mode when prgb) */
+    int32_t *pmat;
     fovsdf__wjob job[FOVSDF_WAVE];
     fovsdf__wray ray[FOVSDF_WAVE];
     fovsdf__sco sco[FOVSDF_WAVE];
     uint32_t q[FOVSDF_WAVE];        /* ring of rays waiting for an evaluation */
+    fovsdf__gco grp[FOVSDF_WAVE];   /* shadow proofs of groups of rays (one per ray at most) */
+    uint32_t gm[FOVSDF_WAVE];       /* the rays of each group, group after group */
     float bx[FOVSDF__L + 4], by[FOVSDF__L + 4], bz[FOVSDF__L + 4], be[FOVSDF__L + 4],
         bd[FOVSDF__L + 4];
     int32_t bm[FOVSDF__L + 4];
@@ -5343,7 +5483,9 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
                                     fovsdf_stats *st)
 {
     w->c = c; w->m = 0; w->o = o; w->st = st; w->nj = 0;
+    w->spp = c->cfg.spp;
     w->cap = FOVSDF_WAVE / c->cfg.spp;
+    w->prgb = 0; w->pt = 0; w->pmat = 0;
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
@@ -5399,6 +5541,130 @@ FOVSDF__PRIV void fovsdf__wave_shadows(fovsdf__wave *w, uint32_t cnt)
     }
 }
 
+/* Consumes the axis distance F at c + s a; 1 while the proof needs another evaluation. */
+FOVSDF__PRIV int fovsdf__gco_next(fovsdf__gco *g, float F)
+{
+    float kk = g->k * (1.0f / 1.001f); /* 0.1 % margin on k h / t >= 1 against rounding */
+    float room, d, end = g->D > 0.0f ? 1.0f : g->T;
+    ++g->evals;
+    if (g->D > 0.0f) {
+        room = F - g->mg - (1.0f - g->s) * g->R;
+        d = (kk * room - g->s * g->T) / (kk * g->D + g->T);
+    } else {
+        room = F - g->mg - g->R - g->th * g->s;
+        d = (kk * room - g->s) / (kk * (1.0f + g->th) + 1.0f);
+    }
+    if (d > 1e-3f * g->s + 1e-6f && fov__finite(d)) {
+        g->s += d;
+    } else { /* not provable here: a new run starts further on */
+        float adv = g->D > 0.0f ? fov__maxf(room, 0.0f) / g->D
+                                : fov__maxf(room, 0.0f) / (1.0f + g->th);
+        g->s = fov__maxf(g->s + adv, 2.0f * g->s + (g->D > 0.0f ? 1e-3f / g->D : 1e-3f));
+        g->start = g->s;
+    }
+    if (g->s >= end) { g->split = g->start; g->done = 1; return 0; }
+    if (g->evals >= 16u || !fov__finite(g->s)) { g->split = FLT_MAX; g->done = 1; return 0; }
+    return 1;
+}
+
+/* Shadow proofs for the shadow rays w->gm[0 .. nm) of light li, in groups of
+   FOVSDF_SHADOW_GROUP consecutive rays; lowers each ray's t_stop to its group's split. */
+FOVSDF__PRIV void fovsdf__wave_proofs(fovsdf__wave *w, uint32_t li, uint32_t nm)
+{
+    const fovsdf_ctx *c = w->c;
+    const fovsdf_light *L = &c->scene.lights[li];
+    float inv = 1.0f / c->scene.lipschitz;
+    int program = c->scene.dist_batch == fovsdf_program_eval_batch ||
+                  (!c->scene.dist_batch && c->scene.dist_ex == fovsdf_program_eval);
+    uint32_t ng = 0, g, i, j, nb, pend;
+#if FOVSDF_SHADOW_GROUP < 2
+    (void)L; (void)inv; (void)program; (void)ng; (void)g; (void)i; (void)j; (void)nb; (void)pend;
+    (void)nm;
+    return;
+#else
+    if (nm < FOVSDF_SHADOW_GROUP / 2u) return; /* small groups cost more than they save */
+    for (g = 0; g * FOVSDF_SHADOW_GROUP < nm; ++g) {
+        fovsdf__gco *G = &w->grp[ng];
+        float lo[3], hi[3], r2 = 0.0f, off = 0.0f, s0 = FLT_MAX;
+        G->n0 = g * FOVSDF_SHADOW_GROUP;
+        G->n = nm - G->n0 < FOVSDF_SHADOW_GROUP ? nm - G->n0 : FOVSDF_SHADOW_GROUP;
+        if (G->n < FOVSDF_SHADOW_GROUP / 2u) continue;
+        G->T = 0.0f; G->k = w->sco[w->gm[G->n0]].k;
+        for (j = 0; j < 3; ++j) lo[j] = hi[j] = w->sco[w->gm[G->n0]].p[j];
+        for (i = 0; i < G->n; ++i) {
+            const fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+            for (j = 0; j < 3; ++j) {
+                lo[j] = fov__minf(lo[j], sc->p[j]); hi[j] = fov__maxf(hi[j], sc->p[j]);
+            }
+            G->T = fov__maxf(G->T, sc->t_end);
+            s0 = fov__minf(s0, sc->t);
+        }
+        for (j = 0; j < 3; ++j) G->c[j] = 0.5f * (lo[j] + hi[j]);
+        G->D = 0.0f;
+        if (L->type == FOVSDF_LIGHT_POINT) {
+            for (j = 0; j < 3; ++j) G->a[j] = L->v[j] - G->c[j];
+            G->D = fovsdf__normalize(G->a);
+            if (!(G->D > 0.0f)) continue;
+        } else {
+            for (j = 0; j < 3; ++j) G->a[j] = w->sco[w->gm[G->n0]].l[j];
+        }
+        for (i = 0; i < G->n; ++i) {
+            const fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+            float d[3];
+            for (j = 0; j < 3; ++j) d[j] = sc->p[j] - G->c[j];
+            r2 = fov__maxf(r2, fov__dot(d, d));
+            off = fov__maxf(off, w->ray[w->gm[G->n0 + i]].off);
+        }
+        /* widened by a few ulps of the sums (and of the positions: mg) */
+        G->R = FOV__SQRT(r2) * 1.0001f + 1e-6f;
+        G->th = 0.0f; /* a directional light: parallel rays; a point light: the fraction form */
+        /* a point light's ray leaves q = p + off n towards L from p: off more from the axis */
+        G->mg = 16.0f * FLT_EPSILON * (fov__len(G->c) + G->T) + 1e-6f + (G->D > 0.0f ? off : 0.0f);
+        /* the built-in program decides its bounds with the threshold: for the axis point, a
+           threshold lowered by the largest ray-axis distance / 4 makes it skip a bound
+           whenever any ray point could (so its value is never above theirs minus the
+           distance); other callbacks are taken as Lipschitz 1 as they are */
+        G->eps = program ? c->cfg.eps - 0.25f * (G->R + G->mg) : c->cfg.eps;
+        G->s = fov__maxf(s0, 2.0f * G->R);
+        if (G->D > 0.0f) G->s = fov__minf(G->s / G->T, 1.0f); /* as a fraction (t <= u T) */
+        G->start = G->s;
+        G->evals = 0; G->done = 0; G->split = FLT_MAX;
+        /* a group spread over more than a tenth of its range proves nothing worth the cost */
+        if (!fov__finite(G->R) || !fov__finite(G->T) || !(G->R < 0.1f * G->T) ||
+            !(G->s < (G->D > 0.0f ? 1.0f : G->T)))
+            continue;
+        ++ng;
+    }
+    /* the axis marches as one wavefront */
+    for (pend = ng; pend > 0;) {
+        uint32_t idx[FOVSDF_BATCH];
+        for (g = 0, nb = 0; g < ng && nb < FOVSDF_BATCH; ++g) {
+            const fovsdf__gco *G = &w->grp[g];
+            if (G->done) continue;
+            float sa = G->D > 0.0f ? G->s * G->D : G->s;
+            w->bx[nb] = G->c[0] + G->a[0] * sa; w->by[nb] = G->c[1] + G->a[1] * sa;
+            w->bz[nb] = G->c[2] + G->a[2] * sa; w->be[nb] = G->eps;
+            idx[nb++] = g;
+        }
+        if (nb == 0) break;
+        fovsdf__eval_batch(&c->scene, inv, nb, w->bx, w->by, w->bz, w->be, 1.0f, 0, w->bd, 0,
+                           w->st);
+        for (i = 0; i < nb; ++i)
+            if (!fovsdf__gco_next(&w->grp[idx[i]], w->bd[i])) --pend;
+    }
+    for (g = 0; g < ng; ++g) {
+        const fovsdf__gco *G = &w->grp[g];
+        w->st->evals_shadow += G->evals;
+        w->ray[w->gm[G->n0]].sev += G->evals; /* the group's first ray carries its cost */
+        if (G->split < FLT_MAX)
+            for (i = 0; i < G->n; ++i) {
+                fovsdf__sco *sc = &w->sco[w->gm[G->n0 + i]];
+                sc->t_stop = fov__minf(sc->t_end, G->D > 0.0f ? G->split * sc->t_end : G->split);
+            }
+    }
+#endif
+}
+
 /* Normals of the rays k with ray[k].lit or NORMALS shading: 4 points each, in batches. */
 FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float *hn)
 {
@@ -5435,7 +5701,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
     const fovsdf_ctx *c = w->c;
     const fovsdf__marcher *m = w->m;
     fovsdf_stats *st = w->st;
-    uint32_t spp = c->cfg.spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
+    uint32_t spp = w->spp, nr = w->nj * spp, k, j, s, cnt = 0, li;
     float hn[FOVSDF_WAVE];
     int shading = c->cfg.shading == FOVSDF_SHADE_FULL || c->cfg.shading == FOVSDF_SHADE_NO_SHADOWS;
     if (w->nj == 0) return;
@@ -5444,8 +5710,12 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
         const fovsdf__wjob *jb = &w->job[k / spp];
         fovsdf__mco *mc = &w->ray[k].mc;
         float ox, oy, ro[3], rd[3];
-        fovsdf__sample_offset(spp, k % spp, &ox, &oy);
-        fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        if (w->prgb) {
+            fovsdf__ray(c, jb->px, jb->py, ro, rd);
+        } else {
+            fovsdf__sample_offset(spp, k % spp, &ox, &oy);
+            fovsdf__ray(c, (float)jb->x + 0.5f + ox, (float)jb->y + 0.5f + oy, ro, rd);
+        }
         fovsdf__mco_init(m, mc, ro, rd, jb->t_start);
         if (jb->known_miss) { /* a conservative pass proved this ray empty up to t_max */
             mc->kind = FOVSDF_MISS; mc->d = 0.0f; mc->steps = 0; mc->pc = 9999u;
@@ -5525,9 +5795,14 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
                 continue;
             r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
             if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k, st))
-                w->q[cnt++] = k;
+                w->gm[cnt++] = k;
         }
-        fovsdf__wave_shadows(w, cnt);
+        fovsdf__wave_proofs(w, li, cnt);
+        for (k = 0, j = 0; k < cnt; ++k) { /* the rays with samples left before their split */
+            const fovsdf__sco *sc = &w->sco[w->gm[k]];
+            if (sc->t < sc->t_stop) w->q[j++] = w->gm[k];
+        }
+        fovsdf__wave_shadows(w, j);
         for (k = 0; k < nr; ++k) {
             fovsdf__wray *r = &w->ray[k];
             float sh = 1.0f;
@@ -5560,6 +5835,15 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
                 uint32_t ne = r->mc.evals + r->sev;
                 fovsdf__heat((float)(ne > 0xffffffu ? 0xffffffu : ne), r->col);
             }
+            if (w->prgb) { /* as fovsdf_shade_point */
+                float *o3 = w->prgb + 3u * (size_t)jb->x;
+                o3[0] = fovsdf__clampf(r->col[0], 0.0f, FOVSDF__RGB_MAX);
+                o3[1] = fovsdf__clampf(r->col[1], 0.0f, FOVSDF__RGB_MAX);
+                o3[2] = fovsdf__clampf(r->col[2], 0.0f, FOVSDF__RGB_MAX);
+                if (w->pt) w->pt[jb->x] = r->hit ? r->mc.t : c->t_max;
+                if (w->pmat) w->pmat[jb->x] = r->hit ? r->mc.mat : -1;
+                continue;
+            }
             nsteps += r->mc.steps;
             ev += r->mc.evals + r->sev;
             if (r->hit) {
@@ -5568,6 +5852,7 @@ FOVSDF__PRIV void fovsdf__wave_flush(fovsdf__wave *w)
             }
             acc[0] += r->col[0]; acc[1] += r->col[1]; acc[2] += r->col[2];
         }
+        if (w->prgb) continue;
         acc[0] /= (float)spp; acc[1] /= (float)spp; acc[2] /= (float)spp;
         fovsdf__put(c, w->o, jb->x, jb->y, acc, tnear, (uint8_t)(2u * nhit >= spp ? 1u : 0u), ev,
                     jb->known_miss ? c->t_max : jb->t_start, nsteps, mnear, 1u);
@@ -5616,6 +5901,48 @@ FOVSDF_API fov_result fovsdf_shade_point(const fovsdf_ctx *c, float px, float py
     rgb[2] = fovsdf__clampf(r.col[2], 0.0f, FOVSDF__RGB_MAX);
     if (t) *t = r.hit ? r.t : c->t_max;
     if (material) *material = r.mat;
+    if (stats) fovsdf_stats_add(stats, &local);
+    return FOV_OK;
+}
+
+FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *c, uint32_t n, const float *xy,
+                                          uint32_t stride, float *rgb, float *t,
+                                          int32_t *material, fovsdf_stats *stats)
+{
+    fovsdf__marcher m;
+    fovsdf__wave wv;
+    fovsdf_stats local;
+    uint32_t i;
+    if (!c) return FOV_ERR_NULL;
+    if (n == 0) return FOV_OK;
+    if (!xy || !rgb) FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NULL, "shade_points: xy or rgb is NULL");
+    if (stride == 0) stride = 2;
+    if (stride < 2)
+        FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG, "shade_points: stride must be 0 or >= 2");
+    for (i = 0; i < n; ++i) { /* every point is checked before any work */
+        float ro[3], rd[3], px = xy[(size_t)i * stride], py = xy[(size_t)i * stride + 1u];
+        if (!fov__finite(px) || !fov__finite(py))
+            FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_NOT_FINITE,
+                         "shade_points: a point's x or y is NaN or infinite");
+        if (!fovsdf__ray(c, px, py, ro, rd))
+            FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
+                         "shade_points: a point so far off the image that its ray overflows");
+    }
+    FOV_MEMSET(&local, 0, sizeof local);
+    fovsdf__marcher_from_ctx(c, &m, c->origin);
+    m.verify_start = 0; /* from the camera */
+    fovsdf__wave_init(&wv, c, 0, &local);
+    wv.spp = 1; wv.cap = FOVSDF_WAVE; wv.prgb = rgb; wv.pt = t; wv.pmat = material;
+    for (i = 0; i < n; ++i) {
+        fovsdf__wjob *jb = &wv.job[wv.nj];
+        wv.m = &m;
+        jb->x = i; jb->y = 0;
+        jb->px = xy[(size_t)i * stride]; jb->py = xy[(size_t)i * stride + 1u];
+        jb->t_start = 0.0f; jb->known_miss = 0; jb->has_sh = 0;
+        jb->sh_ref_t = 0.0f; jb->sh_tol = 0.0f;
+        if (++wv.nj >= wv.cap) fovsdf__wave_flush(&wv);
+    }
+    fovsdf__wave_flush(&wv);
     if (stats) fovsdf_stats_add(stats, &local);
     return FOV_OK;
 }
@@ -5709,11 +6036,10 @@ typedef struct fovsdf__cell { uint32_t x0, y0, x1, y1, level; float t; } fovsdf_
 /* Depth-first cone pyramid over one grid-aligned top-level tile [x0,x1) x [y0,y1) (clipped to
    the image only, so the cells and results do not depend on how the caller splits the image),
    writing the pixels inside the requested region [rx0,rx1) x [ry0,ry1). */
-FOVSDF__PRIV void fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
-                                    const fovsdf__marcher *mp, uint32_t x0, uint32_t y0,
-                                    uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
-                                    uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
+                  uint32_t x0, uint32_t y0, uint32_t x1, uint32_t y1, uint32_t rx0, uint32_t ry0,
+                  uint32_t rx1, uint32_t ry1, fovsdf_stats *st, fovsdf__wave *wv)
 {
     fovsdf__cell stk[4 * 10];
     int sp = 0;
@@ -5855,10 +6181,10 @@ FOVSDF__PRIV float fovsdf__ipr_min(const float *lv, uint32_t side, int32_t u, in
     return t;
 }
 
-FOVSDF__PRIV void fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
-                                   uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                   uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__ipr_tile(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                 uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                 fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -5928,10 +6254,10 @@ FOVSDF__PRIV float fovsdf__safe_start(const fovsdf_ctx *c, const fovsdf__marcher
    the certified start of fovsdf__safe_start over its own pixels, from its parent's, in place of
    the thin ray's hit; no minimum filter is needed (each cone contains every sample ray that
    starts from it) and no apron: only the cells over the requested pixels are marched. */
-FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx,
-                                        uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                        uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t tx, uint32_t ty,
+                      uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                      fovsdf__wave *wv)
 {
     float scratch[FOVSDF_TILE_SCRATCH];
     float *lv[6];
@@ -5986,10 +6312,10 @@ FOVSDF__PRIV void fovsdf__ipr_tile_safe(const fovsdf_ctx *c, const fovsdf__march
    Like IPR this is a heuristic: neither scaling nor early termination guarantees that small
    objects are seen. That is the thesis variant (heuristic_start 1); the default marches one
    certified cone per block instead (fovsdf__safe_start) and keeps none of the above. */
-FOVSDF__PRIV void fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx,
-                                    uint32_t cy, uint32_t rx0, uint32_t ry0, uint32_t rx1,
-                                    uint32_t ry1, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, uint32_t cy,
+                  uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1, fovsdf_stats *st,
+                  fovsdf__wave *wv)
 {
     uint32_t B = c->cfg.skip_block, x, y, i;
     uint32_t bx0 = cx * B, by0 = cy * B, bx1 = bx0 + B < c->cam.width ? bx0 + B : c->cam.width;
@@ -6275,11 +6601,10 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
     }
 }
 
-FOVSDF__PRIV void fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc,
-                                   const fovsdf__marcher *mp, uint32_t tx, uint32_t ty,
-                                   uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
-                                   const fovsdf_output *o, fovsdf_stats *st,
-        fovsdf__wave *wv)
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__marcher *mp,
+                 uint32_t tx, uint32_t ty, uint32_t rx0, uint32_t ry0, uint32_t rx1, uint32_t ry1,
+                 const fovsdf_output *o, fovsdf_stats *st, fovsdf__wave *wv)
 {
     fovsdf__mid mid[FOVSDF_FOV_CELLS];
     float l0[2 * FOVSDF_FOV_CELLS];

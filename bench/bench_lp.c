@@ -124,7 +124,9 @@ static const float *taa_frame(fovlp_ctx *lp, fov_gaze gaze, const fovlp_camera *
 {
     fovlp_taa_io io;
     fovlp_begin_frame(lp, gaze, cam);
-    fovlp_shade_rows(lp, 0, fovlp_sample_rows(lp), lpsdf_shade, user, smp, sd, NULL);
+    memset(smp, 0, (size_t)lp->geo.samples * 3 * sizeof(float)); /* as fovlp_shade_rows */
+    memset(sd, 0, (size_t)lp->geo.samples * sizeof(float));
+    lpsdf_shade_samples(lp, 0, fovlp_sample_rows(lp), user, smp, sd);
     fovlp_reconstruct_rows(lp, smp, sd, 0, lp->geo.height, cur, 0, cd);
     io.cur_rgb = cur; io.cur_depth = cd;
     io.prev_rgb = hist[*ping]; io.prev_depth = hd[*ping]; io.prev_age = ag[*ping];
@@ -147,20 +149,35 @@ static void gt_image(lpsdf_user *user, uint32_t W, uint32_t H, const float *mask
         sx = 0.5f - sx / (float)n;
         sy = 0.5f - sy / (float)n;
     }
-    for (y = 0; y < H; ++y)
+    /* a row's samples shaded as one batch (fovsdf_shade_points: each exactly
+       fovsdf_shade_point's value), summed per pixel in sample order */
+    float *xy = (float *)malloc((size_t)W * ns * 2 * sizeof(float));
+    float *c = (float *)malloc((size_t)W * ns * 3 * sizeof(float));
+    for (y = 0; y < H; ++y) {
+        uint32_t m = 0;
         for (x = 0; x < W; ++x) {
-            float acc[3] = { 0, 0, 0 }, s[3];
-            size_t o = 3 * ((size_t)y * W + x);
-            if (mask && !(mask[(size_t)y * W + x] < lim)) { out[o] = out[o + 1] = out[o + 2] = 0.0f; continue; }
+            if (mask && !(mask[(size_t)y * W + x] < lim)) continue;
             for (k = 0; k < ns; ++k) {
                 float px, py;
                 if (grid) { px = ((float)(k % n) + 0.5f) / (float)n; py = ((float)(k / n) + 0.5f) / (float)n; }
                 else { px = halton(k + 1, 2) + sx; py = halton(k + 1, 3) + sy; }
-                lpsdf_shade((float)x + px, (float)y + py, s, NULL, user);
-                acc[0] += s[0]; acc[1] += s[1]; acc[2] += s[2];
+                xy[2 * (size_t)m] = (float)x + px; xy[2 * (size_t)m + 1] = (float)y + py;
+                ++m;
+            }
+        }
+        if (m) fovsdf_shade_points(user->sdf, m, xy, 2, c, NULL, NULL, &user->stats);
+        m = 0;
+        for (x = 0; x < W; ++x) {
+            float acc[3] = { 0, 0, 0 };
+            size_t o = 3 * ((size_t)y * W + x);
+            if (mask && !(mask[(size_t)y * W + x] < lim)) { out[o] = out[o + 1] = out[o + 2] = 0.0f; continue; }
+            for (k = 0; k < ns; ++k, ++m) {
+                acc[0] += c[3 * (size_t)m]; acc[1] += c[3 * (size_t)m + 1]; acc[2] += c[3 * (size_t)m + 2];
             }
             for (j = 0; j < 3; ++j) out[o + j] = acc[j] * inv;
         }
+    }
+    free(xy); free(c);
 }
 
 typedef struct cfg_t {
@@ -248,7 +265,9 @@ static void moving_seq(FILE *mcsv, uint32_t id, const fovsdf_config *scfg, uint3
             if (f < 0) fovlp_reset_history(&lp[v]); /* warm-up: frame 0 is a moving frame */
         }
         if (f < 0) continue;
-        fovlp_shade_rows(&lp[0], 0, fovlp_sample_rows(&lp[0]), lpsdf_shade, &user, smp, sdep, NULL);
+        memset(smp, 0, nsmp * 3 * sizeof(float));
+        memset(sdep, 0, nsmp * sizeof(float));
+        lpsdf_shade_samples(&lp[0], 0, fovlp_sample_rows(&lp[0]), &user, smp, sdep);
         fovlp_reconstruct_rows(&lp[0], smp, sdep, 0, H, cur, 0, cdep);
         gt_image(&user, W, H, NULL, 0.0f, 2, 1, ref);
         if (f >= 1) { /* screen motion of the hit points since the previous frame */
@@ -434,7 +453,7 @@ int main(int argc, char **argv)
     cfg_t cfgs[64];
     FILE *csv, *mcsv;
     size_t npx;
-    float *gt, *gt_disp, *gtref, *gtref_disp, *full_img, *disp, *ecc, *samples, *sdep, *cur, *cdep, *hist[2], *hdep[2], *prev_t, *prev_r;
+    float *gt, *gt_disp, *gtref, *gtref_disp, *full_img, *centres, *disp, *ecc, *samples, *sdep, *cur, *cdep, *hist[2], *hdep[2], *prev_t, *prev_r;
     uint8_t *age[2];
     double t_start = now_ms();
 
@@ -488,6 +507,11 @@ int main(int argc, char **argv)
     gtref = (float *)malloc(npx * 3 * sizeof(float));
     gtref_disp = (float *)malloc(npx * 3 * sizeof(float));
     full_img = (float *)malloc(npx * 3 * sizeof(float));
+    centres = (float *)malloc(npx * 2 * sizeof(float));
+    for (size_t q = 0; q < npx; ++q) {
+        centres[2 * q] = (float)(q % W) + 0.5f;
+        centres[2 * q + 1] = (float)(q / W) + 0.5f;
+    }
     disp = (float *)malloc(npx * 3 * sizeof(float));
     ecc = (float *)malloc(npx * sizeof(float));
     cur = (float *)malloc(npx * 3 * sizeof(float));
@@ -537,7 +561,6 @@ int main(int argc, char **argv)
         long cnt_ref = 0;
         fovm_sel fovea_all;
         fov_ecc_model em;
-        uint32_t x, y;
         if (!strstr(scenes, nm)) continue;
         if (!shadows) scfg.shading = FOVSDF_SHADE_NO_SHADOWS;
         mem = open_scene(id, W, H, &scfg, &bi, &sdf, &user, &gaze);
@@ -588,14 +611,14 @@ int main(int argc, char **argv)
                 double t0;
                 memset(&user.stats, 0, sizeof user.stats); /* deterministic counts of the first run */
                 t0 = now_ms();
-                for (y = 0; y < H; ++y)
-                    for (x = 0; x < W; ++x) lpsdf_shade((float)x + 0.5f, (float)y + 0.5f, full_img + 3 * ((size_t)y * W + x), NULL, &user);
+                fovsdf_shade_points(user.sdf, (uint32_t)npx, centres, 2, full_img, NULL, NULL, &user.stats);
                 tfull[a] = now_ms() - t0;
                 if (a == 0) st_full = user.stats;
                 memset(&user.stats, 0, sizeof user.stats);
                 t0 = now_ms();
                 fovlp_begin_frame(&lp, gaze, &cam);
-                fovlp_shade_rows(&lp, 0, fovlp_sample_rows(&lp), lpsdf_shade, &user, samples, NULL, NULL);
+                memset(samples, 0, (size_t)lp.geo.samples * 3 * sizeof(float));
+                lpsdf_shade_samples(&lp, 0, fovlp_sample_rows(&lp), &user, samples, NULL);
                 fovlp_reconstruct_rows(&lp, samples, NULL, 0, H, cur, 0, NULL);
                 tf[a] = now_ms() - t0;
                 if (a == 0) st_fov = user.stats;
@@ -753,7 +776,7 @@ int main(int argc, char **argv)
     } else {
         fprintf(stderr, "gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
     }
-    free(gt); free(gt_disp); free(gtref); free(gtref_disp); free(full_img); free(disp); free(ecc); free(cur); free(cdep); free(prev_t); free(prev_r);
+    free(gt); free(gt_disp); free(gtref); free(gtref_disp); free(full_img); free(centres); free(disp); free(ecc); free(cur); free(cdep); free(prev_t); free(prev_r);
     for (a = 0; a < 2; ++a) { free(hist[a]); free(hdep[a]); free(age[a]); }
     return 0;
 }

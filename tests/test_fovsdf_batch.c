@@ -287,6 +287,36 @@ int main(void)
         compare(fovcheck_name("random%d", r), &prog, 1.0f);
         compare(fovcheck_name("random%d", r), &prog, 1.1f);
     }
+    {   /* bounds nested 24 deep, with points at every level's radius: more pending bounds
+           than the batch evaluator keeps (16), so it falls back to point by point */
+        static fovsdf_node nodes[256];
+        static unsigned char pm[1 << 18];
+        fovsdf_builder b;
+        fovsdf_program prog;
+        int32_t x;
+        size_t sz;
+        uint32_t i, lv;
+        fovsdf_builder_init(&b, nodes, 256);
+        x = fovsdf_union(&b, fovsdf_sphere(&b, 0.1f), fovsdf_translate(&b, fovsdf_box(&b, 0.1f,
+                         0.1f, 0.1f), 0.3f, 0.0f, 0.0f));
+        for (lv = 0; lv < 24; ++lv)
+            x = fovsdf_union(&b, fovsdf_scale(&b, x, 0.5f),
+                             fovsdf_translate(&b, fovsdf_sphere(&b, 0.2f), 3.0f, 0.0f, 0.0f));
+        if (x >= 0 && fovsdf_program_size(nodes, b.count, x, &sz) == FOV_OK && sz <= sizeof pm &&
+            fovsdf_program_build(&prog, nodes, b.count, x, pm, sz) == FOV_OK) {
+            for (i = 0; i < NPT; ++i) {
+                float rad = 4.0f;
+                uint32_t k;
+                for (k = 0; k < i % 26; ++k) rad *= 0.5f;
+                g_x[i] = rad * rr(0.5f, 1.0f); g_y[i] = rad * rr(-0.3f, 0.3f);
+                g_z[i] = rad * rr(-0.3f, 0.3f);
+                g_e[i] = 0.0f;
+            }
+            compare("nested24", &prog, 1.0f);
+        } else {
+            check(0, "nested24_build", "x %d", (int)x);
+        }
+    }
     {   /* fovsdf_distance_batch: arguments, callbacks, sanitising */
         fovsdf_scene sc;
         fovsdf_ctx c;

@@ -1,8 +1,10 @@
 #!/bin/bash
-# wave_variants.sh - the wavefront's images and counts do not depend on how many rays are in
-# flight (FOVSDF_WAVE), how many points a batch holds (FOVSDF_BATCH) or on the SIMD paths
-# (FOVSDF_NO_SIMD): tests/test_fovsdf_wave.c built with each variant passes its own checks and
-# prints the same "INFO hash" lines as the default build.
+# wave_variants.sh - the wavefront's images do not depend on how many rays are in flight
+# (FOVSDF_WAVE), how many points a batch holds (FOVSDF_BATCH), the SIMD paths (FOVSDF_NO_SIMD)
+# or the shadow proofs (FOVSDF_SHADOW_GROUP 0: none): tests/test_fovsdf_wave.c built with each
+# variant passes its own checks and prints the same "INFO hash" lines as the default build; the
+# evaluation counts ("INFO counts") too, for the variants that group rays as the default build
+# does (the same FOVSDF_WAVE and FOVSDF_SHADOW_GROUP).
 cd "$(dirname "$0")/.." || exit 2
 CC=${CC:-gcc}
 OUT=build/wave_variants
@@ -19,16 +21,22 @@ run() { # name, flags
     if grep -q '^[0-9]* passed, 0 failed' "$OUT/$1.txt"; then ok "$1_own_checks"
     else bad "$1_own_checks" "$(grep '^FAIL' "$OUT/$1.txt" | head -3)"; fi
     grep '^INFO hash' "$OUT/$1.txt" >"$OUT/$1.hash"
+    grep '^INFO counts' "$OUT/$1.txt" >"$OUT/$1.counts"
 }
 run default ""
 n=$(wc -l <"$OUT/default.hash")
 [ "$n" -ge 54 ] && ok "default_prints_hashes" || bad "default_prints_hashes" "$n lines"
 for v in "batch1_wave16:-DFOVSDF_BATCH=1 -DFOVSDF_WAVE=16" "batch7_wave40:-DFOVSDF_BATCH=7 -DFOVSDF_WAVE=40" \
-         "batch64_wave256:-DFOVSDF_BATCH=64 -DFOVSDF_WAVE=256" "no_simd:-DFOVSDF_NO_SIMD"; do
+         "batch64_wave256:-DFOVSDF_BATCH=64 -DFOVSDF_WAVE=256" "no_simd:-DFOVSDF_NO_SIMD" \
+         "batch5:-DFOVSDF_BATCH=5" "no_proofs:-DFOVSDF_SHADOW_GROUP=0"; do
     name=${v%%:*}; flags=${v#*:}
     run "$name" "$flags" || continue
-    if cmp -s "$OUT/default.hash" "$OUT/$name.hash"; then ok "${name}_same_bytes"
-    else bad "${name}_same_bytes" "$(diff "$OUT/default.hash" "$OUT/$name.hash" | head -2 | tr '\n' ' ')"; fi
+    if cmp -s "$OUT/default.hash" "$OUT/$name.hash"; then ok "${name}_same_images"
+    else bad "${name}_same_images" "$(diff "$OUT/default.hash" "$OUT/$name.hash" | head -2 | tr '\n' ' ')"; fi
+    case $name in no_simd|batch5)
+        if cmp -s "$OUT/default.counts" "$OUT/$name.counts"; then ok "${name}_same_counts"
+        else bad "${name}_same_counts" "$(diff "$OUT/default.counts" "$OUT/$name.counts" | head -2 | tr '\n' ' ')"; fi;;
+    esac
 done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -18,6 +18,14 @@
 #ifndef XT_EXTERNAL_IMPL
 #define FOVSDF_IMPLEMENTATION
 #endif
+/* the least stack: 4 rays in flight (config.spp must not exceed it), programs evaluated point
+   by point */
+#ifndef FOVSDF_WAVE
+#define FOVSDF_WAVE 4
+#endif
+#ifndef FOVSDF_BATCH
+#define FOVSDF_BATCH 1
+#endif
 #if defined(XT_SEMIHOSTING) && !defined(FOV_ASSERT)
 void xt_assert_fail(const char *expr, int line);
 #define FOV_ASSERT(c) ((c) ? (void)0 : xt_assert_fail(#c, __LINE__))
