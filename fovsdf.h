@@ -1863,10 +1863,13 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
 #else
 #define FOVSDF__INL static inline
 #endif
-/* gcc's -O2 cost model ("very cheap") does not vectorise loops with selects: the batch
-   evaluator asks for its dynamic model (clang vectorises them at -O2 as they are) */
+/* gcc's -O2 cost model ("very cheap") does not vectorise loops with selects, and under its
+   default -ftrapping-math it keeps "a > b ? a : b" a branch: the batch evaluator and its
+   inline helpers ask for the dynamic model and no-trapping-math (the same IEEE operations and
+   values; only floating-point exception flags, which the library never reads, may differ),
+   so min and max become maxps / minps. clang vectorises them at -O2 as they are. */
 #if defined(__GNUC__) && !defined(__clang__) && !defined(FOVSDF_NO_SIMD) && __GNUC__ >= 8
-#define FOVSDF__VEC __attribute__((optimize("vect-cost-model=dynamic")))
+#define FOVSDF__VEC __attribute__((optimize("vect-cost-model=dynamic", "no-trapping-math")))
 #else
 #define FOVSDF__VEC
 #endif
@@ -3480,18 +3483,25 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
 typedef struct fovsdf__bscr {
     float vs[FOVSDF_MAX_STACK][FOVSDF__L];
     int32_t ms[FOVSDF_MAX_STACK][FOVSDF__L];
-    float ps[FOVSDF_MAX_STACK][3][FOVSDF__L];
-    float p[3][FOVSDF__L], q[3][FOVSDF__L], t[FOVSDF__L], u[FOVSDF__L], e[FOVSDF__L];
+    /* the point stack: a transform writes the axes it changes into the next level's storage
+       and points the others at its parent's (no copies; popping just drops the level);
+       level 0 is the batch's own arrays when the batch fills every lane */
+    float ps[FOVSDF_MAX_STACK + 1][3][FOVSDF__L];
+    const float *pp[FOVSDF_MAX_STACK + 1][3];
+    float q[3][FOVSDF__L], w[5][FOVSDF__L]; /* scaled points, primitive scratch */
+    float e4[FOVSDF__L];                         /* 4 eps per lane (the bound's margin) */
     float bv[FOVSDF__BREC][FOVSDF__L];       /* pending bounds: the bound's value */
     int32_t bm[FOVSDF__BREC][FOVSDF__L];     /* 1: the lane takes it */
     int32_t act[FOVSDF__BREC + 1][FOVSDF__L]; /* active lanes (1) per nesting level */
     uint32_t bj[FOVSDF__BREC], bslot[FOVSDF__BREC], nact[FOVSDF__BREC + 1];
 } fovsdf__bscr;
 
-/* Branch-free selects for the lane loops (gcc leaves "x > 0 ? x : 0" a branch, which stops
-   vectorisation); the same values as the ternaries, NaN and signed zeros included. */
+/* Branch-free selects for the lane loops; the same values as the ternaries, NaN and signed
+   zeros included. vmax and vmin are the ternaries themselves (maxps / minps compute exactly
+   a > b ? a : b and a < b ? a : b); every helper the lane loops call carries FOVSDF__VEC, or
+   gcc would not inline it into them (fovsdf__vabs is fov__absf). */
 typedef union fovsdf__fu { float f; uint32_t u; } fovsdf__fu;
-FOVSDF__INL float fovsdf__sel(int c, float a, float b) /* c ? a : b */
+FOVSDF__INL FOVSDF__VEC float fovsdf__sel(int c, float a, float b) /* c ? a : b */
 {
     fovsdf__fu x, y;
     uint32_t m = 0u - (uint32_t)(c != 0);
@@ -3499,21 +3509,62 @@ FOVSDF__INL float fovsdf__sel(int c, float a, float b) /* c ? a : b */
     x.u = (x.u & m) | (y.u & ~m);
     return x.f;
 }
-FOVSDF__INL int32_t fovsdf__seli(int c, int32_t a, int32_t b)
+FOVSDF__INL FOVSDF__VEC int32_t fovsdf__seli(int c, int32_t a, int32_t b)
 {
     int32_t m = -(int32_t)(c != 0);
     return (a & m) | (b & ~m);
 }
-FOVSDF__INL float fovsdf__vmax(float a, float b) { return fovsdf__sel(a > b, a, b); }
-FOVSDF__INL float fovsdf__vmin(float a, float b) { return fovsdf__sel(a < b, a, b); }
-FOVSDF__INL float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmax(float a, float b) { return a > b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmin(float a, float b) { return a < b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
 {
     return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
 }
-FOVSDF__INL int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+FOVSDF__INL FOVSDF__VEC int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vabs(float a) { return a < 0.0f ? -a : a; } /* fov__absf */
+/* A primitive's value v at SDF scale sc with fovsdf_program_eval's last resort: NaN becomes
+   FLT_MAX (v * 1 is v for every v that is not NaN). */
+FOVSDF__INL FOVSDF__VEC float fovsdf__pfin(float v, float sc)
+{
+    float r = v * sc;
+    return fovsdf__sel((r <= 0.0f) | (r > 0.0f), r, FLT_MAX);
+}
+/* 1 when x is +0 (x - x0 is then x for every x, -0 included) */
+FOVSDF__INL FOVSDF__VEC int fovsdf__is_p0(float x)
+{
+    fovsdf__fu u;
+    u.f = x;
+    return u.u == 0u;
+}
+/* FOV__FLOOR(x) without a branch, so the loops vectorise (SSE2 has no floor instruction and
+   gcc keeps floorf a call or a branch): |x| < 2^23 is truncated by an integer conversion and
+   moved down by one when that rounded up (x < 0 not integral); any larger |x| is integral
+   already (as are inf and NaN), and floorf returns it unchanged, so it passes through. libm's
+   floorf keeps the sign of x (floor(-0) = -0); FOV_NO_LIBM's fov__floorf gives +0 there, and so
+   does this without libm. Math hooks: the hook, lane by lane. */
+FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
+{
+#if defined(FOV__HOOKED_MATH)
+    return FOV__FLOOR(x);
+#else
+    fovsdf__fu r;
+    int in = (x > -8388608.0f) & (x < 8388608.0f);
+    float xi = fovsdf__sel(in, x, 0.0f), c = (float)(int32_t)xi;
+#if !defined(FOV_NO_LIBM)
+    fovsdf__fu sx;
+    sx.f = x;
+#endif
+    c = fovsdf__sel(c > xi, c - 1.0f, c);
+    r.f = fovsdf__sel(in, c, x);
+#if !defined(FOV_NO_LIBM)
+    r.u |= sx.u & 0x80000000u; /* the result's sign is x's (0 and -1 < x < 0 included) */
+#endif
+    return r.f;
+#endif
+}
 
 /* v[i] = sqrt(v[i]) over the lanes, exactly FOV__SQRT's value. */
-FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
+FOVSDF__INL FOVSDF__VEC void fovsdf__sqrt_lanes(float *v)
 {
     uint32_t i;
 #if defined(FOVSDF__SQRT_AVX)
@@ -3532,70 +3583,119 @@ FOVSDF__INL void fovsdf__sqrt_lanes(float *v)
 #endif
 }
 
-/* One primitive over the lanes at (x, y, z) into d (no inflation, no NaN guard), with the
-   float operations of fovsdf__prim in its order; t and u are scratch lanes. */
+/* One primitive over the lanes at (x, y, z) into d, times sc, NaN made FLT_MAX (fovsdf__pfin),
+   with the float operations of fovsdf__prim in its order; w: five scratch lanes. Every
+   primitive but the mandelbulb and the terrain (sin, atan2, pow) runs vectorised. */
 FOVSDF__PRIV FOVSDF__VEC void
 fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                    const float *FOVSDF__RESTRICT y, const float *FOVSDF__RESTRICT z,
-                   float *FOVSDF__RESTRICT d, float *FOVSDF__RESTRICT t, float *FOVSDF__RESTRICT u)
+                   float *FOVSDF__RESTRICT d, float sc, float (*w)[FOVSDF__L])
 {
     const float *f = in->f;
     const uint32_t n = FOVSDF__L; /* a constant trip count: the loops vectorise at -O2 */
+    float *FOVSDF__RESTRICT t = w[0], *FOVSDF__RESTRICT u = w[1];
     uint32_t i;
     switch (in->sub) {
-    case FOVSDF_NODE_SPHERE:
+    case FOVSDF_NODE_SPHERE: {
+        float r = f[0];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[0];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r, sc);
         break;
+    }
     case FOVSDF_NODE_BOX:
     case FOVSDF_NODE_ROUND_BOX: {
-        float r = in->sub == FOVSDF_NODE_BOX ? 0.0f : f[3];
-        float bx = in->sub == FOVSDF_NODE_BOX ? f[0] : f[0] - f[3];
-        float by = in->sub == FOVSDF_NODE_BOX ? f[1] : f[1] - f[3];
-        float bz = in->sub == FOVSDF_NODE_BOX ? f[2] : f[2] - f[3];
+        int rb = in->sub == FOVSDF_NODE_ROUND_BOX;
+        float r = rb ? f[3] : 0.0f;
+        float bx = rb ? f[0] - f[3] : f[0], by = rb ? f[1] - f[3] : f[1],
+              bz = rb ? f[2] - f[3] : f[2];
         for (i = 0; i < n; ++i) {
-            float qx = fovsdf__vmax(fov__absf(x[i]) - bx, 0.0f);
-            float qy = fovsdf__vmax(fov__absf(y[i]) - by, 0.0f);
-            float qz = fovsdf__vmax(fov__absf(z[i]) - bz, 0.0f);
+            float qx = fovsdf__vmax(fovsdf__vabs(x[i]) - bx, 0.0f);
+            float qy = fovsdf__vmax(fovsdf__vabs(y[i]) - by, 0.0f);
+            float qz = fovsdf__vmax(fovsdf__vabs(z[i]) - bz, 0.0f);
             t[i] = qx * qx + qy * qy + qz * qz;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) {
-            float qx = fov__absf(x[i]) - bx, qy = fov__absf(y[i]) - by,
-                qz = fov__absf(z[i]) - bz;
-            d[i] = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+        if (rb) {
+            for (i = 0; i < n; ++i) {
+                float qx = fovsdf__vabs(x[i]) - bx, qy = fovsdf__vabs(y[i]) - by,
+                      qz = fovsdf__vabs(z[i]) - bz;
+                float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+                d[i] = fovsdf__pfin(o - r, sc);
+            }
+        } else {
+            for (i = 0; i < n; ++i) {
+                float qx = fovsdf__vabs(x[i]) - bx, qy = fovsdf__vabs(y[i]) - by,
+                      qz = fovsdf__vabs(z[i]) - bz;
+                float o = t[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, qz)), 0.0f);
+                d[i] = fovsdf__pfin(o, sc);
+            }
         }
-        if (in->sub == FOVSDF_NODE_ROUND_BOX) for (i = 0; i < n; ++i) d[i] = d[i] - r;
         break;
     }
-    case FOVSDF_NODE_TORUS:
+    case FOVSDF_NODE_BOX_FRAME: { /* fovsdf__sd_box_frame: three frame3 terms */
+        float *FOVSDF__RESTRICT t2 = w[2], *FOVSDF__RESTRICT t3 = w[3];
+        float ax = f[0], ay = f[1], az = f[2], e = f[3];
+        for (i = 0; i < n; ++i) {
+            float px = fovsdf__vabs(x[i]) - ax, py = fovsdf__vabs(y[i]) - ay,
+                  pz = fovsdf__vabs(z[i]) - az;
+            float qx = fovsdf__vabs(px + e) - e, qy = fovsdf__vabs(py + e) - e,
+                  qz = fovsdf__vabs(pz + e) - e;
+            float mpx = fovsdf__vmax(px, 0.0f), mpy = fovsdf__vmax(py, 0.0f),
+                  mpz = fovsdf__vmax(pz, 0.0f);
+            float mqx = fovsdf__vmax(qx, 0.0f), mqy = fovsdf__vmax(qy, 0.0f),
+                  mqz = fovsdf__vmax(qz, 0.0f);
+            t[i] = mpx * mpx + mqy * mqy + mqz * mqz;
+            t2[i] = mqx * mqx + mpy * mpy + mqz * mqz;
+            t3[i] = mqx * mqx + mqy * mqy + mpz * mpz;
+        }
+        fovsdf__sqrt_lanes(t);
+        fovsdf__sqrt_lanes(t2);
+        fovsdf__sqrt_lanes(t3);
+        for (i = 0; i < n; ++i) {
+            float px = fovsdf__vabs(x[i]) - ax, py = fovsdf__vabs(y[i]) - ay,
+                  pz = fovsdf__vabs(z[i]) - az;
+            float qx = fovsdf__vabs(px + e) - e, qy = fovsdf__vabs(py + e) - e,
+                  qz = fovsdf__vabs(pz + e) - e;
+            float r1 = t[i] + fovsdf__vmin(fovsdf__vmax(px, fovsdf__vmax(qy, qz)), 0.0f);
+            float r2 = t2[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(py, qz)), 0.0f);
+            float r3 = t3[i] + fovsdf__vmin(fovsdf__vmax(qx, fovsdf__vmax(qy, pz)), 0.0f);
+            d[i] = fovsdf__pfin(fovsdf__vmin(fovsdf__vmin(r1, r2), r3), sc);
+        }
+        break;
+    }
+    case FOVSDF_NODE_TORUS: {
+        float r0 = f[0], r1 = f[1];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
         for (i = 0; i < n; ++i) {
-            float a = t[i] - f[0];
+            float a = t[i] - r0;
             t[i] = a * a + y[i] * y[i];
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[1];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r1, sc);
         break;
-    case FOVSDF_NODE_CYLINDER:
+    }
+    case FOVSDF_NODE_CYLINDER: {
+        float h = f[0], r = f[1];
         for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
         fovsdf__sqrt_lanes(t);
         for (i = 0; i < n; ++i) {
-            float dx = t[i] - f[1], dy = fov__absf(y[i]) - f[0];
+            float dx = t[i] - r, dy = fovsdf__vabs(y[i]) - h;
             float mx = fovsdf__vmax(dx, 0.0f), my = fovsdf__vmax(dy, 0.0f);
             u[i] = fovsdf__vmin(fovsdf__vmax(dx, dy), 0.0f);
             t[i] = mx * mx + my * my;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = u[i] + t[i];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(u[i] + t[i], sc);
         break;
+    }
     case FOVSDF_NODE_CAPSULE: {
         float bax = f[3] - f[0], bay = f[4] - f[1], baz = f[5] - f[2];
-        float bb = bax * bax + bay * bay + baz * baz;
+        float bb = bax * bax + bay * bay + baz * baz, ox = f[0], oy = f[1], oz = f[2];
+        float r = f[6];
         for (i = 0; i < n; ++i) {
-            float pax = x[i] - f[0], pay = y[i] - f[1], paz = z[i] - f[2], h, ex, ey, ez;
+            float pax = x[i] - ox, pay = y[i] - oy, paz = z[i] - oz, h, ex, ey, ez;
             h = fovsdf__sel(bb > 0.0f,
                             fovsdf__vclamp((pax * bax + pay * bay + paz * baz) / bb, 0.0f, 1.0f),
                             0.0f);
@@ -3603,82 +3703,189 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             t[i] = ex * ex + ey * ey + ez * ez;
         }
         fovsdf__sqrt_lanes(t);
-        for (i = 0; i < n; ++i) d[i] = t[i] - f[6];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(t[i] - r, sc);
         break;
     }
-    case FOVSDF_NODE_PLANE:
-        for (i = 0; i < n; ++i) d[i] = x[i] * f[0] + y[i] * f[1] + z[i] * f[2] + f[3];
+    case FOVSDF_NODE_CONE: { /* fovsdf__sd_cone */
+        float h = f[0], r1 = f[1], r2 = f[2];
+        float k2x = r2 - r1, k2y = 2.0f * h;
+        float kk = k2x * k2x + k2y * k2y;
+        for (i = 0; i < n; ++i) t[i] = x[i] * x[i] + z[i] * z[i];
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) {
+            float qx = t[i], qy = y[i];
+            float cax = qx - fovsdf__vmin(qx, fovsdf__sel(qy < 0.0f, r1, r2)),
+                  cay = fovsdf__vabs(qy) - h;
+            float tt = fovsdf__vclamp(((r2 - qx) * k2x + (h - qy) * k2y) / kk, 0.0f, 1.0f);
+            float cbx = qx - r2 + k2x * tt, cby = qy - h + k2y * tt;
+            u[i] = fovsdf__sel((cbx < 0.0f) & (cay < 0.0f), -1.0f, 1.0f);
+            t[i] = fovsdf__vmin(cax * cax + cay * cay, cbx * cbx + cby * cby);
+        }
+        fovsdf__sqrt_lanes(t);
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(u[i] * t[i], sc);
         break;
+    }
+    case FOVSDF_NODE_PLANE: {
+        float a = f[0], b = f[1], c = f[2], e = f[3];
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin(x[i] * a + y[i] * b + z[i] * c + e, sc);
+        break;
+    }
+    case FOVSDF_NODE_MENGER: { /* fovsdf__sd_menger at p / f[0], times f[0] */
+        float *FOVSDF__RESTRICT qx = w[0], *FOVSDF__RESTRICT qy = w[1],
+              *FOVSDF__RESTRICT qz = w[2], *FOVSDF__RESTRICT d0 = w[3],
+              *FOVSDF__RESTRICT dm = w[4];
+        float s0 = f[0], s = 1.0f;
+        int32_t m, it = in->i[0];
+        for (i = 0; i < n; ++i) {
+            float ax, ay, az;
+            qx[i] = x[i] / s0; qy[i] = y[i] / s0; qz[i] = z[i] / s0;
+            ax = fovsdf__vmax(fovsdf__vabs(qx[i]) - 1.0f, 0.0f);
+            ay = fovsdf__vmax(fovsdf__vabs(qy[i]) - 1.0f, 0.0f);
+            az = fovsdf__vmax(fovsdf__vabs(qz[i]) - 1.0f, 0.0f);
+            d0[i] = ax * ax + ay * ay + az * az;
+        }
+        fovsdf__sqrt_lanes(d0);
+        for (i = 0; i < n; ++i) {
+            float ax = fovsdf__vabs(qx[i]) - 1.0f, ay = fovsdf__vabs(qy[i]) - 1.0f,
+                  az = fovsdf__vabs(qz[i]) - 1.0f;
+            d0[i] = d0[i] + fovsdf__vmin(fovsdf__vmax(ax, fovsdf__vmax(ay, az)), 0.0f);
+            dm[i] = d0[i];
+        }
+        /* every lane runs the iterations; those whose box distance is beyond 1 (the scalar
+           returns the box there) take d0 below */
+        for (m = 0; m < it; ++m) {
+            float s3 = s * 3.0f;
+            for (i = 0; i < n; ++i) {
+                float vx = qx[i] * s, vy = qy[i] * s, vz = qz[i] * s, rx, ry, rz, c;
+                vx = vx - 2.0f * fovsdf__vfloor(vx * 0.5f);
+                vy = vy - 2.0f * fovsdf__vfloor(vy * 0.5f);
+                vz = vz - 2.0f * fovsdf__vfloor(vz * 0.5f);
+                rx = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vx - 1.0f));
+                ry = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vy - 1.0f));
+                rz = fovsdf__vabs(1.0f - 3.0f * fovsdf__vabs(vz - 1.0f));
+                c = (fovsdf__vmin(fovsdf__vmax(rx, ry),
+                                  fovsdf__vmin(fovsdf__vmax(ry, rz), fovsdf__vmax(rz, rx))) -
+                     1.0f) / s3;
+                dm[i] = fovsdf__vmax(dm[i], c);
+            }
+            s = s3;
+        }
+        for (i = 0; i < n; ++i)
+            d[i] = fovsdf__pfin(fovsdf__sel(d0[i] <= 1.0f, dm[i], d0[i]) * s0, sc);
+        break;
+    }
     default:
         for (i = 0; i < n; ++i) {
             float p[3];
             p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
-            d[i] = fovsdf__prim(in, p);
+            d[i] = fovsdf__pfin(fovsdf__prim(in, p), sc);
         }
         break;
     }
 }
 
+/* One blend over the lanes A = A op B (materials MA, MB when wm): BODY sets r, the value, and
+   ta, 1 when A's material wins, from the operands a and c (no top-level commas in BODY). */
+#define FOVSDF__BLEND(BODY)                                                                   \
+    do {                                                                                       \
+        if (wm) {                                                                              \
+            for (i = 0; i < n; ++i) {                                                          \
+                float a = A[i], c = B[i], r;                                                   \
+                int ta;                                                                        \
+                BODY                                                                           \
+                A[i] = r;                                                                      \
+                MA[i] = fovsdf__seli(ta, MA[i], MB[i]);                                        \
+            }                                                                                  \
+        } else {                                                                               \
+            for (i = 0; i < n; ++i) {                                                          \
+                float a = A[i], c = B[i], r;                                                   \
+                int ta;                                                                        \
+                BODY                                                                           \
+                A[i] = r;                                                                      \
+                (void)ta;                                                                      \
+            }                                                                                  \
+        }                                                                                      \
+    } while (0)
+
 /* nb <= FOVSDF_BATCH points starting at point k0 of b. Every loop runs over all FOVSDF__L
    lanes through restrict pointers (a constant trip count and no aliasing: compilers vectorise
-   them at -O2); lanes past nb repeat the last point and are inactive. */
+   them at -O2); lanes past nb repeat the last point and are inactive. Materials are tracked
+   only when b->material asks for them. */
 FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovsdf_batch *b,
                                                 uint32_t k0, uint32_t nb, fovsdf__bscr *s)
 {
     const fovsdf__ins *code = (const fovsdf__ins *)prog->code;
     const uint32_t n = FOVSDF__L;
-    float inflate = (b->inflate > 0.0f && fov__finite(b->inflate)) ? b->inflate : 1.0f;
-    int scaled = inflate < 1.0f || inflate > 1.0f;
+    float inflate = (b->inflate > 0.0f && fovsdf__vfinite(b->inflate)) ? b->inflate : 1.0f;
+    int scaled = inflate < 1.0f || inflate > 1.0f, wm = b->material != 0;
     uint32_t pc = 0, cnt = prog->count, i, prims = 0, skipped = 0, lv = 0, bsp = 0;
+    uint32_t nj = cnt; /* where the innermost pending subtree (or the program) ends */
     int32_t vsp = 0, psp = 0;
-    for (i = 0; i < n; ++i) {
-        uint32_t k = k0 + (i < nb ? i : nb - 1u);
-        s->p[0][i] = b->x[k]; s->p[1][i] = b->y[k]; s->p[2][i] = b->z[k];
-        s->e[i] = b->eps ? b->eps[k] : 0.0f;
-        s->act[0][i] = i < nb ? 1 : 0;
+    {
+        float *FOVSDF__RESTRICT E4 = s->e4;
+        int32_t *FOVSDF__RESTRICT A0 = s->act[0];
+        if (nb == n) { /* a full batch: level 0 is the batch's arrays */
+            s->pp[0][0] = b->x + k0; s->pp[0][1] = b->y + k0; s->pp[0][2] = b->z + k0;
+            if (b->eps) {
+                const float *FOVSDF__RESTRICT EP = b->eps + k0;
+                for (i = 0; i < n; ++i) E4[i] = 4.0f * EP[i];
+            } else {
+                for (i = 0; i < n; ++i) E4[i] = 0.0f;
+            }
+            for (i = 0; i < n; ++i) A0[i] = 1;
+        } else {
+            float *FOVSDF__RESTRICT X = s->ps[0][0], *FOVSDF__RESTRICT Y = s->ps[0][1],
+                  *FOVSDF__RESTRICT Z = s->ps[0][2];
+            for (i = 0; i < n; ++i) {
+                uint32_t k = k0 + (i < nb ? i : nb - 1u);
+                X[i] = b->x[k]; Y[i] = b->y[k]; Z[i] = b->z[k];
+                E4[i] = b->eps ? 4.0f * b->eps[k] : 0.0f;
+                A0[i] = i < nb ? 1 : 0;
+            }
+            s->pp[0][0] = X; s->pp[0][1] = Y; s->pp[0][2] = Z;
+        }
     }
     s->nact[0] = nb;
     for (;;) {
         const fovsdf__ins *in;
-        /* subtrees that ended: the lanes that skipped them take the bound's value */
-        while (bsp > 0 && s->bj[bsp - 1] == pc) {
-            float *FOVSDF__RESTRICT V = s->vs[s->bslot[bsp - 1]];
-            int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
-            const float *FOVSDF__RESTRICT BV = s->bv[bsp - 1];
-            const int32_t *FOVSDF__RESTRICT BM = s->bm[bsp - 1];
-            for (i = 0; i < n; ++i) {
-                int32_t bm = BM[i];
-                V[i] = fovsdf__sel(bm, BV[i], V[i]);
-                M[i] = fovsdf__seli(bm, -1, M[i]);
+        /* a subtree that ended: the lanes that skipped it take the bound's value */
+        if (pc == nj) {
+            float *FOVSDF__RESTRICT V;
+            const float *FOVSDF__RESTRICT BV;
+            const int32_t *FOVSDF__RESTRICT BM;
+            if (bsp == 0) break; /* the program's end */
+            V = s->vs[s->bslot[bsp - 1]];
+            BV = s->bv[bsp - 1];
+            BM = s->bm[bsp - 1];
+            for (i = 0; i < n; ++i) V[i] = fovsdf__sel(BM[i], BV[i], V[i]);
+            if (wm) {
+                int32_t *FOVSDF__RESTRICT M = s->ms[s->bslot[bsp - 1]];
+                for (i = 0; i < n; ++i) M[i] = fovsdf__seli(BM[i], -1, M[i]);
             }
             --bsp;
             --lv;
+            nj = bsp > 0 ? s->bj[bsp - 1] : cnt;
+            continue;
         }
-        if (pc >= cnt) break;
         in = &code[pc];
         switch (in->op) {
         case FOVSDF__OP_PRIM: {
             float *FOVSDF__RESTRICT d = s->vs[vsp];
-            int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
-            int32_t mat = in->material;
+            const float *X = s->pp[psp][0], *Y = s->pp[psp][1], *Z = s->pp[psp][2];
             if (scaled) {
                 float sc = (in->flags & FOVSDF__FLAG_DEFLATE) ? 1.0f / inflate : inflate;
                 float *FOVSDF__RESTRICT QX = s->q[0], *FOVSDF__RESTRICT QY = s->q[1],
                       *FOVSDF__RESTRICT QZ = s->q[2];
-                const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                            *FOVSDF__RESTRICT Z = s->p[2];
                 for (i = 0; i < n; ++i) {
                     QX[i] = X[i] / sc; QY[i] = Y[i] / sc; QZ[i] = Z[i] / sc;
                 }
-                fovsdf__prim_lanes(in, QX, QY, QZ, d, s->t, s->u);
-                for (i = 0; i < n; ++i) d[i] = d[i] * sc;
+                fovsdf__prim_lanes(in, QX, QY, QZ, d, sc, s->w);
             } else {
-                fovsdf__prim_lanes(in, s->p[0], s->p[1], s->p[2], d, s->t, s->u);
+                fovsdf__prim_lanes(in, X, Y, Z, d, 1.0f, s->w);
             }
-            for (i = 0; i < n; ++i) {
-                float v = d[i];
-                d[i] = fovsdf__sel((v <= 0.0f) | (v > 0.0f), v, FLT_MAX);
-                M[i] = mat;
+            if (wm) {
+                int32_t *FOVSDF__RESTRICT M = s->ms[vsp], mat = in->material;
+                for (i = 0; i < n; ++i) M[i] = mat;
             }
             ++vsp;
             prims += s->nact[lv];
@@ -3694,58 +3901,40 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             --vsp;
             switch (in->sub) {
             case FOVSDF_NODE_UNION:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i];
-                    int ta = a < c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(ta = a < c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_SUBTRACT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = -B[i];
-                    int ta = a > c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(c = -c; ta = a > c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_INTERSECT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i];
-                    int ta = a > c;
-                    A[i] = fovsdf__sel(ta, a, c); MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                FOVSDF__BLEND(ta = a > c; r = fovsdf__sel(ta, a, c););
                 break;
             case FOVSDF_NODE_SMOOTH_UNION:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f + 0.5f * (c - a) / k, 0.0f, 1.0f);
-                    r = c + (a - c) * h - k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f + 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    float v = c + (a - c) * h - k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, h > 0.5f, a < c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmin(a, c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmin(a, c));
+                });
                 break;
             case FOVSDF_NODE_SMOOTH_SUBTRACT:
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f - 0.5f * (a + c) / k, 0.0f, 1.0f);
-                    r = a + (-c - a) * h + k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f - 0.5f * (a + c) / k, 0.0f, 1.0f);
+                    float v = a + (-c - a) * h + k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, !(h > 0.5f), a > -c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, -c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmax(a, -c));
+                });
                 break;
             default: /* smooth intersection */
-                for (i = 0; i < n; ++i) {
-                    float a = A[i], c = B[i], h, r;
-                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c), ta;
-                    h = fovsdf__vclamp(0.5f - 0.5f * (c - a) / k, 0.0f, 1.0f);
-                    r = c + (a - c) * h + k * h * (1.0f - h);
+                FOVSDF__BLEND({
+                    int fin = fovsdf__vfinite(a) & fovsdf__vfinite(c);
+                    float h = fovsdf__vclamp(0.5f - 0.5f * (c - a) / k, 0.0f, 1.0f);
+                    float v = c + (a - c) * h + k * h * (1.0f - h);
                     ta = fovsdf__seli(fin, h > 0.5f, a > c);
-                    A[i] = fovsdf__sel(fin, r, fovsdf__vmax(a, c));
-                    MA[i] = fovsdf__seli(ta, MA[i], MB[i]);
-                }
+                    r = fovsdf__sel(fin, v, fovsdf__vmax(a, c));
+                });
                 break;
             }
             ++pc;
@@ -3754,63 +3943,76 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
         case FOVSDF__OP_UNARY: {
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
             if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
-            else for (i = 0; i < n; ++i) V[i] = fov__absf(V[i]) - r;
+            else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
             ++pc;
             break;
         }
         case FOVSDF__OP_PUSHP: {
             const float *f = in->f;
-            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                  *FOVSDF__RESTRICT Z = s->p[2];
-            float *FOVSDF__RESTRICT SX = s->ps[psp][0], *FOVSDF__RESTRICT SY = s->ps[psp][1],
-                  *FOVSDF__RESTRICT SZ = s->ps[psp][2];
+            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
+                        *FOVSDF__RESTRICT Z = s->pp[psp][2];
+            float *FOVSDF__RESTRICT OX = s->ps[psp + 1][0],
+                  *FOVSDF__RESTRICT OY = s->ps[psp + 1][1],
+                  *FOVSDF__RESTRICT OZ = s->ps[psp + 1][2];
+            const float **O = s->pp[psp + 1];
             int k;
-            for (i = 0; i < n; ++i) { SX[i] = X[i]; SY[i] = Y[i]; SZ[i] = Z[i]; }
+            O[0] = X; O[1] = Y; O[2] = Z; /* axes the transform leaves alone */
             ++psp;
             switch (in->sub) {
             case FOVSDF_NODE_TRANSLATE: {
                 float a = f[0], c = f[1], e = f[2];
-                for (i = 0; i < n; ++i) { X[i] -= a; Y[i] -= c; Z[i] -= e; }
+                if (!fovsdf__is_p0(a)) { for (i = 0; i < n; ++i) OX[i] = X[i] - a; O[0] = OX; }
+                if (!fovsdf__is_p0(c)) { for (i = 0; i < n; ++i) OY[i] = Y[i] - c; O[1] = OY; }
+                if (!fovsdf__is_p0(e)) { for (i = 0; i < n; ++i) OZ[i] = Z[i] - e; O[2] = OZ; }
                 break;
             }
-            case FOVSDF_NODE_ROTATE:
+            case FOVSDF_NODE_ROTATE: { /* world -> object: R^T p */
+                float r0 = f[0], r1 = f[1], r2 = f[2], r3 = f[3], r4 = f[4], r5 = f[5],
+                      r6 = f[6], r7 = f[7], r8 = f[8];
                 for (i = 0; i < n; ++i) {
-                    float x = SX[i], y = SY[i], z = SZ[i];
-                    X[i] = f[0] * x + f[3] * y + f[6] * z;
-                    Y[i] = f[1] * x + f[4] * y + f[7] * z;
-                    Z[i] = f[2] * x + f[5] * y + f[8] * z;
+                    float px = X[i], py = Y[i], pz = Z[i];
+                    OX[i] = r0 * px + r3 * py + r6 * pz;
+                    OY[i] = r1 * px + r4 * py + r7 * pz;
+                    OZ[i] = r2 * px + r5 * py + r8 * pz;
                 }
+                O[0] = OX; O[1] = OY; O[2] = OZ;
                 break;
+            }
             case FOVSDF_NODE_SCALE: {
                 float sc = f[0];
-                for (i = 0; i < n; ++i) { X[i] /= sc; Y[i] /= sc; Z[i] /= sc; }
+                for (i = 0; i < n; ++i) { OX[i] = X[i] / sc; OY[i] = Y[i] / sc; OZ[i] = Z[i] / sc; }
+                O[0] = OX; O[1] = OY; O[2] = OZ;
                 break;
             }
             case FOVSDF_NODE_REPEAT:
                 for (k = 0; k < 3; ++k) {
-                    float *FOVSDF__RESTRICT P = s->p[k], per = f[k], lim = (float)in->i[k];
+                    const float *FOVSDF__RESTRICT P = s->pp[psp - 1][k];
+                    float *FOVSDF__RESTRICT Q = s->ps[psp][k], per = f[k], lim = (float)in->i[k];
                     if (!(per > 0.0f)) continue;
                     if (in->i[k] > 0) {
                         for (i = 0; i < n; ++i) {
-                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            float c = fovsdf__vfloor(P[i] / per + 0.5f);
                             c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
                             c = fovsdf__vclamp(c, -lim, lim);
-                            P[i] -= per * c;
+                            Q[i] = P[i] - per * c;
                         }
                     } else {
                         for (i = 0; i < n; ++i) {
-                            float c = FOV__FLOOR(P[i] / per + 0.5f);
+                            float c = fovsdf__vfloor(P[i] / per + 0.5f);
                             c = fovsdf__sel(fovsdf__vfinite(c), c, 0.0f);
-                            P[i] -= per * c;
+                            Q[i] = P[i] - per * c;
                         }
                     }
+                    O[k] = Q;
                 }
                 break;
             default: /* mirror */
                 for (k = 0; k < 3; ++k)
                     if (in->i[0] & (1 << k)) {
-                        float *FOVSDF__RESTRICT P = s->p[k];
-                        for (i = 0; i < n; ++i) P[i] = fov__absf(P[i]);
+                        const float *FOVSDF__RESTRICT P = s->pp[psp - 1][k];
+                        float *FOVSDF__RESTRICT Q = s->ps[psp][k];
+                        for (i = 0; i < n; ++i) Q[i] = fovsdf__vabs(P[i]);
+                        O[k] = Q;
                     }
                 break;
             }
@@ -3819,31 +4021,25 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
         }
         case FOVSDF__OP_POPP: {
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], sc = in->f[0];
-            float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                  *FOVSDF__RESTRICT Z = s->p[2];
-            const float *FOVSDF__RESTRICT SX = s->ps[psp - 1][0],
-                        *FOVSDF__RESTRICT SY = s->ps[psp - 1][1],
-                        *FOVSDF__RESTRICT SZ = s->ps[psp - 1][2];
-            --psp;
-            for (i = 0; i < n; ++i) { X[i] = SX[i]; Y[i] = SY[i]; Z[i] = SZ[i]; }
+            --psp; /* the parent's point is still there */
             if (sc < 1.0f || sc > 1.0f) for (i = 0; i < n; ++i) V[i] *= sc;
             ++pc;
             break;
         }
         default: { /* BOUND */
             const float *f = in->f;
-            const float *FOVSDF__RESTRICT X = s->p[0], *FOVSDF__RESTRICT Y = s->p[1],
-                        *FOVSDF__RESTRICT Z = s->p[2], *FOVSDF__RESTRICT E = s->e;
+            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
+                        *FOVSDF__RESTRICT Z = s->pp[psp][2], *FOVSDF__RESTRICT E4 = s->e4;
             const int32_t *FOVSDF__RESTRICT ACT = s->act[lv];
             int32_t *FOVSDF__RESTRICT BM = s->bm[bsp];
-            float *FOVSDF__RESTRICT T = s->t;
+            float *FOVSDF__RESTRICT T = s->w[0];
             float cx = f[0], cy = f[1], cz = f[2], lim0 = 1.25f * f[3] + f[4];
             uint32_t nskip = 0, na = s->nact[lv];
             if (scaled) { ++pc; break; } /* inflation: evaluate everything (as the scalar) */
             for (i = 0; i < n; ++i) {
                 float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz,
                       d2 = dx * dx + dy * dy + dz * dz;
-                float lim = fovsdf__vmax(lim0 + 4.0f * E[i], 0.0f);
+                float lim = fovsdf__vmax(lim0 + E4[i], 0.0f);
                 int32_t sk = (d2 > lim * lim) & ACT[i];
                 T[i] = d2;
                 BM[i] = sk;
@@ -3854,8 +4050,11 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             fovsdf__sqrt_lanes(T);
             if (nskip == na) { /* every lane that counts skips: jump */
                 float *FOVSDF__RESTRICT V = s->vs[vsp], r = f[3];
-                int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
-                for (i = 0; i < n; ++i) { V[i] = T[i] - r; M[i] = -1; }
+                for (i = 0; i < n; ++i) V[i] = T[i] - r;
+                if (wm) {
+                    int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
+                    for (i = 0; i < n; ++i) M[i] = -1;
+                }
                 ++vsp;
                 pc = in->jump;
                 break;
@@ -3872,6 +4071,7 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             s->nact[lv + 1] = na - nskip;
             s->bj[bsp] = in->jump;
             s->bslot[bsp] = (uint32_t)vsp;
+            nj = in->jump;
             ++bsp;
             ++lv;
             ++pc;
@@ -3881,10 +4081,25 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
     }
     b->prims += prims;
     b->prims_skipped += skipped;
-    for (i = 0; i < nb; ++i) {
-        float v = vsp > 0 ? s->vs[0][i] : FLT_MAX;
-        b->d[k0 + i] = fov__isnan(v) ? FLT_MAX : fovsdf__clampf(v, -FLT_MAX, FLT_MAX);
-        if (b->material) b->material[k0 + i] = vsp > 0 ? s->ms[0][i] : -1;
+    {
+        float *FOVSDF__RESTRICT D = b->d + k0;
+        const float *FOVSDF__RESTRICT V = s->vs[0];
+        /* finite always: NaN and +-inf become FLT_MAX and +-FLT_MAX (fovsdf_program_eval) */
+        if (vsp > 0) {
+            for (i = 0; i < nb; ++i) {
+                float v = V[i];
+                D[i] = fovsdf__sel((v <= 0.0f) | (v > 0.0f), fovsdf__vclamp(v, -FLT_MAX, FLT_MAX),
+                                   FLT_MAX);
+            }
+        } else {
+            for (i = 0; i < nb; ++i) D[i] = FLT_MAX;
+        }
+        if (wm) {
+            int32_t *FOVSDF__RESTRICT M = b->material + k0;
+            const int32_t *FOVSDF__RESTRICT MS = s->ms[0];
+            if (vsp > 0) for (i = 0; i < nb; ++i) M[i] = MS[i];
+            else for (i = 0; i < nb; ++i) M[i] = -1;
+        }
     }
     return 1;
 }
@@ -3905,6 +4120,7 @@ FOVSDF__PRIV void fovsdf__eval_points(const fovsdf_program *prog, fovsdf_batch *
         b->prims += q.prims; b->prims_skipped += q.prims_skipped;
     }
 }
+#undef FOVSDF__BLEND
 
 FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 {
@@ -3976,24 +4192,32 @@ FOVSDF__PRIV float fovsdf__eval_in(const fovsdf_scene *sc, float inv_lip, const 
 /* n <= FOVSDF_BATCH counted evaluations at (x, y, z)[i] with thresholds eps[i] (as
    fovsdf__eval_in for each point: the same values, materials and counts), through the batch
    callback when the scene has one, else point by point. mat may be NULL. */
-FOVSDF__PRIV void fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n,
-                                     const float *x, const float *y, const float *z,
-                                     const float *eps, float inflate, const fovsdf_ray_cone *cone,
-                                     float *d, int32_t *mat, fovsdf_stats *st)
+FOVSDF__PRIV void
+fovsdf__eval_batch(const fovsdf_scene *sc, float inv_lip, uint32_t n, const float *x,
+                   const float *y, const float *z, const float *eps, float inflate,
+                   const fovsdf_ray_cone *cone, float *d, int32_t *mat, fovsdf_stats *st)
 {
     uint32_t i;
     if (sc->dist_batch) {
         fovsdf_batch b;
-        float nan = fovsdf__nan();
-        for (i = 0; i < n; ++i) d[i] = nan;
-        if (mat) for (i = 0; i < n; ++i) mat[i] = 0;
+        const fovsdf_program *pg = (const fovsdf_program *)sc->user;
+        /* a built-in program writes every distance and material, finite: no defaults, and
+           at Lipschitz 1 nothing to scale */
+        int own = sc->dist_batch == fovsdf_program_eval_batch && pg && pg->code && pg->count > 0;
+        if (!own) {
+            float nan = fovsdf__nan();
+            for (i = 0; i < n; ++i) d[i] = nan;
+            if (mat) for (i = 0; i < n; ++i) mat[i] = 0;
+        }
         b.n = n; b.x = x; b.y = y; b.z = z; b.eps = eps; b.inflate = inflate; b.d = d;
         b.material = mat; b.prims = 0; b.prims_skipped = 0; b.cone = cone;
         sc->dist_batch(&b, sc->user);
         if (st) { st->prims += b.prims; st->prims_skipped += b.prims_skipped; st->evals += n; }
-        for (i = 0; i < n; ++i) {
-            float v = d[i] * inv_lip;
-            d[i] = fov__finite(v) ? v : FLT_MAX;
+        if (!own || inv_lip < 1.0f || inv_lip > 1.0f) {
+            for (i = 0; i < n; ++i) {
+                float v = d[i] * inv_lip;
+                d[i] = fov__finite(v) ? v : FLT_MAX;
+            }
         }
         return;
     }
@@ -4088,6 +4312,17 @@ FOVSDF__PRIV float fovsdf__mg(const fovsdf__marcher *m, float t)
    depend on which one marched it, nor on how rays were grouped into batches. A point that
    overflows (a camera near FLT_MAX) is never evaluated: it reads FLT_MAX, a miss, and leaves
    the material alone. */
+/* fovsdf__thr and fovsdf__mg with the ray's own eps_cone ec (the same operations) */
+FOVSDF__INL float fovsdf__thr_ec(const fovsdf__marcher *m, float ec, float t)
+{
+    float a = m->eps, b = ec * t, c = m->ulp0 + m->ulp1 * t;
+    return fov__maxf(a, fov__maxf(b, c));
+}
+FOVSDF__INL float fovsdf__mg_ec(const fovsdf__marcher *m, float ec, float t)
+{
+    return 0.01f * fovsdf__thr_ec(m, ec, t) + 0.5f * (m->ulp0 + m->ulp1 * t);
+}
+
 typedef struct fovsdf__mco {
     float ro[3], rd[3], t0;    /* the ray and its start */
     float ec;                  /* the ray's own eps_cone (per_ray: scaled by its footprint) */
@@ -4099,7 +4334,7 @@ typedef struct fovsdf__mco {
     uint32_t evals;            /* evaluations so far */
     /* tracer state (the result is t, d, steps, kind, mat) */
     float t, d, pt, pd, om, tp, rp, z, sl, dp, T, R;
-    int hp, have, scaled;
+    int hp, have;
     uint32_t steps, kind;
     int32_t mat, m2, mb;
     /* refinement and ball certificate */
@@ -4120,7 +4355,7 @@ typedef struct fovsdf__mco {
         w->q[0] = w->ro[0] + w->rd[0] * (tt_); w->q[1] = w->ro[1] + w->rd[1] * (tt_);              \
         w->q[2] = w->ro[2] + w->rd[2] * (tt_);                                                     \
         if (!fov__finite3(w->q)) { w->res = FLT_MAX; w->got = 0; break; }                          \
-        w->qe = fovsdf__thr(m, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);                   \
+        w->qe = fovsdf__thr_ec(m, w->ec, (tt_)); w->qi = (infl_); w->got = 1; w->pc = (k);         \
         return 1;                                                                                  \
     case (k):;                                                                                     \
     } while (0)
@@ -4134,7 +4369,6 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
     w->pc = 0;
     w->evals = 0;
     w->mat = 0;
-    w->scaled = 0;
     w->ec = m->eps_cone;
     if (m->per_ray && m->eps_cone > 0.0f) {
         /* the ray's own pixel footprint: a pixel at angle theta off the axis of a pinhole camera
@@ -4142,7 +4376,6 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
            the smaller one, so wide fields of view do not turn near misses into hits */
         float cz = fovsdf__clampf(fov__dot(rd, m->fwd), 0.0f, 1.0f);
         w->ec = m->eps_cone * cz * cz;
-        w->scaled = 1;
     }
 }
 
@@ -4151,13 +4384,10 @@ FOVSDF__PRIV void fovsdf__mco_init(const fovsdf__marcher *m, fovsdf__mco *w, con
    points with t <= t_max; a hit has a finite t in [t0, t_max] (t0 after the head-start
    check); a refinement never moves a hit past a point of the ray it has not verified (see
    the refinement below). Returns 1 with a request, 0 when done (kind, t, d, steps, mat). */
-FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
+FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m, fovsdf__mco *w)
 {
-    fovsdf__marcher mr;
-    const fovsdf__marcher *m = m0;
     float v, den, fac, M, om, u, s, q[3], n[3], c[3], ha, h2, hr, rr, g2;
     int i, k;
-    if (w->scaled) { mr = *m0; mr.eps_cone = w->ec; m = &mr; }
     switch (w->pc) {
     case 0:
         w->kind = FOVSDF_MISS;
@@ -4195,7 +4425,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                     w->t = w->tp + w->rp; w->om = 1.0f; w->have = 0;
                     continue;
                 }
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 w->tp = w->t; w->rp = w->d; w->have = 1;
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 /* an over-relaxed step may only leave the range after the overlap test has
@@ -4216,7 +4446,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             w->d = w->res;
             if (w->got) w->mat = w->resm;
             ++w->steps;
-            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) w->kind = FOVSDF_HIT;
             w->z = w->d;
             while (w->kind == FOVSDF_MISS) {
                 if (!(w->t + w->d <= m->t_max)) break;
@@ -4236,7 +4466,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->sl += m->beta * (M - w->sl);
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t = w->T; w->d = w->R;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 om = 2.0f / (1.0f - fovsdf__clampf(w->sl, -1.0f, 0.9f));
                 w->z = w->d * fov__maxf(1.0f, om);
             }
@@ -4250,7 +4480,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             w->d = w->res;
             if (w->got) w->mat = w->resm;
             ++w->steps;
-            if (w->d < fovsdf__thr(m, w->t)) w->kind = FOVSDF_HIT;
+            if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) w->kind = FOVSDF_HIT;
             while (w->kind == FOVSDF_MISS) {
                 if (!(w->t + w->d <= m->t_max)) break;
                 if (w->steps >= m->max_steps) { w->kind = FOVSDF_EXHAUSTED; break; }
@@ -4272,7 +4502,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->dp = w->T - w->t; w->rp = w->d; w->have = 1;
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t = w->T; w->d = w->R;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
             }
         } else {
             /* Hart 1996, Algorithm 1 of the thesis: t += d until d < threshold or t > t_max. */
@@ -4283,7 +4513,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 w->d = w->res;
                 if (w->got) w->mat = w->resm;
                 ++w->steps;
-                if (w->d < fovsdf__thr(m, w->t)) { w->kind = FOVSDF_HIT; break; }
+                if (w->d < fovsdf__thr_ec(m, w->ec, w->t)) { w->kind = FOVSDF_HIT; break; }
                 w->pt = w->t; w->pd = w->d; w->hp = 1;
                 w->t += w->d;
             }
@@ -4301,7 +4531,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 FOVSDF__YIELD_T(50u, w->t2, 1.0f);
                 w->m2 = w->got ? w->resm : 0;
                 v = w->res;
-                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg_ec(m, w->ec, w->t2) &&
                     (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
                     w->t = w->t2; w->d = v; w->mat = w->m2;
                     w->pt = w->t1; w->pd = w->d1; w->hp = 1;
@@ -4313,7 +4543,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
         w->slope = (w->dd - w->pd) / (w->tt - w->pt);
         w->dt = -w->dd / w->slope;
         w->lim = 64.0f * fov__absf(w->dd);
-        w->mg = fovsdf__mg(m, w->tt);
+        w->mg = fovsdf__mg_ec(m, w->ec, w->tt);
         w->tb = w->tt; w->db = w->dd; w->mb = 0;
         w->ok = 0;
         /* the secant's end point has d2 ~ 0, so a forward move longer than d + 2 mg cannot be
@@ -4329,12 +4559,12 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             }
             if (!fov__finite3(w->a) || !fov__finite3(w->f)) goto ball_end;
             w->q[0] = w->f[0]; w->q[1] = w->f[1]; w->q[2] = w->f[2];
-            FOVSDF__YIELD_P(60u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(60u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             w->fb = w->res; w->m2 = w->resm;
             /* the secant found the surface (F at least 4 times closer than the hit; a ray
                running along a curved surface keeps the hit where the threshold stopped it),
                and F is not inside by more than the margin */
-            if (!(fov__absf(w->fb) <= 0.25f * w->dd && w->fb > -fovsdf__mg(m, w->t2)))
+            if (!(fov__absf(w->fb) <= 0.25f * w->dd && w->fb > -fovsdf__mg_ec(m, w->ec, w->t2)))
                 goto ball_end;
             /* the normal: the secant's slope is the derivative along the ray; two forward
                differences from F across it give the rest. The step: at least the threshold,
@@ -4344,7 +4574,8 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                d / (t2 - t)) */
             u = m->ulp0 + m->ulp1 * w->t2;
             s = w->t2 - w->tt;
-            w->e = fov__maxf(fovsdf__thr(m, w->t2), FOV__SQRT(u * (s * s / (2.0f * w->dd))));
+            w->e = fov__maxf(fovsdf__thr_ec(m, w->ec, w->t2),
+                             FOV__SQRT(u * (s * s / (2.0f * w->dd))));
             {
                 float ax[3] = { 0.0f, 0.0f, 0.0f };
                 k = fov__absf(w->rd[0]) <= fov__absf(w->rd[1])
@@ -4357,11 +4588,11 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             fov__cross(w->rd, w->b1, w->b2);
             for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b1[i];
             if (!fov__finite3(w->q)) goto ball_end;
-            FOVSDF__YIELD_P(61u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(61u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             w->g1 = w->res - w->fb;
             for (i = 0; i < 3; ++i) w->q[i] = w->f[i] + w->e * w->b2[i];
             if (!fov__finite3(w->q)) goto ball_end;
-            FOVSDF__YIELD_P(62u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(62u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             g2 = w->res - w->fb;
             for (i = 0; i < 3; ++i)
                 n[i] = w->slope * w->e * w->rd[i] + w->g1 * w->b1[i] + g2 * w->b2[i];
@@ -4379,7 +4610,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
             /* keep what the test needs after the evaluation: c in a, hr in b2[0] */
             for (i = 0; i < 3; ++i) { w->a[i] -= c[i]; w->f[i] -= c[i]; w->q[i] = c[i]; }
             w->b2[0] = hr;
-            FOVSDF__YIELD_P(63u, fovsdf__thr(m, w->t2), 1.0f);
+            FOVSDF__YIELD_P(63u, fovsdf__thr_ec(m, w->ec, w->t2), 1.0f);
             v = w->res; /* f(c) */
             if (!(v > 0.0f) || !(v < FLT_MAX)) goto ball_end;
             rr = v + w->mg - 4.0f * FLT_EPSILON * w->b2[0];
@@ -4406,7 +4637,7 @@ FOVSDF__PRIV int fovsdf__mco_run(const fovsdf__marcher *m0, fovsdf__mco *w)
                 FOVSDF__YIELD_T(51u, w->t2, 1.0f);
                 w->m2 = w->got ? w->resm : 0;
                 v = w->res;
-                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg(m, w->t2) &&
+                if (fov__absf(v) < fov__absf(w->d) && v > -fovsdf__mg_ec(m, w->ec, w->t2) &&
                     (w->dt <= fov__maxf(w->d, 0.0f) || w->dt <= w->d + v + 2.0f * w->mg)) {
                     w->t = w->t2; w->d = v; w->mat = w->m2;
                 }

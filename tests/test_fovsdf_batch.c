@@ -7,6 +7,7 @@
 #include "fovsdf.h"
 #include "fovcheck.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -21,7 +22,7 @@ static float rr(float a, float b) { return a + (b - a) * rnd(); }
 static uint32_t bits(float f) { uint32_t u; memcpy(&u, &f, 4); return u; }
 
 #define NPT 3000
-static float g_x[NPT], g_y[NPT], g_z[NPT], g_e[NPT], g_d[NPT];
+static float g_x[NPT], g_y[NPT], g_z[NPT], g_e[NPT], g_d[NPT], g_d2[NPT];
 static int32_t g_m[NPT];
 
 /* Points: along the scene camera's rays at random t (near and on surfaces), and in a box. */
@@ -58,7 +59,8 @@ static void make_points(const fovsdf_builtin *bi, float ext)
 static int compare(const char *name, const fovsdf_program *prog, float inflate)
 {
     uint32_t i, k, bad_d = 0, bad_m = 0, first = 0xffffffffu;
-    uint64_t pp = 0, ps = 0, bp = 0, bs = 0;
+    uint64_t pp = 0, ps = 0, bp = 0, bs = 0, bp2 = 0, bs2 = 0;
+    uint32_t rng0 = g_rng, bad_d2 = 0;
     for (i = 0; i < NPT; ++i) { g_d[i] = -123.0f; g_m[i] = -77; }
     for (k = 0; k < NPT;) {
         fovsdf_batch b;
@@ -71,6 +73,20 @@ static int compare(const char *name, const fovsdf_program *prog, float inflate)
         bp += b.prims; bs += b.prims_skipped;
         k += n;
     }
+    /* the same batches again without materials (the evaluator then tracks none) */
+    g_rng = rng0;
+    for (i = 0; i < NPT; ++i) g_d2[i] = -123.0f;
+    for (k = 0; k < NPT;) {
+        fovsdf_batch b;
+        uint32_t n = 1u + (uint32_t)(rnd() * 97.0f);
+        if (n > NPT - k) n = NPT - k;
+        memset(&b, 0, sizeof b);
+        b.n = n; b.x = g_x + k; b.y = g_y + k; b.z = g_z + k; b.eps = g_e + k;
+        b.inflate = inflate; b.d = g_d2 + k; b.material = 0;
+        fovsdf_program_eval_batch(&b, (void *)(uintptr_t)prog);
+        bp2 += b.prims; bs2 += b.prims_skipped;
+        k += n;
+    }
     for (i = 0; i < NPT; ++i) {
         fovsdf_query q;
         float p[3], d;
@@ -81,6 +97,7 @@ static int compare(const char *name, const fovsdf_program *prog, float inflate)
         pp += q.prims; ps += q.prims_skipped;
         if (bits(d) != bits(g_d[i])) { if (first == 0xffffffffu) first = i; ++bad_d; }
         if (q.material != g_m[i]) ++bad_m;
+        if (bits(d) != bits(g_d2[i])) ++bad_d2;
     }
     check(bad_d == 0, fovcheck_name("%s_inflate%g_distance_bits", name, (double)inflate),
           "%u of %d differ (first %u)", bad_d, NPT, first);
@@ -89,7 +106,12 @@ static int compare(const char *name, const fovsdf_program *prog, float inflate)
     check(pp == bp && ps == bs, fovcheck_name("%s_inflate%g_counts", name, (double)inflate),
           "prims %llu vs %llu, skipped %llu vs %llu", (unsigned long long)pp,
           (unsigned long long)bp, (unsigned long long)ps, (unsigned long long)bs);
-    return (int)(bad_d + bad_m);
+    check(bad_d2 == 0 && pp == bp2 && ps == bs2,
+          fovcheck_name("%s_inflate%g_no_material", name, (double)inflate),
+          "%u of %d distances differ; prims %llu vs %llu, skipped %llu vs %llu", bad_d2, NPT,
+          (unsigned long long)pp, (unsigned long long)bp2, (unsigned long long)ps,
+          (unsigned long long)bs2);
+    return (int)(bad_d + bad_m + bad_d2);
 }
 
 /* A random tree of every node type. */
@@ -177,6 +199,43 @@ static void bt_dist(fovsdf_batch *b, void *user)
     b->prims += b->n;
 }
 
+/* The lane floor (repeat, menger) against FOV__FLOOR, bit for bit (NaN: NaN), at the edges
+   of its integer conversion (2^23), signed zeros, infinities and random bit patterns. */
+static void check_vfloor(void)
+{
+#if !defined(FOV__HOOKED_MATH)
+    static const float v[] = { 0.0f, -0.0f, 0.25f, -0.25f, 0.5f, -0.5f, 1.0f, -1.0f, 1.5f,
+                               -1.5f, 2.0f, -2.0f, 1e-40f, -1e-40f, 8388607.5f, -8388607.5f,
+                               8388607.0f, -8388607.0f, 8388608.0f, -8388608.0f, 8388609.0f,
+                               -8388609.0f, 16777217.0f, 2147483648.0f, -2147483648.0f,
+                               4294967296.0f, -4294967296.0f, 1e30f, -1e30f, FLT_MAX, -FLT_MAX };
+    uint32_t i, bad = 0, first = 0, r = 7u;
+    for (i = 0; i < 200000u + (uint32_t)(sizeof v / sizeof v[0]); ++i) {
+        float x, a, b;
+        if (i < sizeof v / sizeof v[0]) {
+            x = v[i];
+        } else {
+            uint32_t u;
+            r = r * 1664525u + 1013904223u;
+            u = (i & 1u) ? r : (r & 0x8fffffffu) | 0x3f000000u; /* any, or |x| near 0.5..2^24 */
+            memcpy(&x, &u, 4);
+        }
+        a = fovsdf__vfloor(x);
+        b = FOV__FLOOR(x);
+        if (bits(a) != bits(b) && !(a != a && b != b)) {
+            if (!bad) first = bits(x);
+            ++bad;
+        }
+    }
+    {
+        float inf = FLT_MAX * 2.0f, nan = inf - inf;
+        float a = fovsdf__vfloor(inf), b = fovsdf__vfloor(-inf), c = fovsdf__vfloor(nan);
+        if (bits(a) != bits(inf) || bits(b) != bits(-inf) || c == c) ++bad;
+    }
+    check(bad == 0, "lane_floor_equals_floor", "%u differ (first input bits %08x)", bad, first);
+#endif
+}
+
 int main(void)
 {
     static unsigned char mem[1 << 20];
@@ -194,7 +253,19 @@ int main(void)
         compare(bi.name, bi.program, 1.0f);
         compare(bi.name, bi.program, 1.005f);
         compare(bi.name, bi.program, 0.97f);
+        {   /* far points: the repeat's floor beyond 2^23 and float range */
+            uint32_t rng0 = g_rng;
+            char nm[64];
+            snprintf(nm, sizeof nm, "%s_far", bi.name);
+            make_points(&bi, 3e7f);
+            compare(nm, bi.program, 1.0f);
+            snprintf(nm, sizeof nm, "%s_very_far", bi.name);
+            make_points(&bi, 1e30f);
+            compare(nm, bi.program, 1.0f);
+            g_rng = rng0; /* the random scenes below stay the ones they were */
+        }
     }
+    check_vfloor();
     for (r = 0; r < 40; ++r) {
         static fovsdf_node nodes[512];
         static unsigned char pm[1 << 19];
