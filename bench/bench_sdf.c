@@ -410,7 +410,16 @@ static void row_print(FILE *csv, const row_t *r, double naive_ms)
             BENCH_SIMD, BENCH_SDF_BUILD);
 }
 
-/* prints a group's rows, then M_cb (the faster of M_cb_point and M_cb_batch) for each M */
+/* the length of M in a row named M_cb_point or M_cb_batch, else 0 */
+static size_t cb_prefix(const char *method)
+{
+    size_t l = strlen(method);
+    if (l > 9 && (!strcmp(method + l - 9, "_cb_point") || !strcmp(method + l - 9, "_cb_batch"))) return l - 9;
+    return 0;
+}
+
+/* prints a group's rows, and after the last M_cb_* row of each M the row M_cb: a copy of the
+   faster of M_cb_point and M_cb_batch */
 static void flush_group(FILE *csv, row_t *rows, int n)
 {
     double naive_ms = 0.0;
@@ -418,18 +427,19 @@ static void flush_group(FILE *csv, row_t *rows, int n)
     for (i = 0; i < n; ++i)
         if (!strcmp(rows[i].method, "naive")) naive_ms = rows[i].ms;
     for (i = 0; i < n; ++i) {
-        size_t l = strlen(rows[i].method);
+        size_t l = cb_prefix(rows[i].method);
+        int last = 1, best = i;
         row_print(csv, &rows[i], naive_ms);
-        if (l > 9 && !strcmp(rows[i].method + l - 9, "_cb_point")) {
-            row_t best = rows[i];
-            for (j = 0; j < n; ++j) {
-                size_t lj = strlen(rows[j].method);
-                if (lj == l && !strncmp(rows[j].method, rows[i].method, l - 9) &&
-                    !strcmp(rows[j].method + l - 9, "_cb_batch") && rows[j].ms < best.ms)
-                    best = rows[j];
+        if (l == 0) continue;
+        for (j = 0; j < n; ++j)
+            if (j != i && cb_prefix(rows[j].method) == l && !strncmp(rows[j].method, rows[i].method, l)) {
+                if (j > i) last = 0;
+                if (rows[j].ms < rows[best].ms) best = j;
             }
-            snprintf(best.method, sizeof best.method, "%.*s_cb", (int)(l - 9), rows[i].method);
-            row_print(csv, &best, naive_ms);
+        if (last) {
+            row_t b = rows[best];
+            snprintf(b.method, sizeof b.method, "%.*s_cb", (int)l, rows[i].method);
+            row_print(csv, &b, naive_ms);
         }
     }
     fflush(csv);
