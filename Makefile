@@ -9,7 +9,9 @@
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
 #                          moving camera and gaze, bench/results/lp_moving.csv;
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
-#                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid
+#                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid;
+#                make bench-sdf-native / bench-sdf-nosimd add rows of a -march=native and a
+#                FOVSDF_NO_SIMD build to sdf.csv, bench-sdf-all runs the three builds
 #   make fuzz    fuzz every tests/fuzz/fuzz_<target>.c with libFuzzer (clang) for FUZZ_SECONDS
 #                (default 60) each; new inputs go to build/fuzz/corpus/<target>/, crashes to
 #                build/fuzz/crashes/<target>/; make fuzz FUZZ_SECONDS=10 FUZZ_TARGETS=fovsdf
@@ -26,7 +28,8 @@ STD     := -std=c99 -D_POSIX_C_SOURCE=200809L
 WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
-.PHONY: all demo test fuzz examples gallery bench bench-sdf bench-lp bench-pt clean install
+.PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
+        bench-sdf-all bench-lp bench-pt clean install
 
 all: examples
 
@@ -38,7 +41,7 @@ $(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h examples/common.h examples/f
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
-$(BUILD)/bench_sdf: bench/bench_sdf.c fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
+$(BUILD)/bench_sdf: bench/bench_sdf.c bench/sdf_naive.h fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
@@ -86,6 +89,28 @@ fuzz:
 bench-sdf: $(BUILD)/bench_sdf
 	@mkdir -p bench/results
 	./$(BUILD)/bench_sdf $(if $(FULL),--full) $(BENCH_ARGS)
+
+# the second builds of bench-sdf: -O2 -march=native, and -DFOVSDF_NO_SIMD (scalar); their rows
+# are appended to bench/results/sdf.csv (columns simd and build tell them apart);
+# make bench-sdf-all runs the three builds one after the other
+$(BUILD)/bench_sdf_native: bench/bench_sdf.c bench/sdf_naive.h fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) -O2 -march=native -DBENCH_SDF_BUILD='"native"' -Wall -Wextra -I. $< -lm -pthread -o $@
+
+$(BUILD)/bench_sdf_nosimd: bench/bench_sdf.c bench/sdf_naive.h fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -DFOVSDF_NO_SIMD -DBENCH_SDF_BUILD='"nosimd"' -Wall -Wextra -I. $< -lm -pthread -o $@
+
+bench-sdf-native: $(BUILD)/bench_sdf_native
+	@mkdir -p bench/results
+	./$(BUILD)/bench_sdf_native --append $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench-sdf-nosimd: $(BUILD)/bench_sdf_nosimd
+	@mkdir -p bench/results
+	./$(BUILD)/bench_sdf_nosimd --append $(if $(FULL),--full) $(BENCH_ARGS)
+
+bench-sdf-all: bench-sdf
+	$(MAKE) bench-sdf-native bench-sdf-nosimd
 
 bench-pt: $(BUILD)/bench_pt
 	@mkdir -p bench/results

@@ -10,7 +10,7 @@
 # the closing line stays. A T that matches no section exits 2 and lists the sections. Without
 # T everything runs. The sections, in order:
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
-#     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf,
+#     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
 #     srgb8_fovlp, api_stress, versions, stats, camera, errors errors_nostrings,
 #     style shared refs, unit_metrics
@@ -129,6 +129,7 @@ three_builds props_fovsdf tests/test_fovsdf_props.c
 three_builds batch_fovsdf tests/test_fovsdf_batch.c
 three_builds wave_fovsdf tests/test_fovsdf_wave.c
 run_section wave_variants bash tests/wave_variants.sh
+three_builds naive_sdf tests/test_sdf_naive.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
