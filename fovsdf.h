@@ -5442,10 +5442,10 @@ typedef struct fovsdf__wray {
 } fovsdf__wray;
 
 /* The shadow proof of a group of shadow rays (fovsdf__wave_flush, step 4): rays q_i + t l_i,
-   t in [t0_i, dist_i], all within R + th t of the axis point c + t a (R: the origins' spread
-   around c; th: max |l_i - a|, 0 for a directional light). Lipschitz 1 along the axis: if
-   F = f(c + s a), every ray point with t in [s, s + d] has f >= F - d - R - th (s + d), so
-   k f >= t there while d <= (k (F - R - th s) - s) / (k (1 + th) + 1). The axis march extends
+   t in [t0_i, dist_i], all within R of the axis point c + t a (R: the origins' spread
+   around c; a directional light's rays are parallel). Lipschitz 1 along the axis: if
+   F = f(c + s a), every ray point with t in [s, s + d] has f >= F - d - R, so
+   k f >= t there while d <= (k (F - R) - s) / (k + 1). The axis march extends
    a run of such steps; a step that fails starts the run again further on. A run that reaches
    T = max dist_i proves that from its start (split) on every sample of every ray has
    k h / t >= 1: Algorithm 2's minimum cannot drop there, so each ray marches only up to
@@ -5455,7 +5455,7 @@ typedef struct fovsdf__wray {
    point c + u D a, at t = u dist_i <= u T, and a step d in u is safe while
    d <= (k (F - (1 - u) R) - u T) / (k D + T); the split is u * dist_i per ray. */
 typedef struct fovsdf__gco {
-    float c[3], a[3], R, th, T, k, s, start, eps, split, mg, D; /* D > 0: point light at c + D a,
+    float c[3], a[3], R, T, k, s, start, eps, split, mg, D; /* D > 0: point light at c + D a,
                                                                    s is the fraction u */
     uint32_t evals, n0, n;          /* axis evaluations; members gm[n0 .. n0 + n) */
     int done;
@@ -5579,14 +5579,14 @@ FOVSDF__PRIV int fovsdf__gco_next(fovsdf__gco *g, float F)
         room = F - g->mg - (1.0f - g->s) * g->R;
         d = (kk * room - g->s * g->T) / (kk * g->D + g->T);
     } else {
-        room = F - g->mg - g->R - g->th * g->s;
-        d = (kk * room - g->s) / (kk * (1.0f + g->th) + 1.0f);
+        room = F - g->mg - g->R;
+        d = (kk * room - g->s) / (kk + 1.0f);
     }
     if (d > 1e-3f * g->s + 1e-6f && fov__finite(d)) {
         g->s += d;
     } else { /* not provable here: a new run starts further on */
         float adv = g->D > 0.0f ? fov__maxf(room, 0.0f) / g->D
-                                : fov__maxf(room, 0.0f) / (1.0f + g->th);
+                                : fov__maxf(room, 0.0f);
         g->s = fov__maxf(g->s + adv, 2.0f * g->s + (g->D > 0.0f ? 1e-3f / g->D : 1e-3f));
         g->start = g->s;
     }
@@ -5645,7 +5645,6 @@ FOVSDF__PRIV void fovsdf__wave_proofs(fovsdf__wave *w, uint32_t li, uint32_t nm)
         }
         /* widened by a few ulps of the sums (and of the positions: mg) */
         G->R = FOV__SQRT(r2) * 1.0001f + 1e-6f;
-        G->th = 0.0f; /* a directional light: parallel rays; a point light: the fraction form */
         /* a point light's ray leaves q = p + off n towards L from p: off more from the axis */
         G->mg = 16.0f * FLT_EPSILON * (fov__len(G->c) + G->T) + 1e-6f + (G->D > 0.0f ? off : 0.0f);
         /* the built-in program decides its bounds with the threshold: for the axis point, a
