@@ -516,6 +516,34 @@ typedef struct fov_ecc_model {
     float g[3];      /* unit direction of the gaze ray */
 } fov_ecc_model;
 
+/* The eye's resolution, for acuity-driven foveation. The minimum angle of resolution (MAR, the
+   smallest gap the eye sees) grows linearly with the eccentricity e in degrees (Guenter, Finch,
+   Drucker, Tan and Snyder, "Foveated 3D Graphics", 2012):  MAR(e) = mar0 + slope e. Their user
+   study puts the slope at 1.32 (conservative: users judged the foveated image as good as or
+   better than full resolution) to 1.65 arc minutes per degree (aggressive); 1 arc minute is
+   the MAR of 20/20 vision at the gaze. A sampling that follows the eye places its samples at
+   most quality * MAR(e) apart. A zero field takes its default. */
+typedef struct fov_eye {
+    float mar0_arcmin;  /* MAR at the gaze, arc minutes, (0, 60]                      0: 1 */
+    float slope_arcmin; /* MAR growth, arc minutes per degree, (0, 60]             0: 1.32 */
+    float quality;      /* the one quality knob: allowed sample spacing as a multiple of the
+                           MAR, (0, 100]; 1 = matched to the eye, below 1 safer, above 1
+                           coarser than the eye resolves                              0: 1 */
+} fov_eye;
+
+/* What a display needs, from fov_eye and the display's pixels per degree (ppd). Each header's
+   _eye_plan fills it from an eccentricity model: ppd is the coarsest on the image, f_px pi /
+   180 at the eye's axis (a flat display's pixels subtend less away from the axis, so this errs
+   on the safe side). e_X = the eccentricity in degrees from which a sample per X display pixels
+   along each axis is as fine as the eye resolves; a display coarser than the eye out to E has
+   e_full >= E, so a sampling that follows the plan keeps every pixel inside E. */
+typedef struct fov_eye_plan {
+    float ppd;       /* display pixels per degree used */
+    float e_full;    /* inside: every pixel needs its own sample (no reduction)  */
+    float e_half;    /* from here a sample per 2 x 2 pixels suffices */
+    float e_quarter; /* from here a sample per 4 x 4 pixels suffices */
+} fov_eye_plan;
+
 #ifdef __cplusplus
 }
 #endif
@@ -919,6 +947,17 @@ FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *display
                                     fov_gaze gaze);
 FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y); /* degrees */
 FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m);
+/* The eye's resolution (the shared model; see fov_eye; eye NULL = the defaults). _eye_mar: the
+   allowed sample spacing at ecc_deg, quality * MAR, degrees (0 for bad input). _eye_density:
+   the linear samples per display pixel the eye needs there for a display of ppd pixels per
+   degree, (0, 1] (1 for bad input). _eye_ecc: the eccentricity, [0, 180] degrees, from which a
+   linear density suffices (its inverse; bad input: 0 for density >= 1, else 180). _eye_plan:
+   fov_eye_plan for an eccentricity model (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG). */
+FOVPT_API float fovpt_eye_mar(const fov_eye *eye, float ecc_deg);
+FOVPT_API float fovpt_eye_density(const fov_eye *eye, float ppd, float ecc_deg);
+FOVPT_API float fovpt_eye_ecc(const fov_eye *eye, float ppd, float density);
+FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
+                                    fov_eye_plan *plan);
 
 /* Context: working memory for a config and camera, then init (validates everything). */
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
@@ -1523,6 +1562,73 @@ FOV__PRIV float fov__ecc_ppd(const fov_ecc_model *m)
     ppd = (m->f_px * m->f_px + r2) / m->f_px * FOV__DEG;
     return ppd <= 3.4028235e38f ? ppd : 3.4028235e38f; /* gaze beyond ~1e19 px: FLT_MAX */
 }
+
+/* ---- the eye's resolution (see fov_eye) ------------------------------------------------- */
+/* The eye's fields with defaults, in degrees: mar0, slope and quality; 0 on bad fields. */
+FOV__PRIV int fov__eye_get(const fov_eye *e, float *mar0, float *slope, float *q)
+{
+    float a = e ? e->mar0_arcmin : 0.0f, b = e ? e->slope_arcmin : 0.0f;
+    float c = e ? e->quality : 0.0f;
+    if (fov__is0(a)) a = 1.0f;
+    if (fov__is0(b)) b = 1.32f;
+    if (fov__is0(c)) c = 1.0f;
+    if (!(a > 0.0f && a <= 60.0f) || !(b > 0.0f && b <= 60.0f) || !(c > 0.0f && c <= 100.0f))
+        return 0;
+    *mar0 = a / 60.0f; *slope = b / 60.0f; *q = c;
+    return 1;
+}
+
+/* The allowed sample spacing at eccentricity ecc, degrees: quality * MAR(ecc); 0 on bad input. */
+FOV__PRIV float fov__eye_mar(const fov_eye *e, float ecc)
+{
+    float w0, m, q;
+    if (!fov__eye_get(e, &w0, &m, &q) || !(ecc >= 0.0f && ecc <= 180.0f)) return 0.0f;
+    return q * (w0 + m * ecc);
+}
+
+/* The linear sample density the eye needs at ecc, in samples per display pixel along each axis,
+   in (0, 1]: min(1, 1 / (ppd spacing)). Bad input: 1 (every pixel, the safe answer). */
+FOV__PRIV float fov__eye_density(const fov_eye *e, float ppd, float ecc)
+{
+    float s = fov__eye_mar(e, ecc), d;
+    if (!(s > 0.0f) || !(ppd > 0.0f) || !fov__finite(ppd)) return 1.0f;
+    d = 1.0f / (ppd * s);
+    return d < 1.0f ? d : 1.0f;
+}
+
+/* The eccentricity in degrees, [0, 180], from which a linear density `density` (0, 1] is as
+   fine as the eye resolves: the inverse of fov__eye_density. Bad input: 0 for a density of 1
+   or more, 180 (never) otherwise: the safe answers. */
+FOV__PRIV float fov__eye_ecc(const fov_eye *e, float ppd, float density)
+{
+    float w0, m, q, x;
+    if (!fov__eye_get(e, &w0, &m, &q) || !(ppd > 0.0f) || !fov__finite(ppd) ||
+        !(density > 0.0f) || !fov__finite(density))
+        return density >= 1.0f ? 0.0f : 180.0f;
+    if (density >= 1.0f) density = 1.0f;
+    x = (1.0f / (ppd * density * q) - w0) / m;
+    if (!(x > 0.0f)) return 0.0f;
+    return x < 180.0f ? x : 180.0f;
+}
+
+FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov_eye_plan *out)
+{
+    float w0, sl, q, ppd;
+    if (!m || !out) return FOV_ERR_NULL;
+    if (!fov__eye_get(e, &w0, &sl, &q)) {
+        if (e && (!fov__finite(e->mar0_arcmin) || !fov__finite(e->slope_arcmin) ||
+                  !fov__finite(e->quality)))
+            return FOV_ERR_NOT_FINITE;
+        return FOV_ERR_INVALID_ARG;
+    }
+    ppd = m->f_px * FOV__DEG;
+    if (!(ppd > 0.0f) || !fov__finite(ppd)) return FOV_ERR_INVALID_ARG;
+    out->ppd = ppd;
+    out->e_full = fov__eye_ecc(e, ppd, 1.0f);
+    out->e_half = fov__eye_ecc(e, ppd, 0.5f);
+    out->e_quarter = fov__eye_ecc(e, ppd, 0.25f);
+    return FOV_OK;
+}
 #endif /* FOV__SHARED_IMPL_INCLUDED */
 /* ==== FOV_SHARED_END impl ==================================================================== */
 
@@ -1624,6 +1730,15 @@ FOVPT_API float fovpt_ecc_deg(const fov_ecc_model *m, float x, float y)
     return fov__ecc_deg(m, x, y);
 }
 FOVPT_API float fovpt_ecc_ppd(const fov_ecc_model *m) { return fov__ecc_ppd(m); }
+FOVPT_API float fovpt_eye_mar(const fov_eye *eye, float ecc_deg)
+{ return fov__eye_mar(eye, ecc_deg); }
+FOVPT_API float fovpt_eye_density(const fov_eye *eye, float ppd, float ecc_deg)
+{ return fov__eye_density(eye, ppd, ecc_deg); }
+FOVPT_API float fovpt_eye_ecc(const fov_eye *eye, float ppd, float density)
+{ return fov__eye_ecc(eye, ppd, density); }
+FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
+                                    fov_eye_plan *plan)
+{ return fov__eye_plan(eye, m, plan); }
 
 FOVPT_API const char *fovpt_method_name(uint32_t method)
 {
