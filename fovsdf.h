@@ -481,7 +481,7 @@ RECENT REVISION HISTORY
    failure calls it with a code, a specific message and the header's source line. */
 #ifndef FOV_SHARED_DECL_INCLUDED
 #define FOV_SHARED_DECL_INCLUDED 1
-#define FOV_SHARED_REVISION 1 /* the revision of this block; headers that differ must not mix */
+#define FOV_SHARED_REVISION 2 /* the revision of this block; headers that differ must not mix */
 
 #include <stddef.h>
 #include <stdint.h>
@@ -651,7 +651,7 @@ typedef struct fov_eye_plan {
 #ifdef __cplusplus
 }
 #endif
-#elif FOV_SHARED_REVISION != 1
+#elif FOV_SHARED_REVISION != 2
 #error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
 #endif /* FOV_SHARED_DECL_INCLUDED */
 /* ==== FOV_SHARED_END decl ==================================================================== */
