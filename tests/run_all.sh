@@ -12,7 +12,7 @@
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     srgb8_fovlp, api_stress, versions, stats, camera, errors errors_nostrings,
+#     srgb8_fovlp, api_stress, versions, stats, camera, eye, errors errors_nostrings,
 #     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
@@ -155,6 +155,8 @@ three_builds stats tests/test_stats.c
 run_section style bash tests/style.sh
 # fov_camera: one type, the same defaults and handedness in the three headers, rays agree
 three_builds camera tests/test_camera.c
+# fov_eye: the shared eye model against Guenter et al. 2012, densities, plans, bad input
+three_builds eye tests/test_eye.c
 # errors name the field and the rule, once per failure, in the default build (and with
 # FOV_NO_ERROR_STRINGS: the codes still logged, every message "")
 three_builds errors tests/test_errors.c
