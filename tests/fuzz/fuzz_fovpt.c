@@ -90,6 +90,16 @@ static fz_ref fz_reference(const float *pos, uint32_t nt, const float o[3], cons
         }
         tol = 1e-4 * (t < 0.0 ? -t : t) + 1e-30;
         if (!(t > (double)tmin + tol + 1e-4 * (tmin < 0.0f ? -(double)tmin : (double)tmin) && t < (double)tmax - tol)) continue;
+        /* nor closer to tmin or tmax than the float ray's own rounding (1e-5 |o| / |d|, the tolerance
+           the caller's check allows): a float test cannot tell such a t from tmin (found:
+           o = (-175000, -375000, -175000) on a triangle's plane to 0.001, its products of
+           1e10 round the t to exactly 0, no hit after tmin 0) */
+        {
+            double om = 0.0;
+            for (k = 0; k < 3; ++k) om = fabs((double)o[k]) > om ? fabs((double)o[k]) : om;
+            if (!(t > (double)tmin + 1e-5 * om / sqrt(dl))) continue;
+            if (!(t < (double)tmax - 1e-5 * om / sqrt(dl))) continue; /* the same at tmax */
+        }
         /* far beyond float range of the geometry: the float test cannot resolve it */
         if (!(t < 1e30)) continue;
         if (!r.clear || t < r.t_clear) { r.clear = 1; r.t_clear = t; }
