@@ -2947,6 +2947,32 @@ FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside 
     float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2])));
     return !(m >= 2.3283064365386963e-10f && m <= 4294967296.0f);
 }
+/* The floats next to finite x, up and down (for the rescaled t below). */
+FOVPT__PRIV float fovpt__next_up(float x)
+{
+    uint32_t u;
+    if (fov__is0(x)) u = 1u; /* the smallest positive subnormal */
+    else {
+        FOV_MEMCPY(&u, &x, sizeof u);
+        if (x > 0.0f) u += 1u; else u -= 1u;
+    }
+    FOV_MEMCPY(&x, &u, sizeof x);
+    return x;
+}
+FOVPT__PRIV float fovpt__next_down(float x) { return -fovpt__next_up(-x); }
+
+/* t along dir from t along dir / sc (sc a power of 2, so the division is exact unless it under-
+   or overflows): a hit found inside the scaled (tmin, tmax) lies inside (tmin, tmax); when the
+   quotient rounds onto a bound, the nearest float inside. Returns 0 if there is none. */
+FOVPT__PRIV int fovpt__unscale_t(float ts, float sc, float tmin, float tmax, float *t)
+{
+    float u = ts / sc;
+    if (!(u > tmin)) u = fovpt__next_up(tmin);
+    if (!(u < tmax)) u = fovpt__next_down(tmax);
+    *t = u;
+    return u > tmin && u < tmax;
+}
+
 FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
 {
     float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2]))),
@@ -3177,11 +3203,9 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
         slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0);
-        if (slot != FOVPT_PRIM_NONE) {
-            t = ts / sc;
-            if (!(t > tmin && t < tmax)) { /* under/overflow of the rescale */
-                slot = FOVPT_PRIM_NONE; t = tmax;
-            }
+        if (slot != FOVPT_PRIM_NONE && !fovpt__unscale_t(ts, sc, tmin, tmax, &t)) {
+            slot = FOVPT_PRIM_NONE; /* no float strictly inside (tmin, tmax) */
+            t = tmax;
         }
     }
     if (s->user_hit) {
@@ -3260,16 +3284,11 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
         float ds[3], sc = fovpt__dir_scale(dir, ds);
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         t = tmax * sc;
+        /* any hit inside the scaled interval is one inside (tmin, tmax), t rounded onto the
+           nearest float inside as fovpt_intersect reports it (fovpt__unscale_t) */
         if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1) != FOVPT_PRIM_NONE) {
-            float tt = t / sc;
-            if (tt > tmin && tt < tmax) return 1;
-            /* the first hit found does not rescale into (tmin, tmax) (t / sc overflowed):
-               decide on the closest hit, as fovpt_intersect does */
-            t = tmax * sc;
-            if (fovpt__closest(s, &r, tmin * sc, &t, 0, 0) != FOVPT_PRIM_NONE) {
-                tt = t / sc;
-                if (tt > tmin && tt < tmax) return 1;
-            }
+            float tt;
+            if (fovpt__unscale_t(t, sc, tmin, tmax, &tt)) return 1;
         }
     }
     if (s->user_hit) {
