@@ -180,11 +180,13 @@ fi
 
 # --- fuzz harnesses (tests/fuzz/fuzz_*.c): the committed corpus and regression inputs
 # replayed without libFuzzer (gcc ASan+UBSan and -O2 FOV_NO_LIBM), then a bounded libFuzzer
-# run of each target (FUZZ_SECONDS, default 20 here, libFuzzer seed FUZZ_SEED, default 1 here;
+# run of each target (FUZZ_SECONDS, default 20 here, libFuzzer seed FUZZ_SEED, default 1 here,
+# at most FUZZ_RUNS executions, default 100000 here: the same inputs on any machine;
 # clang and libclang-rt-14-dev, a
 # failure when missing under CI=true; crashes saved under build/fuzz/crashes/)
 run_section fuzz_replay bash tests/fuzz/run.sh replay
-FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} run_section fuzz bash tests/fuzz/run.sh fuzz
+FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_RUNS=${FUZZ_RUNS:-100000} \
+    run_section fuzz bash tests/fuzz/run.sh fuzz
 
 # --- examples: they build warning-free and the demo's tracers agree with the ground truth --
 run_section examples bash tests/examples.sh

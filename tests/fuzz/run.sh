@@ -20,6 +20,11 @@
 #   FUZZ_MAX_LEN   libFuzzer -max_len (default 4096)
 #   FUZZ_TIMEOUT   libFuzzer -timeout per input, seconds (default 10): slower is a failure
 #   FUZZ_SEED      libFuzzer -seed (default: none, a random seed; make test passes 1)
+#   FUZZ_RUNS      at most this many executions per target (libFuzzer -runs; default: no
+#                  limit; make test passes 100000): with FUZZ_SEED fixed and a clean
+#                  build/fuzz/corpus, the run explores the same inputs on every machine, a
+#                  prefix of them when FUZZ_SECONDS runs out first, so a faster machine does not
+#                  explore inputs a slower one never checked
 #   FUZZ_FLAGS     extra libFuzzer flags (e.g. "-jobs=2 -workers=2", "-only_ascii=1")
 #   CC             the compiler of the replay builds (default gcc); FUZZ_CC the libFuzzer
 #                  compiler (default clang)
@@ -212,6 +217,9 @@ do_fuzz() {
         # FUZZ_SEED: libFuzzer's -seed (make test fixes it, so that a commit's fuzz section
         # explores the same inputs in every run up to the time limit)
         if [ -n "${FUZZ_SEED:-}" ]; then limit+=(-seed="$FUZZ_SEED"); fi
+        if [ "${FUZZ_RUNS:-0}" -gt 0 ] 2>/dev/null && [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then
+            limit+=(-runs="$FUZZ_RUNS")
+        fi
         # shellcheck disable=SC2086
         "$B/fuzz_$t" "${limit[@]}" -max_len="$FUZZ_MAX_LEN" \
             -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 -artifact_prefix="$B/crashes/$t/" \
