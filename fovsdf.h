@@ -774,6 +774,10 @@ typedef struct fovsdf_config {
                                pixels) instead of the mid level, blended over a band of
                                FOVSDF_QUARTER_BAND pixels; >= acuity.fovea_deg, <= 180
                                                                            0: none (mid level) */
+    uint32_t level_filter;  /* FIPR and CONE_FOV: 1 = the mid and quarter levels' samples take
+                               their cell's mean albedo (a prefiltered texture: no aliasing of
+                               textures the sparse rays would point-sample; no extra distance
+                               evaluations); 0: point samples */
     uint32_t refresh;       /* pixels outside the mask are refreshed every refresh-th frame:
                                1, 2 or 4 (the thesis's 1/1, 1/2, 1/4 rates)          0: 1 */
     uint32_t frame;         /* frame number: which quarter or half of the periphery refreshes */
@@ -2225,6 +2229,7 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
     cfg->quarter_deg = pl.e_quarter < 180.0f ? fov__maxf(pl.e_quarter, fovea) : 0.0f;
     cfg->refresh = 1u; /* the periphery is the part of the visual field most sensitive to flicker */
     cfg->fov_mask = (uint32_t)FOVSDF_MASK_FOVEA;
+    cfg->level_filter = 1u;
     return FOV_OK;
 }
 
@@ -2349,6 +2354,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
                          "config.acuity.outer_deg must exceed fovea_deg (0: 7.5)");
         if (fov__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
+        if (c.level_filter > 1u)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.level_filter must be 0 or 1");
         if (c.quarter_deg > 180.0f)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.quarter_deg must be <= 180 (0: none)");
         if (c.quarter_deg > 0.0f && c.quarter_deg < c.acuity.fovea_deg)
@@ -5657,6 +5664,8 @@ typedef struct fovsdf__wave {
         bd[FOVSDF__L + 4];
     int32_t bm[FOVSDF__L + 4];
     uint32_t bk[FOVSDF__L + 4];
+    uint32_t afoot;                 /* level_filter: the shaded rays are level samples of cells
+                                       of afoot x afoot pixels (0: point samples) */
 } fovsdf__wave;
 
 FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const fovsdf_output *o,
@@ -5666,6 +5675,7 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
     w->spp = c->cfg.spp;
     w->cap = FOVSDF_WAVE / c->cfg.spp;
     w->prgb = 0; w->pt = 0; w->pmat = 0;
+    w->afoot = 0;
 }
 
 /* The wavefront's evaluations: n <= FOVSDF_BATCH points as fovsdf__eval_batch, or point by point
@@ -5900,6 +5910,47 @@ FOVSDF__PRIV void fovsdf__wave_normals(fovsdf__wave *w, uint32_t nr, const float
 /* Steps 2 to 4 of a flush: the colour of each marched ray w->ray[0 .. nr) into ray[k].col,
    as fovsdf__shade_ray (per: rays per job, whose SKIP shadow head starts they use; 0: none);
    ray[k].sev: its shading evaluations. */
+/* level_filter: the albedo of a level sample (a ray through the centre of a cell of S x S
+   pixels) averaged over its cell, a box prefilter of the texture: 2S x 2S points on a regular
+   grid over the cell (4 per pixel, at the 4-spp grid's spacing), each where its ray meets the
+   tangent plane of the hit (p, normal n), with the hit's material; a ray that would meet the
+   plane behind the camera, from its other side or more grazing than a quarter of the centre
+   ray's incidence keeps the centre's point. No distance evaluations. */
+FOVSDF__PRIV void fovsdf__albedo_cell(const fovsdf_ctx *c, const float p[3], const float n[3],
+                                      const fovsdf__mco *mc, uint32_t S, float rgb[3])
+{
+    float d0[3], du[3], dv[3], q[3], a[3], dn0, rf, pn, sx, sy, inv;
+    uint32_t i, j, N = 2u * S;
+    int k;
+    rf = fov__dot(mc->rd, c->fwd);
+    if (!(rf > 1e-6f)) { fovsdf__albedo(c, p, mc->mat, rgb); return; }
+    sx = 2.0f * c->tan_half_y * c->aspect / (float)c->cam.width;
+    sy = -2.0f * c->tan_half_y / (float)c->cam.height;
+    for (k = 0; k < 3; ++k) {
+        d0[k] = mc->rd[k] / rf; /* the centre ray's direction with unit depth along fwd */
+        du[k] = sx * c->right[k]; dv[k] = sy * c->up[k];
+        q[k] = p[k] - mc->ro[k];
+    }
+    dn0 = fov__dot(d0, n);
+    pn = fov__dot(q, n);
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    inv = 1.0f / (float)(N * N);
+    for (j = 0; j < N; ++j)
+        for (i = 0; i < N; ++i) {
+            float ox = ((float)i + 0.5f) * 0.5f - 0.5f * (float)S,
+                  oy = ((float)j + 0.5f) * 0.5f - 0.5f * (float)S, d[3], dn, t, x[3];
+            for (k = 0; k < 3; ++k) d[k] = d0[k] + ox * du[k] + oy * dv[k];
+            dn = fov__dot(d, n);
+            t = dn * dn0 > 0.0f && fov__absf(dn) >= 0.25f * fov__absf(dn0) ? pn / dn : -1.0f;
+            if (t > 0.0f && fov__finite(t))
+                for (k = 0; k < 3; ++k) x[k] = mc->ro[k] + d[k] * t;
+            else
+                for (k = 0; k < 3; ++k) x[k] = p[k];
+            fovsdf__albedo(c, x, mc->mat, a);
+            rgb[0] += a[0] * inv; rgb[1] += a[1] * inv; rgb[2] += a[2] * inv;
+        }
+}
+
 FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, uint32_t nr,
                                      uint32_t per)
 {
@@ -5953,7 +6004,8 @@ FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, 
             r->lit = 0;
             continue;
         }
-        fovsdf__albedo(c, r->p, r->mc.mat, r->alb);
+        if (w->afoot) fovsdf__albedo_cell(c, r->p, r->n, &r->mc, w->afoot, r->alb);
+        else fovsdf__albedo(c, r->p, r->mc.mat, r->alb);
         r->acc[0] = c->scene.ambient[0]; r->acc[1] = c->scene.ambient[1];
         r->acc[2] = c->scene.ambient[2];
         r->off = fovsdf__shadow_off(c, r->p);
@@ -7117,7 +7169,9 @@ FOVSDF__PRIV void fovsdf__fov_cells_run(fovsdf__fovt *f, fovsdf__mid *cells, con
                     f->st->evals_lowres += hk->evals;
                 }
             } else {
+                f->wv->afoot = c->cfg.level_filter ? (uint32_t)S : 0u;
                 fovsdf__wave_shade_rays(f->wv, f->mp, n, px, py, h, mat, rgb);
+                f->wv->afoot = 0;
                 for (k = 0; k < n; ++k) {
                     fovsdf__mid *m = &cells[id[k]];
                     m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];

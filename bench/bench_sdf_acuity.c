@@ -91,8 +91,9 @@ int main(int argc, char **argv)
                           "fipr_acuity";
     static const char *const all[] = { "classic", "cone_fov", "cone_fov_acuity",
                                        "cone_fov_acuity_edges", "cone_fov_acuity_noq",
-                                       "fipr_acuity", "fipr" };
-    const int nall = 7;
+                                       "fipr_acuity", "fipr", "cone_fov_acuity_lf",
+                                       "cone_fov_acuity_noq_lf", "cone_fov_acuity_pt" };
+    const int nall = 10;
     for (a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--size") && a + 2 < argc) { W = atoi(argv[++a]); H = atoi(argv[++a]); }
         else if (!strcmp(argv[a], "--fovy") && a + 1 < argc) fovy = (float)atof(argv[++a]);
@@ -189,6 +190,8 @@ int main(int argc, char **argv)
                     if (fovsdf_config_acuity(&cfg, &bi.camera, &eye) != FOV_OK) return 1;
                     if (strstr(m, "_edges")) cfg.fov_mask = FOVSDF_MASK_EDGES;
                     if (strstr(m, "_noq")) cfg.quarter_deg = 0.0f;
+                    if (strstr(m, "_lf")) cfg.level_filter = 1u;
+                    if (strstr(m, "_pt")) cfg.level_filter = 0u;
                 }
                 if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) {
                     fprintf(stderr, "init %s failed\n", m);
