@@ -29,7 +29,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt clean install
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity clean install
 
 all: examples
 
@@ -44,6 +44,14 @@ $(BUILD)/sdf_scenes: examples/sdf_scenes.c fovsdf.h examples/common.h examples/f
 $(BUILD)/bench_sdf: bench/bench_sdf.c bench/sdf_naive.h fovsdf.h tests/common/fovimg.h examples/common.h examples/fovmetrics.h examples/fovrun.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+# fovsdf's acuity-driven foveation against full resolution at one display (not in make bench)
+$(BUILD)/bench_sdf_acuity: bench/bench_sdf_acuity.c fovsdf.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+bench-sdf-acuity: $(BUILD)/bench_sdf_acuity
+	./$(BUILD)/bench_sdf_acuity $(ARGS)
 
 $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 	@mkdir -p $(BUILD)
