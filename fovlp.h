@@ -2046,8 +2046,9 @@ FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *
     a.R = FOV__SQRT(a.W * a.W + a.H * a.H);
     a.L = FOV__LOG(fov__maxf(a.R, 2.0f));
     /* the disc: at least where the eye needs every pixel (e_full), at most q = 0.98 */
-    r_lo = fov__maxf(a.f * FOV__TAN(fov__minf(plan.e_full, 85.0f) * FOV__DEG) * 1.0001f + 0.01f,
-                     1.5f);
+    r_lo = plan.e_full < 89.0f ? a.f * FOV__TAN(plan.e_full * FOV__DEG) * 1.0001f + 0.01f
+                               : FLT_MAX;
+    r_lo = fov__maxf(r_lo, 1.5f);
     r_cap = fov__minf(FOV__EXP(0.98f * a.L), fov__minf(0.5f * a.R, a.f * 14.0f));
     if (!(r_lo < r_cap))
         FOVLP__FAIL(lg, FOV_ERR_UNSUPPORTED,
