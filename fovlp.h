@@ -1,4 +1,4 @@
-/* fovlp.h - v0.3.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.4.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -312,6 +312,12 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.4.0 (2026-12-02) fovlp_config_acuity: sigma, alpha, the gaze disc and lp_aspect from the
+                      shared eye model (fov_eye, Guenter et al. 2012) and the display, the
+                      fewest samples whose gaps meet quality * MAR(e) * ppd from the disc edge
+                      to the diagonal (ACUITY-DRIVEN CONFIGURATION); the shared block of
+                      revision 2 (fov_eye, fov_eye_plan, fovlp_eye_mar / _density / _ecc /
+                      _plan). The presets are unchanged.
    0.3.0 (2026-12-02) one block shared with fovsdf.h and fovpt.h (tools/fov_shared.h); error
                       messages on by default, a specific one per failure (FOV_DEBUG no longer
                       needed); fovlp_camera_from (the TAA camera of a fov_camera);
@@ -349,9 +355,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVLP_VERSION_MAJOR 0
-#define FOVLP_VERSION_MINOR 3
+#define FOVLP_VERSION_MINOR 4
 #define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.3.0"
+#define FOVLP_VERSION_STRING "0.4.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
