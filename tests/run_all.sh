@@ -13,7 +13,7 @@
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
 #     acuity_fovsdf,
 #     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     srgb8_fovlp, api_stress, versions, stats, camera, errors errors_nostrings,
+#     srgb8_fovlp acuity_fovlp, api_stress, versions, stats, camera, errors errors_nostrings,
 #     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
@@ -146,6 +146,7 @@ three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c
 three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
+three_builds acuity_fovlp tests/test_fovlp_acuity.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c
