@@ -867,6 +867,12 @@ FOVPT_API fovpt_config fovpt_config_default(void);
 /* Defaults filled in and every field validated (also the tables of the methods not used). */
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
+/* Acuity-driven foveation (see ACUITY-DRIVEN CONFIGURATION): fills cfg's layer table, zone radii
+   and selective borders (with the tau_fov slope) from cfg->display (all zero: cam's frustum),
+   the eye (NULL: the defaults) and fovpt_eye_plan; every other field stays as set. Errors
+   through cfg->logger; on error cfg is unchanged. */
+FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
+                                         const fov_eye *eye);
 
 /* The fov_camera defaults (the same as fovsdf_camera_init's: pos (0, 0, 5) looking at the
    origin, up +y, 60 degrees; world +x on the image's right, +y at its top). */
@@ -3881,23 +3887,35 @@ FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, cons
 
 /* The eccentricity model of a camera: the display's, or the camera's own frustum; then the
    per-layer lattice origins and traced radii (LAYERS). */
-FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
+/* The eccentricity model of a camera whose image-plane tangents t4 (x from t4[0] to t4[1], y
+   from t4[2] at the top to t4[3]) fovpt__camera_setup gave: the display's when one is given,
+   else the camera's own frustum, off-axis or not (fov_display: f = H / (t + b), the axis at
+   the image point of tangent 0). */
+FOVPT__PRIV fov_result fovpt__ecc_of(const fov_display *disp, const fovpt_camera *cam,
+                                     const float t4[4], fov_gaze gaze, fov_ecc_model *m)
 {
-    fov_display d = ctx->cfg.display;
-    const fovpt_camera *cam = &ctx->cam;
-    fovpt_layers_cfg *L = &ctx->lay;
-    fov_result e;
-    uint32_t n;
+    fov_display d = *disp;
     int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f ||
                 d.pixel_pitch_mm < 0.0f || d.distance_mm > 0.0f || d.distance_mm < 0.0f;
     if (!given) {
         /* the camera frustum: f = H / (ty0 - ty1); the axis at the image point of tangent 0 */
-        float fpx = (float)cam->height / (ctx->ty0 - ctx->ty1);
+        float fpx = (float)cam->height / (t4[2] - t4[3]);
         d.fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, fpx) / FOV__DEG;
-        d.axis_dx += -ctx->tx0 * fpx - 0.5f * (float)cam->width;
-        d.axis_dy += ctx->ty0 * fpx - 0.5f * (float)cam->height;
+        d.axis_dx += -t4[0] * fpx - 0.5f * (float)cam->width;
+        d.axis_dy += t4[2] * fpx - 0.5f * (float)cam->height;
     }
-    e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
+    return fovpt_ecc_init(m, &d, 60.0f, cam->width, cam->height, gaze);
+}
+
+FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
+{
+    const fovpt_camera *cam = &ctx->cam;
+    fovpt_layers_cfg *L = &ctx->lay;
+    fov_result e;
+    uint32_t n;
+    float t4[4];
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    e = fovpt__ecc_of(&ctx->cfg.display, cam, t4, ctx->gaze, &ctx->ecc);
     if (e != FOV_OK) return e;
     if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
         float gxf = fov__clampf(FOV__FLOOR(ctx->gaze.x), -1e9f, 1e9f),
@@ -3933,6 +3951,153 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
             ctx->layer_trace_deg[n] = tr;
         }
     }
+    return FOV_OK;
+}
+
+/* ---- acuity-driven configuration (fovpt_config_acuity) ---------------------------------- */
+/* The layer strides the acuity-driven table may use, finest first: Axblad 2020's 1, 2, 3, 4,
+   then steps of at most 1.5 (each layer's cost is about its disk over its stride squared, and
+   the disk grows with the next stride: small steps keep the overshoot beyond the eye's
+   allowed spacing small). The first FOVPT_MAX_LAYERS entries at most. */
+static const uint8_t fovpt__acuity_ladder[12] = { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
+
+/* Checks a fov_eye field by field (NULL: the defaults) with a specific message. */
+FOVPT__PRIV fov_result fovpt__eye_check(const fov_logger *lg, const fov_eye *eye)
+{
+    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
+                                       FOV__MSG("eye.quality") };
+    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
+    float v[3];
+    uint32_t i;
+    if (!eye) return FOV_OK;
+    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
+    for (i = 0; i < 3; ++i) {
+        if (!fov__finite(v[i]))
+            return fov__err3(lg, "fovpt", FOV_ERR_NOT_FINITE, "config_acuity: ", nm[i],
+                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
+        if (v[i] < 0.0f || v[i] > hi[i])
+            return fov__err3(lg, "fovpt", FOV_ERR_INVALID_ARG, "config_acuity: ", nm[i],
+                             i < 2 ? FOV__MSG(" must be in (0, 60] (0: default)")
+                                   : FOV__MSG(" must be in (0, 100] (0: default)"),
+                             (uint32_t)__LINE__);
+    }
+    return FOV_OK;
+}
+
+/* The eye's allowed sample spacing at ecc, in pixels of a display of ppd pixels per degree. */
+FOVPT__PRIV float fovpt__allowed_px(const fov_eye *eye, float ppd, float ecc)
+{
+    return fovpt_eye_mar(eye, fov__clampf(ecc, 0.0f, 180.0f)) * ppd;
+}
+
+FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
+                                         const fov_eye *eye)
+{
+    fovpt_config c, out;
+    const fov_logger *lg;
+    fov_ecc_model m;
+    fov_eye_plan plan;
+    fov_gaze g;
+    float r[3], u[3], f[3], t4[4], o[3], span, ppd, b, eps = 1e-3f;
+    fov_result e;
+    uint32_t i, n, nl, dmax;
+    if (!cfg) return FOV_ERR_NULL;
+    lg = &cfg->logger;
+    if (!cam) FOVPT__FAIL(lg, FOV_ERR_NULL, "config_acuity: cam is NULL");
+    e = fovpt__eye_check(lg, eye);
+    if (e != FOV_OK) return e;
+    e = fovpt_config_resolve(cfg, &c); /* the defaults the computation starts from */
+    if (e != FOV_OK) return e;
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
+    if (e != FOV_OK) return fovpt__cam_fail(lg, e, FOV__MSG("config_acuity"), __LINE__);
+    /* the plan does not depend on the gaze (ppd at the eye's axis); the span is the largest
+       eccentricity an on-screen gaze sees: the angle between opposite image corners */
+    g.x = 0.0f; g.y = 0.0f;
+    e = fovpt__ecc_of(&c.display, cam, t4, g, &m);
+    if (e == FOV_OK) e = fovpt_eye_plan(eye, &m, &plan);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: config.display or the camera gives no eye distance");
+    span = fovpt_ecc_deg(&m, (float)cam->width, (float)cam->height);
+    g.x = (float)cam->width;
+    e = fovpt__ecc_of(&c.display, cam, t4, g, &m);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: config.display or the camera gives no eye distance");
+    span = fov__maxf(span, fovpt_ecc_deg(&m, 0.0f, (float)cam->height));
+    ppd = plan.ppd;
+    out = *cfg;
+
+    /* LAYERS. The stride-s layer starts (its blend band's inner edge) where the eye's allowed
+       spacing reaches s pixels, e(s) = fovpt_eye_ecc(eye, ppd, 1 / s): there s is the largest
+       stride within the allowed spacing. The finer layer's radius is e(s) + blend / 2. Ladder
+       strides up to the allowed spacing at the span (dmax). */
+    b = c.layers.blend_deg;
+    dmax = (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, span)), 1.0f, 64.0f);
+    nl = 1; /* ladder entries used */
+    while (nl < FOVPT_MAX_LAYERS && nl < 12u && fovpt__acuity_ladder[nl] <= dmax &&
+           fovpt_eye_ecc(eye, ppd, 1.0f / (float)fovpt__acuity_ladder[nl]) + 0.5f * b + eps <
+               179.5f)
+        ++nl;
+    FOV_MEMSET(out.layers.layer, 0, sizeof out.layers.layer);
+    if (nl >= 2) {
+        out.layers.count = nl;
+        for (n = 0; n < nl; ++n) /* layer n has ladder entry nl - 1 - n (layer 0: coarsest) */
+            out.layers.layer[n].stride = fovpt__acuity_ladder[nl - 1u - n];
+        for (n = 1; n < nl; ++n) {
+            float es = fovpt_eye_ecc(eye, ppd, 1.0f / (float)out.layers.layer[n - 1].stride);
+            out.layers.layer[n].radius_deg = es + 0.5f * b + eps;
+        }
+    } else {
+        /* the display is coarser than the eye across the image: the stride-1 layer covers
+           everything up to 179.5 degrees; the background (never on screen unless the blend
+           band reaches it) takes the spacing allowed at its inner border */
+        float ein = 179.5f - 0.5f * b;
+        out.layers.count = 2;
+        out.layers.layer[1].stride = 1;
+        out.layers.layer[1].radius_deg = 179.5f;
+        out.layers.layer[0].stride =
+            (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, ein)), 1.0f, 64.0f);
+    }
+    /* spp: the caller's table (or the preset's) by position from the innermost layer; layers
+       beyond its length take its outermost non-background layer's, the background its
+       background's */
+    for (n = 0; n < out.layers.count; ++n) {
+        uint32_t j = out.layers.count - 1u - n, src; /* j: position from the innermost */
+        if (n == 0) src = 0;
+        else src = j < c.layers.count - 1u ? c.layers.count - 1u - j : 1u;
+        out.layers.layer[n].spp = c.layers.layer[src].spp;
+    }
+    out.layers.layer[0].radius_deg = 0.0f; /* no occlusion mask */
+
+    /* ZONES. Density 1/4 (stride 2) is allowed from e_half, 1/16 (stride 4) from e_quarter;
+       the coarser zone's weight starts half an overlap inside the border (overlap_px at the
+       gaze, whose pixels per degree are at least the plan's: plan.ppd gives the wider band) */
+    {
+        float mz = 0.5f * c.zones.overlap_px / ppd + eps;
+        float mid = fov__minf(plan.e_quarter + mz, 179.9f);
+        out.zones.inner_deg = fov__minf(plan.e_half + mz, mid - 0.05f);
+        out.zones.middle_deg = mid;
+    }
+
+    /* SELECTIVE. Kim et al. 2021's borders scaled by one factor k so that e_np (beyond it the
+       presample only, one sample per pixel) falls at e_full (from there one sample per pixel is
+       as fine as the eye resolves); the zones keep their proportions and tau_fov its shape
+       (its slope tau'_f divided by k: the same curve of e / k) */
+    {
+        fovpt_selective_cfg *s = &out.selective;
+        float k = fov__maxf(plan.e_full, 0.01f) / c.selective.e_deg[3];
+        k = fov__minf(k, 179.0f / c.selective.e_deg[4]);
+        for (i = 0; i < 5; ++i) s->e_deg[i] = c.selective.e_deg[i] * k;
+        for (i = 0; i < 4; ++i) s->tau_shape[i] = c.selective.tau_shape[i];
+        s->tau_shape[2] = c.selective.tau_shape[2] / k;
+    }
+    e = fovpt_config_resolve(&out, &c);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: the derived layers, zones or fields do not validate");
+    cfg->layers = out.layers;
+    cfg->zones.inner_deg = out.zones.inner_deg;
+    cfg->zones.middle_deg = out.zones.middle_deg;
+    for (i = 0; i < 5; ++i) cfg->selective.e_deg[i] = out.selective.e_deg[i];
+    for (i = 0; i < 4; ++i) cfg->selective.tau_shape[i] = out.selective.tau_shape[i];
     return FOV_OK;
 }
 
