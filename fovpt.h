@@ -1,4 +1,4 @@
-/* fovpt.h - v0.3.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.4.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -67,13 +67,15 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
       output.
 
-STATUS (v0.2.0)
+STATUS (v0.4.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
    SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), per-eye cameras and gaze,
    temporal reuse and smoothing (SELECTIVE and JIN only, as in Kim et al. 2021;
    FOV_ERR_UNSUPPORTED with the others).
+   The acuity-driven configuration (fovpt_config_acuity) and the B-spline layer
+   reconstruction (layers.bspline).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (Axblad 2020, Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (3.13)
@@ -155,6 +157,49 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      n_tpi, a = fovpt_alpha(e), C_i = the raw colour at v's pixel in frame t-i when the
      depths agree within eps_depth; rejected frames leave the normalisation; pixels whose
      centre ray misses are not smoothed.
+
+ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
+      fovpt_config cfg = fovpt_config_default();
+      cfg.method = FOVPT_METHOD_LAYERS;                // or ZONES, SELECTIVE
+      cfg.display.pixel_pitch_mm = 0.3113f; cfg.display.distance_mm = 600.0f;  // or all zero
+      fov_eye eye = { 0 };  eye.quality = 1.0f;        // NULL: the defaults (fov_eye)
+      if (fovpt_config_acuity(&cfg, &cam, &eye) != FOV_OK) ...   // then fovpt_memory_size, init
+   fills the three foveation families from the display (cfg.display; all zero: the camera's
+   frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
+   shared MAR(e) = mar0 + slope e of Guenter et al. 2012, one quality knob): cfg.layers (count,
+   radius_deg, stride; spp kept), cfg.zones.inner_deg and middle_deg, cfg.selective.e_deg[5]
+   and tau_shape; whichever method cfg.method picks then uses its own family. Every other
+   field (method, spp, blend_deg, overlap_px, n_sd, tau, temporal, display, logger, ...) stays
+   as the caller set it; on an error cfg is unchanged and the logger gets the reason (a bad eye
+   field: FOV_ERR_NOT_FINITE or FOV_ERR_INVALID_ARG naming it; a bad config, camera or display:
+   the code fovpt_config_resolve or fovpt_init would give). A second call changes nothing.
+   The fixed tables stay available: fovpt_layers_preset by name, zero fields for the defaults.
+   The pixels per degree are fovpt_eye_plan's (at the eye's axis, the coarsest on a flat
+   display: the safe side), so the result does not depend on the gaze. Choices:
+   - Layers. The stride-s layer starts (the inner edge of its blend band) at e(s), where the
+     eye's allowed spacing quality * MAR(e) * ppd reaches s pixels (fovpt_eye_ecc(eye, ppd,
+     1/s)): there s is the largest stride within the allowed spacing. The finer layer's
+     radius_deg is then e(s) + blend_deg / 2 (+ 0.001), the innermost layer has stride 1 and
+     full weight out to e(2) >= e_full. Strides from the ladder 1, 2, 3, 4, 6, 8, 12, 16, 24,
+     32, 48, 64 (Axblad 2020's 1-4, then steps of at most 1.5: a layer costs about its disk
+     over its stride squared, and every layer covers its whole disk), the first
+     FOVPT_MAX_LAYERS entries up to the spacing allowed at the largest eccentricity an
+     on-screen gaze sees (the angle between opposite image corners). A fixed ladder keeps the
+     stride at each eccentricity monotone in ppd and quality. No occlusion mask (layer[0]
+     radius 0). A display coarser than the eye across the image: two layers, stride 1 out to
+     179.5 degrees and a background of the spacing allowed there. Layer spp: the caller's
+     table (count 0: the preset's) by position from the innermost layer; extra layers take its
+     outermost non-background layer's spp, the background its background's.
+   - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
+     are exactly what the eye allows from there), each plus half the overlap band
+     (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
+   - Selective. Kim et al. 2021's borders (or the caller's) scaled by one factor k so that
+     e_np, beyond which only the presample (one sample per pixel) is traced, falls at e_full,
+     beyond which one sample per pixel is as fine as the eye resolves; the zones keep their
+     proportions and tau_fov its shape as a function of e / k (tau'_f divided by k, so the
+     shape stays valid). e_np is at least 0.01 degrees and e_max below 180.
+   bench/pt_acuity.c prints the samples per pixel and savings at three displays (and the
+   error by cause after an eye-resolution filter).
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -283,6 +328,9 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Jin et al. 2009  B. Jin, I. Ihm, B. Chang, C. Park, W. Lee, S. Jung, "Selective and Adaptive
                     Supersampling for Real-Time Ray Tracing", High Performance Graphics 2009.
    Kajiya 1986      J. T. Kajiya, "The Rendering Equation", SIGGRAPH 1986.
+   Guenter et al. 2012  B. Guenter, M. Finch, S. Drucker, D. Tan, J. Snyder, "Foveated 3D
+                    Graphics", ACM Transactions on Graphics 31(6) (SIGGRAPH Asia), 2012. (the
+                    eye model of fovpt_config_acuity)
    Veach 1997       E. Veach, "Robust Monte Carlo Methods for Light Transport Simulation",
                     PhD thesis, Stanford University, 1997 (multiple importance sampling).
    Wald 2007        I. Wald, "On Fast Construction of SAH-based Bounding Volume Hierarchies",
@@ -299,6 +347,11 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.4.0 (2026-12-02) fovpt_config_acuity: the layer table (radii, strides from a ladder), the
+                      zone radii and the selective borders from the display and the shared eye
+                      model (fov_eye, fovpt_eye_plan; Guenter et al. 2012), presets kept by
+                      name; layers.bspline (new field): a smoothing cubic B-spline reconstruction
+                      of the coarse layers; bench/pt_acuity.c.
    0.3.0 (2026-12-02) one block shared with fovsdf.h and fovlp.h (tools/fov_shared.h); error
                       messages on by default, a specific one per failure naming the field;
                       fov_camera shared: fovpt_camera is a typedef of it, new field eye_offset
@@ -347,9 +400,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 3
+#define FOVPT_VERSION_MINOR 4
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.3.0"
+#define FOVPT_VERSION_STRING "0.4.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
@@ -716,6 +769,9 @@ typedef struct fovpt_layers_cfg {
     float blend_deg;        /* blend band width around each layer border; 0: 1 degree */
     uint32_t blend_linear;  /* 1: linear vb profile; 0: smoothstep */
     uint32_t snap;          /* 1: lattice origin snapped to multiples of d (no crawling) */
+    uint32_t bspline;       /* 1: layers of stride >= 2 reconstructed by the cubic B-spline
+                               (smoothing: averages the lattice's path-tracing noise) instead
+                               of Catmull-Rom; 0: Catmull-Rom (Axblad 2020) */
 } fovpt_layers_cfg;
 
 typedef enum fovpt_layers_preset_id {
@@ -1819,11 +1875,12 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
-        uint32_t lin = c.layers.blend_linear, snap = c.layers.snap;
+        uint32_t lin = c.layers.blend_linear, snap = c.layers.snap, bs = c.layers.bspline;
         fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_RADIUS);
         if (!(bd <= 0.0f && bd >= 0.0f)) c.layers.blend_deg = bd;
         c.layers.blend_linear = lin;
         c.layers.snap = snap;
+        c.layers.bspline = bs;
     }
     if (c.layers.count < 2 || c.layers.count > FOVPT_MAX_LAYERS)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.count must be 2 .. FOVPT_MAX_LAYERS");
@@ -1836,6 +1893,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.blend_linear must be 0 or 1");
     if (c.layers.snap > 1)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.snap must be 0 or 1");
+    if (c.layers.bspline > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.bspline must be 0 or 1");
     for (i = 0; i < c.layers.count; ++i) {
         const fovpt_layer *L = &c.layers.layer[i];
         const char *bad = 0; /* the broken rule, logged as "config.layers.layer[i].<rule>" */
@@ -4612,6 +4671,18 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
     return 1;
 }
 
+/* Uniform cubic B-spline weights of v0..v3 at t in [0, 1]: non-negative, sum 1; at t = 0
+   (1, 4, 1) / 6 (an approximating, smoothing filter: the variance of independent noise on the
+   lattice falls to 0.48 of it in one dimension, averaged over t, against 0.81 for Catmull-Rom). */
+FOVPT__PRIV void fovpt__bspline(float t, float w[4])
+{
+    float u = 1.0f - t, t2 = t * t, t3 = t2 * t;
+    w[0] = u * u * u / 6.0f;
+    w[1] = (3.0f * t3 - 6.0f * t2 + 4.0f) / 6.0f;
+    w[2] = (-3.0f * t3 + 3.0f * t2 + 3.0f * t + 1.0f) / 6.0f;
+    w[3] = t3 / 6.0f;
+}
+
 /* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (Axblad 2020,
    Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when
    unavailable. */
@@ -4630,8 +4701,13 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     fx = (float)(rx - kx * (int32_t)d) / (float)d;
     fy = (float)(ry - ky * (int32_t)d) / (float)d;
     if (ctx->lanczos) return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
-    fovpt_catmull_rom(fx, wx);
-    fovpt_catmull_rom(fy, wy);
+    if (ctx->lay.bspline && d >= 2) {
+        fovpt__bspline(fx, wx);
+        fovpt__bspline(fy, wy);
+    } else {
+        fovpt_catmull_rom(fx, wx);
+        fovpt_catmull_rom(fy, wy);
+    }
     for (j = 0; j < 4 && ok; ++j) {
         int32_t lj = ky - 1 + j;
         lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);

@@ -47,7 +47,7 @@
 static void usage(FILE *f)
 {
     fprintf(f, "usage: pt_acuity --counts | --recon [--scene NAME] [--w W --h H] [--ppd P]\n"
-               "                 [--gt-spp N] [--spp N]\n"
+               "                 [--gt-spp N] [--spp N] [--no-x64]\n"
                "  --counts  samples per pixel and saving of layers/zones (preset, acuity) at\n"
                "            640x360 over 60 deg, 1920x1080 27-inch at 60 cm, 1600x1600 over 100 deg\n"
                "  --recon   error by cause (noise, reconstruction) per eccentricity band after\n"
@@ -207,10 +207,11 @@ static void eye_filter(const float *in, float *out, int w, int h, const float *s
 }
 
 static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
-                 uint32_t spp)
+                 uint32_t spp, int no_x64)
 {
-    static const char *const mname[5] = { "uniform", "layers_acuity", "layers_acuity_x64",
-                                          "zones_acuity", "zones_acuity_x64" };
+    static const char *const mname[6] = { "uniform", "layers_acuity", "layers_acuity_x64",
+                                          "layers_acuity_bspline", "zones_acuity",
+                                          "zones_acuity_x64" };
     pt_scene S;
     int id, m, b, i;
     size_t np = (size_t)W * H;
@@ -253,14 +254,16 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
     printf(",psnr_raw_all\n");
-    for (m = 0; m < 5; ++m) {
+    for (m = 0; m < 6; ++m) {
         fovpt_config c = base;
-        uint32_t n, mul = (m == 2 || m == 4) ? 64u : 1u;
+        uint32_t n, mul = (m == 2 || m == 5) ? 64u : 1u;
+        if (mul > 1u && no_x64) continue;
         double v, raw;
         c.spp = spp;
         if (m > 0) {
-            c.method = m <= 2 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
+            c.method = m <= 3 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
+            c.layers.bspline = m == 3 ? 1u : 0u;
             for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
             c.spp = spp * mul;
         }
@@ -298,7 +301,7 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
 
 int main(int argc, char **argv)
 {
-    int i, mode = 0;
+    int i, mode = 0, no_x64 = 0;
     const char *scene = "cornell";
     uint32_t W = 480, H = 270, gt_spp = 256, spp = 4;
     float ppd = 33.6f;
@@ -306,6 +309,7 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
         else if (!strcmp(argv[i], "--counts")) mode = 1;
         else if (!strcmp(argv[i], "--recon")) mode = 2;
+        else if (!strcmp(argv[i], "--no-x64")) no_x64 = 1;
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) scene = argv[++i];
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
@@ -321,7 +325,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "bad size, ppd or spp\n");
             return 2;
         }
-        return recon(scene, W, H, ppd, gt_spp, spp);
+        return recon(scene, W, H, ppd, gt_spp, spp, no_x64);
     }
     usage(stderr);
     return 2;
