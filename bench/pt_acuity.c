@@ -47,7 +47,8 @@
 static void usage(FILE *f)
 {
     fprintf(f, "usage: pt_acuity --counts | --recon [--scene NAME] [--w W --h H] [--ppd P]\n"
-               "                 [--gt-spp N] [--spp N] [--no-x64]\n"
+               "                 [--gt-spp N] [--spp N] [--no-x64] [--only M1,M2]\n"
+               "                 [--gt-cache FILE]  (the ground truth read from / written to FILE)\n"
                "  --counts  samples per pixel and saving of layers/zones (preset, acuity) at\n"
                "            640x360 over 60 deg, 1920x1080 27-inch at 60 cm, 1600x1600 over 100 deg\n"
                "  --recon   error by cause (noise, reconstruction) per eccentricity band after\n"
@@ -206,12 +207,25 @@ static void eye_filter(const float *in, float *out, int w, int h, const float *s
     free(e); free(t);
 }
 
-static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
-                 uint32_t spp, int no_x64)
+/* name is one of the comma-separated entries of list */
+static int listed(const char *list, const char *name)
 {
-    static const char *const mname[6] = { "uniform", "layers_acuity", "layers_acuity_x64",
-                                          "layers_acuity_bspline", "zones_acuity",
-                                          "zones_acuity_x64" };
+    size_t n = strlen(name);
+    const char *p = list;
+    while ((p = strstr(p, name)) != NULL) {
+        if ((p == list || p[-1] == ',') && (p[n] == 0 || p[n] == ',')) return 1;
+        p += n;
+    }
+    return 0;
+}
+
+static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
+                 uint32_t spp, int no_x64, const char *only, const char *cache)
+{
+    static const char *const mname[9] = { "uniform", "layers_acuity", "layers_acuity_x64",
+                                          "layers_acuity_bspline", "layers_acuity_bspline_x64",
+                                          "zones_acuity", "zones_acuity_x64",
+                                          "zones_acuity_bspline", "zones_acuity_bspline_x64" };
     pt_scene S;
     int id, m, b, i;
     size_t np = (size_t)W * H;
@@ -247,23 +261,32 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     {
         fovpt_config c = base;
         c.spp = gt_spp;
-        if (render(&S.scene, &S.cam, &c, g, gt, &st) != 0) return 1;
+        FILE *f = cache ? fopen(cache, "rb") : NULL;
+        size_t got = f ? fread(gt, sizeof(float), 3u * np, f) : 0u;
+        if (f) fclose(f);
+        if (got != 3u * np) {
+            if (render(&S.scene, &S.cam, &c, g, gt, &st) != 0) return 1;
+            f = cache ? fopen(cache, "wb") : NULL;
+            if (f) { fwrite(gt, sizeof(float), 3u * np, f); fclose(f); }
+        }
         eye_filter(gt, fgt, (int)W, (int)H, sig);
     }
     printf("method,samples_per_px");
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
     printf(",psnr_raw_all\n");
-    for (m = 0; m < 6; ++m) {
+    for (m = 0; m < 9; ++m) {
         fovpt_config c = base;
-        uint32_t n, mul = (m == 2 || m == 5) ? 64u : 1u;
+        uint32_t n, mul = (m == 2 || m == 4 || m == 6 || m == 8) ? 64u : 1u;
         if (mul > 1u && no_x64) continue;
+        if (only && !listed(only, mname[m])) continue;
         double v, raw;
         c.spp = spp;
         if (m > 0) {
-            c.method = m <= 3 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
+            c.method = m <= 4 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
-            c.layers.bspline = m == 3 ? 1u : 0u;
+            c.layers.bspline = m == 3 || m == 4 ? 1u : 0u;
+            c.zones.bspline = m >= 7 ? 1u : 0u;
             for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
             c.spp = spp * mul;
         }
@@ -302,7 +325,7 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
 int main(int argc, char **argv)
 {
     int i, mode = 0, no_x64 = 0;
-    const char *scene = "cornell";
+    const char *scene = "cornell", *only = NULL, *cache = NULL;
     uint32_t W = 480, H = 270, gt_spp = 256, spp = 4;
     float ppd = 33.6f;
     for (i = 1; i < argc; ++i) {
@@ -310,6 +333,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--counts")) mode = 1;
         else if (!strcmp(argv[i], "--recon")) mode = 2;
         else if (!strcmp(argv[i], "--no-x64")) no_x64 = 1;
+        else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
+        else if (!strcmp(argv[i], "--gt-cache") && i + 1 < argc) cache = argv[++i];
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) scene = argv[++i];
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
@@ -325,7 +350,7 @@ int main(int argc, char **argv)
             fprintf(stderr, "bad size, ppd or spp\n");
             return 2;
         }
-        return recon(scene, W, H, ppd, gt_spp, spp, no_x64);
+        return recon(scene, W, H, ppd, gt_spp, spp, no_x64, only, cache);
     }
     usage(stderr);
     return 2;
