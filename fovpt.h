@@ -4025,12 +4025,6 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
 }
 
 /* ---- acuity-driven configuration (fovpt_config_acuity) ---------------------------------- */
-/* The layer strides the acuity-driven table may use, finest first: Axblad 2020's 1, 2, 3, 4,
-   then steps of at most 1.5 (each layer's cost is about its disk over its stride squared, and
-   the disk grows with the next stride: small steps keep the overshoot beyond the eye's
-   allowed spacing small). The first FOVPT_MAX_LAYERS entries at most. */
-static const uint8_t fovpt__acuity_ladder[12] = { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
-
 /* Checks a fov_eye field by field (NULL: the defaults) with a specific message. */
 FOVPT__PRIV fov_result fovpt__eye_check(const fov_logger *lg, const fov_eye *eye)
 {
@@ -4063,6 +4057,11 @@ FOVPT__PRIV float fovpt__allowed_px(const fov_eye *eye, float ppd, float ecc)
 FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
                                          const fov_eye *eye)
 {
+    /* The layer strides the table may use, finest first: Axblad 2020's 1, 2, 3, 4, then steps
+       of at most 1.5 (a layer costs about its disk over its stride squared, and the disk grows
+       with the next stride: small steps keep the sampling near the eye's allowed spacing).
+       The first FOVPT_MAX_LAYERS entries at most. */
+    static const uint8_t ladder[12] = { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
     fovpt_config c, out;
     const fov_logger *lg;
     fov_ecc_model m;
@@ -4103,15 +4102,15 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     b = c.layers.blend_deg;
     dmax = (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, span)), 1.0f, 64.0f);
     nl = 1; /* ladder entries used */
-    while (nl < FOVPT_MAX_LAYERS && nl < 12u && fovpt__acuity_ladder[nl] <= dmax &&
-           fovpt_eye_ecc(eye, ppd, 1.0f / (float)fovpt__acuity_ladder[nl]) + 0.5f * b + eps <
+    while (nl < FOVPT_MAX_LAYERS && nl < 12u && ladder[nl] <= dmax &&
+           fovpt_eye_ecc(eye, ppd, 1.0f / (float)ladder[nl]) + 0.5f * b + eps <
                179.5f)
         ++nl;
     FOV_MEMSET(out.layers.layer, 0, sizeof out.layers.layer);
     if (nl >= 2) {
         out.layers.count = nl;
         for (n = 0; n < nl; ++n) /* layer n has ladder entry nl - 1 - n (layer 0: coarsest) */
-            out.layers.layer[n].stride = fovpt__acuity_ladder[nl - 1u - n];
+            out.layers.layer[n].stride = ladder[nl - 1u - n];
         for (n = 1; n < nl; ++n) {
             float es = fovpt_eye_ecc(eye, ppd, 1.0f / (float)out.layers.layer[n - 1].stride);
             out.layers.layer[n].radius_deg = es + 0.5f * b + eps;
