@@ -64,6 +64,11 @@ $(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
 
+# fovpt_config_acuity: samples per pixel at three displays, error by cause (bench/pt_acuity.c)
+$(BUILD)/pt_acuity: bench/pt_acuity.c examples/pt_scenes.h examples/fovmetrics.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
+
 $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
