@@ -8,7 +8,9 @@
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
 #                          moving camera and gaze, bench/results/lp_moving.csv;
-#                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
+#                bench-pt: fovpt methods per visual field, bench/results/pt.csv;
+#                bench-perceptual: the three headers' savings at equal perceived quality per
+#                          display, bench/results/perceptual.csv; BENCH_ARGS=--quick);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid;
 #                make bench-sdf-native / bench-sdf-nosimd add rows of a -march=native and a
 #                FOVSDF_NO_SIMD build to sdf.csv, bench-sdf-all runs the three builds
@@ -29,7 +31,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-sdf-acuity clean install
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install
 
 all: examples
 
@@ -137,7 +139,17 @@ bench-lp: $(BUILD)/bench_lp
 	@mkdir -p bench/results
 	./$(BUILD)/bench_lp $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf bench-lp bench-pt
+bench: bench-sdf bench-lp bench-pt bench-perceptual
+
+# issue 13: fovsdf, fovlp and fovpt against full resolution by the eye-filtered FLIP of
+# examples/fovmetrics.h at three displays (bench/bench_perceptual.c)
+$(BUILD)/bench_perceptual: bench/bench_perceptual.c fovsdf.h fovlp.h fovpt.h examples/lp_sdf_shade.h examples/pt_scenes.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+bench-perceptual: $(BUILD)/bench_perceptual
+	@mkdir -p bench/results
+	nice ./$(BUILD)/bench_perceptual $(BENCH_ARGS)
 
 clean:
 	rm -rf $(BUILD) out
