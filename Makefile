@@ -147,9 +147,14 @@ $(BUILD)/bench_perceptual: bench/bench_perceptual.c fovsdf.h fovlp.h fovpt.h exa
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
+# fovpt runs in a second process beside fovsdf and fovlp; the two CSVs are then joined
 bench-perceptual: $(BUILD)/bench_perceptual
 	@mkdir -p bench/results
-	nice ./$(BUILD)/bench_perceptual $(BENCH_ARGS)
+	nice ./$(BUILD)/bench_perceptual --headers pt --out bench/results/perceptual.pt.tmp $(BENCH_ARGS) & \
+	nice ./$(BUILD)/bench_perceptual --headers sdf,lp --out bench/results/perceptual.sdf.tmp $(BENCH_ARGS); \
+	wait $$! && cat bench/results/perceptual.sdf.tmp > bench/results/perceptual.csv && \
+	tail -n +2 bench/results/perceptual.pt.tmp >> bench/results/perceptual.csv && \
+	rm -f bench/results/perceptual.sdf.tmp bench/results/perceptual.pt.tmp
 
 clean:
 	rm -rf $(BUILD) out
