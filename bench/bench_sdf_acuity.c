@@ -6,7 +6,7 @@
    fixed angles (7.5-degree fovea, mid level beyond) and the acuity-driven variants:
      cone_fov_acuity         fovsdf_config_acuity (fovea to e_half, quarter level from
                              e_quarter, fovea-only mask, refresh 1)
-     cone_fov_acuity_edges   the same with the thesis's edge mask (FOVSDF_MASK_EDGES)
+     cone_fov_acuity_edges   the same with the edge mask of Polychronakis 2025 (FOVSDF_MASK_EDGES)
      cone_fov_acuity_noq     the same without the quarter level (quarter_deg 0)
      fipr_acuity             FIPR with fovsdf_config_acuity
    and prints per method: distance evaluations per pixel (all of them: head starts, sample
