@@ -17,7 +17,8 @@
    filtered to the eye's resolution: a Gaussian per pixel of standard deviation MAR(e) / 2
    (fov_eye defaults: 1 arcmin + 1.32 arcmin per degree, Guenter et al. 2012), e the pixel's
    eccentricity (separable, the pixel's own width along each pass), as PSNR of the sRGB
-   values overall and in eccentricity bands (degrees), and FLIP (at the display's pixels per
+   values overall, in eccentricity bands (degrees) and in the regions of the first --quality
+   acuity config (ePfov: its fovea, ePmid: the mid level, ePqua: the quarter level), and FLIP (at the display's pixels per
    degree) of the filtered images. Equal perceived quality: "equal", eye-filtered PSNR within
    0.5 dB of classic's in every band; "eq45", the same where classic's is below 45 dB and at
    least 45 dB elsewhere (an RMS error of 0.56 % of the sRGB range after the eye's filter);
@@ -107,8 +108,10 @@ static void usage(FILE *f)
                "  _edges, _edges1, _noq, _pt (see the file's header); classic always runs\n");
 }
 
-#define NB 5
-static const double band_lo[NB] = { 0, 5, 10, 20, 0 }, band_hi[NB] = { 5, 10, 20, 1e9, 1e9 };
+#define NB 8
+/* fixed bands, all, then the acuity config's (first --quality) fovea, mid and quarter regions */
+static double band_lo[NB] = { 0, 5, 10, 20, 0, 0, 0, 0 }, band_hi[NB] = { 5, 10, 20, 1e9, 1e9,
+                                                                           0, 0, 0 };
 
 typedef struct res_t { double evpp, traced, psnr[NB], flip; } res_t;
 
@@ -203,14 +206,19 @@ int main(int argc, char **argv)
                 fovsdf_eye_plan(&eye, &ctx.ecc, &pq);
                 ca.display = cfg.display;
                 fovsdf_config_acuity(&ca, &bi.camera, &eye);
+                band_lo[5] = 0.0; band_hi[5] = (double)ca.acuity.fovea_deg;
+                band_lo[6] = band_hi[5];
+                band_hi[6] = ca.quarter_deg > 0.0f ? (double)ca.quarter_deg : 1e9;
+                band_lo[7] = band_hi[6]; band_hi[7] = 1e9;
                 printf("%s %dx%d fov_y %.1f ppd %.2f: plan e_full %.2f e_half %.2f e_quarter "
                        "%.2f (quality %.2f); acuity config: fovea %.2f quarter %.2f\n",
                        bi.name, W, H, (double)bi.camera.fov_y_deg, ppd, (double)pq.e_full,
                        (double)pq.e_half, (double)pq.e_quarter, (double)quality,
                        (double)ca.acuity.fovea_deg, (double)ca.quarter_deg);
             }
-            printf("  %-26s %8s %7s %7s %7s %7s %7s %7s %7s %7s\n", "method", "eval/px", "saving",
-                   "traced", "eP0-5", "eP5-10", "eP10-20", "eP20+", "ePall", "eFLIP");
+            printf("  %-26s %8s %7s %7s %7s %7s %7s %7s %7s %7s %7s %7s %7s\n", "method",
+                   "eval/px", "saving", "traced", "eP0-5", "eP5-10", "eP10-20", "eP20+", "ePall",
+                   "ePfov", "ePmid", "ePqua", "eFLIP");
             for (mi = 0; mi < nall; ++mi)
             for (qi = 0; qi < (strstr(all[mi], "acuity") ? nq : 1); ++qi) {
                 const char *m = all[mi];
