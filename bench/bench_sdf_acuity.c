@@ -18,8 +18,8 @@
    (fov_eye defaults: 1 arcmin + 1.32 arcmin per degree, Guenter et al. 2012), e the pixel's
    eccentricity (separable, the pixel's own width along each pass), as PSNR of the sRGB
    values overall, in eccentricity bands (degrees) and in the regions of the first --quality
-   acuity config (ePfov: its fovea, ePmid: the mid level, ePqua: the quarter level), and FLIP (at the display's pixels per
-   degree) of the filtered images. Equal perceived quality: "equal", eye-filtered PSNR within
+   acuity config (ePfov: its fovea, ePmid: the mid level, ePqua: the quarter level), and FLIP
+   (at the display's pixels per degree) of the filtered images. Equal perceived quality: "equal", eye-filtered PSNR within
    0.5 dB of classic's in every band; "eq45", the same where classic's is below 45 dB and at
    least 45 dB elsewhere (an RMS error of 0.56 % of the sRGB range after the eye's filter);
    else "worse".
