@@ -328,6 +328,32 @@ static void test_quarter(void)
               (unsigned long long)q.st.evals_normal, (unsigned long long)nq.st.evals,
               (unsigned long long)nq.st.evals_lowres, (unsigned long long)nq.st.evals_normal);
     }
+    /* refresh 2 and 4 with the quarter level: a static scene reaches the refresh-1 image after
+       `refresh` frames */
+    for (m = 2; m <= 4; m += 2) {
+        fovsdf_ctx ctx;
+        fovsdf_output o;
+        fov_gaze g;
+        uint32_t fr;
+        cfg = fovsdf_config_default();
+        cfg.method = FOVSDF_METHOD_CONE_FOV;
+        cfg.acuity.fovea_deg = 6.0f;
+        cfg.quarter_deg = 12.0f;
+        cfg.level_filter = 1;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &nq)) break;
+        memset(q.rgb, 0, 3 * n * sizeof(float));
+        g.x = 0.5f * (float)W; g.y = 0.5f * (float)H;
+        cfg.refresh = m;
+        for (fr = 0; fr < m; ++fr) {
+            cfg.frame = 5u + fr;
+            fovsdf_init(&ctx, &cfg, &s.bi.scene, &s.bi.camera, g, NULL, 0);
+            fovsdf_output_init(&o);
+            o.rgb = q.rgb;
+            fovsdf_render_rows(&ctx, 0, H, &o, NULL);
+        }
+        check(memcmp(q.rgb, nq.rgb, 3 * n * sizeof(float)) == 0,
+              fovcheck_name("quarter_refresh_%u_converges", m), "images differ");
+    }
     /* a smooth image (depth shading of a tilted plane): the quarter level, the band and the
        mid level reconstruct the traced image within the bilinear error of its curvature; a
        tap shifted by one pixel would err by the gradient (up to 3e-3 per pixel here) */
