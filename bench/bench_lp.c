@@ -430,8 +430,9 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
 
 /* --acuity-study: what makes fovlp_config_acuity's periphery visible (still camera, gaze at
    the centre). Both images are filtered to the eye's resolution first: a Gaussian of sigma =
-   MAR(e) ppd / 2 pixels at each pixel (separable; the shared fov_eye model at --quality, ppd
-   the display's at its axis), then encoded to sRGB; PSNR and FLIP (at the display's ppd) per
+   MAR(e) ppd / 2 pixels at each pixel (separable; the shared fov_eye model with its defaults,
+   quality 1, whatever --quality configures; ppd the display's at its axis), then encoded to
+   sRGB; PSNR and FLIP (at the display's ppd) per
    eccentricity band, against the ground truth (16 samples per pixel, as gt_image). Rows:
    full (one sample per pixel centre, the full-resolution method); lp_acuity 1 frame (no
    TAA: point samples); lp_acuity prefiltered (the same buffer and reconstruction, each LP
@@ -573,7 +574,7 @@ static void acuity_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uin
     e.W = W; e.H = H; e.ppd = (double)em.f_px * 3.14159265358979 / 180.0; e.ecc = ecc; e.sig = sig;
     for (i = 0; i < npx; ++i) {
         ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
-        sig[i] = 0.5f * fovlp_eye_mar(&eye, ecc[i]) * (float)e.ppd;
+        sig[i] = 0.5f * fovlp_eye_mar(NULL, ecc[i]) * (float)e.ppd; /* the eye: quality 1 */
     }
     gt = (float *)malloc(npx * 3 * sizeof(float)); gtf = (float *)malloc(npx * 3 * sizeof(float));
     tmp = (float *)malloc(npx * 3 * sizeof(float)); f = (float *)malloc(npx * 3 * sizeof(float));

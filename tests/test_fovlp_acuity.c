@@ -13,7 +13,8 @@
    w_C)^(1 / alpha)). Checked:
    - for four displays and three quality values, every radial gap r(u + 1) - r(u) (u from 0 in
      steps of 1/8, any jitter) and every arc 2 pi r / h from the disc edge to the diagonal
-     within s(r) (1e-3 float slack); the frame's own radius table (ctx.rho, with TAA jitter,
+     within s(r) (1e-3 float slack), and both worst ratios above 0.97 (neither the rows nor
+     the columns more than 3 % more than the rule needs); the frame's own radius table (ctx.rho, with TAA jitter,
      four frames) too; the disc at least e_full = (1 / (ppd quality) - mar0) / slope;
    - monotone: the shaded samples per screen pixel (gaze at the centre) never grow with the
      quality knob, with the ppd of a monitor seen from farther away, nor with the pixel count
@@ -187,6 +188,9 @@ static void test_spacing(void)
                   "worst gap / allowed %.4f", worst_r);
             check(worst_a <= 1.001, fovcheck_name("acuity_arc_within_eye_%s", name),
                   "worst arc / allowed %.4f", worst_a);
+            /* and no direction oversampled: a buffer 3 % smaller would break the rule */
+            check(worst_r >= 0.97 && worst_a >= 0.97, fovcheck_name("acuity_tight_%s", name),
+                  "worst radial %.4f, angular %.4f of the allowed spacing", worst_r, worst_a);
             /* the frames' own tables: TAA jitter, gazes at the centre and a corner */
             for (fr = 0; fr < 4; ++fr) {
                 fov_gaze gz;
