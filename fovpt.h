@@ -173,12 +173,13 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    fills the three foveation families from the display (cfg.display; all zero: the camera's
    frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
    shared MAR(e) = mar0 + slope e of Guenter et al. 2012, one quality knob): cfg.layers (count,
-   radius_deg, stride; spp kept), cfg.zones.inner_deg and middle_deg, cfg.selective.e_deg[5]
-   and tau_shape; whichever method cfg.method picks then uses its own family. Every other
-   field (method, spp, blend_deg, overlap_px, n_sd, tau, temporal, display, logger, ...) stays
-   as the caller set it; on an error cfg is unchanged and the logger gets the reason (a bad eye
-   field: FOV_ERR_NOT_FINITE or FOV_ERR_INVALID_ARG naming it; a bad config, camera or display:
-   the code fovpt_config_resolve or fovpt_init would give). A second call changes nothing.
+   radius_deg, stride, bspline = 1; spp kept), cfg.zones.inner_deg, middle_deg and bspline = 1,
+   cfg.selective.e_deg[5] and tau_shape; whichever method cfg.method picks then uses its own
+   family. Every other field (method, spp, blend_deg, overlap_px, n_sd, tau, temporal,
+   display, logger, ...) stays as the caller set it; on an error cfg is unchanged and the
+   logger gets the reason (a bad eye field: FOV_ERR_NOT_FINITE or FOV_ERR_INVALID_ARG naming
+   it; a bad config, camera or display: the code fovpt_config_resolve or fovpt_init would
+   give). A second call changes nothing.
    The fixed tables stay available: fovpt_layers_preset by name, zero fields for the defaults.
    The pixels per degree are fovpt_eye_plan's (at the eye's axis, the coarsest on a flat
    display: the safe side), so the result does not depend on the gaze. Choices:
@@ -199,6 +200,13 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
      are exactly what the eye allows from there), each plus half the overlap band
      (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
+   - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
+     on the coarse lattices. What makes the periphery visible, measured after filtering to the
+     eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp): path-tracing noise of
+     the sparse lattice (upsampled into blobs of the stride's size the eye filter cannot
+     average away), not the reconstruction (with 64 times the samples per lattice point the
+     periphery's error falls by 10-13 dB); the B-spline removes 0.4-1 dB of it (FLIP -10 to
+     -17 %) and costs nothing measurable there (its x64 error is no worse than Catmull-Rom's).
    - Selective. Kim et al. 2021's borders (or the caller's) scaled by one factor k so that
      e_np, beyond which only the presample (one sample per pixel) is traced, falls at e_full,
      beyond which one sample per pixel is as fine as the eye resolves; the zones keep their
@@ -4136,6 +4144,7 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
         out.layers.layer[n].spp = c.layers.layer[src].spp;
     }
     out.layers.layer[0].radius_deg = 0.0f; /* no occlusion mask */
+    out.layers.bspline = 1u; /* the coarse layers' noise averaged (see LAYERS, bspline) */
 
     /* ZONES. Density 1/4 (stride 2) is allowed from e_half, 1/16 (stride 4) from e_quarter;
        the coarser zone's weight starts half an overlap inside the border (overlap_px at the
@@ -4145,6 +4154,7 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
         float mid = fov__minf(plan.e_quarter + mz, 179.9f);
         out.zones.inner_deg = fov__minf(plan.e_half + mz, mid - 0.05f);
         out.zones.middle_deg = mid;
+        out.zones.bspline = 1u;
     }
 
     /* SELECTIVE. Kim et al. 2021's borders scaled by one factor k so that e_np (beyond it the
@@ -4165,6 +4175,7 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     cfg->layers = out.layers;
     cfg->zones.inner_deg = out.zones.inner_deg;
     cfg->zones.middle_deg = out.zones.middle_deg;
+    cfg->zones.bspline = out.zones.bspline;
     for (i = 0; i < 5; ++i) cfg->selective.e_deg[i] = out.selective.e_deg[i];
     for (i = 0; i < 4; ++i) cfg->selective.tau_shape[i] = out.selective.tau_shape[i];
     return FOV_OK;

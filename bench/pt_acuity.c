@@ -15,7 +15,10 @@
                                    aliasing of Catmull-Rom / Lanczos upsampling of point samples),
                                    each against a ground truth (UNIFORM, gt-spp), after both
                                    images are filtered to the eye's resolution (below); PSNR and
-                                   FLIP per eccentricity band
+                                   FLIP per eccentricity band. Methods: uniform (spp),
+                                   layers_acuity and zones_acuity (fovpt_config_acuity, with its
+                                   B-spline reconstruction), _catmull / _lanczos (the same with
+                                   the methods' own filters), _x64 (64 times the samples)
    Build: make build/pt_acuity (or cc -O2 -I. bench/pt_acuity.c -lm -o build/pt_acuity).
 
    Displays of --counts: 640x360 spanning 60 degrees vertically (the camera's field of view);
@@ -223,9 +226,9 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
                  uint32_t spp, int no_x64, const char *only, const char *cache)
 {
     static const char *const mname[9] = { "uniform", "layers_acuity", "layers_acuity_x64",
-                                          "layers_acuity_bspline", "layers_acuity_bspline_x64",
+                                          "layers_acuity_catmull", "layers_acuity_catmull_x64",
                                           "zones_acuity", "zones_acuity_x64",
-                                          "zones_acuity_bspline", "zones_acuity_bspline_x64" };
+                                          "zones_acuity_lanczos", "zones_acuity_lanczos_x64" };
     pt_scene S;
     int id, m, b, i;
     size_t np = (size_t)W * H;
@@ -285,8 +288,8 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
         if (m > 0) {
             c.method = m <= 4 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
-            c.layers.bspline = m == 3 || m == 4 ? 1u : 0u;
-            c.zones.bspline = m >= 7 ? 1u : 0u;
+            if (m == 3 || m == 4) c.layers.bspline = 0; /* the acuity config's B-spline off */
+            if (m >= 7) c.zones.bspline = 0;
             for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
             c.spp = spp * mul;
         }

@@ -355,6 +355,9 @@ static void t_fields(void)
               a.layers.layer[0].spp == 2 && a.layers.layer[1].spp == c.layers.layer[1].spp,
           "layer spp: the caller's by position from the innermost, background's for the background",
           "%u %u %u", a.layers.layer[n - 1].spp, a.layers.layer[n - 2].spp, a.layers.layer[0].spp);
+    check(a.layers.bspline == 1 && a.zones.bspline == 1,
+          "the B-spline reconstruction on for layers and zones", "%u %u", a.layers.bspline,
+          a.zones.bspline);
     b2 = a;
     check(fovpt_config_acuity(&b2, &cam, NULL) == FOV_OK && memcmp(&a, &b2, sizeof a) == 0,
           "a second call changes nothing", "-");
