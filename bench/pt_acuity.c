@@ -18,7 +18,8 @@
                                    FLIP per eccentricity band. Methods: uniform (spp),
                                    layers_acuity and zones_acuity (fovpt_config_acuity, with its
                                    B-spline reconstruction), _catmull / _lanczos (the same with
-                                   the methods' own filters), _x64 (64 times the samples)
+                                   the methods' own filters), _x64 (64 times the samples),
+                                   _eqs (every spp times the saving: about uniform's samples)
    Build: make build/pt_acuity (or cc -O2 -I. bench/pt_acuity.c -lm -o build/pt_acuity).
 
    Displays of --counts: 640x360 spanning 60 degrees vertically (the camera's field of view);
@@ -225,10 +226,11 @@ static int listed(const char *list, const char *name)
 static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
                  uint32_t spp, int no_x64, const char *only, const char *cache)
 {
-    static const char *const mname[9] = { "uniform", "layers_acuity", "layers_acuity_x64",
-                                          "layers_acuity_catmull", "layers_acuity_catmull_x64",
-                                          "zones_acuity", "zones_acuity_x64",
-                                          "zones_acuity_lanczos", "zones_acuity_lanczos_x64" };
+    static const char *const mname[11] = { "uniform", "layers_acuity", "layers_acuity_x64",
+                                           "layers_acuity_catmull", "layers_acuity_catmull_x64",
+                                           "zones_acuity", "zones_acuity_x64",
+                                           "zones_acuity_lanczos", "zones_acuity_lanczos_x64",
+                                           "layers_acuity_eqs", "zones_acuity_eqs" };
     pt_scene S;
     int id, m, b, i;
     size_t np = (size_t)W * H;
@@ -278,20 +280,27 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
     printf(",psnr_raw_all\n");
-    for (m = 0; m < 9; ++m) {
+    for (m = 0; m < 11; ++m) {
         fovpt_config c = base;
         uint32_t n, mul = (m == 2 || m == 4 || m == 6 || m == 8) ? 64u : 1u;
+        double v, raw;
         if (mul > 1u && no_x64) continue;
         if (only && !listed(only, mname[m])) continue;
-        double v, raw;
         c.spp = spp;
         if (m > 0) {
-            c.method = m <= 4 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
+            c.method = m <= 4 || m == 9 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
             if (m == 3 || m == 4) c.layers.bspline = 0; /* the acuity config's B-spline off */
-            if (m >= 7) c.zones.bspline = 0;
+            if (m == 7 || m == 8) c.zones.bspline = 0;
+            for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp;
+            if (m >= 9) { /* _eqs: every spp raised by the saving (equal samples to uniform) */
+                if (render(&S.scene, &S.cam, &c, g, NULL, &st) != 0) return 1;
+                mul = (uint32_t)((double)spp * (double)np / (double)st.samples);
+                if (mul < 1u) mul = 1u;
+            }
             for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
             c.spp = spp * mul;
+            if (m >= 9) mul = 1u; /* print the samples traced */
         }
         if (render(&S.scene, &S.cam, &c, g, img, &st) != 0) return 1;
         {   /* unfiltered PSNR over the image, for comparison */
