@@ -201,12 +201,13 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      are exactly what the eye allows from there), each plus half the overlap band
      (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
    - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
-     on the coarse lattices. What makes the periphery visible, measured after filtering to the
-     eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp): path-tracing noise of
-     the sparse lattice (upsampled into blobs of the stride's size the eye filter cannot
-     average away), not the reconstruction (with 64 times the samples per lattice point the
-     periphery's error falls by 10-13 dB); the B-spline removes 0.4-1 dB of it (FLIP -10 to
-     -17 %) and costs nothing measurable there (its x64 error is no worse than Catmull-Rom's).
+     on the coarse lattices. What makes the periphery visible, measured after filtering both
+     images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, 33.6 and
+     5.4 px/degree): the path-tracing noise of the sparse lattice (upsampled into blobs of the
+     stride's size that the eye's blur does not average away), not the reconstruction (with
+     64 times the samples per lattice point the error beyond e_half falls by 5-13 dB). The
+     B-spline lowers FLIP there by 8-22 % (PSNR -0.3 .. +1.6 dB) and costs no measurable
+     reconstruction error (with 64 times the samples it is no worse than Catmull-Rom/Lanczos).
    - Selective. Kim et al. 2021's borders (or the caller's) scaled by one factor k so that
      e_np, beyond which only the presample (one sample per pixel) is traced, falls at e_full,
      beyond which one sample per pixel is as fine as the eye resolves; the zones keep their
