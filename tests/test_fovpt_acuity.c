@@ -517,8 +517,33 @@ static void t_bspline(void)
     free(smem);
 }
 
+/* SELECTIVE: the scaled borders keep tau_fov's shape as a function of e / k (a metamorphic
+   check: tau_fov of the default borders at e equals the scaled one's at k e; tau_fov's own
+   values are checked against Kim et al. 2021's in test_fovpt.c) */
+static void t_selective(void)
+{
+    fovpt_config c, r0, r1;
+    fovpt_camera cam;
+    double k, worst = 0.0;
+    int i, ok = 1;
+    monitor(&c, &cam, 1920, 1080, 600.0);
+    fovpt_config_resolve(&c, &r0);
+    check(fovpt_config_acuity(&c, &cam, NULL) == FOV_OK && fovpt_config_resolve(&c, &r1) == FOV_OK,
+          "selective: acuity config resolves", "-");
+    k = (double)r1.selective.e_deg[3] / 30.0;
+    for (i = 0; i <= 60; ++i) {
+        float e = 0.75f * (float)i, t0 = 0.0f, t1 = 0.0f;
+        ok &= fovpt_tau_fov(&r0.selective, e, &t0) == FOV_OK;
+        ok &= fovpt_tau_fov(&r1.selective, (float)(k * (double)e), &t1) == FOV_OK;
+        if (fabs((double)t1 - (double)t0) > worst) worst = fabs((double)t1 - (double)t0);
+    }
+    check(ok && worst < 1e-3, "selective: tau_fov(k e) of the scaled borders = tau_fov(e) of Kim's",
+          "worst %.5f", worst);
+}
+
 int main(void)
 {
+    t_selective();
     t_bspline();
     t_allowed();
     t_monotone();
