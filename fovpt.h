@@ -4071,6 +4071,8 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
        with the next stride: small steps keep the sampling near the eye's allowed spacing).
        The first FOVPT_MAX_LAYERS entries at most. */
     static const uint8_t ladder[12] = { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
+    uint32_t sel[FOVPT_MAX_LAYERS];
+    float esel[FOVPT_MAX_LAYERS];
     fovpt_config c, out;
     const fov_logger *lg;
     fov_ecc_model m;
@@ -4110,19 +4112,24 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
        strides up to the allowed spacing at the span (dmax). */
     b = c.layers.blend_deg;
     dmax = (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, span)), 1.0f, 64.0f);
-    nl = 1; /* ladder entries used */
-    while (nl < FOVPT_MAX_LAYERS && nl < 12u && ladder[nl] <= dmax &&
-           fovpt_eye_ecc(eye, ppd, 1.0f / (float)ladder[nl]) + 0.5f * b + eps <
-               179.5f)
+    /* sel: the strides used, finest first; a stride whose e(s) is that of the one before (0:
+       the eye allows both at the gaze) replaces it, so the radii strictly decrease */
+    sel[0] = 1; esel[0] = 0.0f;
+    nl = 1;
+    for (i = 1; i < 12u && ladder[i] <= dmax; ++i) {
+        float es = fovpt_eye_ecc(eye, ppd, 1.0f / (float)ladder[i]);
+        if (!(es + 0.5f * b + eps < 179.5f)) break;
+        if (nl >= 2 && !(es > esel[nl - 1])) { sel[nl - 1] = ladder[i]; continue; }
+        if (nl >= FOVPT_MAX_LAYERS) break;
+        sel[nl] = ladder[i]; esel[nl] = es;
         ++nl;
+    }
     FOV_MEMSET(out.layers.layer, 0, sizeof out.layers.layer);
     if (nl >= 2) {
         out.layers.count = nl;
-        for (n = 0; n < nl; ++n) /* layer n has ladder entry nl - 1 - n (layer 0: coarsest) */
-            out.layers.layer[n].stride = ladder[nl - 1u - n];
-        for (n = 1; n < nl; ++n) {
-            float es = fovpt_eye_ecc(eye, ppd, 1.0f / (float)out.layers.layer[n - 1].stride);
-            out.layers.layer[n].radius_deg = es + 0.5f * b + eps;
+        for (n = 0; n < nl; ++n) { /* layer n has sel[nl - 1 - n] (layer 0: the coarsest) */
+            out.layers.layer[n].stride = sel[nl - 1u - n];
+            if (n > 0) out.layers.layer[n].radius_deg = esel[nl - n] + 0.5f * b + eps;
         }
     } else {
         /* the display is coarser than the eye across the image: the stride-1 layer covers
@@ -4153,7 +4160,7 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     {
         float mz = 0.5f * c.zones.overlap_px / ppd + eps;
         float mid = fov__minf(plan.e_quarter + mz, 179.9f);
-        out.zones.inner_deg = fov__minf(plan.e_half + mz, mid - 0.05f);
+        out.zones.inner_deg = fov__minf(plan.e_half + mz, 0.999f * mid);
         out.zones.middle_deg = mid;
         out.zones.bspline = 1u;
     }
