@@ -191,10 +191,12 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      32, 48, 64 (Axblad 2020's 1-4, then steps of at most 1.5: a layer costs about its disk
      over its stride squared, and every layer covers its whole disk), the first
      FOVPT_MAX_LAYERS entries up to the spacing allowed at the largest eccentricity an
-     on-screen gaze sees (the angle between opposite image corners). A fixed ladder keeps the
-     stride at each eccentricity monotone in ppd and quality. No occlusion mask (layer[0]
-     radius 0). A display coarser than the eye across the image: two layers, stride 1 out to
-     179.5 degrees and a background of the spacing allowed there. Layer spp: the caller's
+     on-screen gaze sees (the angle between opposite image corners); of entries the eye allows
+     already at the gaze (e(s) = 0) only the coarsest is kept, next to the stride-1 layer of
+     radius blend_deg / 2. A fixed ladder keeps the stride at each eccentricity monotone in ppd
+     and quality. No occlusion mask (layer[0] radius 0). A display coarser than the eye
+     across the image: two layers, stride 1 out to 179.5 degrees and a background of the
+     spacing allowed there. Layer spp: the caller's
      table (count 0: the preset's) by position from the innermost layer; extra layers take its
      outermost non-background layer's spp, the background its background's.
    - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
