@@ -196,9 +196,9 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      radius blend_deg / 2. A fixed ladder keeps the stride at each eccentricity monotone in ppd
      and quality. No occlusion mask (layer[0] radius 0). A display coarser than the eye
      across the image: two layers, stride 1 out to 179.5 degrees and a background of the
-     spacing allowed there. Layer spp: the caller's
-     table (count 0: the preset's) by position from the innermost layer; extra layers take its
-     outermost non-background layer's spp, the background its background's.
+     spacing allowed there. Layer spp: the caller's table (count 0: the preset's) by position
+     from the innermost layer; extra layers take its outermost non-background layer's spp, the
+     background its background's.
    - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
      are exactly what the eye allows from there), each plus half the overlap band
      (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
