@@ -15,7 +15,11 @@
                                    aliasing of Catmull-Rom / Lanczos upsampling of point samples),
                                    each against a ground truth (UNIFORM, gt-spp), after both
                                    images are filtered to the eye's resolution (below); PSNR and
-                                   FLIP per eccentricity band
+                                   FLIP per eccentricity band. Methods: uniform (spp),
+                                   layers_acuity and zones_acuity (fovpt_config_acuity, with its
+                                   B-spline reconstruction), _catmull / _lanczos (the same with
+                                   the methods' own filters), _x64 (64 times the samples),
+                                   _eqs (every spp times the saving: about uniform's samples)
    Build: make build/pt_acuity (or cc -O2 -I. bench/pt_acuity.c -lm -o build/pt_acuity).
 
    Displays of --counts: 640x360 spanning 60 degrees vertically (the camera's field of view);
@@ -49,6 +53,7 @@ static void usage(FILE *f)
     fprintf(f, "usage: pt_acuity --counts | --recon [--scene NAME] [--w W --h H] [--ppd P]\n"
                "                 [--gt-spp N] [--spp N] [--no-x64] [--only M1,M2]\n"
                "                 [--gt-cache FILE]  (the ground truth read from / written to FILE)\n"
+               "                 [--mul K]  (the foveated methods' spp times K, not _x64/_eqs)\n"
                "  --counts  samples per pixel and saving of layers/zones (preset, acuity) at\n"
                "            640x360 over 60 deg, 1920x1080 27-inch at 60 cm, 1600x1600 over 100 deg\n"
                "  --recon   error by cause (noise, reconstruction) per eccentricity band after\n"
@@ -220,12 +225,13 @@ static int listed(const char *list, const char *name)
 }
 
 static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
-                 uint32_t spp, int no_x64, const char *only, const char *cache)
+                 uint32_t spp, int no_x64, const char *only, const char *cache, uint32_t fmul)
 {
-    static const char *const mname[9] = { "uniform", "layers_acuity", "layers_acuity_x64",
-                                          "layers_acuity_bspline", "layers_acuity_bspline_x64",
-                                          "zones_acuity", "zones_acuity_x64",
-                                          "zones_acuity_bspline", "zones_acuity_bspline_x64" };
+    static const char *const mname[11] = { "uniform", "layers_acuity", "layers_acuity_x64",
+                                           "layers_acuity_catmull", "layers_acuity_catmull_x64",
+                                           "zones_acuity", "zones_acuity_x64",
+                                           "zones_acuity_lanczos", "zones_acuity_lanczos_x64",
+                                           "layers_acuity_eqs", "zones_acuity_eqs" };
     pt_scene S;
     int id, m, b, i;
     size_t np = (size_t)W * H;
@@ -275,20 +281,28 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
     printf(",psnr_raw_all\n");
-    for (m = 0; m < 9; ++m) {
+    for (m = 0; m < 11; ++m) {
         fovpt_config c = base;
-        uint32_t n, mul = (m == 2 || m == 4 || m == 6 || m == 8) ? 64u : 1u;
+        uint32_t n, mul = (m == 2 || m == 4 || m == 6 || m == 8) ? 64u : 1u, div = mul;
+        double v, raw;
         if (mul > 1u && no_x64) continue;
         if (only && !listed(only, mname[m])) continue;
-        double v, raw;
         c.spp = spp;
         if (m > 0) {
-            c.method = m <= 4 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
+            c.method = m <= 4 || m == 9 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
-            c.layers.bspline = m == 3 || m == 4 ? 1u : 0u;
-            c.zones.bspline = m >= 7 ? 1u : 0u;
+            if (m == 3 || m == 4) c.layers.bspline = 0; /* the acuity config's B-spline off */
+            if (m == 7 || m == 8) c.zones.bspline = 0;
+            for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp;
+            if (mul == 1u && m < 9) mul = fmul; /* --mul: the foveated spp times K */
+            if (m >= 9) { /* _eqs: every spp raised by the saving (equal samples to uniform) */
+                if (render(&S.scene, &S.cam, &c, g, NULL, &st) != 0) return 1;
+                mul = (uint32_t)((double)spp * (double)np / (double)st.samples);
+                if (mul < 1u) mul = 1u;
+            }
             for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
             c.spp = spp * mul;
+
         }
         if (render(&S.scene, &S.cam, &c, g, img, &st) != 0) return 1;
         {   /* unfiltered PSNR over the image, for comparison */
@@ -298,7 +312,7 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
             free(a); free(r);
         }
         eye_filter(img, fim, (int)W, (int)H, sig);
-        printf("%s,%.3f", mname[m], (double)st.samples / (double)np / (double)mul);
+        printf("%s,%.3f", mname[m], (double)st.samples / (double)np / (double)div);
         for (b = 0; b < 4; ++b) {
             fovm_sel sel = fovm_sel_band(ecc, lo[b], hi[b]);
             long cnt = 0;
@@ -326,7 +340,7 @@ int main(int argc, char **argv)
 {
     int i, mode = 0, no_x64 = 0;
     const char *scene = "cornell", *only = NULL, *cache = NULL;
-    uint32_t W = 480, H = 270, gt_spp = 256, spp = 4;
+    uint32_t W = 480, H = 270, gt_spp = 256, spp = 4, fmul = 1;
     float ppd = 33.6f;
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
@@ -335,6 +349,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--no-x64")) no_x64 = 1;
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--gt-cache") && i + 1 < argc) cache = argv[++i];
+        else if (!strcmp(argv[i], "--mul") && i + 1 < argc) fmul = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) scene = argv[++i];
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
@@ -346,11 +361,11 @@ int main(int argc, char **argv)
     if (mode == 1) return counts();
     if (mode == 2) {
         if (W < 16 || H < 16 || W > 4096 || H > 4096 || !(ppd > 0.5f && ppd < 500.0f) || gt_spp < 1 ||
-            spp < 1) {
+            spp < 1 || fmul < 1 || fmul > 1024) {
             fprintf(stderr, "bad size, ppd or spp\n");
             return 2;
         }
-        return recon(scene, W, H, ppd, gt_spp, spp, no_x64, only, cache);
+        return recon(scene, W, H, ppd, gt_spp, spp, no_x64, only, cache, fmul);
     }
     usage(stderr);
     return 2;

@@ -355,6 +355,9 @@ static void t_fields(void)
               a.layers.layer[0].spp == 2 && a.layers.layer[1].spp == c.layers.layer[1].spp,
           "layer spp: the caller's by position from the innermost, background's for the background",
           "%u %u %u", a.layers.layer[n - 1].spp, a.layers.layer[n - 2].spp, a.layers.layer[0].spp);
+    check(a.layers.bspline == 1 && a.zones.bspline == 1,
+          "the B-spline reconstruction on for layers and zones", "%u %u", a.layers.bspline,
+          a.zones.bspline);
     b2 = a;
     check(fovpt_config_acuity(&b2, &cam, NULL) == FOV_OK && memcmp(&a, &b2, sizeof a) == 0,
           "a second call changes nothing", "-");
@@ -514,8 +517,75 @@ static void t_bspline(void)
     free(smem);
 }
 
+/* SELECTIVE: the scaled borders keep tau_fov's shape as a function of e / k (a metamorphic
+   check: tau_fov of the default borders at e equals the scaled one's at k e; tau_fov's own
+   values are checked against Kim et al. 2021's in test_fovpt.c) */
+static void t_selective(void)
+{
+    fovpt_config c, r0, r1;
+    fovpt_camera cam;
+    double k, worst = 0.0;
+    int i, ok = 1;
+    monitor(&c, &cam, 1920, 1080, 600.0);
+    fovpt_config_resolve(&c, &r0);
+    check(fovpt_config_acuity(&c, &cam, NULL) == FOV_OK && fovpt_config_resolve(&c, &r1) == FOV_OK,
+          "selective: acuity config resolves", "-");
+    k = (double)r1.selective.e_deg[3] / 30.0;
+    for (i = 0; i <= 60; ++i) {
+        float e = 0.75f * (float)i, t0 = 0.0f, t1 = 0.0f;
+        ok &= fovpt_tau_fov(&r0.selective, e, &t0) == FOV_OK;
+        ok &= fovpt_tau_fov(&r1.selective, (float)(k * (double)e), &t1) == FOV_OK;
+        if (fabs((double)t1 - (double)t0) > worst) worst = fabs((double)t1 - (double)t0);
+    }
+    check(ok && worst < 1e-3, "selective: tau_fov(k e) of the scaled borders = tau_fov(e) of Kim's",
+          "worst %.5f", worst);
+}
+
+/* extreme eyes and displays: always a valid table within the allowed spacing */
+static void t_extremes(void)
+{
+    static const double dists[5] = { 50.0, 300.0, 600.0, 3000.0, 20000.0 };
+    static const float qs[5] = { 0.01f, 1.0f, 5.0f, 20.0f, 100.0f };
+    static const float m0[3] = { 0.0f, 0.1f, 60.0f }, sl[3] = { 0.0f, 0.05f, 60.0f };
+    int i, k, j, bad = 0;
+    char what[200] = "";
+    for (i = 0; i < 5; ++i)
+        for (k = 0; k < 5; ++k)
+            for (j = 0; j < 3; ++j) {
+                fovpt_config c, r;
+                fovpt_camera cam;
+                fov_eye eye = { m0[j], sl[j], qs[k] };
+                double ppd = dists[i] / 0.3113 * 3.14159265358979 / 180.0;
+                double w0 = j ? (double)m0[j] : 1.0, sp = j ? (double)sl[j] : 1.32;
+                double b = 1.0, allowed;
+                uint32_t n;
+                monitor(&c, &cam, 1920, 1080, dists[i]);
+                if (fovpt_config_acuity(&c, &cam, &eye) != FOV_OK ||
+                    fovpt_config_resolve(&c, &r) != FOV_OK) {
+                    bad++;
+                    snprintf(what, sizeof what, "fails at %.0f mm, q %.2f, eye %d", dists[i],
+                             (double)qs[k], j);
+                    continue;
+                }
+                for (n = 0; n + 1u < c.layers.count; ++n) {
+                    double ein = (double)c.layers.layer[n + 1].radius_deg - 0.5 * b;
+                    allowed = (double)qs[k] * (w0 + sp * (ein > 0.0 ? ein : 0.0)) / 60.0 * ppd;
+                    if ((double)c.layers.layer[n].stride > allowed * (1.0 + 1e-5) &&
+                        c.layers.layer[n].stride > 1u) {
+                        bad++;
+                        snprintf(what, sizeof what, "%.0f mm q %.2f eye %d: layer %u stride %u > %.3f",
+                                 dists[i], (double)qs[k], j, n, c.layers.layer[n].stride, allowed);
+                    }
+                }
+            }
+    check(bad == 0, "extreme eyes (quality 0.01 .. 100, MAR 0.1 .. 60) and displays (50 mm .. 20 m): "
+          "valid tables within the allowed spacing", "%d bad: %s", bad, what);
+}
+
 int main(void)
 {
+    t_extremes();
+    t_selective();
     t_bspline();
     t_allowed();
     t_monotone();
