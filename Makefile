@@ -8,7 +8,9 @@
 #   make bench   the benchmarks (bench-sdf: run time against error, bench/results/sdf.csv;
 #                bench-lp: fovlp samples, speed-up and error per ring, bench/results/lp.csv,
 #                          moving camera and gaze, bench/results/lp_moving.csv;
-#                bench-pt: fovpt methods per visual field, bench/results/pt.csv);
+#                bench-pt: fovpt methods per visual field, bench/results/pt.csv;
+#                bench-perceptual: the three headers' savings at equal perceived quality per
+#                          display, bench/results/perceptual.csv; BENCH_ARGS=--quick);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid;
 #                make bench-sdf-native / bench-sdf-nosimd add rows of a -march=native and a
 #                FOVSDF_NO_SIMD build to sdf.csv, bench-sdf-all runs the three builds
@@ -29,7 +31,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt clean install
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install
 
 all: examples
 
@@ -45,6 +47,14 @@ $(BUILD)/bench_sdf: bench/bench_sdf.c bench/sdf_naive.h fovsdf.h tests/common/fo
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
 
+# fovsdf's acuity-driven foveation against full resolution at one display (not in make bench)
+$(BUILD)/bench_sdf_acuity: bench/bench_sdf_acuity.c fovsdf.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+bench-sdf-acuity: $(BUILD)/bench_sdf_acuity
+	./$(BUILD)/bench_sdf_acuity $(ARGS)
+
 $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
@@ -55,6 +65,11 @@ EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lemb
 $(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h fovpt.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
+
+# fovpt_config_acuity: samples per pixel at three displays, error by cause (bench/pt_acuity.c)
+$(BUILD)/pt_acuity: bench/pt_acuity.c examples/pt_scenes.h examples/fovmetrics.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
 
 $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 	@mkdir -p $(BUILD)
@@ -124,7 +139,22 @@ bench-lp: $(BUILD)/bench_lp
 	@mkdir -p bench/results
 	./$(BUILD)/bench_lp $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf bench-lp bench-pt
+bench: bench-sdf bench-lp bench-pt bench-perceptual
+
+# issue 13: fovsdf, fovlp and fovpt against full resolution by the eye-filtered FLIP of
+# examples/fovmetrics.h at three displays (bench/bench_perceptual.c)
+$(BUILD)/bench_perceptual: bench/bench_perceptual.c fovsdf.h fovlp.h fovpt.h examples/lp_sdf_shade.h examples/pt_scenes.h examples/fovmetrics.h examples/fovrun.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread -o $@
+
+# fovpt runs in a second process beside fovsdf and fovlp; the two CSVs are then joined
+bench-perceptual: $(BUILD)/bench_perceptual
+	@mkdir -p bench/results
+	nice ./$(BUILD)/bench_perceptual --headers pt --out bench/results/perceptual.pt.tmp $(BENCH_ARGS) & \
+	nice ./$(BUILD)/bench_perceptual --headers sdf,lp --out bench/results/perceptual.sdf.tmp $(BENCH_ARGS); \
+	wait $$! && cat bench/results/perceptual.sdf.tmp > bench/results/perceptual.csv && \
+	tail -n +2 bench/results/perceptual.pt.tmp >> bench/results/perceptual.csv && \
+	rm -f bench/results/perceptual.sdf.tmp bench/results/perceptual.pt.tmp
 
 clean:
 	rm -rf $(BUILD) out

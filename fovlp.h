@@ -1,4 +1,4 @@
-/* fovlp.h - v0.3.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.4.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -140,6 +140,51 @@ CHOICES WHERE THE THESIS IS OPEN OR WRONG (each is tested in tests/test_fovlp.c)
    - Jitter is off while the camera moves (thesis), unless taa.jitter_moving.
    - Off-screen gaze: clamped to the screen rectangle (a warning through the logger).
 
+ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye and the display)
+      fovlp_config cfg = fovlp_config_default();
+      cfg.width = 1920;  cfg.height = 1080;
+      cfg.display.pixel_pitch_mm = 0.3113f;  cfg.display.distance_mm = 600.0f;  // 27", 60 cm
+      fov_eye eye = { 0.0f, 0.0f, 1.0f };           // defaults; quality 1 = matched to the eye
+      fovlp_config_acuity(&cfg, NULL, &eye);        // sigma, alpha, gaze disc, lp_aspect
+      // then fovlp_memory_size / fovlp_init as above (cfg.taa, cfg.blend are yours)
+   It fills sigma, alpha, gaze_angle (no_disc 0), lp_aspect, norm (DIAGONAL) and edge (LOG_R)
+   and nothing else; cam (a fovlp_camera, may be NULL) gives the field of view only when
+   cfg.display is all zero, and is then written to cfg.cam_fov_y_deg so that fovlp_init uses
+   the same eccentricity model (with neither, the thesis's viewing distance). The fixed
+   presets (fovlp_config_preset, Table 5.1 of the thesis) are unchanged.
+   The rule (the shared fov_eye model, Guenter et al. 2012): with the gaze on the display's
+   axis, a point r pixels away lies at e(r) = atan(r / f) (f the eye distance in pixels; the
+   gaze disc uses the same r_G = f tan a_G), where the eye allows a sample spacing of
+      s(r) = quality MAR(e(r)) ppd pixels,   MAR(e) = mar0 + slope e,   ppd = f pi / 180
+   (fov_eye_plan's ppd: the coarsest on a flat display, so a pixel subtends at most 1 / ppd
+   degrees anywhere). For every r from the disc edge r_G to R = the screen diagonal (the
+   farthest corner from any gaze on the screen) the gap between neighbouring LP samples stays
+   within s(r): radially r(u + 1) - r(u) <= s(r(u)) for every u >= 0 of the sample radii
+   r(u) = exp(L ((u + u_G) / w_C)^(1 / alpha)) that fovlp_begin_frame tabulates (at any
+   jitter offset), and angularly 2 pi r / h <= s(r). Inside the disc every pixel is shaded
+   1:1: the disc covers at least e_full of fov_eye_plan (where the display's pixels are
+   coarser than the eye, so no reduction is allowed), and more when that costs fewer samples.
+   Among the disc radii and kernel exponents alpha in [1, 8] the call picks the pair with
+   the fewest samples a gaze at the screen centre shades (disc pixels plus on-screen LP
+   texels; the buffer still meets the rule for any gaze): h follows from the arcs at R (the
+   angular rule binds at the far corner since r / s(r) grows with r), w_C from the radial
+   rule, and alpha > 1 lets the radial spacing grow faster than r near the disc, as the
+   eye's does (s(r) has the offset mar0). Then it builds the geometry fovlp_init will
+   derive (fovlp_geometry_get's formulas), checks every gap on it (4 offsets per column) and
+   grows the buffer until all meet the rule. Figures (quality 1, the defaults; saving =
+   screen pixels / samples shaded incl. the disc, gaze at the centre; tools in the report):
+      640x360, 45 degree camera  7.6 ppd  LP 142 x 460, disc 63 px   5.1x
+      640x360, 65 degree camera  4.9 ppd  LP 152 x 611, disc 83 px   3.8x
+      1920x1080, 27" at 60 cm   33.6 ppd  LP 180 x 378, disc 42 px  40.6x
+      1600x1600 over 100 deg    11.7 ppd  LP 244 x 744, disc 98 px  18.5x
+   Limits of the rule: it is exact for a gaze on the display's axis; for other gazes the
+   angle between the eye's rays through neighbouring samples, against quality MAR of the true
+   eccentricity, comes within 1.08 (640x360 at 65 degrees, next to the disc; 1.02 at 45
+   degrees, 1.00 at the 1080p monitor and the 100 degree display). The rule is on the
+   sample spacing only: what the reconstruction makes of the samples (bilinear, TAA) is
+   measured separately. A display coarser than the eye nearly everywhere (the disc would
+   reach beyond half the diagonal) gives FOV_ERR_UNSUPPORTED: trace every pixel instead.
+
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
      threads, allocate memory, or read or write files;
@@ -256,6 +301,9 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
    Meng et al. 2018 X. Meng, R. Du, M. Zwicker, A. Varshney, "Kernel Foveated Rendering",
                     Proceedings of the ACM on Computer Graphics and Interactive Techniques
                     1(1), article 5, 2018.
+   Guenter et al. 2012  B. Guenter, M. Finch, S. Drucker, D. Tan, J. Snyder, "Foveated 3D
+                    Graphics", ACM Transactions on Graphics 31(6), article 164 (SIGGRAPH
+                    Asia), 2012: the linear MAR model and its slopes (the fov_eye defaults).
    Karis 2014       B. Karis, "High Quality Temporal Supersampling", SIGGRAPH 2014 course
                     Advances in Real-Time Rendering in Games.
    Salvi 2016       M. Salvi, "An Excursion in Temporal Supersampling", Game Developers
@@ -264,6 +312,12 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.4.0 (2026-12-02) fovlp_config_acuity: sigma, alpha, the gaze disc and lp_aspect from the
+                      shared eye model (fov_eye, Guenter et al. 2012) and the display, the
+                      fewest samples whose gaps meet quality * MAR(e) * ppd from the disc edge
+                      to the diagonal (ACUITY-DRIVEN CONFIGURATION); the shared block of
+                      revision 2 (fov_eye, fov_eye_plan, fovlp_eye_mar / _density / _ecc /
+                      _plan). The presets are unchanged.
    0.3.0 (2026-12-02) one block shared with fovsdf.h and fovpt.h (tools/fov_shared.h); error
                       messages on by default, a specific one per failure (FOV_DEBUG no longer
                       needed); fovlp_camera_from (the TAA camera of a fov_camera);
@@ -301,9 +355,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVLP_VERSION_MAJOR 0
-#define FOVLP_VERSION_MINOR 3
+#define FOVLP_VERSION_MINOR 4
 #define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.3.0"
+#define FOVLP_VERSION_STRING "0.4.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
@@ -720,6 +774,16 @@ FOVLP_API fov_result fovlp_config_resolve(const fovlp_config *in, fovlp_config *
 /* Geometry of a config for a gaze point, without a context (sizes, u_G, used columns). */
 FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze,
                                         fovlp_geometry *out);
+
+/* Acuity-driven configuration (see ACUITY-DRIVEN CONFIGURATION in the doc block): fills
+   sigma, alpha, gaze_angle, no_disc, lp_aspect, norm and edge of *cfg so that the LP sample
+   spacing meets the eye (eye NULL = the fov_eye defaults) for cfg's display, with the fewest
+   samples; cam (may be NULL) gives the field of view when cfg->display is all zero (then
+   cfg->cam_fov_y_deg is set to it). Every other field is left as it was; *cfg is written
+   only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG (eye, cam, config), _UNSUPPORTED
+   (the eye needs every pixel of the screen), _LIMIT; each logged through cfg->logger. */
+FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *cam,
+                                         const fov_eye *eye);
 
 /* Eccentricity (the shared model; the same semantics as fovsdf_ecc_*). */
 FOVLP_API fov_result fovlp_ecc_init(fov_ecc_model *m, const fov_display *display,
@@ -1831,6 +1895,253 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, 
     if (!cfg) return FOV_ERR_NULL;
     if (!out) FOVLP__FAIL(&cfg->logger, FOV_ERR_NULL, "geometry_get: out is NULL");
     return fovlp__setup(cfg, gaze, &c, &e, &gz, out);
+}
+
+/* ---- acuity-driven configuration (fovlp_config_acuity) ------------------------------------ */
+/* The design model (see the doc block, ACUITY-DRIVEN CONFIGURATION): the gaze on the display's
+   axis, a point r pixels from it at the eccentricity e(r) = atan(r / f), the eye's allowed
+   sample spacing there s(r) = quality MAR(e(r)) ppd pixels (ppd the plan's, the coarsest),
+   for r from the disc edge r_G to R = the screen diagonal (the farthest corner from any gaze
+   on the screen), with the normaliser L = log(diagonal). */
+#define FOVLP__AC_N 64            /* radius nodes of the search */
+typedef struct fovlp__acm {
+    const fov_eye *eye;
+    float f, ppd, L, R, W, H;
+} fovlp__acm;
+/* s(r): the eye's allowed spacing in pixels at radius r */
+FOVLP__PRIV float fovlp__ac_s(const fovlp__acm *a, float r)
+{
+    float e = FOV__ATAN2(r, a->f) * (180.0f / FOV__PI);
+    return fov__eye_mar(a->eye, e) * a->ppd;
+}
+/* fraction of the circle of radius rho about the screen centre that lies on the screen */
+FOVLP__PRIV float fovlp__ac_frac(const fovlp__acm *a, float rho)
+{
+    float hw = 0.5f * a->W, hh = 0.5f * a->H, out = 0.0f;
+    if (rho * rho >= hw * hw + hh * hh) return 0.0f;
+    if (rho > hh) out += FOV__ATAN2(FOV__SQRT(rho * rho - hh * hh), hh);
+    if (rho > hw) out += FOV__ATAN2(FOV__SQRT(rho * rho - hw * hw), hw);
+    return fov__maxf(0.0f, 1.0f - out * (2.0f / FOV__PI));
+}
+/* the screen pixels within rho of the screen centre (the disc of a centred gaze) */
+FOVLP__PRIV float fovlp__ac_disc_area(const fovlp__acm *a, float rho)
+{
+    float hw = 0.5f * a->W, hh = 0.5f * a->H, c = FOV__PI * rho * rho, sa = c, sb = c;
+    if (rho * rho >= hw * hw + hh * hh) return a->W * a->H;
+    if (rho > hh) /* the circle inside the strip |y| <= hh */
+        sb = 2.0f * (hh * FOV__SQRT(rho * rho - hh * hh) +
+                     rho * rho * FOV__ATAN2(hh, FOV__SQRT(rho * rho - hh * hh)));
+    if (rho > hw)
+        sa = 2.0f * (hw * FOV__SQRT(rho * rho - hw * hw) +
+                     rho * rho * FOV__ATAN2(hw, FOV__SQRT(rho * rho - hw * hw)));
+    return fov__maxf(0.0f, sa + sb - c);
+}
+/* The largest step in t = u_C / w_C that keeps the radial gap from a sample at radius r to
+   the next within s(r): (log(r + s(r)) / L)^alpha - (log r / L)^alpha. */
+FOVLP__PRIV float fovlp__ac_dt(const fovlp__acm *a, float r, float alpha)
+{
+    float s = fovlp__ac_s(a, r);
+    return fovlp__pow(FOV__LOG(r + s) / a->L, alpha) - fovlp__pow(FOV__LOG(r) / a->L, alpha);
+}
+/* w_C (radial) and h (angular) that meet the eye from r_g to R, on n log-spaced radii */
+FOVLP__PRIV void fovlp__ac_need(const fovlp__acm *a, float r_g, float alpha, uint32_t n,
+                                float *w_c, float *h)
+{
+    float dmin = FLT_MAX, hmax = 0.0f, lr = FOV__LOG(a->R / r_g);
+    uint32_t k;
+    for (k = 0; k <= n; ++k) {
+        float r = k == n ? a->R : r_g * FOV__EXP(lr * (float)k / (float)n);
+        float d = fovlp__ac_dt(a, r, alpha), q = FOVLP__TWO_PI * r / fovlp__ac_s(a, r);
+        if (d < dmin) dmin = d;
+        if (q > hmax) hmax = q;
+    }
+    *w_c = dmin > 0.0f ? 1.0f / dmin : FLT_MAX;
+    *h = hmax;
+}
+
+/* The worst ratio of a gap between neighbouring samples to the eye's allowed spacing, for the
+   geometry g of the config c (the sample radii of begin_frame's table, exp(L ((i + o + u_G) /
+   w_C)^(1 / alpha)), at offsets o = 0, 1/4, .. 1 of every column, and the arcs 2 pi r / h).
+   *rad and *ang get the radial and angular worst ratios. */
+FOVLP__PRIV void fovlp__ac_check(const fovlp__acm *a, const fovlp_config *c,
+                                 const fovlp_geometry *g, float *rad, float *ang)
+{
+    uint32_t i, j;
+    float ia = 1.0f / c->alpha;
+    *rad = *ang = 0.0f;
+    for (i = 0; i < g->lp_w; ++i) {
+        for (j = 0; j < 4u; ++j) {
+            float u = (float)i + 0.25f * (float)j;
+            float r0 = FOV__EXP(g->L * fovlp__pow((u + g->u_g) / g->w_c, ia));
+            float r1 = FOV__EXP(g->L * fovlp__pow((u + 1.0f + g->u_g) / g->w_c, ia));
+            float s0;
+            if (r0 > a->R) break;
+            s0 = fovlp__ac_s(a, fov__maxf(r0, g->r_g));
+            *rad = fov__maxf(*rad, (r1 - r0) / s0);
+            *ang = fov__maxf(*ang, FOVLP__TWO_PI * r0 / ((float)g->lp_h * s0));
+        }
+        if (j < 4u) break;
+    }
+    *ang = fov__maxf(*ang, FOVLP__TWO_PI * a->R / ((float)g->lp_h * fovlp__ac_s(a, a->R)));
+}
+
+FOVLP__PRIV fov_result fovlp__eye_check(const fov_logger *lg, const fov_eye *eye)
+{
+    static const fov__field f[3] = {
+        FOV__FIELD(fov_eye, mar0_arcmin, 1), FOV__FIELD(fov_eye, slope_arcmin, 1),
+        FOV__FIELD(fov_eye, quality, 1) };
+    fov_result r;
+    if (!eye) return FOV_OK;
+    r = fov__fields_check(lg, "fovlp", "eye.", eye, f, 3u, 0, (uint32_t)__LINE__);
+    if (r == FOV_OK) r = fov__fields_check(lg, "fovlp", "eye.", eye, f, 3u, 1, __LINE__);
+    if (r != FOV_OK) return r;
+    if (eye->mar0_arcmin > 60.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.mar0_arcmin must be in (0, 60] (0: 1)");
+    if (eye->slope_arcmin > 60.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.slope_arcmin must be in (0, 60] (0: 1.32)");
+    if (eye->quality > 100.0f)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.quality must be in (0, 100] (0: 1)");
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *cam,
+                                         const fov_eye *eye)
+{
+    fovlp_config c, t;
+    fov_ecc_model m;
+    fov_eye_plan plan;
+    fovlp__acm a;
+    fovlp_geometry g;
+    fov_gaze gz;
+    fov_result r;
+    const fov_logger *lg;
+    float lq[FOVLP__AC_N], lqs[FOVLP__AC_N], fr[FOVLP__AC_N];
+    float r_lo, r_cap, best = FLT_MAX, b_alpha = 1.0f, b_rg = 0.0f, w_c, hf, rad, ang;
+    uint32_t k, k0, w, h, it;
+    int disp0;
+    if (!cfg) return FOV_ERR_NULL;
+    lg = &cfg->logger;
+    r = fovlp__eye_check(lg, eye);
+    if (r != FOV_OK) return r;
+    t = *cfg;
+    disp0 = fov__is0(t.display.fov_y_deg) && fov__is0(t.display.pixel_pitch_mm) &&
+            fov__is0(t.display.distance_mm);
+    if (cam) {
+        if (!fov__finite(cam->tan_half_y))
+            FOVLP__FAIL(lg, FOV_ERR_NOT_FINITE, "config_acuity: cam.tan_half_y NaN or infinite");
+        if (!(cam->tan_half_y > 0.0f) || cam->tan_half_y > 1e6f)
+            FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config_acuity: cam.tan_half_y must be in "
+                                                 "(0, 1e6] (a field of view in (0, 180))");
+        if (disp0) t.cam_fov_y_deg = 2.0f * FOV__ATAN2(cam->tan_half_y, 1.0f) / FOV__DEG;
+    }
+    t.norm = FOVLP_NORM_DIAGONAL;
+    t.edge = FOVLP_EDGE_LOG_R;
+    r = fovlp_config_resolve(&t, &c);
+    if (r != FOV_OK) return r;
+    gz.x = 0.5f * (float)c.width + c.display.axis_dx; /* the gaze on the display's axis */
+    gz.y = 0.5f * (float)c.height + c.display.axis_dy;
+    r = fovlp_ecc_init(&m, &c.display, fovlp__view_fov(&c), c.width, c.height, gz);
+    if (r == FOV_OK) r = fovlp_eye_plan(eye, &m, &plan);
+    if (r != FOV_OK)
+        FOVLP__FAIL(lg, r, "config_acuity: config.display or cam gives no eccentricity model");
+    a.eye = eye;
+    a.f = m.f_px;
+    a.ppd = plan.ppd;
+    a.W = (float)c.width;
+    a.H = (float)c.height;
+    a.R = FOV__SQRT(a.W * a.W + a.H * a.H);
+    a.L = FOV__LOG(fov__maxf(a.R, 2.0f));
+    /* the disc: at least where the eye needs every pixel (e_full), at most q = 0.98 */
+    r_lo = plan.e_full < 89.0f ? a.f * FOV__TAN(plan.e_full * FOV__DEG) * 1.0001f + 0.01f
+                               : FLT_MAX;
+    r_lo = fov__maxf(r_lo, 1.5f);
+    r_cap = fov__minf(FOV__EXP(0.98f * a.L), fov__minf(0.5f * a.R, a.f * 14.0f));
+    if (!(r_lo < r_cap))
+        FOVLP__FAIL(lg, FOV_ERR_UNSUPPORTED,
+                    "config_acuity: the eye needs every pixel of the screen (no log-polar "
+                    "reduction: trace every pixel)");
+    /* the search: nodes r_k log-spaced on [r_lo, R]; candidates r_G = r_k up to r_cap and
+       alpha in [1, 8] by 1/4, then alpha refined by 1/32. Per candidate: w_C from the radial
+       rule at the nodes, h from the arcs (the same for every candidate), and the samples a
+       centred gaze shades: the disc's pixels plus h w_C times the on-screen part of d(q^alpha). */
+    for (k = 0; k < FOVLP__AC_N; ++k) {
+        float rk = r_lo * FOV__EXP(FOV__LOG(a.R / r_lo) * (float)k / (float)(FOVLP__AC_N - 1));
+        float sk = fovlp__ac_s(&a, rk);
+        lq[k] = FOV__LOG(FOV__LOG(rk) / a.L);
+        lqs[k] = FOV__LOG(FOV__LOG(rk + sk) / a.L);
+        fr[k] = fovlp__ac_frac(&a, rk);
+    }
+    fovlp__ac_need(&a, r_lo, 1.0f, 256u, &w_c, &hf);
+    for (it = 0; it < 2u; ++it) {
+        float a0 = it == 0 ? 1.0f : fov__maxf(1.0f, b_alpha - 0.25f);
+        float a1 = it == 0 ? 8.0f : fov__minf(8.0f, b_alpha + 0.25f);
+        float da = it == 0 ? 0.25f : 0.03125f, al;
+        for (al = a0; al <= a1 + 1e-4f; al += da) {
+            for (k0 = 0; k0 < FOVLP__AC_N - 1u; ++k0) {
+                float rg = r_lo * FOV__EXP(FOV__LOG(a.R / r_lo) * (float)k0 /
+                                           (float)(FOVLP__AC_N - 1));
+                float dmin = FLT_MAX, acc = 0.0f, prev, cost;
+                if (rg > r_cap) break;
+                if (it == 1 && fovlp__neq(rg, b_rg)) continue;
+                prev = FOV__EXP(al * lq[k0]);
+                for (k = k0; k < FOVLP__AC_N; ++k) {
+                    float pk = FOV__EXP(al * lq[k]), d = FOV__EXP(al * lqs[k]) - pk;
+                    if (d < dmin) dmin = d;
+                    if (k > k0) acc += (pk - prev) * 0.5f * (fr[k] + fr[k - 1]);
+                    prev = pk;
+                }
+                if (!(dmin > 0.0f)) continue;
+                cost = fovlp__ac_disc_area(&a, rg) + hf * acc / dmin;
+                if (cost < best) { best = cost; b_alpha = al; b_rg = rg; }
+            }
+        }
+    }
+    if (!(b_rg > 0.0f))
+        FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "config_acuity: no log-polar buffer meets the eye");
+    /* the buffer for the choice, checked on the geometry fovlp_init derives from the config
+       (the sample radii begin_frame tabulates); grown until every gap meets the eye */
+    fovlp__ac_need(&a, b_rg, b_alpha, 1024u, &w_c, &hf);
+    {
+        float G = fovlp__pow(FOV__LOG(b_rg) / a.L, b_alpha);
+        w = fovlp__ceil_u(w_c * (1.0f - G), FOVLP_MAX_LP_DIM);
+        h = fovlp__ceil_u(hf, FOVLP_MAX_LP_DIM);
+    }
+    for (it = 0; it < 16u; ++it) {
+        float asp;
+        if (w < 1u) w = 1u;
+        if (h < 1u) h = 1u;
+        if (w >= FOVLP_MAX_LP_DIM || h >= FOVLP_MAX_LP_DIM)
+            FOVLP__FAIL(lg, FOV_ERR_LIMIT,
+                        "config_acuity: the buffer the eye needs is above FOVLP_MAX_LP_DIM");
+        asp = (float)w / (float)h;
+        t = c;
+        t.lp_aspect = asp;
+        t.sigma = FOV__SQRT(a.W * a.H / asp) / (float)h;
+        t.alpha = b_alpha;
+        t.gaze_angle = FOV__ATAN2(b_rg, a.f);
+        t.no_disc = 0;
+        r = fovlp__geometry(&t, gz, a.f, &g);
+        if (r != FOV_OK) return r;
+        fovlp__ac_check(&a, &t, &g, &rad, &ang);
+        if (g.lp_h >= h && g.lp_w >= w && rad <= 1.0f && ang <= 1.0f && g.r_g >= r_lo - 0.01f)
+            break;
+        if (g.r_g < r_lo - 0.01f) b_rg *= 1.0001f;
+        if (g.lp_w < w || rad > 1.0f)
+            w = fovlp__ceil_u((float)w * fov__maxf(rad, 1.0f), FOVLP_MAX_LP_DIM) + 1u;
+        if (g.lp_h < h || ang > 1.0f)
+            h = fovlp__ceil_u((float)h * fov__maxf(ang, 1.0f), FOVLP_MAX_LP_DIM) + 1u;
+    }
+    if (it == 16u)
+        FOVLP__FAIL(lg, FOV_ERR_DEGENERATE, "config_acuity: the buffer did not meet the eye");
+    cfg->sigma = t.sigma;
+    cfg->alpha = t.alpha;
+    cfg->gaze_angle = t.gaze_angle;
+    cfg->no_disc = 0;
+    cfg->lp_aspect = t.lp_aspect;
+    cfg->norm = FOVLP_NORM_DIAGONAL;
+    cfg->edge = FOVLP_EDGE_LOG_R;
+    if (cam && disp0) cfg->cam_fov_y_deg = t.cam_fov_y_deg;
+    return FOV_OK;
 }
 
 /* ---- context ------------------------------------------------------------------------------ */

@@ -1,4 +1,4 @@
-/* fovpt.h - v0.3.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.4.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -67,13 +67,15 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
       output.
 
-STATUS (v0.2.0)
+STATUS (v0.4.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
    SELECTIVE, JIN) by rows, eccentricity, tau_fov and alpha(e), per-eye cameras and gaze,
    temporal reuse and smoothing (SELECTIVE and JIN only, as in Kim et al. 2021;
    FOV_ERR_UNSUPPORTED with the others).
+   The acuity-driven configuration (fovpt_config_acuity) and the B-spline layer
+   reconstruction (layers.bspline).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (Axblad 2020, Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (3.13)
@@ -117,6 +119,12 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      Pixels beyond the mask radius are black (not traced, as in Axblad 2020). Where the
      innermost full-weight layer has no traced neighbour, the next layer outwards that has
      one gives C (the outermost layer is traced wherever the mask lets it).
+     layers.bspline = 1 (and zones.bspline for ZONES) replaces Catmull-Rom (Lanczos) on the
+     layers of stride >= 2 by the uniform cubic B-spline over the same 4 x 4 neighbours
+     (weights >= 0, no clamp): an approximating filter that averages the lattice's
+     path-tracing noise (per-pixel variance of independent lattice noise x 0.35 against
+     Catmull-Rom, x 0.29 against Lanczos-3, at stride 4) and blurs by about 0.58 stride
+     (standard deviation), near the eye's own blur where the stride follows the acuity.
    - ZONES (Polychronakis 2025, Sec. 4.2): it renders full frames and keeps every 2nd / 4th
      pixel (nearest neighbour); here only the kept pixels are traced: static lattices of
      stride 4 (everywhere), 2 (e <= middle_deg + overlap/2 + apron) and 1 (e <= inner_deg +
@@ -155,6 +163,60 @@ CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
      n_tpi, a = fovpt_alpha(e), C_i = the raw colour at v's pixel in frame t-i when the
      depths agree within eps_depth; rejected frames leave the normalisation; pixels whose
      centre ray misses are not smoothed.
+
+ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
+      fovpt_config cfg = fovpt_config_default();
+      cfg.method = FOVPT_METHOD_LAYERS;                // or ZONES, SELECTIVE
+      cfg.display.pixel_pitch_mm = 0.3113f; cfg.display.distance_mm = 600.0f;  // or all zero
+      fov_eye eye = { 0 };  eye.quality = 1.0f;        // NULL: the defaults (fov_eye)
+      if (fovpt_config_acuity(&cfg, &cam, &eye) != FOV_OK) ...   // then fovpt_memory_size, init
+   fills the three foveation families from the display (cfg.display; all zero: the camera's
+   frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
+   shared MAR(e) = mar0 + slope e of Guenter et al. 2012, one quality knob): cfg.layers (count,
+   radius_deg, stride, bspline = 1; spp kept), cfg.zones.inner_deg, middle_deg and bspline = 1,
+   cfg.selective.e_deg[5] and tau_shape; whichever method cfg.method picks then uses its own
+   family. Every other field (method, spp, blend_deg, overlap_px, n_sd, tau, temporal,
+   display, logger, ...) stays as the caller set it; on an error cfg is unchanged and the
+   logger gets the reason (a bad eye field: FOV_ERR_NOT_FINITE or FOV_ERR_INVALID_ARG naming
+   it; a bad config, camera or display: the code fovpt_config_resolve or fovpt_init would
+   give). A second call changes nothing.
+   The fixed tables stay available: fovpt_layers_preset by name, zero fields for the defaults.
+   The pixels per degree are fovpt_eye_plan's (at the eye's axis, the coarsest on a flat
+   display: the safe side), so the result does not depend on the gaze. Choices:
+   - Layers. The stride-s layer starts (the inner edge of its blend band) at e(s), where the
+     eye's allowed spacing quality * MAR(e) * ppd reaches s pixels (fovpt_eye_ecc(eye, ppd,
+     1/s)): there s is the largest stride within the allowed spacing. The finer layer's
+     radius_deg is then e(s) + blend_deg / 2 (+ 0.001), the innermost layer has stride 1 and
+     full weight out to e(2) >= e_full. Strides from the ladder 1, 2, 3, 4, 6, 8, 12, 16, 24,
+     32, 48, 64 (Axblad 2020's 1-4, then steps of at most 1.5: a layer costs about its disk
+     over its stride squared, and every layer covers its whole disk), the first
+     FOVPT_MAX_LAYERS entries up to the spacing allowed at the largest eccentricity an
+     on-screen gaze sees (the angle between opposite image corners); of entries the eye allows
+     already at the gaze (e(s) = 0) only the coarsest is kept, next to the stride-1 layer of
+     radius blend_deg / 2. A fixed ladder keeps the stride at each eccentricity monotone in ppd
+     and quality. No occlusion mask (layer[0] radius 0). A display coarser than the eye
+     across the image: two layers, stride 1 out to 179.5 degrees and a background of the
+     spacing allowed there. Layer spp: the caller's table (count 0: the preset's) by position
+     from the innermost layer; extra layers take its outermost non-background layer's spp, the
+     background its background's.
+   - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
+     are exactly what the eye allows from there), each plus half the overlap band
+     (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
+   - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
+     on the coarse lattices. What makes the periphery visible, measured after filtering both
+     images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, 33.6 and
+     5.4 px/degree): the path-tracing noise of the sparse lattice (upsampled into blobs of the
+     stride's size that the eye's blur does not average away), not the reconstruction (with
+     64 times the samples per lattice point the error beyond e_half falls by 5-13 dB). The
+     B-spline lowers FLIP there by 8-22 % (PSNR -0.3 .. +1.6 dB) and costs no measurable
+     reconstruction error (with 64 times the samples it is no worse than Catmull-Rom/Lanczos).
+   - Selective. Kim et al. 2021's borders (or the caller's) scaled by one factor k so that
+     e_np, beyond which only the presample (one sample per pixel) is traced, falls at e_full,
+     beyond which one sample per pixel is as fine as the eye resolves; the zones keep their
+     proportions and tau_fov its shape as a function of e / k (tau'_f divided by k, so the
+     shape stays valid). e_np is at least 0.01 degrees and e_max below 180.
+   bench/pt_acuity.c prints the samples per pixel and savings at three displays (and the
+   error by cause after an eye-resolution filter).
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -283,6 +345,9 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Jin et al. 2009  B. Jin, I. Ihm, B. Chang, C. Park, W. Lee, S. Jung, "Selective and Adaptive
                     Supersampling for Real-Time Ray Tracing", High Performance Graphics 2009.
    Kajiya 1986      J. T. Kajiya, "The Rendering Equation", SIGGRAPH 1986.
+   Guenter et al. 2012  B. Guenter, M. Finch, S. Drucker, D. Tan, J. Snyder, "Foveated 3D
+                    Graphics", ACM Transactions on Graphics 31(6) (SIGGRAPH Asia), 2012. (the
+                    eye model of fovpt_config_acuity)
    Veach 1997       E. Veach, "Robust Monte Carlo Methods for Light Transport Simulation",
                     PhD thesis, Stanford University, 1997 (multiple importance sampling).
    Wald 2007        I. Wald, "On Fast Construction of SAH-based Bounding Volume Hierarchies",
@@ -299,6 +364,11 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.4.0 (2026-12-02) fovpt_config_acuity: the layer table (radii, strides from a ladder), the
+                      zone radii and the selective borders from the display and the shared eye
+                      model (fov_eye, fovpt_eye_plan; Guenter et al. 2012), presets kept by
+                      name; layers.bspline (new field): a smoothing cubic B-spline reconstruction
+                      of the coarse layers; bench/pt_acuity.c.
    0.3.0 (2026-12-02) one block shared with fovsdf.h and fovlp.h (tools/fov_shared.h); error
                       messages on by default, a specific one per failure naming the field;
                       fov_camera shared: fovpt_camera is a typedef of it, new field eye_offset
@@ -347,9 +417,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 3
+#define FOVPT_VERSION_MINOR 4
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.3.0"
+#define FOVPT_VERSION_STRING "0.4.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
@@ -716,6 +786,9 @@ typedef struct fovpt_layers_cfg {
     float blend_deg;        /* blend band width around each layer border; 0: 1 degree */
     uint32_t blend_linear;  /* 1: linear vb profile; 0: smoothstep */
     uint32_t snap;          /* 1: lattice origin snapped to multiples of d (no crawling) */
+    uint32_t bspline;       /* 1: layers of stride >= 2 reconstructed by the cubic B-spline
+                               (smoothing: averages the lattice's path-tracing noise) instead
+                               of Catmull-Rom; 0: Catmull-Rom (Axblad 2020) */
 } fovpt_layers_cfg;
 
 typedef enum fovpt_layers_preset_id {
@@ -732,6 +805,8 @@ typedef struct fovpt_zones_cfg {
     float middle_deg;       /* > inner_deg; 0: 32.5 (65 degrees as a diameter) */
     float overlap_px;       /* linear blend width at each border, pixels; 0: 4 */
     uint32_t lanczos_a;     /* Lanczos lobes, 2 or 3; 0: 3 */
+    uint32_t bspline;       /* 1: the 1/4 and 1/16 zones reconstructed by the cubic B-spline
+                               (smoothing, as layers.bspline) instead of Lanczos; 0: Lanczos */
 } fovpt_zones_cfg;
 
 /* Selective foveated supersampling of Kim et al. 2021 (also the JIN baseline). */
@@ -867,6 +942,12 @@ FOVPT_API fovpt_config fovpt_config_default(void);
 /* Defaults filled in and every field validated (also the tables of the methods not used). */
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
+/* Acuity-driven foveation (see ACUITY-DRIVEN CONFIGURATION): fills cfg's layer table, zone radii
+   and selective borders (with the tau_fov slope) from cfg->display (all zero: cam's frustum),
+   the eye (NULL: the defaults) and fovpt_eye_plan; every other field stays as set. Errors
+   through cfg->logger; on error cfg is unchanged. */
+FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
+                                         const fov_eye *eye);
 
 /* The fov_camera defaults (the same as fovsdf_camera_init's: pos (0, 0, 5) looking at the
    origin, up +y, 60 degrees; world +x on the image's right, +y at its top). */
@@ -1813,11 +1894,12 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
-        uint32_t lin = c.layers.blend_linear, snap = c.layers.snap;
+        uint32_t lin = c.layers.blend_linear, snap = c.layers.snap, bs = c.layers.bspline;
         fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_RADIUS);
         if (!(bd <= 0.0f && bd >= 0.0f)) c.layers.blend_deg = bd;
         c.layers.blend_linear = lin;
         c.layers.snap = snap;
+        c.layers.bspline = bs;
     }
     if (c.layers.count < 2 || c.layers.count > FOVPT_MAX_LAYERS)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.count must be 2 .. FOVPT_MAX_LAYERS");
@@ -1830,6 +1912,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.blend_linear must be 0 or 1");
     if (c.layers.snap > 1)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.snap must be 0 or 1");
+    if (c.layers.bspline > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.bspline must be 0 or 1");
     for (i = 0; i < c.layers.count; ++i) {
         const fovpt_layer *L = &c.layers.layer[i];
         const char *bad = 0; /* the broken rule, logged as "config.layers.layer[i].<rule>" */
@@ -1873,6 +1957,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.overlap_px above 64");
     if (c.zones.lanczos_a != 2 && c.zones.lanczos_a != 3)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.lanczos_a must be 2 or 3 (0: 3)");
+    if (c.zones.bspline > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.bspline must be 0 or 1");
     /* selective (Kim et al. 2021) */
     {
         static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
@@ -3804,6 +3890,7 @@ FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
     o->blend_deg = 1.0f;
     o->blend_linear = 1; /* "we linearly interpolate a short overlapping boundary" */
     o->snap = 1;         /* full-frame buffers: lattices do not move with the gaze */
+    o->bspline = c->zones.bspline; /* B-spline instead of Lanczos (reach 2 <= a cells) */
 }
 
 /* temporal ring: the current frame plus n_tpi (smoothing) or 1 (reuse only) previous ones */
@@ -3900,23 +3987,35 @@ FOVPT__PRIV int fovpt__project(const fovpt_view *v, uint32_t W, uint32_t H, cons
 
 /* The eccentricity model of a camera: the display's, or the camera's own frustum; then the
    per-layer lattice origins and traced radii (LAYERS). */
-FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
+/* The eccentricity model of a camera whose image-plane tangents t4 (x from t4[0] to t4[1], y
+   from t4[2] at the top to t4[3]) fovpt__camera_setup gave: the display's when one is given,
+   else the camera's own frustum, off-axis or not (fov_display: f = H / (t + b), the axis at
+   the image point of tangent 0). */
+FOVPT__PRIV fov_result fovpt__ecc_of(const fov_display *disp, const fovpt_camera *cam,
+                                     const float t4[4], fov_gaze gaze, fov_ecc_model *m)
 {
-    fov_display d = ctx->cfg.display;
-    const fovpt_camera *cam = &ctx->cam;
-    fovpt_layers_cfg *L = &ctx->lay;
-    fov_result e;
-    uint32_t n;
+    fov_display d = *disp;
     int given = d.fov_y_deg > 0.0f || d.fov_y_deg < 0.0f || d.pixel_pitch_mm > 0.0f ||
                 d.pixel_pitch_mm < 0.0f || d.distance_mm > 0.0f || d.distance_mm < 0.0f;
     if (!given) {
         /* the camera frustum: f = H / (ty0 - ty1); the axis at the image point of tangent 0 */
-        float fpx = (float)cam->height / (ctx->ty0 - ctx->ty1);
+        float fpx = (float)cam->height / (t4[2] - t4[3]);
         d.fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, fpx) / FOV__DEG;
-        d.axis_dx += -ctx->tx0 * fpx - 0.5f * (float)cam->width;
-        d.axis_dy += ctx->ty0 * fpx - 0.5f * (float)cam->height;
+        d.axis_dx += -t4[0] * fpx - 0.5f * (float)cam->width;
+        d.axis_dy += t4[2] * fpx - 0.5f * (float)cam->height;
     }
-    e = fovpt_ecc_init(&ctx->ecc, &d, 60.0f, cam->width, cam->height, ctx->gaze);
+    return fovpt_ecc_init(m, &d, 60.0f, cam->width, cam->height, gaze);
+}
+
+FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
+{
+    const fovpt_camera *cam = &ctx->cam;
+    fovpt_layers_cfg *L = &ctx->lay;
+    fov_result e;
+    uint32_t n;
+    float t4[4];
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    e = fovpt__ecc_of(&ctx->cfg.display, cam, t4, ctx->gaze, &ctx->ecc);
     if (e != FOV_OK) return e;
     if (ctx->cfg.method != FOVPT_METHOD_UNIFORM) {
         float gxf = fov__clampf(FOV__FLOOR(ctx->gaze.x), -1e9f, 1e9f),
@@ -3952,6 +4051,162 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
             ctx->layer_trace_deg[n] = tr;
         }
     }
+    return FOV_OK;
+}
+
+/* ---- acuity-driven configuration (fovpt_config_acuity) ---------------------------------- */
+/* Checks a fov_eye field by field (NULL: the defaults) with a specific message. */
+FOVPT__PRIV fov_result fovpt__eye_check(const fov_logger *lg, const fov_eye *eye)
+{
+    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
+                                       FOV__MSG("eye.quality") };
+    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
+    float v[3];
+    uint32_t i;
+    if (!eye) return FOV_OK;
+    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
+    for (i = 0; i < 3; ++i) {
+        if (!fov__finite(v[i]))
+            return fov__err3(lg, "fovpt", FOV_ERR_NOT_FINITE, "config_acuity: ", nm[i],
+                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
+        if (v[i] < 0.0f || v[i] > hi[i])
+            return fov__err3(lg, "fovpt", FOV_ERR_INVALID_ARG, "config_acuity: ", nm[i],
+                             i < 2 ? FOV__MSG(" must be in (0, 60] (0: default)")
+                                   : FOV__MSG(" must be in (0, 100] (0: default)"),
+                             (uint32_t)__LINE__);
+    }
+    return FOV_OK;
+}
+
+/* The eye's allowed sample spacing at ecc, in pixels of a display of ppd pixels per degree. */
+FOVPT__PRIV float fovpt__allowed_px(const fov_eye *eye, float ppd, float ecc)
+{
+    return fovpt_eye_mar(eye, fov__clampf(ecc, 0.0f, 180.0f)) * ppd;
+}
+
+FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
+                                         const fov_eye *eye)
+{
+    /* The layer strides the table may use, finest first: Axblad 2020's 1, 2, 3, 4, then steps
+       of at most 1.5 (a layer costs about its disk over its stride squared, and the disk grows
+       with the next stride: small steps keep the sampling near the eye's allowed spacing).
+       The first FOVPT_MAX_LAYERS entries at most. */
+    static const uint8_t ladder[12] = { 1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64 };
+    uint32_t sel[FOVPT_MAX_LAYERS];
+    float esel[FOVPT_MAX_LAYERS];
+    fovpt_config c, out;
+    const fov_logger *lg;
+    fov_ecc_model m;
+    fov_eye_plan plan;
+    fov_gaze g;
+    float r[3], u[3], f[3], t4[4], o[3], span, ppd, b, eps = 1e-3f;
+    fov_result e;
+    uint32_t i, n, nl, dmax;
+    if (!cfg) return FOV_ERR_NULL;
+    lg = &cfg->logger;
+    if (!cam) FOVPT__FAIL(lg, FOV_ERR_NULL, "config_acuity: cam is NULL");
+    e = fovpt__eye_check(lg, eye);
+    if (e != FOV_OK) return e;
+    e = fovpt_config_resolve(cfg, &c); /* the defaults the computation starts from */
+    if (e != FOV_OK) return e;
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
+    if (e != FOV_OK) return fovpt__cam_fail(lg, e, FOV__MSG("config_acuity"), __LINE__);
+    /* the plan does not depend on the gaze (ppd at the eye's axis); the span is the largest
+       eccentricity an on-screen gaze sees: the angle between opposite image corners */
+    g.x = 0.0f; g.y = 0.0f;
+    e = fovpt__ecc_of(&c.display, cam, t4, g, &m);
+    if (e == FOV_OK) e = fovpt_eye_plan(eye, &m, &plan);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: config.display or the camera gives no eye distance");
+    span = fovpt_ecc_deg(&m, (float)cam->width, (float)cam->height);
+    g.x = (float)cam->width;
+    e = fovpt__ecc_of(&c.display, cam, t4, g, &m);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: config.display or the camera gives no eye distance");
+    span = fov__maxf(span, fovpt_ecc_deg(&m, 0.0f, (float)cam->height));
+    ppd = plan.ppd;
+    out = *cfg;
+
+    /* LAYERS. The stride-s layer starts (its blend band's inner edge) where the eye's allowed
+       spacing reaches s pixels, e(s) = fovpt_eye_ecc(eye, ppd, 1 / s): there s is the largest
+       stride within the allowed spacing. The finer layer's radius is e(s) + blend / 2. Ladder
+       strides up to the allowed spacing at the span (dmax). */
+    b = c.layers.blend_deg;
+    dmax = (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, span)), 1.0f, 64.0f);
+    /* sel: the strides used, finest first; a stride whose e(s) is that of the one before (0:
+       the eye allows both at the gaze) replaces it, so the radii strictly decrease */
+    sel[0] = 1; esel[0] = 0.0f;
+    nl = 1;
+    for (i = 1; i < 12u && ladder[i] <= dmax; ++i) {
+        float es = fovpt_eye_ecc(eye, ppd, 1.0f / (float)ladder[i]);
+        if (!(es + 0.5f * b + eps < 179.5f)) break;
+        if (nl >= 2 && !(es > esel[nl - 1])) { sel[nl - 1] = ladder[i]; continue; }
+        if (nl >= FOVPT_MAX_LAYERS) break;
+        sel[nl] = ladder[i]; esel[nl] = es;
+        ++nl;
+    }
+    FOV_MEMSET(out.layers.layer, 0, sizeof out.layers.layer);
+    if (nl >= 2) {
+        out.layers.count = nl;
+        for (n = 0; n < nl; ++n) { /* layer n has sel[nl - 1 - n] (layer 0: the coarsest) */
+            out.layers.layer[n].stride = sel[nl - 1u - n];
+            if (n > 0) out.layers.layer[n].radius_deg = esel[nl - n] + 0.5f * b + eps;
+        }
+    } else {
+        /* the display is coarser than the eye across the image: the stride-1 layer covers
+           everything up to 179.5 degrees; the background (never on screen unless the blend
+           band reaches it) takes the spacing allowed at its inner border */
+        float ein = 179.5f - 0.5f * b;
+        out.layers.count = 2;
+        out.layers.layer[1].stride = 1;
+        out.layers.layer[1].radius_deg = 179.5f;
+        out.layers.layer[0].stride =
+            (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, ein)), 1.0f, 64.0f);
+    }
+    /* spp: the caller's table (or the preset's) by position from the innermost layer; layers
+       beyond its length take its outermost non-background layer's, the background its
+       background's */
+    for (n = 0; n < out.layers.count; ++n) {
+        uint32_t j = out.layers.count - 1u - n, src; /* j: position from the innermost */
+        if (n == 0) src = 0;
+        else src = j < c.layers.count - 1u ? c.layers.count - 1u - j : 1u;
+        out.layers.layer[n].spp = c.layers.layer[src].spp;
+    }
+    out.layers.layer[0].radius_deg = 0.0f; /* no occlusion mask */
+    out.layers.bspline = 1u; /* the coarse layers' noise averaged (see LAYERS, bspline) */
+
+    /* ZONES. Density 1/4 (stride 2) is allowed from e_half, 1/16 (stride 4) from e_quarter;
+       the coarser zone's weight starts half an overlap inside the border (overlap_px at the
+       gaze, whose pixels per degree are at least the plan's: plan.ppd gives the wider band) */
+    {
+        float mz = 0.5f * c.zones.overlap_px / ppd + eps;
+        float mid = fov__minf(plan.e_quarter + mz, 179.9f);
+        out.zones.inner_deg = fov__minf(plan.e_half + mz, 0.999f * mid);
+        out.zones.middle_deg = mid;
+        out.zones.bspline = 1u;
+    }
+
+    /* SELECTIVE. Kim et al. 2021's borders scaled by one factor k so that e_np (beyond it the
+       presample only, one sample per pixel) falls at e_full (from there one sample per pixel is
+       as fine as the eye resolves); the zones keep their proportions and tau_fov its shape
+       (its slope tau'_f divided by k: the same curve of e / k) */
+    {
+        fovpt_selective_cfg *s = &out.selective;
+        float k = fov__maxf(plan.e_full, 0.01f) / c.selective.e_deg[3];
+        k = fov__minf(k, 179.0f / c.selective.e_deg[4]);
+        for (i = 0; i < 5; ++i) s->e_deg[i] = c.selective.e_deg[i] * k;
+        for (i = 0; i < 4; ++i) s->tau_shape[i] = c.selective.tau_shape[i];
+        s->tau_shape[2] = c.selective.tau_shape[2] / k;
+    }
+    e = fovpt_config_resolve(&out, &c);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: the derived layers, zones or fields do not validate");
+    cfg->layers = out.layers;
+    cfg->zones.inner_deg = out.zones.inner_deg;
+    cfg->zones.middle_deg = out.zones.middle_deg;
+    cfg->zones.bspline = out.zones.bspline;
+    for (i = 0; i < 5; ++i) cfg->selective.e_deg[i] = out.selective.e_deg[i];
+    for (i = 0; i < 4; ++i) cfg->selective.tau_shape[i] = out.selective.tau_shape[i];
     return FOV_OK;
 }
 
@@ -4466,6 +4721,18 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
     return 1;
 }
 
+/* Uniform cubic B-spline weights of v0..v3 at t in [0, 1]: non-negative, sum 1; at t = 0
+   (1, 4, 1) / 6 (an approximating, smoothing filter: the variance of independent noise on the
+   lattice falls to 0.48 of it in one dimension, averaged over t, against 0.81 for Catmull-Rom). */
+FOVPT__PRIV void fovpt__bspline(float t, float w[4])
+{
+    float u = 1.0f - t, t2 = t * t, t3 = t2 * t;
+    w[0] = u * u * u / 6.0f;
+    w[1] = (3.0f * t3 - 6.0f * t2 + 4.0f) / 6.0f;
+    w[2] = (-3.0f * t3 + 3.0f * t2 + 3.0f * t + 1.0f) / 6.0f;
+    w[3] = t3 / 6.0f;
+}
+
 /* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (Axblad 2020,
    Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when
    unavailable. */
@@ -4483,9 +4750,15 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
     fx = (float)(rx - kx * (int32_t)d) / (float)d;
     fy = (float)(ry - ky * (int32_t)d) / (float)d;
-    if (ctx->lanczos) return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
-    fovpt_catmull_rom(fx, wx);
-    fovpt_catmull_rom(fy, wy);
+    if (ctx->lanczos && !(ctx->lay.bspline && d >= 2))
+        return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
+    if (ctx->lay.bspline && d >= 2) {
+        fovpt__bspline(fx, wx);
+        fovpt__bspline(fy, wy);
+    } else {
+        fovpt_catmull_rom(fx, wx);
+        fovpt_catmull_rom(fy, wy);
+    }
     for (j = 0; j < 4 && ok; ++j) {
         int32_t lj = ky - 1 + j;
         lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);

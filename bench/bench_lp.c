@@ -37,6 +37,8 @@
    usage: bench_lp [--full] [--hd] [--shadows] [--runs N] [--frames N] [--scenes a,b]
                    [--moving-scenes a,b] [--moving-frames N] [--out FILE]
           bench_lp --fovea-study [--scenes a,b]   what limits the fovea's PSNR (see fovea_study)
+          bench_lp --acuity-study [--scenes a,b] [--display cam|monitor|hmd] [--quality Q] [--frames N]
+                   what makes fovlp_config_acuity's periphery visible (see acuity_study)
    Default grid (640x360, shading without shadow rays as bench-sdf does, 3 timing runs; about
    10 minutes on a 2-core machine): five scenes (atrium, whose fovea is flat, only with
    --full), the four presets of Table 5.1 plus C Fov at sigma 1.7 and 2.0 (Table 5.4); the
@@ -426,6 +428,263 @@ static void fovea_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint
     free(ecc); free(tmp); free(mem);
 }
 
+/* --acuity-study: what makes fovlp_config_acuity's periphery visible (still camera, gaze at
+   the centre). Both images are filtered to the eye's resolution first: a Gaussian of sigma =
+   MAR(e) ppd / 2 pixels at each pixel (separable; the shared fov_eye model with its defaults,
+   quality 1, whatever --quality configures; ppd the display's at its axis), then encoded to
+   sRGB; PSNR and FLIP (at the display's ppd) per
+   eccentricity band, against the ground truth (16 samples per pixel, as gt_image). Rows:
+   full (one sample per pixel centre, the full-resolution method); lp_acuity 1 frame (no
+   TAA: point samples); lp_acuity prefiltered (the same buffer and reconstruction, each LP
+   sample the mean of 4 x 4 points over its texel: what point sampling costs); lp_acuity with
+   TAA after 1, 4, 8 and --frames still frames; C Fov with TAA after --frames. Then per band:
+   detail (the variance of each image minus its 5 x 5 box mean, after the eye filter) of the
+   output over the ground truth's (below 1: contrast lost), and flicker (mean |change| per
+   frame after the eye filter, last half of the frames) of the raw jittered reconstruction and
+   of the TAA output. Displays (--display): cam (W x H spanning the scene camera's field of
+   view, as bench-lp), monitor (1920 x 1080, 0.3113 mm pixels at 600 mm: 33.6 ppd) and hmd
+   (1600 x 1600 over 100 degrees); the camera's field of view is the display's. Prints to
+   stderr; writes nothing. */
+#define ACU_NB 5
+static const double acu_band[ACU_NB + 1] = { 0.0, 5.0, 10.0, 20.0, 30.0, 180.0 };
+typedef struct acu_env {
+    uint32_t W, H;
+    double ppd;
+    const float *ecc, *sig;
+} acu_env;
+/* linear in, eye-filtered sRGB out (tmp: 3 W H floats) */
+static void acu_filter(const acu_env *e, const float *in, float *tmp, float *out)
+{
+    uint32_t x, y, W = e->W, H = e->H;
+    int pass;
+    for (pass = 0; pass < 2; ++pass) {
+        const float *src = pass ? tmp : in;
+        float *dst = pass ? out : tmp;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                size_t i = (size_t)y * W + x;
+                float s = e->sig[i];
+                double acc[3] = { 0, 0, 0 }, ws = 0.0;
+                int R = s < 0.25f ? 0 : (int)ceilf(2.5f * s), d;
+                for (d = -R; d <= R; ++d) {
+                    int xx = pass ? (int)x : (int)x + d, yy = pass ? (int)y + d : (int)y;
+                    double w;
+                    const float *p;
+                    if (xx < 0 || yy < 0 || xx >= (int)W || yy >= (int)H) continue;
+                    w = R ? exp(-(double)(d * d) / (2.0 * (double)s * (double)s)) : 1.0;
+                    p = src + 3 * ((size_t)yy * W + (size_t)xx);
+                    acc[0] += w * (double)p[0]; acc[1] += w * (double)p[1]; acc[2] += w * (double)p[2];
+                    ws += w;
+                }
+                for (d = 0; d < 3; ++d) dst[3 * i + (size_t)d] = (float)(acc[d] / ws);
+            }
+    }
+    for (x = 0; x < W * H * 3; ++x) out[x] = srgb(out[x]);
+}
+static void acu_row(const acu_env *e, const char *name, const float *gtf, const float *img, float *tmp, float *f)
+{
+    int b;
+    double p = 0.0, fl = 0.0;
+    long n;
+    acu_filter(e, img, tmp, f);
+    fprintf(stderr, "  %-24s", name);
+    for (b = 0; b < ACU_NB; ++b) {
+        fovm_sel sel = fovm_sel_band(e->ecc, acu_band[b], acu_band[b + 1]);
+        fovm_psnr_sel(gtf, f, (int)e->W, (int)e->H, 3, &sel, &p, &n);
+        fovm_flip_sel(gtf, f, (int)e->W, (int)e->H, 3, e->ppd, &sel, &fl, &n);
+        if (n) fprintf(stderr, " | %5.1f %.3f", p, fl); else fprintf(stderr, " |    -      - ");
+    }
+    fovm_psnr(gtf, f, (int)e->W, (int)e->H, 3, &p);
+    fovm_flip(gtf, f, (int)e->W, (int)e->H, 3, e->ppd, &fl, NULL);
+    fprintf(stderr, " || %5.1f %.3f\n", p, fl);
+}
+/* detail energy of f over gtf per band (both eye-filtered sRGB) */
+static void acu_detail(const acu_env *e, const char *name, const float *gtf, const float *f)
+{
+    double et[ACU_NB], eg[ACU_NB];
+    uint32_t x, y, W = e->W;
+    int b, c, dx, dy;
+    memset(et, 0, sizeof et); memset(eg, 0, sizeof eg);
+    for (y = 2; y + 2 < e->H; ++y)
+        for (x = 2; x + 2 < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            for (b = 0; b < ACU_NB && !((double)e->ecc[i] < acu_band[b + 1]); ++b) {}
+            if (b == ACU_NB) continue;
+            for (c = 0; c < 3; ++c) {
+                double mt = 0.0, mg = 0.0;
+                for (dy = -2; dy <= 2; ++dy)
+                    for (dx = -2; dx <= 2; ++dx) {
+                        size_t j = 3 * ((size_t)((int)y + dy) * W + (size_t)((int)x + dx)) + (size_t)c;
+                        mt += (double)f[j]; mg += (double)gtf[j];
+                    }
+                mt = (double)f[3 * i + (size_t)c] - mt / 25.0; mg = (double)gtf[3 * i + (size_t)c] - mg / 25.0;
+                et[b] += mt * mt; eg[b] += mg * mg;
+            }
+        }
+    fprintf(stderr, "  %-24s detail / ground truth's:", name);
+    for (b = 0; b < ACU_NB; ++b) fprintf(stderr, " %.2f", eg[b] > 0.0 ? et[b] / eg[b] : 0.0);
+    fprintf(stderr, "\n");
+}
+static void acuity_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uint32_t H, int display, float q,
+                         int nfr)
+{
+    fovsdf_builtin bi;
+    fovsdf_ctx sdf;
+    lpsdf_user user;
+    size_t bytes = 0, npx, i;
+    void *mem;
+    fov_gaze gaze;
+    fov_ecc_model em;
+    fov_eye eye;
+    fovlp_config ac;
+    fovlp_camera cam;
+    acu_env e;
+    float *ecc, *sig, *gt, *gtf, *tmp, *f, *img, *prevr, *prevo, *fr, *fo;
+    const char *nm = fovsdf_builtin_name(id);
+    int mode, k;
+    fov_result r;
+    if (display == 1) { W = 1920; H = 1080; }
+    if (display == 2) { W = H = 1600; }
+    npx = (size_t)W * H;
+    fovsdf_builtin_size(id, &bytes);
+    mem = malloc(bytes);
+    fovsdf_builtin_init(id, &bi, mem, bytes);
+    bi.camera.width = W;
+    bi.camera.height = H;
+    ac = fovlp_config_default();
+    ac.width = W; ac.height = H;
+    if (display == 1) { ac.display.pixel_pitch_mm = 0.3113f; ac.display.distance_mm = 600.0f; }
+    if (display == 2) ac.display.fov_y_deg = 100.0f;
+    if (display == 1) bi.camera.fov_y_deg = 2.0f * atanf(0.5f * (float)H * 0.3113f / 600.0f) * 57.2957795f;
+    if (display == 2) bi.camera.fov_y_deg = 100.0f;
+    gaze.x = 0.5f * (float)W; gaze.y = 0.5f * (float)H;
+    fovsdf_init(&sdf, scfg, &bi.scene, &bi.camera, gaze, NULL, 0);
+    memset(&user, 0, sizeof user);
+    user.sdf = &sdf;
+    fovlp_camera_from(&bi.camera, &cam);
+    memset(&eye, 0, sizeof eye);
+    eye.quality = q;
+    if ((r = fovlp_config_acuity(&ac, &cam, &eye)) != FOV_OK) {
+        fprintf(stderr, "  %s: fovlp_config_acuity: %s\n", nm, fovlp_result_string(r));
+        free(mem);
+        return;
+    }
+    fovlp_ecc_init(&em, &ac.display, bi.camera.fov_y_deg, W, H, gaze);
+    ecc = (float *)malloc(npx * sizeof(float)); sig = (float *)malloc(npx * sizeof(float));
+    e.W = W; e.H = H; e.ppd = (double)em.f_px * 3.14159265358979 / 180.0; e.ecc = ecc; e.sig = sig;
+    for (i = 0; i < npx; ++i) {
+        ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
+        sig[i] = 0.5f * fovlp_eye_mar(NULL, ecc[i]) * (float)e.ppd; /* the eye: quality 1 */
+    }
+    gt = (float *)malloc(npx * 3 * sizeof(float)); gtf = (float *)malloc(npx * 3 * sizeof(float));
+    tmp = (float *)malloc(npx * 3 * sizeof(float)); f = (float *)malloc(npx * 3 * sizeof(float));
+    img = (float *)malloc(npx * 3 * sizeof(float));
+    prevr = (float *)malloc(npx * 3 * sizeof(float)); prevo = (float *)malloc(npx * 3 * sizeof(float));
+    fr = (float *)malloc(npx * 3 * sizeof(float)); fo = (float *)malloc(npx * 3 * sizeof(float));
+    fprintf(stderr, "%s, %ux%u, %.1f ppd, camera %.1f degrees, quality %.2f: sigma %.3f alpha %.3f gaze_angle %.4f "
+            "lp_aspect %.3f\n", nm, W, H, e.ppd, (double)bi.camera.fov_y_deg, (double)q, (double)ac.sigma,
+            (double)ac.alpha, (double)ac.gaze_angle, (double)ac.lp_aspect);
+    fprintf(stderr, "  %-24s", "eye-filtered PSNR FLIP:");
+    for (k = 0; k < ACU_NB; ++k) fprintf(stderr, " | %3.0f-%-3.0f deg ", acu_band[k], acu_band[k + 1]);
+    fprintf(stderr, " || whole image\n");
+    gt_image(&user, W, H, NULL, 0.0f, 16, 0, gt);
+    acu_filter(&e, gt, tmp, gtf);
+    gt_image(&user, W, H, NULL, 0.0f, 1, 1, img);
+    acu_row(&e, "full (1 spp)", gtf, img, tmp, f);
+    acu_detail(&e, "full (1 spp)", gtf, f);
+    for (mode = 0; mode < 4; ++mode) {
+        /* 0 lp_acuity 1 frame, 1 prefiltered, 2 lp_acuity TAA, 3 C Fov TAA */
+        fovlp_config c = mode == 3 ? fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H) : ac;
+        fovlp_ctx lp;
+        fovlp_counts cnt;
+        void *lm;
+        float *smp, *sd, *cur, *cd, *hist[2], *hd[2];
+        uint8_t *ag[2];
+        int fi, ping = 0, n = mode >= 2 ? nfr : 1;
+        double flr[ACU_NB], flo[ACU_NB], fln[ACU_NB];
+        const float *out = NULL;
+        char label[64];
+        memset(flr, 0, sizeof flr); memset(flo, 0, sizeof flo); memset(fln, 0, sizeof fln);
+        if (mode == 3) { c.display = ac.display; c.cam_fov_y_deg = bi.camera.fov_y_deg; }
+        c.taa.enable = mode >= 2 ? 1u : 0u;
+        fovlp_memory_size(&c, &bytes);
+        lm = malloc(bytes);
+        fovlp_init(&lp, &c, lm, bytes);
+        smp = (float *)calloc((size_t)lp.geo.samples * 3, sizeof(float));
+        sd = (float *)calloc((size_t)lp.geo.samples, sizeof(float));
+        cur = (float *)malloc(npx * 3 * sizeof(float)); cd = (float *)malloc(npx * sizeof(float));
+        for (k = 0; k < 2; ++k) {
+            hist[k] = (float *)calloc(npx * 3, sizeof(float)); hd[k] = (float *)calloc(npx, sizeof(float));
+            ag[k] = (uint8_t *)calloc(npx, 1);
+        }
+        for (fi = 0; fi < n; ++fi) {
+            if (mode >= 2) {
+                out = taa_frame(&lp, gaze, &cam, &user, smp, sd, cur, cd, hist, hd, ag, &ping);
+            } else {
+                fovlp_begin_frame(&lp, gaze, &cam);
+                lpsdf_shade_samples(&lp, 0, fovlp_sample_rows(&lp), &user, smp, sd);
+                if (mode == 1) {
+                    uint32_t u, v;
+                    for (v = 0; v < lp.geo.lp_h; ++v)
+                        for (u = 0; u < lp.geo.lp_cols; ++u) {
+                            float acc[3] = { 0, 0, 0 }, cc[3], x, y;
+                            int a, b, m = 0;
+                            for (a = 0; a < 4; ++a)
+                                for (b = 0; b < 4; ++b) {
+                                    if (fovlp_lp_to_screen(&lp, (float)u + ((float)a + 0.5f) / 4.0f,
+                                                           (float)v + ((float)b + 0.5f) / 4.0f, &x, &y) != FOV_OK)
+                                        continue;
+                                    if (x < 0.0f || y < 0.0f || x >= (float)W || y >= (float)H) continue;
+                                    lpsdf_shade(x, y, cc, NULL, &user);
+                                    acc[0] += cc[0]; acc[1] += cc[1]; acc[2] += cc[2]; ++m;
+                                }
+                            if (m) for (a = 0; a < 3; ++a) smp[3 * ((size_t)v * lp.geo.lp_w + u) + (size_t)a] = acc[a] / (float)m;
+                        }
+                }
+                fovlp_reconstruct_rows(&lp, smp, sd, 0, H, cur, 0, cd);
+                out = cur;
+            }
+            if (mode == 2 && (fi == 0 || fi == 3 || fi == 7) && fi + 1 < n) {
+                snprintf(label, sizeof label, "lp_acuity TAA %d", fi + 1);
+                acu_row(&e, label, gtf, out, tmp, f);
+            }
+            if (mode >= 2 && fi >= n / 2) { /* flicker of the raw reconstruction and the output */
+                acu_filter(&e, cur, tmp, fr);
+                acu_filter(&e, out, tmp, fo);
+                if (fi > n / 2)
+                    for (i = 0; i < npx; ++i) {
+                        for (k = 0; k < ACU_NB && !((double)ecc[i] < acu_band[k + 1]); ++k) {}
+                        if (k == ACU_NB) continue;
+                        for (int ch = 0; ch < 3; ++ch) {
+                            flr[k] += fabs((double)fr[3 * i + (size_t)ch] - (double)prevr[3 * i + (size_t)ch]);
+                            flo[k] += fabs((double)fo[3 * i + (size_t)ch] - (double)prevo[3 * i + (size_t)ch]);
+                        }
+                        fln[k] += 3.0;
+                    }
+                memcpy(prevr, fr, npx * 3 * sizeof(float)); memcpy(prevo, fo, npx * 3 * sizeof(float));
+            }
+        }
+        fovlp_count_samples(&lp, &cnt);
+        snprintf(label, sizeof label, "%s%s", mode == 3 ? "C Fov" : "lp_acuity",
+                 mode == 0 ? " 1 frame" : (mode == 1 ? " prefiltered" : ""));
+        if (mode >= 2) snprintf(label + strlen(label), sizeof label - strlen(label), " TAA %d", n);
+        fprintf(stderr, "  [%s: LP %u x %u, r_G %.1f px, saving %.2fx (pixels / shaded samples)]\n", label,
+                lp.geo.lp_w, lp.geo.lp_h, (double)lp.geo.r_g, 100.0 / (double)cnt.shaded_pct);
+        acu_row(&e, label, gtf, out, tmp, f);
+        acu_detail(&e, label, gtf, f);
+        if (mode >= 2) {
+            fprintf(stderr, "  %-24s flicker raw / TAA:", label);
+            for (k = 0; k < ACU_NB; ++k)
+                fprintf(stderr, " %.4f / %.4f", fln[k] > 0 ? flr[k] / fln[k] : 0.0, fln[k] > 0 ? flo[k] / fln[k] : 0.0);
+            fprintf(stderr, "\n");
+        }
+        for (k = 0; k < 2; ++k) { free(hist[k]); free(hd[k]); free(ag[k]); }
+        free(lm); free(smp); free(sd); free(cur); free(cd);
+    }
+    free(ecc); free(sig); free(gt); free(gtf); free(tmp); free(f); free(img); free(prevr); free(prevo); free(fr);
+    free(fo); free(mem);
+}
+
 /* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
 static void usage(FILE *f)
 {
@@ -441,13 +700,16 @@ static void usage(FILE *f)
           "  --moving-frames N   frames of the moving sequence (default 12)\n"
           "  --out FILE          CSV (default bench/results/lp.csv)\n"
           "  --fovea-study       what limits the fovea's PSNR, printed\n"
+          "  --acuity-study      what makes fovlp_config_acuity's periphery visible, printed\n"
+          "  --quality Q         --acuity-study: the fov_eye quality knob (default 1)\n"
+          "  --display D         --acuity-study: cam (default), monitor or hmd\n"
           "  -h, --help          this text\n", f);
 }
 
 int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
-    int study = 0, full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
+    int study = 0, astudy = 0, adisp = 0, full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
     const char *scenes = NULL, *outpath = "bench/results/lp.csv", *mscenes = NULL;
     char mpath[600];
     cfg_t cfgs[64];
@@ -456,6 +718,7 @@ int main(int argc, char **argv)
     float *gt, *gt_disp, *gtref, *gtref_disp, *full_img, *centres, *disp, *ecc, *samples, *sdep, *cur, *cdep, *hist[2], *hdep[2], *prev_t, *prev_r;
     uint8_t *age[2];
     double t_start = now_ms();
+    float aq = 1.0f;
 
     for (a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
@@ -467,6 +730,13 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
         else if (!strcmp(argv[a], "--fovea-study")) study = 1;
+        else if (!strcmp(argv[a], "--acuity-study")) astudy = 1;
+        else if (!strcmp(argv[a], "--quality") && a + 1 < argc) aq = (float)atof(argv[++a]);
+        else if (!strcmp(argv[a], "--display") && a + 1 < argc) {
+            ++a;
+            adisp = !strcmp(argv[a], "monitor") ? 1 : (!strcmp(argv[a], "hmd") ? 2 : (!strcmp(argv[a], "cam") ? 0 : -1));
+            if (adisp < 0) { fprintf(stderr, "unknown display %s\n", argv[a]); usage(stderr); return 2; }
+        }
         else if (!strcmp(argv[a], "--moving-scenes") && a + 1 < argc) mscenes = argv[++a];
         else if (!strcmp(argv[a], "--moving-frames") && a + 1 < argc) mframes = atoi(argv[++a]);
         else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
@@ -474,6 +744,13 @@ int main(int argc, char **argv)
     if (!scenes) scenes = full ? "primitives,columns,temple,atrium,thin,fractals" : "primitives,columns,temple,thin,fractals";
     if (!mscenes) mscenes = full ? scenes : "primitives,columns";
     if (mframes < 3) mframes = 3;
+    if (astudy) {
+        fovsdf_config scfg = fovsdf_config_default();
+        scfg.shading = shadows ? scfg.shading : FOVSDF_SHADE_NO_SHADOWS;
+        for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id)
+            if (strstr(scenes, fovsdf_builtin_name(id))) acuity_study(id, &scfg, W, H, adisp, aq, frames);
+        return 0;
+    }
     if (study) {
         fovsdf_config scfg = fovsdf_config_default();
         scfg.shading = shadows ? scfg.shading : FOVSDF_SHADE_NO_SHADOWS;

@@ -11,8 +11,10 @@
 # T everything runs. The sections, in order:
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
-#     fov_cells_sanitizers, unit_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp numerics_fovlp,
-#     srgb8_fovlp, api_stress, versions, stats, camera, eye, errors errors_nostrings,
+#     acuity_fovsdf,
+#     fov_cells_sanitizers, unit_fovpt acuity_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp
+#     numerics_fovlp, srgb8_fovlp acuity_fovlp, api_stress, versions, stats, camera, eye, errors
+#     errors_nostrings,
 #     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
 #   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
@@ -128,6 +130,7 @@ three_builds heads_fovsdf tests/test_fovsdf_heads.c
 three_builds props_fovsdf tests/test_fovsdf_props.c
 three_builds batch_fovsdf tests/test_fovsdf_batch.c
 three_builds wave_fovsdf tests/test_fovsdf_wave.c
+three_builds acuity_fovsdf tests/test_fovsdf_acuity.c
 run_section wave_variants bash tests/wave_variants.sh
 three_builds naive_sdf tests/test_sdf_naive.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
@@ -135,6 +138,7 @@ if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
 three_builds unit_fovpt tests/test_fovpt.c
+three_builds acuity_fovpt tests/test_fovpt_acuity.c
 # the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
 if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -I. -Itests/common -lm; then
     run_section unit_fovpt_nosimd build/tests/test_fovpt_nosimd
@@ -144,6 +148,7 @@ three_builds unit_fovlp tests/test_fovlp.c
 three_builds taa_fovlp tests/test_fovlp_taa.c
 three_builds numerics_fovlp tests/test_fovlp_numerics.c
 three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
+three_builds acuity_fovlp tests/test_fovlp_acuity.c
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
 three_builds api_stress tests/test_api_stress.c

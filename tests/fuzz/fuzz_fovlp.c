@@ -23,7 +23,9 @@
      u8 flags B, then: 0 cam_fov_y_deg f(10, 170); 1 blend u8 % 3, blend_start f(0, 1),
         blend_end f(0, 1); 2 taa.enable = 1; 3 taa: phases u8, halton_start u8, max_age u8,
         clamp u8 % 4, clip_gamma f(0.5, 3), depth_tol f(0, 0.1), reset_deg f(0, 10),
-        periphery f(0, 1), jitter_moving u8 % 3, thesis_moving u8 % 3
+        periphery f(0, 1), jitter_moving u8 % 3, thesis_moving u8 % 3; 4 fovlp_config_acuity
+        (issue 13): eye mar0 f(0, 4), slope f(0, 4), quality f(0, 4), u8 cam % 2 (NULL |
+        tan_half_y f(0.05, 3)); the harness then runs on the acuity config when it is FOV_OK
      u8 frames (% 5 + 1), then per frame:
         gaze f(-4, W + 4), f(-4, H + 4)
         u8 camera % 4 (NULL | still | moving: dpos f(-0.2, 0.2) x3, dfwd f(-0.05, 0.05) |
@@ -159,7 +161,12 @@ static void check_cfg(const fovlp_config *c)
 }
 
 /* ---- reading the config -------------------------------------------------------------------- */
-static void read_config(fz_in *in, fovlp_config *c)
+typedef struct acu_in {
+    int on, cam;
+    fov_eye eye;
+    float tan_half_y;
+} acu_in;
+static void read_config(fz_in *in, fovlp_config *c, acu_in *acu)
 {
     uint32_t preset = fz_pick(in, 5), W = fz_u8(in) % 24u + 1u, H = fz_u8(in) % 24u + 1u;
     uint8_t a, b;
@@ -198,6 +205,15 @@ static void read_config(fz_in *in, fovlp_config *c)
         c->taa.periphery = fz_float(in, 0.0f, 1.0f);
         c->taa.jitter_moving = fz_u8(in) % 3u;
         c->taa.thesis_moving = fz_u8(in) % 3u;
+    }
+    memset(acu, 0, sizeof *acu);
+    if (b & 16u) {
+        acu->on = 1;
+        acu->eye.mar0_arcmin = fz_float(in, 0.0f, 4.0f);
+        acu->eye.slope_arcmin = fz_float(in, 0.0f, 4.0f);
+        acu->eye.quality = fz_float(in, 0.0f, 4.0f);
+        acu->cam = (int)(fz_u8(in) % 2u);
+        if (acu->cam) acu->tan_half_y = fz_float(in, 0.05f, 3.0f);
     }
     c->logger.func = lg_func;
     c->logger.user = &g_lg;
@@ -258,10 +274,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     uint32_t stride2 = 0;
     fovlp_camera base;
     shade_ctx sc;
+    acu_in acu;
 
     memset(&g_lg, 0, sizeof g_lg);
     FZ_CHECK(fovlp_preset_name(data && size ? data[0] : 0u) != NULL, "preset_name");
-    read_config(&in, &cfg);
+    read_config(&in, &cfg, &acu);
+    if (acu.on) { /* fovlp_config_acuity: writes *cfg only on success, finite parameters */
+        fovlp_config before = cfg;
+        fovlp_camera ac;
+        memset(&ac, 0, sizeof ac);
+        ac.tan_half_y = acu.tan_half_y;
+        CALL(fovlp_config_acuity(&cfg, acu.cam ? &ac : NULL, &acu.eye), "config_acuity");
+        if (res != FOV_OK)
+            FZ_CHECK(memcmp(&before, &cfg, sizeof cfg) == 0, "config_acuity wrote *cfg and failed");
+        else
+            FZ_CHECK(inr(cfg.sigma, 1e-3f, 1e30f) && inr(cfg.alpha, 1.0f, 8.0f) &&
+                     inr(cfg.gaze_angle, 0.0f, 1.5f) && inr(cfg.lp_aspect, 1.0f / 65536.0f, 65536.0f) &&
+                     cfg.no_disc == 0 && cfg.norm == FOVLP_NORM_DIAGONAL && cfg.edge == FOVLP_EDGE_LOG_R,
+                     "config_acuity: sigma %g alpha %g gaze_angle %g lp_aspect %g", (double)cfg.sigma,
+                     (double)cfg.alpha, (double)cfg.gaze_angle, (double)cfg.lp_aspect);
+    }
     W = cfg.width; H = cfg.height; npix = (size_t)W * H;
 
     CALL(fovlp_config_resolve(&cfg, &rc), "config_resolve");

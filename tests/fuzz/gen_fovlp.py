@@ -47,8 +47,9 @@ class Enc:
         self.u8(249)
 
 
-def config(e, preset=2, w=16, h=12, a=0, b=0, a_fields=(), taa=None, blend=None):
-    """a_fields: callables writing the flag-A fields in bit order; taa: dict of taa fields"""
+def config(e, preset=2, w=16, h=12, a=0, b=0, a_fields=(), taa=None, blend=None, acuity=None):
+    """a_fields: callables writing the flag-A fields in bit order; taa: dict of taa fields;
+    acuity (flag B bit 4): (mar0, slope, quality, tan_half_y or None)"""
     e.u8(preset)
     e.u8(w - 1)
     e.u8(h - 1)
@@ -65,6 +66,12 @@ def config(e, preset=2, w=16, h=12, a=0, b=0, a_fields=(), taa=None, blend=None)
         e.f(0.5, 3, taa.get('gamma', 1.0)); e.f(0, 0.1, taa.get('tol', 0.02))
         e.f(0, 10, taa.get('reset', 2.0)); e.f(0, 1, taa.get('periphery', 1 / 3))
         e.u8(taa.get('jitter_moving', 0)); e.u8(taa.get('thesis_moving', 0))
+    if b & 16:
+        mar0, slope, quality, tan = acuity
+        e.f(0, 4, mar0); e.f(0, 4, slope); e.f(0, 4, quality)
+        e.u8(0 if tan is None else 1)
+        if tan is not None:
+            e.f(0.05, 3, tan)
 
 
 def frame(e, w, h, gx, gy, cam=0, cam_args=(), shade=0, shade_args=(), dmode=0, dconst=5.0,
@@ -187,6 +194,17 @@ def corpus():
     frame(e, 16, 16, 8.0, 8.0, cam=3, cam_args=(0.0, 0.0, 0.0, 0.5, lambda e: e.edge('big')), shade=0, dmode=4)
     frame(e, 16, 16, 8.0, 8.0, cam=1, shade=0, dmode=4, edits=[(1, 0, 0), (2, 5, 3e38)])
     out['hostile_camera_history_edits'] = e.b
+    # 8. fovlp_config_acuity (issue 13): a dense monitor (0.05 mm pixels at 2 m: 698 ppd, the
+    #    eye needs no pixel of its own), default eye, TAA, still then moving camera
+    e = Enc()
+    config(e, preset=4, w=24, h=20, a=128, b=4 | 16,
+           a_fields=[lambda e: (e.u8(1), e.f(0.05, 1, 0.05), e.f(100, 2000, 2000))],
+           acuity=(0.0, 0.0, 1.0, None))
+    e.u8(3)
+    for k in range(4):
+        frame(e, 24, 20, 12.0 + k, 10.0, cam=1 if k < 2 else 2, cam_args=(0.02, 0.0, 0.0, 0.0),
+              shade=0, queries=[query(3.0, 4.0, 9.0, 2.0, 5.0, k, 24, 20)])
+    out['acuity_dense_monitor'] = e.b
     return out
 
 
