@@ -10,7 +10,7 @@
      fipr_acuity             FIPR with fovsdf_config_acuity
      suffixes (combine them) _edges: the edge mask of Polychronakis 2025 (FOVSDF_MASK_EDGES);
                              _edges1: every edge pixel traced (p = 1); _noq: no quarter level;
-                             _pt: point samples (no level filter)
+                             _pt: point samples (no level filter); _rc<C>: refine_contrast C
    and prints per method: distance evaluations per pixel (all of them: head starts, sample
    rays, normals, shadow rays), the saving (classic's evaluations / the method's), the pixels
    that traced their own rays, and the error against the ground truth after both images are
@@ -242,6 +242,7 @@ int main(int argc, char **argv)
                     }
                     if (strstr(m, "_noq")) cfg.quarter_deg = 0.0f;
                     if (strstr(m, "_pt")) cfg.level_filter = 0u;
+                    if (strstr(m, "_rc")) cfg.refine_contrast = (float)atof(strstr(m, "_rc") + 3);
                 }
                 if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) {
                     fprintf(stderr, "init %s failed\n", m);

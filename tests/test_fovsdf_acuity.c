@@ -18,7 +18,8 @@
  *      quarter_deg identical to quarter_deg 0's, a smooth image reconstructed within the
  *      bilinear error (no seam, no shift), the mask output, bad quarter_deg rejected.
  *   4. level_filter: less error against a 16-spp ground truth on a checkerboard floor, the
- *      same evaluations, an untextured image unchanged, bad values rejected.
+ *      same evaluations, an untextured image unchanged, bad values rejected; refine_contrast:
+ *      more pixels traced, less error, bad values rejected.
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -505,6 +506,39 @@ static void test_level_filter(void)
     cfg = fovsdf_config_default();
     cfg.level_filter = 2;
     check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_INVALID_ARG, "lf_bad_value", "-");
+    /* refine_contrast: pixels whose taps differ trace their own rays (more traced pixels, not
+       all); the error against the ground truth drops; bad values rejected */
+    {
+        long tr0 = 0, tr1 = 0;
+        double e0 = 0.0, e1 = 0.0;
+        cfg = fovsdf_config_default();
+        cfg.method = FOVSDF_METHOD_CONE_FOV;
+        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+        cfg.acuity.fovea_deg = 4.0f;
+        cfg.fov_mask = FOVSDF_MASK_FOVEA;
+        cfg.quarter_deg = 10.0f;
+        cfg.level_filter = 1;
+        if (render(&cfg, &s.bi.scene, &s.bi.camera, &a)) {
+            cfg.refine_contrast = 0.1f;
+            if (render(&cfg, &s.bi.scene, &s.bi.camera, &b))
+                for (i = 0; i < n; ++i) {
+                    size_t k;
+                    tr0 += a.mask[i] == 1u;
+                    tr1 += b.mask[i] == 1u;
+                    for (k = 0; k < 3; ++k) {
+                        double d0 = (double)a.rgb[3 * i + k] - (double)gt.rgb[3 * i + k];
+                        double d1 = (double)b.rgb[3 * i + k] - (double)gt.rgb[3 * i + k];
+                        e0 += d0 * d0; e1 += d1 * d1;
+                    }
+                }
+        }
+        check(tr1 > tr0 && tr1 < (long)n && e1 < 0.8 * e0, "refine_contrast_traces_edges",
+              "traced %ld -> %ld of %ld, squared error %g -> %g", tr0, tr1, (long)n, e0, e1);
+        cfg.refine_contrast = -0.1f;
+        check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_INVALID_ARG, "refine_negative", "-");
+        cfg.refine_contrast = NAN;
+        check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_NOT_FINITE, "refine_nan", "-");
+    }
 done:
     frame_free(&gt); frame_free(&a); frame_free(&b);
     free(s.mem);
