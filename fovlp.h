@@ -180,10 +180,26 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    Limits of the rule: it is exact for a gaze on the display's axis; for other gazes the
    angle between the eye's rays through neighbouring samples, against quality MAR of the true
    eccentricity, comes within 1.08 (640x360 at 65 degrees, next to the disc; 1.02 at 45
-   degrees, 1.00 at the 1080p monitor and the 100 degree display). The rule is on the
-   sample spacing only: what the reconstruction makes of the samples (bilinear, TAA) is
-   measured separately. A display coarser than the eye nearly everywhere (the disc would
-   reach beyond half the diagonal) gives FOV_ERR_UNSUPPORTED: trace every pixel instead.
+   degrees, 1.01 at the 100 degree display, 0.99 at the monitor). A display coarser than the
+   eye nearly everywhere (the disc would reach beyond half the diagonal) gives
+   FOV_ERR_UNSUPPORTED: trace every pixel instead.
+   The rule is on the sample spacing; what the reconstruction makes of the samples is
+   measured by bench_lp --acuity-study (both images filtered to the eye first: a Gaussian of
+   sigma MAR(e) ppd / 2 at quality 1; PSNR and FLIP per eccentricity band against 16 samples
+   per pixel; still camera, gaze at the centre). Use it with TAA: a single frame of point
+   samples at the eye's own spacing aliases (640x360, primitives, beyond 20 degrees:
+   33-35 dB against 38-42 dB for the full-resolution frame of one sample per pixel), while
+   the same buffer with prefiltered samples (4 x 4 points per texel) does not, and TAA's
+   jitter prefilters: after 20 still frames the acuity buffer beats the full-resolution frame
+   at 640x360 in every band by PSNR (primitives, thin, columns), and by FLIP except in the
+   far periphery of columns (0.029 against 0.020); at quality 0.7 (saving 2.5-2.8x) in every
+   band by both. Where the pixels are much finer than the eye (the monitor), the full
+   resolution frame is nearly perfect at the eye's scale and the acuity buffer stays below
+   it (quality 1: 39-41 dB against 46-52; quality 0.5: 41-42 against 46-48): the bilinear
+   reconstruction of samples at the eye's spacing loses contrast at the eye's scale, and a
+   moving camera (no jitter, thesis) brings the aliasing back (640x360 primitives, beyond 30
+   degrees: 33.5 dB against 39.7). Pick the quality for the perceived criterion you need;
+   the spacing rule and the figures above are for quality 1.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
