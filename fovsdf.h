@@ -222,9 +222,13 @@ ACUITY-DRIVEN FOVEATION
      at quality 0.7 on primitives (2.9x) and temple (3.1x), 0.5 on thin (2.2x); columns
      and atrium lose 1-3 dB even at 0.5 (1.4x, 1.7x): their silhouettes and shadow edges.
    - 1920x1080 on a 27-inch monitor at 60 cm (33.6 px/degree, camera fov_y 31 degrees):
-     quality 1 saves 10.0x on primitives and 7.4x on columns, 0.5 saves 7.2x and 5.4x. At
-     0.5 primitives is as good as classic but for 1 dB beyond 20 degrees (51 dB there);
-     columns loses 1.3 dB at 5-10 degrees: silhouettes (refine_contrast catches those).
+     quality 1 saves 10.0x on primitives and 7.4x on columns but loses 3.6 and 6 dB just
+     outside its 1.9-degree fovea; quality 0.5 saves 7.2x and 5.4x, and primitives is then
+     as good as classic (within 0.5 dB below 45 dB, at least 45 dB above); columns still
+     loses 1.3 dB at 5-10 degrees: silhouettes of the columns against the walls behind, which
+     the mid level's rays 2 pixels apart alias. refine_contrast does not pay there either:
+     at 0.1 it traces 27 % of primitives' pixels (the floor's tile edges too) for a saving of
+     3.5x, still 2.2 dB short at 5-10 degrees.
 
    - use a GPU API, start threads, allocate memory, or read or write files;
    - keep any global or thread-local state.
