@@ -60,7 +60,10 @@ static void blur_pass(const float *in, float *out, int w, int h, const float *si
             size_t i = (size_t)y * (size_t)w + (size_t)x;
             float s = sig[i], acc[3] = { 0, 0, 0 }, ws = 0.0f;
             int r = (int)ceilf(3.0f * s);
-            if (s < 0.25f) { for (c = 0; c < 3; ++c) out[3 * i + c] = in[3 * i + c]; continue; }
+            if (s < 0.25f) {
+                for (c = 0; c < 3; ++c) out[3 * i + (size_t)c] = in[3 * i + (size_t)c];
+                continue;
+            }
             if (r > 24) r = 24;
             for (k = -r; k <= r; ++k) {
                 int xx = horiz ? x + k : x, yy = horiz ? y : y + k;
