@@ -123,7 +123,7 @@ int main(int argc, char **argv)
     int W = 640, H = 360, nthreads = 2, a, si, mi, gt_spp = 16, shading = 0;
     float fovy = 0.0f, pitch = 0.0f, dist = 0.0f, quality = 1.0f, qlist[8] = { 1.0f };
     int nq = 1, qi;
-    const char *scenes = "primitives,columns,temple,atrium,thin,fractal";
+    const char *scenes = "primitives,columns,temple,atrium,thin,fractals";
     const char *methods = "cone_fov,cone_fov_acuity,cone_fov_acuity_edges,cone_fov_acuity_noq,"
                           "fipr_acuity";
     char mlist[512], *all[32];
