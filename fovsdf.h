@@ -219,8 +219,9 @@ ACUITY-DRIVEN FOVEATION
    - 640x360 on the built-in cameras (45-65 degrees, 4.9-7.6 px/degree): quality 1 saves
      2.8-4.5x (cone_fov with the fixed 7.5-degree fovea: 2.6-3.5x) and loses 0.7-8 dB
      beyond its fovea; as good as classic (within 0.5 dB in every band, or at least 45 dB)
-     at quality 0.7 on primitives (2.9x) and temple (3.1x), 0.5 on thin (2.2x); columns
-     and atrium lose 1-3 dB even at 0.5 (1.4x, 1.7x): their silhouettes and shadow edges.
+     at quality 0.7 on primitives (2.9x), temple (3.1x) and fractals (2.7x), 0.5 on thin
+     (2.2x); columns and atrium lose 1-3 dB even at 0.5 (1.4x, 1.7x): their silhouettes and
+     shadow edges.
    - 1920x1080 on a 27-inch monitor at 60 cm (33.6 px/degree, camera fov_y 31 degrees):
      quality 1 saves 10.0x on primitives and 7.4x on columns but loses 3.6 and 6 dB just
      outside its 1.9-degree fovea; quality 0.5 saves 7.2x and 5.4x, and primitives is then
