@@ -223,11 +223,12 @@ ACUITY-DRIVEN FOVEATION
      (2.2x); columns and atrium lose 1-3 dB even at 0.5 (1.4x, 1.7x): their silhouettes and
      shadow edges.
    - 1920x1080 on a 27-inch monitor at 60 cm (33.6 px/degree, camera fov_y 31 degrees):
-     quality 1 saves 10.0x on primitives and 7.4x on columns but loses 3.6 and 6 dB just
-     outside its 1.9-degree fovea; quality 0.5 saves 7.2x and 5.4x, and primitives is then
-     as good as classic (within 0.5 dB below 45 dB, at least 45 dB above); columns still
-     loses 1.3 dB at 5-10 degrees: silhouettes of the columns against the walls behind, which
-     the mid level's rays 2 pixels apart alias. refine_contrast does not pay there either:
+     quality 1 saves 10.0x on primitives, 7.4x on columns and 10.3x on temple but loses 3.6,
+     6 and 6.7 dB just outside its 1.9-degree fovea; quality 0.5 saves 7.2x, 5.4x and 8.2x,
+     and primitives is then as good as classic (within 0.5 dB below 45 dB, at least 45 dB
+     above); columns still loses 1.3 dB at 5-10 degrees (silhouettes of the columns against
+     the walls behind, which the mid level's rays 2 pixels apart alias), temple 2.1 dB at
+     0-5 degrees (the terrain's detail where the mid level starts). refine_contrast does not pay there either:
      at 0.1 it traces 27 % of primitives' pixels (the floor's tile edges too) for a saving of
      3.5x, still 2.2 dB short at 5-10 degrees.
 
