@@ -60,7 +60,10 @@ static void blur_pass(const float *in, float *out, int w, int h, const float *si
             size_t i = (size_t)y * (size_t)w + (size_t)x;
             float s = sig[i], acc[3] = { 0, 0, 0 }, ws = 0.0f;
             int r = (int)ceilf(3.0f * s);
-            if (s < 0.25f) { for (c = 0; c < 3; ++c) out[3 * i + c] = in[3 * i + c]; continue; }
+            if (s < 0.25f) {
+                for (c = 0; c < 3; ++c) out[3 * i + (size_t)c] = in[3 * i + (size_t)c];
+                continue;
+            }
             if (r > 24) r = 24;
             for (k = -r; k <= r; ++k) {
                 int xx = horiz ? x + k : x, yy = horiz ? y : y + k;
@@ -120,7 +123,7 @@ int main(int argc, char **argv)
     int W = 640, H = 360, nthreads = 2, a, si, mi, gt_spp = 16, shading = 0;
     float fovy = 0.0f, pitch = 0.0f, dist = 0.0f, quality = 1.0f, qlist[8] = { 1.0f };
     int nq = 1, qi;
-    const char *scenes = "primitives,columns,temple,atrium,thin,fractal";
+    const char *scenes = "primitives,columns,temple,atrium,thin,fractals";
     const char *methods = "cone_fov,cone_fov_acuity,cone_fov_acuity_edges,cone_fov_acuity_noq,"
                           "fipr_acuity";
     char mlist[512], *all[32];
