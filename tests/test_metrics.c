@@ -827,6 +827,260 @@ static void test_rings(T *t)
           "rings_bad_args", "");
 }
 
+/* ======================================================================= */
+/* the eye filter and the perceptual error                                  */
+/* ======================================================================= */
+
+/* The filter's sigma in pixels, computed here from the documented model: MAR(e) = 1 + 1.32 e
+ * arc minutes; sigma = sqrt(2 ln 2) / pi MAR (the Gaussian with response 1/2 at 1 / (2 MAR)
+ * cycles per degree: exp(-2 pi^2 sigma^2 f^2) = 1/2); along y at a point X pixels beside the
+ * axis on the axis row (the gaze on the axis) a pixel subtends 1 / sqrt(f^2 + X^2) radians. */
+static double expect_sigma_y(double f, double X)
+{
+    const double PI = 3.14159265358979323846;
+    double e = atan(fabs(X) / f) * 180.0 / PI;
+    double mar_deg = (1.0 + 1.32 * e) / 60.0;
+    double sig_deg = mar_deg * sqrt(log(2.0) / 2.0) / (PI * 0.5);
+    return sig_deg * PI / 180.0 * sqrt(f * f + X * X);
+}
+
+/* standard deviation of the line-spread function: the differences of the linear-light step
+ * response along a column (dy = 1) or a row (dy = 0) of a c = 1 image */
+static double lsf_sigma(const float *img, int w, int h, int col_or_row, int along_y)
+{
+    double s0 = 0, s1 = 0, s2 = 0, mu;
+    int n = along_y ? h : w, k;
+    for (k = 0; k + 1 < n; k++) {
+        size_t i0 = along_y ? (size_t)k * (size_t)w + (size_t)col_or_row
+                            : (size_t)col_or_row * (size_t)w + (size_t)k;
+        size_t i1 = along_y ? i0 + (size_t)w : i0 + 1;
+        double d = (double)fovimg_srgb_to_linear(img[i1]) - (double)fovimg_srgb_to_linear(img[i0]);
+        double pos = (double)k + 1.0;
+        s0 += d; s1 += d * pos; s2 += d * pos * pos;
+    }
+    if (!(s0 > 0.0)) return -1.0;
+    mu = s1 / s0;
+    return sqrt(s2 / s0 - mu * mu);
+}
+
+static void test_eye_geometry(T *t)
+{
+    const double PI = 3.14159265358979323846;
+    double f = 40.0 * 180.0 / PI; /* 40 px per degree on the axis */
+    fovm_eye e;
+    double X = f * tan(30.0 * PI / 180.0), ecc, sx, sy;
+    memset(&e, 0, sizeof e);
+    e.cx = 100.0; e.cy = 50.0; e.f_px = f; e.gx = 100.0; e.gy = 50.0;
+    ecc = fovm_eye_ecc(&e, 100.0 + X, 50.0);
+    check(t, near(ecc, 30.0, 1e-9), "eye_ecc_30deg", "got %.12f", ecc);
+    check(t, near(fovm_eye_ppd(&e), 40.0, 1e-9), "eye_ppd_axis", "got %.12f", fovm_eye_ppd(&e));
+    /* gaze r pixels off the axis: radial ppd (f^2 + r^2) / f pi / 180 */
+    e.gx = 100.0 + 500.0;
+    check(t, near(fovm_eye_ppd(&e), (f * f + 250000.0) / f * PI / 180.0, 1e-9),
+          "eye_ppd_off_axis", "got %.9f", fovm_eye_ppd(&e));
+    /* the gaze off the axis: the angle between the two rays, here both on the axis row */
+    ecc = fovm_eye_ecc(&e, 100.0, 50.0);
+    check(t, near(ecc, atan(500.0 / f) * 180.0 / PI, 1e-9), "eye_ecc_off_axis", "got %.9f", ecc);
+    check(t, near(fovm_eye_mar_deg(&e, 10.0), (1.0 + 13.2) / 60.0, 1e-12) &&
+          isnan(fovm_eye_mar_deg(&e, -1.0)), "eye_mar_default", "%.9f",
+          fovm_eye_mar_deg(&e, 10.0));
+    e.mar0_arcmin = 2.0; e.slope_arcmin = 1.65;
+    check(t, near(fovm_eye_mar_deg(&e, 10.0), (2.0 + 16.5) / 60.0, 1e-12), "eye_mar_fields", "");
+    e.mar0_arcmin = 0.0; e.slope_arcmin = 0.0;
+    e.gx = 100.0;
+    /* the reported sigma against the independent formula: the pixel column at 30 degrees */
+    {
+        int i = (int)floor(100.0 + X);
+        double Xc = (double)i + 0.5 - 100.0;
+        fovm_eye_sigma(&e, i, 49, &sx, &sy); /* row 49: centre 49.5, half a pixel off-axis */
+        check(t, near(sy, expect_sigma_y(f, Xc), 0.002 * sy), "eye_sigma_formula",
+              "got %.5f want %.5f", sy, expect_sigma_y(f, Xc));
+        check(t, sx > sy, "eye_sigma_radial_wider", "sx %.4f sy %.4f", sx, sy);
+    }
+    /* from_fov / from_monitor */
+    e = fovm_eye_from_fov(640, 360, 45.0, 320.0, 180.0);
+    check(t, near(e.f_px, 180.0 / tan(22.5 * PI / 180.0), 1e-9) && e.cx == 320.0 &&
+          e.cy == 180.0 && fovm_eye_check(&e) == FOVM_OK, "eye_from_fov", "f %.6f", e.f_px);
+    e = fovm_eye_from_monitor(1920, 1080, 0.3113, 600.0, 960.0, 540.0);
+    check(t, near(e.f_px, 600.0 / 0.3113, 1e-9) && fovm_eye_check(&e) == FOVM_OK,
+          "eye_from_monitor", "f %.6f", e.f_px);
+}
+
+static void test_eye_filter_sigma(T *t)
+{
+    /* A horizontal step edge on the gaze row (gaze on the axis), filtered: the column at
+     * eccentricity E blurs it with sigma_y (eccentricity changes only to second order along
+     * that column); the same with a vertical edge, the rows below the gaze and sigma_x. */
+    const double PI = 3.14159265358979323846;
+    const int W = 720, H = 200;
+    double f = 20.0 * 180.0 / PI, g0 = 30.5, gy = 100.0;
+    float *img = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+    float *out = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+    fovm_eye e;
+    int x, y, k, ok, err;
+    const double eccs[2] = { 10.0, 30.0 };
+    memset(&e, 0, sizeof e);
+    if (!img || !out) { check(t, 0, "eye_filter_alloc", ""); free(img); free(out); return; }
+    e.cx = g0; e.cy = gy; e.f_px = f; e.gx = g0; e.gy = gy;
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) img[y * W + x] = y < 100 ? 0.0f : 1.0f;
+    err = fovm_eye_filter(img, W, H, 1, &e, out);
+    for (k = 0; k < 2; k++) {
+        int col = (int)floor(g0 + f * tan(eccs[k] * PI / 180.0));
+        double X = (double)col + 0.5 - g0, want = expect_sigma_y(f, X);
+        double got = lsf_sigma(out, W, H, col, 1);
+        check(t, err == 0 && fabs(got - want) <= 0.02 * want, k ? "eye_filter_sigma_y_30deg" :
+              "eye_filter_sigma_y_10deg", "err %d got %.4f px want %.4f px", err, got, want);
+    }
+    /* at the gaze: sigma = 0.37 arcmin = 0.12 px, below the 0.2 px copy threshold (up to
+     * 0.45 degrees = 9 px from the gaze): the edge's pixels are copied unchanged */
+    ok = err == 0;
+    for (y = 92; y < 108; y++)
+        if (out[y * W + 30] != img[y * W + 30]) ok = 0;
+    check(t, ok, "eye_filter_gaze_unchanged", "");
+    /* transposed: vertical edge at x = 100, gaze at (100, 30.5), columns below it */
+    {
+        const int W2 = 200, H2 = 720;
+        e.cx = 100.0; e.cy = g0; e.gx = 100.0; e.gy = g0;
+        for (y = 0; y < H2; y++)
+            for (x = 0; x < W2; x++) img[y * W2 + x] = x < 100 ? 0.0f : 1.0f;
+        err = fovm_eye_filter(img, W2, H2, 1, &e, out);
+        for (k = 0; k < 2; k++) {
+            int row = (int)floor(g0 + f * tan(eccs[k] * PI / 180.0));
+            double Y = (double)row + 0.5 - g0, want = expect_sigma_y(f, Y);
+            double got = lsf_sigma(out, W2, H2, row, 0);
+            check(t, err == 0 && fabs(got - want) <= 0.02 * want, k ? "eye_filter_sigma_x_30deg"
+                  : "eye_filter_sigma_x_10deg", "err %d got %.4f px want %.4f px", err, got, want);
+        }
+    }
+    /* in place gives the same */
+    memcpy(out, img, (size_t)W * (size_t)H * sizeof(float));
+    {
+        float *ref = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+        ok = ref && fovm_eye_filter(img, 200, 720, 1, &e, ref) == 0 &&
+             fovm_eye_filter(out, 200, 720, 1, &e, out) == 0 &&
+             memcmp(ref, out, (size_t)W * (size_t)H * sizeof(float)) == 0;
+        check(t, ok, "eye_filter_in_place", "");
+        free(ref);
+    }
+    free(img);
+    free(out);
+}
+
+/* grey background of linear 0.5 (sRGB 0.7354), gaze at (40.5, 64) on the axis, 40 px per
+ * degree there; patch: kind 0 a pixel checkerboard 0/1 (linear mean 0.5) 16 x 16 px, kind 1 a
+ * 96 x 96 px square of sRGB 0.2, centred at ecc degrees right of the gaze */
+static void make_patch(float *img, int W, int H, double f, double ecc, int kind)
+{
+    const double PI = 3.14159265358979323846;
+    int half = kind ? 48 : 8, x, y;
+    int cx = (int)floor(40.5 + f * tan(ecc * PI / 180.0));
+    float grey = fovimg_linear_to_srgb(0.5f);
+    for (y = 0; y < H; y++)
+        for (x = 0; x < W; x++) {
+            float v = grey;
+            if (x >= cx - half && x < cx + half && y >= 64 - half && y < 64 + half)
+                v = kind ? 0.2f : (float)((x + y) & 1);
+            img[y * W + x] = v;
+        }
+}
+
+static void test_perceptual(T *t)
+{
+    const double PI = 3.14159265358979323846;
+    const int W = 1450, H = 128;
+    double f = 40.0 * 180.0 / PI, p_far, f_far, p_gaze, f_gaze, p_c, f_c, p_raw, mx_far, mx_g;
+    float *ref = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+    float *img = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+    float *map = (float *)malloc((size_t)W * (size_t)H * sizeof(float));
+    fovm_eye e;
+    int err, i, ok;
+    size_t n = (size_t)W * (size_t)H;
+    if (!ref || !img || !map) {
+        check(t, 0, "perceptual_alloc", "");
+        free(ref); free(img); free(map);
+        return;
+    }
+    memset(&e, 0, sizeof e);
+    e.cx = 40.5; e.cy = 64.0; e.f_px = f; e.gx = 40.5; e.gy = 64.0;
+    make_patch(ref, W, H, f, 0.0, 0);
+    for (i = 0; i < W * H; i++) ref[i] = fovimg_linear_to_srgb(0.5f);
+    /* identical images */
+    p_far = 0; f_far = -1;
+    err = fovm_perceptual(ref, ref, W, H, 1, &e, &p_far, &f_far, NULL);
+    check(t, err == 0 && isinf(p_far) && p_far > 0 && f_far == 0.0, "perceptual_identical",
+          "err %d psnr %g flip %g", err, p_far, f_far);
+    /* a pixel checkerboard at 30 degrees: far finer than the MAR there (0.68 deg = 36 px) */
+    make_patch(img, W, H, f, 30.0, 0);
+    fovm_psnr(ref, img, W, H, 1, &p_raw);
+    err = fovm_perceptual(ref, img, W, H, 1, &e, &p_far, &f_far, map);
+    mx_far = 0;
+    for (i = 0; i < W * H; i++) if ((double)map[i] > mx_far) mx_far = (double)map[i];
+    check(t, err == 0 && p_raw < 40.0 && p_far > 60.0 && f_far < 1e-4 && mx_far < 0.01,
+          "perceptual_fine_30deg_invisible", "err %d raw psnr %.2f filtered psnr %.2f "
+          "flip %.3g max %.3g", err, p_raw, p_far, f_far, mx_far);
+    /* the same checkerboard at the gaze */
+    make_patch(img, W, H, f, 0.0, 0);
+    err = fovm_perceptual(ref, img, W, H, 1, &e, &p_gaze, &f_gaze, map);
+    mx_g = 0;
+    for (i = 0; i < W * H; i++) if ((double)map[i] > mx_g) mx_g = (double)map[i];
+    check(t, err == 0 && p_gaze < 40.0 && f_gaze > 10.0 * f_far && mx_g > 0.1 &&
+          mx_g > 20.0 * mx_far,
+          "perceptual_fine_gaze_visible", "err %d psnr %.2f flip %.3g max %.3g", err, p_gaze,
+          f_gaze, mx_g);
+    /* a coarse change at 30 degrees (96 px = 1.8 deg, wider than the 0.68 deg MAR) */
+    make_patch(img, W, H, f, 30.0, 1);
+    err = fovm_perceptual(ref, img, W, H, 1, &e, &p_c, &f_c, map);
+    ok = 0;
+    for (i = 0; i < W * H; i++) if (map[i] > 0.3f) ok = 1;
+    check(t, err == 0 && p_c < 35.0 && f_c > 100.0 * f_far && ok, "perceptual_coarse_30deg_visible",
+          "err %d psnr %.2f flip %.3g", err, p_c, f_c);
+    /* RGB: the same as grey replicated */
+    {
+        float *r3 = (float *)malloc(n * 3 * sizeof(float)), *i3 = (float *)malloc(n * 3 * sizeof(float));
+        double p3 = 0, f3 = 0;
+        size_t k;
+        ok = r3 && i3;
+        for (k = 0; ok && k < n * 3; k++) { r3[k] = ref[k / 3]; i3[k] = img[k / 3]; }
+        ok = ok && fovm_perceptual(r3, i3, W, H, 3, &e, &p3, &f3, NULL) == 0 &&
+             near(p3, p_c, 1e-6) && near(f3, f_c, 1e-6);
+        check(t, ok, "perceptual_rgb_matches_grey", "%.6f %.6f / %.6f %.6f", p3, f3, p_c, f_c);
+        free(r3); free(i3);
+    }
+    /* bad arguments: an error code, outputs untouched */
+    {
+        fovm_eye b = e;
+        double p = 123.0, fl = 456.0;
+        ok = fovm_perceptual(NULL, img, W, H, 1, &e, &p, &fl, NULL) == FOVM_ERR_ARG &&
+             fovm_perceptual(ref, NULL, W, H, 1, &e, &p, &fl, NULL) == FOVM_ERR_ARG &&
+             fovm_perceptual(ref, img, 0, H, 1, &e, &p, &fl, NULL) == FOVM_ERR_ARG &&
+             fovm_perceptual(ref, img, W, H, 2, &e, &p, &fl, NULL) == FOVM_ERR_ARG &&
+             fovm_perceptual(ref, img, W, H, 1, NULL, &p, &fl, NULL) == FOVM_ERR_ARG &&
+             fovm_eye_filter(ref, W, H, 1, &e, NULL) == FOVM_ERR_ARG &&
+             fovm_eye_filter(NULL, W, H, 1, &e, img) == FOVM_ERR_ARG;
+        b.f_px = 0.0;
+        ok = ok && fovm_perceptual(ref, img, W, H, 1, &b, &p, &fl, NULL) == FOVM_ERR_ARG;
+        b.f_px = -5.0;
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG;
+        b = e; b.f_px = (double)NAN;
+        ok = ok && fovm_eye_filter(ref, W, H, 1, &b, img) == FOVM_ERR_ARG;
+        b = e; b.gx = (double)INFINITY;
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG && isnan(fovm_eye_ppd(&b)) &&
+             isnan(fovm_eye_ecc(&b, 1.0, 1.0));
+        b = e; b.mar0_arcmin = -1.0;
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG;
+        b = e; b.slope_arcmin = 61.0;
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG;
+        b = e; b.mar0_arcmin = (double)NAN;
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG && fovm_eye_sigma(&b, 0, 0, NULL, NULL) ==
+             FOVM_ERR_ARG;
+        b = fovm_eye_from_fov(W, H, 0.0, 1.0, 1.0); /* no field of view: f_px 0 */
+        ok = ok && fovm_eye_check(&b) == FOVM_ERR_ARG;
+        check(t, ok && p == 123.0 && fl == 456.0, "perceptual_bad_args", "p %g fl %g", p, fl);
+    }
+    free(ref); free(img); free(map);
+}
+
 int main(int argc, char **argv)
 {
     T t;
@@ -846,6 +1100,9 @@ int main(int argc, char **argv)
     test_ssim(&t);
     test_flip(&t);
     test_rings(&t);
+    test_eye_geometry(&t);
+    test_eye_filter_sigma(&t);
+    test_perceptual(&t);
     printf("%d passed, %d failed\n", t.pass, t.fail);
     return t.fail ? 1 : 0;
 }
