@@ -189,21 +189,24 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    eye first, a Gaussian of sigma MAR(e) ppd / 2 at quality 1; PSNR and FLIP per band of
    eccentricity against 16 samples per pixel; still camera, gaze at the centre; "full" = the
    full-resolution frame, one sample per pixel). Use it with TAA: one frame of point samples
-   at the eye's own spacing aliases (640x360, beyond 20 degrees: 33-35 dB against 38-41 dB
+   at the eye's own spacing aliases (640x360, beyond 20 degrees: 33-35 dB against 39-42 dB
    for full), the same buffer with prefiltered samples (4 x 4 points per texel) does not
-   (41-43 dB), and TAA's jitter prefilters: after 20 still frames 43-44 dB. Then at 640x360
-   the acuity buffer beats full in every band by PSNR (primitives, thin, columns) and by FLIP
-   but for the far periphery of thin and columns (0.021 / 0.029 against 0.018 / 0.020); at
-   quality 0.7 (saving 2.5-2.8x) it beats full in every band by both. Where the pixels are
-   much finer than the eye, full is nearly perfect at the eye's scale and quality 1 stays
-   below it: the monitor 39-41 dB against 46-53 (FLIP 0.04-0.05 against 0.01-0.02), the 100
-   degree display beyond 20 degrees (FLIP 0.016 / 0.009 against 0.012 / 0.005); there the
-   bilinear reconstruction of samples at the eye's spacing loses contrast at the eye's own
-   scale. Quality 0.25 on the monitor (saving 4.2x) beats full in every band after 8 frames
-   (57 dB, FLIP 0.009). A moving camera (no jitter, thesis) brings the aliasing back
-   (640x360, beyond 30 degrees: 33.5 dB against 39.7 at quality 1; 42.0 at quality 0.5).
-   So pick the quality for the criterion of equal perceived quality you need; the rule and
-   the figures at the top are for quality 1, the matched threshold of the eye model.
+   (41-43 dB), and TAA's jitter prefilters: after 20 still frames 43.6-44.8 dB. At 640x360
+   the acuity buffer beats full in every band up to 20 degrees by PSNR and FLIP (primitives,
+   thin, columns), beyond by PSNR too but for the far periphery of columns (45.0 against
+   45.7 dB), while FLIP there is a little higher (beyond 30 degrees 0.021-0.029 against
+   0.017-0.026; columns from 20); at quality 0.7 (saving 2.5-2.8x) it beats full in every
+   band by both. Where the pixels are much finer than the eye, full is nearly perfect at the
+   eye's scale and quality 1 stays below it: the monitor 39-41 dB against 46-53 beyond 5
+   degrees (FLIP 0.04-0.05 against 0.01-0.02), the 100 degree display by FLIP beyond 20
+   degrees (0.016 / 0.009 against 0.012 / 0.005): the bilinear reconstruction of samples at
+   the eye's spacing loses contrast at the eye's own scale (detail after the eye filter 0.5-0.8
+   of the ground truth's). Equal or better in every band: the 100 degree display at quality
+   0.5 (saving 6.3x), the monitor at quality 0.25 (4.2x; at 0.5, 12.3x, FLIP 0.018-0.021
+   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter, thesis) brings the
+   aliasing back (640x360, beyond 30 degrees: 33.5 dB against 39.7 at quality 1; 42.0 at
+   quality 0.5). So pick the quality for the criterion of equal perceived quality you need;
+   the rule and the figures at the top are for quality 1, the eye model's threshold.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
