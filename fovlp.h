@@ -203,10 +203,12 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    the eye's spacing loses contrast at the eye's own scale (detail after the eye filter 0.5-0.8
    of the ground truth's). Equal or better in every band: the 100 degree display at quality
    0.5 (saving 6.3x), the monitor at quality 0.25 (4.2x; at 0.5, 12.3x, FLIP 0.018-0.021
-   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter, thesis) brings the
-   aliasing back (640x360, beyond 30 degrees: 33.5 dB against 39.7 at quality 1; 42.0 at
-   quality 0.5). So pick the quality for the criterion of equal perceived quality you need;
-   the rule and the figures at the top are for quality 1, the eye model's threshold.
+   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter while it moves, the
+   thesis) is not in the study; a sideways camera against 4 samples per pixel showed the
+   one-frame aliasing back beyond 30 degrees at quality 1 (33.5 dB against 39.7 for full at
+   640x360) and none at quality 0.5 (42.0). So pick the quality for the criterion of equal
+   perceived quality you need; the rule and the figures at the top are for quality 1, the
+   eye model's threshold.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
