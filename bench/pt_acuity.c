@@ -34,7 +34,8 @@
    by a Gaussian whose standard deviation at eccentricity e is sqrt(2 ln 2) / pi MAR(e) (0.375
    MAR; MAR = 1 + 1.32 e arc minutes, Guenter et al. 2012): it halves the contrast of the
    grating whose bars are MAR wide, the finest the eye resolves.
-   Bands: [0, e_full), [e_full, e_half), [e_half, e_quarter), [e_quarter, inf) of the plan.
+   Bands: [0, e_full), [e_full, e_half), [e_half, e_quarter), [e_quarter, inf) of the plan;
+   psnr_raw_all: unfiltered, over the image; psnr_eye_all, flip_eye_all: filtered, over it.
    FLIP (Andersson et al. 2020, examples/fovmetrics.h) at the px/degree at the gaze. */
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
@@ -260,7 +261,7 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     printf("method,samples_per_px");
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
-    printf(",psnr_raw_all\n");
+    printf(",psnr_raw_all,psnr_eye_all,flip_eye_all\n");
     for (mi = 0; mi < nmul; ++mi)
     for (m = 0; m < 11; ++m) {
         fovpt_config c = base;
@@ -314,7 +315,13 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
                 v = NAN;
             printf(",%.4f", v);
         }
-        printf(",%.2f\n", raw);
+        {
+            double pa = NAN, fa = NAN;
+            if (fovm_psnr(fgt, fim, (int)W, (int)H, 3, &pa) != FOVM_OK) pa = NAN;
+            if (fovm_flip(fgt, fim, (int)W, (int)H, 3, fovm_eye_ppd(&eye), &fa, NULL) != FOVM_OK)
+                fa = NAN;
+            printf(",%.2f,%.2f,%.4f\n", raw, pa, fa);
+        }
         fflush(stdout);
     }
     pt_scene_free(&S);
