@@ -10,7 +10,7 @@
      fipr_acuity             FIPR with fovsdf_config_acuity
      suffixes (combine them) _edges: the edge mask of Polychronakis 2025 (FOVSDF_MASK_EDGES);
                              _edges1: every edge pixel traced (p = 1); _noq: no quarter level;
-                             _pt: point samples (no level filter)
+                             _pt: point samples (no level filter); _rc<C>: refine_contrast C
    and prints per method: distance evaluations per pixel (all of them: head starts, sample
    rays, normals, shadow rays), the saving (classic's evaluations / the method's), the pixels
    that traced their own rays, and the error against the ground truth after both images are
@@ -60,7 +60,10 @@ static void blur_pass(const float *in, float *out, int w, int h, const float *si
             size_t i = (size_t)y * (size_t)w + (size_t)x;
             float s = sig[i], acc[3] = { 0, 0, 0 }, ws = 0.0f;
             int r = (int)ceilf(3.0f * s);
-            if (s < 0.25f) { for (c = 0; c < 3; ++c) out[3 * i + c] = in[3 * i + c]; continue; }
+            if (s < 0.25f) {
+                for (c = 0; c < 3; ++c) out[3 * i + (size_t)c] = in[3 * i + (size_t)c];
+                continue;
+            }
             if (r > 24) r = 24;
             for (k = -r; k <= r; ++k) {
                 int xx = horiz ? x + k : x, yy = horiz ? y : y + k;
@@ -120,7 +123,7 @@ int main(int argc, char **argv)
     int W = 640, H = 360, nthreads = 2, a, si, mi, gt_spp = 16, shading = 0;
     float fovy = 0.0f, pitch = 0.0f, dist = 0.0f, quality = 1.0f, qlist[8] = { 1.0f };
     int nq = 1, qi;
-    const char *scenes = "primitives,columns,temple,atrium,thin,fractal";
+    const char *scenes = "primitives,columns,temple,atrium,thin,fractals";
     const char *methods = "cone_fov,cone_fov_acuity,cone_fov_acuity_edges,cone_fov_acuity_noq,"
                           "fipr_acuity";
     char mlist[512], *all[32];
@@ -242,6 +245,7 @@ int main(int argc, char **argv)
                     }
                     if (strstr(m, "_noq")) cfg.quarter_deg = 0.0f;
                     if (strstr(m, "_pt")) cfg.level_filter = 0u;
+                    if (strstr(m, "_rc")) cfg.refine_contrast = (float)atof(strstr(m, "_rc") + 3);
                 }
                 if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) {
                     fprintf(stderr, "init %s failed\n", m);

@@ -18,7 +18,8 @@
  *      quarter_deg identical to quarter_deg 0's, a smooth image reconstructed within the
  *      bilinear error (no seam, no shift), the mask output, bad quarter_deg rejected.
  *   4. level_filter: less error against a 16-spp ground truth on a checkerboard floor, the
- *      same evaluations, an untextured image unchanged, bad values rejected.
+ *      same evaluations, an untextured image unchanged, bad values rejected; refine_contrast:
+ *      more pixels traced, less error, bad values rejected.
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -76,7 +77,8 @@ static void test_params(void)
     fov_result r;
     /* pixels per degree grows as the same pixels span a smaller field */
     for (i = 0; i < 6; ++i) {
-        double ppd = ppd_of(fovs[i], 360), eh = model_ecc(ppd, 0.5, 1.0), eq = model_ecc(ppd, 0.25, 1.0);
+        double ppd = ppd_of((double)fovs[i], 360), eh = model_ecc(ppd, 0.5, 1.0),
+               eq = model_ecc(ppd, 0.25, 1.0);
         cfg = fovsdf_config_default();
         cfg.method = FOVSDF_METHOD_CONE_FOV;
         cfg.display.fov_y_deg = fovs[i];
@@ -113,7 +115,7 @@ static void test_params(void)
         cfg = fovsdf_config_default();
         cfg.display.fov_y_deg = 45.0f;
         if (fovsdf_config_acuity(&cfg, &cam, &eye) != FOV_OK) ok_m = 0;
-        if (fabs((double)cfg.acuity.fovea_deg - model_ecc(ppd_of(45.0, 360), 0.5, qs[i])) >
+        if (fabs((double)cfg.acuity.fovea_deg - model_ecc(ppd_of(45.0, 360), 0.5, (double)qs[i])) >
             0.01)
             ok_m = 0;
         if (cfg.acuity.fovea_deg <= prev_f || cfg.quarter_deg <= prev_q) ok_m = 0;
@@ -298,9 +300,15 @@ static void test_quarter(void)
         cfg.heuristic_start = m >= 2 ? 1u : 0u;
         cfg.acuity.fovea_deg = 6.0f;
         cfg.fov_mask = FOVSDF_MASK_FOVEA;
-        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &nq)) { check(0, "quarter_render", "-"); continue; }
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &nq)) {
+            check(0, "quarter_render", "-");
+            continue;
+        }
         cfg.quarter_deg = 12.0f;
-        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &q)) { check(0, "quarter_render", "-"); continue; }
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &q)) {
+            check(0, "quarter_render", "-");
+            continue;
+        }
         g.x = 0.5f * (float)W; g.y = 0.5f * (float)H;
         fovsdf_ecc_init(&em, NULL, 45.0f, W, H, g);
         for (i = 0; i < n; ++i) {
@@ -476,7 +484,8 @@ static void test_level_filter(void)
                 e0 += d0 * d0; e1 += d1 * d1;
             }
         }
-        check(cnt > 10000 && e1 < 0.8 * e0, fovcheck_name("lf_less_error_%s", m ? "fipr" : "cone_fov"),
+        check(cnt > 10000 && e1 < 0.8 * e0,
+              fovcheck_name("lf_less_error_%s", m ? "fipr" : "cone_fov"),
               "squared error %g against %g over %ld interpolated pixels", e1, e0, cnt);
         check(a.st.evals == b.st.evals, fovcheck_name("lf_same_evals_%s", m ? "fipr" : "cone_fov"),
               "%llu against %llu", (unsigned long long)b.st.evals, (unsigned long long)a.st.evals);
@@ -505,6 +514,39 @@ static void test_level_filter(void)
     cfg = fovsdf_config_default();
     cfg.level_filter = 2;
     check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_INVALID_ARG, "lf_bad_value", "-");
+    /* refine_contrast: pixels whose taps differ trace their own rays (more traced pixels, not
+       all); the error against the ground truth drops; bad values rejected */
+    {
+        long tr0 = 0, tr1 = 0;
+        double e0 = 0.0, e1 = 0.0;
+        cfg = fovsdf_config_default();
+        cfg.method = FOVSDF_METHOD_CONE_FOV;
+        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+        cfg.acuity.fovea_deg = 4.0f;
+        cfg.fov_mask = FOVSDF_MASK_FOVEA;
+        cfg.quarter_deg = 10.0f;
+        cfg.level_filter = 1;
+        if (render(&cfg, &s.bi.scene, &s.bi.camera, &a)) {
+            cfg.refine_contrast = 0.1f;
+            if (render(&cfg, &s.bi.scene, &s.bi.camera, &b))
+                for (i = 0; i < n; ++i) {
+                    size_t k;
+                    tr0 += a.mask[i] == 1u;
+                    tr1 += b.mask[i] == 1u;
+                    for (k = 0; k < 3; ++k) {
+                        double d0 = (double)a.rgb[3 * i + k] - (double)gt.rgb[3 * i + k];
+                        double d1 = (double)b.rgb[3 * i + k] - (double)gt.rgb[3 * i + k];
+                        e0 += d0 * d0; e1 += d1 * d1;
+                    }
+                }
+        }
+        check(tr1 > tr0 && tr1 < (long)n && e1 < 0.8 * e0, "refine_contrast_traces_edges",
+              "traced %ld -> %ld of %ld, squared error %g -> %g", tr0, tr1, (long)n, e0, e1);
+        cfg.refine_contrast = -0.1f;
+        check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_INVALID_ARG, "refine_negative", "-");
+        cfg.refine_contrast = NAN;
+        check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_NOT_FINITE, "refine_nan", "-");
+    }
 done:
     frame_free(&gt); frame_free(&a); frame_free(&b);
     free(s.mem);
