@@ -172,7 +172,8 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    eye's does (s(r) has the offset mar0). Then it builds the geometry fovlp_init will
    derive (fovlp_geometry_get's formulas), checks every gap on it (4 offsets per column) and
    grows the buffer until all meet the rule. Figures (quality 1, the defaults; saving =
-   screen pixels / samples shaded incl. the disc, gaze at the centre; tools in the report):
+   screen pixels / samples shaded incl. the disc, gaze at the centre; tests/test_fovlp_acuity.c
+   prints them):
       640x360, 45 degree camera  7.6 ppd  LP 142 x 460, disc 63 px   5.1x
       640x360, 65 degree camera  4.9 ppd  LP 152 x 611, disc 83 px   3.8x
       1920x1080, 27" at 60 cm   33.6 ppd  LP 180 x 378, disc 42 px  40.6x
@@ -180,10 +181,34 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    Limits of the rule: it is exact for a gaze on the display's axis; for other gazes the
    angle between the eye's rays through neighbouring samples, against quality MAR of the true
    eccentricity, comes within 1.08 (640x360 at 65 degrees, next to the disc; 1.02 at 45
-   degrees, 1.00 at the 1080p monitor and the 100 degree display). The rule is on the
-   sample spacing only: what the reconstruction makes of the samples (bilinear, TAA) is
-   measured separately. A display coarser than the eye nearly everywhere (the disc would
-   reach beyond half the diagonal) gives FOV_ERR_UNSUPPORTED: trace every pixel instead.
+   degrees, 1.01 at the 100 degree display, 0.99 at the monitor). A display coarser than the
+   eye nearly everywhere (the disc would reach beyond half the diagonal) gives
+   FOV_ERR_UNSUPPORTED: trace every pixel instead.
+   The rule is on the sample spacing; what the reconstruction makes of the samples is
+   measured by bench_lp --acuity-study (primitives unless named; both images filtered to the
+   eye first, a Gaussian of sigma MAR(e) ppd / 2 at quality 1; PSNR and FLIP per band of
+   eccentricity against 16 samples per pixel; still camera, gaze at the centre; "full" = the
+   full-resolution frame, one sample per pixel). Use it with TAA: one frame of point samples
+   at the eye's own spacing aliases (640x360, beyond 20 degrees: 33-35 dB against 39-42 dB
+   for full), the same buffer with prefiltered samples (4 x 4 points per texel) does not
+   (41-43 dB), and TAA's jitter prefilters: after 20 still frames 43.6-44.8 dB. At 640x360
+   the acuity buffer beats full in every band up to 20 degrees by PSNR and FLIP (primitives,
+   thin, columns), beyond by PSNR too but for the far periphery of columns (45.0 against
+   45.7 dB), while FLIP there is a little higher (beyond 30 degrees 0.021-0.029 against
+   0.017-0.026; columns from 20); at quality 0.7 (saving 2.5-2.8x) it beats full in every
+   band by both. Where the pixels are much finer than the eye, full is nearly perfect at the
+   eye's scale and quality 1 stays below it: the monitor 39-41 dB against 46-53 beyond 5
+   degrees (FLIP 0.04-0.05 against 0.01-0.02), the 100 degree display by FLIP beyond 20
+   degrees (0.016 / 0.009 against 0.012 / 0.005): the bilinear reconstruction of samples at
+   the eye's spacing loses contrast at the eye's own scale (detail after the eye filter 0.5-0.8
+   of the ground truth's). Equal or better in every band: the 100 degree display at quality
+   0.5 (saving 6.3x), the monitor at quality 0.25 (4.2x; at 0.5, 12.3x, FLIP 0.018-0.021
+   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter while it moves, the
+   thesis) is not in the study; a sideways camera against 4 samples per pixel showed the
+   one-frame aliasing back beyond 30 degrees at quality 1 (33.5 dB against 39.7 for full at
+   640x360) and none at quality 0.5 (42.0). So pick the quality for the criterion of equal
+   perceived quality you need; the rule and the figures at the top are for quality 1, the
+   eye model's threshold.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start

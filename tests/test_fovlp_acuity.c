@@ -394,6 +394,30 @@ static void test_fields_and_errors(void)
     r = fovlp_config_acuity(&cfg, &cam, NULL);
     check(r == FOV_OK && fabsf(cfg.cam_fov_y_deg - 45.0f) < 1e-3f, "cam_sets_cam_fov_y_deg",
           "%d %g", (int)r, (double)cfg.cam_fov_y_deg);
+    keep = cfg; /* the same model from cfg.cam_fov_y_deg without a camera (the camera's
+                   45 degrees through tan and atan: equal up to float rounding) */
+    cfg = fovlp_config_default();
+    cfg.width = 640; cfg.height = 360; cfg.cam_fov_y_deg = 45.0f;
+    r = fovlp_config_acuity(&cfg, NULL, NULL);
+    check(r == FOV_OK && fabsf(keep.sigma - cfg.sigma) <= 1e-4f * cfg.sigma &&
+              fabsf(keep.alpha - cfg.alpha) <= 1e-4f * cfg.alpha &&
+              fabsf(keep.gaze_angle - cfg.gaze_angle) <= 1e-4f * cfg.gaze_angle &&
+              fabsf(keep.lp_aspect - cfg.lp_aspect) <= 1e-4f * cfg.lp_aspect,
+          "cam_fov_y_deg_without_cam_same",
+          "%d: sigma %g / %g", (int)r, (double)cfg.sigma, (double)keep.sigma);
+    cfg = fovlp_config_default(); /* neither: the thesis's viewing distance, as fovlp_init */
+    cfg.width = 640; cfg.height = 360;
+    r = fovlp_config_acuity(&cfg, NULL, NULL);
+    {
+        fovlp_geometry g;
+        fov_gaze gz = { 320.0f, 180.0f };
+        double f = sqrt(640.0 * 640.0 + 360.0 * 360.0) / tan(60.0 * PI_D / 180.0);
+        int okg = r == FOV_OK && fovlp_geometry_get(&cfg, gz, &g) == FOV_OK;
+        check(okg && fabs((double)g.f_px - f) < 1e-3 * f &&
+                  (double)g.r_g >= f * tan(ref_efull(f, 1.0) * PI_D / 180.0) * 0.9999,
+              "no_display_no_cam_thesis_distance", "%d f %g (ref %g) r_g %g", (int)r,
+              okg ? (double)g.f_px : 0.0, f, okg ? (double)g.r_g : 0.0);
+    }
     cfg = fovlp_config_default();
     cfg.width = 640; cfg.height = 360; cfg.display.fov_y_deg = 45.0f;
     r = fovlp_config_acuity(&cfg, &cam, NULL);
