@@ -204,12 +204,12 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
    - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
      on the coarse lattices. What makes the periphery visible, measured after filtering both
-     images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, 33.6 and
-     5.4 px/degree): the path-tracing noise of the sparse lattice (upsampled into blobs of the
-     stride's size that the eye's blur does not average away), not the reconstruction (with
-     64 times the samples per lattice point the error beyond e_half falls by 5-13 dB). The
-     B-spline lowers FLIP there by 8-22 % (PSNR -0.3 .. +1.6 dB) and costs no measurable
-     reconstruction error (with 64 times the samples it is no worse than Catmull-Rom/Lanczos).
+     images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, at 33.6
+     and 5.4 px/degree): the path-tracing noise of the sparse lattice (upsampled into blobs of
+     the stride's size that the eye's blur does not average away), not the reconstruction
+     (with 64 times the samples per lattice point the error beyond e_half falls by 7-13 dB).
+     The B-spline lowers FLIP there by 7-19 % (PSNR -0.5 .. +1.6 dB); its own blur costs no
+     measurable error at 33.6 px/degree, 2 dB PSNR (no FLIP) at 5.4 px/degree.
    - Selective. Kim et al. 2021's borders (or the caller's) scaled by one factor k so that
      e_np, beyond which only the presample (one sample per pixel) is traced, falls at e_full,
      beyond which one sample per pixel is as fine as the eye resolves; the zones keep their

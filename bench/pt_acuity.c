@@ -29,13 +29,14 @@
    with the camera's vertical field of view set so that the display has P px/degree at the axis
    (default 33.6, the monitor: the image is then the monitor's central 14 degrees).
 
-   The eye filter (a local stand-in for the perceptual measure the benchmarks add): both
-   images, sRGB-encoded and clamped, are blurred by a Gaussian whose standard deviation at
-   eccentricity e is 0.375 MAR(e) in pixels (fov_eye defaults: MAR = 1 + 1.32 e arc minutes,
-   Guenter et al. 2012), separable, the width taken at the output pixel: the Gaussian then
-   halves the contrast of a grating whose bars are MAR wide, the finest the eye resolves.
-   Bands: [0, e_full), [e_full, e_half), [e_half, e_quarter), [e_quarter, inf) of the plan.
-   FLIP (Andersson et al. 2020, examples/fovmetrics.h) at the display's px/degree. */
+   The eye filter (the perceptual measure of the benchmarks, fovm_eye_filter in
+   examples/fovmetrics.h): both images, sRGB-encoded and clamped, are blurred in linear light
+   by a Gaussian whose standard deviation at eccentricity e is sqrt(2 ln 2) / pi MAR(e) (0.375
+   MAR; MAR = 1 + 1.32 e arc minutes, Guenter et al. 2012): it halves the contrast of the
+   grating whose bars are MAR wide, the finest the eye resolves.
+   Bands: [0, e_full), [e_full, e_half), [e_half, e_quarter), [e_quarter, inf) of the plan;
+   psnr_raw_all: unfiltered, over the image; psnr_eye_all, flip_eye_all: filtered, over it.
+   FLIP (Andersson et al. 2020, examples/fovmetrics.h) at the px/degree at the gaze. */
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
@@ -53,7 +54,7 @@ static void usage(FILE *f)
     fprintf(f, "usage: pt_acuity --counts | --recon [--scene NAME] [--w W --h H] [--ppd P]\n"
                "                 [--gt-spp N] [--spp N] [--no-x64] [--only M1,M2]\n"
                "                 [--gt-cache FILE]  (the ground truth read from / written to FILE)\n"
-               "                 [--mul K]  (the foveated methods' spp times K, not _x64/_eqs)\n"
+               "                 [--mul K1,K2,..]  (foveated spp times each K; not _x64/_eqs)\n"
                "  --counts  samples per pixel and saving of layers/zones (preset, acuity) at\n"
                "            640x360 over 60 deg, 1920x1080 27-inch at 60 cm, 1600x1600 over 100 deg\n"
                "  --recon   error by cause (noise, reconstruction) per eccentricity band after\n"
@@ -178,38 +179,16 @@ static double srgb_enc(double v)
     if (v >= 1.0) return 1.0;
     return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
 }
-/* in: linear rgb; out: sRGB-encoded, clamped, filtered by the Gaussian of sigma[i] pixels */
-static void eye_filter(const float *in, float *out, int w, int h, const float *sigma)
+/* in: linear rgb; out: sRGB-encoded, clamped, then filtered to the eye's resolution
+   (fovm_eye_filter, examples/fovmetrics.h) */
+static int eye_filter(const float *in, float *out, int w, int h, const fovm_eye *eye)
 {
     float *e = (float *)malloc(sizeof(float) * 3u * (size_t)w * (size_t)h);
-    float *t = (float *)malloc(sizeof(float) * 3u * (size_t)w * (size_t)h);
-    int x, y, k, c, pass;
+    int k, r;
     for (k = 0; k < 3 * w * h; ++k) e[k] = (float)srgb_enc(in[k]);
-    for (pass = 0; pass < 2; ++pass) {
-        const float *src = pass ? t : e;
-        float *dst = pass ? out : t;
-        for (y = 0; y < h; ++y)
-            for (x = 0; x < w; ++x) {
-                double s = sigma[y * w + x], acc[3] = { 0, 0, 0 }, ws = 0.0;
-                int r = (int)ceil(3.0 * s), j;
-                if (s < 0.05) {
-                    for (c = 0; c < 3; ++c) dst[3 * (y * w + x) + c] = src[3 * (y * w + x) + c];
-                    continue;
-                }
-                for (j = -r; j <= r; ++j) {
-                    int xx = pass ? x : x + j, yy = pass ? y + j : y;
-                    double wt = exp(-0.5 * (double)(j * j) / (s * s));
-                    if (xx < 0) xx = 0;
-                    if (xx >= w) xx = w - 1;
-                    if (yy < 0) yy = 0;
-                    if (yy >= h) yy = h - 1;
-                    for (c = 0; c < 3; ++c) acc[c] += wt * src[3 * (yy * w + xx) + c];
-                    ws += wt;
-                }
-                for (c = 0; c < 3; ++c) dst[3 * (y * w + x) + c] = (float)(acc[c] / ws);
-            }
-    }
-    free(e); free(t);
+    r = fovm_eye_filter(e, w, h, 3, eye, out);
+    free(e);
+    return r;
 }
 
 /* name is one of the comma-separated entries of list */
@@ -225,7 +204,8 @@ static int listed(const char *list, const char *name)
 }
 
 static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint32_t gt_spp,
-                 uint32_t spp, int no_x64, const char *only, const char *cache, uint32_t fmul)
+                 uint32_t spp, int no_x64, const char *only, const char *cache,
+                 const uint32_t *fmuls, int nmul)
 {
     static const char *const mname[11] = { "uniform", "layers_acuity", "layers_acuity_x64",
                                            "layers_acuity_catmull", "layers_acuity_catmull_x64",
@@ -233,11 +213,12 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
                                            "zones_acuity_lanczos", "zones_acuity_lanczos_x64",
                                            "layers_acuity_eqs", "zones_acuity_eqs" };
     pt_scene S;
-    int id, m, b, i;
+    int id, m, b, i, mi;
     size_t np = (size_t)W * H;
     float *gt = (float *)malloc(sizeof(float) * 3u * np), *img = (float *)malloc(sizeof(float) * 3u * np);
     float *fgt = (float *)malloc(sizeof(float) * 3u * np), *fim = (float *)malloc(sizeof(float) * 3u * np);
-    float *ecc = (float *)malloc(sizeof(float) * np), *sig = (float *)malloc(sizeof(float) * np);
+    float *ecc = (float *)malloc(sizeof(float) * np);
+    fovm_eye eye;
     fovpt_config base = fovpt_config_default();
     fovpt_stats st;
     fov_ecc_model em;
@@ -257,8 +238,8 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
     for (i = 0; i < (int)np; ++i) {
         float e = fovpt_ecc_deg(&em, (float)(i % (int)W) + 0.5f, (float)(i / (int)W) + 0.5f);
         ecc[i] = e;
-        sig[i] = 0.375f * fovpt_eye_mar(NULL, e) * plan.ppd;
     }
+    eye = fovm_eye_from_fov((int)W, (int)H, (double)S.cam.fov_y_deg, (double)g.x, (double)g.y);
     lo[0] = 0.0; hi[0] = plan.e_full; lo[1] = plan.e_full; hi[1] = plan.e_half;
     lo[2] = plan.e_half; hi[2] = plan.e_quarter; lo[3] = plan.e_quarter; hi[3] = 1e9;
     printf("# %s %ux%u, fov_y %.2f deg, ppd %.2f, e_full %.2f e_half %.2f e_quarter %.2f, gt %u spp\n",
@@ -275,18 +256,21 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
             f = cache ? fopen(cache, "wb") : NULL;
             if (f) { fwrite(gt, sizeof(float), 3u * np, f); fclose(f); }
         }
-        eye_filter(gt, fgt, (int)W, (int)H, sig);
+        if (eye_filter(gt, fgt, (int)W, (int)H, &eye) != FOVM_OK) return 1;
     }
     printf("method,samples_per_px");
     for (b = 0; b < 4; ++b) printf(",psnr_b%d", b);
     for (b = 0; b < 4; ++b) printf(",flip_b%d", b);
-    printf(",psnr_raw_all\n");
+    printf(",psnr_raw_all,psnr_eye_all,flip_eye_all\n");
+    for (mi = 0; mi < nmul; ++mi)
     for (m = 0; m < 11; ++m) {
         fovpt_config c = base;
         uint32_t n, mul = (m == 2 || m == 4 || m == 6 || m == 8) ? 64u : 1u, div = mul;
-        double v, raw;
+        uint32_t fmul = fmuls[mi];
+        double v, raw = 0.0;
         if (mul > 1u && no_x64) continue;
         if (only && !listed(only, mname[m])) continue;
+        if (mi > 0 && (m == 0 || mul > 1u || m >= 9)) continue; /* once: uniform, _x64, _eqs */
         c.spp = spp;
         if (m > 0) {
             c.method = m <= 4 || m == 9 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
@@ -311,8 +295,11 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
             fovm_psnr(r, a, (int)W, (int)H, 3, &raw);
             free(a); free(r);
         }
-        eye_filter(img, fim, (int)W, (int)H, sig);
-        printf("%s,%.3f", mname[m], (double)st.samples / (double)np / (double)div);
+        if (eye_filter(img, fim, (int)W, (int)H, &eye) != FOVM_OK) return 1;
+        if (fmul > 1u && m > 0 && m < 9 && mul == fmul)
+            printf("%s_spp%u,%.3f", mname[m], spp * fmul, (double)st.samples / (double)np);
+        else
+            printf("%s,%.3f", mname[m], (double)st.samples / (double)np / (double)div);
         for (b = 0; b < 4; ++b) {
             fovm_sel sel = fovm_sel_band(ecc, lo[b], hi[b]);
             long cnt = 0;
@@ -323,16 +310,22 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
         for (b = 0; b < 4; ++b) {
             fovm_sel sel = fovm_sel_band(ecc, lo[b], hi[b]);
             long cnt = 0;
-            if (fovm_flip_sel(fgt, fim, (int)W, (int)H, 3, (double)plan.ppd, &sel, &v, &cnt) != FOVM_OK ||
+            if (fovm_flip_sel(fgt, fim, (int)W, (int)H, 3, fovm_eye_ppd(&eye), &sel, &v, &cnt) != FOVM_OK ||
                 cnt == 0)
                 v = NAN;
             printf(",%.4f", v);
         }
-        printf(",%.2f\n", raw);
+        {
+            double pa = NAN, fa = NAN;
+            if (fovm_psnr(fgt, fim, (int)W, (int)H, 3, &pa) != FOVM_OK) pa = NAN;
+            if (fovm_flip(fgt, fim, (int)W, (int)H, 3, fovm_eye_ppd(&eye), &fa, NULL) != FOVM_OK)
+                fa = NAN;
+            printf(",%.2f,%.2f,%.4f\n", raw, pa, fa);
+        }
         fflush(stdout);
     }
     pt_scene_free(&S);
-    free(gt); free(img); free(fgt); free(fim); free(ecc); free(sig);
+    free(gt); free(img); free(fgt); free(fim); free(ecc);
     return 0;
 }
 
@@ -340,7 +333,8 @@ int main(int argc, char **argv)
 {
     int i, mode = 0, no_x64 = 0;
     const char *scene = "cornell", *only = NULL, *cache = NULL;
-    uint32_t W = 480, H = 270, gt_spp = 256, spp = 4, fmul = 1;
+    uint32_t W = 480, H = 270, gt_spp = 256, spp = 4, fmuls[16] = { 1 };
+    int nmul = 1;
     float ppd = 33.6f;
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
@@ -349,7 +343,15 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--no-x64")) no_x64 = 1;
         else if (!strcmp(argv[i], "--only") && i + 1 < argc) only = argv[++i];
         else if (!strcmp(argv[i], "--gt-cache") && i + 1 < argc) cache = argv[++i];
-        else if (!strcmp(argv[i], "--mul") && i + 1 < argc) fmul = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--mul") && i + 1 < argc) {
+            const char *p = argv[++i];
+            nmul = 0;
+            while (*p && nmul < 16) {
+                fmuls[nmul++] = (uint32_t)atoi(p);
+                while (*p && *p != ',') ++p;
+                if (*p == ',') ++p;
+            }
+        }
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) scene = argv[++i];
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
@@ -360,12 +362,14 @@ int main(int argc, char **argv)
     }
     if (mode == 1) return counts();
     if (mode == 2) {
+        for (i = 0; i < nmul; ++i)
+            if (fmuls[i] < 1u || fmuls[i] > 1024u) nmul = 0;
         if (W < 16 || H < 16 || W > 4096 || H > 4096 || !(ppd > 0.5f && ppd < 500.0f) || gt_spp < 1 ||
-            spp < 1 || fmul < 1 || fmul > 1024) {
+            spp < 1 || nmul < 1) {
             fprintf(stderr, "bad size, ppd or spp\n");
             return 2;
         }
-        return recon(scene, W, H, ppd, gt_spp, spp, no_x64, only, cache, fmul);
+        return recon(scene, W, H, ppd, gt_spp, spp, no_x64, only, cache, fmuls, nmul);
     }
     usage(stderr);
     return 2;
