@@ -583,11 +583,17 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--gt-spp-pt") && a + 1 < argc) o.gt_spp_pt = (uint32_t)atoi(argv[++a]);
         else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
-    if (quick) {
-        o.displays = "bench,desktop27";
+    if (quick) { /* the options given on the command line keep their values */
+        int k;
+        const char *given = "";
+        for (k = 1; k < argc; ++k)
+            if (!strcmp(argv[k], "--displays")) given = "d";
+        if (!*given) o.displays = "bench,desktop27";
         if (o.qual != g_qual_user) { o.qual = g_qual_quick; o.nqual = 3; }
-        o.gt_spp_pt = 16;
-        o.scenes_sdf = "primitives";
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--gt-spp-pt")) break;
+        if (k == argc) o.gt_spp_pt = 16;
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf")) break;
+        if (k == argc) o.scenes_sdf = "primitives";
     }
     if (o.threads < 1) o.threads = 1;
     if (o.gt_spp < 1 || o.gt_spp > 256 || o.gt_spp_pt < 1 || o.gt_spp_pt > 4096) {
