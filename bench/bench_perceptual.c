@@ -28,6 +28,9 @@
              uniform1 (1 spp, the zones'); fixed: layers (6/10/20-degree radii, strides 1-4, 4
              spp), zones (7.5 / 32.5 degrees, 1 spp); acuity: layers_acuity, zones_acuity.
              work = camera samples (fovpt_stats.samples; every sample is one path).
+             layers_acuity_eqt, zones_acuity_eqt: the quality-1 configuration with every spp
+             times its saving (rounded down): about the full-resolution method's samples, the
+             comparison at equal time (saving about 1).
              Ground truth: uniform at --gt-spp-pt (default 32) samples per pixel.
    CSV columns (the first nine are the interface of issue 13):
      header,scene,display,ppd_center,method,saving,perr,perr_ref,equal_quality,
@@ -37,9 +40,10 @@
    better) of the row's image against the ground truth, perr_ref that of ref_method;
    epsnr / epsnr_ref the eye-filtered PSNR (dB) of the same pairs, psnr_raw the plain PSNR of
    the row's image; quality 0 for the full-resolution and fixed rows. equal_quality is 1 when
-       perr <= 1.05 perr_ref
-   (the foveated image's perceptual error is at most 5 % above the full-resolution method's:
-   see bench/README.md, "Perceptual error", for the reason and a check against FovVideoVDP).
+       perr <= perr_ref + 0.001
+   (the foveated image's perceptual error is at most 0.001 above the full-resolution
+   method's: see bench/README.md, "Perceptual error", for the reason, a check against
+   FovVideoVDP).
    Methods at other qualities are named METHOD_qQ (cone_fov_acuity_q2); METHOD alone is the
    quality 1 (matched to the eye) configuration.
 
@@ -69,7 +73,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define EQ_REL 1.05
+#define EQ_ABS 0.001 /* equal_quality: perr <= perr_ref + EQ_ABS */
 
 typedef struct disp_t {
     const char *name;
@@ -210,7 +214,7 @@ static void method_name(char *buf, size_t n, const char *base, float q)
 static void row(const rowctx_t *rc, const char *method, float q, double work, double work_ref,
                 const char *unit, score_t s, score_t ref, const char *ref_method)
 {
-    int eq = s.eflip <= EQ_REL * ref.eflip, b;
+    int eq = s.eflip <= ref.eflip + EQ_ABS, b;
     fprintf(rc->csv, "%s,%s,%s,%.2f,%s,%.3f,%.5f,%.5f,%d,%g,%.0f,%.0f,%s,%.3f,%.3f,%.3f,%u,%u,%u,%s",
             rc->header, rc->scene, rc->D->name, rc->ppd, method, work_ref / work, s.eflip, ref.eflip,
             eq, (double)q, work, work_ref, unit, s.epsnr, ref.epsnr, s.psnr_raw, rc->D->w, rc->D->h,
@@ -501,6 +505,18 @@ static void pt_scene_rows(FILE *csv, const opts_t *o, const disp_t *D, int id)
             if (pt_render(&S.scene, &S.cam, &c, g, img, o->threads, &st) != 0) continue;
             row(&rc, name, q, (double)st.samples, fam ? w1 : w4, "samples", meas_img(&m, img, name),
                 fam ? ref1 : ref4, fam ? "uniform1" : "uniform4");
+            if (k && fabsf(q - 1.0f) < 1e-6f) {
+                /* equal samples: every spp times the saving (rounded down), about the full
+                   resolution method's work, so the comparison is at equal time */
+                uint32_t mul = (uint32_t)floor((fam ? w1 : w4) / (double)st.samples), n;
+                if (mul < 2u) continue;
+                c.spp *= mul;
+                for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp *= mul;
+                snprintf(name, sizeof name, "%s_eqt", fam ? "zones_acuity" : "layers_acuity");
+                if (pt_render(&S.scene, &S.cam, &c, g, img, o->threads, &st) != 0) continue;
+                row(&rc, name, q, (double)st.samples, fam ? w1 : w4, "samples", meas_img(&m, img, name),
+                    fam ? ref1 : ref4, fam ? "uniform1" : "uniform4");
+            }
         }
     meas_free(&m);
 done:
@@ -567,11 +583,17 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--gt-spp-pt") && a + 1 < argc) o.gt_spp_pt = (uint32_t)atoi(argv[++a]);
         else { fprintf(stderr, "unknown option %s\n", argv[a]); usage(stderr); return 2; }
     }
-    if (quick) {
-        o.displays = "bench,desktop27";
+    if (quick) { /* the options given on the command line keep their values */
+        int k;
+        const char *given = "";
+        for (k = 1; k < argc; ++k)
+            if (!strcmp(argv[k], "--displays")) given = "d";
+        if (!*given) o.displays = "bench,desktop27";
         if (o.qual != g_qual_user) { o.qual = g_qual_quick; o.nqual = 3; }
-        o.gt_spp_pt = 16;
-        o.scenes_sdf = "primitives";
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--gt-spp-pt")) break;
+        if (k == argc) o.gt_spp_pt = 16;
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf")) break;
+        if (k == argc) o.scenes_sdf = "primitives";
     }
     if (o.threads < 1) o.threads = 1;
     if (o.gt_spp < 1 || o.gt_spp > 256 || o.gt_spp_pt < 1 || o.gt_spp_pt > 4096) {

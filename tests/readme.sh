@@ -8,8 +8,8 @@
 #     compiled with gcc -std=c99 $WARN -Werror and as C++ with g++, and both binaries run
 #     and exit 0 (at least three such blocks: the quick starts);
 #   - every image and every other relative link of the README names an existing file;
-#   - bench/README.md is what bench/sdf_tables.py, bench/lp_tables.py and bench/pt_tables.py
-#     write from the committed CSVs (run on a copy, then diffed).
+#   - bench/README.md is what bench/sdf_tables.py, bench/lp_tables.py, bench/pt_tables.py and
+#     bench/perceptual_tables.py write from the committed CSVs (run on a copy, then diffed).
 # Prints PASS/FAIL lines and "N passed, N failed"; exit 1 on a failure.
 # README=path and BENCH_README=path check other files (used to try that each check fails).
 set -u
@@ -103,7 +103,7 @@ if ! command -v python3 >/dev/null 2>&1; then
 fi
 cp "$BENCH_README" "$TMP/bench.md"
 gen=1
-for s in sdf lp pt; do
+for s in sdf lp pt perceptual; do
     if ! python3 "bench/${s}_tables.py" --write "$TMP/bench.md" >"$TMP/$s.gen.log" 2>&1; then
         gen=0
         bad "bench/${s}_tables.py --write failed: $(head -c 300 "$TMP/$s.gen.log")"
