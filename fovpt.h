@@ -368,7 +368,10 @@ RECENT REVISION HISTORY
                       zone radii and the selective borders from the display and the shared eye
                       model (fov_eye, fovpt_eye_plan; Guenter et al. 2012), presets kept by
                       name; layers.bspline (new field): a smoothing cubic B-spline reconstruction
-                      of the coarse layers; bench/pt_acuity.c.
+                      of the coarse layers; bench/pt_acuity.c. Fix: a hit whose t along a huge
+                      or tiny direction (rescaled by 2^k) rounds onto tmin or tmax is reported
+                      at the nearest float inside the interval by fovpt_intersect, brute force
+                      and fovpt_occluded alike (before, intersect could miss what occluded hit).
    0.3.0 (2026-12-02) one block shared with fovsdf.h and fovlp.h (tools/fov_shared.h); error
                       messages on by default, a specific one per failure naming the field;
                       fov_camera shared: fovpt_camera is a typedef of it, new field eye_offset
