@@ -877,7 +877,7 @@ typedef struct fovsdf_config {
                                                                            0: none (mid level) */
     float refine_contrast;  /* FIPR and CONE_FOV: a pixel outside the mask whose interpolation
                                taps' luminances differ by more than this Michelson contrast,
-                               (max - min) / (max + min), traces its own rays instead; >= 0
+                               (max - min) / (max + min + 1e-3), traces its own rays; >= 0
                                                                                    0: never */
     uint32_t level_filter;  /* FIPR and CONE_FOV: 1 = the mid and quarter levels' samples take
                                their cell's mean albedo (a prefiltered texture: no aliasing of
@@ -1245,11 +1245,12 @@ FOVSDF_API fovsdf_config fovsdf_config_default(void);
 FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5, eps_px 0.01,
                                                               4096 steps */
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
-/* Acuity-driven foveation (ACCELERATED METHODS, ACUITY-DRIVEN CONFIGURATION): fills only the
-   foveation fields of *cfg (acuity.fovea_deg, acuity.outer_deg, quarter_deg, refresh, fov_mask)
-   from the display in cfg->display (all zero: cam's fov_y_deg), cam's size and the eye (NULL:
-   the defaults, fov_eye); every other field, method included, stays as the caller set it.
-   FOV_ERR_NULL, or the eccentricity model's / the eye's error code, with a message through
+/* Acuity-driven foveation (ACCELERATED METHODS, ACUITY-DRIVEN FOVEATION): fills only the
+   foveation fields of *cfg (acuity.fovea_deg, acuity.outer_deg, quarter_deg, refresh, fov_mask,
+   level_filter) from the display in cfg->display (all zero: cam's fov_y_deg), cam's size (cam
+   must not be NULL) and the eye (NULL: the defaults, fov_eye); every other field, method
+   included, stays as the caller set it. FOV_ERR_NULL, the eccentricity model's or the eye's
+   error code, or fovsdf_config_resolve's for the config it would give, with a message through
    cfg->logger; *cfg is unchanged on error. */
 FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_camera *cam,
                                            const fov_eye *eye);
@@ -2313,6 +2314,7 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
     fov_result r;
     const fov_logger *lg;
     float fovea;
+    fovsdf_config c, res;
     if (!cfg) return FOV_ERR_NULL;
     lg = &cfg->logger;
     if (!cam) FOVSDF__FAIL(lg, FOV_ERR_NULL, "config_acuity: cam is NULL");
@@ -2324,18 +2326,30 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
         FOVSDF__FAIL(lg, r, "config_acuity: no eccentricity model (cam width, height, fov_y_deg "
                             "or config.display)");
     r = fovsdf_eye_plan(eye, &m, &pl);
-    if (r != FOV_OK)
-        FOVSDF__FAIL(lg, r, "config_acuity: eye: mar0_arcmin and slope_arcmin must be in (0, 60], "
-                            "quality in (0, 100] (0: the defaults)");
+    if (r != FOV_OK) { /* name the field (a zero field is its default, never the bad one) */
+        if (eye && !fov__is0(eye->mar0_arcmin) &&
+            !(eye->mar0_arcmin > 0.0f && eye->mar0_arcmin <= 60.0f))
+            FOVSDF__FAIL(lg, r, "config_acuity: eye.mar0_arcmin must be in (0, 60] (0: 1)");
+        if (eye && !fov__is0(eye->slope_arcmin) &&
+            !(eye->slope_arcmin > 0.0f && eye->slope_arcmin <= 60.0f))
+            FOVSDF__FAIL(lg, r, "config_acuity: eye.slope_arcmin must be in (0, 60] (0: 1.32)");
+        FOVSDF__FAIL(lg, r, "config_acuity: eye.quality must be in (0, 100] (0: 1)");
+    }
     /* full resolution wherever half the linear density is not yet enough; 1e-3: no fovea (0
        would mean the 7.5-degree default) */
     fovea = fovsdf__clampf(pl.e_half, 1e-3f, 180.0f);
-    cfg->acuity.fovea_deg = fovea;
-    cfg->acuity.outer_deg = 0.0f;
-    cfg->quarter_deg = pl.e_quarter < 180.0f ? fov__maxf(pl.e_quarter, fovea) : 0.0f;
-    cfg->refresh = 1u; /* the periphery is the part of the visual field most sensitive to flicker */
-    cfg->fov_mask = (uint32_t)FOVSDF_MASK_FOVEA;
-    cfg->level_filter = 1u;
+    c = *cfg;
+    c.acuity.fovea_deg = fovea;
+    c.acuity.outer_deg = 0.0f;
+    c.quarter_deg = pl.e_quarter < 180.0f ? fov__maxf(pl.e_quarter, fovea) : 0.0f;
+    c.refresh = 1u; /* the periphery is the part of the visual field most sensitive to flicker */
+    c.fov_mask = (uint32_t)FOVSDF_MASK_FOVEA;
+    c.level_filter = 1u;
+    /* the whole config must be valid, as fovlp's and fovpt's config_acuity check (resolve logs
+       its own message) */
+    r = fovsdf_config_resolve(&c, &res);
+    if (r != FOV_OK) return r;
+    *cfg = c;
     return FOV_OK;
 }
 

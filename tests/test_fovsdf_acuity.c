@@ -174,8 +174,27 @@ static void test_params(void)
     check(r == FOV_ERR_NOT_FINITE && lr.calls == 1, "acuity_nan_quality", "r %d", (int)r);
     eye.quality = 0.0f;
     eye.slope_arcmin = 100.0f;
+    lr.calls = 0;
     r = fovsdf_config_acuity(&cfg, &cam, &eye);
-    check(r == FOV_ERR_INVALID_ARG, "acuity_bad_slope", "r %d", (int)r);
+    check(r == FOV_ERR_INVALID_ARG && lr.calls == 1 && strstr(lr.msg, "slope_arcmin") != NULL &&
+              strstr(lr.msg, "quality") == NULL && memcmp(&cfg, &before, sizeof cfg) == 0,
+          "acuity_bad_slope", "r %d msg '%s'", (int)r, lr.msg);
+    eye.slope_arcmin = 0.0f;
+    eye.mar0_arcmin = -2.0f;
+    lr.calls = 0;
+    r = fovsdf_config_acuity(&cfg, &cam, &eye);
+    check(r == FOV_ERR_INVALID_ARG && lr.calls == 1 && strstr(lr.msg, "mar0_arcmin") != NULL &&
+              strstr(lr.msg, "slope") == NULL, "acuity_bad_mar0", "r %d msg '%s'", (int)r, lr.msg);
+    eye.mar0_arcmin = 0.0f;
+    /* a config that is invalid elsewhere: config_acuity reports resolve's error, *cfg kept */
+    cfg.spp = 100000u;
+    before = cfg;
+    lr.calls = 0;
+    r = fovsdf_config_acuity(&cfg, &cam, NULL);
+    check(r != FOV_OK && lr.calls >= 1 && memcmp(&cfg, &before, sizeof cfg) == 0,
+          "acuity_invalid_config_rejected", "r %d calls %d", (int)r, lr.calls);
+    cfg.spp = 0u;
+    before = cfg;
     cam.width = 0;
     lr.calls = 0;
     r = fovsdf_config_acuity(&cfg, &cam, NULL);
