@@ -1526,6 +1526,33 @@ FOV__PRIV float fov__eye_ecc(const fov_eye *e, float ppd, float density)
     return x < 180.0f ? x : 180.0f;
 }
 
+/* Checks a fov_eye field by field (NULL: the defaults), logging which field breaks which rule
+   ("<who>eye.slope_arcmin must be in (0, 60] (0: 1.32)"): what each header's config_acuity
+   calls before fov__eye_plan. */
+FOV__PRIV fov_result fov__eye_check(const fov_logger *lg, const char *tag, const char *who,
+                                    const fov_eye *eye)
+{
+    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
+                                       FOV__MSG("eye.quality") };
+    static const char *const rule[3] = { FOV__MSG(" must be in (0, 60] (0: 1)"),
+                                         FOV__MSG(" must be in (0, 60] (0: 1.32)"),
+                                         FOV__MSG(" must be in (0, 100] (0: 1)") };
+    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
+    float v[3];
+    uint32_t i;
+    if (!eye) return FOV_OK;
+    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
+    for (i = 0; i < 3; ++i) {
+        if (!fov__finite(v[i]))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, nm[i],
+                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
+        if (v[i] < 0.0f || v[i] > hi[i])
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, nm[i], rule[i],
+                             (uint32_t)__LINE__);
+    }
+    return FOV_OK;
+}
+
 FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov_eye_plan *out)
 {
     float w0, sl, q, ppd;
@@ -2011,24 +2038,6 @@ FOVLP__PRIV void fovlp__ac_check(const fovlp__acm *a, const fovlp_config *c,
     *ang = fov__maxf(*ang, FOVLP__TWO_PI * a->R / ((float)g->lp_h * fovlp__ac_s(a, a->R)));
 }
 
-FOVLP__PRIV fov_result fovlp__eye_check(const fov_logger *lg, const fov_eye *eye)
-{
-    static const fov__field f[3] = {
-        FOV__FIELD(fov_eye, mar0_arcmin, 1), FOV__FIELD(fov_eye, slope_arcmin, 1),
-        FOV__FIELD(fov_eye, quality, 1) };
-    fov_result r;
-    if (!eye) return FOV_OK;
-    r = fov__fields_check(lg, "fovlp", "eye.", eye, f, 3u, 0, (uint32_t)__LINE__);
-    if (r == FOV_OK) r = fov__fields_check(lg, "fovlp", "eye.", eye, f, 3u, 1, __LINE__);
-    if (r != FOV_OK) return r;
-    if (eye->mar0_arcmin > 60.0f)
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.mar0_arcmin must be in (0, 60] (0: 1)");
-    if (eye->slope_arcmin > 60.0f)
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.slope_arcmin must be in (0, 60] (0: 1.32)");
-    if (eye->quality > 100.0f)
-        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "eye.quality must be in (0, 100] (0: 1)");
-    return FOV_OK;
-}
 
 FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *cam,
                                          const fov_eye *eye)
@@ -2047,7 +2056,7 @@ FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *
     int disp0;
     if (!cfg) return FOV_ERR_NULL;
     lg = &cfg->logger;
-    r = fovlp__eye_check(lg, eye);
+    r = fov__eye_check(lg, "fovlp", "config_acuity: ", eye);
     if (r != FOV_OK) return r;
     t = *cfg;
     disp0 = fov__is0(t.display.fov_y_deg) && fov__is0(t.display.pixel_pitch_mm) &&

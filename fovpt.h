@@ -1695,6 +1695,33 @@ FOV__PRIV float fov__eye_ecc(const fov_eye *e, float ppd, float density)
     return x < 180.0f ? x : 180.0f;
 }
 
+/* Checks a fov_eye field by field (NULL: the defaults), logging which field breaks which rule
+   ("<who>eye.slope_arcmin must be in (0, 60] (0: 1.32)"): what each header's config_acuity
+   calls before fov__eye_plan. */
+FOV__PRIV fov_result fov__eye_check(const fov_logger *lg, const char *tag, const char *who,
+                                    const fov_eye *eye)
+{
+    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
+                                       FOV__MSG("eye.quality") };
+    static const char *const rule[3] = { FOV__MSG(" must be in (0, 60] (0: 1)"),
+                                         FOV__MSG(" must be in (0, 60] (0: 1.32)"),
+                                         FOV__MSG(" must be in (0, 100] (0: 1)") };
+    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
+    float v[3];
+    uint32_t i;
+    if (!eye) return FOV_OK;
+    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
+    for (i = 0; i < 3; ++i) {
+        if (!fov__finite(v[i]))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, nm[i],
+                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
+        if (v[i] < 0.0f || v[i] > hi[i])
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, nm[i], rule[i],
+                             (uint32_t)__LINE__);
+    }
+    return FOV_OK;
+}
+
 FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov_eye_plan *out)
 {
     float w0, sl, q, ppd;
@@ -4058,28 +4085,6 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
 }
 
 /* ---- acuity-driven configuration (fovpt_config_acuity) ---------------------------------- */
-/* Checks a fov_eye field by field (NULL: the defaults) with a specific message. */
-FOVPT__PRIV fov_result fovpt__eye_check(const fov_logger *lg, const fov_eye *eye)
-{
-    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
-                                       FOV__MSG("eye.quality") };
-    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
-    float v[3];
-    uint32_t i;
-    if (!eye) return FOV_OK;
-    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
-    for (i = 0; i < 3; ++i) {
-        if (!fov__finite(v[i]))
-            return fov__err3(lg, "fovpt", FOV_ERR_NOT_FINITE, "config_acuity: ", nm[i],
-                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
-        if (v[i] < 0.0f || v[i] > hi[i])
-            return fov__err3(lg, "fovpt", FOV_ERR_INVALID_ARG, "config_acuity: ", nm[i],
-                             i < 2 ? FOV__MSG(" must be in (0, 60] (0: default)")
-                                   : FOV__MSG(" must be in (0, 100] (0: default)"),
-                             (uint32_t)__LINE__);
-    }
-    return FOV_OK;
-}
 
 /* The eye's allowed sample spacing at ecc, in pixels of a display of ppd pixels per degree. */
 FOVPT__PRIV float fovpt__allowed_px(const fov_eye *eye, float ppd, float ecc)
@@ -4108,7 +4113,7 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     if (!cfg) return FOV_ERR_NULL;
     lg = &cfg->logger;
     if (!cam) FOVPT__FAIL(lg, FOV_ERR_NULL, "config_acuity: cam is NULL");
-    e = fovpt__eye_check(lg, eye);
+    e = fov__eye_check(lg, "fovpt", "config_acuity: ", eye);
     if (e != FOV_OK) return e;
     e = fovpt_config_resolve(cfg, &c); /* the defaults the computation starts from */
     if (e != FOV_OK) return e;

@@ -2071,6 +2071,33 @@ FOV__PRIV float fov__eye_ecc(const fov_eye *e, float ppd, float density)
     return x < 180.0f ? x : 180.0f;
 }
 
+/* Checks a fov_eye field by field (NULL: the defaults), logging which field breaks which rule
+   ("<who>eye.slope_arcmin must be in (0, 60] (0: 1.32)"): what each header's config_acuity
+   calls before fov__eye_plan. */
+FOV__PRIV fov_result fov__eye_check(const fov_logger *lg, const char *tag, const char *who,
+                                    const fov_eye *eye)
+{
+    static const char *const nm[3] = { FOV__MSG("eye.mar0_arcmin"), FOV__MSG("eye.slope_arcmin"),
+                                       FOV__MSG("eye.quality") };
+    static const char *const rule[3] = { FOV__MSG(" must be in (0, 60] (0: 1)"),
+                                         FOV__MSG(" must be in (0, 60] (0: 1.32)"),
+                                         FOV__MSG(" must be in (0, 100] (0: 1)") };
+    static const float hi[3] = { 60.0f, 60.0f, 100.0f };
+    float v[3];
+    uint32_t i;
+    if (!eye) return FOV_OK;
+    v[0] = eye->mar0_arcmin; v[1] = eye->slope_arcmin; v[2] = eye->quality;
+    for (i = 0; i < 3; ++i) {
+        if (!fov__finite(v[i]))
+            return fov__err3(lg, tag, FOV_ERR_NOT_FINITE, who, nm[i],
+                             FOV__MSG(" is NaN or infinite"), (uint32_t)__LINE__);
+        if (v[i] < 0.0f || v[i] > hi[i])
+            return fov__err3(lg, tag, FOV_ERR_INVALID_ARG, who, nm[i], rule[i],
+                             (uint32_t)__LINE__);
+    }
+    return FOV_OK;
+}
+
 FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov_eye_plan *out)
 {
     float w0, sl, q, ppd;
@@ -2325,16 +2352,10 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
     if (r != FOV_OK)
         FOVSDF__FAIL(lg, r, "config_acuity: no eccentricity model (cam width, height, fov_y_deg "
                             "or config.display)");
+    r = fov__eye_check(lg, "fovsdf", "config_acuity: ", eye);
+    if (r != FOV_OK) return r;
     r = fovsdf_eye_plan(eye, &m, &pl);
-    if (r != FOV_OK) { /* name the field (a zero field is its default, never the bad one) */
-        if (eye && !fov__is0(eye->mar0_arcmin) &&
-            !(eye->mar0_arcmin > 0.0f && eye->mar0_arcmin <= 60.0f))
-            FOVSDF__FAIL(lg, r, "config_acuity: eye.mar0_arcmin must be in (0, 60] (0: 1)");
-        if (eye && !fov__is0(eye->slope_arcmin) &&
-            !(eye->slope_arcmin > 0.0f && eye->slope_arcmin <= 60.0f))
-            FOVSDF__FAIL(lg, r, "config_acuity: eye.slope_arcmin must be in (0, 60] (0: 1.32)");
-        FOVSDF__FAIL(lg, r, "config_acuity: eye.quality must be in (0, 100] (0: 1)");
-    }
+    if (r != FOV_OK) FOVSDF__FAIL(lg, r, "config_acuity: no eye plan for this display");
     /* full resolution wherever half the linear density is not yet enough; 1e-3: no fovea (0
        would mean the 7.5-degree default) */
     fovea = fovsdf__clampf(pl.e_half, 1e-3f, 180.0f);
