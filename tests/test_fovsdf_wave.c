@@ -227,5 +227,90 @@ int main(void)
                   (int)e5);
         }
     }
+    /* fovsdf_shade_points_grouped: group 0 and 1 are fovsdf_shade_points bit for bit; with
+       groups, no point's hit lies beyond its first hit (the ground truth's: a head start past
+       a surface would find the one behind it or miss), and the head starts save primary
+       evaluations. Points in clusters of 8 around random centres (radius 0.5, 3 or 20
+       pixels), a few scattered wide, off the image too. */
+    for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+        fovsdf_builtin bi;
+        fovsdf_camera cam;
+        fovsdf_config cfg = fovsdf_config_default(), gcfg = fovsdf_config_ground_truth();
+        fovsdf_ctx c, gc;
+        fovsdf_stats s0, s8;
+        enum { NP = 400 };
+        static float xy[2 * NP], r0[3 * NP], r1[3 * NP], t0[NP], t1[NP], tg[NP], rg[3];
+        static int32_t m0[NP], m1[NP];
+        static const uint32_t groups[5] = { 1u, 2u, 8u, 37u, 256u };
+        uint32_t i, k, seed = 99u + id, beyond = 0, hits = 0;
+        float cx = 0.0f, cy = 0.0f, rad = 1.0f;
+        fovsdf_builtin_init(id, &bi, mem, sizeof mem);
+        cam = bi.camera; cam.width = W; cam.height = H;
+        fovsdf_init(&c, &cfg, &bi.scene, &cam, g_gaze, 0, 0);
+        fovsdf_init(&gc, &gcfg, &bi.scene, &cam, g_gaze, 0, 0);
+        for (i = 0; i < NP; ++i) {
+            float u, v;
+            if (i % 8u == 0u) {
+                static const float radii[3] = { 0.5f, 3.0f, 20.0f };
+                seed = seed * 1664525u + 1013904223u;
+                cx = (float)(seed >> 8) * (1.2f * (float)W / 16777216.0f) - 0.1f * (float)W;
+                seed = seed * 1664525u + 1013904223u;
+                cy = (float)(seed >> 8) * (1.2f * (float)H / 16777216.0f) - 0.1f * (float)H;
+                rad = i % 80u == 72u ? 2.0f * (float)W : radii[(i / 8u) % 3u];
+            }
+            seed = seed * 1664525u + 1013904223u;
+            u = (float)(seed >> 8) / 16777216.0f - 0.5f;
+            seed = seed * 1664525u + 1013904223u;
+            v = (float)(seed >> 8) / 16777216.0f - 0.5f;
+            xy[2 * i] = cx + 2.0f * rad * u; xy[2 * i + 1] = cy + 2.0f * rad * v;
+        }
+        fovsdf_stats_init(&s0);
+        check(fovsdf_shade_points(&c, NP, xy, 0, r0, t0, m0, &s0) == FOV_OK,
+              fovcheck_name("%s_grouped_reference_ok", bi.name), "-");
+        for (k = 0; k < 2u; ++k) {
+            check(fovsdf_shade_points_grouped(&c, NP, xy, 2, k, r1, t1, m1, 0) == FOV_OK &&
+                      memcmp(r0, r1, sizeof r0) == 0 && memcmp(t0, t1, sizeof t0) == 0 &&
+                      memcmp(m0, m1, sizeof m0) == 0,
+                  fovcheck_name("%s_grouped_%u_is_shade_points", bi.name, k), "-");
+        }
+        for (i = 0; i < NP; ++i) {
+            fovsdf_shade_point(&gc, xy[2 * i], xy[2 * i + 1], rg, &tg[i], 0, 0);
+            if (!(t0[i] <= tg[i] * 1.001f + 1e-3f)) ++beyond; /* the check checks itself */
+        }
+        check(beyond == 0, fovcheck_name("%s_shade_point_never_beyond_first_hit", bi.name),
+              "%u points", beyond);
+        for (k = 1; k < 5u; ++k) {
+            fovsdf_stats_init(&s8);
+            beyond = 0; hits = 0;
+            check(fovsdf_shade_points_grouped(&c, NP, xy, 0, groups[k], r1, t1, m1, &s8) ==
+                      FOV_OK,
+                  fovcheck_name("%s_grouped_%u_ok", bi.name, groups[k]), "-");
+            for (i = 0; i < NP; ++i) {
+                if (t1[i] < c.t_max) ++hits;
+                if (!(t1[i] <= tg[i] * 1.001f + 1e-3f) || !(r1[3 * i] >= 0.0f)) ++beyond;
+            }
+            check(beyond == 0 && hits > 0,
+                  fovcheck_name("%s_grouped_%u_never_beyond_first_hit", bi.name, groups[k]),
+                  "%u of %u points beyond (or NaN), %u hits", beyond, (unsigned)NP, hits);
+            if (groups[k] == 8u)
+                check(s8.evals_lowres > 0 && s8.evals_primary + s8.evals_lowres < s0.evals_primary,
+                      fovcheck_name("%s_grouped_8_saves_primary_evaluations", bi.name),
+                      "lowres %llu + primary %llu vs %llu", (unsigned long long)s8.evals_lowres,
+                      (unsigned long long)s8.evals_primary, (unsigned long long)s0.evals_primary);
+        }
+        if (id == 0) {
+            float bad[4] = { 1.0f, 2.0f, 3.0f, 0.0f };
+            fov_result e1, e2, e3, e4;
+            bad[3] = bad[3] / bad[3]; /* NaN */
+            e1 = fovsdf_shade_points_grouped(&c, 2, bad, 0, 8, r1, 0, 0, 0);
+            e2 = fovsdf_shade_points_grouped(&c, 2, xy, 0, 257, r1, 0, 0, 0);
+            e3 = fovsdf_shade_points_grouped(&c, 0, 0, 0, 8, 0, 0, 0, 0);
+            e4 = fovsdf_shade_points_grouped(0, 2, xy, 0, 8, r1, 0, 0, 0);
+            check(e1 == FOV_ERR_NOT_FINITE && e2 == FOV_ERR_INVALID_ARG && e3 == FOV_OK &&
+                      e4 == FOV_ERR_NULL,
+                  "shade_points_grouped_errors", "%d %d %d %d", (int)e1, (int)e2, (int)e3,
+                  (int)e4);
+        }
+    }
     return fovcheck_summary();
 }
