@@ -28,13 +28,16 @@
    per pixel, a 16 x 16 grid, fovea pixels only), psnr_gt_fovea_ref (the 16-spp ground truth
    itself against that reference: the measurement's own error in the fovea); prims_px_full,
    prims_smp_fov: primitive evaluations of fovsdf's built-in programs (the part of the
-   distance evaluations not skipped by bounds) per pixel and per shaded sample.
+   distance evaluations not skipped by bounds) per pixel and per shaded sample; group: the
+   main grid's frames (foveated and full resolution, not the ground truths) shade groups of
+   that many samples or pixels from a shared certified cone head start
+   (fovsdf_shade_points_grouped, --group G, default 8; 0 as before: every ray from the camera).
    Writes bench/results/lp.csv and, with gnuplot, bench/results/lp_<scene>.png (PSNR per ring)
    and bench/results/lp_speed.png (speed-up against the sample ratio). Then, per scene of
    --moving-scenes, a moving camera and gaze sequence (see moving_seq) into
    bench/results/lp_moving.csv and lp_moving.png (ring RMSE, TAA off / on).
 
-   usage: bench_lp [--full] [--hd] [--shadows] [--runs N] [--frames N] [--scenes a,b]
+   usage: bench_lp [--full] [--hd] [--shadows] [--group G] [--runs N] [--frames N] [--scenes a,b]
                    [--moving-scenes a,b] [--moving-frames N] [--out FILE]
           bench_lp --fovea-study [--scenes a,b]   what limits the fovea's PSNR (see fovea_study)
           bench_lp --acuity-study [--scenes a,b] [--display cam|monitor|hmd] [--quality Q] [--frames N]
@@ -693,6 +696,9 @@ static void usage(FILE *f)
           "  --full              every scene and preset at four sigmas (hours)\n"
           "  --hd                1280x720 (default 640x360)\n"
           "  --shadows           shade with soft shadows\n"
+          "  --group G           the main grid's frames shade groups of G samples (foveated) or\n"
+          "                      pixels (full resolution) from a shared cone head start\n"
+          "                      (fovsdf_shade_points_grouped; default 8; 0: none)\n"
           "  --runs N            timing runs (default 3)\n"
           "  --frames N          frames per configuration (default 20)\n"
           "  --scenes a,b,...    scenes\n"
@@ -710,6 +716,7 @@ int main(int argc, char **argv)
 {
     uint32_t W = 640, H = 360, id;
     int study = 0, astudy = 0, adisp = 0, full = 0, runs = 3, frames = 20, a, ncfg = 0, c, shadows = 0, mframes = 12;
+    uint32_t group = 8;
     const char *scenes = NULL, *outpath = "bench/results/lp.csv", *mscenes = NULL;
     char mpath[600];
     cfg_t cfgs[64];
@@ -729,6 +736,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
+        else if (!strcmp(argv[a], "--group") && a + 1 < argc) group = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--fovea-study")) study = 1;
         else if (!strcmp(argv[a], "--acuity-study")) astudy = 1;
         else if (!strcmp(argv[a], "--quality") && a + 1 < argc) aq = (float)atof(argv[++a]);
@@ -820,7 +828,7 @@ int main(int argc, char **argv)
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",psnr_r%d", a);
     for (a = 1; a <= NRINGS; ++a) fprintf(csv, ",ssim_r%d", a);
     fprintf(csv, ",evals_full,evals_fov,evals_px_full,evals_smp_fov,hits_pct_full,hits_pct_fov,eval_ratio,"
-                 "psnr_fovea_ref,psnr_gt_fovea_ref,prims_px_full,prims_smp_fov");
+                 "psnr_fovea_ref,psnr_gt_fovea_ref,prims_px_full,prims_smp_fov,group");
     fprintf(csv, "\n");
     fprintf(stderr, "bench-lp: %ux%u, %d configurations per scene, median of %d runs, %d TAA frames, one thread\n", W, H,
             ncfg, runs, frames);
@@ -858,6 +866,7 @@ int main(int argc, char **argv)
         gt_image(&user, W, H, ecc, 5.0f, 16, 1, gtref);
         to_disp(gtref, gtref_disp, npx * 3);
         fovm_psnr_sel(gtref_disp, gt_disp, (int)W, (int)H, 3, &fovea_all, &p_gt_ref, &cnt_ref);
+        user.group = group; /* the ground truths above: every ray from the camera */
         for (c = 0; c < ncfg; ++c) {
             fovlp_config lc = fovlp_config_preset(cfgs[c].preset, W, H);
             fovlp_ctx lp;
@@ -888,7 +897,8 @@ int main(int argc, char **argv)
                 double t0;
                 memset(&user.stats, 0, sizeof user.stats); /* deterministic counts of the first run */
                 t0 = now_ms();
-                fovsdf_shade_points(user.sdf, (uint32_t)npx, centres, 2, full_img, NULL, NULL, &user.stats);
+                fovsdf_shade_points_grouped(user.sdf, (uint32_t)npx, centres, 2, group, full_img, NULL, NULL,
+                                            &user.stats);
                 tfull[a] = now_ms() - t0;
                 if (a == 0) st_full = user.stats;
                 memset(&user.stats, 0, sizeof user.stats);
@@ -944,7 +954,8 @@ int main(int argc, char **argv)
                     (double)st_fov.evals / (double)cnt.shaded, 100.0 * (double)st_full.hits / (double)st_full.rays,
                     100.0 * (double)st_fov.hits / (double)st_fov.rays, (double)st_full.evals / (double)st_fov.evals,
                     p_ref, p_gt_ref);
-            fprintf(csv, ",%.2f,%.2f\n", (double)st_full.prims / (double)npx, (double)st_fov.prims / (double)cnt.shaded);
+            fprintf(csv, ",%.2f,%.2f,%u\n", (double)st_full.prims / (double)npx, (double)st_fov.prims / (double)cnt.shaded,
+                    group);
             fflush(csv);
             fprintf(stderr, "  %s %-7s sigma %.2f: %5.1f %% samples, speed-up %.2f (ideal %.2f), fovea %.1f dB (1 frame %.1f), all %.1f dB, flicker ratio %.3f\n",
                     nm, fovlp_preset_name(cfgs[c].preset), (double)lc.sigma, (double)cnt.shaded_pct, t_full / t_fov,

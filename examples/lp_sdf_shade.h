@@ -2,7 +2,7 @@
    bench/bench_lp.c: a fovlp_shade_fn that shades a screen point with fovsdf_shade_point
    (the same sample fovsdf_render_rows takes), and lpsdf_shade_samples, which shades all the
    samples of a range of rows in one fovsdf_shade_points call (a wavefront: the same values,
-   faster). (The TAA camera comes from the same fov_camera through fovlp_camera_from.)
+   faster), or with a cone head start per group of samples (lpsdf_user.group). (The TAA camera comes from the same fov_camera through fovlp_camera_from.)
    Include after fovsdf.h and fovlp.h; lpsdf_shade_samples needs <stdlib.h>. */
 #ifndef LP_SDF_SHADE_H
 #define LP_SDF_SHADE_H
@@ -10,6 +10,10 @@
 typedef struct lpsdf_user {
     const fovsdf_ctx *sdf;
     fovsdf_stats stats;   /* one per thread */
+    uint32_t group;       /* lpsdf_shade_samples: 0, each sample's ray from the camera
+                             (fovsdf_shade_point's values bit for bit); G > 1, groups of G
+                             consecutive samples of a log-polar row share a certified cone head
+                             start (fovsdf_shade_points_grouped; 8 is a good choice) */
 } lpsdf_user;
 
 /* Linear RGB and the hit distance (t_max for a miss) of screen point (x, y): one fovsdf
@@ -48,9 +52,9 @@ static int lpsdf_shade_samples(const fovlp_ctx *lp, uint32_t r0, uint32_t r1, lp
     c = (float *)malloc(n * 3 * sizeof(float));
     t = (float *)malloc(n * sizeof(float));
     ok = smp && c && t && fovlp_samples(lp, r0, r1, smp, n, &n) == FOV_OK &&
-         fovsdf_shade_points(u->sdf, (uint32_t)n, &smp[0].x,
-                             (uint32_t)(sizeof *smp / sizeof(float)), c, t, NULL,
-                             &u->stats) == FOV_OK;
+         fovsdf_shade_points_grouped(u->sdf, (uint32_t)n, &smp[0].x,
+                                     (uint32_t)(sizeof *smp / sizeof(float)), u->group, c, t,
+                                     NULL, &u->stats) == FOV_OK;
     if (ok)
         for (i = 0; i < n; ++i) {
             size_t s = smp[i].slot;
