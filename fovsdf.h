@@ -1351,8 +1351,9 @@ FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *ctx, uint32_t n, con
    inside the hit threshold (as CONE's pixels are CLASSIC's), not bit for bit. group 0 or 1 is
    fovsdf_shade_points; at most FOVSDF_MAX_GROUP (256), else FOV_ERR_INVALID_ARG. The points of a
    group should lie close together (fovlp_samples' order: a log-polar row around the gaze); a
-   group spread wide only costs its cone's first evaluation. fovlp's C Fov samples at 640x360,
-   group 8: 25 % fewer evaluations per sample (bench_lp's group rows). */
+   group spread wide only costs its cone's first evaluation. fovlp's C Fov samples of
+   primitives at 640x360, group 8: 25 % fewer evaluations with soft shadows (48.0 -> 36.2 per
+   sample), 35 % without; 13 % fewer instructions (bench_lp --group). */
 #ifndef FOVSDF_MAX_GROUP
 #define FOVSDF_MAX_GROUP 256u
 #endif
