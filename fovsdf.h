@@ -6580,13 +6580,13 @@ FOVSDF_API fov_result fovsdf_shade_points_grouped(const fovsdf_ctx *c, uint32_t 
     m.verify_start = 0; /* from the camera, or from a certified start */
     fovsdf__wave_init(&wv, c, 0, &local);
     wv.spp = 1; wv.cap = FOVSDF_WAVE; wv.prgb = rgb; wv.pt = t; wv.pmat = material;
-    for (first = 0; first < n; first += ng * group) {
+    for (first = 0; first < n; first += n - first < ng * group ? n - first : ng * group) {
         /* the cones of the next groups (none for group 1: every ray from the camera) */
-        ng = (n - first + group - 1u) / group;
+        ng = (n - first) / group + ((n - first) % group != 0u ? 1u : 0u);
         if (ng > FOVSDF_WAVE) ng = FOVSDF_WAVE;
         if (group > 1u) {
             for (g = 0; g < ng; ++g) {
-                uint32_t j0 = first + g * group, j1 = j0 + group < n ? j0 + group : n, j;
+                uint32_t j0 = first + g * group, j1 = n - j0 > group ? j0 + group : n, j;
                 float x0 = FLT_MAX, y0 = FLT_MAX, x1 = -FLT_MAX, y1 = -FLT_MAX;
                 for (j = j0; j < j1; ++j) {
                     float px = xy[(size_t)j * stride], py = xy[(size_t)j * stride + 1u];
@@ -6599,7 +6599,7 @@ FOVSDF_API fov_result fovsdf_shade_points_grouped(const fovsdf_ctx *c, uint32_t 
             fovsdf__wave_cones(&wv, &m, ng, cn, act);
         }
         for (g = 0; g < ng; ++g) {
-            uint32_t j0 = first + g * group, j1 = j0 + group < n ? j0 + group : n;
+            uint32_t j0 = first + g * group, j1 = n - j0 > group ? j0 + group : n;
             /* as fovsdf__safe_start from the camera: -1 is a proven miss */
             float ts = group > 1u ? cn[g].t : 0.0f;
             ts = ts < 0.0f ? -1.0f : fov__minf(fov__maxf(ts, 0.0f), m.t_max);
