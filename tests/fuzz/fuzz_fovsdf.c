@@ -22,7 +22,8 @@
    or 1, mask 0/1 (FIPR, CONE_FOV) or 1, steps <= spp * max_steps, nothing written outside
    the rows/tiles and strides (canaries, row padding); the image is bit for bit the same
    whatever the split into rows, tiles or tile buffers; camera rays are unit; trace, march
-   and shade_point report t within [t_start, t_max].
+   and shade_point report t within [t_start, t_max]; shade_points_grouped of the shade_point
+   positions (one group) keeps the same rgb and t contract.
 
    -DFZ_VERBOSE prints the scenario (geometry, config, camera) to stderr.
    -DFZ_IGNORE_KNOWN: development switch that steers around the findings F1-F6 of issue 10
@@ -762,7 +763,8 @@ static void check_hit(const fovsdf_hit *h, float t_start, float t_max, uint32_t 
 static void ray_checks(fz_in *in, const fovsdf_ctx *ctx, const scen *s, int H)
 {
     float w = (float)ctx->cam.width, hgt = (float)ctx->cam.height, hi = rgb_bound(ctx), lo = rgb_floor(ctx);
-    uint32_t n = fz_pick(in, 4), k, j;
+    uint32_t n = fz_pick(in, 4), k, j, np = 0;
+    float pxy[8], prgb[12], pt[4];
     for (k = 0; k < n; ++k) {
         float px = rf(in, -w, 2.0f * w, H), py = rf(in, -hgt, 2.0f * hgt, H), ro[3], rd[3], rgb[3], t = -1.0f;
         double l;
@@ -785,6 +787,20 @@ static void ray_checks(fz_in *in, const fovsdf_ctx *ctx, const scen *s, int H)
             if (!(known_tmax(ctx) && t > ctx->t_max))
                 FZ_CHECK(fz_finite(t) && t >= 0.0f && t <= ctx->t_max, "shade_point(%g, %g) t = %g outside [0, t_max %g]",
                      (double)px, (double)py, (double)t, (double)ctx->t_max);
+            pxy[2 * np] = px; pxy[2 * np + 1] = py; ++np;
+        }
+    }
+    /* the same points as one group with a shared cone head start: the same contract */
+    if (np > 0 && fovsdf_shade_points_grouped(ctx, np, pxy, 2, np, prgb, pt, NULL, NULL) == FOV_OK) {
+        for (k = 0; k < np; ++k) {
+            for (j = 0; j < 3; ++j)
+                FZ_CHECK(fz_finite(prgb[3 * k + j]) && prgb[3 * k + j] >= lo && prgb[3 * k + j] <= hi,
+                         "shade_points_grouped(%g, %g) rgb[%u] = %g outside [%g, %g]", (double)pxy[2 * k],
+                         (double)pxy[2 * k + 1], j, (double)prgb[3 * k + j], (double)lo, (double)hi);
+            if (!(known_tmax(ctx) && pt[k] > ctx->t_max))
+                FZ_CHECK(fz_finite(pt[k]) && pt[k] >= 0.0f && pt[k] <= ctx->t_max,
+                         "shade_points_grouped(%g, %g) t = %g outside [0, t_max %g]", (double)pxy[2 * k],
+                         (double)pxy[2 * k + 1], (double)pt[k], (double)ctx->t_max);
         }
     }
     /* fovsdf_trace and fovsdf_march on hostile rays */
