@@ -2996,7 +2996,10 @@ enum {
     FOVSDF__OP_UNARY,     /* ROUND / ONION, node type in sub */
     FOVSDF__OP_PUSHP,     /* point op, node type in sub */
     FOVSDF__OP_POPP,      /* restore point; multiply distance by f[0] */
-    FOVSDF__OP_BOUND      /* f[0..2] centre, f[3] radius, jump = index after the subtree */
+    FOVSDF__OP_BOUND,     /* f[0..2] centre, f[3] radius, jump = index after the subtree */
+    FOVSDF__OP_BDIST      /* pruned programs only (fovsdf__prune): a BOUND that every point
+                             of the region skips, its subtree dropped: pushes the bound's
+                             value and material -1 and counts i[0] skipped, unconditionally */
 };
 #define FOVSDF__FLAG_DEFLATE 1u
 
@@ -3770,6 +3773,17 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             vs[vsp - 1] *= in->f[0];
             ++pc;
             break;
+        case FOVSDF__OP_BDIST: { /* as BOUND's skip (the same operations) */
+            const float *f = in->f;
+            float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
+                d2 = dx * dx + dy * dy + dz * dz;
+            vs[vsp] = FOV__SQRT(d2) - f[3];
+            ms[vsp] = -1;
+            ++vsp;
+            skipped += (uint32_t)in->i[0];
+            ++pc;
+            break;
+        }
         default: { /* BOUND */
             const float *f = in->f;
             float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
@@ -4355,6 +4369,27 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             ++pc;
             break;
         }
+        case FOVSDF__OP_BDIST: { /* as BOUND when every lane skips (the same operations) */
+            const float *f = in->f;
+            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
+                        *FOVSDF__RESTRICT Z = s->pp[psp][2];
+            float *FOVSDF__RESTRICT T = s->w[0], *FOVSDF__RESTRICT V = s->vs[vsp];
+            float cx = f[0], cy = f[1], cz = f[2], r = f[3];
+            for (i = 0; i < n; ++i) {
+                float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz;
+                T[i] = dx * dx + dy * dy + dz * dz;
+            }
+            fovsdf__sqrt_lanes(T);
+            for (i = 0; i < n; ++i) V[i] = T[i] - r;
+            if (wm) {
+                int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
+                for (i = 0; i < n; ++i) M[i] = -1;
+            }
+            skipped += s->nact[lv] * (uint32_t)in->i[0];
+            ++vsp;
+            ++pc;
+            break;
+        }
         default: { /* BOUND */
             const float *f = in->f;
             const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
@@ -4473,6 +4508,305 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 #endif
 }
 
+/* ---- per-tile pruning of a built-in program (beyond the thesis; issue 12) -------------------
+   A region is a set of evaluation points in one frame of the program: a cone segment (points
+   apex + t u, u unit within atan(k) of the unit axis, t in [t0, t1]) or a box [lo, hi],
+   widened by pad (every point lies within pad of the set). fovsdf__prune walks the code with
+   the region of each frame (a point op maps the region into its child's frame: translate and
+   scale keep the cone, rotate, mirror and repeat go through its bounding box) and
+   (a) replaces a BOUND whose test skips at every point of the region (every eps in [e_lo,
+       e_hi], inflate 1) by BDIST, the bound's value, and drops its subtree;
+   (b) drops a BOUND whose test never skips there (its margin sphere contains the region).
+   Wherever the region holds, the pruned program then gives exactly the full program's
+   distance, material, prims and prims_skipped: the values are the same float operations,
+   BDIST counts what the skip counted, and a dropped test never skipped. The distances from a
+   bound's centre to the region are taken 1e-4 relative plus pad beyond the float noise of the
+   test (pad starts at 1e-5 of the region's extent and grows by 1e-6 of the magnitudes at each
+   point op), so a point that fovsdf__in_cone admits is decided the same way. With inflate != 1
+   the full program tests no bound: a pruned program must then not be used (fovsdf__in_cone's
+   callers check). */
+#ifndef FOVSDF_PRUNE_CODE /* pruned program instructions per tile on the stack (64 bytes each);
+                             0: no pruning; a longer program is not pruned */
+#define FOVSDF_PRUNE_CODE 128
+#endif
+typedef struct fovsdf__preg {
+    int kind;                      /* 0 unknown (nothing is pruned), 1 cone, 2 box */
+    float apex[3], axis[3], k, t0, t1;
+    float lo[3], hi[3];
+    float pad;
+} fovsdf__preg;
+
+typedef struct fovsdf__pruned {  /* a tile's cone and pruned program (fovsdf__marcher.pv) */
+    fovsdf_program prog;
+    fovsdf_scene sc;              /* the scene with user = &prog */
+    fovsdf_ray_cone cone;         /* the points that may use it (fovsdf__in_cone) */
+    float e_lo, e_hi;             /* and their thresholds */
+    uint32_t rule_a, rule_b;      /* bounds turned into BDIST, bound tests dropped */
+    int pruned;                   /* 0: the cone only (for a batch callback), sc unused */
+#if FOVSDF_PRUNE_CODE > 0
+    fovsdf__ins code[FOVSDF_PRUNE_CODE];
+#endif
+} fovsdf__pruned;
+
+FOVSDF__PRIV float fovsdf__preg_mag(const fovsdf__preg *g)
+{
+    if (g->kind == 1) return fov__len(g->apex) + g->t1;
+    return fovsdf__len3f(fov__maxf(fov__absf(g->lo[0]), fov__absf(g->hi[0])),
+                         fov__maxf(fov__absf(g->lo[1]), fov__absf(g->hi[1])),
+                         fov__maxf(fov__absf(g->lo[2]), fov__absf(g->hi[2])));
+}
+
+/* The cone segment's bounding box (the region becomes a box). */
+FOVSDF__PRIV void fovsdf__preg_box(fovsdf__preg *g)
+{
+    int j;
+    float ca, sa;
+    if (g->kind != 1) return;
+    ca = 1.0f / FOV__SQRT(1.0f + g->k * g->k);
+    sa = g->k * ca;
+    for (j = 0; j < 3; ++j) {
+        /* the largest and least u_j over the cap: cos of (angle to +-e_j minus alpha), or +-1
+           when the cap contains +-e_j */
+        float aj = g->axis[j], sj = FOV__SQRT(fov__maxf(1.0f - aj * aj, 0.0f));
+        float umax = aj >= ca ? 1.0f : aj * ca + sj * sa;
+        float umin = -aj >= ca ? -1.0f : aj * ca - sj * sa;
+        umax = fovsdf__clampf(umax * 1.0001f + 1e-6f, -1.0f, 1.0f);
+        umin = fovsdf__clampf(umin * 1.0001f - 1e-6f, -1.0f, 1.0f);
+        g->hi[j] = g->apex[j] + (umax >= 0.0f ? g->t1 : g->t0) * umax;
+        g->lo[j] = g->apex[j] + (umin >= 0.0f ? g->t0 : g->t1) * umin;
+    }
+    g->pad += 1e-6f * fovsdf__preg_mag(g);
+    g->kind = 2;
+}
+
+/* The region of a point op's child frame (the op's transform applied to g). */
+FOVSDF__PRIV void fovsdf__preg_map(const fovsdf__preg *g, const fovsdf__ins *in, fovsdf__preg *o)
+{
+    const float *f = in->f;
+    float mag = fovsdf__preg_mag(g);
+    int k;
+    *o = *g;
+    if (g->kind == 0) return;
+    switch (in->sub) {
+    case FOVSDF_NODE_TRANSLATE:
+        for (k = 0; k < 3; ++k) {
+            if (o->kind == 1) o->apex[k] -= f[k];
+            else { o->lo[k] -= f[k]; o->hi[k] -= f[k]; }
+        }
+        o->pad += 1e-6f * (mag + fovsdf__len3f(f[0], f[1], f[2]));
+        break;
+    case FOVSDF_NODE_SCALE:
+        for (k = 0; k < 3; ++k) {
+            if (o->kind == 1) o->apex[k] /= f[0];
+            else { o->lo[k] /= f[0]; o->hi[k] /= f[0]; }
+        }
+        o->t0 /= f[0]; o->t1 /= f[0];
+        o->pad = o->pad / f[0] + 1e-6f * (mag / f[0]);
+        break;
+    case FOVSDF_NODE_ROTATE: { /* p' = R^T p: the box's centre and |R^T| of its half sides */
+        float c[3], h[3];
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k) { c[k] = 0.5f * (o->lo[k] + o->hi[k]); h[k] = 0.5f * (o->hi[k] - o->lo[k]); }
+        for (k = 0; k < 3; ++k) {
+            float cc = f[k] * c[0] + f[3 + k] * c[1] + f[6 + k] * c[2];
+            float hh = fov__absf(f[k]) * h[0] + fov__absf(f[3 + k]) * h[1] +
+                fov__absf(f[6 + k]) * h[2];
+            o->lo[k] = cc - hh; o->hi[k] = cc + hh;
+        }
+        /* rows orthonormal within 1e-3: the pad grows with the matrix */
+        o->pad = o->pad * 1.01f + 1e-6f * mag;
+        break;
+    }
+    case FOVSDF_NODE_MIRROR:
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k)
+            if (in->i[0] & (1 << k)) {
+                float l = o->lo[k], hv = o->hi[k];
+                if (hv <= 0.0f) { o->lo[k] = -hv; o->hi[k] = -l; }
+                else if (l < 0.0f) { o->lo[k] = 0.0f; o->hi[k] = fov__maxf(-l, hv); }
+            }
+        o->pad += 1e-6f * mag;
+        break;
+    case FOVSDF_NODE_REPEAT:
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k) {
+            float per = f[k], cl, ch, lim = (float)in->i[k];
+            if (!(per > 0.0f)) continue;
+            cl = FOV__FLOOR((o->lo[k] - o->pad) / per + 0.5f);
+            ch = FOV__FLOOR((o->hi[k] + o->pad) / per + 0.5f);
+            if (!fov__finite(cl) || !fov__finite(ch) || fov__absf(cl) > 1e6f ||
+                fov__absf(ch) > 1e6f) { o->kind = 0; return; }
+            if (in->i[k] > 0) { cl = fovsdf__clampf(cl, -lim, lim); ch = fovsdf__clampf(ch, -lim, lim); }
+            if (fov__is0(cl - ch)) { /* one cell: a shift */
+                o->lo[k] -= per * cl; o->hi[k] -= per * cl;
+            } else { /* the hull of the folded pieces */
+                o->lo[k] = fov__minf(o->lo[k] - per * cl, -0.5f * per);
+                o->hi[k] = fov__maxf(o->hi[k] - per * ch, 0.5f * per);
+            }
+        }
+        o->pad += 1e-6f * (mag + fovsdf__len3f(f[0], f[1], f[2]));
+        break;
+    default: break;
+    }
+    if (o->kind == 2 && !(fov__finite3(o->lo) && fov__finite3(o->hi))) o->kind = 0;
+    if (o->kind == 1 && !(fov__finite3(o->apex) && fov__finite(o->t1))) o->kind = 0;
+    if (!fov__finite(o->pad)) o->kind = 0;
+}
+
+/* The least and largest distance from c to the region (pad and 1e-4 included). */
+FOVSDF__PRIV void fovsdf__preg_dist(const fovsdf__preg *g, const float c[3], float *dmin,
+                                    float *dmax)
+{
+    float lo, hi;
+    int k;
+    if (g->kind == 1) {
+        float v[3], w[3], al, pe, rho, ca, sa, s, x, y, x2, y2;
+        for (k = 0; k < 3; ++k) v[k] = c[k] - g->apex[k];
+        al = fov__dot(v, g->axis);
+        for (k = 0; k < 3; ++k) w[k] = v[k] - al * g->axis[k];
+        pe = fov__len(w);
+        rho = fov__len(v);
+        ca = 1.0f / FOV__SQRT(1.0f + g->k * g->k);
+        sa = g->k * ca;
+        if (pe <= g->k * al) { /* within the half-angle: radially */
+            lo = fov__maxf(fov__maxf(g->t0 - rho, rho - g->t1), 0.0f);
+        } else { /* to the boundary ray at alpha, s clamped to [t0, t1] */
+            s = fovsdf__clampf(al * ca + pe * sa, g->t0, g->t1);
+            x = al - s * ca; y = pe - s * sa;
+            lo = FOV__SQRT(x * x + y * y);
+        }
+        if (pe * ca + al * sa < 0.0f) { /* the far side passes the opposite direction */
+            hi = rho + g->t1;
+        } else {
+            x = al - g->t0 * ca; y = pe + g->t0 * sa;
+            x2 = al - g->t1 * ca; y2 = pe + g->t1 * sa;
+            hi = FOV__SQRT(fov__maxf(x * x + y * y, x2 * x2 + y2 * y2));
+        }
+    } else {
+        float a[3], b[3];
+        for (k = 0; k < 3; ++k) {
+            a[k] = fov__maxf(fov__maxf(g->lo[k] - c[k], c[k] - g->hi[k]), 0.0f);
+            b[k] = fov__maxf(fov__absf(c[k] - g->lo[k]), fov__absf(c[k] - g->hi[k]));
+        }
+        lo = fov__len(a);
+        hi = fov__len(b);
+    }
+    *dmin = lo * (1.0f - 1e-4f) - g->pad;
+    *dmax = hi * (1.0f + 1e-4f) + g->pad;
+}
+
+/* Prune prog for the points of g (region in the program's world frame) with thresholds in
+   [e_lo, e_hi] and inflate 1 into code[0 .. cap) (see above); 0 when it does not fit. */
+FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g, float e_lo,
+                               float e_hi, fovsdf__ins *code, uint32_t cap, fovsdf_program *out,
+                               uint32_t *rule_a, uint32_t *rule_b)
+{
+    const fovsdf__ins *src = (const fovsdf__ins *)prog->code;
+    fovsdf__preg reg[FOVSDF_MAX_STACK + 1];
+    uint32_t ob_out[FOVSDF__MAX_DEPTH], ob_end[FOVSDF__MAX_DEPTH];
+    uint32_t pc = 0, no = 0, nob = 0, n = prog->count, ra = 0, rb = 0, nbo = 0;
+    int32_t rsp = 0;
+    reg[0] = *g;
+    if (!(g->kind == 1 || g->kind == 2) || !(e_lo <= e_hi) || !fov__finite(e_hi)) return 0;
+    for (;;) {
+        const fovsdf__ins *in;
+        while (nob > 0 && ob_end[nob - 1] == pc) code[ob_out[--nob]].jump = no;
+        if (pc >= n) break;
+        in = &src[pc];
+        if (no >= cap) return 0;
+        if (in->op == FOVSDF__OP_BOUND && reg[rsp].kind != 0) {
+            const float *f = in->f;
+            /* the evaluator's margins at the extreme thresholds (the same operations: lim
+               grows with eps) */
+            float l_hi = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_hi, 0.0f);
+            float l_lo = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_lo, 0.0f);
+            float dmin, dmax;
+            fovsdf__preg_dist(&reg[rsp], f, &dmin, &dmax);
+            if (dmin > l_hi * (1.0f + 1e-4f)) { /* (a) every point skips */
+                code[no] = *in;
+                code[no].op = FOVSDF__OP_BDIST;
+                code[no].jump = 0;
+                ++no; ++ra;
+                pc = in->jump;
+                continue;
+            }
+            if (dmax * (1.0f + 1e-4f) < l_lo) { /* (b) no point skips */
+                ++pc; ++rb;
+                continue;
+            }
+        }
+        code[no] = *in;
+        if (in->op == FOVSDF__OP_BOUND) {
+            if (nob >= FOVSDF__MAX_DEPTH) return 0;
+            ob_out[nob] = no; ob_end[nob] = in->jump; ++nob; ++nbo;
+        } else if (in->op == FOVSDF__OP_PUSHP) {
+            if (rsp >= FOVSDF_MAX_STACK) return 0;
+            fovsdf__preg_map(&reg[rsp], in, &reg[rsp + 1]);
+            ++rsp;
+        } else if (in->op == FOVSDF__OP_POPP) {
+            if (rsp > 0) --rsp;
+        }
+        ++no; ++pc;
+    }
+    out->code = code;
+    out->count = no;
+    out->prims = prog->prims; /* what prims + prims_skipped still add up to */
+    out->bounds = nbo;
+    out->bound_center[0] = prog->bound_center[0]; out->bound_center[1] = prog->bound_center[1];
+    out->bound_center[2] = prog->bound_center[2]; out->bound_radius = prog->bound_radius;
+    if (rule_a) *rule_a = ra;
+    if (rule_b) *rule_b = rb;
+    return 1;
+}
+
+/* 1 when point p lies in cone q (fovsdf_ray_cone; t the distance from the apex), as computed
+   in float (fovsdf__prune's pad covers the rounding). */
+FOVSDF__INL int fovsdf__in_cone(const fovsdf_ray_cone *q, float x, float y, float z)
+{
+    float v0 = x - q->apex[0], v1 = y - q->apex[1], v2 = z - q->apex[2];
+    float t2 = v0 * v0 + v1 * v1 + v2 * v2, al = v0 * q->axis[0] + v1 * q->axis[1] + v2 * q->axis[2];
+    float w0 = v0 - al * q->axis[0], w1 = v1 - al * q->axis[1], w2 = v2 - al * q->axis[2];
+    float k = q->tan_half;
+    return al > 0.0f && t2 >= q->t0 * q->t0 && t2 <= q->t1 * q->t1 &&
+        w0 * w0 + w1 * w1 + w2 * w2 <= (k * al) * (k * al);
+}
+
+/* Prune sc's program (a built-in program scene only) for the cone q with thresholds in
+   [e_lo, e_hi] into pv. Returns 1 when pv holds a pruned program. */
+FOVSDF__PRIV int fovsdf__prune_cone(const fovsdf_scene *sc, const fovsdf_ray_cone *q, float e_lo,
+                                    float e_hi, fovsdf__pruned *pv)
+{
+#if FOVSDF_PRUNE_CODE > 0
+    const fovsdf_program *pg = (const fovsdf_program *)sc->user;
+    fovsdf__preg g;
+    int k;
+    if (sc->dist_ex != fovsdf_program_eval ||
+        (sc->dist_batch && sc->dist_batch != fovsdf_program_eval_batch) || !pg || !pg->code ||
+        pg->count == 0 || pg->count > FOVSDF_PRUNE_CODE)
+        return 0;
+    if (!(q->tan_half >= 0.0f) || !(q->t0 >= 0.0f) || !(q->t1 >= q->t0) || !fov__finite(q->t1) ||
+        !fov__finite(q->tan_half) || !fov__finite3(q->apex))
+        return 0;
+    g.kind = 1;
+    for (k = 0; k < 3; ++k) { g.apex[k] = q->apex[k]; g.axis[k] = q->axis[k]; }
+    g.k = q->tan_half; g.t0 = q->t0; g.t1 = q->t1;
+    g.pad = 1e-5f * (fov__len(q->apex) + q->t1) + 1e-30f;
+    for (k = 0; k < 3; ++k) g.lo[k] = g.hi[k] = 0.0f;
+    if (!fovsdf__prune(pg, &g, e_lo, e_hi, pv->code, FOVSDF_PRUNE_CODE, &pv->prog, &pv->rule_a,
+                       &pv->rule_b))
+        return 0;
+    pv->sc = *sc;
+    pv->sc.user = &pv->prog;
+    pv->cone = *q;
+    pv->e_lo = e_lo; pv->e_hi = e_hi;
+    pv->pruned = 1;
+    return 1;
+#else
+    (void)sc; (void)q; (void)e_lo; (void)e_hi; (void)pv;
+    return 0;
+#endif
+}
+
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
 typedef struct fovsdf__marcher {
     const fovsdf_scene *sc;
@@ -4485,6 +4819,8 @@ typedef struct fovsdf__marcher {
     int per_ray;       /* 1: eps_cone is the centre pixel's; each ray scales it by its own
                           footprint, cos^2 of its angle to fwd (camera rays, fovsdf_trace) */
     float fwd[3];      /* the camera's forward axis (per_ray) */
+    const struct fovsdf__pruned *pv; /* NULL, or the tile's cone and pruned program: the
+                                        wavefront's evaluations inside the cone use them */
 } fovsdf__marcher;
 
 /* One counted evaluation. A non-finite value from a user callback becomes FLT_MAX, which ends
@@ -5005,6 +5341,7 @@ FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher 
                                            const float ro[3])
 {
     m->sc = &c->scene;
+    m->pv = 0;
     m->inv_lip = 1.0f / c->scene.lipschitz;
     /* per-image methods (CONE) trace single rays with their finishing tracer */
     m->method =
@@ -5067,6 +5404,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     m.inflate = 1.0f;
     m.verify_start = 0;
     m.per_ray = 0; /* eps_cone is the caller's, per ray */
+    m.pv = 0;
     m.fwd[0] = 0.0f; m.fwd[1] = 0.0f; m.fwd[2] = 1.0f;
     fovsdf__march(&m, ro, rd, t_start, hit, 0, stats);
     return FOV_OK;
@@ -5828,14 +6166,15 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
 #ifndef FOVSDF_WAVE_MIN
 #define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 2) / 3)
 #endif
-FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
-                                    const float *x, const float *y, const float *z,
-                                    const float *eps, float inflate, float *d, int32_t *mat,
-                                    fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__wave_eval_c(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                      const float *x, const float *y, const float *z,
+                                      const float *eps, float inflate,
+                                      const fovsdf_ray_cone *cone, float *d, int32_t *mat,
+                                      fovsdf_stats *st)
 {
     uint32_t i;
     if (n >= (uint32_t)(FOVSDF_WAVE_MIN) || (!sc->dist_ex && !sc->dist)) {
-        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, cone, d, mat, st);
         return;
     }
     for (i = 0; i < n; ++i) {
@@ -5843,6 +6182,39 @@ FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint3
         p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
         d[i] = fovsdf__eval_in(sc, inv_lip, p, eps[i], inflate, mat ? &mat[i] : 0, st);
     }
+}
+
+FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                    const float *x, const float *y, const float *z,
+                                    const float *eps, float inflate, float *d, int32_t *mat,
+                                    fovsdf_stats *st)
+{
+    fovsdf__wave_eval_c(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+}
+
+/* The marcher's evaluations (fovsdf__wave_eval with m->sc): a batch whose points all lie in
+   the tile's cone m->pv->cone goes with that cone (fovsdf_batch.cone), and, when its
+   thresholds are in the range the program was pruned for and inflate is 1, through the
+   pruned program (the same values, materials and counts: fovsdf__prune). */
+FOVSDF__PRIV void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, const float *x,
+                                      const float *y, const float *z, const float *eps,
+                                      float inflate, float *d, int32_t *mat, fovsdf_stats *st)
+{
+    const fovsdf__pruned *pv = m->pv;
+    if (pv) {
+        uint32_t i;
+        int ok = !(inflate < 1.0f || inflate > 1.0f) && pv->pruned;
+        for (i = 0; i < n; ++i) {
+            if (!fovsdf__in_cone(&pv->cone, x[i], y[i], z[i])) break;
+            if (!(eps[i] >= pv->e_lo && eps[i] <= pv->e_hi)) ok = 0;
+        }
+        if (i == n) {
+            fovsdf__wave_eval_c(ok ? &pv->sc : m->sc, m->inv_lip, n, x, y, z, eps, inflate,
+                                &pv->cone, d, mat, st);
+            return;
+        }
+    }
+    fovsdf__wave_eval_c(m->sc, m->inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
@@ -5857,8 +6229,7 @@ FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, 
             w->bx[nb] = mc->q[0]; w->by[nb] = mc->q[1]; w->bz[nb] = mc->q[2];
             w->be[nb] = mc->qe;
         }
-        fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm,
-                          w->st);
+        fovsdf__wave_eval_m(m, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm, w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             fovsdf__mco *mc = &w->ray[k].mc;
@@ -6548,6 +6919,32 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
     return FOV__SQRT(fov__maxf(1.0f - cmin * cmin, 0.0f)) / cmin * 1.0001f + 1e-6f;
 }
 
+/* The cone of the pixel rectangle [x0, x1) x [y0, y1) from the camera out to t_max, for the
+   marchers mc (cones) and mp (sample rays) of a tile: pv gets it, with the scene's program
+   pruned for it when the scene is a built-in program (fovsdf__prune_cone; thresholds from mc's
+   eps to mp's at t_max), or the cone alone for a batch callback. Returns 0 when neither
+   applies (the tile marches with the marchers as they are). */
+FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *mc,
+                                   const fovsdf__marcher *mp, float x0, float y0, float x1,
+                                   float y1, fovsdf__pruned *pv)
+{
+    fovsdf_ray_cone q;
+    float e_lo, e_hi;
+    if (mc->sc != mp->sc || mc->inflate < 1.0f || mc->inflate > 1.0f) return 0;
+    q.tan_half = fovsdf__cell_cone(c, x0, y0, x1, y1, q.axis);
+    q.apex[0] = c->origin[0]; q.apex[1] = c->origin[1]; q.apex[2] = c->origin[2];
+    q.t0 = 0.0f;
+    q.t1 = fov__maxf(mc->t_max, mp->t_max) * 1.001f;
+    e_lo = fov__minf(mc->eps, mp->eps);
+    e_hi = fov__maxf(fovsdf__thr_ec(mp, mp->eps_cone, q.t1), fovsdf__thr_ec(mc, mc->eps_cone, q.t1));
+    if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv)) return 1;
+    if (!mc->sc->dist_batch) return 0;
+    pv->cone = q;
+    pv->pruned = 0;
+    pv->e_lo = e_lo; pv->e_hi = e_hi;
+    return 1;
+}
+
 /* A cell of the cone pyramid: its pixel rectangle relative to the tile's corner, its level and
    its parent's t. */
 typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
@@ -6581,6 +6978,12 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
     uint32_t sp[FOVSDF_CONE_SLOTS], s, i, nb, act[FOVSDF_CONE_SLOTS];
     int busy[FOVSDF_CONE_SLOTS];
     uint64_t e = 0;
+    fovsdf__pruned pv;
+    fovsdf__marcher mc2, mp2;
+    if (fovsdf__tile_cone(c, mc, mp, (float)x0, (float)y0, (float)x1, (float)y1, &pv)) {
+        mc2 = *mc; mc2.pv = &pv; mc = &mc2;
+        mp2 = *mp; mp2.pv = &pv; mp = &mp2;
+    }
     for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) { sp[s] = 0; busy[s] = 0; }
     stk[0][0].x0 = 0; stk[0][0].y0 = 0; stk[0][0].x1 = (uint16_t)(x1 - x0);
     stk[0][0].y1 = (uint16_t)(y1 - y0); stk[0][0].level = 1; stk[0][0].t = 0.0f;
@@ -6668,8 +7071,8 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
                 wv->by[i] = c->origin[1] + p->a[1] * p->t;
                 wv->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f,
-                              wv->bd, 0, wv->st);
+            fovsdf__wave_eval_m(mc, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f, wv->bd, 0,
+                                wv->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[s + i]];
@@ -6684,6 +7087,7 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
         }
     }
     wv->st->evals_lowres += e;
+    if (mp == &mp2 && wv->nj > 0) fovsdf__wave_flush(wv); /* pv ends with the tile */
 }
 
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
@@ -7494,8 +7898,7 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
                 w->bx[i] = c->origin[0] + p->a[0] * p->t; w->by[i] = c->origin[1] + p->a[1] * p->t;
                 w->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
-                              w->st);
+            fovsdf__wave_eval_m(mc, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[j + i]];
