@@ -2997,9 +2997,11 @@ enum {
     FOVSDF__OP_PUSHP,     /* point op, node type in sub */
     FOVSDF__OP_POPP,      /* restore point; multiply distance by f[0] */
     FOVSDF__OP_BOUND,     /* f[0..2] centre, f[3] radius, jump = index after the subtree */
-    FOVSDF__OP_BDIST      /* pruned programs only (fovsdf__prune): a BOUND that every point
+    FOVSDF__OP_BDIST,     /* pruned programs only (fovsdf__prune): a BOUND that every point
                              of the region skips, its subtree dropped: pushes the bound's
                              value and material -1 and counts i[0] skipped, unconditionally */
+    FOVSDF__OP_CNT        /* pruned programs only: counts i[0] skipped (a BDIST that can never
+                             be its union's minimum, dropped with the union) */
 };
 #define FOVSDF__FLAG_DEFLATE 1u
 
@@ -3773,6 +3775,10 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             vs[vsp - 1] *= in->f[0];
             ++pc;
             break;
+        case FOVSDF__OP_CNT:
+            skipped += (uint32_t)in->i[0];
+            ++pc;
+            break;
         case FOVSDF__OP_BDIST: { /* as BOUND's skip (the same operations) */
             const float *f = in->f;
             float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
@@ -4369,6 +4375,10 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             ++pc;
             break;
         }
+        case FOVSDF__OP_CNT:
+            skipped += s->nact[lv] * (uint32_t)in->i[0];
+            ++pc;
+            break;
         case FOVSDF__OP_BDIST: { /* as BOUND when every lane skips (the same operations) */
             const float *f = in->f;
             const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
@@ -4529,6 +4539,10 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
                              0: no pruning; a longer program is not pruned */
 #define FOVSDF_PRUNE_CODE 128
 #endif
+#ifndef FOVSDF_PRUNE_MIN /* rules (b) and (c) applications that make a tile use its pruned
+                            program (0: every tile that could be pruned) */
+#define FOVSDF_PRUNE_MIN 1
+#endif
 typedef struct fovsdf__preg {
     int kind;                      /* 0 unknown (nothing is pruned), 1 cone, 2 box */
     float apex[3], axis[3], k, t0, t1;
@@ -4541,7 +4555,7 @@ typedef struct fovsdf__pruned {  /* a tile's cone and pruned program (fovsdf__ma
     fovsdf_scene sc;              /* the scene with user = &prog */
     fovsdf_ray_cone cone;         /* the points that may use it (fovsdf__in_cone) */
     float e_lo, e_hi;             /* and their thresholds */
-    uint32_t rule_a, rule_b;      /* bounds turned into BDIST, bound tests dropped */
+    uint32_t rules[3];            /* bounds turned into BDIST, tests dropped, unions dropped */
     int pruned;                   /* 0: the cone only (for a batch callback), sc unused */
 #if FOVSDF_PRUNE_CODE > 0
     fovsdf__ins code[FOVSDF_PRUNE_CODE];
@@ -4695,56 +4709,207 @@ FOVSDF__PRIV void fovsdf__preg_dist(const fovsdf__preg *g, const float c[3], flo
     *dmax = hi * (1.0f + 1e-4f) + g->pad;
 }
 
+/* Bounds [lo, hi] of a primitive's value over the region g of its frame (an exact distance of a
+   solid inside the ball (c, R) lies in [|p - c| - R, |p - q|] for any point q inside the solid,
+   Lipschitz 1; a plane's from its support; the fractals and the terrain are not bounded). */
+FOVSDF__PRIV void fovsdf__prim_range(const fovsdf__ins *in, const fovsdf__preg *g, float *lo,
+                                     float *hi)
+{
+    const float *f = in->f;
+    float c[3] = { 0.0f, 0.0f, 0.0f }, q[3] = { 0.0f, 0.0f, 0.0f }, R, qoff = 0.0f, a, b, d0, d1;
+    *lo = -FLT_MAX; *hi = FLT_MAX;
+    switch (in->sub) {
+    case FOVSDF_NODE_SPHERE: R = f[0]; qoff = -f[0]; break;
+    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: R = fovsdf__len3f(f[0], f[1], f[2]); break;
+    case FOVSDF_NODE_BOX_FRAME:
+        R = fovsdf__len3f(f[0], f[1], f[2]); q[0] = f[0]; q[1] = f[1]; q[2] = f[2];
+        break;
+    case FOVSDF_NODE_TORUS: R = f[0] + f[1]; qoff = f[0] - f[1]; break;
+    case FOVSDF_NODE_CAPSULE:
+        c[0] = 0.5f * (f[0] + f[3]); c[1] = 0.5f * (f[1] + f[4]); c[2] = 0.5f * (f[2] + f[5]);
+        R = 0.5f * fovsdf__len3f(f[3] - f[0], f[4] - f[1], f[5] - f[2]) + f[6];
+        q[0] = f[0]; q[1] = f[1]; q[2] = f[2]; qoff = -f[6];
+        break;
+    case FOVSDF_NODE_CYLINDER: R = fovsdf__len2f(f[0], f[1]); break;
+    case FOVSDF_NODE_CONE: R = fovsdf__len2f(f[0], fov__maxf(f[1], f[2])); break;
+    case FOVSDF_NODE_PLANE: {
+        fovsdf__preg b2 = *g;
+        int k;
+        fovsdf__preg_box(&b2);
+        if (b2.kind != 2) return;
+        a = f[3]; b = f[3];
+        for (k = 0; k < 3; ++k) {
+            a += fov__minf(f[k] * b2.lo[k], f[k] * b2.hi[k]);
+            b += fov__maxf(f[k] * b2.lo[k], f[k] * b2.hi[k]);
+        }
+        d0 = b2.pad * 1.001f + 1e-5f * (fovsdf__preg_mag(&b2) + fov__absf(f[3]));
+        *lo = a - d0; *hi = b + d0;
+        return;
+    }
+    default: return; /* fractals, terrain */
+    }
+    fovsdf__preg_dist(g, c, &d0, &a);
+    fovsdf__preg_dist(g, q, &b, &d1);
+    a = 1e-5f * (fovsdf__preg_mag(g) + R); /* the float noise of the value */
+    *lo = d0 - R * 1.0001f - a;
+    *hi = d1 + qoff + a;
+}
+
 /* Prune prog for the points of g (region in the program's world frame) with thresholds in
-   [e_lo, e_hi] and inflate 1 into code[0 .. cap) (see above); 0 when it does not fit. */
+   [e_lo, e_hi] and inflate 1 into code[0 .. cap) (see above); 0 when it does not fit. Rule
+   (c): each value on the stack carries bounds over the region; a plain union whose operand is
+   a bare BDIST that stays above the other operand's upper bound (strictly: the evaluator
+   keeps a on a < b) can never be the minimum: the BDIST becomes CNT (its count) and the union
+   goes. */
+typedef struct fovsdf__pval { float lo, hi; uint32_t at, np; int bare; } fovsdf__pval;
 FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g, float e_lo,
-                               float e_hi, fovsdf__ins *code, uint32_t cap, fovsdf_program *out,
-                               uint32_t *rule_a, uint32_t *rule_b)
+                               float e_hi, int rule_c, fovsdf__ins *code, uint32_t cap,
+                               fovsdf_program *out, uint32_t *rules)
 {
     const fovsdf__ins *src = (const fovsdf__ins *)prog->code;
     fovsdf__preg reg[FOVSDF_MAX_STACK + 1];
+    fovsdf__pval vs[FOVSDF_MAX_STACK];
     uint32_t ob_out[FOVSDF__MAX_DEPTH], ob_end[FOVSDF__MAX_DEPTH];
-    uint32_t pc = 0, no = 0, nob = 0, n = prog->count, ra = 0, rb = 0, nbo = 0;
-    int32_t rsp = 0;
+    float ob_lo[FOVSDF__MAX_DEPTH], ob_hi[FOVSDF__MAX_DEPTH];
+    uint32_t pc = 0, no = 0, nob = 0, n = prog->count, ra = 0, rb = 0, rc = 0, nbo = 0;
+    int32_t rsp = 0, vsp = 0;
     reg[0] = *g;
     if (!(g->kind == 1 || g->kind == 2) || !(e_lo <= e_hi) || !fov__finite(e_hi)) return 0;
     for (;;) {
         const fovsdf__ins *in;
-        while (nob > 0 && ob_end[nob - 1] == pc) code[ob_out[--nob]].jump = no;
+        while (nob > 0 && ob_end[nob - 1] == pc) { /* a kept bound's end: either value */
+            --nob;
+            code[ob_out[nob]].jump = no;
+            if (vsp > 0) {
+                vs[vsp - 1].lo = fov__minf(vs[vsp - 1].lo, ob_lo[nob]);
+                vs[vsp - 1].hi = fov__maxf(vs[vsp - 1].hi, ob_hi[nob]);
+                vs[vsp - 1].bare = 0;
+            }
+        }
         if (pc >= n) break;
         in = &src[pc];
         if (no >= cap) return 0;
-        if (in->op == FOVSDF__OP_BOUND && reg[rsp].kind != 0) {
+        if (in->op == FOVSDF__OP_BOUND) {
             const float *f = in->f;
             /* the evaluator's margins at the extreme thresholds (the same operations: lim
                grows with eps) */
             float l_hi = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_hi, 0.0f);
             float l_lo = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_lo, 0.0f);
-            float dmin, dmax;
-            fovsdf__preg_dist(&reg[rsp], f, &dmin, &dmax);
-            if (dmin > l_hi * (1.0f + 1e-4f)) { /* (a) every point skips */
+            float dmin = 0.0f, dmax = FLT_MAX;
+            if (reg[rsp].kind != 0) fovsdf__preg_dist(&reg[rsp], f, &dmin, &dmax);
+            if (reg[rsp].kind != 0 && dmin > l_hi * (1.0f + 1e-4f)) { /* (a) every point skips */
+                if (vsp >= FOVSDF_MAX_STACK) return 0;
                 code[no] = *in;
                 code[no].op = FOVSDF__OP_BDIST;
                 code[no].jump = 0;
+                vs[vsp].lo = dmin - f[3] * 1.0001f; vs[vsp].hi = dmax - f[3] * 0.9999f;
+                vs[vsp].at = no; vs[vsp].bare = 1; vs[vsp].np = (uint32_t)in->i[0]; ++vsp;
                 ++no; ++ra;
                 pc = in->jump;
                 continue;
             }
-            if (dmax * (1.0f + 1e-4f) < l_lo) { /* (b) no point skips */
+            if (reg[rsp].kind != 0 && dmax * (1.0f + 1e-4f) < l_lo) { /* (b) no point skips */
                 ++pc; ++rb;
                 continue;
             }
+            if (nob >= FOVSDF__MAX_DEPTH) return 0;
+            code[no] = *in;
+            ob_out[nob] = no; ob_end[nob] = in->jump;
+            ob_lo[nob] = reg[rsp].kind != 0 ? dmin - f[3] * 1.0001f : -FLT_MAX;
+            ob_hi[nob] = reg[rsp].kind != 0 ? dmax - f[3] * 0.9999f : FLT_MAX;
+            ++nob; ++nbo; ++no; ++pc;
+            continue;
         }
         code[no] = *in;
-        if (in->op == FOVSDF__OP_BOUND) {
-            if (nob >= FOVSDF__MAX_DEPTH) return 0;
-            ob_out[nob] = no; ob_end[nob] = in->jump; ++nob; ++nbo;
-        } else if (in->op == FOVSDF__OP_PUSHP) {
+        switch (in->op) {
+        case FOVSDF__OP_PRIM:
+            if (vsp >= FOVSDF_MAX_STACK) return 0;
+            if (reg[rsp].kind != 0) fovsdf__prim_range(in, &reg[rsp], &vs[vsp].lo, &vs[vsp].hi);
+            else { vs[vsp].lo = -FLT_MAX; vs[vsp].hi = FLT_MAX; }
+            vs[vsp].at = no; vs[vsp].bare = 0; vs[vsp].np = 1; ++vsp;
+            break;
+        case FOVSDF__OP_BIN: {
+            fovsdf__pval a, b;
+            float k = in->f[0] * 0.2501f, sl;
+            if (vsp < 2) return 0;
+            b = vs[--vsp]; a = vs[vsp - 1];
+            sl = 1e-4f * (fov__absf(a.hi) + fov__absf(b.lo) + fov__absf(a.lo) + fov__absf(b.hi)) +
+                1e-30f;
+            if (rule_c && in->sub == FOVSDF_NODE_UNION && b.bare && a.hi + sl < b.lo &&
+                a.hi < FLT_MAX) { /* b is never the minimum */
+                /* b's code (a BDIST and CNTs) goes, one CNT of what it counted in its place */
+                code[b.at] = src[pc];
+                code[b.at].op = FOVSDF__OP_CNT;
+                code[b.at].i[0] = (int32_t)b.np;
+                no = b.at + 1u;
+                vs[vsp - 1].np = a.np + b.np;
+                ++rc; ++pc;
+                continue; /* a stays, as it was */
+            }
+            if (rule_c && in->sub == FOVSDF_NODE_UNION && a.bare && b.hi + sl < a.lo &&
+                b.hi < FLT_MAX) { /* a is never the minimum (a tie takes b) */
+                uint32_t sh = b.at - a.at - 1u, j;
+                code[a.at] = src[pc];
+                code[a.at].op = FOVSDF__OP_CNT;
+                code[a.at].i[0] = (int32_t)a.np;
+                for (j = b.at; j < no; ++j) { /* b's code moves down over a's */
+                    code[j - sh] = code[j];
+                    if (code[j - sh].op == FOVSDF__OP_BOUND) code[j - sh].jump -= sh;
+                }
+                no -= sh;
+                b.at = a.at; b.bare = 0; b.np += a.np;
+                vs[vsp - 1] = b;
+                ++rc; ++pc;
+                continue;
+            }
+            switch (in->sub) {
+            case FOVSDF_NODE_UNION:
+                a.lo = fov__minf(a.lo, b.lo); a.hi = fov__minf(a.hi, b.hi); break;
+            case FOVSDF_NODE_SMOOTH_UNION:
+                a.lo = fov__minf(a.lo, b.lo) - k; a.hi = fov__minf(a.hi, b.hi); break;
+            case FOVSDF_NODE_SUBTRACT: case FOVSDF_NODE_SMOOTH_SUBTRACT:
+                a.lo = fov__maxf(a.lo, -b.hi); a.hi = fov__maxf(a.hi, -b.lo);
+                if (in->sub == FOVSDF_NODE_SMOOTH_SUBTRACT) a.hi += k;
+                break;
+            default: /* intersections */
+                a.lo = fov__maxf(a.lo, b.lo); a.hi = fov__maxf(a.hi, b.hi);
+                if (in->sub == FOVSDF_NODE_SMOOTH_INTERSECT) a.hi += k;
+                break;
+            }
+            a.lo -= sl; a.hi += sl; a.bare = 0; a.np += b.np;
+            vs[vsp - 1] = a;
+            break;
+        }
+        case FOVSDF__OP_UNARY: {
+            fovsdf__pval *v = &vs[vsp - 1];
+            if (vsp < 1) return 0;
+            if (in->sub == FOVSDF_NODE_ROUND) { v->lo -= in->f[0]; v->hi -= in->f[0]; }
+            else {
+                float l = v->lo, h = v->hi;
+                v->lo = (l <= 0.0f && h >= 0.0f ? 0.0f : fov__minf(fov__absf(l), fov__absf(h))) -
+                    in->f[0];
+                v->hi = fov__maxf(fov__absf(l), fov__absf(h)) - in->f[0];
+            }
+            v->bare = 0;
+            break;
+        }
+        case FOVSDF__OP_PUSHP:
             if (rsp >= FOVSDF_MAX_STACK) return 0;
             fovsdf__preg_map(&reg[rsp], in, &reg[rsp + 1]);
             ++rsp;
-        } else if (in->op == FOVSDF__OP_POPP) {
+            break;
+        case FOVSDF__OP_POPP:
             if (rsp > 0) --rsp;
+            if (vsp < 1) return 0;
+            vs[vsp - 1].lo *= in->f[0]; vs[vsp - 1].hi *= in->f[0]; vs[vsp - 1].bare = 0;
+            break;
+        default: return 0; /* a program pruned already */
+        }
+        /* unbounded values stay unbounded (no inf - inf later) */
+        if (vsp > 0) {
+            fovsdf__pval *v = &vs[vsp - 1];
+            if (!(v->lo > -FLT_MAX)) v->lo = -FLT_MAX;
+            if (!(v->hi < FLT_MAX)) v->hi = FLT_MAX;
         }
         ++no; ++pc;
     }
@@ -4754,8 +4919,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
     out->bounds = nbo;
     out->bound_center[0] = prog->bound_center[0]; out->bound_center[1] = prog->bound_center[1];
     out->bound_center[2] = prog->bound_center[2]; out->bound_radius = prog->bound_radius;
-    if (rule_a) *rule_a = ra;
-    if (rule_b) *rule_b = rb;
+    if (rules) { rules[0] = ra; rules[1] = rb; rules[2] = rc; }
     return 1;
 }
 
@@ -4792,8 +4956,7 @@ FOVSDF__PRIV int fovsdf__prune_cone(const fovsdf_scene *sc, const fovsdf_ray_con
     g.k = q->tan_half; g.t0 = q->t0; g.t1 = q->t1;
     g.pad = 1e-5f * (fov__len(q->apex) + q->t1) + 1e-30f;
     for (k = 0; k < 3; ++k) g.lo[k] = g.hi[k] = 0.0f;
-    if (!fovsdf__prune(pg, &g, e_lo, e_hi, pv->code, FOVSDF_PRUNE_CODE, &pv->prog, &pv->rule_a,
-                       &pv->rule_b))
+    if (!fovsdf__prune(pg, &g, e_lo, e_hi, 1, pv->code, FOVSDF_PRUNE_CODE, &pv->prog, pv->rules))
         return 0;
     pv->sc = *sc;
     pv->sc.user = &pv->prog;
@@ -6883,8 +7046,7 @@ FOVSDF__PRIV void fovsdf__wave_cones(fovsdf__wave *w, const fovsdf__marcher *m, 
                 w->bx[i] = c->origin[0] + q->a[0] * q->t; w->by[i] = c->origin[1] + q->a[1] * q->t;
                 w->bz[i] = c->origin[2] + q->a[2] * q->t;
             }
-            fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
-                              w->st);
+            fovsdf__wave_eval_m(m, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 uint32_t id = act[j + i];
@@ -6937,8 +7099,11 @@ FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *m
     q.t1 = fov__maxf(mc->t_max, mp->t_max) * 1.001f;
     e_lo = fov__minf(mc->eps, mp->eps);
     e_hi = fov__maxf(fovsdf__thr_ec(mp, mp->eps_cone, q.t1), fovsdf__thr_ec(mc, mc->eps_cone, q.t1));
-    if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv)) return 1;
-    if (!mc->sc->dist_batch) return 0;
+    /* rule (a) alone saves nothing per evaluation (BDIST costs what the skip costs): the
+       pruned program is used when at least FOVSDF_PRUNE_MIN tests or unions went */
+    if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv))
+        return pv->rules[1] + pv->rules[2] >= (uint32_t)(FOVSDF_PRUNE_MIN) ? 1 : 0;
+    if (!mc->sc->dist_batch || mc->sc->dist_batch == fovsdf_program_eval_batch) return 0;
     pv->cone = q;
     pv->pruned = 0;
     pv->e_lo = e_lo; pv->e_hi = e_hi;
@@ -8036,6 +8201,8 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
     uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh, left;
     int32_t am;
     int due;
+    fovsdf__pruned pv;
+    fovsdf__marcher mc2, mp2;
     f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
     f.wv = wv; f.rqm = rqm; f.rql = rql; f.rqs = rqs; f.nrm = 0; f.nrl = 0; f.nrs = 0;
     f.miss = 0;
@@ -8070,6 +8237,12 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         FOV_ASSERT(T % 4u == 0 && (size_t)f.qs * f.qs <= FOVSDF__FOV_QCELLS);
         for (i = 0; i < f.qs * f.qs; ++i) { qc[i].state = 0; qc[i].req = 0; }
     }
+    /* the cone of the tile and its apron's 2x2 cells (as the apron's cone in fovsdf__fov_cones) */
+    if (f.cone && fovsdf__tile_cone(c, mc, mp, (float)tx - 2.0f, (float)ty - 2.0f,
+                                    (float)(tx + T) + 2.0f, (float)(ty + T) + 2.0f, &pv)) {
+        mc2 = *mc; mc2.pv = &pv; mc = &mc2;
+        mp2 = *mp; mp2.pv = &pv; f.mp = &mp2;
+    }
     if (f.cone) fovsdf__fov_cones(&f, mc, tx, ty, T);
     /* rounds: each pixel goes as far as the cells it needs allow; the cells it misses are
        requested and marched (or shaded) as one wavefront (fovsdf__fov_run) before the next
@@ -8089,6 +8262,7 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         FOV_ASSERT(f.nrm > 0 || f.nrl > 0 || f.nrs > 0 || f.nrq > 0);
         fovsdf__fov_run(&f);
     }
+    if (f.mp == &mp2 && wv->nj > 0) fovsdf__wave_flush(wv); /* pv ends with the tile */
 }
 
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1,
