@@ -4772,6 +4772,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
     uint32_t ob_out[FOVSDF__MAX_DEPTH], ob_end[FOVSDF__MAX_DEPTH];
     float ob_lo[FOVSDF__MAX_DEPTH], ob_hi[FOVSDF__MAX_DEPTH];
     uint32_t pc = 0, no = 0, nob = 0, n = prog->count, ra = 0, rb = 0, rc = 0, nbo = 0;
+    uint32_t lead = 0xffffffffu; /* the first BOUND or PUSHP of the value being started */
     int32_t rsp = 0, vsp = 0;
     reg[0] = *g;
     if (!(g->kind == 1 || g->kind == 2) || !(e_lo <= e_hi) || !fov__finite(e_hi)) return 0;
@@ -4803,7 +4804,10 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
                 code[no].op = FOVSDF__OP_BDIST;
                 code[no].jump = 0;
                 vs[vsp].lo = dmin - f[3] * 1.0001f; vs[vsp].hi = dmax - f[3] * 0.9999f;
-                vs[vsp].at = no; vs[vsp].bare = 1; vs[vsp].np = (uint32_t)in->i[0]; ++vsp;
+                vs[vsp].at = lead != 0xffffffffu ? lead : no;
+                vs[vsp].bare = vs[vsp].at == no; /* nothing before it */
+                vs[vsp].np = (uint32_t)in->i[0]; ++vsp;
+                lead = 0xffffffffu;
                 ++no; ++ra;
                 pc = in->jump;
                 continue;
@@ -4817,6 +4821,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             ob_out[nob] = no; ob_end[nob] = in->jump;
             ob_lo[nob] = reg[rsp].kind != 0 ? dmin - f[3] * 1.0001f : -FLT_MAX;
             ob_hi[nob] = reg[rsp].kind != 0 ? dmax - f[3] * 0.9999f : FLT_MAX;
+            if (lead == 0xffffffffu) lead = no;
             ++nob; ++nbo; ++no; ++pc;
             continue;
         }
@@ -4826,7 +4831,9 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             if (vsp >= FOVSDF_MAX_STACK) return 0;
             if (reg[rsp].kind != 0) fovsdf__prim_range(in, &reg[rsp], &vs[vsp].lo, &vs[vsp].hi);
             else { vs[vsp].lo = -FLT_MAX; vs[vsp].hi = FLT_MAX; }
-            vs[vsp].at = no; vs[vsp].bare = 0; vs[vsp].np = 1; ++vsp;
+            vs[vsp].at = lead != 0xffffffffu ? lead : no;
+            vs[vsp].bare = 0; vs[vsp].np = 1; ++vsp;
+            lead = 0xffffffffu;
             break;
         case FOVSDF__OP_BIN: {
             fovsdf__pval a, b;
@@ -4895,6 +4902,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
         }
         case FOVSDF__OP_PUSHP:
             if (rsp >= FOVSDF_MAX_STACK) return 0;
+            if (lead == 0xffffffffu) lead = no;
             fovsdf__preg_map(&reg[rsp], in, &reg[rsp + 1]);
             ++rsp;
             break;
@@ -7102,7 +7110,7 @@ FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *m
     /* rule (a) alone saves nothing per evaluation (BDIST costs what the skip costs): the
        pruned program is used when at least FOVSDF_PRUNE_MIN tests or unions went */
     if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv))
-        return pv->rules[1] + pv->rules[2] >= (uint32_t)(FOVSDF_PRUNE_MIN) ? 1 : 0;
+        return pv->rules[1] + pv->rules[2] + 1u > (uint32_t)(FOVSDF_PRUNE_MIN) ? 1 : 0;
     if (!mc->sc->dist_batch || mc->sc->dist_batch == fovsdf_program_eval_batch) return 0;
     pv->cone = q;
     pv->pruned = 0;
