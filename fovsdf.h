@@ -260,6 +260,18 @@ CONFIGURATION (define before including the implementation)
                         it references software-double routines on a single-precision FPU)
    FOVSDF_QUARTER_BAND  pixels over which FIPR's and CONE_FOV's quarter level blends in past
                         config.quarter_deg (default 8; 0: a hard switch)
+   FOVSDF_PRUNE_CODE    instructions of the per-tile pruned program of a built-in program
+                        scene that CONE and CONE_FOV keep on their stack (64 bytes each;
+                        default 0: no pruning). Each tile prunes the program for its cone
+                        (bounds its rays never enter become their bound's value, bound tests
+                        they always pass go, unions such a value can never win go) and marches
+                        every batch inside the cone with it: the same images, depths,
+                        materials and counts (tests/test_fovsdf_prune.c). On the built-in
+                        scenes it saves nothing: the cone reaches t_max, so almost only the
+                        first kind applies, which costs what the bound's skip costs; shadow
+                        rays, most of the evaluations, lie outside the cone (issue 12)
+   FOVSDF_PRUNE_MIN     bound tests and unions a tile's pruning must remove before the tile
+                        uses its pruned program (default 1; 0: always)
    Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
@@ -958,9 +970,15 @@ typedef float (*fovsdf_dist_ex_fn)(const float p[3], fovsdf_query *q, void *user
 
 /* A cone that contains a set of points: every point p of the set has p = apex + t u with u a
    unit vector within the half-angle atan(tan_half) of axis and t in [t0, t1] (the distance
-   from the apex along the ray). CONE and CONE_FOV hand one to batch callbacks (the top-level
-   tile's cone, or a smaller one as the pyramid splits), so a callback can prune its scene:
-   whatever it drops must not change the distance at any point of the cone. */
+   from the apex along the ray). CONE and CONE_FOV hand one to batch callbacks (fovsdf_batch.
+   cone): the cone of the top-level tile (CONE_FOV: with its apron of 2 pixels) from the
+   pinhole out to t_max (t0 0, t1 1.001 t_max), with every batch of the tile's cone pyramid and
+   sample rays whose points all lie in it (as computed in float; normals, shadow rays and
+   everything else: NULL). A callback may prune its scene for it (the cone changes once per
+   tile: compare its fields, not its address, to reuse a pruning), but whatever it drops must
+   not change the value, material or counts at any point of the cone: the images must not
+   depend on whether a point came with a cone. The built-in program can prune itself the same
+   way (FOVSDF_PRUNE_CODE, off by default: on the built-in scenes it saves nothing). */
 typedef struct fovsdf_ray_cone {
     float apex[3];
     float axis[3];          /* unit */
@@ -983,7 +1001,8 @@ typedef struct fovsdf_batch {
     int32_t *material;       /* NULL (not wanted) or out: n material ids (fovsdf_query) */
     uint32_t prims;          /* out, accumulated: primitive evaluations */
     uint32_t prims_skipped;  /* out, accumulated: primitive evaluations skipped by bounds */
-    const fovsdf_ray_cone *cone; /* NULL or a cone that contains every point of the batch */
+    const fovsdf_ray_cone *cone; /* NULL or a cone that contains every point of the batch
+                                    (fovsdf_ray_cone: CONE and CONE_FOV tiles set it) */
 } fovsdf_batch;
 typedef void (*fovsdf_dist_batch_fn)(fovsdf_batch *b, void *user);
 typedef void (*fovsdf_albedo_fn)(const float p[3], int32_t material, float rgb[3], void *user);
@@ -2996,14 +3015,17 @@ enum {
     FOVSDF__OP_UNARY,     /* ROUND / ONION, node type in sub */
     FOVSDF__OP_PUSHP,     /* point op, node type in sub */
     FOVSDF__OP_POPP,      /* restore point; multiply distance by f[0] */
-    FOVSDF__OP_BOUND,     /* f[0..2] centre, f[3] radius, jump = index after the subtree */
-    FOVSDF__OP_BDIST,     /* pruned programs only (fovsdf__prune): a BOUND that every point
-                             of the region skips, its subtree dropped: pushes the bound's
-                             value and material -1 and counts i[0] skipped, unconditionally */
-    FOVSDF__OP_CNT        /* pruned programs only: counts i[0] skipped (a BDIST that can never
-                             be its union's minimum, dropped with the union) */
+    FOVSDF__OP_BOUND      /* f[0..2] centre, f[3] radius, jump = index after the subtree */
 };
 #define FOVSDF__FLAG_DEFLATE 1u
+/* Pruned programs only (fovsdf__prune), in the existing instructions (the evaluators'
+   dispatch stays as it is): BDIST, a BOUND that every point of the region skips with its
+   subtree dropped: flags BDIST, jump the next index and band -FLT_MAX (margin 0: it skips at
+   every point off its centre, which the region never contains), so it pushes the bound's
+   value and material -1 and counts i[0] skipped; CNT, a UNARY of sub FOVSDF__SUB_CNT: counts
+   i[0] skipped (a BDIST that can never be its union's minimum, dropped with the union). */
+#define FOVSDF__FLAG_BDIST 2u
+#define FOVSDF__SUB_CNT 0xffffu
 
 typedef struct fovsdf__ins {
     uint16_t op, sub;
@@ -3733,7 +3755,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         }
         case FOVSDF__OP_UNARY:
             if (in->sub == FOVSDF_NODE_ROUND) vs[vsp - 1] -= in->f[0];
-            else vs[vsp - 1] = fov__absf(vs[vsp - 1]) - in->f[0];
+            else if (in->sub == FOVSDF_NODE_ONION) vs[vsp - 1] = fov__absf(vs[vsp - 1]) - in->f[0];
+            else skipped += (uint32_t)in->i[0]; /* CNT (pruned programs) */
             ++pc;
             break;
         case FOVSDF__OP_PUSHP: {
@@ -3775,21 +3798,6 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
             vs[vsp - 1] *= in->f[0];
             ++pc;
             break;
-        case FOVSDF__OP_CNT:
-            skipped += (uint32_t)in->i[0];
-            ++pc;
-            break;
-        case FOVSDF__OP_BDIST: { /* as BOUND's skip (the same operations) */
-            const float *f = in->f;
-            float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
-                d2 = dx * dx + dy * dy + dz * dz;
-            vs[vsp] = FOV__SQRT(d2) - f[3];
-            ms[vsp] = -1;
-            ++vsp;
-            skipped += (uint32_t)in->i[0];
-            ++pc;
-            break;
-        }
         default: { /* BOUND */
             const float *f = in->f;
             float dx = p[0] - f[0], dy = p[1] - f[1], dz = p[2] - f[2],
@@ -4292,7 +4300,9 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
         case FOVSDF__OP_UNARY: {
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
             if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
-            else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
+            else if (in->sub == FOVSDF_NODE_ONION)
+                for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
+            else skipped += s->nact[lv] * (uint32_t)in->i[0]; /* CNT (pruned programs) */
             ++pc;
             break;
         }
@@ -4372,31 +4382,6 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             float *FOVSDF__RESTRICT V = s->vs[vsp - 1], sc = in->f[0];
             --psp; /* the parent's point is still there */
             if (sc < 1.0f || sc > 1.0f) for (i = 0; i < n; ++i) V[i] *= sc;
-            ++pc;
-            break;
-        }
-        case FOVSDF__OP_CNT:
-            skipped += s->nact[lv] * (uint32_t)in->i[0];
-            ++pc;
-            break;
-        case FOVSDF__OP_BDIST: { /* as BOUND when every lane skips (the same operations) */
-            const float *f = in->f;
-            const float *FOVSDF__RESTRICT X = s->pp[psp][0], *FOVSDF__RESTRICT Y = s->pp[psp][1],
-                        *FOVSDF__RESTRICT Z = s->pp[psp][2];
-            float *FOVSDF__RESTRICT T = s->w[0], *FOVSDF__RESTRICT V = s->vs[vsp];
-            float cx = f[0], cy = f[1], cz = f[2], r = f[3];
-            for (i = 0; i < n; ++i) {
-                float dx = X[i] - cx, dy = Y[i] - cy, dz = Z[i] - cz;
-                T[i] = dx * dx + dy * dy + dz * dz;
-            }
-            fovsdf__sqrt_lanes(T);
-            for (i = 0; i < n; ++i) V[i] = T[i] - r;
-            if (wm) {
-                int32_t *FOVSDF__RESTRICT M = s->ms[vsp];
-                for (i = 0; i < n; ++i) M[i] = -1;
-            }
-            skipped += s->nact[lv] * (uint32_t)in->i[0];
-            ++vsp;
             ++pc;
             break;
         }
@@ -4536,8 +4521,8 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
    the full program tests no bound: a pruned program must then not be used (fovsdf__in_cone's
    callers check). */
 #ifndef FOVSDF_PRUNE_CODE /* pruned program instructions per tile on the stack (64 bytes each);
-                             0: no pruning; a longer program is not pruned */
-#define FOVSDF_PRUNE_CODE 128
+                             0: no pruning; a longer program is not pruned (CONFIGURATION) */
+#define FOVSDF_PRUNE_CODE 0
 #endif
 #ifndef FOVSDF_PRUNE_MIN /* rules (b) and (c) applications that make a tile use its pruned
                             program (0: every tile that could be pruned) */
@@ -4551,13 +4536,13 @@ typedef struct fovsdf__preg {
 } fovsdf__preg;
 
 typedef struct fovsdf__pruned {  /* a tile's cone and pruned program (fovsdf__marcher.pv) */
-    fovsdf_program prog;
-    fovsdf_scene sc;              /* the scene with user = &prog */
     fovsdf_ray_cone cone;         /* the points that may use it (fovsdf__in_cone) */
     float e_lo, e_hi;             /* and their thresholds */
     uint32_t rules[3];            /* bounds turned into BDIST, tests dropped, unions dropped */
-    int pruned;                   /* 0: the cone only (for a batch callback), sc unused */
+    int pruned;                   /* 0: the cone only (for a batch callback) */
 #if FOVSDF_PRUNE_CODE > 0
+    fovsdf_program prog;
+    fovsdf_scene sc;              /* the scene with user = &prog */
     fovsdf__ins code[FOVSDF_PRUNE_CODE];
 #endif
 } fovsdf__pruned;
@@ -4620,7 +4605,10 @@ FOVSDF__PRIV void fovsdf__preg_map(const fovsdf__preg *g, const fovsdf__ins *in,
     case FOVSDF_NODE_ROTATE: { /* p' = R^T p: the box's centre and |R^T| of its half sides */
         float c[3], h[3];
         fovsdf__preg_box(o);
-        for (k = 0; k < 3; ++k) { c[k] = 0.5f * (o->lo[k] + o->hi[k]); h[k] = 0.5f * (o->hi[k] - o->lo[k]); }
+        for (k = 0; k < 3; ++k) {
+            c[k] = 0.5f * (o->lo[k] + o->hi[k]);
+            h[k] = 0.5f * (o->hi[k] - o->lo[k]);
+        }
         for (k = 0; k < 3; ++k) {
             float cc = f[k] * c[0] + f[3 + k] * c[1] + f[6 + k] * c[2];
             float hh = fov__absf(f[k]) * h[0] + fov__absf(f[3 + k]) * h[1] +
@@ -4650,7 +4638,10 @@ FOVSDF__PRIV void fovsdf__preg_map(const fovsdf__preg *g, const fovsdf__ins *in,
             ch = FOV__FLOOR((o->hi[k] + o->pad) / per + 0.5f);
             if (!fov__finite(cl) || !fov__finite(ch) || fov__absf(cl) > 1e6f ||
                 fov__absf(ch) > 1e6f) { o->kind = 0; return; }
-            if (in->i[k] > 0) { cl = fovsdf__clampf(cl, -lim, lim); ch = fovsdf__clampf(ch, -lim, lim); }
+            if (in->i[k] > 0) {
+                cl = fovsdf__clampf(cl, -lim, lim);
+                ch = fovsdf__clampf(ch, -lim, lim);
+            }
             if (fov__is0(cl - ch)) { /* one cell: a shift */
                 o->lo[k] -= per * cl; o->hi[k] -= per * cl;
             } else { /* the hull of the folded pieces */
@@ -4792,6 +4783,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
         if (no >= cap) return 0;
         if (in->op == FOVSDF__OP_BOUND) {
             const float *f = in->f;
+            if (in->flags) return 0; /* a program pruned already */
             /* the evaluator's margins at the extreme thresholds (the same operations: lim
                grows with eps) */
             float l_hi = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_hi, 0.0f);
@@ -4801,8 +4793,9 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             if (reg[rsp].kind != 0 && dmin > l_hi * (1.0f + 1e-4f)) { /* (a) every point skips */
                 if (vsp >= FOVSDF_MAX_STACK) return 0;
                 code[no] = *in;
-                code[no].op = FOVSDF__OP_BDIST;
-                code[no].jump = 0;
+                code[no].flags = FOVSDF__FLAG_BDIST;
+                code[no].jump = no + 1u;
+                code[no].f[4] = -FLT_MAX;
                 vs[vsp].lo = dmin - f[3] * 1.0001f; vs[vsp].hi = dmax - f[3] * 0.9999f;
                 vs[vsp].at = lead != 0xffffffffu ? lead : no;
                 vs[vsp].bare = vs[vsp].at == no; /* nothing before it */
@@ -4845,8 +4838,9 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             if (rule_c && in->sub == FOVSDF_NODE_UNION && b.bare && a.hi + sl < b.lo &&
                 a.hi < FLT_MAX) { /* b is never the minimum */
                 /* b's code (a BDIST and CNTs) goes, one CNT of what it counted in its place */
-                code[b.at] = src[pc];
-                code[b.at].op = FOVSDF__OP_CNT;
+                FOV_MEMSET(&code[b.at], 0, sizeof code[b.at]);
+                code[b.at].op = FOVSDF__OP_UNARY;
+                code[b.at].sub = FOVSDF__SUB_CNT;
                 code[b.at].i[0] = (int32_t)b.np;
                 no = b.at + 1u;
                 vs[vsp - 1].np = a.np + b.np;
@@ -4856,8 +4850,9 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             if (rule_c && in->sub == FOVSDF_NODE_UNION && a.bare && b.hi + sl < a.lo &&
                 b.hi < FLT_MAX) { /* a is never the minimum (a tie takes b) */
                 uint32_t sh = b.at - a.at - 1u, j;
-                code[a.at] = src[pc];
-                code[a.at].op = FOVSDF__OP_CNT;
+                FOV_MEMSET(&code[a.at], 0, sizeof code[a.at]);
+                code[a.at].op = FOVSDF__OP_UNARY;
+                code[a.at].sub = FOVSDF__SUB_CNT;
                 code[a.at].i[0] = (int32_t)a.np;
                 for (j = b.at; j < no; ++j) { /* b's code moves down over a's */
                     code[j - sh] = code[j];
@@ -4889,7 +4884,7 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
         }
         case FOVSDF__OP_UNARY: {
             fovsdf__pval *v = &vs[vsp - 1];
-            if (vsp < 1) return 0;
+            if (vsp < 1 || in->sub == FOVSDF__SUB_CNT) return 0; /* a program pruned already */
             if (in->sub == FOVSDF_NODE_ROUND) { v->lo -= in->f[0]; v->hi -= in->f[0]; }
             else {
                 float l = v->lo, h = v->hi;
@@ -4936,7 +4931,8 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
 FOVSDF__INL int fovsdf__in_cone(const fovsdf_ray_cone *q, float x, float y, float z)
 {
     float v0 = x - q->apex[0], v1 = y - q->apex[1], v2 = z - q->apex[2];
-    float t2 = v0 * v0 + v1 * v1 + v2 * v2, al = v0 * q->axis[0] + v1 * q->axis[1] + v2 * q->axis[2];
+    float t2 = v0 * v0 + v1 * v1 + v2 * v2;
+    float al = v0 * q->axis[0] + v1 * q->axis[1] + v2 * q->axis[2];
     float w0 = v0 - al * q->axis[0], w1 = v1 - al * q->axis[1], w2 = v2 - al * q->axis[2];
     float k = q->tan_half;
     return al > 0.0f && t2 >= q->t0 * q->t0 && t2 <= q->t1 * q->t1 &&
@@ -6374,14 +6370,19 @@ FOVSDF__PRIV void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, cons
     const fovsdf__pruned *pv = m->pv;
     if (pv) {
         uint32_t i;
+        const fovsdf_scene *sc = m->sc;
         int ok = !(inflate < 1.0f || inflate > 1.0f) && pv->pruned;
         for (i = 0; i < n; ++i) {
             if (!fovsdf__in_cone(&pv->cone, x[i], y[i], z[i])) break;
             if (!(eps[i] >= pv->e_lo && eps[i] <= pv->e_hi)) ok = 0;
         }
         if (i == n) {
-            fovsdf__wave_eval_c(ok ? &pv->sc : m->sc, m->inv_lip, n, x, y, z, eps, inflate,
-                                &pv->cone, d, mat, st);
+#if FOVSDF_PRUNE_CODE > 0
+            if (ok) sc = &pv->sc;
+#else
+            (void)ok;
+#endif
+            fovsdf__wave_eval_c(sc, m->inv_lip, n, x, y, z, eps, inflate, &pv->cone, d, mat, st);
             return;
         }
     }
@@ -7106,7 +7107,8 @@ FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *m
     q.t0 = 0.0f;
     q.t1 = fov__maxf(mc->t_max, mp->t_max) * 1.001f;
     e_lo = fov__minf(mc->eps, mp->eps);
-    e_hi = fov__maxf(fovsdf__thr_ec(mp, mp->eps_cone, q.t1), fovsdf__thr_ec(mc, mc->eps_cone, q.t1));
+    e_hi = fov__maxf(fovsdf__thr_ec(mp, mp->eps_cone, q.t1),
+                     fovsdf__thr_ec(mc, mc->eps_cone, q.t1));
     /* rule (a) alone saves nothing per evaluation (BDIST costs what the skip costs): the
        pruned program is used when at least FOVSDF_PRUNE_MIN tests or unions went */
     if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv))

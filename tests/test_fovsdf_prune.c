@@ -48,7 +48,8 @@ static int32_t rprim(fovsdf_builder *b, int allow_unbounded)
     case 1: x = fovsdf_box(b, rr(0.05f, 1.0f), rr(0.05f, 1.0f), rr(0.05f, 1.0f)); break;
     case 2: x = fovsdf_round_box(b, rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.0f, 0.2f));
         break;
-    case 3: x = fovsdf_box_frame(b, rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.02f, 0.1f));
+    case 3:
+        x = fovsdf_box_frame(b, rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.2f, 1.0f), rr(0.02f, 0.1f));
         break;
     case 4: x = fovsdf_torus(b, rr(0.0f, 1.0f), rr(0.05f, 0.3f)); break;
     case 5: {
@@ -89,8 +90,10 @@ static int32_t cluster(fovsdf_builder *b, int n, int depth)
     int i;
     for (i = 0; i < n; ++i) {
         int32_t s;
-        if (depth > 0 && rnd() < 0.2f) s = rxform(b, cluster(b, 3 + (int)(rnd() * 5.0f), depth - 1));
-        else s = rprim(b, 0);
+        if (depth > 0 && rnd() < 0.2f)
+            s = rxform(b, cluster(b, 3 + (int)(rnd() * 5.0f), depth - 1));
+        else
+            s = rprim(b, 0);
         s = fovsdf_translate(b, s, rr(-8, 8), rr(-2, 2), rr(-8, 8));
         u = u < 0 ? s : fovsdf_union(b, u, s);
     }
@@ -133,7 +136,8 @@ typedef struct tally {
    some at the ends of the t range). */
 static void cone_point(const fovsdf_ray_cone *q, float p[3])
 {
-    double a[3] = { q->axis[0], q->axis[1], q->axis[2] }, u1[3], u2[3], l, th, ph, t, d[3];
+    double a[3] = { (double)q->axis[0], (double)q->axis[1], (double)q->axis[2] };
+    double u1[3], u2[3], l, th, ph, t, d[3];
     double alpha = atan((double)q->tan_half);
     int k;
     /* an orthonormal basis around the axis */
@@ -434,7 +438,9 @@ static void test_renders(void)
                 fovsdf_output o;
                 fov_gaze g;
                 g.x = 0.4f * (float)W; g.y = 0.6f * (float)H;
-                if (s == 1) { sc.dist = 0; sc.dist_ex = w_dist; sc.dist_batch = w_batch; sc.user = &w; }
+                if (s == 1) {
+                    sc.dist = 0; sc.dist_ex = w_dist; sc.dist_batch = w_batch; sc.user = &w;
+                }
                 cfg.method = meth ? FOVSDF_METHOD_CONE_FOV : FOVSDF_METHOD_CONE;
                 memset(&st[s], 0, sizeof st[s]);
                 fovsdf_output_init(&o);
