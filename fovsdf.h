@@ -4298,11 +4298,17 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             break;
         }
         case FOVSDF__OP_UNARY: {
-            float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
-            if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
-            else if (in->sub == FOVSDF_NODE_ONION)
-                for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
-            else skipped += s->nact[lv] * (uint32_t)in->i[0]; /* CNT (pruned programs) */
+            float r = in->f[0];
+            if (in->sub == FOVSDF__SUB_CNT) { /* pruned programs (the stack may be empty) */
+                skipped += s->nact[lv] * (uint32_t)in->i[0];
+                ++pc;
+                break;
+            }
+            {
+                float *FOVSDF__RESTRICT V = s->vs[vsp - 1];
+                if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
+                else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
+            }
             ++pc;
             break;
         }
@@ -6351,10 +6357,10 @@ FOVSDF__PRIV void fovsdf__wave_eval_c(const fovsdf_scene *sc, float inv_lip, uin
     }
 }
 
-FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
-                                    const float *x, const float *y, const float *z,
-                                    const float *eps, float inflate, float *d, int32_t *mat,
-                                    fovsdf_stats *st)
+FOVSDF__INL void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                   const float *x, const float *y, const float *z,
+                                   const float *eps, float inflate, float *d, int32_t *mat,
+                                   fovsdf_stats *st)
 {
     fovsdf__wave_eval_c(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
 }
@@ -6363,12 +6369,12 @@ FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint3
    the tile's cone m->pv->cone goes with that cone (fovsdf_batch.cone), and, when its
    thresholds are in the range the program was pruned for and inflate is 1, through the
    pruned program (the same values, materials and counts: fovsdf__prune). */
-FOVSDF__PRIV void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, const float *x,
-                                      const float *y, const float *z, const float *eps,
-                                      float inflate, float *d, int32_t *mat, fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__wave_eval_pv(const fovsdf__marcher *m, uint32_t n, const float *x,
+                                       const float *y, const float *z, const float *eps,
+                                       float inflate, float *d, int32_t *mat, fovsdf_stats *st)
 {
     const fovsdf__pruned *pv = m->pv;
-    if (pv) {
+    {
         uint32_t i;
         const fovsdf_scene *sc = m->sc;
         int ok = !(inflate < 1.0f || inflate > 1.0f) && pv->pruned;
@@ -6387,6 +6393,13 @@ FOVSDF__PRIV void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, cons
         }
     }
     fovsdf__wave_eval_c(m->sc, m->inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+}
+FOVSDF__INL void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, const float *x,
+                                     const float *y, const float *z, const float *eps,
+                                     float inflate, float *d, int32_t *mat, fovsdf_stats *st)
+{
+    if (m->pv) fovsdf__wave_eval_pv(m, n, x, y, z, eps, inflate, d, mat, st);
+    else fovsdf__wave_eval_c(m->sc, m->inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
@@ -7102,6 +7115,10 @@ FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *m
     fovsdf_ray_cone q;
     float e_lo, e_hi;
     if (mc->sc != mp->sc || mc->inflate < 1.0f || mc->inflate > 1.0f) return 0;
+    /* nothing to do: no pruning (FOVSDF_PRUNE_CODE 0) and no batch callback of the user's */
+    if (FOVSDF_PRUNE_CODE == 0 &&
+        (!mc->sc->dist_batch || mc->sc->dist_batch == fovsdf_program_eval_batch))
+        return 0;
     q.tan_half = fovsdf__cell_cone(c, x0, y0, x1, y1, q.axis);
     q.apex[0] = c->origin[0]; q.apex[1] = c->origin[1]; q.apex[2] = c->origin[2];
     q.t0 = 0.0f;
