@@ -4517,7 +4517,8 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
    scale keep the cone, rotate, mirror and repeat go through its bounding box) and
    (a) replaces a BOUND whose test skips at every point of the region (every eps in [e_lo,
        e_hi], inflate 1) by BDIST, the bound's value, and drops its subtree;
-   (b) drops a BOUND whose test never skips there (its margin sphere contains the region).
+   (b) drops a BOUND whose test never skips there (its margin sphere contains the region);
+   (c) drops a union with a BDIST operand that can never be its minimum (fovsdf__prune).
    Wherever the region holds, the pruned program then gives exactly the full program's
    distance, material, prims and prims_skipped: the values are the same float operations,
    BDIST counts what the skip counted, and a dropped test never skipped. The distances from a
