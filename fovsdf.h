@@ -260,6 +260,18 @@ CONFIGURATION (define before including the implementation)
                         it references software-double routines on a single-precision FPU)
    FOVSDF_QUARTER_BAND  pixels over which FIPR's and CONE_FOV's quarter level blends in past
                         config.quarter_deg (default 8; 0: a hard switch)
+   FOVSDF_PRUNE_CODE    instructions of the per-tile pruned program of a built-in program
+                        scene that CONE and CONE_FOV keep on their stack (64 bytes each;
+                        default 0: no pruning). Each tile prunes the program for its cone
+                        (bounds its rays never enter become their bound's value, bound tests
+                        they always pass go, unions such a value can never win go) and marches
+                        every batch inside the cone with it: the same images, depths,
+                        materials and counts (tests/test_fovsdf_prune.c). On the built-in
+                        scenes it saves nothing: the cone reaches t_max, so almost only the
+                        first kind applies, which costs what the bound's skip costs; shadow
+                        rays, most of the evaluations, lie outside the cone (issue 12)
+   FOVSDF_PRUNE_MIN     bound tests and unions a tile's pruning must remove before the tile
+                        uses its pruned program (default 1; 0: always)
    Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
@@ -958,9 +970,15 @@ typedef float (*fovsdf_dist_ex_fn)(const float p[3], fovsdf_query *q, void *user
 
 /* A cone that contains a set of points: every point p of the set has p = apex + t u with u a
    unit vector within the half-angle atan(tan_half) of axis and t in [t0, t1] (the distance
-   from the apex along the ray). CONE and CONE_FOV hand one to batch callbacks (the top-level
-   tile's cone, or a smaller one as the pyramid splits), so a callback can prune its scene:
-   whatever it drops must not change the distance at any point of the cone. */
+   from the apex along the ray). CONE and CONE_FOV hand one to batch callbacks (fovsdf_batch.
+   cone): the cone of the top-level tile (CONE_FOV: with its apron of 2 pixels) from the
+   pinhole out to t_max (t0 0, t1 1.001 t_max), with every batch of the tile's cone pyramid and
+   sample rays whose points all lie in it (as computed in float; normals, shadow rays and
+   everything else: NULL). A callback may prune its scene for it (the cone changes once per
+   tile: compare its fields, not its address, to reuse a pruning), but whatever it drops must
+   not change the value, material or counts at any point of the cone: the images must not
+   depend on whether a point came with a cone. The built-in program can prune itself the same
+   way (FOVSDF_PRUNE_CODE, off by default: on the built-in scenes it saves nothing). */
 typedef struct fovsdf_ray_cone {
     float apex[3];
     float axis[3];          /* unit */
@@ -983,7 +1001,8 @@ typedef struct fovsdf_batch {
     int32_t *material;       /* NULL (not wanted) or out: n material ids (fovsdf_query) */
     uint32_t prims;          /* out, accumulated: primitive evaluations */
     uint32_t prims_skipped;  /* out, accumulated: primitive evaluations skipped by bounds */
-    const fovsdf_ray_cone *cone; /* NULL or a cone that contains every point of the batch */
+    const fovsdf_ray_cone *cone; /* NULL or a cone that contains every point of the batch
+                                    (fovsdf_ray_cone: CONE and CONE_FOV tiles set it) */
 } fovsdf_batch;
 typedef void (*fovsdf_dist_batch_fn)(fovsdf_batch *b, void *user);
 typedef void (*fovsdf_albedo_fn)(const float p[3], int32_t material, float rgb[3], void *user);
@@ -3018,6 +3037,14 @@ enum {
     FOVSDF__OP_BOUND      /* f[0..2] centre, f[3] radius, jump = index after the subtree */
 };
 #define FOVSDF__FLAG_DEFLATE 1u
+/* Pruned programs only (fovsdf__prune), in the existing instructions (the evaluators'
+   dispatch stays as it is): BDIST, a BOUND that every point of the region skips with its
+   subtree dropped: flags BDIST, jump the next index and band -FLT_MAX (margin 0: it skips at
+   every point off its centre, which the region never contains), so it pushes the bound's
+   value and material -1 and counts i[0] skipped; CNT, a UNARY of sub FOVSDF__SUB_CNT: counts
+   i[0] skipped (a BDIST that can never be its union's minimum, dropped with the union). */
+#define FOVSDF__FLAG_BDIST 2u
+#define FOVSDF__SUB_CNT 0xffffu
 
 typedef struct fovsdf__ins {
     uint16_t op, sub;
@@ -3747,7 +3774,8 @@ FOVSDF_API float fovsdf_program_eval(const float p_in[3], fovsdf_query *q, void 
         }
         case FOVSDF__OP_UNARY:
             if (in->sub == FOVSDF_NODE_ROUND) vs[vsp - 1] -= in->f[0];
-            else vs[vsp - 1] = fov__absf(vs[vsp - 1]) - in->f[0];
+            else if (in->sub == FOVSDF_NODE_ONION) vs[vsp - 1] = fov__absf(vs[vsp - 1]) - in->f[0];
+            else skipped += (uint32_t)in->i[0]; /* CNT (pruned programs) */
             ++pc;
             break;
         case FOVSDF__OP_PUSHP: {
@@ -4289,9 +4317,17 @@ FOVSDF__PRIV FOVSDF__VEC int fovsdf__eval_lanes(const fovsdf_program *prog, fovs
             break;
         }
         case FOVSDF__OP_UNARY: {
-            float *FOVSDF__RESTRICT V = s->vs[vsp - 1], r = in->f[0];
-            if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
-            else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
+            float r = in->f[0];
+            if (in->sub == FOVSDF__SUB_CNT) { /* pruned programs (the stack may be empty) */
+                skipped += s->nact[lv] * (uint32_t)in->i[0];
+                ++pc;
+                break;
+            }
+            {
+                float *FOVSDF__RESTRICT V = s->vs[vsp - 1];
+                if (in->sub == FOVSDF_NODE_ROUND) for (i = 0; i < n; ++i) V[i] -= r;
+                else for (i = 0; i < n; ++i) V[i] = fovsdf__vabs(V[i]) - r;
+            }
             ++pc;
             break;
         }
@@ -4492,6 +4528,478 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
 #endif
 }
 
+/* ---- per-tile pruning of a built-in program (beyond the thesis; issue 12) -------------------
+   A region is a set of evaluation points in one frame of the program: a cone segment (points
+   apex + t u, u unit within atan(k) of the unit axis, t in [t0, t1]) or a box [lo, hi],
+   widened by pad (every point lies within pad of the set). fovsdf__prune walks the code with
+   the region of each frame (a point op maps the region into its child's frame: translate and
+   scale keep the cone, rotate, mirror and repeat go through its bounding box) and
+   (a) replaces a BOUND whose test skips at every point of the region (every eps in [e_lo,
+       e_hi], inflate 1) by BDIST, the bound's value, and drops its subtree;
+   (b) drops a BOUND whose test never skips there (its margin sphere contains the region);
+   (c) drops a union with a BDIST operand that can never be its minimum (fovsdf__prune).
+   Wherever the region holds, the pruned program then gives exactly the full program's
+   distance, material, prims and prims_skipped: the values are the same float operations,
+   BDIST counts what the skip counted, and a dropped test never skipped. The distances from a
+   bound's centre to the region are taken 1e-4 relative plus pad beyond the float noise of the
+   test (pad starts at 1e-5 of the region's extent and grows by 1e-6 of the magnitudes at each
+   point op), so a point that fovsdf__in_cone admits is decided the same way. With inflate != 1
+   the full program tests no bound: a pruned program must then not be used (fovsdf__in_cone's
+   callers check). */
+#ifndef FOVSDF_PRUNE_CODE /* pruned program instructions per tile on the stack (64 bytes each);
+                             0: no pruning; a longer program is not pruned (CONFIGURATION) */
+#define FOVSDF_PRUNE_CODE 0
+#endif
+#ifndef FOVSDF_PRUNE_MIN /* rules (b) and (c) applications that make a tile use its pruned
+                            program (0: every tile that could be pruned) */
+#define FOVSDF_PRUNE_MIN 1
+#endif
+typedef struct fovsdf__preg {
+    int kind;                      /* 0 unknown (nothing is pruned), 1 cone, 2 box */
+    float apex[3], axis[3], k, t0, t1;
+    float lo[3], hi[3];
+    float pad;
+} fovsdf__preg;
+
+typedef struct fovsdf__pruned {  /* a tile's cone and pruned program (fovsdf__marcher.pv) */
+    fovsdf_ray_cone cone;         /* the points that may use it (fovsdf__in_cone) */
+    float e_lo, e_hi;             /* and their thresholds */
+    uint32_t rules[3];            /* bounds turned into BDIST, tests dropped, unions dropped */
+    int pruned;                   /* 0: the cone only (for a batch callback) */
+#if FOVSDF_PRUNE_CODE > 0
+    fovsdf_program prog;
+    fovsdf_scene sc;              /* the scene with user = &prog */
+    fovsdf__ins code[FOVSDF_PRUNE_CODE];
+#endif
+} fovsdf__pruned;
+
+FOVSDF__PRIV float fovsdf__preg_mag(const fovsdf__preg *g)
+{
+    if (g->kind == 1) return fov__len(g->apex) + g->t1;
+    return fovsdf__len3f(fov__maxf(fov__absf(g->lo[0]), fov__absf(g->hi[0])),
+                         fov__maxf(fov__absf(g->lo[1]), fov__absf(g->hi[1])),
+                         fov__maxf(fov__absf(g->lo[2]), fov__absf(g->hi[2])));
+}
+
+/* The cone segment's bounding box (the region becomes a box). */
+FOVSDF__PRIV void fovsdf__preg_box(fovsdf__preg *g)
+{
+    int j;
+    float ca, sa;
+    if (g->kind != 1) return;
+    ca = 1.0f / FOV__SQRT(1.0f + g->k * g->k);
+    sa = g->k * ca;
+    for (j = 0; j < 3; ++j) {
+        /* the largest and least u_j over the cap: cos of (angle to +-e_j minus alpha), or +-1
+           when the cap contains +-e_j */
+        float aj = g->axis[j], sj = FOV__SQRT(fov__maxf(1.0f - aj * aj, 0.0f));
+        float umax = aj >= ca ? 1.0f : aj * ca + sj * sa;
+        float umin = -aj >= ca ? -1.0f : aj * ca - sj * sa;
+        umax = fovsdf__clampf(umax * 1.0001f + 1e-6f, -1.0f, 1.0f);
+        umin = fovsdf__clampf(umin * 1.0001f - 1e-6f, -1.0f, 1.0f);
+        g->hi[j] = g->apex[j] + (umax >= 0.0f ? g->t1 : g->t0) * umax;
+        g->lo[j] = g->apex[j] + (umin >= 0.0f ? g->t0 : g->t1) * umin;
+    }
+    g->pad += 1e-6f * fovsdf__preg_mag(g);
+    g->kind = 2;
+}
+
+/* The region of a point op's child frame (the op's transform applied to g). */
+FOVSDF__PRIV void fovsdf__preg_map(const fovsdf__preg *g, const fovsdf__ins *in, fovsdf__preg *o)
+{
+    const float *f = in->f;
+    float mag = fovsdf__preg_mag(g);
+    int k;
+    *o = *g;
+    if (g->kind == 0) return;
+    switch (in->sub) {
+    case FOVSDF_NODE_TRANSLATE:
+        for (k = 0; k < 3; ++k) {
+            if (o->kind == 1) o->apex[k] -= f[k];
+            else { o->lo[k] -= f[k]; o->hi[k] -= f[k]; }
+        }
+        o->pad += 1e-6f * (mag + fovsdf__len3f(f[0], f[1], f[2]));
+        break;
+    case FOVSDF_NODE_SCALE:
+        for (k = 0; k < 3; ++k) {
+            if (o->kind == 1) o->apex[k] /= f[0];
+            else { o->lo[k] /= f[0]; o->hi[k] /= f[0]; }
+        }
+        o->t0 /= f[0]; o->t1 /= f[0];
+        o->pad = o->pad / f[0] + 1e-6f * (mag / f[0]);
+        break;
+    case FOVSDF_NODE_ROTATE: { /* p' = R^T p: the box's centre and |R^T| of its half sides */
+        float c[3], h[3];
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k) {
+            c[k] = 0.5f * (o->lo[k] + o->hi[k]);
+            h[k] = 0.5f * (o->hi[k] - o->lo[k]);
+        }
+        for (k = 0; k < 3; ++k) {
+            float cc = f[k] * c[0] + f[3 + k] * c[1] + f[6 + k] * c[2];
+            float hh = fov__absf(f[k]) * h[0] + fov__absf(f[3 + k]) * h[1] +
+                fov__absf(f[6 + k]) * h[2];
+            o->lo[k] = cc - hh; o->hi[k] = cc + hh;
+        }
+        /* rows orthonormal within 1e-3: the pad grows with the matrix */
+        o->pad = o->pad * 1.01f + 1e-6f * mag;
+        break;
+    }
+    case FOVSDF_NODE_MIRROR:
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k)
+            if (in->i[0] & (1 << k)) {
+                float l = o->lo[k], hv = o->hi[k];
+                if (hv <= 0.0f) { o->lo[k] = -hv; o->hi[k] = -l; }
+                else if (l < 0.0f) { o->lo[k] = 0.0f; o->hi[k] = fov__maxf(-l, hv); }
+            }
+        o->pad += 1e-6f * mag;
+        break;
+    case FOVSDF_NODE_REPEAT:
+        fovsdf__preg_box(o);
+        for (k = 0; k < 3; ++k) {
+            float per = f[k], cl, ch, lim = (float)in->i[k];
+            if (!(per > 0.0f)) continue;
+            cl = FOV__FLOOR((o->lo[k] - o->pad) / per + 0.5f);
+            ch = FOV__FLOOR((o->hi[k] + o->pad) / per + 0.5f);
+            if (!fov__finite(cl) || !fov__finite(ch) || fov__absf(cl) > 1e6f ||
+                fov__absf(ch) > 1e6f) { o->kind = 0; return; }
+            if (in->i[k] > 0) {
+                cl = fovsdf__clampf(cl, -lim, lim);
+                ch = fovsdf__clampf(ch, -lim, lim);
+            }
+            if (fov__is0(cl - ch)) { /* one cell: a shift */
+                o->lo[k] -= per * cl; o->hi[k] -= per * cl;
+            } else { /* the hull of the folded pieces */
+                o->lo[k] = fov__minf(o->lo[k] - per * cl, -0.5f * per);
+                o->hi[k] = fov__maxf(o->hi[k] - per * ch, 0.5f * per);
+            }
+        }
+        o->pad += 1e-6f * (mag + fovsdf__len3f(f[0], f[1], f[2]));
+        break;
+    default: break;
+    }
+    if (o->kind == 2 && !(fov__finite3(o->lo) && fov__finite3(o->hi))) o->kind = 0;
+    if (o->kind == 1 && !(fov__finite3(o->apex) && fov__finite(o->t1))) o->kind = 0;
+    if (!fov__finite(o->pad)) o->kind = 0;
+}
+
+/* The least and largest distance from c to the region (pad and 1e-4 included). */
+FOVSDF__PRIV void fovsdf__preg_dist(const fovsdf__preg *g, const float c[3], float *dmin,
+                                    float *dmax)
+{
+    float lo, hi;
+    int k;
+    if (g->kind == 1) {
+        float v[3], w[3], al, pe, rho, ca, sa, s, x, y, x2, y2;
+        for (k = 0; k < 3; ++k) v[k] = c[k] - g->apex[k];
+        al = fov__dot(v, g->axis);
+        for (k = 0; k < 3; ++k) w[k] = v[k] - al * g->axis[k];
+        pe = fov__len(w);
+        rho = fov__len(v);
+        ca = 1.0f / FOV__SQRT(1.0f + g->k * g->k);
+        sa = g->k * ca;
+        if (pe <= g->k * al) { /* within the half-angle: radially */
+            lo = fov__maxf(fov__maxf(g->t0 - rho, rho - g->t1), 0.0f);
+        } else { /* to the boundary ray at alpha, s clamped to [t0, t1] */
+            s = fovsdf__clampf(al * ca + pe * sa, g->t0, g->t1);
+            x = al - s * ca; y = pe - s * sa;
+            lo = FOV__SQRT(x * x + y * y);
+        }
+        if (pe * ca + al * sa < 0.0f) { /* the far side passes the opposite direction */
+            hi = rho + g->t1;
+        } else {
+            x = al - g->t0 * ca; y = pe + g->t0 * sa;
+            x2 = al - g->t1 * ca; y2 = pe + g->t1 * sa;
+            hi = FOV__SQRT(fov__maxf(x * x + y * y, x2 * x2 + y2 * y2));
+        }
+    } else {
+        float a[3], b[3];
+        for (k = 0; k < 3; ++k) {
+            a[k] = fov__maxf(fov__maxf(g->lo[k] - c[k], c[k] - g->hi[k]), 0.0f);
+            b[k] = fov__maxf(fov__absf(c[k] - g->lo[k]), fov__absf(c[k] - g->hi[k]));
+        }
+        lo = fov__len(a);
+        hi = fov__len(b);
+    }
+    *dmin = lo * (1.0f - 1e-4f) - g->pad;
+    *dmax = hi * (1.0f + 1e-4f) + g->pad;
+}
+
+/* Bounds [lo, hi] of a primitive's value over the region g of its frame (an exact distance of a
+   solid inside the ball (c, R) lies in [|p - c| - R, |p - q|] for any point q inside the solid,
+   Lipschitz 1; a plane's from its support; the fractals and the terrain are not bounded). */
+FOVSDF__PRIV void fovsdf__prim_range(const fovsdf__ins *in, const fovsdf__preg *g, float *lo,
+                                     float *hi)
+{
+    const float *f = in->f;
+    float c[3] = { 0.0f, 0.0f, 0.0f }, q[3] = { 0.0f, 0.0f, 0.0f }, R, qoff = 0.0f, a, b, d0, d1;
+    *lo = -FLT_MAX; *hi = FLT_MAX;
+    switch (in->sub) {
+    case FOVSDF_NODE_SPHERE: R = f[0]; qoff = -f[0]; break;
+    case FOVSDF_NODE_BOX: case FOVSDF_NODE_ROUND_BOX: R = fovsdf__len3f(f[0], f[1], f[2]); break;
+    case FOVSDF_NODE_BOX_FRAME:
+        R = fovsdf__len3f(f[0], f[1], f[2]); q[0] = f[0]; q[1] = f[1]; q[2] = f[2];
+        break;
+    case FOVSDF_NODE_TORUS: R = f[0] + f[1]; qoff = f[0] - f[1]; break;
+    case FOVSDF_NODE_CAPSULE:
+        c[0] = 0.5f * (f[0] + f[3]); c[1] = 0.5f * (f[1] + f[4]); c[2] = 0.5f * (f[2] + f[5]);
+        R = 0.5f * fovsdf__len3f(f[3] - f[0], f[4] - f[1], f[5] - f[2]) + f[6];
+        q[0] = f[0]; q[1] = f[1]; q[2] = f[2]; qoff = -f[6];
+        break;
+    case FOVSDF_NODE_CYLINDER: R = fovsdf__len2f(f[0], f[1]); break;
+    case FOVSDF_NODE_CONE: R = fovsdf__len2f(f[0], fov__maxf(f[1], f[2])); break;
+    case FOVSDF_NODE_PLANE: {
+        fovsdf__preg b2 = *g;
+        int k;
+        fovsdf__preg_box(&b2);
+        if (b2.kind != 2) return;
+        a = f[3]; b = f[3];
+        for (k = 0; k < 3; ++k) {
+            a += fov__minf(f[k] * b2.lo[k], f[k] * b2.hi[k]);
+            b += fov__maxf(f[k] * b2.lo[k], f[k] * b2.hi[k]);
+        }
+        d0 = b2.pad * 1.001f + 1e-5f * (fovsdf__preg_mag(&b2) + fov__absf(f[3]));
+        *lo = a - d0; *hi = b + d0;
+        return;
+    }
+    default: return; /* fractals, terrain */
+    }
+    fovsdf__preg_dist(g, c, &d0, &a);
+    fovsdf__preg_dist(g, q, &b, &d1);
+    a = 1e-5f * (fovsdf__preg_mag(g) + R); /* the float noise of the value */
+    *lo = d0 - R * 1.0001f - a;
+    *hi = d1 + qoff + a;
+}
+
+/* Prune prog for the points of g (region in the program's world frame) with thresholds in
+   [e_lo, e_hi] and inflate 1 into code[0 .. cap) (see above); 0 when it does not fit. Rule
+   (c): each value on the stack carries bounds over the region; a plain union whose operand is
+   a bare BDIST that stays above the other operand's upper bound (strictly: the evaluator
+   keeps a on a < b) can never be the minimum: the BDIST becomes CNT (its count) and the union
+   goes. */
+typedef struct fovsdf__pval { float lo, hi; uint32_t at, np; int bare; } fovsdf__pval;
+FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g, float e_lo,
+                               float e_hi, int rule_c, fovsdf__ins *code, uint32_t cap,
+                               fovsdf_program *out, uint32_t *rules)
+{
+    const fovsdf__ins *src = (const fovsdf__ins *)prog->code;
+    fovsdf__preg reg[FOVSDF_MAX_STACK + 1];
+    fovsdf__pval vs[FOVSDF_MAX_STACK];
+    uint32_t ob_out[FOVSDF__MAX_DEPTH], ob_end[FOVSDF__MAX_DEPTH];
+    float ob_lo[FOVSDF__MAX_DEPTH], ob_hi[FOVSDF__MAX_DEPTH];
+    uint32_t pc = 0, no = 0, nob = 0, n = prog->count, ra = 0, rb = 0, rc = 0, nbo = 0;
+    uint32_t lead = 0xffffffffu; /* the first BOUND or PUSHP of the value being started */
+    int32_t rsp = 0, vsp = 0;
+    reg[0] = *g;
+    if (!(g->kind == 1 || g->kind == 2) || !(e_lo <= e_hi) || !fov__finite(e_hi)) return 0;
+    for (;;) {
+        const fovsdf__ins *in;
+        while (nob > 0 && ob_end[nob - 1] == pc) { /* a kept bound's end: either value */
+            --nob;
+            code[ob_out[nob]].jump = no;
+            if (vsp > 0) {
+                vs[vsp - 1].lo = fov__minf(vs[vsp - 1].lo, ob_lo[nob]);
+                vs[vsp - 1].hi = fov__maxf(vs[vsp - 1].hi, ob_hi[nob]);
+                vs[vsp - 1].bare = 0;
+            }
+        }
+        if (pc >= n) break;
+        in = &src[pc];
+        if (no >= cap) return 0;
+        if (in->op == FOVSDF__OP_BOUND) {
+            const float *f = in->f;
+            if (in->flags) return 0; /* a program pruned already */
+            /* the evaluator's margins at the extreme thresholds (the same operations: lim
+               grows with eps) */
+            float l_hi = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_hi, 0.0f);
+            float l_lo = fov__maxf(1.25f * f[3] + f[4] + 4.0f * e_lo, 0.0f);
+            float dmin = 0.0f, dmax = FLT_MAX;
+            if (reg[rsp].kind != 0) fovsdf__preg_dist(&reg[rsp], f, &dmin, &dmax);
+            if (reg[rsp].kind != 0 && dmin > l_hi * (1.0f + 1e-4f)) { /* (a) every point skips */
+                if (vsp >= FOVSDF_MAX_STACK) return 0;
+                code[no] = *in;
+                code[no].flags = FOVSDF__FLAG_BDIST;
+                code[no].jump = no + 1u;
+                code[no].f[4] = -FLT_MAX;
+                vs[vsp].lo = dmin - f[3] * 1.0001f; vs[vsp].hi = dmax - f[3] * 0.9999f;
+                vs[vsp].at = lead != 0xffffffffu ? lead : no;
+                vs[vsp].bare = vs[vsp].at == no; /* nothing before it */
+                vs[vsp].np = (uint32_t)in->i[0]; ++vsp;
+                lead = 0xffffffffu;
+                ++no; ++ra;
+                pc = in->jump;
+                continue;
+            }
+            if (reg[rsp].kind != 0 && dmax * (1.0f + 1e-4f) < l_lo) { /* (b) no point skips */
+                ++pc; ++rb;
+                continue;
+            }
+            if (nob >= FOVSDF__MAX_DEPTH) return 0;
+            code[no] = *in;
+            ob_out[nob] = no; ob_end[nob] = in->jump;
+            ob_lo[nob] = reg[rsp].kind != 0 ? dmin - f[3] * 1.0001f : -FLT_MAX;
+            ob_hi[nob] = reg[rsp].kind != 0 ? dmax - f[3] * 0.9999f : FLT_MAX;
+            if (lead == 0xffffffffu) lead = no;
+            ++nob; ++nbo; ++no; ++pc;
+            continue;
+        }
+        code[no] = *in;
+        switch (in->op) {
+        case FOVSDF__OP_PRIM:
+            if (vsp >= FOVSDF_MAX_STACK) return 0;
+            if (reg[rsp].kind != 0) fovsdf__prim_range(in, &reg[rsp], &vs[vsp].lo, &vs[vsp].hi);
+            else { vs[vsp].lo = -FLT_MAX; vs[vsp].hi = FLT_MAX; }
+            vs[vsp].at = lead != 0xffffffffu ? lead : no;
+            vs[vsp].bare = 0; vs[vsp].np = 1; ++vsp;
+            lead = 0xffffffffu;
+            break;
+        case FOVSDF__OP_BIN: {
+            fovsdf__pval a, b;
+            float k = in->f[0] * 0.2501f, sl;
+            if (vsp < 2) return 0;
+            b = vs[--vsp]; a = vs[vsp - 1];
+            sl = 1e-4f * (fov__absf(a.hi) + fov__absf(b.lo) + fov__absf(a.lo) + fov__absf(b.hi)) +
+                1e-30f;
+            if (rule_c && in->sub == FOVSDF_NODE_UNION && b.bare && a.hi + sl < b.lo &&
+                a.hi < FLT_MAX) { /* b is never the minimum */
+                /* b's code (a BDIST and CNTs) goes, one CNT of what it counted in its place */
+                FOV_MEMSET(&code[b.at], 0, sizeof code[b.at]);
+                code[b.at].op = FOVSDF__OP_UNARY;
+                code[b.at].sub = FOVSDF__SUB_CNT;
+                code[b.at].i[0] = (int32_t)b.np;
+                no = b.at + 1u;
+                vs[vsp - 1].np = a.np + b.np;
+                ++rc; ++pc;
+                continue; /* a stays, as it was */
+            }
+            if (rule_c && in->sub == FOVSDF_NODE_UNION && a.bare && b.hi + sl < a.lo &&
+                b.hi < FLT_MAX) { /* a is never the minimum (a tie takes b) */
+                uint32_t sh = b.at - a.at - 1u, j;
+                FOV_MEMSET(&code[a.at], 0, sizeof code[a.at]);
+                code[a.at].op = FOVSDF__OP_UNARY;
+                code[a.at].sub = FOVSDF__SUB_CNT;
+                code[a.at].i[0] = (int32_t)a.np;
+                for (j = b.at; j < no; ++j) { /* b's code moves down over a's */
+                    code[j - sh] = code[j];
+                    if (code[j - sh].op == FOVSDF__OP_BOUND) code[j - sh].jump -= sh;
+                }
+                no -= sh;
+                b.at = a.at; b.bare = 0; b.np += a.np;
+                vs[vsp - 1] = b;
+                ++rc; ++pc;
+                continue;
+            }
+            switch (in->sub) {
+            case FOVSDF_NODE_UNION:
+                a.lo = fov__minf(a.lo, b.lo); a.hi = fov__minf(a.hi, b.hi); break;
+            case FOVSDF_NODE_SMOOTH_UNION:
+                a.lo = fov__minf(a.lo, b.lo) - k; a.hi = fov__minf(a.hi, b.hi); break;
+            case FOVSDF_NODE_SUBTRACT: case FOVSDF_NODE_SMOOTH_SUBTRACT:
+                a.lo = fov__maxf(a.lo, -b.hi); a.hi = fov__maxf(a.hi, -b.lo);
+                if (in->sub == FOVSDF_NODE_SMOOTH_SUBTRACT) a.hi += k;
+                break;
+            default: /* intersections */
+                a.lo = fov__maxf(a.lo, b.lo); a.hi = fov__maxf(a.hi, b.hi);
+                if (in->sub == FOVSDF_NODE_SMOOTH_INTERSECT) a.hi += k;
+                break;
+            }
+            a.lo -= sl; a.hi += sl; a.bare = 0; a.np += b.np;
+            vs[vsp - 1] = a;
+            break;
+        }
+        case FOVSDF__OP_UNARY: {
+            fovsdf__pval *v = &vs[vsp - 1];
+            if (vsp < 1 || in->sub == FOVSDF__SUB_CNT) return 0; /* a program pruned already */
+            if (in->sub == FOVSDF_NODE_ROUND) { v->lo -= in->f[0]; v->hi -= in->f[0]; }
+            else {
+                float l = v->lo, h = v->hi;
+                v->lo = (l <= 0.0f && h >= 0.0f ? 0.0f : fov__minf(fov__absf(l), fov__absf(h))) -
+                    in->f[0];
+                v->hi = fov__maxf(fov__absf(l), fov__absf(h)) - in->f[0];
+            }
+            v->bare = 0;
+            break;
+        }
+        case FOVSDF__OP_PUSHP:
+            if (rsp >= FOVSDF_MAX_STACK) return 0;
+            if (lead == 0xffffffffu) lead = no;
+            fovsdf__preg_map(&reg[rsp], in, &reg[rsp + 1]);
+            ++rsp;
+            break;
+        case FOVSDF__OP_POPP:
+            if (rsp > 0) --rsp;
+            if (vsp < 1) return 0;
+            vs[vsp - 1].lo *= in->f[0]; vs[vsp - 1].hi *= in->f[0]; vs[vsp - 1].bare = 0;
+            break;
+        default: return 0; /* a program pruned already */
+        }
+        /* unbounded values stay unbounded (no inf - inf later) */
+        if (vsp > 0) {
+            fovsdf__pval *v = &vs[vsp - 1];
+            if (!(v->lo > -FLT_MAX)) v->lo = -FLT_MAX;
+            if (!(v->hi < FLT_MAX)) v->hi = FLT_MAX;
+        }
+        ++no; ++pc;
+    }
+    out->code = code;
+    out->count = no;
+    out->prims = prog->prims; /* what prims + prims_skipped still add up to */
+    out->bounds = nbo;
+    out->bound_center[0] = prog->bound_center[0]; out->bound_center[1] = prog->bound_center[1];
+    out->bound_center[2] = prog->bound_center[2]; out->bound_radius = prog->bound_radius;
+    if (rules) { rules[0] = ra; rules[1] = rb; rules[2] = rc; }
+    return 1;
+}
+
+/* 1 when point p lies in cone q (fovsdf_ray_cone; t the distance from the apex), as computed
+   in float (fovsdf__prune's pad covers the rounding). */
+FOVSDF__INL int fovsdf__in_cone(const fovsdf_ray_cone *q, float x, float y, float z)
+{
+    float v0 = x - q->apex[0], v1 = y - q->apex[1], v2 = z - q->apex[2];
+    float t2 = v0 * v0 + v1 * v1 + v2 * v2;
+    float al = v0 * q->axis[0] + v1 * q->axis[1] + v2 * q->axis[2];
+    float w0 = v0 - al * q->axis[0], w1 = v1 - al * q->axis[1], w2 = v2 - al * q->axis[2];
+    float k = q->tan_half;
+    return al > 0.0f && t2 >= q->t0 * q->t0 && t2 <= q->t1 * q->t1 &&
+        w0 * w0 + w1 * w1 + w2 * w2 <= (k * al) * (k * al);
+}
+
+/* Prune sc's program (a built-in program scene only) for the cone q with thresholds in
+   [e_lo, e_hi] into pv. Returns 1 when pv holds a pruned program. */
+FOVSDF__PRIV int fovsdf__prune_cone(const fovsdf_scene *sc, const fovsdf_ray_cone *q, float e_lo,
+                                    float e_hi, fovsdf__pruned *pv)
+{
+#if FOVSDF_PRUNE_CODE > 0
+    const fovsdf_program *pg = (const fovsdf_program *)sc->user;
+    fovsdf__preg g;
+    int k;
+    if (sc->dist_ex != fovsdf_program_eval ||
+        (sc->dist_batch && sc->dist_batch != fovsdf_program_eval_batch) || !pg || !pg->code ||
+        pg->count == 0 || pg->count > FOVSDF_PRUNE_CODE)
+        return 0;
+    if (!(q->tan_half >= 0.0f) || !(q->t0 >= 0.0f) || !(q->t1 >= q->t0) || !fov__finite(q->t1) ||
+        !fov__finite(q->tan_half) || !fov__finite3(q->apex))
+        return 0;
+    g.kind = 1;
+    for (k = 0; k < 3; ++k) { g.apex[k] = q->apex[k]; g.axis[k] = q->axis[k]; }
+    g.k = q->tan_half; g.t0 = q->t0; g.t1 = q->t1;
+    g.pad = 1e-5f * (fov__len(q->apex) + q->t1) + 1e-30f;
+    for (k = 0; k < 3; ++k) g.lo[k] = g.hi[k] = 0.0f;
+    if (!fovsdf__prune(pg, &g, e_lo, e_hi, 1, pv->code, FOVSDF_PRUNE_CODE, &pv->prog, pv->rules))
+        return 0;
+    pv->sc = *sc;
+    pv->sc.user = &pv->prog;
+    pv->cone = *q;
+    pv->e_lo = e_lo; pv->e_hi = e_hi;
+    pv->pruned = 1;
+    return 1;
+#else
+    (void)sc; (void)q; (void)e_lo; (void)e_hi; (void)pv;
+    return 0;
+#endif
+}
+
 /* ---- distance evaluation and the four tracers --------------------------------------------- */
 typedef struct fovsdf__marcher {
     const fovsdf_scene *sc;
@@ -4504,6 +5012,8 @@ typedef struct fovsdf__marcher {
     int per_ray;       /* 1: eps_cone is the centre pixel's; each ray scales it by its own
                           footprint, cos^2 of its angle to fwd (camera rays, fovsdf_trace) */
     float fwd[3];      /* the camera's forward axis (per_ray) */
+    const struct fovsdf__pruned *pv; /* NULL, or the tile's cone and pruned program: the
+                                        wavefront's evaluations inside the cone use them */
 } fovsdf__marcher;
 
 /* One counted evaluation. A non-finite value from a user callback becomes FLT_MAX, which ends
@@ -5024,6 +5534,7 @@ FOVSDF__PRIV void fovsdf__marcher_from_ctx(const fovsdf_ctx *c, fovsdf__marcher 
                                            const float ro[3])
 {
     m->sc = &c->scene;
+    m->pv = 0;
     m->inv_lip = 1.0f / c->scene.lipschitz;
     /* per-image methods (CONE) trace single rays with their finishing tracer */
     m->method =
@@ -5086,6 +5597,7 @@ FOVSDF_API fov_result fovsdf_march(const fovsdf_scene *scene, const fovsdf_march
     m.inflate = 1.0f;
     m.verify_start = 0;
     m.per_ray = 0; /* eps_cone is the caller's, per ray */
+    m.pv = 0;
     m.fwd[0] = 0.0f; m.fwd[1] = 0.0f; m.fwd[2] = 1.0f;
     fovsdf__march(&m, ro, rd, t_start, hit, 0, stats);
     return FOV_OK;
@@ -5847,14 +6359,15 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
 #ifndef FOVSDF_WAVE_MIN
 #define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 2) / 3)
 #endif
-FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
-                                    const float *x, const float *y, const float *z,
-                                    const float *eps, float inflate, float *d, int32_t *mat,
-                                    fovsdf_stats *st)
+FOVSDF__PRIV void fovsdf__wave_eval_c(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                      const float *x, const float *y, const float *z,
+                                      const float *eps, float inflate,
+                                      const fovsdf_ray_cone *cone, float *d, int32_t *mat,
+                                      fovsdf_stats *st)
 {
     uint32_t i;
     if (n >= (uint32_t)(FOVSDF_WAVE_MIN) || (!sc->dist_ex && !sc->dist)) {
-        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+        fovsdf__eval_batch(sc, inv_lip, n, x, y, z, eps, inflate, cone, d, mat, st);
         return;
     }
     for (i = 0; i < n; ++i) {
@@ -5862,6 +6375,51 @@ FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint3
         p[0] = x[i]; p[1] = y[i]; p[2] = z[i];
         d[i] = fovsdf__eval_in(sc, inv_lip, p, eps[i], inflate, mat ? &mat[i] : 0, st);
     }
+}
+
+FOVSDF__INL void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
+                                   const float *x, const float *y, const float *z,
+                                   const float *eps, float inflate, float *d, int32_t *mat,
+                                   fovsdf_stats *st)
+{
+    fovsdf__wave_eval_c(sc, inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+}
+
+/* The marcher's evaluations (fovsdf__wave_eval with m->sc): a batch whose points all lie in
+   the tile's cone m->pv->cone goes with that cone (fovsdf_batch.cone), and, when its
+   thresholds are in the range the program was pruned for and inflate is 1, through the
+   pruned program (the same values, materials and counts: fovsdf__prune). */
+FOVSDF__PRIV void fovsdf__wave_eval_pv(const fovsdf__marcher *m, uint32_t n, const float *x,
+                                       const float *y, const float *z, const float *eps,
+                                       float inflate, float *d, int32_t *mat, fovsdf_stats *st)
+{
+    const fovsdf__pruned *pv = m->pv;
+    {
+        uint32_t i;
+        const fovsdf_scene *sc = m->sc;
+        int ok = !(inflate < 1.0f || inflate > 1.0f) && pv->pruned;
+        for (i = 0; i < n; ++i) {
+            if (!fovsdf__in_cone(&pv->cone, x[i], y[i], z[i])) break;
+            if (!(eps[i] >= pv->e_lo && eps[i] <= pv->e_hi)) ok = 0;
+        }
+        if (i == n) {
+#if FOVSDF_PRUNE_CODE > 0
+            if (ok) sc = &pv->sc;
+#else
+            (void)ok;
+#endif
+            fovsdf__wave_eval_c(sc, m->inv_lip, n, x, y, z, eps, inflate, &pv->cone, d, mat, st);
+            return;
+        }
+    }
+    fovsdf__wave_eval_c(m->sc, m->inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
+}
+FOVSDF__INL void fovsdf__wave_eval_m(const fovsdf__marcher *m, uint32_t n, const float *x,
+                                     const float *y, const float *z, const float *eps,
+                                     float inflate, float *d, int32_t *mat, fovsdf_stats *st)
+{
+    if (m->pv) fovsdf__wave_eval_pv(m, n, x, y, z, eps, inflate, d, mat, st);
+    else fovsdf__wave_eval_c(m->sc, m->inv_lip, n, x, y, z, eps, inflate, 0, d, mat, st);
 }
 
 /* March every queued request of the ring (head 0, cnt entries) to the end. */
@@ -5876,8 +6434,7 @@ FOVSDF__PRIV void fovsdf__wave_march(fovsdf__wave *w, const fovsdf__marcher *m, 
             w->bx[nb] = mc->q[0]; w->by[nb] = mc->q[1]; w->bz[nb] = mc->q[2];
             w->be[nb] = mc->qe;
         }
-        fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm,
-                          w->st);
+        fovsdf__wave_eval_m(m, nb, w->bx, w->by, w->bz, w->be, qi, w->bd, w->bm, w->st);
         for (i = 0; i < nb; ++i) {
             uint32_t k = w->q[head];
             fovsdf__mco *mc = &w->ray[k].mc;
@@ -6517,8 +7074,7 @@ FOVSDF__PRIV void fovsdf__wave_cones(fovsdf__wave *w, const fovsdf__marcher *m, 
                 w->bx[i] = c->origin[0] + q->a[0] * q->t; w->by[i] = c->origin[1] + q->a[1] * q->t;
                 w->bz[i] = c->origin[2] + q->a[2] * q->t;
             }
-            fovsdf__wave_eval(m->sc, m->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
-                              w->st);
+            fovsdf__wave_eval_m(m, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 uint32_t id = act[j + i];
@@ -6619,6 +7175,40 @@ FOVSDF_API fov_result fovsdf_shade_points_grouped(const fovsdf_ctx *c, uint32_t 
     return FOV_OK;
 }
 
+/* The cone of the pixel rectangle [x0, x1) x [y0, y1) from the camera out to t_max, for the
+   marchers mc (cones) and mp (sample rays) of a tile: pv gets it, with the scene's program
+   pruned for it when the scene is a built-in program (fovsdf__prune_cone; thresholds from mc's
+   eps to mp's at t_max), or the cone alone for a batch callback. Returns 0 when neither
+   applies (the tile marches with the marchers as they are). */
+FOVSDF__PRIV int fovsdf__tile_cone(const fovsdf_ctx *c, const fovsdf__marcher *mc,
+                                   const fovsdf__marcher *mp, float x0, float y0, float x1,
+                                   float y1, fovsdf__pruned *pv)
+{
+    fovsdf_ray_cone q;
+    float e_lo, e_hi;
+    if (mc->sc != mp->sc || mc->inflate < 1.0f || mc->inflate > 1.0f) return 0;
+    /* nothing to do: no pruning (FOVSDF_PRUNE_CODE 0) and no batch callback of the user's */
+    if (FOVSDF_PRUNE_CODE == 0 &&
+        (!mc->sc->dist_batch || mc->sc->dist_batch == fovsdf_program_eval_batch))
+        return 0;
+    q.tan_half = fovsdf__cell_cone(c, x0, y0, x1, y1, q.axis);
+    q.apex[0] = c->origin[0]; q.apex[1] = c->origin[1]; q.apex[2] = c->origin[2];
+    q.t0 = 0.0f;
+    q.t1 = fov__maxf(mc->t_max, mp->t_max) * 1.001f;
+    e_lo = fov__minf(mc->eps, mp->eps);
+    e_hi = fov__maxf(fovsdf__thr_ec(mp, mp->eps_cone, q.t1),
+                     fovsdf__thr_ec(mc, mc->eps_cone, q.t1));
+    /* rule (a) alone saves nothing per evaluation (BDIST costs what the skip costs): the
+       pruned program is used when at least FOVSDF_PRUNE_MIN tests or unions went */
+    if (fovsdf__prune_cone(mc->sc, &q, e_lo, e_hi, pv))
+        return pv->rules[1] + pv->rules[2] + 1u > (uint32_t)(FOVSDF_PRUNE_MIN) ? 1 : 0;
+    if (!mc->sc->dist_batch || mc->sc->dist_batch == fovsdf_program_eval_batch) return 0;
+    pv->cone = q;
+    pv->pruned = 0;
+    pv->e_lo = e_lo; pv->e_hi = e_hi;
+    return 1;
+}
+
 /* A cell of the cone pyramid: its pixel rectangle relative to the tile's corner, its level and
    its parent's t. */
 typedef struct fovsdf__cell { uint16_t x0, y0, x1, y1, level; float t; } fovsdf__cell;
@@ -6652,6 +7242,12 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
     uint32_t sp[FOVSDF_CONE_SLOTS], s, i, nb, act[FOVSDF_CONE_SLOTS];
     int busy[FOVSDF_CONE_SLOTS];
     uint64_t e = 0;
+    fovsdf__pruned pv;
+    fovsdf__marcher mc2, mp2;
+    if (fovsdf__tile_cone(c, mc, mp, (float)x0, (float)y0, (float)x1, (float)y1, &pv)) {
+        mc2 = *mc; mc2.pv = &pv; mc = &mc2;
+        mp2 = *mp; mp2.pv = &pv; mp = &mp2;
+    }
     for (s = 0; s < FOVSDF_CONE_SLOTS; ++s) { sp[s] = 0; busy[s] = 0; }
     stk[0][0].x0 = 0; stk[0][0].y0 = 0; stk[0][0].x1 = (uint16_t)(x1 - x0);
     stk[0][0].y1 = (uint16_t)(y1 - y0); stk[0][0].level = 1; stk[0][0].t = 0.0f;
@@ -6739,8 +7335,8 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
                 wv->by[i] = c->origin[1] + p->a[1] * p->t;
                 wv->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f,
-                              wv->bd, 0, wv->st);
+            fovsdf__wave_eval_m(mc, nb, wv->bx, wv->by, wv->bz, wv->be, 1.0f, wv->bd, 0,
+                                wv->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[s + i]];
@@ -6755,6 +7351,7 @@ fovsdf__cone_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__
         }
     }
     wv->st->evals_lowres += e;
+    if (mp == &mp2 && wv->nj > 0) fovsdf__wave_flush(wv); /* pv ends with the tile */
 }
 
 FOVSDF_API fov_result fovsdf_min_filter(const float *in, uint32_t w, uint32_t h, int32_t radius,
@@ -7565,8 +8162,7 @@ FOVSDF__PRIV void fovsdf__fov_cones(fovsdf__fovt *f, const fovsdf__marcher *mc, 
                 w->bx[i] = c->origin[0] + p->a[0] * p->t; w->by[i] = c->origin[1] + p->a[1] * p->t;
                 w->bz[i] = c->origin[2] + p->a[2] * p->t;
             }
-            fovsdf__wave_eval(mc->sc, mc->inv_lip, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0,
-                              w->st);
+            fovsdf__wave_eval_m(mc, nb, w->bx, w->by, w->bz, w->be, 1.0f, w->bd, 0, w->st);
             e += nb;
             for (i = 0; i < nb; ++i) {
                 fovsdf__wcone *p = &cn[act[j + i]];
@@ -7704,6 +8300,8 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
     uint32_t T, x, y, i, ph = c->cfg.frame % c->cfg.refresh, left;
     int32_t am;
     int due;
+    fovsdf__pruned pv;
+    fovsdf__marcher mc2, mp2;
     f.c = c; f.mp = mp; f.mid = mid; f.l0 = l0; f.l0s = l0 + FOVSDF_FOV_CELLS; f.st = st;
     f.wv = wv; f.rqm = rqm; f.rql = rql; f.rqs = rqs; f.nrm = 0; f.nrl = 0; f.nrs = 0;
     f.miss = 0;
@@ -7738,6 +8336,12 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         FOV_ASSERT(T % 4u == 0 && (size_t)f.qs * f.qs <= FOVSDF__FOV_QCELLS);
         for (i = 0; i < f.qs * f.qs; ++i) { qc[i].state = 0; qc[i].req = 0; }
     }
+    /* the cone of the tile and its apron's 2x2 cells (as the apron's cone in fovsdf__fov_cones) */
+    if (f.cone && fovsdf__tile_cone(c, mc, mp, (float)tx - 2.0f, (float)ty - 2.0f,
+                                    (float)(tx + T) + 2.0f, (float)(ty + T) + 2.0f, &pv)) {
+        mc2 = *mc; mc2.pv = &pv; mc = &mc2;
+        mp2 = *mp; mp2.pv = &pv; f.mp = &mp2;
+    }
     if (f.cone) fovsdf__fov_cones(&f, mc, tx, ty, T);
     /* rounds: each pixel goes as far as the cells it needs allow; the cells it misses are
        requested and marched (or shaded) as one wavefront (fovsdf__fov_run) before the next
@@ -7757,6 +8361,7 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         FOV_ASSERT(f.nrm > 0 || f.nrl > 0 || f.nrs > 0 || f.nrq > 0);
         fovsdf__fov_run(&f);
     }
+    if (f.mp == &mp2 && wv->nj > 0) fovsdf__wave_flush(wv); /* pv ends with the tile */
 }
 
 FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint32_t y0, uint32_t x1,

@@ -11,7 +11,7 @@
 # T everything runs. The sections, in order:
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
-#     acuity_fovsdf,
+#     acuity_fovsdf, prune_fovsdf,
 #     fov_cells_sanitizers, unit_fovpt acuity_fovpt unit_fovpt_nosimd, unit_fovlp taa_fovlp
 #     numerics_fovlp, srgb8_fovlp acuity_fovlp, api_stress, versions, stats, camera, eye, errors
 #     errors_nostrings,
@@ -130,6 +130,7 @@ three_builds heads_fovsdf tests/test_fovsdf_heads.c
 three_builds props_fovsdf tests/test_fovsdf_props.c
 three_builds batch_fovsdf tests/test_fovsdf_batch.c
 three_builds wave_fovsdf tests/test_fovsdf_wave.c
+three_builds prune_fovsdf tests/test_fovsdf_prune.c
 three_builds acuity_fovsdf tests/test_fovsdf_acuity.c
 run_section wave_variants bash tests/wave_variants.sh
 three_builds naive_sdf tests/test_sdf_naive.c

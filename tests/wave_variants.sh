@@ -3,7 +3,8 @@
 # (FOVSDF_WAVE), how many points a batch holds (FOVSDF_BATCH), the SIMD paths (FOVSDF_NO_SIMD),
 # how many cones of a CONE tile are in flight (FOVSDF_CONE_SLOTS, 1 by default, 5 and 32 in the
 # cone_slots variants, where idle slots take other slots' cells) or the shadow proofs
-# (FOVSDF_SHADOW_GROUP 16: on): tests/test_fovsdf_wave.c built with each variant passes its own
+# (FOVSDF_SHADOW_GROUP 16: on) or the per-tile pruning of built-in programs (FOVSDF_PRUNE_CODE,
+# forced on for every tile): tests/test_fovsdf_wave.c built with each variant passes its own
 # checks and prints the same "INFO hash" lines as the default build; the evaluation counts
 # ("INFO counts") too, for the variants that group rays as the default build does.
 cd "$(dirname "$0")/.." || exit 2
@@ -30,12 +31,13 @@ n=$(wc -l <"$OUT/default.hash")
 for v in "batch1_wave16:-DFOVSDF_BATCH=1 -DFOVSDF_WAVE=16" "batch7_wave40:-DFOVSDF_BATCH=7 -DFOVSDF_WAVE=40" \
          "batch64_wave256:-DFOVSDF_BATCH=64 -DFOVSDF_WAVE=256" "no_simd:-DFOVSDF_NO_SIMD" \
          "batch5:-DFOVSDF_BATCH=5" "proofs16:-DFOVSDF_SHADOW_GROUP=16" \
-         "cone_slots5:-DFOVSDF_CONE_SLOTS=5" "cone_slots32:-DFOVSDF_CONE_SLOTS=32"; do
+         "cone_slots5:-DFOVSDF_CONE_SLOTS=5" "cone_slots32:-DFOVSDF_CONE_SLOTS=32" \
+         "prune:-DFOVSDF_PRUNE_CODE=512 -DFOVSDF_PRUNE_MIN=0"; do
     name=${v%%:*}; flags=${v#*:}
     run "$name" "$flags" || continue
     if cmp -s "$OUT/default.hash" "$OUT/$name.hash"; then ok "${name}_same_images"
     else bad "${name}_same_images" "$(diff "$OUT/default.hash" "$OUT/$name.hash" | head -2 | tr '\n' ' ')"; fi
-    case $name in no_simd|batch5)
+    case $name in no_simd|batch5|prune)
         if cmp -s "$OUT/default.counts" "$OUT/$name.counts"; then ok "${name}_same_counts"
         else bad "${name}_same_counts" "$(diff "$OUT/default.counts" "$OUT/$name.counts" | head -2 | tr '\n' ' ')"; fi;;
     esac
