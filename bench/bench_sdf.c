@@ -112,7 +112,7 @@
 
 /* what a row renders: the library on the built-in program, the naive loop, or the library on
    the scene's C function as a per-point or a batch callback */
-enum { K_LIB = 0, K_NAIVE, K_CB_POINT, K_CB_BATCH };
+enum { K_LIB = 0, K_NAIVE, K_CB_POINT, K_CB_BATCH, K_SHFOV };
 
 typedef struct job_t {
     uint32_t scene, method, spp, corner, refresh, kind;
@@ -470,6 +470,7 @@ static const char *row_method(const job_t *jb, char *buf, size_t n)
 {
     if (jb->kind == K_NAIVE) return "naive";
     if (jb->kind == K_LIB) return fovsdf_method_name(jb->method);
+    if (jb->kind == K_SHFOV) { snprintf(buf, n, "%s_shfov", fovsdf_method_name(jb->method)); return buf; }
     snprintf(buf, n, "%s_cb_%s", fovsdf_method_name(jb->method), jb->kind == K_CB_POINT ? "point" : "batch");
     return buf;
 }
@@ -552,6 +553,17 @@ int main(int argc, char **argv)
 #endif
                     jb->scene = id; jb->method = cm; jb->spp = 1; jb->corner = g;
                     jb->fovea = foveated(cm) ? 7.5f : 0.0f;
+                    jb->refresh = 1;
+                    ++njobs;
+                }
+                /* then, with shadows, cone and cone_fov with cheaper shadow rays beyond 7.5
+                   degrees (cone_fov's fovea): the rows cone_shfov and cone_fov_shfov */
+                for (m = 0; m < 2 && shadows && njobs < 4096; ++m) {
+                    job_t *jb = &jobs[njobs];
+                    jb->kind = K_SHFOV;
+                    jb->method = m == 0 ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_CONE_FOV;
+                    jb->scene = id; jb->spp = 1; jb->corner = g;
+                    jb->fovea = foveated(jb->method) ? 7.5f : 0.0f;
                     jb->refresh = 1;
                     ++njobs;
                 }
@@ -647,6 +659,10 @@ int main(int argc, char **argv)
             cfg.spp = jb->spp;
             cfg.shading = shadows ? FOVSDF_SHADE_FULL : FOVSDF_SHADE_NO_SHADOWS;
             if (foveated(jb->method)) { cfg.acuity.fovea_deg = jb->fovea; cfg.refresh = jb->refresh; }
+            if (jb->kind == K_SHFOV) { /* beyond the fovea (7.5 degrees), the chosen variant */
+                cfg.shadow_fov_deg = 7.5f;
+                SHFOV_CFG(cfg);
+            }
             fovsdf_output_init(&out);
             out.rgb = im.rgb; out.depth = im.depth; out.hit = im.hit; out.mask = mask;
             memset(&rq, 0, sizeof rq);
