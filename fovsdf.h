@@ -254,17 +254,20 @@ CHEAPER SHADOWS BEYOND THE FOVEA
                temple 23.4 -> 18.4 (0.0, 0.0), atrium 49.9 -> 37.1 (-1.3, -1.0: contact
                shadows at its pillars), thin 10.2 -> 8.6 (-0.8, -0.4), fractals 12.8 -> 10.6
                (-0.5, -0.7)
-   shadow_fov_t0_px 2 keeps every band within 0.1 dB and saves about half as much; 8 saves
-   another 10 % (fractals: -0.5 dB). The issue's alternative, a step budget shadow_fov_steps
-   below shadow_steps, is far worse per evaluation saved: a ray that runs out where the
-   penumbra is not yet known leaks light or, dark when still in a penumbra (as here), shadow
-   where there is none; at 16 steps cone_fov's shadow work halves on columns, temple and
-   atrium but they lose 5-8 dB beyond the fovea. A minimum step of a fraction of t (tried:
-   0.05-0.2 t) saved 2-25 % for 0.1-2.5 dB; a start offset in world units (0.05-0.2) saves
-   like the footprint one but loses up to 1.4 dB on fractals (its details are small in world
-   units). fovsdf_config_acuity leaves shadow_fov_deg as the caller set it (default off):
-   at its fovea (plan.e_half, 11-18 degrees here) the default start costs fractals 0.4 dB of
-   eye-filtered PSNR, a missing shadow being contrast, not detail the eye filter removes.
+   For cone_fov, shadow_fov_t0_px 2 keeps every band within 0.1 dB and saves about 60 % as
+   much; 8 saves another 10 % (fractals: -0.8 dB at 10-20 degrees). The issue's alternative,
+   a step budget shadow_fov_steps below shadow_steps, is far worse per evaluation saved: a ray
+   that runs out where its penumbra is not yet known leaks light (its running minimum) or,
+   dark when still in a penumbra (as here, slightly better), shadows where there are none.
+   cone_fov at 16 steps alone halves the shadow work of columns, temple and atrium but loses
+   3-12 dB in their worst band; 32 steps on top of the default start saves another 7-16 %
+   for 0.1-0.5 dB. A minimum step of a fraction of t (0.05-0.2) saved 1-24 % for up to 2 dB;
+   a start offset in world units (0.05-0.2) saves like the footprint one but loses up to
+   1.4 dB on fractals (cone), whose details are small in world units.
+   fovsdf_config_acuity leaves the shadow_fov fields as the caller set them (default off):
+   from its fovea on (plan.e_half, 11-18 degrees here) the default start costs fractals 0.4 dB
+   of eye-filtered PSNR (a missing shadow is contrast, not detail the eye filter removes), and
+   2 pixel footprints, within 0.02 dB everywhere, save only 4-11 % of the shadow work.
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -5213,16 +5216,16 @@ typedef struct fovsdf__sco {
     float p[3], l[3], t, t_end, t_stop, k, res, floor0, t_att; /* t_stop <= t_end: see the
                                                                  wavefront's shadow proof */
     uint32_t i, evals, steps;       /* steps: the budget */
-    int far;                        /* beyond shadow_fov_deg */
+    int peri;                        /* beyond shadow_fov_deg */
 } fovsdf__sco;
 
 /* Starts a shadow ray; returns 1 when it needs an evaluation (at p + t l). */
 FOVSDF__PRIV int fovsdf__sco_init(const fovsdf_ctx *c, fovsdf__sco *s, const float p[3],
-                                  const float l[3], float t_start, float t_end, float k, int far,
+                                  const float l[3], float t_start, float t_end, float k, int peri,
                                   fovsdf_stats *st)
 {
-    s->far = far;
-    s->steps = far ? c->cfg.shadow_fov_steps : c->cfg.shadow_steps;
+    s->peri = peri;
+    s->steps = peri ? c->cfg.shadow_fov_steps : c->cfg.shadow_steps;
     s->p[0] = p[0]; s->p[1] = p[1]; s->p[2] = p[2];
     s->l[0] = l[0]; s->l[1] = l[1]; s->l[2] = l[2];
     s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->t_stop = t_end; s->k = k;
@@ -5244,7 +5247,7 @@ FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
         float tp = s->t;
         s->t += fov__maxf(h, s->floor0 + 8.0f * FLT_EPSILON * s->t);
         ++s->i;
-        if (s->far && s->i >= s->steps && s->steps < c->cfg.shadow_steps && s->t < s->t_stop &&
+        if (s->peri && s->i >= s->steps && s->steps < c->cfg.shadow_steps && s->t < s->t_stop &&
             s->k * h < tp)
             s->res = 0.0f; /* beyond shadow_fov_deg, out of its cut budget in a penumbra: dark */
     }
@@ -5254,12 +5257,12 @@ FOVSDF__PRIV int fovsdf__sco_next(const fovsdf_ctx *c, fovsdf__sco *s, float h)
 /* Algorithm 2 core, point by point, on the scene scaled by inflate (Skipping Spheres'
    low-resolution shadow rays); *t_out: where the penumbra began, or the distance reached. */
 FOVSDF__PRIV float fovsdf__shadow(const fovsdf_ctx *c, const float p[3], const float l[3],
-                                  float t_start, float t_end, float k, float inflate, int far,
+                                  float t_start, float t_end, float k, float inflate, int peri,
                                   float *t_out, fovsdf_stats *st)
 {
     fovsdf__sco s;
     float inv = 1.0f / c->scene.lipschitz;
-    int more = fovsdf__sco_init(c, &s, p, l, t_start, t_end, k, far, st);
+    int more = fovsdf__sco_init(c, &s, p, l, t_start, t_end, k, peri, st);
     while (more) {
         float q[3], h;
         q[0] = s.p[0] + s.l[0] * s.t; q[1] = s.p[1] + s.l[1] * s.t; q[2] = s.p[2] + s.l[2] * s.t;
@@ -5349,7 +5352,7 @@ FOVSDF__PRIV int fovsdf__light_dir(const fovsdf_ctx *c, uint32_t i, const float 
    here, shadow 1 with the shadow ray's start q (p off the surface by off), t0, dist and k. */
 typedef struct fovsdf__lit { float l[3], ndl, att, q[3], t0, dist, k; int shadow; } fovsdf__lit;
 FOVSDF__PRIV int fovsdf__light_prep(const fovsdf_ctx *c, uint32_t i, const float p[3],
-                                    const float n[3], float off, const float *sh_start, int far,
+                                    const float n[3], float off, const float *sh_start, int peri,
                                     fovsdf__lit *o)
 {
     const fovsdf_light *L = &c->scene.lights[i];
@@ -5360,7 +5363,7 @@ FOVSDF__PRIV int fovsdf__light_prep(const fovsdf_ctx *c, uint32_t i, const float
     if (c->cfg.shading == FOVSDF_SHADE_FULL && L->shadow_k >= 0.0f) {
         o->k = L->shadow_k > 0.0f ? L->shadow_k : 16.0f;
         o->t0 = c->cfg.shadow_t0;
-        if (far) { /* beyond shadow_fov_deg: shadow_fov_t0_px pixel footprints at p */
+        if (peri) { /* beyond shadow_fov_deg: shadow_fov_t0_px pixel footprints at p */
             float dv[3], t0f;
             dv[0] = p[0] - c->origin[0]; dv[1] = p[1] - c->origin[1]; dv[2] = p[2] - c->origin[2];
             t0f = c->cfg.shadow_fov_t0_px * c->pixel_angle * fov__len(dv);
@@ -5397,7 +5400,7 @@ FOVSDF__PRIV float fovsdf__shadow_off(const fovsdf_ctx *c, const float p[3])
 }
 
 FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const float n[3],
-                                int32_t material, float rgb[3], const float *sh_start, int far,
+                                int32_t material, float rgb[3], const float *sh_start, int peri,
                                 fovsdf_stats *st)
 {
     float alb[3], acc[3], off;
@@ -5409,9 +5412,9 @@ FOVSDF__PRIV void fovsdf__shade(const fovsdf_ctx *c, const float p[3], const flo
         const fovsdf_light *L = &c->scene.lights[i];
         fovsdf__lit lt;
         float sh = 1.0f, tr;
-        if (!fovsdf__light_prep(c, i, p, n, off, sh_start, far, &lt)) continue;
+        if (!fovsdf__light_prep(c, i, p, n, off, sh_start, peri, &lt)) continue;
         if (lt.shadow)
-            sh = fovsdf__shadow(c, lt.q, lt.l, lt.t0, lt.dist, lt.k, 1.0f, far, &tr, st);
+            sh = fovsdf__shadow(c, lt.q, lt.l, lt.t0, lt.dist, lt.k, 1.0f, peri, &tr, st);
         acc[0] += L->color[0] * lt.ndl * lt.att * sh;
         acc[1] += L->color[1] * lt.ndl * lt.att * sh;
         acc[2] += L->color[2] * lt.ndl * lt.att * sh;
@@ -5859,7 +5862,7 @@ typedef struct fovsdf__wray {
     float p[3], n[3], col[3], alb[3], acc[3], dv[4], off, ndl, att;
     uint32_t sev;                   /* shading evaluations */
     int hit, lit, prep, shadow;     /* lit: Lambert with lights; prep, shadow: the current light */
-    int far;                        /* beyond shadow_fov_deg: cheaper shadow rays */
+    int peri;                        /* beyond shadow_fov_deg: cheaper shadow rays */
 } fovsdf__wray;
 
 /* The shadow proof of a group of shadow rays (fovsdf__wave_flush, step 4): rays q_i + t l_i,
@@ -6248,7 +6251,7 @@ FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, 
         r->acc[0] = c->scene.ambient[0]; r->acc[1] = c->scene.ambient[1];
         r->acc[2] = c->scene.ambient[2];
         r->off = fovsdf__shadow_off(c, r->p);
-        r->far = fovsdf__shadow_far(c, r->mc.rd);
+        r->peri = fovsdf__shadow_far(c, r->mc.rd);
     }
     /* 4. lights in order, each with its shadow rays as one wavefront (as fovsdf__shade) */
     for (li = 0; li < c->scene.num_lights; ++li) {
@@ -6261,11 +6264,11 @@ FOVSDF__PRIV void fovsdf__wave_shade(fovsdf__wave *w, const fovsdf__marcher *m, 
             r->prep = 0;
             if (!r->lit) continue;
             if (jb && !(jb->has_sh && fov__absf(r->mc.t - jb->sh_ref_t) <= jb->sh_tol)) jb = 0;
-            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off, jb ? jb->sh : NULL, r->far, &lt))
+            if (!fovsdf__light_prep(c, li, r->p, r->n, r->off, jb ? jb->sh : NULL, r->peri, &lt))
                 continue;
             r->prep = 1; r->ndl = lt.ndl; r->att = lt.att; r->shadow = lt.shadow;
             if (lt.shadow && fovsdf__sco_init(c, &w->sco[k], lt.q, lt.l, lt.t0, lt.dist, lt.k,
-                                              r->far, st))
+                                              r->peri, st))
                 w->gm[cnt++] = k;
         }
         fovsdf__wave_proofs(w, li, cnt);
