@@ -885,7 +885,7 @@ typedef struct fovsdf_config {
                                shadow_steps; below shadow_steps, a ray that runs out still in
                                a penumbra (its last k h / t < 1) is dark (0), else it keeps its
                                running minimum (measured: costly in error, see CHEAPER
-                               SHADOWS BEYOND THE FOVEA)          0: shadow_steps (no cut) */
+                               SHADOWS BEYOND THE FOVEA)  0 (kept 0): shadow_steps, no cut */
     float normal_eps;       /* tetrahedron half-size; 0: 0.5 pixel cone at the hit (>= 1e-4) */
     uint32_t cone_tile;     /* CONE: side of the top-level tiles, pixels, power of 2 <= 256;
                                                                                    0: 16 */
@@ -2539,7 +2539,7 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
     if (c.shadow_fov_t0_px < 0.0f)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.shadow_fov_t0_px must be >= 0 (0: 4)");
     if (fov__is0(c.shadow_fov_t0_px)) c.shadow_fov_t0_px = 4.0f;
-    if (c.shadow_fov_steps == 0) c.shadow_fov_steps = c.shadow_steps;
+    /* shadow_fov_steps 0 stays 0 (shadow_steps): a default config takes any shadow_steps */
     if (c.shadow_fov_steps > c.shadow_steps)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
                      "config.shadow_fov_steps must be <= shadow_steps (0: shadow_steps)");
@@ -5225,7 +5225,7 @@ FOVSDF__PRIV int fovsdf__sco_init(const fovsdf_ctx *c, fovsdf__sco *s, const flo
                                   fovsdf_stats *st)
 {
     s->peri = peri;
-    s->steps = peri ? c->cfg.shadow_fov_steps : c->cfg.shadow_steps;
+    s->steps = peri && c->cfg.shadow_fov_steps ? c->cfg.shadow_fov_steps : c->cfg.shadow_steps;
     s->p[0] = p[0]; s->p[1] = p[1]; s->p[2] = p[2];
     s->l[0] = l[0]; s->l[1] = l[1]; s->l[2] = l[2];
     s->res = 1.0f; s->t = t_start; s->t_end = t_end; s->t_stop = t_end; s->k = k;

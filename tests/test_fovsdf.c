@@ -2924,12 +2924,14 @@ static void test_shadow_fov_config(void)
     fovsdf_config z, c, o;
     memset(&z, 0, sizeof z);
     expect_res("shadow_fov_resolve_zero", fovsdf_config_resolve(&z, &c), FOV_OK);
-    check(c.shadow_fov_deg == 0.0f && c.shadow_fov_steps == 64u && c.shadow_fov_t0_px == 4.0f,
+    check(c.shadow_fov_deg == 0.0f && c.shadow_fov_steps == 0u && c.shadow_fov_t0_px == 4.0f,
           "shadow_fov_defaults_documented", "deg %g steps %u t0_px %g", (double)c.shadow_fov_deg,
           c.shadow_fov_steps, (double)c.shadow_fov_t0_px);
+    /* a default config with fewer shadow steps stays valid (shadow_fov_steps 0: shadow_steps) */
+    z = fovsdf_config_default();
     z.shadow_steps = 8;
     expect_res("shadow_fov_resolve_small_budget", fovsdf_config_resolve(&z, &c), FOV_OK);
-    check(c.shadow_fov_steps == 8u, "shadow_fov_steps_default_shadow_steps", "%u", c.shadow_fov_steps);
+    check(c.shadow_fov_steps == 0u, "shadow_fov_steps_kept_0", "%u", c.shadow_fov_steps);
     z = fovsdf_config_default();
     z.shadow_fov_deg = 180.0f; z.shadow_fov_steps = 64; z.shadow_fov_t0_px = 1e3f;
     expect_res("shadow_fov_resolve_edges_ok", fovsdf_config_resolve(&z, &c), FOV_OK);
