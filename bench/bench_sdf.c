@@ -25,7 +25,10 @@
                   calling the C function), when fovsdf.h has it
      M_cb         the faster of M_cb_point and M_cb_batch (a copy of that row)
    so users with their own SDF see what the library gives them, and the interpreter's cost is
-   visible (M_cb against M).
+   visible (M_cb against M); then, with shadows:
+     M_shfov      method M (cone, cone_fov) with cheaper shadow rays beyond 7.5 degrees of the
+                  gaze (config.shadow_fov_deg 7.5, the other shadow_fov fields at their
+                  defaults; cone_fov's fovea is 7.5 degrees), the last rows of the group
 
    Writes bench/results/sdf.csv; the first columns are an interface other tools read:
      scene,method,spp,fovea_deg,refresh,gaze,evals_per_px,time_ms,speedup_vs_classic,psnr,ssim,
@@ -67,7 +70,7 @@
    --size: the image size (default 640x360); --append: add rows to FILE (no header line when
    it has one), how the second builds join the default one's CSV.
    Default grid: every method at 1 spp with the gaze at the centre (fipr and cone_fov with
-   the 7.5-degree fovea, refresh 1), naive and the *_cb rows, classic, cone and ipr at 4 and
+   the 7.5-degree fovea, refresh 1), naive, the *_cb and *_shfov rows, classic, cone and ipr at 4 and
    16 spp, and cone_fov at 16 spp beside classic at 16 spp (about 11 minutes on 2 cores at
    640x360 without shadows, before the naive and callback rows; shadows and the one-thread
    run of each row make it several times longer). --full: every method at 1, 4, 16 spp, gaze
@@ -112,7 +115,7 @@
 
 /* what a row renders: the library on the built-in program, the naive loop, or the library on
    the scene's C function as a per-point or a batch callback */
-enum { K_LIB = 0, K_NAIVE, K_CB_POINT, K_CB_BATCH };
+enum { K_LIB = 0, K_NAIVE, K_CB_POINT, K_CB_BATCH, K_SHFOV };
 
 typedef struct job_t {
     uint32_t scene, method, spp, corner, refresh, kind;
@@ -470,6 +473,7 @@ static const char *row_method(const job_t *jb, char *buf, size_t n)
 {
     if (jb->kind == K_NAIVE) return "naive";
     if (jb->kind == K_LIB) return fovsdf_method_name(jb->method);
+    if (jb->kind == K_SHFOV) { snprintf(buf, n, "%s_shfov", fovsdf_method_name(jb->method)); return buf; }
     snprintf(buf, n, "%s_cb_%s", fovsdf_method_name(jb->method), jb->kind == K_CB_POINT ? "point" : "batch");
     return buf;
 }
@@ -552,6 +556,17 @@ int main(int argc, char **argv)
 #endif
                     jb->scene = id; jb->method = cm; jb->spp = 1; jb->corner = g;
                     jb->fovea = foveated(cm) ? 7.5f : 0.0f;
+                    jb->refresh = 1;
+                    ++njobs;
+                }
+                /* then, with shadows, cone and cone_fov with cheaper shadow rays beyond 7.5
+                   degrees (cone_fov's fovea): the rows cone_shfov and cone_fov_shfov */
+                for (m = 0; m < 2 && shadows && njobs < 4096; ++m) {
+                    job_t *jb = &jobs[njobs];
+                    jb->kind = K_SHFOV;
+                    jb->method = m == 0 ? FOVSDF_METHOD_CONE : FOVSDF_METHOD_CONE_FOV;
+                    jb->scene = id; jb->spp = 1; jb->corner = g;
+                    jb->fovea = foveated(jb->method) ? 7.5f : 0.0f;
                     jb->refresh = 1;
                     ++njobs;
                 }
@@ -647,6 +662,7 @@ int main(int argc, char **argv)
             cfg.spp = jb->spp;
             cfg.shading = shadows ? FOVSDF_SHADE_FULL : FOVSDF_SHADE_NO_SHADOWS;
             if (foveated(jb->method)) { cfg.acuity.fovea_deg = jb->fovea; cfg.refresh = jb->refresh; }
+            if (jb->kind == K_SHFOV) cfg.shadow_fov_deg = 7.5f; /* the defaults otherwise */
             fovsdf_output_init(&out);
             out.rgb = im.rgb; out.depth = im.depth; out.hit = im.hit; out.mask = mask;
             memset(&rq, 0, sizeof rq);

@@ -2890,6 +2890,197 @@ static void test_more_ranges(void)
 /* ==== main ================================================================================ */
 /* Build with -DTEST_FOVSDF_SECTION_COUNTS to get the number of checks per section on
    stderr (the normal output is only the check lines and the summary). */
+
+/* ==== 6. cheaper shadow rays beyond an eccentricity (config.shadow_fov_deg) ================ */
+
+typedef struct msgrec {
+    int calls;
+    int32_t code;
+    char msg[256];
+} msgrec;
+static void msg_logger(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line, void *user)
+{
+    msgrec *r = (msgrec *)user;
+    (void)tag; (void)level; (void)line;
+    r->calls++;
+    r->code = code;
+    snprintf(r->msg, sizeof r->msg, "%s", msg ? msg : "");
+}
+
+/* bad values: the code, and a message naming the field */
+static void test_shadow_fov_config(void)
+{
+    static const struct { const char *name, *field; int which; float v; fov_result want; } bad[] = {
+        { "deg_negative", "shadow_fov_deg", 0, -1.0f, FOV_ERR_INVALID_ARG },
+        { "deg_above_180", "shadow_fov_deg", 0, 180.5f, FOV_ERR_INVALID_ARG },
+        { "deg_nan", "shadow_fov_deg", 0, 0.0f, FOV_ERR_NOT_FINITE },
+        { "deg_inf", "shadow_fov_deg", 0, 1.0f, FOV_ERR_NOT_FINITE },
+        { "steps_above_shadow_steps", "shadow_fov_steps", 1, 65.0f, FOV_ERR_INVALID_ARG },
+        { "t0_px_negative", "shadow_fov_t0_px", 2, -0.5f, FOV_ERR_INVALID_ARG },
+        { "t0_px_nan", "shadow_fov_t0_px", 2, 0.0f, FOV_ERR_NOT_FINITE },
+        { "t0_px_inf", "shadow_fov_t0_px", 2, 1.0f, FOV_ERR_NOT_FINITE },
+    };
+    unsigned i;
+    fovsdf_config z, c, o;
+    memset(&z, 0, sizeof z);
+    expect_res("shadow_fov_resolve_zero", fovsdf_config_resolve(&z, &c), FOV_OK);
+    check(c.shadow_fov_deg == 0.0f && c.shadow_fov_steps == 0u && c.shadow_fov_t0_px == 4.0f,
+          "shadow_fov_defaults_documented", "deg %g steps %u t0_px %g", (double)c.shadow_fov_deg,
+          c.shadow_fov_steps, (double)c.shadow_fov_t0_px);
+    /* a default config with fewer shadow steps stays valid (shadow_fov_steps 0: shadow_steps) */
+    z = fovsdf_config_default();
+    z.shadow_steps = 8;
+    expect_res("shadow_fov_resolve_small_budget", fovsdf_config_resolve(&z, &c), FOV_OK);
+    check(c.shadow_fov_steps == 0u, "shadow_fov_steps_kept_0", "%u", c.shadow_fov_steps);
+    z = fovsdf_config_default();
+    z.shadow_fov_deg = 180.0f; z.shadow_fov_steps = 64; z.shadow_fov_t0_px = 1e3f;
+    expect_res("shadow_fov_resolve_edges_ok", fovsdf_config_resolve(&z, &c), FOV_OK);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
+        msgrec lr;
+        fov_result r;
+        float v = bad[i].v;
+        if (bad[i].want == FOV_ERR_NOT_FINITE) v = bad[i].v > 0.0f ? f_inf() : f_nan();
+        c = fovsdf_config_default();
+        memset(&lr, 0, sizeof lr);
+        c.logger.func = msg_logger;
+        c.logger.user = &lr;
+        if (bad[i].which == 0) c.shadow_fov_deg = v;
+        else if (bad[i].which == 1) c.shadow_fov_steps = (uint32_t)v;
+        else c.shadow_fov_t0_px = v;
+        o = c;
+        r = fovsdf_config_resolve(&c, &o);
+        check(r == bad[i].want && lr.calls >= 1 && strstr(lr.msg, bad[i].field) != NULL,
+              N("shadow_fov_rejects_%s", bad[i].name), "got %s, want %s, message \"%s\"", rname(r),
+              rname(bad[i].want), lr.msg);
+    }
+}
+
+/* The eccentricity test of the shaded rays against fovsdf_ecc_deg, with an off-centre gaze
+   and a display other than the camera (its own field of view, an axis offset). */
+static void test_shadow_fov_ecc(void)
+{
+    fovsdf_config cfg = fovsdf_config_default();
+    fovsdf_ctx ctx;
+    tsdf u;
+    fovsdf_scene sc;
+    fovsdf_camera cam;
+    uint32_t k, bad = 0, nfar = 0, nnear = 0;
+    static const float degs[4] = { 2.0f, 7.5f, 20.0f, 100.0f };
+    tsdf_sphere(&u, 0.0f, 0.0f, 0.0f, 1.0f);
+    scene_for(&sc, &u);
+    cam_at(&cam, 160, 90, 0.3f, 0.2f, -5.0f, 0.0f, 0.1f, 0.0f);
+    cam.fov_y_deg = 70.0f;
+    cfg.display.fov_y_deg = 40.0f;
+    cfg.display.axis_dx = 12.0f;
+    cfg.display.axis_dy = -7.0f;
+    for (k = 0; k < 4; ++k) {
+        uint32_t x, y;
+        cfg.shadow_fov_deg = degs[k];
+        if (fovsdf_init(&ctx, &cfg, &sc, &cam, gaze_at(101.0f, 30.0f), NULL, 0) != FOV_OK) {
+            check(0, N("shadow_fov_ecc_init_%u", k), "-");
+            continue;
+        }
+        for (y = 0; y < 90; ++y)
+            for (x = 0; x < 160; ++x) {
+                float ro[3], rd[3], px = (float)x + 0.25f, py = (float)y + 0.75f;
+                float e = fovsdf_ecc_deg(&ctx.ecc, px, py);
+                int far;
+                fovsdf__ray(&ctx, px, py, ro, rd);
+                far = fovsdf__shadow_far(&ctx, rd);
+                if (fabsf(e - degs[k]) < 0.05f) continue; /* rounding at the boundary */
+                if (far != (e > degs[k])) ++bad;
+                if (far) ++nfar; else ++nnear;
+            }
+    }
+    check(bad == 0 && nfar > 1000 && nnear > 1000, "shadow_fov_ecc_matches_ecc_deg",
+          "%u mismatches (%u far, %u near)", bad, nfar, nnear);
+    cfg.shadow_fov_deg = 0.0f;
+    fovsdf_init(&ctx, &cfg, &sc, &cam, gaze_at(101.0f, 30.0f), NULL, 0);
+    {
+        float rd[3] = { 0.0f, 0.0f, -1.0f };
+        check(fovsdf__shadow_far(&ctx, rd) == 0, "shadow_fov_off_never_far", "-");
+    }
+}
+
+/* Off: the shadow_fov fields do nothing (every image and counter as without them); on: the
+   fovea's pixels are the off image's bit for bit, fewer shadow evaluations, finite images. */
+static void test_shadow_fov_render(void)
+{
+    enum { SW = 128, SH = 72 };
+    static float a[SW * SH * 3], b[SW * SH * 3], d1[SW * SH], d2[SW * SH];
+    static uint32_t e1[SW * SH], e2[SW * SH];
+    static unsigned char mem[1 << 20];
+    static const uint32_t scenes[3] = { FOVSDF_SCENE_PRIMITIVES, FOVSDF_SCENE_COLUMNS, FOVSDF_SCENE_TEMPLE };
+    static const uint32_t methods[5] = { FOVSDF_METHOD_CLASSIC, FOVSDF_METHOD_CONE, FOVSDF_METHOD_SKIP,
+                                         FOVSDF_METHOD_FIPR, FOVSDF_METHOD_CONE_FOV };
+    uint32_t si, mi;
+    for (si = 0; si < 3; ++si)
+        for (mi = 0; mi < 5; ++mi) {
+            fovsdf_builtin bi;
+            fovsdf_camera cam;
+            fovsdf_config cfg;
+            fovsdf_ctx ctx;
+            fovsdf_output o;
+            fovsdf_stats s0, s1;
+            fov_gaze g;
+            uint32_t i, inner = 0, nin = 0, ndiff = 0, nbad = 0, v;
+            const char *tag;
+            if (fovsdf_builtin_init(scenes[si], &bi, mem, sizeof mem) != FOV_OK) {
+                check(0, N("shadow_fov_builtin_%u", scenes[si]), "-");
+                continue;
+            }
+            tag = bi.name;
+            cam = bi.camera; cam.width = SW; cam.height = SH;
+            g = gaze_at(0.4f * (float)SW, 0.55f * (float)SH);
+            cfg = fovsdf_config_default();
+            cfg.method = methods[mi];
+            cfg.quarter_deg = mi == 4 ? 12.0f : 0.0f; /* CONE_FOV's quarter level too */
+            for (v = 0; v < 3; ++v) { /* off: 0 default fields, 1 the other fields set, 2 180 deg */
+                fovsdf_config c2 = cfg;
+                float *img = v == 0 ? a : b;
+                if (v >= 1) { c2.shadow_fov_steps = 4; c2.shadow_fov_t0_px = 30.0f; }
+                if (v == 2) c2.shadow_fov_deg = 180.0f;
+                fovsdf_init(&ctx, &c2, &bi.scene, &cam, g, NULL, 0);
+                fovsdf_output_init(&o);
+                o.rgb = img; o.depth = v == 0 ? d1 : d2; o.evals = v == 0 ? e1 : e2;
+                fovsdf_stats_init(v == 0 ? &s0 : &s1);
+                fovsdf_render_rows(&ctx, 0, SH, &o, v == 0 ? &s0 : &s1);
+                if (v >= 1)
+                    check(memcmp(a, b, sizeof a) == 0 && memcmp(d1, d2, sizeof d1) == 0 &&
+                              memcmp(e1, e2, sizeof e1) == 0 && memcmp(&s0, &s1, sizeof s0) == 0,
+                          N("shadow_fov_%s_%s_off_%s_unchanged", tag, fovsdf_method_name(cfg.method),
+                            v == 1 ? "fields" : "180"),
+                          "images or counters differ");
+            }
+            /* on: 8 degrees, the default start (4 pixel footprints), or a small budget too */
+            cfg.shadow_fov_deg = 8.0f;
+            if (si == 1) cfg.shadow_fov_steps = 8;
+            fovsdf_init(&ctx, &cfg, &bi.scene, &cam, g, NULL, 0);
+            fovsdf_output_init(&o);
+            o.rgb = b;
+            fovsdf_stats_init(&s1);
+            fovsdf_render_rows(&ctx, 0, SH, &o, &s1);
+            for (i = 0; i < SW * SH; ++i) {
+                /* the pixel's samples and the level samples that reach it (a quarter-level cell
+                   spans 4 pixels: ~3 degrees here) stay inside the threshold */
+                float e = fovsdf_ecc_deg(&ctx.ecc, (float)(i % SW) + 0.5f, (float)(i / SW) + 0.5f);
+                int same = memcmp(a + 3 * i, b + 3 * i, 12) == 0;
+                uint32_t k;
+                for (k = 0; k < 3; ++k)
+                    if (!(b[3 * i + k] >= 0.0f && b[3 * i + k] <= 1e4f)) ++nbad;
+                if (e < 8.0f - 3.5f) { ++nin; if (!same) ++inner; }
+                else if (!same) ++ndiff;
+            }
+            check(nin > 20 && inner == 0, N("shadow_fov_%s_%s_fovea_unchanged", tag, fovsdf_method_name(cfg.method)),
+                  "%u of %u fovea pixels differ", inner, nin);
+            check(s1.evals_shadow < s0.evals_shadow,
+                  N("shadow_fov_%s_%s_fewer_shadow_evals", tag, fovsdf_method_name(cfg.method)),
+                  "%llu vs %llu (off)", (unsigned long long)s1.evals_shadow, (unsigned long long)s0.evals_shadow);
+            check(nbad == 0 && ndiff > 0, N("shadow_fov_%s_%s_finite_changed", tag, fovsdf_method_name(cfg.method)),
+                  "%u bad values, %u periphery pixels changed", nbad, ndiff);
+        }
+}
+
 #ifdef TEST_FOVSDF_SECTION_COUNTS
 #define T_SECTION(name)                                                                          \
     do {                                                                                         \
@@ -2943,6 +3134,11 @@ int main(void)
     test_render_sphere();
     test_dist_ex();
     T_SECTION("4 rendering");
+    /* 6. cheaper shadow rays beyond an eccentricity */
+    test_shadow_fov_config();
+    test_shadow_fov_ecc();
+    test_shadow_fov_render();
+    T_SECTION("6 shadow_fov");
 #ifdef FOV_NO_LIBM
     /* 5. the FOV_NO_LIBM math approximations against libm */
     test_nolibm_math();

@@ -2,7 +2,9 @@
    it: a scene's batch callback or its per-point one, any split of the image into rows and
    tiles, and (for the ray tracers) the point-by-point path of fovsdf_shade_point. Prints
    "INFO hash" lines that tests/wave_variants.sh compares across builds with other
-   FOVSDF_BATCH, FOVSDF_WAVE and FOVSDF_NO_SIMD (built with WAVE_HASH_ONLY: the hashes only). */
+   FOVSDF_BATCH, FOVSDF_WAVE and FOVSDF_NO_SIMD (built with WAVE_HASH_ONLY: the hashes only).
+   A quarter of the scene and method pairs render with config.shadow_fov_deg (cheaper shadow
+   rays beyond an eccentricity), whose choice per ray must not depend on the path either. */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
 #include "fovcheck.h"
@@ -112,6 +114,10 @@ int main(void)
             cfg.spp = (meth + id) % 3 == 0 ? 4u : 1u;
             cfg.heuristic_start = id & 1u;
             cfg.shading = (id == 1 && meth == 2) ? FOVSDF_SHADE_STEPS : FOVSDF_SHADE_FULL;
+            /* a quarter of the pairs with cheaper shadow rays beyond 5 degrees of the gaze (the
+               gaze near the corner: both sides in the image), one with a step budget too */
+            if ((meth + id) % 4u == 2u) cfg.shadow_fov_deg = 5.0f;
+            if (id == 2 && meth == 0) cfg.shadow_fov_steps = 6;
             if (fovsdf_init(&c, &cfg, &bi.scene, &cam, g_gaze, 0, 0) != FOV_OK) {
                 check(0, "init", "%s %s", bi.name, mn);
                 continue;
