@@ -327,11 +327,16 @@ THREADING
    (fovsdf_stats_init, then fovsdf_stats_add them up).
    The head-start methods work on grid-aligned tiles: split the rows at multiples of
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
-   image is the same either way). Threads stay with you (examples/fovrun.h runs bands of rows
-   on pthreads): give each worker whole bands of band_rows rows (or more) across the full
-   width, handed out from a shared counter; one call's pixels form the wavefront, so calls of
-   at least FOVSDF_WAVE / spp pixels keep the batches full (a call of one pixel works, with
-   batches of its own samples only).
+   image is the same either way). Threads stay with you (examples/fovrun.h runs them on
+   pthreads). A worker-friendly split: work items of band_rows rows by a multiple of band_rows
+   columns (whole grid tiles, fovsdf_render_tile), each of at least 8 FOVSDF_WAVE / spp pixels
+   (one call's pixels form the wavefront and every call ends with a partial one, so calls of
+   at least FOVSDF_WAVE / spp pixels keep the batches full; a call of one pixel works, with
+   batches of its own samples only), taken in row-major order from a shared counter: the
+   fovea's tiles cost several times the periphery's, and many small items let the workers
+   end together (fixed bands handed out round robin leave one idle for up to a few per cent
+   of the frame). At 640x360 that is 230 items of 64x16 for the cone methods (fovrun.h's
+   FOVRUN_ITEM_PX 1024 at 1 spp).
 
 BATCHED EVALUATION
    Every tracer, normal and shadow ray of a render call evaluates the scene in batches of up
@@ -1304,8 +1309,9 @@ FOVSDF_API void fovsdf_stats_init(fovsdf_stats *stats);   /* every counter 0 */
 FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s); /* acc += s */
 
 /* Rows per band for threading: the head-start methods work on grid-aligned tiles, and a call
-   whose rows cut a tile repeats that tile's coarse work. Split the image into row ranges that
-   start at multiples of this (cone_tile, ipr_tile, skip_block; 1 for the plain tracers).
+   whose rows or columns cut a tile repeats that tile's coarse work. Split the image into row
+   ranges (and column ranges, fovsdf_render_tile) that start at multiples of this (cone_tile,
+   ipr_tile, skip_block; 1 for the plain tracers); THREADING gives a worker-friendly split.
    Results never depend on the split, only the cost. */
 FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *ctx);
 /* Render rows [y0, y1) or the tile [x0, x1) x [y0, y1); stats (may be NULL) is added to. */
