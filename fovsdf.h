@@ -7086,7 +7086,49 @@ typedef struct fovsdf__fovt {
     uint32_t qs, nrq;
     uint32_t *rqq;             /* its requests of this round */
     float qdeg, qband;         /* quarter_deg and the blend band, degrees (0: a hard switch) */
+    /* eccentricity without the atan2 where a threshold decides (fovsdf__ecc_side): squared
+       tangents around fovea_deg (ft2) and around the quarter band (qt2), an upper bound of
+       fovsdf_acuity_p beyond the fovea (p_hi); ecc_fast 0: always the atan2 */
+    int ecc_fast;
+    float ft2lo, ft2hi, qt2lo, qt2hi, p_hi;
 } fovsdf__fovt;
+
+/* Which side of two eccentricities pixel point (x, y) surely lies on, from the squared tangent
+   of its angle to the gaze (|v x g|^2 / (v . g)^2, the terms fov__ecc_deg takes the atan2 of):
+   -1 below the angle whose squared tangent is t2lo, 1 above t2hi's (t2hi < 0: never), 0
+   undecided (take fovsdf_ecc_deg). fovsdf__ecc_t2 widens both by a relative 1e-3 on the
+   tangent (at least 4e-4 of the angle below 60 degrees, a hundred times the float error of the
+   atan2, the tangent and these products), so a decided side is always the side of
+   fovsdf_ecc_deg's value: the same mask and weights as with the atan2 at every pixel. */
+FOVSDF__PRIV int fovsdf__ecc_side(const fov_ecc_model *m, float x, float y, float t2lo,
+                                  float t2hi)
+{
+    float v[3], c[3], s2, co;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v))) return 0;
+    fov__cross(v, m->g, c);
+    s2 = fov__dot(c, c);
+    co = fov__dot(v, m->g);
+    if (!(co > 0.0f) || !fov__finite(s2)) return 0;
+    co *= co;
+    if (!fov__finite(co)) return 0;
+    if (s2 < t2lo * co) return -1;
+    if (t2hi >= 0.0f && s2 > t2hi * co) return 1;
+    return 0;
+}
+
+/* The squared tangents of deg (degrees) widened by the relative margin of fovsdf__ecc_side:
+   *lo just below, *hi just above; -1 for both (no side decided) and 0 when deg is outside
+   (0, 60). */
+FOVSDF__PRIV int fovsdf__ecc_t2(float deg, float *lo, float *hi)
+{
+    float t;
+    if (!(deg > 0.0f && deg < 60.0f)) { *lo = -1.0f; *hi = -1.0f; return 0; }
+    t = FOV__TAN(deg * (FOV__PI / 180.0f));
+    *lo = (t * 0.999f) * (t * 0.999f);
+    *hi = (t * 1.001f) * (t * 1.001f);
+    return 1;
+}
 
 FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh rank of a tile */
 {
@@ -7272,6 +7314,11 @@ FOVSDF__PRIV float fovsdf__fov_qw(const fovsdf__fovt *f, uint32_t x, uint32_t y)
 {
     float w;
     if (!f->quarter) return 0.0f;
+    if (f->ecc_fast) { /* beyond the band's ends the weight is 0 or 1 without the value */
+        int side = fovsdf__ecc_side(&f->c->ecc, (float)x + 0.5f, (float)y + 0.5f, f->qt2lo,
+                                    f->qt2hi);
+        if (side) return side < 0 ? 0.0f : 1.0f;
+    }
     w = fovsdf_ecc_deg(&f->c->ecc, (float)x + 0.5f, (float)y + 0.5f) - f->qdeg;
     if (!(f->qband > 0.0f)) return w >= 0.0f ? 1.0f : 0.0f;
     return fovsdf__clampf(w / f->qband, 0.0f, 1.0f);
@@ -7537,10 +7584,20 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
     int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
     f->miss = 0;
     if (*ps == 0u) {
-        /* step 3: the mask */
-        float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
-        int in;
-        if (w <= c->cfg.acuity.fovea_deg) in = 1;
+        /* step 3: the mask (the eccentricity's value only where the threshold or p needs it:
+           fovsdf__ecc_side; u >= p_hi >= p outside the fovea) */
+        float w = 0.0f, p;
+        int in, side = f->ecc_fast ? fovsdf__ecc_side(&c->ecc, (float)x + 0.5f, (float)y + 0.5f,
+                                                      f->ft2lo, f->ft2hi)
+                                   : 0;
+        if (side > 0 && c->cfg.fov_mask != FOVSDF_MASK_FOVEA &&
+            !(fovsdf_u01(c->cfg.seed, x, y, 0) < f->p_hi))
+            side = 2; /* u >= p: outside the mask */
+        if (side == 0 || (side == 1 && c->cfg.fov_mask != FOVSDF_MASK_FOVEA))
+            w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f); /* p needs it */
+        if (side < 0) in = 1;
+        else if (side == 2) in = 0;
+        else if (side == 0 && w <= c->cfg.acuity.fovea_deg) in = 1;
         else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
         else {
             p = fovsdf_acuity_p(&c->cfg.acuity, w);
@@ -7669,6 +7726,26 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
     f.qs = T / 4u + 2u; f.qu0 = (int32_t)(tx / 4u) - 1; f.qv0 = (int32_t)(ty / 4u) - 1;
     f.qdeg = c->cfg.quarter_deg;
     f.qband = (float)FOVSDF_QUARTER_BAND / (c->ecc.f_px * 0.017453292f);
+    /* the eccentricity's shortcuts (fovsdf__ecc_side), not with math hooks of unknown accuracy */
+#if defined(FOV__HOOKED_MATH)
+    f.ecc_fast = 0;
+#else
+    f.ecc_fast = 1;
+#endif
+    (void)fovsdf__ecc_t2(c->cfg.acuity.fovea_deg, &f.ft2lo, &f.ft2hi);
+    (void)fovsdf__ecc_t2(f.qdeg, &f.qt2lo, &f.qt2hi);
+    if (f.qband > 0.0f) { /* the upper end: where the weight reaches 1 */
+        float lo;
+        (void)fovsdf__ecc_t2(f.qdeg + f.qband, &lo, &f.qt2hi);
+    }
+    {
+        const fovsdf_acuity *a = &c->cfg.acuity;
+        f.p_hi = 2.0f; /* no bound */
+        if (!fov__finite(a->A) || !fov__finite(a->rate) || !fov__finite(a->C))
+            f.p_hi = 0.0f; /* fovsdf_acuity_p is 0 */
+        else if (a->A >= 0.0f && a->rate >= 0.0f && a->fovea_deg > 0.0f && a->fovea_deg < 60.0f)
+            f.p_hi = (a->A * FOV__EXP(-a->rate * a->fovea_deg) + a->C) * 1.001f + 1e-6f;
+    }
     if (f.quarter) {
         FOV_ASSERT(T % 4u == 0 && (size_t)f.qs * f.qs <= FOVSDF__FOV_QCELLS);
         for (i = 0; i < f.qs * f.qs; ++i) { qc[i].state = 0; qc[i].req = 0; }
