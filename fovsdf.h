@@ -7202,15 +7202,13 @@ FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
 }
 
 /* Mid cell (u, v): its march requested on first use, its shading when `shade` (f->miss and a
-   dummy cell until the round's wavefront has run them, fovsdf__fov_run). */
-FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
+   dummy cell until the round's wavefront has run them, fovsdf__fov_run). fovsdf__fov_mid
+   returns a cell that is there at once (inlined: the bilinear taps read 4 or 5 cells per
+   pixel), fovsdf__fov_mid_req does the rest. */
+FOVSDF__PRIV FOVSDF__NOINLINE const fovsdf__mid *
+fovsdf__fov_mid_req(fovsdf__fovt *f, fovsdf__mid *m, int32_t u, int32_t v, int shade)
 {
     const fovsdf_ctx *c = f->c;
-    fovsdf__mid *m;
-    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
-               v < f->mv0 + (int32_t)f->ms);
-    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
-    if (m->state == 2 || (m->state == 1 && !shade)) return m;
     if (m->state == 0 && !(m->req & 1u)) {
         float t0 = 0.0f;
         if (f->cone) {
@@ -7247,6 +7245,16 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
     }
     f->miss = 1;
     return &f->dummy;
+}
+
+FOVSDF__INL const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
+{
+    fovsdf__mid *m;
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
+               v < f->mv0 + (int32_t)f->ms);
+    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
+    if (m->state == 2 || (m->state == 1 && !shade)) return m;
+    return fovsdf__fov_mid_req(f, m, u, v, shade);
 }
 
 /* Quarter cell (i, j) (4x4 pixels, its ray through the cell's centre, the corner its four 2x2
