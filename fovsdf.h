@@ -7004,6 +7004,44 @@ fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, ui
                                has_sh ? sh : NULL, t_low, tol);
 }
 
+/* SKIP's default (heuristic_start 0) over the blocks of [x0, x1) x [y0, y1) (the blocks
+   fovsdf__skip_cell would take, in its order): their certified starts (fovsdf__safe_start from
+   the camera) marched as wavefronts of up to FOVSDF_WAVE cones (fovsdf__wave_cones), then each
+   block's pixels queued as fovsdf__skip_cell queues them: the same starts, counts and pixels
+   in the same order. */
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__skip_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t x0, uint32_t y0,
+                  uint32_t x1, uint32_t y1, fovsdf__wave *wv)
+{
+    fovsdf__wcone cn[FOVSDF_WAVE];
+    uint32_t act[FOVSDF_WAVE], B = c->cfg.skip_block, W = c->cam.width, H = c->cam.height;
+    uint32_t cx, cy, nu = 0, nv = 0, n, i, j, nb, x, y;
+    for (cx = x0 / B; cx * B < x1; ++cx) ++nu;
+    for (cy = y0 / B; cy * B < y1; ++cy) ++nv;
+    n = nu * nv;
+    for (i = 0; i < n; i += nb) {
+        nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+        for (j = 0; j < nb; ++j) {
+            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            float k = fovsdf__cell_cone(c, (float)bx0, (float)by0,
+                                        (float)(bx0 + B < W ? bx0 + B : W),
+                                        (float)(by0 + B < H ? by0 + B : H), cn[j].a);
+            cn[j].k = k;
+            cn[j].t = 0.0f; /* from the camera: safe_start with t_par 0 */
+        }
+        fovsdf__wave_cones(wv, m, nb, cn, act);
+        for (j = 0; j < nb; ++j) {
+            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            uint32_t bx1 = bx0 + B < W ? bx0 + B : W, by1 = by0 + B < H ? by0 + B : H;
+            float t0 = cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, 0.0f), m->t_max);
+            for (y = (by0 > y0 ? by0 : y0); y < (by1 < y1 ? by1 : y1); ++y)
+                for (x = (bx0 > x0 ? bx0 : x0); x < (bx1 < x1 ? bx1 : x1); ++x)
+                    fovsdf__wave_pixel(wv, m, x, y, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f,
+                                       0.0f);
+        }
+    }
+}
+
 /* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
    CONE_FOV (the same mask and refresh on the cone pyramid) -----------------------------------
    Per grid-aligned tile (ipr_tile pixels for FIPR, cone_tile for CONE_FOV), in the order the
@@ -7805,9 +7843,11 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         uint32_t B = c->cfg.skip_block, cx, cy;
         mp.method = c->cfg.finish - 1u;
         mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
-        for (cy = y0 / B; cy * B < y1; ++cy)
-            for (cx = x0 / B; cx * B < x1; ++cx)
-                fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
+        if (!c->cfg.heuristic_start) fovsdf__skip_safe(c, &mp, x0, y0, x1, y1, &wv);
+        else
+            for (cy = y0 / B; cy * B < y1; ++cy)
+                for (cx = x0 / B; cx * B < x1; ++cx)
+                    fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
