@@ -329,14 +329,15 @@ THREADING
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
    image is the same either way). Threads stay with you (examples/fovrun.h runs them on
    pthreads). A worker-friendly split: work items of band_rows rows by a multiple of band_rows
-   columns (whole grid tiles, fovsdf_render_tile), each of at least 8 FOVSDF_WAVE / spp pixels
+   columns (whole grid tiles, fovsdf_render_tile), each of at least 16 FOVSDF_WAVE / spp pixels
    (one call's pixels form the wavefront and every call ends with a partial one, so calls of
    at least FOVSDF_WAVE / spp pixels keep the batches full; a call of one pixel works, with
    batches of its own samples only), taken in row-major order from a shared counter: the
    fovea's tiles cost several times the periphery's, and many small items let the workers
    end together (fixed bands handed out round robin leave one idle for up to a few per cent
-   of the frame). At 640x360 that is 230 items of 64x16 for the cone methods (fovrun.h's
-   FOVRUN_ITEM_PX 1024 at 1 spp).
+   of the frame). At 640x360 that is 115 items of 128x16 for the cone methods (fovrun.h's
+   FOVRUN_ITEM_PX 2048 at 1 spp: their partial wavefronts cost 0.4 % more instructions on one
+   thread than whole-width bands, 1024 0.6 %, atrium CONE_FOV 320x180, callgrind).
 
 BATCHED EVALUATION
    Every tracer, normal and shadow ray of a render call evaluates the scene in batches of up
@@ -5834,7 +5835,7 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
    -1.1 % (CONE) and -1.7 % (CONE_FOV) instructions on atrium at 160x90, primitives within
    +-0.2 %. A scene with a batch callback only is always evaluated in batches. */
 #ifndef FOVSDF_WAVE_MIN
-#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 3) / 5)
+#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 4) / 5)
 #endif
 FOVSDF__PRIV void fovsdf__wave_eval(const fovsdf_scene *sc, float inv_lip, uint32_t n,
                                     const float *x, const float *y, const float *z,

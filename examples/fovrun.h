@@ -13,7 +13,7 @@
 #include <time.h>
 
 #ifndef FOVRUN_ITEM_PX
-#define FOVRUN_ITEM_PX 1024u /* pixels per work item at 1 spp: 8 wavefronts of 128 */
+#define FOVRUN_ITEM_PX 2048u /* pixels per work item at 1 spp: 16 wavefronts of 128 */
 #endif
 
 typedef struct fovrun_queue {
