@@ -373,11 +373,17 @@ THREADING
    (fovsdf_stats_init, then fovsdf_stats_add them up).
    The head-start methods work on grid-aligned tiles: split the rows at multiples of
    fovsdf_band_rows(ctx) or a tile's coarse work is repeated by every call that cuts it (the
-   image is the same either way). Threads stay with you (examples/fovrun.h runs bands of rows
-   on pthreads): give each worker whole bands of band_rows rows (or more) across the full
-   width, handed out from a shared counter; one call's pixels form the wavefront, so calls of
-   at least FOVSDF_WAVE / spp pixels keep the batches full (a call of one pixel works, with
-   batches of its own samples only).
+   image is the same either way). Threads stay with you (examples/fovrun.h runs them on
+   pthreads). A worker-friendly split: work items of band_rows rows by a multiple of band_rows
+   columns (whole grid tiles, fovsdf_render_tile), each of at least 16 FOVSDF_WAVE / spp pixels
+   (one call's pixels form the wavefront and every call ends with a partial one, so calls of
+   at least FOVSDF_WAVE / spp pixels keep the batches full; a call of one pixel works, with
+   batches of its own samples only), taken in row-major order from a shared counter: the
+   fovea's tiles cost several times the periphery's, and many small items let the workers
+   end together (fixed bands handed out round robin leave one idle for up to a few per cent
+   of the frame). At 640x360 that is 115 items of 128x16 for the cone methods (fovrun.h's
+   FOVRUN_ITEM_PX 2048 at 1 spp: their partial wavefronts cost 0.4 % more instructions on one
+   thread than whole-width bands, 1024 0.6 %, atrium CONE_FOV 320x180, callgrind).
 
 BATCHED EVALUATION
    Every tracer, normal and shadow ray of a render call evaluates the scene in batches of up
@@ -1372,8 +1378,9 @@ FOVSDF_API void fovsdf_stats_init(fovsdf_stats *stats);   /* every counter 0 */
 FOVSDF_API void fovsdf_stats_add(fovsdf_stats *acc, const fovsdf_stats *s); /* acc += s */
 
 /* Rows per band for threading: the head-start methods work on grid-aligned tiles, and a call
-   whose rows cut a tile repeats that tile's coarse work. Split the image into row ranges that
-   start at multiples of this (cone_tile, ipr_tile, skip_block; 1 for the plain tracers).
+   whose rows or columns cut a tile repeats that tile's coarse work. Split the image into row
+   ranges (and column ranges, fovsdf_render_tile) that start at multiples of this (cone_tile,
+   ipr_tile, skip_block; 1 for the plain tracers); THREADING gives a worker-friendly split.
    Results never depend on the split, only the cost. */
 FOVSDF_API uint32_t fovsdf_band_rows(const fovsdf_ctx *ctx);
 /* Render rows [y0, y1) or the tile [x0, x1) x [y0, y1); stats (may be NULL) is added to. */
@@ -6454,10 +6461,12 @@ FOVSDF__PRIV void fovsdf__wave_init(fovsdf__wave *w, const fovsdf_ctx *c, const 
 /* The wavefront's evaluations: n <= FOVSDF_BATCH points as fovsdf__eval_batch, or point by point
    when they fill less than FOVSDF_WAVE_MIN lanes of a batch (the same values, materials and
    counts either way): the batch evaluator of a built-in program always runs FOVSDF__L lanes,
-   which costs about as much as 10 single evaluations (callgrind, 160x90, primitives). A scene
-   with a batch callback only is always evaluated in batches. */
+   which costs about as much as 6 to 7 single evaluations (callgrind, 320x180: 5.9e3 against
+   821 instructions on primitives, 1.8e4 against 3.0e3 on atrium). 7 of 32 lanes: against 11,
+   -1.1 % (CONE) and -1.7 % (CONE_FOV) instructions on atrium at 160x90, primitives within
+   +-0.2 %. A scene with a batch callback only is always evaluated in batches. */
 #ifndef FOVSDF_WAVE_MIN
-#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 2) / 3)
+#define FOVSDF_WAVE_MIN ((FOVSDF_BATCH + 4) / 5)
 #endif
 FOVSDF__PRIV void fovsdf__wave_eval_c(const fovsdf_scene *sc, float inv_lip, uint32_t n,
                                       const float *x, const float *y, const float *z,
@@ -7200,10 +7209,11 @@ FOVSDF__PRIV float fovsdf__cell_cone(const fovsdf_ctx *c, float x0, float y0, fl
 {
     float ro[3], d[3], cmin = 1.0f;
     int i;
-    (void)fovsdf_camera_ray(c, 0.5f * (x0 + x1), 0.5f * (y0 + y1), ro, a);
+    /* fovsdf_camera_ray's ray without its argument checks (finite points, as every caller's) */
+    (void)fovsdf__ray(c, 0.5f * (x0 + x1), 0.5f * (y0 + y1), ro, a);
     for (i = 0; i < 4; ++i) {
         float cs;
-        (void)fovsdf_camera_ray(c, (i & 1) ? x1 : x0, (i & 2) ? y1 : y0, ro, d);
+        (void)fovsdf__ray(c, (i & 1) ? x1 : x0, (i & 2) ? y1 : y0, ro, d);
         cs = fov__dot(a, d);
         if (cs < cmin) cmin = cs;
     }
@@ -7769,6 +7779,44 @@ fovsdf__skip_cell(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t cx, ui
                                has_sh ? sh : NULL, t_low, tol);
 }
 
+/* SKIP's default (heuristic_start 0) over the blocks of [x0, x1) x [y0, y1) (the blocks
+   fovsdf__skip_cell would take, in its order): their certified starts (fovsdf__safe_start from
+   the camera) marched as wavefronts of up to FOVSDF_WAVE cones (fovsdf__wave_cones), then each
+   block's pixels queued as fovsdf__skip_cell queues them: the same starts, counts and pixels
+   in the same order. */
+FOVSDF__PRIV FOVSDF__NOINLINE void
+fovsdf__skip_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t x0, uint32_t y0,
+                  uint32_t x1, uint32_t y1, fovsdf__wave *wv)
+{
+    fovsdf__wcone cn[FOVSDF_WAVE];
+    uint32_t act[FOVSDF_WAVE], B = c->cfg.skip_block, W = c->cam.width, H = c->cam.height;
+    uint32_t cx, cy, nu = 0, nv = 0, n, i, j, nb, x, y;
+    for (cx = x0 / B; cx * B < x1; ++cx) ++nu;
+    for (cy = y0 / B; cy * B < y1; ++cy) ++nv;
+    n = nu * nv;
+    for (i = 0; i < n; i += nb) {
+        nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+        for (j = 0; j < nb; ++j) {
+            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            float k = fovsdf__cell_cone(c, (float)bx0, (float)by0,
+                                        (float)(bx0 + B < W ? bx0 + B : W),
+                                        (float)(by0 + B < H ? by0 + B : H), cn[j].a);
+            cn[j].k = k;
+            cn[j].t = 0.0f; /* from the camera: safe_start with t_par 0 */
+        }
+        fovsdf__wave_cones(wv, m, nb, cn, act);
+        for (j = 0; j < nb; ++j) {
+            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            uint32_t bx1 = bx0 + B < W ? bx0 + B : W, by1 = by0 + B < H ? by0 + B : H;
+            float t0 = cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, 0.0f), m->t_max);
+            for (y = (by0 > y0 ? by0 : y0); y < (by1 < y1 ? by1 : y1); ++y)
+                for (x = (bx0 > x0 ? bx0 : x0); x < (bx1 < x1 ? bx1 : x1); ++x)
+                    fovsdf__wave_pixel(wv, m, x, y, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f,
+                                       0.0f);
+        }
+    }
+}
+
 /* ---- foveated methods: FIPR (thesis Sec. 5.2.1, Fig. 5.3; Polychronakis et al. 2023) and
    CONE_FOV (the same mask and refresh on the cone pyramid) -----------------------------------
    Per grid-aligned tile (ipr_tile pixels for FIPR, cone_tile for CONE_FOV), in the order the
@@ -7851,7 +7899,49 @@ typedef struct fovsdf__fovt {
     uint32_t qs, nrq;
     uint32_t *rqq;             /* its requests of this round */
     float qdeg, qband;         /* quarter_deg and the blend band, degrees (0: a hard switch) */
+    /* eccentricity without the atan2 where a threshold decides (fovsdf__ecc_side): squared
+       tangents around fovea_deg (ft2) and around the quarter band (qt2), an upper bound of
+       fovsdf_acuity_p beyond the fovea (p_hi); ecc_fast 0: always the atan2 */
+    int ecc_fast;
+    float ft2lo, ft2hi, qt2lo, qt2hi, p_hi;
 } fovsdf__fovt;
+
+/* Which side of two eccentricities pixel point (x, y) surely lies on, from the squared tangent
+   of its angle to the gaze (|v x g|^2 / (v . g)^2, the terms fov__ecc_deg takes the atan2 of):
+   -1 below the angle whose squared tangent is t2lo, 1 above t2hi's (t2hi < 0: never), 0
+   undecided (take fovsdf_ecc_deg). fovsdf__ecc_t2 widens both by a relative 1e-3 on the
+   tangent (at least 4e-4 of the angle below 60 degrees, a hundred times the float error of the
+   atan2, the tangent and these products), so a decided side is always the side of
+   fovsdf_ecc_deg's value: the same mask and weights as with the atan2 at every pixel. */
+FOVSDF__PRIV int fovsdf__ecc_side(const fov_ecc_model *m, float x, float y, float t2lo,
+                                  float t2hi)
+{
+    float v[3], c[3], s2, co;
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    if (!fov__finite(fov__dot(v, v))) return 0;
+    fov__cross(v, m->g, c);
+    s2 = fov__dot(c, c);
+    co = fov__dot(v, m->g);
+    if (!(co > 0.0f) || !fov__finite(s2)) return 0;
+    co *= co;
+    if (!fov__finite(co)) return 0;
+    if (s2 < t2lo * co) return -1;
+    if (t2hi >= 0.0f && s2 > t2hi * co) return 1;
+    return 0;
+}
+
+/* The squared tangents of deg (degrees) widened by the relative margin of fovsdf__ecc_side:
+   *lo just below, *hi just above; -1 for both (no side decided) and 0 when deg is outside
+   (0, 60). */
+FOVSDF__PRIV int fovsdf__ecc_t2(float deg, float *lo, float *hi)
+{
+    float t;
+    if (!(deg > 0.0f && deg < 60.0f)) { *lo = -1.0f; *hi = -1.0f; return 0; }
+    t = FOV__TAN(deg * (FOV__PI / 180.0f));
+    *lo = (t * 0.999f) * (t * 0.999f);
+    *hi = (t * 1.001f) * (t * 1.001f);
+    return 1;
+}
 
 FOVSDF__PRIV uint32_t fovsdf__bayer(int32_t u, int32_t v, uint32_t k) /* refresh rank of a tile */
 {
@@ -7925,15 +8015,13 @@ FOVSDF__PRIV float fovsdf__fov_tc(fovsdf__fovt *f, int32_t u, int32_t v)
 }
 
 /* Mid cell (u, v): its march requested on first use, its shading when `shade` (f->miss and a
-   dummy cell until the round's wavefront has run them, fovsdf__fov_run). */
-FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
+   dummy cell until the round's wavefront has run them, fovsdf__fov_run). fovsdf__fov_mid
+   returns a cell that is there at once (inlined: the bilinear taps read 4 or 5 cells per
+   pixel), fovsdf__fov_mid_req does the rest. */
+FOVSDF__PRIV FOVSDF__NOINLINE const fovsdf__mid *
+fovsdf__fov_mid_req(fovsdf__fovt *f, fovsdf__mid *m, int32_t u, int32_t v, int shade)
 {
     const fovsdf_ctx *c = f->c;
-    fovsdf__mid *m;
-    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
-               v < f->mv0 + (int32_t)f->ms);
-    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
-    if (m->state == 2 || (m->state == 1 && !shade)) return m;
     if (m->state == 0 && !(m->req & 1u)) {
         float t0 = 0.0f;
         if (f->cone) {
@@ -7970,6 +8058,16 @@ FOVSDF__PRIV const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int3
     }
     f->miss = 1;
     return &f->dummy;
+}
+
+FOVSDF__INL const fovsdf__mid *fovsdf__fov_mid(fovsdf__fovt *f, int32_t u, int32_t v, int shade)
+{
+    fovsdf__mid *m;
+    FOV_ASSERT(u >= f->mu0 && v >= f->mv0 && u < f->mu0 + (int32_t)f->ms &&
+               v < f->mv0 + (int32_t)f->ms);
+    m = f->mid + (size_t)(v - f->mv0) * f->ms + (size_t)(u - f->mu0);
+    if (m->state == 2 || (m->state == 1 && !shade)) return m;
+    return fovsdf__fov_mid_req(f, m, u, v, shade);
 }
 
 /* Quarter cell (i, j) (4x4 pixels, its ray through the cell's centre, the corner its four 2x2
@@ -8037,6 +8135,11 @@ FOVSDF__PRIV float fovsdf__fov_qw(const fovsdf__fovt *f, uint32_t x, uint32_t y)
 {
     float w;
     if (!f->quarter) return 0.0f;
+    if (f->ecc_fast) { /* beyond the band's ends the weight is 0 or 1 without the value */
+        int side = fovsdf__ecc_side(&f->c->ecc, (float)x + 0.5f, (float)y + 0.5f, f->qt2lo,
+                                    f->qt2hi);
+        if (side) return side < 0 ? 0.0f : 1.0f;
+    }
     w = fovsdf_ecc_deg(&f->c->ecc, (float)x + 0.5f, (float)y + 0.5f) - f->qdeg;
     if (!(f->qband > 0.0f)) return w >= 0.0f ? 1.0f : 0.0f;
     return fovsdf__clampf(w / f->qband, 0.0f, 1.0f);
@@ -8301,10 +8404,20 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
     int32_t u = (int32_t)(x / 2u), v = (int32_t)(y / 2u);
     f->miss = 0;
     if (*ps == 0u) {
-        /* step 3: the mask */
-        float w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f), p;
-        int in;
-        if (w <= c->cfg.acuity.fovea_deg) in = 1;
+        /* step 3: the mask (the eccentricity's value only where the threshold or p needs it:
+           fovsdf__ecc_side; u >= p_hi >= p outside the fovea) */
+        float w = 0.0f, p;
+        int in, side = f->ecc_fast ? fovsdf__ecc_side(&c->ecc, (float)x + 0.5f, (float)y + 0.5f,
+                                                      f->ft2lo, f->ft2hi)
+                                   : 0;
+        if (side > 0 && c->cfg.fov_mask != FOVSDF_MASK_FOVEA &&
+            !(fovsdf_u01(c->cfg.seed, x, y, 0) < f->p_hi))
+            side = 2; /* u >= p: outside the mask */
+        if (side == 0 || (side == 1 && c->cfg.fov_mask != FOVSDF_MASK_FOVEA))
+            w = fovsdf_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f); /* p needs it */
+        if (side < 0) in = 1;
+        else if (side == 2) in = 0;
+        else if (side == 0 && w <= c->cfg.acuity.fovea_deg) in = 1;
         else if (c->cfg.fov_mask == FOVSDF_MASK_FOVEA) in = 0;
         else {
             p = fovsdf_acuity_p(&c->cfg.acuity, w);
@@ -8435,6 +8548,26 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
     f.qs = T / 4u + 2u; f.qu0 = (int32_t)(tx / 4u) - 1; f.qv0 = (int32_t)(ty / 4u) - 1;
     f.qdeg = c->cfg.quarter_deg;
     f.qband = (float)FOVSDF_QUARTER_BAND / (c->ecc.f_px * 0.017453292f);
+    /* the eccentricity's shortcuts (fovsdf__ecc_side), not with math hooks of unknown accuracy */
+#if defined(FOV__HOOKED_MATH)
+    f.ecc_fast = 0;
+#else
+    f.ecc_fast = 1;
+#endif
+    (void)fovsdf__ecc_t2(c->cfg.acuity.fovea_deg, &f.ft2lo, &f.ft2hi);
+    (void)fovsdf__ecc_t2(f.qdeg, &f.qt2lo, &f.qt2hi);
+    if (f.qband > 0.0f) { /* the upper end: where the weight reaches 1 */
+        float lo;
+        (void)fovsdf__ecc_t2(f.qdeg + f.qband, &lo, &f.qt2hi);
+    }
+    {
+        const fovsdf_acuity *a = &c->cfg.acuity;
+        f.p_hi = 2.0f; /* no bound */
+        if (!fov__finite(a->A) || !fov__finite(a->rate) || !fov__finite(a->C))
+            f.p_hi = 0.0f; /* fovsdf_acuity_p is 0 */
+        else if (a->A >= 0.0f && a->rate >= 0.0f && a->fovea_deg > 0.0f && a->fovea_deg < 60.0f)
+            f.p_hi = (a->A * FOV__EXP(-a->rate * a->fovea_deg) + a->C) * 1.001f + 1e-6f;
+    }
     if (f.quarter) {
         FOV_ASSERT(T % 4u == 0 && (size_t)f.qs * f.qs <= FOVSDF__FOV_QCELLS);
         for (i = 0; i < f.qs * f.qs; ++i) { qc[i].state = 0; qc[i].req = 0; }
@@ -8493,9 +8626,11 @@ FOVSDF_API fov_result fovsdf_render_tile(const fovsdf_ctx *c, uint32_t x0, uint3
         uint32_t B = c->cfg.skip_block, cx, cy;
         mp.method = c->cfg.finish - 1u;
         mp.verify_start = (int)c->cfg.heuristic_start; /* a certified start needs no check */
-        for (cy = y0 / B; cy * B < y1; ++cy)
-            for (cx = x0 / B; cx * B < x1; ++cx)
-                fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
+        if (!c->cfg.heuristic_start) fovsdf__skip_safe(c, &mp, x0, y0, x1, y1, &wv);
+        else
+            for (cy = y0 / B; cy * B < y1; ++cy)
+                for (cx = x0 / B; cx * B < x1; ++cx)
+                    fovsdf__skip_cell(c, &mp, cx, cy, x0, y0, x1, y1, &local, &wv);
     } else if (c->cfg.method == FOVSDF_METHOD_IPR) {
         mp = m;
         uint32_t T = c->cfg.ipr_tile, tx, ty;
