@@ -3682,9 +3682,10 @@ FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
    hooks): their values are the same on every IEEE float target without contraction. Errors
    against double-precision libm (tests/test_fovsdf.c samples them densely; "ulp" is the ulp
    of the exact result):
-   - sin, cos: the reduction by k pi/2 (Cody & Waite 1980) with k and pi/2 in 12-bit pieces
-     (the products exact) for |x| < 1e6 (FOVSDF__KBIG), Moshier's (1989) polynomials on
-     [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in magnitude, an
+   - sin, cos: the reduction by k pi/2 (Cody & Waite 1980) in three pieces of pi/2 for
+     |x| < 8192 (FOVSDF__KMID; the sin alone of the terrain: by k pi, one polynomial), with k
+     and pi/2 in 12-bit pieces (the products exact) up to 1e6 (FOVSDF__KBIG), Moshier's
+     (1989) polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in magnitude, an
      absolute error below 2^-33 elsewhere. fovsdf__ksin1 reduces any larger finite |x| with
      96 bits of 2/pi (Payne & Hanek 1983): the same bounds up to FLT_MAX. inf, NaN: NaN.
    - atan2: at most 3 ulp (the reduction to [0, tan(pi/8)] and Moshier's polynomial); zeros'
@@ -3695,6 +3696,7 @@ FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
    - pow(x, y) = 2^(y log2 x) for x > 0 and |y| <= 16: at most 2 ulp where the result is a
      normal float (log2 x as fdlibm's log2f's two parts, y log2 x with Dekker's (1971) exact
      product); 0 or inf beyond float's range. */
+#define FOVSDF__KMID 8192.0f
 #define FOVSDF__KBIG 1e6f
 #if defined(__GNUC__) || defined(__clang__) /* too long for gcc's inlining limits otherwise */
 #define FOVSDF__KINL FOVSDF__INL __attribute__((always_inline)) FOVSDF__VEC
@@ -3714,10 +3716,25 @@ FOVSDF__KINL void fovsdf__ksc(float r, uint32_t q, float *s, float *c)
     *s = fovsdf__sel((int)(q & 2u), -ss, ss);
     *c = fovsdf__sel((int)((q + 1u) & 2u), -cc, cc);
 }
-/* sin x and cos x for |x| < FOVSDF__KBIG (beyond: not sin and cos, but finite; inf and NaN
-   give NaN). x - k pi/2 with k = kh + kl (kh a multiple of 4096, |kl| <= 2048) and pi/2 =
-   c1 + c2 + c3 + c4 (12 bits each) + c5: every product k? c? is exact. */
+/* sin x and cos x for |x| < FOVSDF__KMID (beyond: not sin and cos, but finite; inf and NaN
+   give NaN): x - k pi/2 with pi/2 = c1 (8 bits) + c2 (11 bits) + c3, k < 2^13 (k c1 and k c2
+   exact). */
 FOVSDF__KINL void fovsdf__ksincos(float x, float *s, float *c)
+{
+    fovsdf__fu kb;
+    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), k, r, ss, cc;
+    kb.f = xs * 0.636619747f + FOVSDF__KRND; /* its low bits: k mod 4 */
+    k = kb.f - FOVSDF__KRND;
+    r = ((xs - k * 1.5703125f) - k * 4.83751297e-4f) - k * 7.54979013e-8f;
+    fovsdf__ksc(r, kb.u, &ss, &cc);
+    *s = fovsdf__sel(fin, ss, x - x);
+    *c = fovsdf__sel(fin, cc, x - x);
+}
+/* the same for |x| < FOVSDF__KBIG: x - k pi/2 with k = kh + kl (kh a multiple of 4096,
+   |kl| <= 2048) and pi/2 = c1 + c2 + c3 + c4 (12 bits each) + c5: every product k? c? is
+   exact */
+FOVSDF__KINL void fovsdf__ksincos_w(float x, float *s, float *c)
 {
     fovsdf__fu kb;
     int in = fovsdf__vabs(x) < FOVSDF__KBIG, fin = fovsdf__vfinite(x);
@@ -3744,10 +3761,27 @@ FOVSDF__KINL void fovsdf__ksincos(float x, float *s, float *c)
     *s = fovsdf__sel(fin, ss, x - x);
     *c = fovsdf__sel(fin, cc, x - x);
 }
+/* sin x alone for |x| < FOVSDF__KMID (the terrain's): x - k pi with pi = c1 (8 bits) + c2 (12
+   bits) + c3, (-1)^k sin r by an odd polynomial of degree 11 on [-pi/2, pi/2] (Chebyshev
+   interpolation of (sin r / r - 1) / r^2 in r^2: 1.9e-8 relative) */
 FOVSDF__KINL float fovsdf__ksin(float x)
 {
+    fovsdf__fu kb, sb;
+    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), k, r, z;
+    kb.f = xs * 0.318309873f + FOVSDF__KRND; /* its low bit: k's parity */
+    k = kb.f - FOVSDF__KRND;
+    r = ((xs - k * 3.140625f) - k * 9.67741013e-4f) - k * -8.74227766e-8f;
+    z = r * r;
+    sb.f = r + r * z * (-1.666666716e-1f + z * (8.333332837e-3f + z * (-1.984108676e-4f +
+                        z * (2.753645958e-6f - z * 2.408009436e-8f))));
+    sb.u ^= kb.u << 31;
+    return fovsdf__sel(fin, sb.f, x - x);
+}
+FOVSDF__KINL float fovsdf__ksin_w(float x) /* |x| < FOVSDF__KBIG */
+{
     float s, c;
-    fovsdf__ksincos(x, &s, &c);
+    fovsdf__ksincos_w(x, &s, &c);
     return s;
 }
 /* sin x for finite |x| >= FOVSDF__KBIG: |x| = m 2^e (m an integer < 2^24, e >= -4), and
@@ -3781,10 +3815,11 @@ FOVSDF__PRIV float fovsdf__ksin_big(float x)
     fovsdf__ksc((float)fr * 3.40612167e-19f, q, &s, &c); /* 2^-62 pi/2 */
     return x < 0.0f ? -s : s;
 }
-FOVSDF__PRIV float fovsdf__ksin1(float x) /* sin x for every x */
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__ksin1(float x) /* sin x for every x */
 {
-    return (fovsdf__vabs(x) < FOVSDF__KBIG || !fovsdf__vfinite(x)) ? fovsdf__ksin(x)
-                                                                     : fovsdf__ksin_big(x);
+    float a = fovsdf__vabs(x);
+    if (a < FOVSDF__KMID || !fovsdf__vfinite(x)) return fovsdf__ksin(x);
+    return a < FOVSDF__KBIG ? fovsdf__ksin_w(x) : fovsdf__ksin_big(x);
 }
 FOVSDF__KINL float fovsdf__katan2(float y, float x)
 {
@@ -3887,7 +3922,8 @@ FOVSDF__KINL float fovsdf__kpow(float x, float y) /* x > 0, |y| <= 16 */
 }
 /* The mandelbulb and the terrain with the kernels above; fovsdf__prim_lanes computes the
    same values over the lanes. */
-FOVSDF__PRIV float fovsdf__sd_mandelbulb(const float p[3], float power, int32_t iters)
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__sd_mandelbulb(const float p[3], float power,
+                                                     int32_t iters)
 {
     float z[3], dr = 1.0f, r;
     int32_t i;
@@ -3911,7 +3947,7 @@ FOVSDF__PRIV float fovsdf__sd_mandelbulb(const float p[3], float power, int32_t 
     if (r < 1e-20f) return 0.0f;
     return 0.5f * fovsdf__klog(r) * r / dr;
 }
-FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
 {
     float h = 0.0f, w = 1.0f, fx = x * f[1], fz = z * f[1];
     int32_t o;
@@ -4338,48 +4374,62 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             d[i] = fovsdf__pfin(fovsdf__sel(d0[i] <= 1.0f, dm[i], d0[i]) * s0, sc);
         break;
     }
-    case FOVSDF_NODE_MANDELBULB: { /* fovsdf__sd_mandelbulb; a lane that stops keeps its state */
-        float zx[FOVSDF__L], zy[FOVSDF__L], zz[FOVSDF__L], dr[FOVSDF__L], r[FOVSDF__L];
-        int32_t act[FOVSDF__L], any;
+    case FOVSDF_NODE_MANDELBULB: { /* fovsdf__sd_mandelbulb, lane by lane the same values */
+        /* The lanes still iterating (r <= 2, r >= 1e-20) are packed into the first cnt slots
+           of c* (lane ix[k]); each iteration runs over them alone (rounded up to 4: the
+           slots past cnt compute values nobody reads) and drops the lanes that stopped. A
+           lane's R and DR are its r and dr (1 until it iterates; 1 again at r < 1e-20). */
+        float *FOVSDF__RESTRICT R = t, *FOVSDF__RESTRICT DR = u;
+        float cx[FOVSDF__L], cy[FOVSDF__L], cz[FOVSDF__L], zx[FOVSDF__L], zy[FOVSDF__L];
+        float zz[FOVSDF__L], cdr[FOVSDF__L], cr[FOVSDF__L], cq[FOVSDF__L];
+        uint32_t ix[FOVSDF__L], cnt = 0, k, j, cn4;
         float pw = f[0], pm = f[0] - 1.0f;
         int32_t m, it = in->i[0];
         for (i = 0; i < n; ++i) {
-            zx[i] = x[i]; zy[i] = y[i]; zz[i] = z[i]; dr[i] = 1.0f;
-            r[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+            R[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+            DR[i] = 1.0f;
+            cx[i] = cy[i] = cz[i] = zx[i] = zy[i] = zz[i] = cr[i] = 0.0f;
+            cdr[i] = 1.0f;
         }
-        fovsdf__sqrt_lanes(r);
-        for (m = 0; m < it; ++m) {
-            any = 0;
-            for (i = 0; i < n; ++i) {
-                int a = r[i] <= 2.0f, tiny = a & (r[i] < 1e-20f);
-                dr[i] = fovsdf__sel(tiny, 1.0f, dr[i]);
-                act[i] = a & !tiny;
-                any |= act[i];
-                t[i] = zx[i] * zx[i] + zy[i] * zy[i];
+        fovsdf__sqrt_lanes(R);
+        for (i = 0; i < n; ++i) {
+            if (R[i] <= 2.0f && !(R[i] < 1e-20f)) {
+                cx[cnt] = zx[cnt] = x[i]; cy[cnt] = zy[cnt] = y[i]; cz[cnt] = zz[cnt] = z[i];
+                cr[cnt] = R[i]; ix[cnt++] = i;
             }
-            if (!any) break;
-            fovsdf__sqrt_lanes(t);
-            for (i = 0; i < n; ++i) {
-                float th = fovsdf__katan2(t[i], zz[i]) * pw, ph = fovsdf__katan2(zy[i], zx[i]) * pw;
-                float zr = fovsdf__kpow(r[i], pm), ndr = pw * zr * dr[i] + 1.0f;
-                float st, ct, sp, cp;
-                int a = act[i];
-                zr *= r[i];
+        }
+        for (m = 0; m < it && cnt > 0; ++m) {
+            cn4 = (cnt + 3u) & ~3u;
+            for (k = 0; k < cn4; ++k) cq[k] = zx[k] * zx[k] + zy[k] * zy[k];
+            fovsdf__sqrt_lanes(cq);
+            for (k = 0; k < cn4; ++k) {
+                float th = fovsdf__katan2(cq[k], zz[k]) * pw, ph = fovsdf__katan2(zy[k], zx[k]) * pw;
+                float zr = fovsdf__kpow(cr[k], pm), st, ct, sp, cp;
+                cdr[k] = pw * zr * cdr[k] + 1.0f;
+                zr *= cr[k];
                 fovsdf__ksincos(th, &st, &ct);
                 fovsdf__ksincos(ph, &sp, &cp);
-                dr[i] = fovsdf__sel(a, ndr, dr[i]);
-                zx[i] = fovsdf__sel(a, zr * st * cp + x[i], zx[i]);
-                zy[i] = fovsdf__sel(a, zr * st * sp + y[i], zy[i]);
-                zz[i] = fovsdf__sel(a, zr * ct + z[i], zz[i]);
-                u[i] = zx[i] * zx[i] + zy[i] * zy[i] + zz[i] * zz[i];
+                zx[k] = zr * st * cp + cx[k];
+                zy[k] = zr * st * sp + cy[k];
+                zz[k] = zr * ct + cz[k];
+                cq[k] = zx[k] * zx[k] + zy[k] * zy[k] + zz[k] * zz[k];
             }
-            fovsdf__sqrt_lanes(u);
-            /* a stopped lane keeps its r, so it stays stopped (r > 2, r < 1e-20 or NaN) */
-            for (i = 0; i < n; ++i) r[i] = fovsdf__sel(act[i], u[i], r[i]);
+            fovsdf__sqrt_lanes(cq);
+            for (k = 0, j = 0; k < cnt; ++k) {
+                float rk = cq[k];
+                R[ix[k]] = rk;
+                DR[ix[k]] = rk < 1e-20f ? 1.0f : cdr[k];
+                if (rk <= 2.0f && !(rk < 1e-20f)) { /* iterates on: to slot j */
+                    cx[j] = cx[k]; cy[j] = cy[k]; cz[j] = cz[k];
+                    zx[j] = zx[k]; zy[j] = zy[k]; zz[j] = zz[k];
+                    cdr[j] = cdr[k]; cr[j] = rk; ix[j++] = ix[k];
+                }
+            }
+            cnt = j;
         }
         for (i = 0; i < n; ++i)
-            d[i] = fovsdf__pfin(fovsdf__sel(r[i] < 1e-20f, 0.0f,
-                                            0.5f * fovsdf__klog(r[i]) * r[i] / dr[i]), sc);
+            d[i] = fovsdf__pfin(fovsdf__sel(R[i] < 1e-20f, 0.0f,
+                                            0.5f * fovsdf__klog(R[i]) * R[i] / DR[i]), sc);
         break;
     }
     case FOVSDF_NODE_TERRAIN: { /* fovsdf__terrain_h: a lane past the 1e30 cutoff stops */
@@ -4398,10 +4448,20 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                 int live = (u[i] > 0.0f) & (ax < 1e30f) & (az < 1e30f);
                 t[i] = fovsdf__ksin(fx[i]);
                 s2[i] = fovsdf__ksin(fz[i]);
-                big |= live & ((ax >= FOVSDF__KBIG) | (az >= FOVSDF__KBIG));
+                big |= live & ((ax >= FOVSDF__KMID) | (az >= FOVSDF__KMID));
                 u[i] = fovsdf__sel(live, 1.0f, 0.0f);
             }
-            if (big) { /* beyond the vector kernels' range: those lanes one by one */
+            if (big) { /* fovsdf__ksin1's choice per lane: the wide reduction, then beyond it
+                          Payne-Hanek one by one */
+                big = 0;
+                for (i = 0; i < n; ++i) {
+                    float ax = fovsdf__vabs(fx[i]), az = fovsdf__vabs(fz[i]);
+                    t[i] = fovsdf__sel(ax >= FOVSDF__KMID, fovsdf__ksin_w(fx[i]), t[i]);
+                    s2[i] = fovsdf__sel(az >= FOVSDF__KMID, fovsdf__ksin_w(fz[i]), s2[i]);
+                    big |= (u[i] > 0.0f) & ((ax >= FOVSDF__KBIG) | (az >= FOVSDF__KBIG));
+                }
+            }
+            if (big) {
                 for (i = 0; i < n; ++i) {
                     if (u[i] > 0.0f) {
                         t[i] = fovsdf__ksin1(fx[i]);
