@@ -3683,19 +3683,22 @@ FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
    against double-precision libm (tests/test_fovsdf.c samples them densely; "ulp" is the ulp
    of the exact result):
    - sin, cos: the reduction by k pi/2 (Cody & Waite 1980) in three pieces of pi/2 for
-     |x| < 8192 (FOVSDF__KMID; the sin alone of the terrain: by k pi, one polynomial), with k
-     and pi/2 in 12-bit pieces (the products exact) up to 1e6 (FOVSDF__KBIG), Moshier's
-     (1989) polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in magnitude, an
-     absolute error below 2^-33 elsewhere. fovsdf__ksin1 reduces any larger finite |x| with
-     96 bits of 2/pi (Payne & Hanek 1983): the same bounds up to FLT_MAX. inf, NaN: NaN.
+     |x| < 8192 (FOVSDF__KMID; the terrain's sin alone: by k pi, one polynomial), with k and
+     pi/2 in 12-bit pieces (the products exact) up to 1e6 (FOVSDF__KBIG), Moshier's (1989)
+     polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in
+     magnitude, an absolute error below 2^-32 elsewhere. fovsdf__ksin1 reduces any larger
+     finite |x| with 96 bits of 2/pi (Payne & Hanek 1983): the same bounds up to FLT_MAX (the
+     terrain's octaves, 2.03 times larger each, up to its 1e30 cutoff). inf, NaN: NaN.
    - atan2: at most 3 ulp (the reduction to [0, tan(pi/8)] and Moshier's polynomial); zeros'
      signs and the quadrants as C99's atan2f, atan2(+-inf, +-inf) = +-pi/4 or +-3pi/4, NaN in,
      NaN out.
    - log: at most 1 ulp (fdlibm's logf, Sun Microsystems 1993); log 0 = -inf, log of x < 0 or
      NaN is NaN, log inf = inf.
-   - pow(x, y) = 2^(y log2 x) for x > 0 and |y| <= 16: at most 2 ulp where the result is a
+   - pow(x, y) = 2^(y log2 x) for x > 0 and |y| <= 16: at most 3 ulp where the result is a
      normal float (log2 x as fdlibm's log2f's two parts, y log2 x with Dekker's (1971) exact
-     product); 0 or inf beyond float's range. */
+     product); 0 or inf beyond float's range.
+   The mandelbulb's angles are within 16 pi and its radii in [1e-20, 2] (pow) or positive
+   (log); the terrain's arguments are any finite float below its cutoff. */
 #define FOVSDF__KMID 8192.0f
 #define FOVSDF__KBIG 1e6f
 #if defined(__GNUC__) || defined(__clang__) /* too long for gcc's inlining limits otherwise */
@@ -4378,7 +4381,7 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         /* The lanes still iterating (r <= 2, r >= 1e-20) are packed into the first cnt slots
            of c* (lane ix[k]); each iteration runs over them alone (rounded up to 4: the
            slots past cnt compute values nobody reads) and drops the lanes that stopped. A
-           lane's R and DR are its r and dr (1 until it iterates; 1 again at r < 1e-20). */
+           lane's R and DR are its r and dr. */
         float *FOVSDF__RESTRICT R = t, *FOVSDF__RESTRICT DR = u;
         float cx[FOVSDF__L], cy[FOVSDF__L], cz[FOVSDF__L], zx[FOVSDF__L], zy[FOVSDF__L];
         float zz[FOVSDF__L], cdr[FOVSDF__L], cr[FOVSDF__L], cq[FOVSDF__L];
@@ -4403,7 +4406,8 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             for (k = 0; k < cn4; ++k) cq[k] = zx[k] * zx[k] + zy[k] * zy[k];
             fovsdf__sqrt_lanes(cq);
             for (k = 0; k < cn4; ++k) {
-                float th = fovsdf__katan2(cq[k], zz[k]) * pw, ph = fovsdf__katan2(zy[k], zx[k]) * pw;
+                float th = fovsdf__katan2(cq[k], zz[k]) * pw;
+                float ph = fovsdf__katan2(zy[k], zx[k]) * pw;
                 float zr = fovsdf__kpow(cr[k], pm), st, ct, sp, cp;
                 cdr[k] = pw * zr * cdr[k] + 1.0f;
                 zr *= cr[k];
@@ -4418,7 +4422,7 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
             for (k = 0, j = 0; k < cnt; ++k) {
                 float rk = cq[k];
                 R[ix[k]] = rk;
-                DR[ix[k]] = rk < 1e-20f ? 1.0f : cdr[k];
+                DR[ix[k]] = cdr[k]; /* (at r < 1e-20 the distance is 0, whatever dr) */
                 if (rk <= 2.0f && !(rk < 1e-20f)) { /* iterates on: to slot j */
                     cx[j] = cx[k]; cy[j] = cy[k]; cz[j] = cz[k];
                     zx[j] = zx[k]; zy[j] = zy[k]; zz[j] = zz[k];
