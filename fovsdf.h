@@ -3674,7 +3674,7 @@ FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
 }
 
 /* ---- the mandelbulb's and the terrain's math: the library's own float kernels -------------
-   sin and cos (fovsdf__ksincos, fovsdf__ksin; fovsdf__ksin1 for any x), atan2
+   sin and cos (fovsdf__ksin, fovsdf__kcos; fovsdf__ksin1: sin for any x), atan2
    (fovsdf__katan2), log (fovsdf__klog) and pow for x > 0 (fovsdf__kpow), without branches
    (selects, integer operations on the bits, no float-to-int conversion of an unbounded value)
    so that the lane loops vectorise. The two primitives use them in fovsdf_program_eval and in
@@ -3682,10 +3682,10 @@ FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
    hooks): their values are the same on every IEEE float target without contraction. Errors
    against double-precision libm (tests/test_fovsdf.c samples them densely; "ulp" is the ulp
    of the exact result):
-   - sin, cos: the reduction by k pi/2 (Cody & Waite 1980) in three pieces of pi/2 for
-     |x| < 8192 (FOVSDF__KMID; the terrain's sin alone: by k pi, one polynomial), with k and
-     pi/2 in 12-bit pieces (the products exact) up to 1e6 (FOVSDF__KBIG), Moshier's (1989)
-     polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in
+   - sin, cos: the reduction by multiples of pi/2 (Cody & Waite 1980) in three pieces for
+     |x| < 8192 (FOVSDF__KMID), one polynomial for sin on [-pi/2, pi/2]; sin up to 1e6
+     (FOVSDF__KBIG) with k and pi/2 in 12-bit pieces (the products exact) and Moshier's
+     (1989) polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in
      magnitude, an absolute error below 2^-32 elsewhere. fovsdf__ksin1 reduces any larger
      finite |x| with 96 bits of 2/pi (Payne & Hanek 1983): the same bounds up to FLT_MAX (the
      terrain's octaves, 2.03 times larger each, up to its 1e30 cutoff). inf, NaN: NaN.
@@ -3719,21 +3719,6 @@ FOVSDF__KINL void fovsdf__ksc(float r, uint32_t q, float *s, float *c)
     *s = fovsdf__sel((int)(q & 2u), -ss, ss);
     *c = fovsdf__sel((int)((q + 1u) & 2u), -cc, cc);
 }
-/* sin x and cos x for |x| < FOVSDF__KMID (beyond: not sin and cos, but finite; inf and NaN
-   give NaN): x - k pi/2 with pi/2 = c1 (8 bits) + c2 (11 bits) + c3, k < 2^13 (k c1 and k c2
-   exact). */
-FOVSDF__KINL void fovsdf__ksincos(float x, float *s, float *c)
-{
-    fovsdf__fu kb;
-    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
-    float xs = fovsdf__sel(in, x, 0.0f), k, r, ss, cc;
-    kb.f = xs * 0.636619747f + FOVSDF__KRND; /* its low bits: k mod 4 */
-    k = kb.f - FOVSDF__KRND;
-    r = ((xs - k * 1.5703125f) - k * 4.83751297e-4f) - k * 7.54979013e-8f;
-    fovsdf__ksc(r, kb.u, &ss, &cc);
-    *s = fovsdf__sel(fin, ss, x - x);
-    *c = fovsdf__sel(fin, cc, x - x);
-}
 /* the same for |x| < FOVSDF__KBIG: x - k pi/2 with k = kh + kl (kh a multiple of 4096,
    |kl| <= 2048) and pi/2 = c1 + c2 + c3 + c4 (12 bits each) + c5: every product k? c? is
    exact */
@@ -3764,21 +3749,38 @@ FOVSDF__KINL void fovsdf__ksincos_w(float x, float *s, float *c)
     *s = fovsdf__sel(fin, ss, x - x);
     *c = fovsdf__sel(fin, cc, x - x);
 }
-/* sin x alone for |x| < FOVSDF__KMID (the terrain's): x - k pi with pi = c1 (8 bits) + c2 (12
-   bits) + c3, (-1)^k sin r by an odd polynomial of degree 11 on [-pi/2, pi/2] (Chebyshev
-   interpolation of (sin r / r - 1) / r^2 in r^2: 1.9e-8 relative) */
+/* sin r on [-pi/2, pi/2] (a little beyond): an odd polynomial of degree 11, the Chebyshev
+   interpolant of (sin r / r - 1) / r^2 in r^2 (relative error 1.9e-8) */
+FOVSDF__KINL float fovsdf__ksinp(float r)
+{
+    float z = r * r;
+    return r + r * z * (-1.666666716e-1f + z * (8.333332837e-3f + z * (-1.984108385e-4f +
+                        z * (2.753629815e-6f - z * 2.407637645e-8f))));
+}
+/* sin x and cos x for |x| < FOVSDF__KMID (beyond: not sin and cos, but finite; inf and NaN
+   give NaN): sin x = (-1)^k sin(x - k pi), cos x = (-1)^(k+1) sin(x - (k + 1/2) pi), the
+   multiples of pi/2 (2k or 2k + 1, below 2^13) subtracted in three pieces c1 (8 bits) + c2
+   (11 bits) + c3 (the products by c1 and c2 exact) */
 FOVSDF__KINL float fovsdf__ksin(float x)
 {
     fovsdf__fu kb, sb;
     int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
-    float xs = fovsdf__sel(in, x, 0.0f), k, r, z;
-    kb.f = xs * 0.318309873f + FOVSDF__KRND; /* its low bit: k's parity */
-    k = kb.f - FOVSDF__KRND;
-    r = ((xs - k * 3.140625f) - k * 9.67741013e-4f) - k * -8.74227766e-8f;
-    z = r * r;
-    sb.f = r + r * z * (-1.666666716e-1f + z * (8.333332837e-3f + z * (-1.984108676e-4f +
-                        z * (2.753645958e-6f - z * 2.408009436e-8f))));
+    float xs = fovsdf__sel(in, x, 0.0f), m;
+    kb.f = xs * 0.318309873f + FOVSDF__KRND; /* k = round(x / pi); its low bit: k's parity */
+    m = 2.0f * (kb.f - FOVSDF__KRND);
+    sb.f = fovsdf__ksinp(((xs - m * 1.5703125f) - m * 4.83751297e-4f) - m * 7.54979013e-8f);
     sb.u ^= kb.u << 31;
+    return fovsdf__sel(fin, sb.f, x - x);
+}
+FOVSDF__KINL float fovsdf__kcos(float x)
+{
+    fovsdf__fu kb, sb;
+    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), m;
+    kb.f = (xs * 0.318309873f - 0.5f) + FOVSDF__KRND; /* k = round(x / pi - 1/2) */
+    m = 2.0f * (kb.f - FOVSDF__KRND) + 1.0f;
+    sb.f = fovsdf__ksinp(((xs - m * 1.5703125f) - m * 4.83751297e-4f) - m * 7.54979013e-8f);
+    sb.u ^= ~kb.u << 31;
     return fovsdf__sel(fin, sb.f, x - x);
 }
 FOVSDF__KINL float fovsdf__ksin_w(float x) /* |x| < FOVSDF__KBIG */
@@ -3940,8 +3942,8 @@ FOVSDF__PRIV FOVSDF__VEC float fovsdf__sd_mandelbulb(const float p[3], float pow
         zr = fovsdf__kpow(r, power - 1.0f);
         dr = power * zr * dr + 1.0f;
         zr *= r;
-        fovsdf__ksincos(th, &st, &ct);
-        fovsdf__ksincos(ph, &sp, &cp);
+        st = fovsdf__ksin(th); ct = fovsdf__kcos(th);
+        sp = fovsdf__ksin(ph); cp = fovsdf__kcos(ph);
         z[0] = zr * st * cp + p[0];
         z[1] = zr * st * sp + p[1];
         z[2] = zr * ct + p[2];
@@ -4411,8 +4413,8 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                 float zr = fovsdf__kpow(cr[k], pm), st, ct, sp, cp;
                 cdr[k] = pw * zr * cdr[k] + 1.0f;
                 zr *= cr[k];
-                fovsdf__ksincos(th, &st, &ct);
-                fovsdf__ksincos(ph, &sp, &cp);
+                st = fovsdf__ksin(th); ct = fovsdf__kcos(th);
+                sp = fovsdf__ksin(ph); cp = fovsdf__kcos(ph);
                 zx[k] = zr * st * cp + cx[k];
                 zy[k] = zr * st * sp + cy[k];
                 zz[k] = zr * ct + cz[k];
