@@ -3798,11 +3798,11 @@ FOVSDF__PRIV float fovsdf__ksin_big(float x)
     static const uint32_t tp[9] = { 0x00000000u, 0x517cc1b7u, 0x27220a94u, 0xfe13abe8u,
                                     0xfa9a6ee0u, 0x6db14accu, 0x9e21c820u, 0xff28b1d5u,
                                     0xef5de2b0u };
-    fovsdf__fu b;
-    uint32_t m, t0, w, sh, wd[3], j, q;
-    uint64_t lo, mid, hi, qq;
+    fovsdf__fu b, sc;
+    uint32_t m, t0, w, sh, wd[3], j, q, t32;
+    uint64_t lo, mid, hi, qq, mag;
     int64_t fr;
-    float s, c;
+    float s, c, r;
     b.f = x;
     m = (b.u & 0x007fffffu) | 0x00800000u;
     t0 = ((b.u >> 23) & 0xffu) - 150u + 31u; /* the window's first bit, 2^(1-e) */
@@ -3817,7 +3817,15 @@ FOVSDF__PRIV float fovsdf__ksin_big(float x)
     qq += (uint64_t)1 << 61;               /* round to the nearest quadrant */
     q = (uint32_t)(qq >> 62);
     fr = (int64_t)(qq & ((((uint64_t)1) << 62) - 1u)) - ((int64_t)1 << 61);
-    fovsdf__ksc((float)fr * 3.40612167e-19f, q, &s, &c); /* 2^-62 pi/2 */
+    /* (float)fr rounded as a conversion would, without a 64-bit conversion (a runtime call
+       on 32-bit targets): 32 leading bits with the rest as a sticky bit */
+    mag = fr < 0 ? (uint64_t)(-fr) : (uint64_t)fr;
+    for (sh = 0; (mag >> sh) > 0xffffffffu; ++sh) {}
+    lo = mag >> sh;
+    t32 = (uint32_t)lo | (uint32_t)((lo << sh) != mag);
+    sc.u = (127u + sh) << 23;
+    r = (float)t32 * sc.f;
+    fovsdf__ksc((fr < 0 ? -r : r) * 3.40612167e-19f, q, &s, &c); /* 2^-62 pi/2 */
     return x < 0.0f ? -s : s;
 }
 FOVSDF__PRIV FOVSDF__VEC float fovsdf__ksin1(float x) /* sin x for every x */
