@@ -499,6 +499,9 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
    - Rays that graze a surface can exhaust max_steps (below about 1e-5 rad on a plane with
      the default 256 steps): they are reported as FOVSDF_EXHAUSTED with the t reached, and
      shaded as hits there. They never pass through the surface.
+   - The mandelbulb and the terrain use the library's own sin, cos, atan2, pow and log (see
+     fovsdf_node_type), never libm's or the math hooks': their values are the same with libm,
+     FOV_NO_LIBM and the hooks, and within 4 ulp of the exact functions.
    - Floating-point contraction: the tests build with -ffp-contract=off; results across
      targets agree within the tolerances stated in tests/xtarget (measured: identical images
      on x86-64, wasm32 and Cortex-M4 with libm; 56 dB PSNR for FOV_NO_LIBM on x86-64).
@@ -535,6 +538,17 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
                     Graphics", ACM Transactions on Graphics 31(6) (SIGGRAPH Asia), 2012.
    Quilez           I. Quilez, "Distance functions" (the primitives and operators) and "Soft
                     shadows in raymarched SDFs" (the penumbra estimate), iquilezles.org.
+   Cody & Waite 1980  W. J. Cody, W. Waite, "Software Manual for the Elementary Functions",
+                    Prentice-Hall, 1980 (the argument reduction of sin and cos, ch. 8).
+   Payne & Hanek 1983  M. H. Payne, R. N. Hanek, "Radian Reduction for Trigonometric
+                    Functions", ACM SIGNUM Newsletter 18(1), 1983.
+   Dekker 1971      T. J. Dekker, "A Floating-Point Technique for Extending the Available
+                    Precision", Numerische Mathematik 18, 1971 (the split and the exact
+                    product).
+   Moshier 1989     S. L. Moshier, "Methods and Programs for Mathematical Functions", Ellis
+                    Horwood, 1989 (the Cephes library: the sinf, cosf and atanf polynomials).
+   Sun Microsystems 1993  fdlibm, the freely distributable libm (logf and log2f: the
+                    reduction to [sqrt(1/2), sqrt(2)) and the log1p polynomial).
 
 LICENSE: see end of file.
 
@@ -1138,6 +1152,11 @@ typedef enum fovsdf_node_type {
                                  f0 >= 0, f1 > 0; a distance bound (y - h) * f2 with f2 in
                                  (0, 1] (fovsdf_terrain sets f2 = 1 / sqrt(1 + G^2), G its bound
                                  on the slope, which makes it Lipschitz 1) */
+    /* The mandelbulb's atan2, pow, sin, cos, log and the terrain's sin are the library's own
+       float kernels (within 4 ulp of the exact functions; the implementation's "own float
+       kernels" comment has the bounds), whatever the math configuration (libm, FOV_NO_LIBM,
+       the math hooks): these two primitives give the same values on every target, and the
+       batch evaluator runs them vectorised. */
     /* binary operators: a, b children */
     FOVSDF_NODE_UNION,
     FOVSDF_NODE_SUBTRACT,     /* a minus b */
@@ -3704,30 +3723,361 @@ FOVSDF__PRIV float fovsdf__sd_menger(const float p[3], int32_t iters)
     }
     return d;
 }
-FOVSDF__PRIV float fovsdf__sd_mandelbulb(const float p[3], float power, int32_t iters)
+/* Branch-free selects for the lane loops; the same values as the ternaries, NaN and signed
+   zeros included. vmax and vmin are the ternaries themselves (maxps / minps compute exactly
+   a > b ? a : b and a < b ? a : b); every helper the lane loops call carries FOVSDF__VEC, or
+   gcc would not inline it into them (fovsdf__vabs is fov__absf). */
+typedef union fovsdf__fu { float f; uint32_t u; } fovsdf__fu;
+FOVSDF__INL FOVSDF__VEC float fovsdf__sel(int c, float a, float b) /* c ? a : b */
+{
+    fovsdf__fu x, y;
+    uint32_t m = 0u - (uint32_t)(c != 0);
+    x.f = a; y.f = b;
+    x.u = (x.u & m) | (y.u & ~m);
+    return x.f;
+}
+FOVSDF__INL FOVSDF__VEC int32_t fovsdf__seli(int c, int32_t a, int32_t b)
+{
+    int32_t m = -(int32_t)(c != 0);
+    return (a & m) | (b & ~m);
+}
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmax(float a, float b) { return a > b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vmin(float a, float b) { return a < b ? a : b; }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
+{
+    return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
+}
+FOVSDF__INL FOVSDF__VEC int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
+FOVSDF__INL FOVSDF__VEC float fovsdf__vabs(float a) { return a < 0.0f ? -a : a; } /* fov__absf */
+/* A primitive's value v at SDF scale sc with fovsdf_program_eval's last resort: NaN becomes
+   FLT_MAX (v * 1 is v for every v that is not NaN). */
+FOVSDF__INL FOVSDF__VEC float fovsdf__pfin(float v, float sc)
+{
+    float r = v * sc;
+    return fovsdf__sel((r <= 0.0f) | (r > 0.0f), r, FLT_MAX);
+}
+/* 1 when x is +0 (x - x0 is then x for every x, -0 included) */
+FOVSDF__INL FOVSDF__VEC int fovsdf__is_p0(float x)
+{
+    fovsdf__fu u;
+    u.f = x;
+    return u.u == 0u;
+}
+/* FOV__FLOOR(x) without a branch, so the loops vectorise (SSE2 has no floor instruction and
+   gcc keeps floorf a call or a branch): |x| < 2^23 is truncated by an integer conversion and
+   moved down by one when that rounded up (x < 0 not integral); any larger |x| is integral
+   already (as are inf and NaN), and floorf returns it unchanged, so it passes through. libm's
+   floorf keeps the sign of x (floor(-0) = -0); FOV_NO_LIBM's fov__floorf gives +0 there, and so
+   does this without libm. Math hooks: the hook, lane by lane. */
+FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
+{
+#if defined(FOV__HOOKED_MATH)
+    return FOV__FLOOR(x);
+#else
+    fovsdf__fu r;
+    int in = (x > -8388608.0f) & (x < 8388608.0f);
+    float xi = fovsdf__sel(in, x, 0.0f), c = (float)(int32_t)xi;
+#if !defined(FOV_NO_LIBM)
+    fovsdf__fu sx;
+    sx.f = x;
+#endif
+    c = fovsdf__sel(c > xi, c - 1.0f, c);
+    r.f = fovsdf__sel(in, c, x);
+#if !defined(FOV_NO_LIBM)
+    r.u |= sx.u & 0x80000000u; /* the result's sign is x's (0 and -1 < x < 0 included) */
+#endif
+    return r.f;
+#endif
+}
+
+/* ---- the mandelbulb's and the terrain's math: the library's own float kernels -------------
+   sin and cos (fovsdf__ksin, fovsdf__kcos; fovsdf__ksin1: sin for any x), atan2
+   (fovsdf__katan2), log (fovsdf__klog) and pow for x > 0 (fovsdf__kpow), without branches
+   (selects, integer operations on the bits, no float-to-int conversion of an unbounded value)
+   so that the lane loops vectorise. The two primitives use them in fovsdf_program_eval and in
+   the batch evaluator alike and with every math configuration (libm, FOV_NO_LIBM, the math
+   hooks): their values are the same on every IEEE float target without contraction. Errors
+   against double-precision libm (tests/test_fovsdf.c samples them densely; "ulp" is the ulp
+   of the exact result):
+   - sin, cos: the reduction by multiples of pi/2 (Cody & Waite 1980) in three pieces for
+     |x| < 8192 (FOVSDF__KMID), one polynomial for sin on [-pi/2, pi/2]; sin up to 1e6
+     (FOVSDF__KBIG) with k and pi/2 in 12-bit pieces (the products exact) and Moshier's
+     (1989) polynomials on [-pi/4, pi/4]: at most 4 ulp where the result is at least 2^-10 in
+     magnitude, an absolute error below 2^-32 elsewhere. fovsdf__ksin1 reduces any larger
+     finite |x| with 96 bits of 2/pi (Payne & Hanek 1983): the same bounds up to FLT_MAX (the
+     terrain's octaves, 2.03 times larger each, up to its 1e30 cutoff). inf, NaN: NaN.
+   - atan2: at most 3 ulp (the reduction to [0, tan(pi/8)] and Moshier's polynomial); zeros'
+     signs and the quadrants as C99's atan2f, atan2(+-inf, +-inf) = +-pi/4 or +-3pi/4, NaN in,
+     NaN out.
+   - log: at most 1 ulp (fdlibm's logf, Sun Microsystems 1993); log 0 = -inf, log of x < 0 or
+     NaN is NaN, log inf = inf.
+   - pow(x, y) = 2^(y log2 x) for x > 0 and |y| <= 16: at most 3 ulp where the result is a
+     normal float (log2 x as fdlibm's log2f's two parts, y log2 x with Dekker's (1971) exact
+     product); 0 or inf beyond float's range.
+   The mandelbulb's angles are within 16 pi and its radii in [1e-20, 2] (pow) or positive
+   (log); the terrain's arguments are any finite float below its cutoff. */
+#define FOVSDF__KMID 8192.0f
+#define FOVSDF__KBIG 1e6f
+#if defined(__GNUC__) || defined(__clang__) /* too long for gcc's inlining limits otherwise */
+#define FOVSDF__KINL FOVSDF__INL __attribute__((always_inline)) FOVSDF__VEC
+#else
+#define FOVSDF__KINL FOVSDF__INL FOVSDF__VEC
+#endif
+#define FOVSDF__KRND 12582912.0f /* 1.5 * 2^23: (v + it) - it rounds |v| < 2^22 to an integer */
+/* sin r and cos r on [-pi/4, pi/4] (Moshier 1989), then the quadrant q's signs and swap */
+FOVSDF__KINL void fovsdf__ksc(float r, uint32_t q, float *s, float *c)
+{
+    float z = r * r, ps, pc, ss, cc;
+    ps = ((-1.9515295891e-4f * z + 8.3321608736e-3f) * z - 1.6666654611e-1f) * z * r + r;
+    pc = ((2.443315711809948e-5f * z - 1.388731625493765e-3f) * z + 4.166664568298827e-2f) *
+         z * z - 0.5f * z + 1.0f;
+    ss = fovsdf__sel((int)(q & 1u), pc, ps);
+    cc = fovsdf__sel((int)(q & 1u), ps, pc);
+    *s = fovsdf__sel((int)(q & 2u), -ss, ss);
+    *c = fovsdf__sel((int)((q + 1u) & 2u), -cc, cc);
+}
+/* the same for |x| < FOVSDF__KBIG: x - k pi/2 with k = kh + kl (kh a multiple of 4096,
+   |kl| <= 2048) and pi/2 = c1 + c2 + c3 + c4 (12 bits each) + c5: every product k? c? is
+   exact */
+FOVSDF__KINL void fovsdf__ksincos_w(float x, float *s, float *c)
+{
+    fovsdf__fu kb;
+    int in = fovsdf__vabs(x) < FOVSDF__KBIG, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), k, kh, kl, r, ss, cc, adj;
+    kb.f = xs * 0.636619747f + FOVSDF__KRND; /* its low bits: k mod 4 */
+    k = kb.f - FOVSDF__KRND;
+    kh = ((k * 2.44140625e-4f + FOVSDF__KRND) - FOVSDF__KRND) * 4096.0f;
+    kl = k - kh;
+    r = xs - kh * 1.57080078f;
+    r = r - kl * 1.57080078f;
+    r = r - kh * -4.45358455e-6f;
+    r = r - kl * -4.45358455e-6f;
+    r = r - kh * -8.70613803e-10f;
+    r = r - kl * -8.70613803e-10f;
+    r = r - kh * 6.22280005e-14f;
+    r = r - kl * 6.22280005e-14f;
+    r = r - k * 5.72118892e-18f;
+    /* k from the rounded x 2/pi can be one off (|x| beyond 2^20): move r back into
+       [-pi/4, pi/4] (the products are exact) */
+    adj = fovsdf__sel(r > 0.785398185f, 1.0f, fovsdf__sel(r < -0.785398185f, -1.0f, 0.0f));
+    r = ((((r - adj * 1.57080078f) - adj * -4.45358455e-6f) - adj * -8.70613803e-10f) -
+         adj * 6.22280005e-14f) - adj * 5.72118892e-18f;
+    fovsdf__ksc(r, kb.u + (uint32_t)(int32_t)adj, &ss, &cc);
+    *s = fovsdf__sel(fin, ss, x - x);
+    *c = fovsdf__sel(fin, cc, x - x);
+}
+/* sin r on [-pi/2, pi/2] (a little beyond): an odd polynomial of degree 11, the Chebyshev
+   interpolant of (sin r / r - 1) / r^2 in r^2 (relative error 1.9e-8) */
+FOVSDF__KINL float fovsdf__ksinp(float r)
+{
+    float z = r * r;
+    return r + r * z * (-1.666666716e-1f + z * (8.333332837e-3f + z * (-1.984108385e-4f +
+                        z * (2.753629815e-6f - z * 2.407637645e-8f))));
+}
+/* sin x and cos x for |x| < FOVSDF__KMID (beyond: not sin and cos, but finite; inf and NaN
+   give NaN): sin x = (-1)^k sin(x - k pi), cos x = (-1)^(k+1) sin(x - (k + 1/2) pi), the
+   multiples of pi/2 (2k or 2k + 1, below 2^13) subtracted in three pieces c1 (8 bits) + c2
+   (11 bits) + c3 (the products by c1 and c2 exact) */
+FOVSDF__KINL float fovsdf__ksin(float x)
+{
+    fovsdf__fu kb, sb;
+    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), m;
+    kb.f = xs * 0.318309873f + FOVSDF__KRND; /* k = round(x / pi); its low bit: k's parity */
+    m = 2.0f * (kb.f - FOVSDF__KRND);
+    sb.f = fovsdf__ksinp(((xs - m * 1.5703125f) - m * 4.83751297e-4f) - m * 7.54979013e-8f);
+    sb.u ^= kb.u << 31;
+    return fovsdf__sel(fin, sb.f, x - x);
+}
+FOVSDF__KINL float fovsdf__kcos(float x)
+{
+    fovsdf__fu kb, sb;
+    int in = fovsdf__vabs(x) < FOVSDF__KMID, fin = fovsdf__vfinite(x);
+    float xs = fovsdf__sel(in, x, 0.0f), m;
+    kb.f = (xs * 0.318309873f - 0.5f) + FOVSDF__KRND; /* k = round(x / pi - 1/2) */
+    m = 2.0f * (kb.f - FOVSDF__KRND) + 1.0f;
+    sb.f = fovsdf__ksinp(((xs - m * 1.5703125f) - m * 4.83751297e-4f) - m * 7.54979013e-8f);
+    sb.u ^= ~kb.u << 31;
+    return fovsdf__sel(fin, sb.f, x - x);
+}
+FOVSDF__KINL float fovsdf__ksin_w(float x) /* |x| < FOVSDF__KBIG */
+{
+    float s, c;
+    fovsdf__ksincos_w(x, &s, &c);
+    return s;
+}
+/* sin x for finite |x| >= FOVSDF__KBIG: |x| = m 2^e (m an integer < 2^24, e >= -4), and
+   x 2/pi mod 4 is m times the 96 bits of 2/pi from 2^(1-e) on, mod 2^96 (Payne & Hanek
+   1983); the lane loops call it only for such lanes. */
+FOVSDF__PRIV float fovsdf__ksin_big(float x)
+{
+    /* the bits of 2/pi after 32 zero bits (bit t of the table is 2/pi's bit 2^(31 - t)) */
+    static const uint32_t tp[9] = { 0x00000000u, 0x517cc1b7u, 0x27220a94u, 0xfe13abe8u,
+                                    0xfa9a6ee0u, 0x6db14accu, 0x9e21c820u, 0xff28b1d5u,
+                                    0xef5de2b0u };
+    fovsdf__fu b, sc;
+    uint32_t m, t0, w, sh, wd[3], j, q, t32;
+    uint64_t lo, mid, hi, qq, mag;
+    int64_t fr;
+    float s, c, r;
+    b.f = x;
+    m = (b.u & 0x007fffffu) | 0x00800000u;
+    t0 = ((b.u >> 23) & 0xffu) - 150u + 31u; /* the window's first bit, 2^(1-e) */
+    w = t0 >> 5;
+    sh = t0 & 31u;
+    for (j = 0; j < 3; ++j)
+        wd[j] = sh ? (tp[w + j] << sh) | (tp[w + j + 1u] >> (32u - sh)) : tp[w + j];
+    lo = (uint64_t)m * wd[2];
+    mid = (uint64_t)m * wd[1] + (lo >> 32);
+    hi = (uint64_t)m * wd[0] + (mid >> 32);
+    qq = (hi << 32) | (mid & 0xffffffffu); /* x 2/pi mod 4 in units of 2^-62 */
+    qq += (uint64_t)1 << 61;               /* round to the nearest quadrant */
+    q = (uint32_t)(qq >> 62);
+    fr = (int64_t)(qq & ((((uint64_t)1) << 62) - 1u)) - ((int64_t)1 << 61);
+    /* (float)fr rounded as a conversion would, without a 64-bit conversion (a runtime call
+       on 32-bit targets): 32 leading bits with the rest as a sticky bit */
+    mag = fr < 0 ? (uint64_t)(-fr) : (uint64_t)fr;
+    for (sh = 0; (mag >> sh) > 0xffffffffu; ++sh) {}
+    lo = mag >> sh;
+    t32 = (uint32_t)lo | (uint32_t)((lo << sh) != mag);
+    sc.u = (127u + sh) << 23;
+    r = (float)t32 * sc.f;
+    fovsdf__ksc((fr < 0 ? -r : r) * 3.40612167e-19f, q, &s, &c); /* 2^-62 pi/2 */
+    return x < 0.0f ? -s : s;
+}
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__ksin1(float x) /* sin x for every x */
+{
+    float a = fovsdf__vabs(x);
+    if (a < FOVSDF__KMID || !fovsdf__vfinite(x)) return fovsdf__ksin(x);
+    return a < FOVSDF__KBIG ? fovsdf__ksin_w(x) : fovsdf__ksin_big(x);
+}
+FOVSDF__KINL float fovsdf__katan2(float y, float x)
+{
+    fovsdf__fu bx, by;
+    float ax = fovsdf__vabs(x), ay = fovsdf__vabs(y), mx, mn, t, u, z, a;
+    int sw = ay > ax, hi;
+    bx.f = x; by.f = y;
+    mx = fovsdf__sel(sw, ay, ax);
+    mn = fovsdf__sel(sw, ax, ay);
+    t = mn / fovsdf__sel(mx > 0.0f, mx, 1.0f);      /* atan2(0, 0): t = 0 */
+    t = fovsdf__sel(mn > FLT_MAX, 1.0f, t);          /* both infinite */
+    hi = t > 0.414213562f;                           /* tan(pi/8) */
+    u = fovsdf__sel(hi, (t - 1.0f) / (t + 1.0f), t); /* atan t = pi/4 + atan u */
+    z = u * u;
+    a = (((8.05374449538e-2f * z - 1.38776856032e-1f) * z + 1.99777106478e-1f) * z -
+         3.33329491539e-1f) * z * u + u;
+    a = fovsdf__sel(hi, (a + -2.18556950e-8f) + 7.85398185e-1f, a);
+    a = fovsdf__sel(sw, (1.57079637f - a) + -4.37113883e-8f, a);
+    a = fovsdf__sel((int)(bx.u >> 31), (3.14159274f - a) + -8.74227766e-8f, a);
+    return fovsdf__sel((int)(by.u >> 31), -a, a);
+}
+/* x > 0 finite: x = m 2^e with m in [sqrt(1/2), sqrt(2)) (subnormals too); *e = e */
+FOVSDF__KINL float fovsdf__kfrexp(float x, float *e)
+{
+    fovsdf__fu b;
+    int sub = x < 1.17549435e-38f, hi;
+    int32_t ei;
+    b.f = fovsdf__sel(sub, x * 16777216.0f, x);
+    ei = (int32_t)((b.u >> 23) & 0xffu) - fovsdf__seli(sub, 151, 127);
+    b.u = (b.u & 0x007fffffu) | 0x3f800000u;
+    hi = b.f > 1.41421356f;
+    *e = (float)(ei + hi);
+    return fovsdf__sel(hi, 0.5f * b.f, b.f);
+}
+/* log(1 + f) = f - (*h - the return value), *h = f^2 / 2, for f = m - 1 (fdlibm's logf) */
+FOVSDF__KINL float fovsdf__klogt(float f, float *h)
+{
+    float s = f / (2.0f + f), z = s * s, w = z * z;
+    float r = z * (6.6666668653e-1f + w * (2.8571429849e-1f + w * (1.8183572590e-1f +
+                                                                      w * 1.4798198640e-1f))) +
+              w * (4.0000000596e-1f + w * (2.2222198546e-1f + w * 1.5313838422e-1f));
+    *h = 0.5f * f * f;
+    return s * (*h + r);
+}
+FOVSDF__KINL float fovsdf__knan(void)
+{
+    fovsdf__fu b;
+    b.u = 0x7fc00000u;
+    return b.f;
+}
+FOVSDF__KINL float fovsdf__klog(float x)
+{
+    float e, h, f = fovsdf__kfrexp(x, &e) - 1.0f, t = fovsdf__klogt(f, &h), r;
+    r = e * 6.9313812256e-1f - ((h - (t + e * 9.0580006145e-6f)) - f); /* ln 2 = hi + lo */
+    r = fovsdf__sel(x <= FLT_MAX, r, x);                                /* inf, NaN */
+    return fovsdf__sel(x > 0.0f, r,
+                       fovsdf__sel((x <= 0.0f) & (x >= 0.0f), -FLT_MAX * 2.0f, fovsdf__knan()));
+}
+/* a = ah + al with ah of 12 bits (Veltkamp's split, Dekker 1971) */
+FOVSDF__KINL float fovsdf__ksplit(float a, float *al)
+{
+    float c = 4097.0f * a, ah = c - (c - a);
+    *al = a - ah;
+    return ah;
+}
+FOVSDF__KINL float fovsdf__kpow(float x, float y) /* x > 0, |y| <= 16 */
+{
+    fovsdf__fu s1, s2, hb;
+    float e, h, f = fovsdf__kfrexp(x, &e) - 1.0f, t = fovsdf__klogt(f, &h), hi, lo, vh, vl;
+    float yh, yl, a, n, p, pe, n2, g, n3, q, k, k1, y1, y2, v1, v2;
+    /* log2 m = vh + vl (fdlibm's log2f): hi keeps f - h's top 12 bits, vh = hi * 12 bits */
+    hb.f = f - h;
+    hb.u &= 0xfffff000u;
+    hi = hb.f;
+    lo = (f - hi) - h + t;
+    vh = hi * 1.4428710938f;
+    vl = (lo + hi) * -1.7605285393e-4f + lo * 1.4428710938f;
+    /* y log2 x = e yh + e yl + y vh + y vl: e yh exact (yh: y to 12 fractional bits), y vh
+       as p + pe (Dekker's product); the integer parts n, n2 come off exactly */
+    yh = ((y * 4096.0f + FOVSDF__KRND) - FOVSDF__KRND) * 2.44140625e-4f;
+    yl = y - yh;
+    a = e * yh;
+    n = (a + FOVSDF__KRND) - FOVSDF__KRND;
+    p = y * vh;
+    y1 = fovsdf__ksplit(y, &y2);
+    v1 = fovsdf__ksplit(vh, &v2);
+    pe = (((y1 * v1 - p) + y1 * v2) + y2 * v1) + y2 * v2;
+    n2 = (p + FOVSDF__KRND) - FOVSDF__KRND;
+    g = ((a - n) + (p - n2)) + ((pe + e * yl) + y * vl);
+    n3 = (g + FOVSDF__KRND) - FOVSDF__KRND;
+    g = g - n3; /* |g| <= 1/2: 2^g (Taylor to degree 7) */
+    q = 1.0f + g * (6.931471806e-1f + g * (2.402265070e-1f + g * (5.550410866e-2f +
+        g * (9.618129108e-3f + g * (1.333355815e-3f + g * (1.540353039e-4f +
+        g * 1.525273380e-5f))))));
+    k = fovsdf__vclamp((n + n2) + n3, -252.0f, 252.0f);
+    k1 = (k * 0.5f + FOVSDF__KRND) - FOVSDF__KRND;
+    s1.u = (uint32_t)((int32_t)k1 + 127) << 23;
+    s2.u = (uint32_t)((int32_t)(k - k1) + 127) << 23;
+    return q * s1.f * s2.f;
+}
+/* The mandelbulb and the terrain with the kernels above; fovsdf__prim_lanes computes the
+   same values over the lanes. */
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__sd_mandelbulb(const float p[3], float power,
+                                                     int32_t iters)
 {
     float z[3], dr = 1.0f, r;
     int32_t i;
     z[0] = p[0]; z[1] = p[1]; z[2] = p[2];
     r = fov__len(z);
     for (i = 0; i < iters && r <= 2.0f; ++i) {
-        float th, ph, zr, st;
+        float th, ph, zr, st, ct, sp, cp;
         if (r < 1e-20f) { dr = 1.0f; break; }
-        th = FOV__ATAN2(fovsdf__len2f(z[0], z[1]), z[2]) * power;
-        ph = FOV__ATAN2(z[1], z[0]) * power;
-        zr = FOV__POW(r, power - 1.0f);
+        th = fovsdf__katan2(fovsdf__len2f(z[0], z[1]), z[2]) * power;
+        ph = fovsdf__katan2(z[1], z[0]) * power;
+        zr = fovsdf__kpow(r, power - 1.0f);
         dr = power * zr * dr + 1.0f;
         zr *= r;
-        st = FOV__SIN(th);
-        z[0] = zr * st * FOV__COS(ph) + p[0];
-        z[1] = zr * st * FOV__SIN(ph) + p[1];
-        z[2] = zr * FOV__COS(th) + p[2];
+        st = fovsdf__ksin(th); ct = fovsdf__kcos(th);
+        sp = fovsdf__ksin(ph); cp = fovsdf__kcos(ph);
+        z[0] = zr * st * cp + p[0];
+        z[1] = zr * st * sp + p[1];
+        z[2] = zr * ct + p[2];
         r = fov__len(z);
     }
     if (r < 1e-20f) return 0.0f;
-    return 0.5f * FOV__LOG(r) * r / dr;
+    return 0.5f * fovsdf__klog(r) * r / dr;
 }
-FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
+FOVSDF__PRIV FOVSDF__VEC float fovsdf__terrain_h(float x, float z, const float *f, int32_t oct)
 {
     float h = 0.0f, w = 1.0f, fx = x * f[1], fz = z * f[1];
     int32_t o;
@@ -3735,7 +4085,7 @@ FOVSDF__PRIV float fovsdf__terrain_h(float x, float z, const float *f, int32_t o
         float nx;
         /* beyond 1e30 (not finite soon after) the octaves are float noise: stop, never NaN */
         if (!(fov__absf(fx) < 1e30f && fov__absf(fz) < 1e30f)) break;
-        h += w * FOV__SIN(fx) * FOV__SIN(fz);
+        h += w * fovsdf__ksin1(fx) * fovsdf__ksin1(fz);
         nx = (0.8f * fx - 0.6f * fz) * 2.03f; /* rotate and scale each octave */
         fz = (0.6f * fx + 0.8f * fz) * 2.03f;
         fx = nx;
@@ -3943,73 +4293,6 @@ typedef struct fovsdf__bscr {
     uint32_t bj[FOVSDF__BREC], bslot[FOVSDF__BREC], nact[FOVSDF__BREC + 1];
 } fovsdf__bscr;
 
-/* Branch-free selects for the lane loops; the same values as the ternaries, NaN and signed
-   zeros included. vmax and vmin are the ternaries themselves (maxps / minps compute exactly
-   a > b ? a : b and a < b ? a : b); every helper the lane loops call carries FOVSDF__VEC, or
-   gcc would not inline it into them (fovsdf__vabs is fov__absf). */
-typedef union fovsdf__fu { float f; uint32_t u; } fovsdf__fu;
-FOVSDF__INL FOVSDF__VEC float fovsdf__sel(int c, float a, float b) /* c ? a : b */
-{
-    fovsdf__fu x, y;
-    uint32_t m = 0u - (uint32_t)(c != 0);
-    x.f = a; y.f = b;
-    x.u = (x.u & m) | (y.u & ~m);
-    return x.f;
-}
-FOVSDF__INL FOVSDF__VEC int32_t fovsdf__seli(int c, int32_t a, int32_t b)
-{
-    int32_t m = -(int32_t)(c != 0);
-    return (a & m) | (b & ~m);
-}
-FOVSDF__INL FOVSDF__VEC float fovsdf__vmax(float a, float b) { return a > b ? a : b; }
-FOVSDF__INL FOVSDF__VEC float fovsdf__vmin(float a, float b) { return a < b ? a : b; }
-FOVSDF__INL FOVSDF__VEC float fovsdf__vclamp(float x, float a, float b) /* = fovsdf__clampf */
-{
-    return fovsdf__sel(x >= a, fovsdf__sel(x > b, b, x), a);
-}
-FOVSDF__INL FOVSDF__VEC int fovsdf__vfinite(float x) { return (x >= -FLT_MAX) & (x <= FLT_MAX); }
-FOVSDF__INL FOVSDF__VEC float fovsdf__vabs(float a) { return a < 0.0f ? -a : a; } /* fov__absf */
-/* A primitive's value v at SDF scale sc with fovsdf_program_eval's last resort: NaN becomes
-   FLT_MAX (v * 1 is v for every v that is not NaN). */
-FOVSDF__INL FOVSDF__VEC float fovsdf__pfin(float v, float sc)
-{
-    float r = v * sc;
-    return fovsdf__sel((r <= 0.0f) | (r > 0.0f), r, FLT_MAX);
-}
-/* 1 when x is +0 (x - x0 is then x for every x, -0 included) */
-FOVSDF__INL FOVSDF__VEC int fovsdf__is_p0(float x)
-{
-    fovsdf__fu u;
-    u.f = x;
-    return u.u == 0u;
-}
-/* FOV__FLOOR(x) without a branch, so the loops vectorise (SSE2 has no floor instruction and
-   gcc keeps floorf a call or a branch): |x| < 2^23 is truncated by an integer conversion and
-   moved down by one when that rounded up (x < 0 not integral); any larger |x| is integral
-   already (as are inf and NaN), and floorf returns it unchanged, so it passes through. libm's
-   floorf keeps the sign of x (floor(-0) = -0); FOV_NO_LIBM's fov__floorf gives +0 there, and so
-   does this without libm. Math hooks: the hook, lane by lane. */
-FOVSDF__INL FOVSDF__VEC float fovsdf__vfloor(float x)
-{
-#if defined(FOV__HOOKED_MATH)
-    return FOV__FLOOR(x);
-#else
-    fovsdf__fu r;
-    int in = (x > -8388608.0f) & (x < 8388608.0f);
-    float xi = fovsdf__sel(in, x, 0.0f), c = (float)(int32_t)xi;
-#if !defined(FOV_NO_LIBM)
-    fovsdf__fu sx;
-    sx.f = x;
-#endif
-    c = fovsdf__sel(c > xi, c - 1.0f, c);
-    r.f = fovsdf__sel(in, c, x);
-#if !defined(FOV_NO_LIBM)
-    r.u |= sx.u & 0x80000000u; /* the result's sign is x's (0 and -1 < x < 0 included) */
-#endif
-    return r.f;
-#endif
-}
-
 /* v[i] = sqrt(v[i]) over the lanes, exactly FOV__SQRT's value. */
 FOVSDF__INL FOVSDF__VEC void fovsdf__sqrt_lanes(float *v)
 {
@@ -4032,7 +4315,8 @@ FOVSDF__INL FOVSDF__VEC void fovsdf__sqrt_lanes(float *v)
 
 /* One primitive over the lanes at (x, y, z) into d, times sc, NaN made FLT_MAX (fovsdf__pfin),
    with the float operations of fovsdf__prim in its order; w: five scratch lanes. Every
-   primitive but the mandelbulb and the terrain (sin, atan2, pow) runs vectorised. */
+   primitive runs vectorised (the mandelbulb and the terrain with the library's own kernels;
+   a terrain lane whose argument is beyond FOVSDF__KBIG takes fovsdf__ksin1 one by one). */
 FOVSDF__PRIV FOVSDF__VEC void
 fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
                    const float *FOVSDF__RESTRICT y, const float *FOVSDF__RESTRICT z,
@@ -4219,6 +4503,113 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         }
         for (i = 0; i < n; ++i)
             d[i] = fovsdf__pfin(fovsdf__sel(d0[i] <= 1.0f, dm[i], d0[i]) * s0, sc);
+        break;
+    }
+    case FOVSDF_NODE_MANDELBULB: { /* fovsdf__sd_mandelbulb, lane by lane the same values */
+        /* The lanes still iterating (r <= 2, r >= 1e-20) are packed into the first cnt slots
+           of c* (lane ix[k]); each iteration runs over them alone (rounded up to 4: the
+           slots past cnt compute values nobody reads) and drops the lanes that stopped. A
+           lane's R and DR are its r and dr. */
+        float *FOVSDF__RESTRICT R = t, *FOVSDF__RESTRICT DR = u;
+        float cx[FOVSDF__L], cy[FOVSDF__L], cz[FOVSDF__L], zx[FOVSDF__L], zy[FOVSDF__L];
+        float zz[FOVSDF__L], cdr[FOVSDF__L], cr[FOVSDF__L], cq[FOVSDF__L];
+        uint32_t ix[FOVSDF__L], cnt = 0, k, j, cn4;
+        float pw = f[0], pm = f[0] - 1.0f;
+        int32_t m, it = in->i[0];
+        for (i = 0; i < n; ++i) {
+            R[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+            DR[i] = 1.0f;
+            cx[i] = cy[i] = cz[i] = zx[i] = zy[i] = zz[i] = cr[i] = 0.0f;
+            cdr[i] = 1.0f;
+        }
+        fovsdf__sqrt_lanes(R);
+        for (i = 0; i < n; ++i) {
+            if (R[i] <= 2.0f && !(R[i] < 1e-20f)) {
+                cx[cnt] = zx[cnt] = x[i]; cy[cnt] = zy[cnt] = y[i]; cz[cnt] = zz[cnt] = z[i];
+                cr[cnt] = R[i]; ix[cnt++] = i;
+            }
+        }
+        for (m = 0; m < it && cnt > 0; ++m) {
+            cn4 = (cnt + 3u) & ~3u;
+            for (k = 0; k < cn4; ++k) cq[k] = zx[k] * zx[k] + zy[k] * zy[k];
+            fovsdf__sqrt_lanes(cq);
+            for (k = 0; k < cn4; ++k) {
+                float th = fovsdf__katan2(cq[k], zz[k]) * pw;
+                float ph = fovsdf__katan2(zy[k], zx[k]) * pw;
+                float zr = fovsdf__kpow(cr[k], pm), st, ct, sp, cp;
+                cdr[k] = pw * zr * cdr[k] + 1.0f;
+                zr *= cr[k];
+                st = fovsdf__ksin(th); ct = fovsdf__kcos(th);
+                sp = fovsdf__ksin(ph); cp = fovsdf__kcos(ph);
+                zx[k] = zr * st * cp + cx[k];
+                zy[k] = zr * st * sp + cy[k];
+                zz[k] = zr * ct + cz[k];
+                cq[k] = zx[k] * zx[k] + zy[k] * zy[k] + zz[k] * zz[k];
+            }
+            fovsdf__sqrt_lanes(cq);
+            for (k = 0, j = 0; k < cnt; ++k) {
+                float rk = cq[k];
+                R[ix[k]] = rk;
+                DR[ix[k]] = cdr[k]; /* (at r < 1e-20 the distance is 0, whatever dr) */
+                if (rk <= 2.0f && !(rk < 1e-20f)) { /* iterates on: to slot j */
+                    cx[j] = cx[k]; cy[j] = cy[k]; cz[j] = cz[k];
+                    zx[j] = zx[k]; zy[j] = zy[k]; zz[j] = zz[k];
+                    cdr[j] = cdr[k]; cr[j] = rk; ix[j++] = ix[k];
+                }
+            }
+            cnt = j;
+        }
+        for (i = 0; i < n; ++i)
+            d[i] = fovsdf__pfin(fovsdf__sel(R[i] < 1e-20f, 0.0f,
+                                            0.5f * fovsdf__klog(R[i]) * R[i] / DR[i]), sc);
+        break;
+    }
+    case FOVSDF_NODE_TERRAIN: { /* fovsdf__terrain_h: a lane past the 1e30 cutoff stops */
+        float *FOVSDF__RESTRICT fx = w[2], *FOVSDF__RESTRICT fz = w[3], *FOVSDF__RESTRICT h = w[4];
+        float *FOVSDF__RESTRICT s2 = d; /* scratch until the end */
+        float fr = f[1], wo = 1.0f;
+        int32_t o, oct = in->i[0], big;
+        for (i = 0; i < n; ++i) {
+            fx[i] = x[i] * fr; fz[i] = z[i] * fr; h[i] = 0.0f;
+            u[i] = 1.0f; /* 1: the lane still adds octaves */
+        }
+        for (o = 0; o < oct; ++o) {
+            big = 0;
+            for (i = 0; i < n; ++i) {
+                float ax = fovsdf__vabs(fx[i]), az = fovsdf__vabs(fz[i]);
+                int live = (u[i] > 0.0f) & (ax < 1e30f) & (az < 1e30f);
+                t[i] = fovsdf__ksin(fx[i]);
+                s2[i] = fovsdf__ksin(fz[i]);
+                big |= live & ((ax >= FOVSDF__KMID) | (az >= FOVSDF__KMID));
+                u[i] = fovsdf__sel(live, 1.0f, 0.0f);
+            }
+            if (big) { /* fovsdf__ksin1's choice per lane: the wide reduction, then beyond it
+                          Payne-Hanek one by one */
+                big = 0;
+                for (i = 0; i < n; ++i) {
+                    float ax = fovsdf__vabs(fx[i]), az = fovsdf__vabs(fz[i]);
+                    t[i] = fovsdf__sel(ax >= FOVSDF__KMID, fovsdf__ksin_w(fx[i]), t[i]);
+                    s2[i] = fovsdf__sel(az >= FOVSDF__KMID, fovsdf__ksin_w(fz[i]), s2[i]);
+                    big |= (u[i] > 0.0f) & ((ax >= FOVSDF__KBIG) | (az >= FOVSDF__KBIG));
+                }
+            }
+            if (big) {
+                for (i = 0; i < n; ++i) {
+                    if (u[i] > 0.0f) {
+                        t[i] = fovsdf__ksin1(fx[i]);
+                        s2[i] = fovsdf__ksin1(fz[i]);
+                    }
+                }
+            }
+            for (i = 0; i < n; ++i) {
+                float nx = (0.8f * fx[i] - 0.6f * fz[i]) * 2.03f;
+                h[i] = fovsdf__sel(u[i] > 0.0f, h[i] + wo * t[i] * s2[i], h[i]);
+                fz[i] = (0.6f * fx[i] + 0.8f * fz[i]) * 2.03f;
+                fx[i] = nx;
+            }
+            wo *= 0.5f;
+        }
+        for (i = 0; i < n; ++i) d[i] = fovsdf__pfin((y[i] - h[i] * f[0]) * f[2], sc);
         break;
     }
     default:

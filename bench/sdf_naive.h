@@ -13,7 +13,8 @@
    same; the rotation matrices are the float values of the builders' Rodrigues formula
    (cosf/sinf of the angle). The libm calls go through NAIVE_SQRTF, NAIVE_FLOORF, NAIVE_SINF,
    NAIVE_COSF, NAIVE_ATAN2F, NAIVE_POWF and NAIVE_LOGF (default: <math.h>), which the test
-   maps to the library's own approximations in its FOV_NO_LIBM build.
+   maps to the library's math (the mandelbulb's and the terrain's own float kernels among it),
+   so that both sides compute the same values.
 
    Differences from the built-in programs: these are the exact trees, so far from every
    surface they return the exact distance where a program returns the (smaller) distance to a

@@ -26,6 +26,7 @@
  *      supersampling coverage against the documented sample patterns, every built-in
  *      scene x method x shading mode, camera rays and stereo, an analytic sphere image.
  *   5. (FOV_NO_LIBM builds only) the built-in float math against libm.
+ *   6. The mandelbulb's and the terrain's own float kernels (every build) against libm.
  * "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
  * Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025.
  */
@@ -2624,6 +2625,153 @@ static void test_render_sphere(void)
     ib_free(&ib);
 }
 
+/* The mandelbulb's and the terrain's own float kernels (every build) against libm in double,
+   over dense samples: errors in ulps of the exact value (sin and cos: where it is at least
+   2^-10 in magnitude, an absolute error below 2^-32 under that), the bounds the header
+   documents. */
+static double kulp(double v) /* the ulp of the float nearest v */
+{
+    int e;
+    v = fabs(v);
+    if (v < 1.17549435e-38) return ldexp(1.0, -149);
+    (void)frexp(v, &e);
+    return ldexp(1.0, e - 24);
+}
+typedef struct ksc_err { double ulp, abs; float at; } ksc_err;
+static void ksc_acc(ksc_err *e, double got, double want, float x)
+{
+    if (fabs(want) >= 1.0 / 1024.0) {
+        double u = fabs(got - want) / kulp(want);
+        if (u > e->ulp) { e->ulp = u; e->at = x; }
+    } else if (fabs(got - want) > e->abs) {
+        e->abs = fabs(got - want);
+    }
+}
+static void ksc_check(const ksc_err *e, const char *name)
+{
+    check(e->ulp <= 4.0 && e->abs <= ldexp(1.0, -32), name,
+          "%.2f ulp (at %.9g), absolute %.3g near zeros", e->ulp, (double)e->at, e->abs);
+}
+static void test_prim_kernels(void)
+{
+    ksc_err e1, e2, e3, e4, e5;
+    uint32_t u, n;
+    double w;
+    float x, s, c, xs[4];
+    memset(&e1, 0, sizeof e1); e2 = e3 = e4 = e5 = e1;
+    /* every 29th float in [0, 8192): sin (the terrain's and the mandelbulb's) and cos */
+    for (u = 0; u < 0x46000000u; u += 29u) {
+        memcpy(&x, &u, 4);
+        ksc_acc(&e1, (double)fovsdf__ksin(x), sin((double)x), x);
+        ksc_acc(&e1, (double)fovsdf__ksin(-x), sin(-(double)x), -x);
+        ksc_acc(&e2, (double)fovsdf__kcos(x), cos((double)x), x);
+        ksc_acc(&e2, (double)fovsdf__kcos(-x), cos(-(double)x), -x);
+    }
+    ksc_check(&e1, "kernel_sin_below_8192");
+    ksc_check(&e2, "kernel_cos_below_8192");
+    /* [8192, 1e6): the wide reduction; every float there with a stride */
+    for (u = 0x46000000u; u < 0x49742400u; u += 17u) {
+        memcpy(&x, &u, 4);
+        fovsdf__ksincos_w(x, &s, &c);
+        ksc_acc(&e3, (double)s, sin((double)x), x);
+        ksc_acc(&e3, (double)c, cos((double)x), x);
+        ksc_acc(&e3, (double)fovsdf__ksin1(-x), sin(-(double)x), -x);
+    }
+    ksc_check(&e3, "kernel_sincos_wide_8192_to_1e6");
+    /* 1e6 to FLT_MAX: Payne-Hanek (fovsdf__ksin1), the 1e30 cutoff included */
+    for (u = 0x49742400u; u < 0x7f800000u; u += 2039u) {
+        memcpy(&x, &u, 4);
+        ksc_acc(&e4, (double)fovsdf__ksin1(x), sin((double)x), x);
+        ksc_acc(&e4, (double)fovsdf__ksin1(-x), sin(-(double)x), -x);
+    }
+    for (n = 0; n < 100000u; ++n) { /* near 1e30 */
+        x = 1e30f * (1.0f + (float)n * 1e-7f);
+        ksc_acc(&e4, (double)fovsdf__ksin1(x), sin((double)x), x);
+    }
+    ksc_check(&e4, "kernel_sin_beyond_1e6");
+    /* the terrain's arguments: 12 octaves of rotation and 2.03 scaling from random points */
+    xs[0] = 0.0f;
+    for (n = 0; n < 100000u; ++n) {
+        float fx = (float)(pow(10.0, -3.0 + 9.0 * (double)(n % 1000u) / 1000.0) *
+                           sin(1.7 * (double)n)), fz = fx * 0.37f + (float)n * 1e-3f;
+        int o;
+        for (o = 0; o < 12; ++o) {
+            float nx;
+            if (!(fabsf(fx) < 1e30f && fabsf(fz) < 1e30f)) break;
+            ksc_acc(&e5, (double)fovsdf__ksin1(fx), sin((double)fx), fx);
+            ksc_acc(&e5, (double)fovsdf__ksin1(fz), sin((double)fz), fz);
+            nx = (0.8f * fx - 0.6f * fz) * 2.03f;
+            fz = (0.6f * fx + 0.8f * fz) * 2.03f;
+            fx = nx;
+        }
+    }
+    ksc_check(&e5, "kernel_sin_terrain_octaves");
+    {   /* inf and NaN: NaN, no trap */
+        float inf = FLT_MAX * (xs[0] + 2.0f), nan = inf - inf;
+        s = fovsdf__ksin(inf);
+        c = fovsdf__kcos(nan);
+        check(s != s && c != c && fovsdf__ksin(-inf) != fovsdf__ksin(-inf) &&
+                  fovsdf__ksin1(nan) != fovsdf__ksin1(nan) && fovsdf__ksin1(inf) != fovsdf__ksin1(inf),
+              "kernel_sin_inf_nan_is_nan", "sin(inf) %g cos(inf) %g", (double)s, (double)c);
+        check(fovsdf__katan2(nan, 1.0f) != fovsdf__katan2(nan, 1.0f) &&
+                  fovsdf__klog(nan) != fovsdf__klog(nan) && fovsdf__klog(-1.0f) != fovsdf__klog(-1.0f) &&
+                  fovsdf__klog(inf) == inf && fovsdf__klog(0.0f) == -inf && fovsdf__klog(-0.0f) == -inf,
+              "kernel_atan2_log_special", "log(inf) %g log(0) %g", (double)fovsdf__klog(inf),
+              (double)fovsdf__klog(0.0f));
+        {   /* atan2's zeros and infinities as C99's atan2 */
+            static const float v[] = { 0.0f, -0.0f, 1.0f, -1.0f, 3e38f, -3e38f, 1e-40f, -1e-40f };
+            uint32_t i, j, bad = 0;
+            float vv[10];
+            for (i = 0; i < 8; ++i) vv[i] = v[i];
+            vv[8] = inf; vv[9] = -inf;
+            for (i = 0; i < 10; ++i)
+                for (j = 0; j < 10; ++j) {
+                    double want = atan2((double)vv[i], (double)vv[j]);
+                    float got = fovsdf__katan2(vv[i], vv[j]);
+                    uint32_t gb, wb;
+                    float wf = (float)want;
+                    memcpy(&gb, &got, 4); memcpy(&wb, &wf, 4);
+                    if (fabs((double)got - want) > 3.0 * kulp(want) || (gb >> 31) != (wb >> 31))
+                        ++bad;
+                }
+            check(bad == 0, "kernel_atan2_zeros_infinities", "%u of 100 pairs", bad);
+        }
+    }
+    /* atan2 over dense (y, x) pairs of every sign and ratio */
+    w = 0.0;
+    for (n = 0; n < 1000000u; ++n) {
+        float yy = (float)(((n * 2654435761u) >> 8) & 0xffffffu) / 16777216.0f * 8.0f - 4.0f;
+        float xx = (float)((n * 40503u + 12345u) % 1000003u) / 1000003.0f * 8.0f - 4.0f;
+        double want;
+        if (n % 4 == 1) yy *= 1e-6f;
+        if (n % 4 == 2) xx *= 1e-6f;
+        want = atan2((double)yy, (double)xx);
+        if (want != 0.0) w = dmax(w, fabs((double)fovsdf__katan2(yy, xx) - want) / kulp(want));
+    }
+    check(w <= 3.0, "kernel_atan2_3ulp", "%.2f ulp", w);
+    /* log: every 127th positive float, subnormals included */
+    w = 0.0;
+    for (u = 1; u < 0x7f800000u; u += 127u) {
+        double want;
+        memcpy(&x, &u, 4);
+        want = log((double)x);
+        if (want != 0.0) w = dmax(w, fabs((double)fovsdf__klog(x) - want) / kulp(want));
+    }
+    check(w <= 1.0, "kernel_log_1ulp", "%.2f ulp", w);
+    /* pow: x in [1e-20, 1e4], y in [-16, 16] (the mandelbulb's power - 1 is in [1, 15]) */
+    w = 0.0;
+    for (n = 0; n < 1000000u; ++n) {
+        float px = (float)pow(10.0, -20.0 + 24.0 * (double)((n * 2654435761u) >> 8) / 16777216.0);
+        float py = (float)((n * 40503u) % 65521u) / 65521.0f * 32.0f - 16.0f;
+        double want;
+        if (n % 3 == 0) py = 1.0f + (float)(n % 15u) + (float)(n % 7u) * 0.125f;
+        want = pow((double)px, (double)py);
+        if (want < 1.17549435e-38 || want > 3.4e38) continue;
+        w = dmax(w, fabs((double)fovsdf__kpow(px, py) - want) / kulp(want));
+    }
+    check(w <= 3.0, "kernel_pow_3ulp", "%.2f ulp", w);
+}
+
 #ifdef FOV_NO_LIBM
 /* The built-in float approximations against libm (double). */
 static void test_nolibm_math(void)
@@ -3139,6 +3287,9 @@ int main(void)
     test_shadow_fov_ecc();
     test_shadow_fov_render();
     T_SECTION("6 shadow_fov");
+    /* 7. the mandelbulb's and the terrain's own float kernels against libm */
+    test_prim_kernels();
+    T_SECTION("7 prim_kernels");
 #ifdef FOV_NO_LIBM
     /* 5. the FOV_NO_LIBM math approximations against libm */
     test_nolibm_math();

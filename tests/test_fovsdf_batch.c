@@ -7,6 +7,7 @@
 #include "fovsdf.h"
 #include "fovcheck.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -286,6 +287,67 @@ int main(void)
         }
         compare(fovcheck_name("random%d", r), &prog, 1.0f);
         compare(fovcheck_name("random%d", r), &prog, 1.1f);
+    }
+    for (r = 0; r < 24; ++r) {
+        /* the mandelbulb and the terrain alone (their own float kernels, vectorised): random
+           parameters, points from 1e-25 to 1e30 in magnitude (the terrain's arguments cross
+           the kernels' reduction ranges, 8192 and 1e6, and its 1e30 cutoff within a batch),
+           the origin, and inf / NaN coordinates */
+        static fovsdf_node nodes[8];
+        static unsigned char pm[1 << 12];
+        fovsdf_builder b;
+        fovsdf_program prog;
+        int32_t root;
+        size_t sz;
+        uint32_t i;
+        fovsdf_builder_init(&b, nodes, 8);
+        if (r % 2)
+            root = fovsdf_mandelbulb(&b, rr(2.0f, 16.0f), 1 + (int32_t)(rnd() * 32.0f));
+        else
+            root = fovsdf_terrain(&b, rr(0.0f, 3.0f), r % 4 ? rr(0.01f, 2.0f) : rr(2.0f, 60.0f),
+                                  1 + (int32_t)(rnd() * 12.0f));
+        if (r % 3 == 0) root = fovsdf_scale(&b, root, rr(0.3f, 3.0f));
+        if (root < 0 || fovsdf_program_size(nodes, b.count, root, &sz) != FOV_OK ||
+            sz > sizeof pm || fovsdf_program_build(&prog, nodes, b.count, root, pm, sz) != FOV_OK) {
+            check(0, fovcheck_name("mb_terrain%d_build", r), "root %d", (int)root);
+            continue;
+        }
+        for (i = 0; i < NPT; ++i) {
+            float sc = (i % 3 == 0) ? rr(0.2f, 1.6f) : (float)pow(10.0, (double)rr(-25.0f, 30.0f));
+            g_x[i] = rr(-sc, sc); g_y[i] = rr(-sc, sc); g_z[i] = rr(-sc, sc);
+            if (i % 5 == 1) g_y[i] = rr(-2.0f, 2.0f) * rr(0.0f, 1.0f); /* near the terrain */
+            g_e[i] = (i % 4 == 0) ? 0.0f : rr(0.0f, 0.3f);
+        }
+        g_x[7] = g_y[7] = g_z[7] = 0.0f;
+        g_x[11] = 1e-30f; g_y[11] = -1e-30f; g_z[11] = 0.0f;
+        g_x[13] = 1.0f / (g_e[0] * 0.0f + 0.0f); /* inf */
+        g_z[17] = -g_x[13];
+        g_y[19] = g_x[13] - g_x[13]; /* NaN */
+        g_x[23] = 5e5f; g_z[23] = 7e5f;     /* arguments near 1e6 */
+        g_x[29] = 2e29f; g_z[29] = -9e29f; /* near the cutoff */
+        {
+            char nm[32];
+            snprintf(nm, sizeof nm, "%s%d", r % 2 ? "mandelbulb" : "terrain", r);
+            compare(nm, &prog, 1.0f);
+            compare(nm, &prog, 0.93f);
+        }
+        {   /* points within the float envelope (|coordinates| <= 1e18, NUMERICS) get a
+               finite distance below FLT_MAX: no NaN (which the evaluator would turn into
+               FLT_MAX) and no overflow */
+            uint32_t bad = 0, first = 0;
+            for (i = 0; i < NPT; ++i) {
+                fovsdf_query q;
+                float p3[3], dd;
+                if (!(fabsf(g_x[i]) <= 1e18f && fabsf(g_y[i]) <= 1e18f && fabsf(g_z[i]) <= 1e18f))
+                    continue;
+                memset(&q, 0, sizeof q);
+                p3[0] = g_x[i]; p3[1] = g_y[i]; p3[2] = g_z[i];
+                dd = fovsdf_program_eval(p3, &q, &prog);
+                if (!(dd > -FLT_MAX && dd < FLT_MAX) && bad++ == 0) first = i;
+            }
+            check(bad == 0, fovcheck_name("mb_terrain%d_finite", r), "%u points (first %u)", bad,
+                  first);
+        }
     }
     {   /* bounds nested 24 deep, with points at every level's radius: more pending bounds
            than the batch evaluator keeps (16), so it falls back to point by point */
