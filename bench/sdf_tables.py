@@ -12,6 +12,8 @@ usage: python3 bench/sdf_tables.py [bench/results/sdf.csv]
              mean    bench/results/sdf.csv (make bench-sdf): the mean over scenes
              fov     bench/results/sdf_fov.csv (bench_sdf --fov-grid): the mean over scenes,
                      fovea 2.5 / 7.5 / 15 degrees, gaze at the centre (all rows in the CSV)
+             frames  bench/results/sdf.csv: frame times per scene (1 spp, all cores) of the
+                     methods a user picks between, with the issue-12 columns
              all     bench/results/sdf.csv: every row
              stress  bench/results/stress.csv (make bench-stress): per method and spp, the
                      sums over the six stress scenes
@@ -84,6 +86,26 @@ def every_row(rows):
     return out
 
 
+FRAME_METHODS = ("classic", "cone", "cone_fov", "cone_fov_shfov", "naive", "cone_cb", "cone_fov_cb")
+
+
+def frame_table(rows):
+    """Per scene and method (1 spp, gaze at the centre, the default build): the frame on all
+    cores (frame_ms, threads), evaluations per pixel (all, shadow rays), ns per evaluation on
+    one thread, primitives per evaluation, and the speed-ups against naive and classic."""
+    out = ["| scene | method | frame ms | threads | evals/px | shadow evals/px | ns/eval (1 thread) | prims/eval | "
+           "speed-up vs naive | speed-up vs classic | PSNR dB |",
+           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        if r["method"] not in FRAME_METHODS or r["spp"] != "1" or r["gaze"] != "center" or "frame_ms" not in r:
+            continue
+        tot = float(r.get("evals_total_per_px") or r["evals_per_px"])
+        out.append(f"| {r['scene']} | {r['method']} | {float(r['frame_ms']):.1f} | {r['threads']} | {tot:.1f} | "
+                   f"{float(r['shadow_evals_per_px']):.1f} | {float(r['ns_per_eval']):.1f} | {float(r['prims_per_eval']):.2f} | "
+                   f"{float(r['speedup_vs_naive']):.2f} | {float(r['speedup_vs_classic']):.2f} | {float(r['psnr']):.2f} |")
+    return out
+
+
 def demo_table(rows):
     """The columns and number formats examples/sdf_scenes.c prints (its ground-truth rows are
     not in the CSV)."""
@@ -134,6 +156,7 @@ def main(argv):
             "demo": demo_table(read(os.path.join(RESULTS, "demo.csv"))),
             "mean": mean_table(read(os.path.join(RESULTS, "sdf.csv"))),
             "fov": mean_table(read(os.path.join(RESULTS, "sdf_fov.csv")), foveas=(2.5, 7.5, 15.0), gazes=("center",)),
+            "frames": frame_table(read(os.path.join(RESULTS, "sdf.csv"))),
             "all": every_row(read(os.path.join(RESULTS, "sdf.csv"))),
             "stress": stress_table(read(os.path.join(RESULTS, "stress.csv"))),
         })
