@@ -238,9 +238,10 @@ ACUITY-DRIVEN FOVEATION
 CHEAPER SHADOWS BEYOND THE FOVEA
    Opt-in (config.shadow_fov_deg > 0; off by default, and off every image and counter is as
    without the fields): the samples whose image point lies beyond shadow_fov_deg of the gaze
-   (the eccentricity model above; a cosine test per shaded sample, its pixel's or its level
-   cell's centre, no atan2) start their shadow rays at least shadow_fov_t0_px (default 4)
-   pixel footprints from the surface instead of shadow_t0. Near the surface Algorithm 2's steps
+   (the eccentricity model above; a cosine test per shaded sample ray, in float: samples at
+   the threshold may fall either side of fovsdf_ecc_deg's value; no atan2) start their shadow
+   rays at least shadow_fov_t0_px (default 4) pixel footprints from the surface instead of
+   shadow_t0. Near the surface Algorithm 2's steps
    are small (h grows about as t sin(angle to the surface)), so this skips the costliest part
    of most rays; what goes is a contact shadow thinner than those pixels, which the periphery
    does not resolve. The pixels within the threshold are bit for bit today's. Measured
@@ -295,8 +296,9 @@ CONFIGURATION (define before including the implementation)
    FOVSDF_QUARTER_BAND  pixels over which FIPR's and CONE_FOV's quarter level blends in past
                         config.quarter_deg (default 8; 0: a hard switch)
    FOVSDF_PRUNE_CODE    instructions of the per-tile pruned program of a built-in program
-                        scene that CONE and CONE_FOV keep on their stack (64 bytes each;
-                        default 0: no pruning). Each tile prunes the program for its cone
+                        scene that CONE and CONE_FOV keep on their stack (64 bytes each, on
+                        the stack of the thread that renders the tile: mind small thread
+                        stacks; default 0: no pruning). Each tile prunes the program for its cone
                         (bounds its rays never enter become their bound's value, bound tests
                         they always pass go, unions such a value can never win go) and marches
                         every batch inside the cone with it: the same images, depths,
@@ -500,8 +502,10 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
      the default 256 steps): they are reported as FOVSDF_EXHAUSTED with the t reached, and
      shaded as hits there. They never pass through the surface.
    - The mandelbulb and the terrain use the library's own sin, cos, atan2, pow and log (see
-     fovsdf_node_type), never libm's or the math hooks': their values are the same with libm,
-     FOV_NO_LIBM and the hooks, and within 4 ulp of the exact functions.
+     fovsdf_node_type), never libm's or the math hooks' (the square root is still FOV__SQRT,
+     so a FOV_SQRTF hook changes them): their values are the same with libm and FOV_NO_LIBM,
+     and within 4 ulp of the exact functions (sin and cos: 2^-32 absolute where the result is
+     below 2^-10; pow: for |y| <= 16 and a normal result).
    - Floating-point contraction: the tests build with -ffp-contract=off; results across
      targets agree within the tolerances stated in tests/xtarget (measured: identical images
      on x86-64, wasm32 and Cortex-M4 with libm; 56 dB PSNR for FOV_NO_LIBM on x86-64).
@@ -919,14 +923,15 @@ typedef struct fovsdf_config {
     float shadow_eps;       /* shadow ray: stop when the penumbra factor < it      0: 1e-3 */
     float shadow_t0;        /* shadow ray start offset along the light, world units 0: 1e-2 */
     float shadow_fov_deg;   /* cheaper shadow rays for the samples beyond this eccentricity,
-                               degrees (their image point's, fov_display; the pixels within
-                               keep today's shadows bit for bit): the two fields below;
-                               [0, 180]                           0: off (every ray as above) */
+                               degrees (each sample ray's, fov_display; the pixels within,
+                               up to float rounding at the threshold, keep today's shadows
+                               bit for bit): the two fields below; [0, 180]
+                                                                  0: off (every ray as above) */
     float shadow_fov_t0_px; /* beyond shadow_fov_deg: the shadow ray starts at least this many
                                pixel footprints at the hit (pixel_angle * distance from the
                                pinhole) along the light, skipping the small steps next to the
                                surface: contact shadows thinner than that go (CHEAPER
-                               SHADOWS BEYOND THE FOVEA); >= 0                        0: 4 */
+                               SHADOWS BEYOND THE FOVEA); 0 .. 1e6                    0: 4 */
     uint32_t shadow_fov_steps; /* beyond shadow_fov_deg: max steps per shadow ray, 1 ..
                                shadow_steps; below shadow_steps, a ray that runs out still in
                                a penumbra (its last k h / t < 1) is dark (0), else it keeps its
@@ -1168,9 +1173,10 @@ typedef enum fovsdf_node_type {
                                  on the slope, which makes it Lipschitz 1) */
     /* The mandelbulb's atan2, pow, sin, cos, log and the terrain's sin are the library's own
        float kernels (within 4 ulp of the exact functions; the implementation's "own float
-       kernels" comment has the bounds), whatever the math configuration (libm, FOV_NO_LIBM,
-       the math hooks): these two primitives give the same values on every target, and the
-       batch evaluator runs them vectorised. */
+       kernels" comment has the bounds and their conditions), whatever the math configuration
+       (libm, FOV_NO_LIBM, the math hooks but FOV_SQRTF, which their square roots use): these
+       two primitives give the same values on every target, and the batch evaluator runs them
+       vectorised. */
     /* binary operators: a, b children */
     FOVSDF_NODE_UNION,
     FOVSDF_NODE_SUBTRACT,     /* a minus b */
@@ -1457,13 +1463,16 @@ FOVSDF_API fov_result fovsdf_shade_points(const fovsdf_ctx *ctx, uint32_t n, con
    (a cone that reaches t_max: every ray of the group misses). The guarantee is CONE's: no ray
    starts past its first hit. So each point is fovsdf_shade_point's up to where its march stops
    inside the hit threshold (as CONE's pixels are CLASSIC's), not bit for bit. group 0 or 1 is
-   fovsdf_shade_points; at most FOVSDF_MAX_GROUP (256), else FOV_ERR_INVALID_ARG. The points of a
-   group should lie close together (fovlp_samples' order: a log-polar row around the gaze); a
-   group spread wide only costs its cone's first evaluation. fovlp's C Fov samples of
+   fovsdf_shade_points; at most FOVSDF_MAX_GROUP (default 256), else FOV_ERR_INVALID_ARG. The
+   points of a group should lie close together (fovlp_samples' order: a log-polar row around
+   the gaze); a group spread wide only costs its cone's first evaluation. fovlp's C Fov samples of
    primitives at 640x360, group 8: 25 % fewer evaluations with soft shadows (48.0 -> 36.2 per
    sample), 35 % without; 13 % fewer instructions (bench_lp --group). */
 #ifndef FOVSDF_MAX_GROUP
 #define FOVSDF_MAX_GROUP 256u
+#endif
+#if (FOVSDF_MAX_GROUP) < 1 || (FOVSDF_MAX_GROUP) > 65536
+#error "fovsdf: FOVSDF_MAX_GROUP must be in 1 .. 65536"
 #endif
 FOVSDF_API fov_result fovsdf_shade_points_grouped(const fovsdf_ctx *ctx, uint32_t n,
                                                   const float *xy, uint32_t stride,
@@ -2614,8 +2623,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "config.shadow_fov_t0_px is NaN or infinite");
     if (c.shadow_fov_deg < 0.0f || c.shadow_fov_deg > 180.0f)
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.shadow_fov_deg must be in [0, 180] (0: off)");
-    if (c.shadow_fov_t0_px < 0.0f)
-        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.shadow_fov_t0_px must be >= 0 (0: 4)");
+    if (c.shadow_fov_t0_px < 0.0f || c.shadow_fov_t0_px > 1e6f)
+        FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.shadow_fov_t0_px must be in [0, 1e6] (0: 4)");
     if (fov__is0(c.shadow_fov_t0_px)) c.shadow_fov_t0_px = 4.0f;
     /* shadow_fov_steps 0 stays 0 (shadow_steps): a default config takes any shadow_steps */
     if (c.shadow_fov_steps > c.shadow_steps)
@@ -4533,8 +4542,8 @@ fovsdf__prim_lanes(const fovsdf__ins *in, const float *FOVSDF__RESTRICT x,
         for (i = 0; i < n; ++i) {
             R[i] = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
             DR[i] = 1.0f;
-            cx[i] = cy[i] = cz[i] = zx[i] = zy[i] = zz[i] = cr[i] = 0.0f;
-            cdr[i] = 1.0f;
+            cx[i] = cy[i] = cz[i] = zx[i] = zy[i] = zz[i] = cr[i] = cq[i] = 0.0f;
+            cdr[i] = 1.0f; /* (fovsdf__sqrt_lanes(cq) reads every lane) */
         }
         fovsdf__sqrt_lanes(R);
         for (i = 0; i < n; ++i) {
@@ -5030,6 +5039,9 @@ FOVSDF_API void fovsdf_program_eval_batch(fovsdf_batch *b, void *user)
                             program (0: every tile that could be pruned) */
 #define FOVSDF_PRUNE_MIN 1
 #endif
+#if (FOVSDF_PRUNE_CODE) < 0 || (FOVSDF_PRUNE_MIN) < 0
+#error "fovsdf: FOVSDF_PRUNE_CODE and FOVSDF_PRUNE_MIN must be >= 0"
+#endif
 typedef struct fovsdf__preg {
     int kind;                      /* 0 unknown (nothing is pruned), 1 cone, 2 box */
     float apex[3], axis[3], k, t0, t1;
@@ -5385,8 +5397,9 @@ FOVSDF__PRIV int fovsdf__prune(const fovsdf_program *prog, const fovsdf__preg *g
             break;
         }
         case FOVSDF__OP_UNARY: {
-            fovsdf__pval *v = &vs[vsp - 1];
+            fovsdf__pval *v;
             if (vsp < 1 || in->sub == FOVSDF__SUB_CNT) return 0; /* a program pruned already */
+            v = &vs[vsp - 1];
             if (in->sub == FOVSDF_NODE_ROUND) { v->lo -= in->f[0]; v->hi -= in->f[0]; }
             else {
                 float l = v->lo, h = v->hi;
@@ -7644,7 +7657,7 @@ FOVSDF_API fov_result fovsdf_shade_points_grouped(const fovsdf_ctx *c, uint32_t 
     if (!c) return FOV_ERR_NULL;
     if (group > FOVSDF_MAX_GROUP)
         FOVSDF__FAIL(&c->cfg.logger, FOV_ERR_INVALID_ARG,
-                     "shade_points_grouped: group above FOVSDF_MAX_GROUP (256)");
+                     "shade_points_grouped: group above FOVSDF_MAX_GROUP");
     if (n == 0) return FOV_OK;
     r = fovsdf__points_check(c, n, xy, &stride, rgb);
     if (r != FOV_OK) return r;
@@ -8195,14 +8208,16 @@ fovsdf__skip_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t x0, ui
 {
     fovsdf__wcone cn[FOVSDF_WAVE];
     uint32_t act[FOVSDF_WAVE], B = c->cfg.skip_block, W = c->cam.width, H = c->cam.height;
-    uint32_t cx, cy, nu = 0, nv = 0, n, i, j, nb, x, y;
+    uint32_t cx, cy, nu = 0, nv = 0, j, nb, x, y;
+    uint64_t n, i; /* nu nv reaches 2^32 at 65536 x 65536 with skip_block 1 */
     for (cx = x0 / B; cx * B < x1; ++cx) ++nu;
     for (cy = y0 / B; cy * B < y1; ++cy) ++nv;
-    n = nu * nv;
+    n = (uint64_t)nu * nv;
     for (i = 0; i < n; i += nb) {
-        nb = n - i < FOVSDF_WAVE ? n - i : FOVSDF_WAVE;
+        nb = n - i < FOVSDF_WAVE ? (uint32_t)(n - i) : FOVSDF_WAVE;
         for (j = 0; j < nb; ++j) {
-            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            uint32_t bx0 = (x0 / B + (uint32_t)((i + j) % nu)) * B,
+                     by0 = (y0 / B + (uint32_t)((i + j) / nu)) * B;
             float k = fovsdf__cell_cone(c, (float)bx0, (float)by0,
                                         (float)(bx0 + B < W ? bx0 + B : W),
                                         (float)(by0 + B < H ? by0 + B : H), cn[j].a);
@@ -8211,7 +8226,8 @@ fovsdf__skip_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t x0, ui
         }
         fovsdf__wave_cones(wv, m, nb, cn, act);
         for (j = 0; j < nb; ++j) {
-            uint32_t bx0 = (x0 / B + (i + j) % nu) * B, by0 = (y0 / B + (i + j) / nu) * B;
+            uint32_t bx0 = (x0 / B + (uint32_t)((i + j) % nu)) * B,
+                     by0 = (y0 / B + (uint32_t)((i + j) / nu)) * B;
             uint32_t bx1 = bx0 + B < W ? bx0 + B : W, by1 = by0 + B < H ? by0 + B : H;
             float t0 = cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, 0.0f), m->t_max);
             for (y = (by0 > y0 ? by0 : y0); y < (by1 < y1 ? by1 : y1); ++y)

@@ -736,7 +736,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--scenes") && a + 1 < argc) scenes = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];
         else if (!strcmp(argv[a], "--shadows")) shadows = 1;
-        else if (!strcmp(argv[a], "--group") && a + 1 < argc) group = (uint32_t)atoi(argv[++a]);
+        else if (!strcmp(argv[a], "--group") && a + 1 < argc) {
+            int g = atoi(argv[++a]);
+            if (g < 0 || g > (int)FOVSDF_MAX_GROUP) { fprintf(stderr, "--group: 0 .. %u\n", (unsigned)FOVSDF_MAX_GROUP); return 2; }
+            group = (uint32_t)g;
+        }
         else if (!strcmp(argv[a], "--fovea-study")) study = 1;
         else if (!strcmp(argv[a], "--acuity-study")) astudy = 1;
         else if (!strcmp(argv[a], "--quality") && a + 1 < argc) aq = (float)atof(argv[++a]);
@@ -897,8 +901,11 @@ int main(int argc, char **argv)
                 double t0;
                 memset(&user.stats, 0, sizeof user.stats); /* deterministic counts of the first run */
                 t0 = now_ms();
-                fovsdf_shade_points_grouped(user.sdf, (uint32_t)npx, centres, 2, group, full_img, NULL, NULL,
-                                            &user.stats);
+                if (fovsdf_shade_points_grouped(user.sdf, (uint32_t)npx, centres, 2, group, full_img, NULL, NULL,
+                                                &user.stats) != FOV_OK) {
+                    fprintf(stderr, "fovsdf_shade_points_grouped failed\n");
+                    return 1;
+                }
                 tfull[a] = now_ms() - t0;
                 if (a == 0) st_full = user.stats;
                 memset(&user.stats, 0, sizeof user.stats);

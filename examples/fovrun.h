@@ -54,8 +54,9 @@ static double fovrun_now_ms(void)
     return (double)ts.tv_sec * 1e3 + (double)ts.tv_nsec * 1e-6;
 }
 
-/* Renders the whole image with nthreads threads (1 .. 64; 1 renders on the calling thread,
-   with the same items) taking work items from a shared counter; returns the wall time in ms
+/* Renders the whole image with nthreads threads (1 .. 64: the calling thread and nthreads - 1
+   started ones; 1 renders on the calling thread, with the same items) taking work items from
+   a shared counter; returns the wall time in ms
    and the summed stats in *st. The image and every counter are the same for any nthreads. */
 static double fovrun_render(const fovsdf_ctx *ctx, const fovsdf_output *out, int nthreads,
                             fovsdf_stats *st)
@@ -63,7 +64,7 @@ static double fovrun_render(const fovsdf_ctx *ctx, const fovsdf_output *out, int
     pthread_t th[64];
     fovrun_job jobs[64];
     fovrun_queue q;
-    int i;
+    int i, started[64];
     uint32_t spp = ctx->cfg.spp ? ctx->cfg.spp : 1u, px = FOVRUN_ITEM_PX / spp, tiles;
     double t0 = fovrun_now_ms();
     if (nthreads < 1) nthreads = 1;
@@ -82,12 +83,13 @@ static double fovrun_render(const fovsdf_ctx *ctx, const fovsdf_output *out, int
     for (i = 0; i < nthreads; ++i) {
         memset(&jobs[i], 0, sizeof jobs[i]);
         jobs[i].ctx = ctx; jobs[i].out = out; jobs[i].q = &q;
-        if (nthreads > 1) pthread_create(&th[i], NULL, fovrun_worker, &jobs[i]);
+        /* job 0 is the caller's; a thread that cannot start leaves its items to the others */
+        started[i] = i > 0 && pthread_create(&th[i], NULL, fovrun_worker, &jobs[i]) == 0;
     }
-    if (nthreads == 1) fovrun_worker(&jobs[0]);
+    fovrun_worker(&jobs[0]); /* the caller works too (1 thread: all of it) */
     memset(st, 0, sizeof *st);
     for (i = 0; i < nthreads; ++i) {
-        if (nthreads > 1) pthread_join(th[i], NULL);
+        if (started[i]) pthread_join(th[i], NULL);
         fovsdf_stats_add(st, &jobs[i].stats);
     }
     pthread_mutex_destroy(&q.lock);

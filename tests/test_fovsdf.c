@@ -3065,6 +3065,7 @@ static void test_shadow_fov_config(void)
         { "deg_inf", "shadow_fov_deg", 0, 1.0f, FOV_ERR_NOT_FINITE },
         { "steps_above_shadow_steps", "shadow_fov_steps", 1, 65.0f, FOV_ERR_INVALID_ARG },
         { "t0_px_negative", "shadow_fov_t0_px", 2, -0.5f, FOV_ERR_INVALID_ARG },
+        { "t0_px_above_1e6", "shadow_fov_t0_px", 2, 2e6f, FOV_ERR_INVALID_ARG },
         { "t0_px_nan", "shadow_fov_t0_px", 2, 0.0f, FOV_ERR_NOT_FINITE },
         { "t0_px_inf", "shadow_fov_t0_px", 2, 1.0f, FOV_ERR_NOT_FINITE },
     };
@@ -3081,7 +3082,7 @@ static void test_shadow_fov_config(void)
     expect_res("shadow_fov_resolve_small_budget", fovsdf_config_resolve(&z, &c), FOV_OK);
     check(c.shadow_fov_steps == 0u, "shadow_fov_steps_kept_0", "%u", c.shadow_fov_steps);
     z = fovsdf_config_default();
-    z.shadow_fov_deg = 180.0f; z.shadow_fov_steps = 64; z.shadow_fov_t0_px = 1e3f;
+    z.shadow_fov_deg = 180.0f; z.shadow_fov_steps = 64; z.shadow_fov_t0_px = 1e6f;
     expect_res("shadow_fov_resolve_edges_ok", fovsdf_config_resolve(&z, &c), FOV_OK);
     for (i = 0; i < sizeof bad / sizeof bad[0]; ++i) {
         msgrec lr;

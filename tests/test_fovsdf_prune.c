@@ -16,7 +16,7 @@
       cannot prune those; their batch callback gets the tile's cone): identical images, depths,
       materials, evaluation counts and stats; every point of a batch that comes with a cone lies
       in it (checked in double). */
-#define FOVSDF_PRUNE_CODE 2048 /* random programs are longer than the default 128 */
+#define FOVSDF_PRUNE_CODE 2048 /* pruning on (default 0), long enough for the random programs */
 #define FOVSDF_PRUNE_MIN 0     /* every tile that can be pruned uses its pruned program */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
