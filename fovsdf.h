@@ -8208,32 +8208,33 @@ fovsdf__skip_safe(const fovsdf_ctx *c, const fovsdf__marcher *m, uint32_t x0, ui
 {
     fovsdf__wcone cn[FOVSDF_WAVE];
     uint32_t act[FOVSDF_WAVE], B = c->cfg.skip_block, W = c->cam.width, H = c->cam.height;
-    uint32_t cx, cy, nu = 0, nv = 0, j, nb, x, y;
-    uint64_t n, i; /* nu nv reaches 2^32 at 65536 x 65536 with skip_block 1 */
+    uint32_t cx, cy, nu = 0, nv = 0, j, nb, x, y, u = 0, v = 0, u0, v0;
     for (cx = x0 / B; cx * B < x1; ++cx) ++nu;
     for (cy = y0 / B; cy * B < y1; ++cy) ++nv;
-    n = (uint64_t)nu * nv;
-    for (i = 0; i < n; i += nb) {
-        nb = n - i < FOVSDF_WAVE ? (uint32_t)(n - i) : FOVSDF_WAVE;
-        for (j = 0; j < nb; ++j) {
-            uint32_t bx0 = (x0 / B + (uint32_t)((i + j) % nu)) * B,
-                     by0 = (y0 / B + (uint32_t)((i + j) / nu)) * B;
+    /* the blocks in row-major order, FOVSDF_WAVE at a time; (u, v) walks them without an
+       index (nu nv reaches 2^32 at 65536 x 65536 with skip_block 1) */
+    while (nu > 0 && v < nv) {
+        u0 = u; v0 = v;
+        for (nb = 0; nb < FOVSDF_WAVE && v < nv; ++nb) {
+            uint32_t bx0 = (x0 / B + u) * B, by0 = (y0 / B + v) * B;
             float k = fovsdf__cell_cone(c, (float)bx0, (float)by0,
                                         (float)(bx0 + B < W ? bx0 + B : W),
-                                        (float)(by0 + B < H ? by0 + B : H), cn[j].a);
-            cn[j].k = k;
-            cn[j].t = 0.0f; /* from the camera: safe_start with t_par 0 */
+                                        (float)(by0 + B < H ? by0 + B : H), cn[nb].a);
+            cn[nb].k = k;
+            cn[nb].t = 0.0f; /* from the camera: safe_start with t_par 0 */
+            if (++u == nu) { u = 0; ++v; }
         }
         fovsdf__wave_cones(wv, m, nb, cn, act);
+        u = u0; v = v0;
         for (j = 0; j < nb; ++j) {
-            uint32_t bx0 = (x0 / B + (uint32_t)((i + j) % nu)) * B,
-                     by0 = (y0 / B + (uint32_t)((i + j) / nu)) * B;
+            uint32_t bx0 = (x0 / B + u) * B, by0 = (y0 / B + v) * B;
             uint32_t bx1 = bx0 + B < W ? bx0 + B : W, by1 = by0 + B < H ? by0 + B : H;
             float t0 = cn[j].t < 0.0f ? -1.0f : fov__minf(fov__maxf(cn[j].t, 0.0f), m->t_max);
             for (y = (by0 > y0 ? by0 : y0); y < (by1 < y1 ? by1 : y1); ++y)
                 for (x = (bx0 > x0 ? bx0 : x0); x < (bx1 < x1 ? bx1 : x1); ++x)
                     fovsdf__wave_pixel(wv, m, x, y, t0 < 0.0f ? 0.0f : t0, t0 < 0.0f, NULL, 0.0f,
                                        0.0f);
+            if (++u == nu) { u = 0; ++v; }
         }
     }
 }
