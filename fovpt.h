@@ -1,4 +1,4 @@
-/* fovpt.h - v0.4.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.5.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -67,7 +67,7 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
       output.
 
-STATUS (v0.4.0)
+STATUS (v0.5.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
    path tracer (all materials, NEE + MIS, Russian roulette, bounce limit), the Whitted tracer,
    the random streams, progressive accumulation, every method (UNIFORM, LAYERS, ZONES,
@@ -173,10 +173,11 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    fills the three foveation families from the display (cfg.display; all zero: the camera's
    frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
    shared MAR(e) = mar0 + slope e of Guenter et al. 2012, one quality knob): cfg.layers (count,
-   radius_deg, stride, bspline = 1; spp kept), cfg.zones.inner_deg, middle_deg and bspline = 1,
-   cfg.selective.e_deg[5] and tau_shape; whichever method cfg.method picks then uses its own
-   family. Every other field (method, spp, blend_deg, overlap_px, n_sd, tau, temporal,
-   display, logger, ...) stays as the caller set it; on an error cfg is unchanged and the
+   radius_deg, stride, spp, bspline = hollow = cell_jitter = 1), cfg.zones (inner_deg,
+   middle_deg, spp[3], bspline = hollow = cell_jitter = 1), cfg.selective.e_deg[5] and
+   tau_shape; whichever method cfg.method picks then uses its own family. Every other field
+   (method, spp, acuity_budget, blend_deg, overlap_px, n_sd, tau, temporal, display, logger,
+   ...) stays as the caller set it; on an error cfg is unchanged and the
    logger gets the reason (a bad eye field: FOV_ERR_NOT_FINITE or FOV_ERR_INVALID_ARG naming
    it; a bad config, camera or display: the code fovpt_config_resolve or fovpt_init would
    give). A second call changes nothing.
@@ -196,12 +197,40 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      radius blend_deg / 2. A fixed ladder keeps the stride at each eccentricity monotone in ppd
      and quality. No occlusion mask (layer[0] radius 0). A display coarser than the eye
      across the image: two layers, stride 1 out to 179.5 degrees and a background of the
-     spacing allowed there. Layer spp: the caller's table (count 0: the preset's) by position
-     from the innermost layer; extra layers take its outermost non-background layer's spp, the
-     background its background's.
+     spacing allowed there; with hollow = 1 the background is then never traced on screen, so
+     the table costs UNIFORM's samples and gives UNIFORM's image (at cfg.spp, bit for bit).
+     hollow = 1: no layer traced under a finer one's full-weight disk (Axblad 2020's layers
+     overlap: at 640 x 360 and quality 0.25 the background alone added 36 % to UNIFORM's
+     samples). cell_jitter = 1: a lattice point's samples cover its d x d cell, so detail
+     finer than the lattice becomes noise (averaged by spp and the eye) instead of aliasing.
    - Zones. inner_deg = e_half and middle_deg = e_quarter of the plan (densities 1/4 and 1/16
      are exactly what the eye allows from there), each plus half the overlap band
-     (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside.
+     (overlap_px / ppd / 2 degrees), since the coarser zone's weight starts that far inside;
+     hollow and cell_jitter as for the layers; spp[3] as below.
+   - Samples (layers' spp, zones.spp; the path tracer's noise is what the periphery shows).
+     After the eye's blur (a Gaussian of s = 0.375 MAR(e), the measure of examples/fovmetrics.h,
+     s in pixels) independent noise of variance v per sample keeps v / spp_u x cu of it in
+     UNIFORM's image, cu = 1 / (1 + 4 pi s^2) (the Gaussian's sum of squared weights), and
+     v / spp_n x cl on a stride-d lattice, cl = 1 / (1 + 4 pi (b^2 + s^2 / d^2)), b^2 = 1/3
+     (the B-spline) + 1/12 (the cell box) in cells^2; cu and cl averaged over each layer's
+     band (a 48 x 48 grid of image points, the gaze at the centre). acuity_budget 0: spp_n =
+     the least integer >= spp cl / cu (spp = cfg.spp, UNIFORM's): each band's mean filtered
+     noise at most UNIFORM's; the stride-1 layer takes spp, a coarser one between 1 and spp
+     d^2 (UNIFORM's density). acuity_budget B > 0: spp_n = k (d^2 cl^g)^(1 / (1 + g)), g =
+     FOVPT_ACUITY_GAMMA (0.5), which minimises the mean of (filtered variance)^g (g 1/2: the
+     mean filtered standard deviation) for the total B W H spp (k fitted to the lattice points
+     the table traces and to the rounded spp; within a few % of the budget): B = 1 is equal
+     time with UNIFORM, the fovea then gets more than spp, the periphery less.
+     The bound. Equal filtered noise at a pixel needs spp_n / d^2 >= spp cl / (d^2 cu): the
+     saving there is at most d^2 cu / cl = (d^2 + 4 pi (b^2 d^2 + s^2)) / (1 + 4 pi s^2),
+     which for the eye's stride d = q MAR ppd (s = 0.375 d / q, s >> 1) tends to
+     1 + 4 pi b^2 q^2 / (1.77) ~ 1 + 2.95 q^2 (b^2 = 5/12): 3.9x at quality 1, 1.7x at 0.5, and
+     1 (none) inside e_full. Every saving an unbiased estimator gets at equal noise comes from
+     the reconstruction's own blur b (bias, kept near the eye's: b d = 0.65 d against
+     0.375 d / q); FLIP weighs the lattice's coarser noise more than its variance says, so the
+     measured saving at equal perceived quality is lower (bench_perceptual). A denoiser (an
+     edge-aware filter far wider than b, issue 14), temporal accumulation or noise the eye's
+     filter removes better (blue-noise / low-discrepancy samples) lifts it.
    - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
      on the coarse lattices. What makes the periphery visible, measured after filtering both
      images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, at 33.6
@@ -233,6 +262,11 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
+   FOVPT_ACUITY_GAMMA   fovpt_config_acuity with acuity_budget > 0 minimises the mean of
+                        (eye-filtered variance)^gamma                     (default 0.5)
+   FOVPT_ACUITY_CELL_JITTER  cell_jitter fovpt_config_acuity sets, 0 or 1  (default 1)
+   FOVPT_ACUITY_NOISE_MARGIN fovpt_config_acuity, acuity_budget 0: the coarse layers' spp
+                        times this over the equal-noise rule              (default 1)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
    Shared by the three headers (listed in the shared declarations block below):
@@ -364,6 +398,15 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.5.0 (2026-12-05) fovpt_config_acuity sets the samples from the eye model: spp per layer /
+                      zone for equal eye-filtered noise (acuity_budget 0, new field) or
+                      spread for the least mean noise at a budget (acuity_budget > 0); new
+                      fields layers.hollow / zones.hollow (no layer traced under a finer one;
+                      UNIFORM's streams: a display coarser than the eye costs and shows exactly
+                      UNIFORM), layers.cell_jitter / zones.cell_jitter (samples over the
+                      lattice cell: prefiltered), zones.spp[3]; all zero by default (presets'
+                      images unchanged). fovpt_config_acuity no longer keeps the caller's layer
+                      spp (set them after the call to override).
    0.4.0 (2026-12-02) fovpt_config_acuity: the layer table (radii, strides from a ladder), the
                       zone radii and the selective borders from the display and the shared eye
                       model (fov_eye, fovpt_eye_plan; Guenter et al. 2012), presets kept by
@@ -420,12 +463,24 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 4
+#define FOVPT_VERSION_MINOR 5
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.4.0"
+#define FOVPT_VERSION_STRING "0.5.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
+#endif
+#ifndef FOVPT_ACUITY_GAMMA
+#define FOVPT_ACUITY_GAMMA 0.5f
+#endif
+#ifndef FOVPT_ACUITY_CELL_JITTER
+#define FOVPT_ACUITY_CELL_JITTER 1u
+#endif
+#ifndef FOVPT_ACUITY_CLAMP_WHITE
+#define FOVPT_ACUITY_CLAMP_WHITE 1.0f
+#endif
+#ifndef FOVPT_ACUITY_NOISE_MARGIN
+#define FOVPT_ACUITY_NOISE_MARGIN 1.0f
 #endif
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
@@ -792,6 +847,23 @@ typedef struct fovpt_layers_cfg {
     uint32_t bspline;       /* 1: layers of stride >= 2 reconstructed by the cubic B-spline
                                (smoothing: averages the lattice's path-tracing noise) instead
                                of Catmull-Rom; 0: Catmull-Rom (Axblad 2020) */
+    uint32_t hollow;        /* 1: a layer is traced only where the resolve reads it, outside
+                               the next finer layer's full-weight disk less the filter's reach
+                               (see LAYERS), and a pixel's k-th sample is the same stream in
+                               every layer, as in UNIFORM: a table whose stride-1 layer covers
+                               the image gives UNIFORM's samples and image; 0: every layer
+                               covers its whole disk, streams per layer (Axblad 2020) */
+    uint32_t cell_jitter;   /* 1: a stride-d layer's samples jitter over the d x d pixels
+                               centred on its lattice point (a box prefilter: edges and detail
+                               finer than the lattice turn into noise, which spp averages,
+                               instead of aliasing); 0: inside the lattice point's pixel */
+    float clamp_white;      /* > 0: a stride >= 2 lattice point averages its samples in groups
+                               of cfg.spp (one UNIFORM pixel's), each group's mean clamped per
+                               channel at clamp_white (the display's white: 1 for rgb8) first.
+                               A displayed UNIFORM pixel clips its mean there, so the layer
+                               estimates the mean of what UNIFORM shows: a firefly keeps one
+                               pixel's weight instead of lighting the whole cell. Biased in
+                               linear radiance (as the display is); 0: off */
 } fovpt_layers_cfg;
 
 typedef enum fovpt_layers_preset_id {
@@ -810,6 +882,14 @@ typedef struct fovpt_zones_cfg {
     uint32_t lanczos_a;     /* Lanczos lobes, 2 or 3; 0: 3 */
     uint32_t bspline;       /* 1: the 1/4 and 1/16 zones reconstructed by the cubic B-spline
                                (smoothing, as layers.bspline) instead of Lanczos; 0: Lanczos */
+    uint32_t hollow;        /* 1: each zone's lattice traced only where the resolve reads it
+                               (as layers.hollow); 0: full-frame lattices (Polychronakis 2025) */
+    uint32_t spp[3];        /* samples per traced pixel of the inner (1), middle (1/4) and
+                               outer (1/16) zone, <= FOVPT_MAX_SPP;             0: cfg.spp */
+    uint32_t cell_jitter;   /* 1: the middle and outer zones' samples jitter over their 2 x 2
+                               and 4 x 4 cells (as layers.cell_jitter); 0: in the pixel */
+    float clamp_white;      /* the middle and outer zones' group clamp (as layers.clamp_white,
+                               groups of cfg.spp); 0: off */
 } fovpt_zones_cfg;
 
 /* Selective foveated supersampling of Kim et al. 2021 (also the JIN baseline). */
@@ -849,6 +929,11 @@ typedef struct fovpt_config {
     uint32_t no_nee;        /* 1: no next-event estimation (BSDF sampling only) */
     uint32_t seed;          /* random stream seed (any value) */
     uint32_t accumulate;    /* 1: trace_rows adds to the running mean (progressive) */
+    float acuity_budget;    /* read by fovpt_config_acuity only (ACUITY-DRIVEN CONFIGURATION,
+                               samples): 0: each layer's / zone's spp the fewest that keep its
+                               eye-filtered noise at UNIFORM's at spp; > 0: the total samples
+                               about acuity_budget x UNIFORM's (W H spp), spread to minimise the
+                               mean eye-filtered noise (1: equal time). [0, 64]         0: 0 */
     fovpt_layers_cfg layers;
     fovpt_zones_cfg zones;
     fovpt_selective_cfg selective;
@@ -881,6 +966,7 @@ typedef struct fovpt_ctx {    /* filled by fovpt_init */
     uint32_t layer_ox[FOVPT_MAX_LAYERS], layer_oy[FOVPT_MAX_LAYERS];
     uint32_t layer_nx[FOVPT_MAX_LAYERS], layer_ny[FOVPT_MAX_LAYERS];
     float layer_trace_deg[FOVPT_MAX_LAYERS]; /* lattice points up to this eccentricity are traced */
+    float layer_inner_deg[FOVPT_MAX_LAYERS]; /* hollow: and from this one (else -1) */
     fovpt_layers_cfg lay;     /* LAYERS: cfg.layers; ZONES: the three zones as static layers */
     /* ZONES: Lanczos lobes a of the upsampling (LAYERS: 0, Catmull-Rom) */
     uint32_t lanczos;
@@ -945,10 +1031,11 @@ FOVPT_API fovpt_config fovpt_config_default(void);
 /* Defaults filled in and every field validated (also the tables of the methods not used). */
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
-/* Acuity-driven foveation (see ACUITY-DRIVEN CONFIGURATION): fills cfg's layer table, zone radii
-   and selective borders (with the tau_fov slope) from cfg->display (all zero: cam's frustum),
-   the eye (NULL: the defaults) and fovpt_eye_plan; every other field stays as set. Errors
-   through cfg->logger; on error cfg is unchanged. */
+/* Acuity-driven foveation (see ACUITY-DRIVEN CONFIGURATION): fills cfg's layer table (with its
+   spp), zone radii and spp, hollow and cell_jitter, and the selective borders (with the tau_fov
+   slope) from cfg->display (all zero: cam's frustum), the eye (NULL: the defaults),
+   fovpt_eye_plan, cfg->spp (UNIFORM's, the reference) and cfg->acuity_budget; every other
+   field stays as set. Errors through cfg->logger; on error cfg is unchanged. */
 FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
                                          const fov_eye *eye);
 
@@ -1925,11 +2012,16 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
         uint32_t lin = c.layers.blend_linear, snap = c.layers.snap, bs = c.layers.bspline;
+        uint32_t ho = c.layers.hollow, cj = c.layers.cell_jitter;
+        float cw = c.layers.clamp_white;
         fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_RADIUS);
         if (!(bd <= 0.0f && bd >= 0.0f)) c.layers.blend_deg = bd;
         c.layers.blend_linear = lin;
         c.layers.snap = snap;
         c.layers.bspline = bs;
+        c.layers.hollow = ho;
+        c.layers.cell_jitter = cj;
+        c.layers.clamp_white = cw;
     }
     if (c.layers.count < 2 || c.layers.count > FOVPT_MAX_LAYERS)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.count must be 2 .. FOVPT_MAX_LAYERS");
@@ -1944,6 +2036,18 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.snap must be 0 or 1");
     if (c.layers.bspline > 1)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.bspline must be 0 or 1");
+    if (c.layers.hollow > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.hollow must be 0 or 1");
+    if (c.layers.cell_jitter > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers.cell_jitter must be 0 or 1");
+    if (fovpt__bad_f(c.layers.clamp_white) || fovpt__bad_f(c.zones.clamp_white))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.layers/zones.clamp_white is NaN or infinite");
+    if (c.layers.clamp_white < 0.0f || c.zones.clamp_white < 0.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.layers/zones.clamp_white must be >= 0");
+    if (fovpt__bad_f(c.acuity_budget))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "config.acuity_budget is NaN or infinite");
+    if (!(c.acuity_budget >= 0.0f && c.acuity_budget <= 64.0f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.acuity_budget must be in [0, 64]");
     for (i = 0; i < c.layers.count; ++i) {
         const fovpt_layer *L = &c.layers.layer[i];
         const char *bad = 0; /* the broken rule, logged as "config.layers.layer[i].<rule>" */
@@ -1989,6 +2093,15 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.lanczos_a must be 2 or 3 (0: 3)");
     if (c.zones.bspline > 1)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.bspline must be 0 or 1");
+    if (c.zones.hollow > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.hollow must be 0 or 1");
+    if (c.zones.cell_jitter > 1)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.zones.cell_jitter must be 0 or 1");
+    for (i = 0; i < 3; ++i) {
+        /* 0 stays 0 (cfg.spp at use: a config resolved before spp is set keeps following it) */
+        if (c.zones.spp[i] > FOVPT_MAX_SPP)
+            FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.zones.spp[] above FOVPT_MAX_SPP");
+    }
     /* selective (Kim et al. 2021) */
     {
         static const float e_def[5] = { 3.3f, 5.5f, 12.1f, 30.0f, 45.0f };
@@ -3914,13 +4027,18 @@ FOVPT__PRIV void fovpt__lay(const fovpt_config *c, fovpt_layers_cfg *o)
     if (c->method != FOVPT_METHOD_ZONES) { *o = c->layers; return; }
     FOV_MEMSET(o, 0, sizeof *o);
     o->count = 3;
-    o->layer[0].stride = 4; o->layer[0].spp = c->spp;
-    o->layer[1].stride = 2; o->layer[1].spp = c->spp; o->layer[1].radius_deg = c->zones.middle_deg;
-    o->layer[2].stride = 1; o->layer[2].spp = c->spp; o->layer[2].radius_deg = c->zones.inner_deg;
+    o->layer[0].stride = 4; o->layer[0].spp = c->zones.spp[2] ? c->zones.spp[2] : c->spp;
+    o->layer[1].stride = 2; o->layer[1].spp = c->zones.spp[1] ? c->zones.spp[1] : c->spp;
+    o->layer[1].radius_deg = c->zones.middle_deg;
+    o->layer[2].stride = 1; o->layer[2].spp = c->zones.spp[0] ? c->zones.spp[0] : c->spp;
+    o->layer[2].radius_deg = c->zones.inner_deg;
     o->blend_deg = 1.0f;
     o->blend_linear = 1; /* "we linearly interpolate a short overlapping boundary" */
     o->snap = 1;         /* full-frame buffers: lattices do not move with the gaze */
     o->bspline = c->zones.bspline; /* B-spline instead of Lanczos (reach 2 <= a cells) */
+    o->hollow = c->zones.hollow;
+    o->cell_jitter = c->zones.cell_jitter;
+    o->clamp_white = c->zones.clamp_white;
 }
 
 /* temporal ring: the current frame plus n_tpi (smoothing) or 1 (reuse only) previous ones */
@@ -4079,6 +4197,11 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
                 if (r0 > 0.0f) tr = fov__minf(tr, r0 + apron);
             }
             ctx->layer_trace_deg[n] = tr;
+            /* hollow: inside r_{n+1} - blend / 2 the finer layer n + 1 has full weight and
+               layer n is never read; its filter reaches `apron` further in */
+            ctx->layer_inner_deg[n] = -1.0f;
+            if (L->hollow && n + 1u < L->count)
+                ctx->layer_inner_deg[n] = L->layer[n + 1u].radius_deg - 0.5f * L->blend_deg - apron;
         }
     }
     return FOV_OK;
@@ -4090,6 +4213,113 @@ FOVPT__PRIV fov_result fovpt__ctx_view(fovpt_ctx *ctx)
 FOVPT__PRIV float fovpt__allowed_px(const fov_eye *eye, float ppd, float ecc)
 {
     return fovpt_eye_mar(eye, fov__clampf(ecc, 0.0f, 180.0f)) * ppd;
+}
+
+/* The share of an independent per-sample noise's variance that a normalised Gaussian of
+   variance t2 (in units of the sample spacing squared) keeps: the sum of its squared weights
+   over the lattice, 1 / (1 + 4 pi t2) (1 at t2 = 0; 1 / (4 pi t2), the continuous limit, for
+   t2 >> 1; within 15 % of the discrete sums in between). */
+FOVPT__PRIV float fovpt__keep(float t2) { return 1.0f / (1.0f + 12.566371f * t2); }
+
+/* Lattice points a hollow table traces (fovpt__ctx_view's conditions, the gaze of m), counted
+   on every u-th point of each axis (u = 1 up to 128 x 128 points) and scaled. */
+FOVPT__PRIV float fovpt__traced(const fov_ecc_model *m, uint32_t W, uint32_t H, uint32_t d,
+                                float lo, float hi)
+{
+    uint32_t u = 1, i, j, cnt = 0, ox, oy;
+    int32_t gx = (int32_t)fov__clampf(FOV__FLOOR(m->gx), 0.0f, 1e9f),
+        gy = (int32_t)fov__clampf(FOV__FLOOR(m->gy), 0.0f, 1e9f);
+    while ((W / d) / u > 128u || (H / d) / u > 128u) ++u;
+    ox = (uint32_t)(gx % (int32_t)d); oy = (uint32_t)(gy % (int32_t)d);
+    for (j = oy; j < H; j += d * u)
+        for (i = ox; i < W; i += d * u) {
+            float e = fovpt_ecc_deg(m, (float)i + 0.5f, (float)j + 0.5f);
+            if (e >= lo && e <= hi) ++cnt;
+        }
+    return (float)cnt * (float)u * (float)u;
+}
+
+/* Samples per traced pixel of a hollow foveated table (nl lattices, index 0 the outermost,
+   stride d[n], full weight where r[n + 1] <= e < r[n], r[0] = FLT_MAX, r[nl] = 0; blend band
+   blend degrees, filter reach `reach` lattice cells) for the eye-filtered noise (see
+   ACUITY-DRIVEN CONFIGURATION, samples). m: the eccentricity model with the gaze at the image
+   centre; mar1: the eye with quality 1 (its own blur); budget as cfg.acuity_budget. */
+FOVPT__PRIV void fovpt__acuity_spp(const fov_ecc_model *m, uint32_t W, uint32_t H, float ppd,
+                                   const fov_eye *mar1, uint32_t spp_u, float budget, uint32_t nl,
+                                   const uint32_t *d, const float *r, float blend, float reach,
+                                   uint32_t *spp)
+{
+    enum { G = 48 }; /* G x G image points for the bands' noise */
+    float cu[FOVPT_MAX_LAYERS], cl[FOVPT_MAX_LAYERS], np[FOVPT_MAX_LAYERS], tp[FOVPT_MAX_LAYERS];
+    float target, k, to_deg = 1.0f / (m->f_px * FOV__DEG);
+    uint32_t i, j, n, it;
+    for (n = 0; n < nl; ++n) cu[n] = cl[n] = np[n] = 0.0f;
+    for (j = 0; j < G; ++j)
+        for (i = 0; i < G; ++i) {
+            float e = fovpt_ecc_deg(m, ((float)i + 0.5f) * (float)W / (float)G,
+                                    ((float)j + 0.5f) * (float)H / (float)G), sg, dn, b2;
+            for (n = nl - 1u; n > 0 && !(e < r[n]); --n) {}
+            /* the eye filter's sigma (fovm_eye_filter: 0.3748 MAR), display pixels */
+            sg = 0.3748f * fovpt_eye_mar(mar1, e) * ppd;
+            dn = (float)d[n];
+            /* the B-spline's variance 1/3 (+ the cell box's 1/12), cells^2 */
+            b2 = d[n] >= 2u ? 1.0f / 3.0f : 0.0f;
+            if (d[n] >= 2u && FOVPT_ACUITY_CELL_JITTER) b2 += 1.0f / 12.0f;
+            cu[n] += fovpt__keep(sg * sg);
+            cl[n] += fovpt__keep(b2 + sg * sg / (dn * dn));
+            np[n] += 1.0f;
+        }
+    for (n = 0; n < nl; ++n) {
+        float apron = (1.4142136f * reach * (float)d[n] + 1.0f) * to_deg;
+        float hi = n ? r[n] + 0.5f * blend + apron : FLT_MAX;
+        float lo = n + 1u < nl ? r[n + 1u] - 0.5f * blend - apron : -1.0f;
+        tp[n] = fovpt__traced(m, W, H, d[n], lo, hi);
+        if (np[n] > 0.0f) { cu[n] /= np[n]; cl[n] /= np[n]; }
+        else { /* off the image (centred gaze): its inner edge stands for it */
+            float e = n + 1u < nl ? r[n + 1u] : 0.0f, sg = 0.3748f * fovpt_eye_mar(mar1, e) * ppd;
+            float dn = (float)d[n];
+            float b2 = d[n] >= 2u ? 1.0f / 3.0f : 0.0f;
+            if (d[n] >= 2u && FOVPT_ACUITY_CELL_JITTER) b2 += 1.0f / 12.0f;
+            cu[n] = fovpt__keep(sg * sg);
+            cl[n] = fovpt__keep(b2 + sg * sg / (dn * dn));
+        }
+    }
+    if (!(budget > 0.0f)) {
+        /* the band's mean filtered variance sigma^2 cl / spp_n at most UNIFORM's sigma^2 cu /
+           spp_u: spp_n = spp_u cl / cu, times FOVPT_ACUITY_NOISE_MARGIN (1 % slack against
+           rounding a ratio of 1 up) */
+        for (n = 0; n < nl; ++n) {
+            float v = (float)spp_u * cl[n] / cu[n];
+            if (d[n] >= 2u) v *= FOVPT_ACUITY_NOISE_MARGIN;
+            v = FOV__FLOOR(v * 0.99f) + 1.0f;
+            spp[n] = (uint32_t)fov__clampf(v, 1.0f, (float)FOVPT_MAX_SPP);
+        }
+        return;
+    }
+    /* minimise the mean of (filtered variance)^FOVPT_ACUITY_GAMMA, sum_n N_n (cl_n / spp_n)^g,
+       subject to sum_n T_n spp_n = budget W H spp_u (N_n: the band's pixels, T_n its traced
+       points, about N_n / d_n^2): spp_n = k (d_n^2 cl_n^g)^(1 / (1 + g)); k from the counts,
+       then refitted to the rounded spp (g = 1: the mean variance, spp ~ d sqrt(cl); g = 1/2:
+       the mean standard deviation) */
+    target = budget * (float)W * (float)H * (float)spp_u;
+    {
+        float w[FOVPT_MAX_LAYERS], tot = 0.0f, g = FOVPT_ACUITY_GAMMA;
+        for (n = 0; n < nl; ++n) {
+            w[n] = FOV__POW((float)(d[n] * d[n]) * FOV__POW(cl[n], g), 1.0f / (1.0f + g));
+            tot += tp[n] * w[n];
+        }
+        k = tot > 0.0f ? target / tot : (float)spp_u;
+        for (it = 0; it < 6; ++it) {
+            float cost = 0.0f;
+            for (n = 0; n < nl; ++n) {
+                float v = FOV__FLOOR(k * w[n] + 0.5f);
+                spp[n] = (uint32_t)fov__clampf(v, 1.0f, (float)FOVPT_MAX_SPP);
+                cost += tp[n] * (float)spp[n];
+            }
+            if (!(cost > 0.0f)) break;
+            k *= target / cost;
+        }
+    }
 }
 
 FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
@@ -4104,8 +4334,9 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     float esel[FOVPT_MAX_LAYERS];
     fovpt_config c, out;
     const fov_logger *lg;
-    fov_ecc_model m;
+    fov_ecc_model m, mc;
     fov_eye_plan plan;
+    fov_eye eye1;
     fov_gaze g;
     float r[3], u[3], f[3], t4[4], o[3], span, ppd, b, eps = 1e-3f;
     fov_result e;
@@ -4171,17 +4402,31 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
         out.layers.layer[0].stride =
             (uint32_t)fov__clampf(FOV__FLOOR(fovpt__allowed_px(eye, ppd, ein)), 1.0f, 64.0f);
     }
-    /* spp: the caller's table (or the preset's) by position from the innermost layer; layers
-       beyond its length take its outermost non-background layer's, the background its
-       background's */
-    for (n = 0; n < out.layers.count; ++n) {
-        uint32_t j = out.layers.count - 1u - n, src; /* j: position from the innermost */
-        if (n == 0) src = 0;
-        else src = j < c.layers.count - 1u ? c.layers.count - 1u - j : 1u;
-        out.layers.layer[n].spp = c.layers.layer[src].spp;
-    }
     out.layers.layer[0].radius_deg = 0.0f; /* no occlusion mask */
     out.layers.bspline = 1u; /* the coarse layers' noise averaged (see LAYERS, bspline) */
+    out.layers.hollow = 1u;  /* no layer traced under a finer one */
+    out.layers.cell_jitter = FOVPT_ACUITY_CELL_JITTER; /* prefiltered lattice samples */
+    out.layers.clamp_white = FOVPT_ACUITY_CLAMP_WHITE;  /* what the display shows */
+    /* spp per layer from the eye-filtered noise (fovpt__acuity_spp), the gaze at the centre */
+    g.x = 0.5f * (float)cam->width; g.y = 0.5f * (float)cam->height;
+    e = fovpt__ecc_of(&c.display, cam, t4, g, &mc);
+    if (e != FOV_OK)
+        FOVPT__FAIL(lg, e, "config_acuity: config.display or the camera gives no eye distance");
+    if (eye) eye1 = *eye;
+    else FOV_MEMSET(&eye1, 0, sizeof eye1);
+    eye1.quality = 1.0f;
+    {
+        uint32_t dd[FOVPT_MAX_LAYERS] = { 0 }, sp[FOVPT_MAX_LAYERS] = { 0 };
+        float rr[FOVPT_MAX_LAYERS + 1];
+        for (n = 0; n < out.layers.count; ++n) {
+            dd[n] = out.layers.layer[n].stride;
+            rr[n] = n ? out.layers.layer[n].radius_deg : FLT_MAX;
+        }
+        rr[out.layers.count] = 0.0f;
+        fovpt__acuity_spp(&mc, cam->width, cam->height, ppd, &eye1, c.spp, c.acuity_budget,
+                          out.layers.count, dd, rr, c.layers.blend_deg, 2.0f, sp);
+        for (n = 0; n < out.layers.count; ++n) out.layers.layer[n].spp = sp[n];
+    }
 
     /* ZONES. Density 1/4 (stride 2) is allowed from e_half, 1/16 (stride 4) from e_quarter;
        the coarser zone's weight starts half an overlap inside the border (overlap_px at the
@@ -4189,9 +4434,19 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     {
         float mz = 0.5f * c.zones.overlap_px / ppd + eps;
         float mid = fov__minf(plan.e_quarter + mz, 179.9f);
+        uint32_t dd[3] = { 4u, 2u, 1u }, sp[3];
+        float rr[4];
         out.zones.inner_deg = fov__minf(plan.e_half + mz, 0.999f * mid);
         out.zones.middle_deg = mid;
         out.zones.bspline = 1u;
+        out.zones.hollow = 1u;
+        out.zones.cell_jitter = FOVPT_ACUITY_CELL_JITTER;
+        out.zones.clamp_white = FOVPT_ACUITY_CLAMP_WHITE;
+        rr[0] = FLT_MAX; rr[1] = mid; rr[2] = out.zones.inner_deg; rr[3] = 0.0f;
+        fovpt__acuity_spp(&mc, cam->width, cam->height, ppd, &eye1, c.spp, c.acuity_budget, 3u,
+                          dd, rr, c.zones.overlap_px / fov__maxf(fovpt_ecc_ppd(&mc), 1e-6f),
+                          (float)c.zones.lanczos_a, sp);
+        out.zones.spp[0] = sp[2]; out.zones.spp[1] = sp[1]; out.zones.spp[2] = sp[0];
     }
 
     /* SELECTIVE. Kim et al. 2021's borders scaled by one factor k so that e_np (beyond it the
@@ -4213,6 +4468,10 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
     cfg->zones.inner_deg = out.zones.inner_deg;
     cfg->zones.middle_deg = out.zones.middle_deg;
     cfg->zones.bspline = out.zones.bspline;
+    cfg->zones.hollow = out.zones.hollow;
+    cfg->zones.cell_jitter = out.zones.cell_jitter;
+    cfg->zones.clamp_white = out.zones.clamp_white;
+    for (i = 0; i < 3; ++i) cfg->zones.spp[i] = out.zones.spp[i];
     for (i = 0; i < 5; ++i) cfg->selective.e_deg[i] = out.selective.e_deg[i];
     for (i = 0; i < 4; ++i) cfg->selective.tau_shape[i] = out.selective.tau_shape[i];
     return FOV_OK;
@@ -4398,23 +4657,38 @@ FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
     d->reused += s->reused;
 }
 
-/* spp samples of pixel (x, y), jittered in the pixel; returns their sum in sum[3]. */
+/* spp samples of pixel (x, y), jittered in the pixel (cell 1) or in the cell x cell pixels
+   centred on it (cell > 1); returns their sum in sum[3]. white > 0: the samples in groups of
+   `group`, each group's mean clamped per channel at white (clamp_white). */
 FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp,
-                              uint32_t sample0, float sum[3], fovpt_stats *st)
+                              uint32_t sample0, uint32_t cell, uint32_t group, float white,
+                              float sum[3], fovpt_stats *st)
 {
-    uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
-    float t4[4];
+    uint32_t s, k, W = ctx->cam.width, H = ctx->cam.height, ng = 0;
+    float t4[4], gs[3] = { 0.0f, 0.0f, 0.0f };
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     sum[0] = sum[1] = sum[2] = 0.0f;
+    if (!(white > 0.0f) || group < 1u) group = 0;
     for (s = 0; s < spp; ++s) {
         fovpt_rng rng;
         float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
         fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
         jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
+        if (cell > 1u) { /* the box of the lattice cell: a prefilter against aliasing */
+            jx = 0.5f + (jx - 0.5f) * (float)cell;
+            jy = 0.5f + (jy - 0.5f) * (float)cell;
+        }
         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
         st->camera_rays++;
         (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st);
-        sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
+        if (!group) { sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2]; continue; }
+        gs[0] += rgb[0]; gs[1] += rgb[1]; gs[2] += rgb[2];
+        if (++ng == group || s + 1u == spp) { /* a group's mean clamped at white, weight ng */
+            float cap = white * (float)ng;
+            for (k = 0; k < 3; ++k) sum[k] += fov__minf(gs[k], cap);
+            gs[0] = gs[1] = gs[2] = 0.0f;
+            ng = 0;
+        }
     }
     st->samples += spp;
 }
@@ -4444,7 +4718,7 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
         for (y = y0; y < y1; ++y)
             for (x = 0; x < W; ++x) {
                 float sum[3];
-                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &st);
+                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, 1u, 0u, 0.0f, sum, &st);
                 fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp,
                              ctx->cfg.accumulate);
             }
@@ -4477,7 +4751,9 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
         for (n = 0; n < ctx->lay.count; ++n) {
             uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
             uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
-            float tr = ctx->layer_trace_deg[n];
+            float tr = ctx->layer_trace_deg[n], ti = ctx->layer_inner_deg[n];
+            /* hollow: sample k of a pixel is UNIFORM's stream k in every layer */
+            uint32_t s0 = ctx->lay.hollow ? 0u : n << 16;
             /* lattice rows whose pixel row lies in [y0, y1) */
             uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
             for (l = l0; l < ctx->layer_ny[n]; ++l) {
@@ -4486,11 +4762,13 @@ FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y
                 for (k = 0; k < nx; ++k) {
                     uint32_t px = ox + k * d;
                     float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
-                    if (fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f) > tr) {
+                    float ep = fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f);
+                    if (ep > tr || ep < ti) {
                         acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
                         continue;
                     }
-                    fovpt__pixel(ctx, frame, px, py, spp, n << 16, sum, &st);
+                    fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
+                                 ctx->cfg.spp, d >= 2u ? ctx->lay.clamp_white : 0.0f, sum, &st);
                     fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
                     st.layer_targets[n]++;
                     st.layer_samples[n] += spp;

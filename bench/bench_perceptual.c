@@ -241,6 +241,8 @@ typedef struct opts_t {
     uint32_t gt_spp, gt_spp_pt;
     const float *qual;
     int nqual;
+    float budget[16];
+    int nbudget;
     const char *displays, *headers, *scenes_sdf, *scenes_pt;
 } opts_t;
 
@@ -512,16 +514,29 @@ static void pt_scene_rows(FILE *csv, const opts_t *o, const disp_t *D, int id)
             row(&rc, name, q, (double)st.samples, fam ? w1 : w4, "samples", meas_img(&m, img, name),
                 fam ? ref1 : ref4, fam ? "uniform1" : "uniform4");
             if (k && fabsf(q - 1.0f) < 1e-6f) {
-                /* equal samples: every spp times the saving (rounded down), about the full
-                   resolution method's work, so the comparison is at equal time */
-                uint32_t mul = (uint32_t)floor((fam ? w1 : w4) / (double)st.samples), n;
-                if (mul < 2u) continue;
-                c.spp *= mul;
-                for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp *= mul;
-                snprintf(name, sizeof name, "%s_eqt", fam ? "zones_acuity" : "layers_acuity");
-                if (pt_render(&S.scene, &S.cam, &c, g, img, o->threads, &st) != 0) continue;
-                row(&rc, name, q, (double)st.samples, fam ? w1 : w4, "samples", meas_img(&m, img, name),
-                    fam ? ref1 : ref4, fam ? "uniform1" : "uniform4");
+                /* acuity_budget: the samples spread to minimise the mean eye-filtered noise,
+                   about budget x the full-resolution method's: _eqt at 1 (equal time), _bB
+                   below 1 (the saving at equal quality is about 1 / B where perr reaches
+                   perr_ref) */
+                int kb;
+                for (kb = 0; kb < o->nbudget; ++kb) {
+                    float bu = o->budget[kb];
+                    fov_eye eye;
+                    memset(&eye, 0, sizeof eye);
+                    eye.quality = q;
+                    c = base;
+                    c.method = fam ? FOVPT_METHOD_ZONES : FOVPT_METHOD_LAYERS;
+                    c.spp = fam ? 1u : 4u;
+                    c.acuity_budget = bu;
+                    if (fovpt_config_acuity(&c, &S.cam, &eye) != FOV_OK) continue;
+                    if (fabsf(bu - 1.0f) < 1e-6f)
+                        snprintf(name, sizeof name, "%s_eqt", fam ? "zones_acuity" : "layers_acuity");
+                    else
+                        snprintf(name, sizeof name, "%s_b%g", fam ? "zones_acuity" : "layers_acuity", (double)bu);
+                    if (pt_render(&S.scene, &S.cam, &c, g, img, o->threads, &st) != 0) continue;
+                    row(&rc, name, q, (double)st.samples, fam ? w1 : w4, "samples", meas_img(&m, img, name),
+                        fam ? ref1 : ref4, fam ? "uniform1" : "uniform4");
+                }
             }
         }
     meas_free(&m);
@@ -539,6 +554,7 @@ static void usage(FILE *f)
           "  --scenes-sdf a,b     fovsdf / fovlp scenes (default primitives,temple)\n"
           "  --scenes-pt a,b      fovpt scenes (default cornell)\n"
           "  --qualities a,b      the acuity rows' quality knobs (default 0.25,0.35,0.5,0.7,1,1.5,2,3)\n"
+          "  --budgets a,b        fovpt acuity_budget rows at quality 1 (default 1,0.5,0.35,0.25,0.15)\n"
           "  --gt-spp N           fovsdf ground truth samples per pixel (default 4)\n"
           "  --gt-spp-pt N        fovpt ground truth samples per pixel (default 32)\n"
           "  --threads N          render threads (default the number of cores)\n"
@@ -557,6 +573,8 @@ int main(int argc, char **argv)
     o.threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
     o.gt_spp = 4; o.gt_spp_pt = 32;
     o.qual = g_qual_all; o.nqual = 8;
+    o.budget[0] = 1.0f; o.budget[1] = 0.5f; o.budget[2] = 0.35f; o.budget[3] = 0.25f;
+    o.budget[4] = 0.15f; o.nbudget = 5;
     o.displays = "bench,desktop27,hmd"; o.headers = "sdf,lp,pt";
     o.scenes_sdf = "primitives,temple"; o.scenes_pt = "cornell";
     for (a = 1; a < argc; ++a) {
@@ -584,6 +602,20 @@ int main(int argc, char **argv)
                 else break;
             }
             o.qual = g_qual_user;
+        }
+        else if (!strcmp(argv[a], "--budgets") && a + 1 < argc) {
+            char *p = argv[++a];
+            o.nbudget = 0;
+            while (*p && o.nbudget < 16) {
+                o.budget[o.nbudget] = (float)strtod(p, &p);
+                if (!(o.budget[o.nbudget] > 0.0f && o.budget[o.nbudget] <= 64.0f)) {
+                    fprintf(stderr, "--budgets: numbers in (0, 64], comma-separated\n");
+                    return 2;
+                }
+                ++o.nbudget;
+                if (*p == ',') ++p;
+                else break;
+            }
         }
         else if (!strcmp(argv[a], "--gt-spp") && a + 1 < argc) o.gt_spp = (uint32_t)atoi(argv[++a]);
         else if (!strcmp(argv[a], "--gt-spp-pt") && a + 1 < argc) o.gt_spp_pt = (uint32_t)atoi(argv[++a]);

@@ -278,14 +278,16 @@ static int recon(const char *scene_name, uint32_t W, uint32_t H, float ppd, uint
             if (fovpt_config_acuity(&c, &S.cam, NULL) != FOV_OK) return 1;
             if (m == 3 || m == 4) c.layers.bspline = 0; /* the acuity config's B-spline off */
             if (m == 7 || m == 8) c.zones.bspline = 0;
-            for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp;
+            /* the spp per layer / zone are fovpt_config_acuity's (from the eye model, c.spp the
+               reference) */
             if (mul == 1u && m < 9) mul = fmul; /* --mul: the foveated spp times K */
             if (m >= 9) { /* _eqs: every spp raised by the saving (equal samples to uniform) */
                 if (render(&S.scene, &S.cam, &c, g, NULL, &st) != 0) return 1;
                 mul = (uint32_t)((double)spp * (double)np / (double)st.samples);
                 if (mul < 1u) mul = 1u;
             }
-            for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = spp * mul;
+            for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp *= mul;
+            for (n = 0; n < 3; ++n) c.zones.spp[n] *= mul;
             c.spp = spp * mul;
 
         }

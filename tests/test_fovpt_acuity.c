@@ -351,13 +351,14 @@ static void t_fields(void)
           memcmp(&a.selective.tau, &c.selective.tau, sizeof c.selective.tau) == 0,
           "fields outside the foveation parameters stay as the caller set them", "-");
     n = a.layers.count;
-    check(a.layers.layer[n - 1].spp == 9 && a.layers.layer[n - 2].spp == 5 &&
-              a.layers.layer[0].spp == 2 && a.layers.layer[1].spp == c.layers.layer[1].spp,
-          "layer spp: the caller's by position from the innermost, background's for the background",
-          "%u %u %u", a.layers.layer[n - 1].spp, a.layers.layer[n - 2].spp, a.layers.layer[0].spp);
-    check(a.layers.bspline == 1 && a.zones.bspline == 1,
-          "the B-spline reconstruction on for layers and zones", "%u %u", a.layers.bspline,
-          a.zones.bspline);
+    check(a.layers.layer[n - 1].spp == 3 && a.zones.spp[0] == 3,
+          "spp: the stride-1 layer and the inner zone take cfg.spp (budget 0)", "%u %u",
+          a.layers.layer[n - 1].spp, a.zones.spp[0]);
+    check(a.layers.bspline == 1 && a.zones.bspline == 1 && a.layers.hollow == 1 &&
+              a.zones.hollow == 1 && a.layers.cell_jitter == 1 && a.zones.cell_jitter == 1 &&
+              a.layers.clamp_white >= 1.0f && a.layers.clamp_white <= 1.0f,
+          "B-spline, hollow, cell_jitter and clamp_white 1 for layers and zones", "%u %u %u %u",
+          a.layers.bspline, a.zones.bspline, a.layers.hollow, a.zones.hollow);
     b2 = a;
     check(fovpt_config_acuity(&b2, &cam, NULL) == FOV_OK && memcmp(&a, &b2, sizeof a) == 0,
           "a second call changes nothing", "-");
@@ -517,6 +518,331 @@ static void t_bspline(void)
     free(smem);
 }
 
+/* an empty scene (every ray misses: cheap) for sample counts */
+static void *empty_scene(fovpt_scene *sc, fovpt_material *mat)
+{
+    fovpt_scene_desc desc;
+    size_t sb = 0;
+    void *smem;
+    fovpt_material_init(mat);
+    fovpt_scene_desc_init(&desc);
+    desc.materials = mat; desc.num_materials = 1;
+    fovpt_scene_size(&desc, &sb);
+    smem = malloc(sb + 16u);
+    if (fovpt_scene_build(sc, &desc, smem, sb) != FOV_OK) { free(smem); return NULL; }
+    return smem;
+}
+
+/* render cfg (frame 0): samples into *samples, the float image into rgb (may be NULL) */
+static fov_result render_cfg(const fovpt_scene *sc, const fovpt_config *c, const fovpt_camera *cam,
+                             fov_gaze g, float *rgb, uint64_t *samples, fovpt_ctx *keep, void **keep_mem)
+{
+    fovpt_ctx ctx;
+    fovpt_output out;
+    fovpt_stats st;
+    size_t n = 0;
+    void *mem;
+    fov_result r = fovpt_memory_size(c, cam, &n);
+    if (r != FOV_OK) return r;
+    mem = malloc(n + 16u);
+    fovpt_stats_init(&st);
+    fovpt_output_init(&out);
+    out.rgb = rgb;
+    r = fovpt_init(&ctx, c, sc, cam, g, mem, n);
+    if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, &st);
+    *samples = st.samples;
+    if (keep) { *keep = ctx; *keep_mem = mem; }
+    else free(mem);
+    return r;
+}
+
+/* the degenerate case: a display coarser than the eye across the image (the bench's 640 x 360
+   at 45 degrees with quality 0.25). The acuity table costs exactly UNIFORM's samples and gives
+   UNIFORM's image bit for bit (layers.hollow: no layer traced under the stride-1 one, the same
+   streams), LAYERS and ZONES; a noisy scene (a floor under a lamp, path traced) */
+static void t_degenerate(void)
+{
+    fovpt_material mat[2];
+    fovpt_shape sh[2];
+    fovpt_scene_desc desc;
+    fovpt_scene sc;
+    size_t sb = 0;
+    void *smem;
+    float p0[3] = { 0.0f, -1.0f, 0.0f }, nrm[3] = { 0.0f, 1.0f, 0.0f };
+    uint32_t W = 160, H = 90, m;
+    float *ref = (float *)malloc(sizeof(float) * 3u * W * H), *img = (float *)malloc(sizeof(float) * 3u * W * H);
+    fovpt_camera cam;
+    fov_gaze g = { 60.0f, 40.0f };
+    fov_eye eye = { 0.0f, 0.0f, 0.25f };
+    uint64_t n_ref = 0, n_img = 0;
+    double f = 0.5 * H / tan(0.5 * 45.0 * 3.14159265358979 / 180.0), ppd = f * 3.14159265358979 / 180.0;
+    fovpt_material_init(&mat[0]);
+    fovpt_material_init(&mat[1]);
+    mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 3.0f;
+    fovpt_shape_plane(&sh[0], p0, nrm, 0);
+    fovpt_shape_sphere(&sh[1], 0.0f, 2.0f, -1.0f, 0.7f, 1);
+    fovpt_scene_desc_init(&desc);
+    desc.shapes = sh; desc.num_shapes = 2; desc.materials = mat; desc.num_materials = 2;
+    fovpt_scene_size(&desc, &sb);
+    smem = malloc(sb + 16u);
+    check(fovpt_scene_build(&sc, &desc, smem, sb) == FOV_OK, "degenerate: scene builds", "-");
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 45.0f;
+    /* the premise, from the model: 0.25 MAR(e) ppd < 1 pixel out to the image's corners */
+    check(0.25 * (1.0 + 1.32 * ecc_px(f, W, H, 0.5, 0.5, W - 0.5, H - 0.5)) / 60.0 * ppd < 1.0,
+          "degenerate: quality 0.25 finer than the pixels across the image (premise)", "-");
+    {
+        fovpt_config u = fovpt_config_default();
+        u.spp = 4;
+        check(render_cfg(&sc, &u, &cam, g, ref, &n_ref, NULL, NULL) == FOV_OK &&
+              n_ref == 4u * W * H, "degenerate: UNIFORM 4 spp renders", "%llu", (unsigned long long)n_ref);
+    }
+    for (m = 0; m < 2; ++m) {
+        fovpt_config c = fovpt_config_default();
+        size_t i, diff = 0;
+        c.method = m ? FOVPT_METHOD_ZONES : FOVPT_METHOD_LAYERS;
+        c.spp = 4;
+        c.logger.func = logger;
+        check(fovpt_config_acuity(&c, &cam, &eye) == FOV_OK, N("degenerate %s: acuity ok", m ? "zones" : "layers"), "-");
+        check(render_cfg(&sc, &c, &cam, g, img, &n_img, NULL, NULL) == FOV_OK && n_img == n_ref,
+              N("degenerate %s: UNIFORM's samples (%llu, UNIFORM %llu)", m ? "zones" : "layers",
+                (unsigned long long)n_img, (unsigned long long)n_ref), "-");
+        /* ZONES reads its stride-1 lattice through Lanczos-3, whose float weights at integer
+           offsets are 1 and sin(pi k) ~ 1e-7: equal to float rounding */
+        for (i = 0; i < 3u * W * H; ++i)
+            diff += m ? fabs((double)img[i] - (double)ref[i]) > 1e-5 * (1.0 + fabs((double)ref[i]))
+                      : memcmp(&img[i], &ref[i], sizeof(float)) != 0;
+        check(diff == 0, N("degenerate %s: UNIFORM's image %s", m ? "zones" : "layers",
+                           m ? "(to 1e-5)" : "bit for bit"), "%zu values differ", diff);
+        /* the same table without hollow (Axblad 2020's overlapping layers) costs more */
+        if (m == 0) {
+            c.layers.hollow = 0;
+            check(render_cfg(&sc, &c, &cam, g, img, &n_img, NULL, NULL) == FOV_OK && n_img > n_ref,
+                  "degenerate layers: hollow 0 traces the background under the stride-1 layer too",
+                  "%llu vs %llu", (unsigned long long)n_img, (unsigned long long)n_ref);
+        }
+    }
+    free(smem);
+    free(ref);
+    free(img);
+}
+
+/* hollow: a lattice point is traced iff some pixel's resolve can read it. Checked on the
+   preset table (4 layers) with the test's own eccentricities: every point within a layer's
+   needed ring [r_(n+1) - blend/2, r_n + blend/2] is traced, none deeper than the filter's reach
+   (2 sqrt 2 d + 1 pixels, in degrees at the gaze) inside it; and hollow 1 traces fewer points */
+static void t_hollow(void)
+{
+    fovpt_material mat;
+    fovpt_scene sc;
+    void *smem = empty_scene(&sc, &mat), *mem = NULL;
+    fovpt_camera cam;
+    fovpt_ctx ctx;
+    fov_gaze g = { 130.0f, 70.0f };
+    uint32_t W = 320, H = 180, n, k, l;
+    double f;
+    uint64_t s1 = 0, s0 = 0;
+    int bad_needed = 0, bad_deep = 0;
+    fovpt_config c = fovpt_config_default();
+    fovpt_camera_init(&cam, W, H);
+    cam.fov_y_deg = 60.0f;
+    f = 0.5 * H / tan(30.0 * 3.14159265358979 / 180.0);
+    c.method = FOVPT_METHOD_LAYERS;
+    c.layers.hollow = 1;
+    check(smem != NULL && render_cfg(&sc, &c, &cam, g, NULL, &s1, &ctx, &mem) == FOV_OK,
+          "hollow: preset renders", "-");
+    for (n = 0; n < ctx.lay.count; ++n) {
+        double d = (double)ctx.lay.layer[n].stride, b = (double)ctx.lay.blend_deg;
+        double hi = n ? (double)ctx.lay.layer[n].radius_deg + 0.5 * b : 1e9;
+        double lo = n + 1u < ctx.lay.count ? (double)ctx.lay.layer[n + 1].radius_deg - 0.5 * b : -1.0;
+        double reach = (2.0 * sqrt(2.0) * d + 1.0) / f * 180.0 / 3.14159265358979;
+        for (l = 0; l < ctx.layer_ny[n]; ++l)
+            for (k = 0; k < ctx.layer_nx[n]; ++k) {
+                double x = ctx.layer_ox[n] + k * d + 0.5, y = ctx.layer_oy[n] + l * d + 0.5;
+                double e = ecc_px(f, W, H, x, y, g.x, g.y);
+                int traced = ctx.layer_buf[n][4u * ((size_t)l * ctx.layer_nx[n] + k) + 3u] > 0.0f;
+                if (!traced && e >= lo + 1e-3 && e <= hi - 1e-3) bad_needed++;
+                if (traced && e < lo - reach - 1e-3) bad_deep++;
+            }
+    }
+    check(bad_needed == 0, "hollow: every point of a layer's ring traced", "%d missing", bad_needed);
+    check(bad_deep == 0, "hollow: nothing traced deeper than the filter's reach inside the ring",
+          "%d points", bad_deep);
+    free(mem);
+    c.layers.hollow = 0;
+    check(render_cfg(&sc, &c, &cam, g, NULL, &s0, NULL, NULL) == FOV_OK && s1 < s0,
+          "hollow: fewer samples than the overlapping layers", "%llu vs %llu",
+          (unsigned long long)s1, (unsigned long long)s0);
+    {
+        fovpt_config o;
+        c.logger.func = logger;
+        c.layers.hollow = 2;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "layers.hollow 2 rejected", "-");
+        c.layers.hollow = 0; c.zones.hollow = 5;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "zones.hollow 5 rejected", "-");
+        c.zones.hollow = 0; c.zones.spp[1] = FOVPT_MAX_SPP + 1u;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_LIMIT && g_log_count == 1,
+              "zones.spp above FOVPT_MAX_SPP rejected", "-");
+        c.zones.spp[1] = 0; c.acuity_budget = -1.0f;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "acuity_budget -1 rejected", "-");
+        c.acuity_budget = NAN;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_NOT_FINITE && g_log_count == 1,
+              "acuity_budget NaN rejected", "-");
+        c.acuity_budget = 0.0f;
+        check(fovpt_config_resolve(&c, &o) == FOV_OK && o.zones.spp[0] == 0 &&
+                  o.layers.hollow == 0 && o.zones.hollow == 0,
+              "zero fields: defaults (zones.spp 0 = cfg.spp at use, hollow off)", "-");
+    }
+    free(smem);
+}
+
+/* spp from the eye model at the 27-inch monitor (33.6 px/degree), cfg.spp 4.
+   budget 0: the model's rule, spp_n = floor(0.99 spp cl / cu) + 1 with cu, cl the band means
+   of 1 / (1 + 4 pi t^2) (t^2 = s^2 for UNIFORM, 1/3 + s^2 / d^2 for a stride-d B-spline lattice,
+   s = 0.3748 MAR(e) ppd pixels, the eye filter of examples/fovmetrics.h): between 1 and d^2 spp
+   (never denser than UNIFORM), non-decreasing with the stride, the stride-1 layer exactly spp;
+   each band's noise, recomputed here at the band's inner and outer edge, within the rule.
+   budget B > 0: the samples rendered within 15 % of B W H spp, increasing with B. */
+static void t_spp(void)
+{
+    fovpt_material mat;
+    fovpt_scene sc;
+    void *smem = empty_scene(&sc, &mat);
+    fovpt_config c;
+    fovpt_camera cam;
+    fov_gaze g = { 960.0f, 540.0f };
+    double ppd = 600.0 / 0.3113 * 3.14159265358979 / 180.0;
+    uint32_t n;
+    int ok = 1, k;
+    uint64_t prev = 0;
+    char why[200] = "";
+    monitor(&c, &cam, 1920, 1080, 600.0);
+    c.method = FOVPT_METHOD_LAYERS;
+    c.spp = 4;
+    check(fovpt_config_acuity(&c, &cam, NULL) == FOV_OK && c.layers.count >= 3,
+          "spp: acuity at the monitor", "count %u", c.layers.count);
+    check(c.layers.layer[c.layers.count - 1].spp == 4, "spp: the stride-1 layer takes cfg.spp", "%u",
+          c.layers.layer[c.layers.count - 1].spp);
+    for (n = 0; n + 1u < c.layers.count; ++n) {
+        uint32_t d = c.layers.layer[n].stride, sp = c.layers.layer[n].spp;
+        double ein = (double)c.layers.layer[n + 1].radius_deg, r, lo, hi;
+        double s = 0.3748 * (1.0 + 1.32 * ein) / 60.0 * ppd;
+        if (!(sp >= 1u && sp <= 4u * d * d)) { ok = 0; snprintf(why, sizeof why, "layer %u spp %u", n, sp); }
+        if (n > 0 && sp > c.layers.layer[n - 1].spp) { ok = 0; snprintf(why, sizeof why, "layer %u spp above its outer neighbour's", n); }
+        /* the rule's ratio at the inner edge is the smallest in the band */
+        r = (1.0 + 4.0 * 3.14159265358979 * s * s) /
+            (1.0 + 4.0 * 3.14159265358979 * (1.0 / 3.0 + s * s / (double)(d * d)));
+        lo = 4.0 * r * 0.99;
+        hi = 4.0 * (double)(d * d) + 1.0;
+        if (!((double)sp + 1e-9 >= lo && (double)sp <= hi)) {
+            ok = 0;
+            snprintf(why, sizeof why, "layer %u (stride %u): spp %u, edge ratio %.3f", n, d, sp, r);
+        }
+    }
+    check(ok, "spp: each layer between the noise rule at its inner edge and UNIFORM's density", "%s", why);
+    for (k = 0; k < 3; ++k) {
+        static const float B[3] = { 0.25f, 0.5f, 1.0f };
+        uint64_t got = 0;
+        double want = (double)B[k] * 1920.0 * 1080.0 * 4.0;
+        monitor(&c, &cam, 1920, 1080, 600.0);
+        c.method = k == 1 ? FOVPT_METHOD_ZONES : FOVPT_METHOD_LAYERS;
+        c.spp = 4;
+        c.acuity_budget = B[k];
+        check(fovpt_config_acuity(&c, &cam, NULL) == FOV_OK &&
+                  render_cfg(&sc, &c, &cam, g, NULL, &got, NULL, NULL) == FOV_OK &&
+                  fabs((double)got / want - 1.0) < 0.15,
+              N("spp: acuity_budget %.2f (%s): samples %.3f x the budget", (double)B[k],
+                k == 1 ? "zones" : "layers", (double)got / want), "-");
+        if (c.method == FOVPT_METHOD_LAYERS) {
+            check(got > prev, N("spp: budget %.2f more samples than the smaller budget", (double)B[k]), "-");
+            prev = got;
+        }
+    }
+    free(smem);
+}
+
+/* clamp_white: a stride >= 2 lattice point averages groups of cfg.spp samples whose means are
+   clamped at clamp_white, so (B-spline weights >= 0, sum 1) no resolved pixel of the coarse
+   layer exceeds it, where without the clamp the lamp (emission 3) does; cell_jitter and
+   clamp_white validated */
+static void t_clamp(void)
+{
+    fovpt_material mat[2];
+    fovpt_shape sh[2];
+    fovpt_scene_desc desc;
+    fovpt_scene sc;
+    size_t sb = 0;
+    void *smem;
+    float p0[3] = { 0.0f, -1.0f, 0.0f }, nrm[3] = { 0.0f, 1.0f, 0.0f };
+    uint32_t W = 120, H = 80, m;
+    float *img = (float *)malloc(sizeof(float) * 3u * W * H), mx[2] = { 0.0f, 0.0f };
+    fovpt_camera cam;
+    fov_gaze g = { 2.0f, 2.0f };
+    uint64_t ns = 0;
+    fovpt_material_init(&mat[0]);
+    fovpt_material_init(&mat[1]);
+    mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 3.0f;
+    fovpt_shape_plane(&sh[0], p0, nrm, 0);
+    fovpt_shape_sphere(&sh[1], 0.0f, 0.0f, 0.0f, 1.0f, 1);
+    fovpt_scene_desc_init(&desc);
+    desc.shapes = sh; desc.num_shapes = 2; desc.materials = mat; desc.num_materials = 2;
+    fovpt_scene_size(&desc, &sb);
+    smem = malloc(sb + 16u);
+    check(fovpt_scene_build(&sc, &desc, smem, sb) == FOV_OK, "clamp: scene builds", "-");
+    fovpt_camera_init(&cam, W, H);
+    for (m = 0; m < 2; ++m) {
+        fovpt_config c = fovpt_config_default();
+        uint32_t i;
+        c.method = FOVPT_METHOD_LAYERS;
+        c.spp = 2;
+        c.layers.count = 2; /* stride 4 beyond 0.5 degrees of a gaze in the corner */
+        c.layers.layer[0].stride = 4; c.layers.layer[0].spp = 8;
+        c.layers.layer[1].stride = 1; c.layers.layer[1].spp = 2;
+        c.layers.layer[1].radius_deg = 0.5f;
+        c.layers.bspline = 1; c.layers.hollow = 1; c.layers.cell_jitter = 1;
+        c.layers.clamp_white = m ? 1.0f : 0.0f;
+        check(render_cfg(&sc, &c, &cam, g, img, &ns, NULL, NULL) == FOV_OK, "clamp: renders", "-");
+        for (i = 0; i < W * H; ++i) {
+            uint32_t x = i % W, y = i / W, k;
+            if (x < 12u && y < 12u) continue; /* the stride-1 corner and its blend */
+            for (k = 0; k < 3; ++k) mx[m] = img[3u * i + k] > mx[m] ? img[3u * i + k] : mx[m];
+        }
+    }
+    check(mx[0] > 1.5f && mx[1] <= 1.0f + 1e-5f,
+          "clamp_white 1: the coarse layer's pixels at most 1 (unclamped: the lamp's 3)",
+          "max %.4f unclamped, %.4f clamped", (double)mx[0], (double)mx[1]);
+    {
+        fovpt_config c = fovpt_config_default(), o;
+        c.logger.func = logger;
+        c.layers.cell_jitter = 2;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "layers.cell_jitter 2 rejected", "-");
+        c.layers.cell_jitter = 0; c.zones.cell_jitter = 2;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "zones.cell_jitter 2 rejected", "-");
+        c.zones.cell_jitter = 0; c.layers.clamp_white = -1.0f;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_INVALID_ARG && g_log_count == 1,
+              "layers.clamp_white -1 rejected", "-");
+        c.layers.clamp_white = 0.0f; c.zones.clamp_white = INFINITY;
+        g_log_count = 0;
+        check(fovpt_config_resolve(&c, &o) == FOV_ERR_NOT_FINITE && g_log_count == 1,
+              "zones.clamp_white inf rejected", "-");
+    }
+    free(img);
+    free(smem);
+}
+
 /* SELECTIVE: the scaled borders keep tau_fov's shape as a function of e / k (a metamorphic
    check: tau_fov of the default borders at e equals the scaled one's at k e; tau_fov's own
    values are checked against Kim et al. 2021's in test_fovpt.c) */
@@ -584,6 +910,10 @@ static void t_extremes(void)
 
 int main(void)
 {
+    t_degenerate();
+    t_hollow();
+    t_spp();
+    t_clamp();
     t_extremes();
     t_selective();
     t_bspline();
