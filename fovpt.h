@@ -210,27 +210,38 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    - Samples (layers' spp, zones.spp; the path tracer's noise is what the periphery shows).
      After the eye's blur (a Gaussian of s = 0.375 MAR(e), the measure of examples/fovmetrics.h,
      s in pixels) independent noise of variance v per sample keeps v / spp_u x cu of it in
-     UNIFORM's image, cu = 1 / (1 + 4 pi s^2) (the Gaussian's sum of squared weights), and
-     v / spp_n x cl on a stride-d lattice, cl = 1 / (1 + 4 pi (b^2 + s^2 / d^2)), b^2 = 1/3
-     (the B-spline) + 1/12 (the cell box) in cells^2; cu and cl averaged over each layer's
-     band (a 48 x 48 grid of image points, the gaze at the centre). acuity_budget 0: spp_n =
-     the least integer >= spp cl / cu (spp = cfg.spp, UNIFORM's): each band's mean filtered
-     noise at most UNIFORM's; the stride-1 layer takes spp, a coarser one between 1 and spp
-     d^2 (UNIFORM's density). acuity_budget B > 0: spp_n = k (d^2 cl^g)^(1 / (1 + g)), g =
-     FOVPT_ACUITY_GAMMA (0.5), which minimises the mean of (filtered variance)^g (g 1/2: the
-     mean filtered standard deviation) for the total B W H spp (k fitted to the lattice points
-     the table traces and to the rounded spp; within a few % of the budget): B = 1 is equal
-     time with UNIFORM, the fovea then gets more than spp, the periphery less.
+     UNIFORM's image, cu = 1 / (1 + 4 pi s^2) (the Gaussian's sum of squared weights: exact
+     for s -> 0 and s >> 1, an approximation between), and v / spp_n x cl on a stride-d
+     lattice, cl = 1 / (1 + 4 pi (b^2 + s^2 / d^2)), b^2 = 1/3 (the B-spline) + 1/12 (the cell
+     box) in cells^2; cu and cl averaged over each layer's band (a 48 x 48 grid of image
+     points, the gaze at the centre). acuity_budget 0: spp_n = the least integer above
+     0.99 spp cl / cu (spp = cfg.spp, UNIFORM's): each band's mean filtered noise at most
+     UNIFORM's; the stride-1 layer takes spp, a coarser one between 1 and spp d^2 (UNIFORM's
+     density). acuity_budget B > 0: spp_n = k (d^2 cl^g)^(1 / (1 + g)), g = FOVPT_ACUITY_GAMMA
+     (0.5), which minimises the mean of (filtered variance)^g (g 1/2: the mean filtered
+     standard deviation) for the total B W H spp (k fitted to the lattice points the table
+     traces and to the rounded spp; within a few % of the budget): B = 1 is equal time with
+     UNIFORM, the fovea then gets more than spp, the periphery less. clamp_white = 1: the
+     lattice estimates what the display shows; PT noise is heavy-tailed and a displayed
+     UNIFORM pixel clips its fireflies at white, which the lattice's mean of many samples
+     (before this clamp) did not: its filtered error was 4-6 dB above the model's.
      The bound. Equal filtered noise at a pixel needs spp_n / d^2 >= spp cl / (d^2 cu): the
      saving there is at most d^2 cu / cl = (d^2 + 4 pi (b^2 d^2 + s^2)) / (1 + 4 pi s^2),
      which for the eye's stride d = q MAR ppd (s = 0.375 d / q, s >> 1) tends to
-     1 + 4 pi b^2 q^2 / (1.77) ~ 1 + 2.95 q^2 (b^2 = 5/12): 3.9x at quality 1, 1.7x at 0.5, and
-     1 (none) inside e_full. Every saving an unbiased estimator gets at equal noise comes from
-     the reconstruction's own blur b (bias, kept near the eye's: b d = 0.65 d against
-     0.375 d / q); FLIP weighs the lattice's coarser noise more than its variance says, so the
-     measured saving at equal perceived quality is lower (bench_perceptual). A denoiser (an
-     edge-aware filter far wider than b, issue 14), temporal accumulation or noise the eye's
-     filter removes better (blue-noise / low-discrepancy samples) lifts it.
+     1 + q^2 (1 + 4 pi b^2) / 1.77 = 1 + 3.5 q^2 (b^2 = 5/12): 4.5x at quality 1, 1.9x at 0.5,
+     and none inside e_full; over an image, 1 / (f + (1 - f) / S) with f the share of pixels
+     inside e_full. Every saving an unbiased estimator gets at equal noise comes from the
+     reconstruction's blur b d (0.65 d against the eye's 0.375 d / q: a bias the measure
+     sees from about quality 0.7) and from the lattice point covering several pixels. 5x at
+     equal perceived quality would need q^2 (1 + 4 pi b^2) >= 7, a blur near twice the eye's:
+     not for an unbiased path tracer under this measure. A denoiser (edge-aware, a footprint
+     far wider than b without the bias at edges; issue 14), temporal accumulation or noise the
+     eye's filter removes better (blue-noise / low-discrepancy samples) lifts it.
+     Measured (bench/bench_perceptual.c, Cornell box, equal: perr <= perr_ref + 0.001): the
+     largest saving at equal perceived quality 1.4x (layers) / 3.4x (zones, 1 spp) at
+     640 x 360 (8.6 px/degree), 1.0x / 1.4x on the 27-inch monitor (33.6), 2.0x / 2.1x on the
+     headset (11.7); at equal time (acuity_budget 1) perr 5-13 % below UNIFORM's except the
+     layers on the monitor (7 % above: its far periphery, strides 12-16).
    - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
      on the coarse lattices. What makes the periphery visible, measured after filtering both
      images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, at 33.6

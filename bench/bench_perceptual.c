@@ -28,9 +28,12 @@
              uniform1 (1 spp, the zones'); fixed: layers (6/10/20-degree radii, strides 1-4, 4
              spp), zones (7.5 / 32.5 degrees, 1 spp); acuity: layers_acuity, zones_acuity.
              work = camera samples (fovpt_stats.samples; every sample is one path).
-             layers_acuity_eqt, zones_acuity_eqt: the quality-1 configuration with every spp
-             times its saving (rounded down): about the full-resolution method's samples, the
-             comparison at equal time (saving about 1).
+             The acuity rows' spp are fovpt_config_acuity's (fovpt 0.5: from the eye model, with
+             cfg.spp = the reference's, 4 or 1): layers_acuity_qQ / zones_acuity_qQ with
+             acuity_budget 0 (each band's eye-filtered noise at the reference's);
+             layers_acuity_eqt, zones_acuity_eqt: quality 1, acuity_budget 1 (the reference's
+             samples spread for the least mean filtered noise: equal time, saving about 1);
+             _bB: quality 1, acuity_budget B < 1 (about 1 / B the saving; --budgets).
              Ground truth: uniform at --gt-spp-pt (default 32) samples per pixel, with its own
              seed (PT_GT_SEED): the rows' random streams (seed 0) are not among its samples.
              (With seed 0 the ground truth's first 4 samples per pixel were uniform4's, which
