@@ -241,7 +241,10 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      largest saving at equal perceived quality 1.4x (layers) / 3.4x (zones, 1 spp) at
      640 x 360 (8.6 px/degree), 1.0x / 1.4x on the 27-inch monitor (33.6), 2.0x / 2.1x on the
      headset (11.7); at equal time (acuity_budget 1) perr 5-13 % below UNIFORM's except the
-     layers on the monitor (7 % above: its far periphery, strides 12-16).
+     layers on the monitor (7 % above: its far periphery, strides 12-16). An edge-rich scene
+     (441 cubes) is equal nowhere (quality 0.5: 1.04x, perr +5 % at 640 x 360; 1.17x, +55 %
+     on the monitor): there the lattice's blur of detail near the MAR, a bias no spp removes,
+     dominates, and the quality knob would have to go well below 0.5.
    - Reconstruction: the smoothing B-spline (layers.bspline, zones.bspline; see LAYERS below)
      on the coarse lattices. What makes the periphery visible, measured after filtering both
      images to the eye's resolution (bench/pt_acuity.c --recon, Cornell box, 4 spp, at 33.6
