@@ -981,7 +981,18 @@ typedef struct fovsdf_config {
     uint32_t level_filter;  /* FIPR and CONE_FOV: 1 = the mid and quarter levels' samples take
                                their cell's mean albedo (a prefiltered texture: no aliasing of
                                textures the sparse rays would point-sample; no extra distance
-                               evaluations); 0: point samples */
+                               evaluations); 2 = the levels' samples give their lighting only,
+                               and each interpolated pixel takes the albedo at its own ray's
+                               point on each tap's tangent plane (the texture at full
+                               resolution; no extra distance evaluations); 0: point samples */
+    float refine_depth;     /* FIPR and CONE_FOV: a pixel outside the mask whose interpolation
+                               taps disagree on hit and miss, or whose hits' depths differ by
+                               more than this fraction of the nearest, traces its own rays (a
+                               silhouette); >= 0                                    0: never */
+    float refine_normal_deg; /* FIPR and CONE_FOV: ... whose hits' normals differ by more than
+                               this angle, degrees (a crease); in [0, 180]          0: never */
+    uint32_t refine_material; /* FIPR and CONE_FOV: 1 = ... whose hits lie on different
+                               materials (another object); 0 or 1                   0: never */
     uint32_t refresh;       /* pixels outside the mask are refreshed every refresh-th frame:
                                1, 2 or 4 (the thesis's 1/1, 1/2, 1/4 rates)          0: 1 */
     uint32_t frame;         /* frame number: which quarter or half of the periphery refreshes */
@@ -2521,12 +2532,13 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         FOV__FIELD(fovsdf_config, omega, 1), FOV__FIELD(fovsdf_config, ar_beta, 1),
         FOV__FIELD(fovsdf_config, bv_relax, 1), FOV__FIELD(fovsdf_config, shadow_eps, 1),
         FOV__FIELD(fovsdf_config, shadow_t0, 1), FOV__FIELD(fovsdf_config, normal_eps, 1) };
-    static const fov__field fa[8] = {
+    static const fov__field fa[10] = {
         FOV__FIELD(fovsdf_config, acuity.A, 1), FOV__FIELD(fovsdf_config, acuity.rate, 1),
         FOV__FIELD(fovsdf_config, acuity.C, 1), FOV__FIELD(fovsdf_config, acuity.fovea_deg, 1),
         FOV__FIELD(fovsdf_config, acuity.outer_deg, 1),
         FOV__FIELD(fovsdf_config, edge_threshold, 1), FOV__FIELD(fovsdf_config, quarter_deg, 1),
-        FOV__FIELD(fovsdf_config, refine_contrast, 1) };
+        FOV__FIELD(fovsdf_config, refine_contrast, 1), FOV__FIELD(fovsdf_config, refine_depth, 1),
+        FOV__FIELD(fovsdf_config, refine_normal_deg, 1) };
     fovsdf_config c;
     const fov_logger *lg;
     fov_result r;
@@ -2632,8 +2644,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
                      "config.shadow_fov_steps must be <= shadow_steps (0: shadow_steps)");
     {
         fovsdf_acuity d = fovsdf_acuity_default();
-        r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 8u, 0, (uint32_t)__LINE__);
-        if (r == FOV_OK) r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 8u, 1, __LINE__);
+        r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 10u, 0, (uint32_t)__LINE__);
+        if (r == FOV_OK) r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 10u, 1, __LINE__);
         if (r != FOV_OK) return r;
         if (fov__is0(c.acuity.A)) c.acuity.A = d.A;
         if (fov__is0(c.acuity.rate)) c.acuity.rate = d.rate;
@@ -2647,8 +2659,12 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
                          "config.acuity.outer_deg must exceed fovea_deg (0: 7.5)");
         if (fov__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
-        if (c.level_filter > 1u)
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.level_filter must be 0 or 1");
+        if (c.level_filter > 2u)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.level_filter must be 0, 1 or 2");
+        if (c.refine_normal_deg > 180.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.refine_normal_deg must be in [0, 180]");
+        if (c.refine_material > 1u)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.refine_material must be 0 or 1");
         if (c.quarter_deg > 180.0f)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.quarter_deg must be <= 180 (0: none)");
         if (c.quarter_deg > 0.0f && c.quarter_deg < c.acuity.fovea_deg)
@@ -8290,9 +8306,13 @@ typedef struct fovsdf__mid {
     float tc;              /* CONE_FOV: the cell cone's t; -1 proven empty; -2 unknown (apron) */
     float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there; while
                               its march is requested, th holds its start */
-    float rgb[3];          /* its colour, once shaded */
+    float rgb[3];          /* its colour, once shaded (level_filter 2 and lit: its lighting,
+                              the colour over the albedo) */
+    float n[3];            /* level_filter 2 and lit: its normal */
     int32_t mat;
     uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
+    uint8_t lit;           /* level_filter 2: rgb and n are its lighting and normal */
+    uint8_t nok;           /* n is its normal */
     uint8_t req;           /* requested this round: 1 its march, 2 its shading, 4 its cone
                               (safe FIPR; tc is -3 meanwhile) */
 } fovsdf__mid;
@@ -8326,6 +8346,8 @@ typedef struct fovsdf__fovt {
        fovsdf_acuity_p beyond the fovea (p_hi); ecc_fast 0: always the atan2 */
     int ecc_fast;
     float ft2lo, ft2hi, qt2lo, qt2hi, p_hi;
+    int refine;                /* refine_depth, refine_normal_deg or refine_material set */
+    float rncos;               /* cos refine_normal_deg (-2: never) */
 } fovsdf__fovt;
 
 /* Which side of two eccentricities pixel point (x, y) surely lies on, from the squared tangent
@@ -8613,13 +8635,22 @@ FOVSDF__PRIV void fovsdf__fov_cells_run(fovsdf__fovt *f, fovsdf__mid *cells, con
                     f->st->evals_lowres += hk->evals;
                 }
             } else {
-                f->wv->afoot = c->cfg.level_filter ? (uint32_t)S : 0u;
+                f->wv->afoot = c->cfg.level_filter == 1u ? (uint32_t)S : 0u;
                 fovsdf__wave_shade_rays(f->wv, f->mp, n, px, py, h, mat, rgb);
                 f->wv->afoot = 0;
                 for (k = 0; k < n; ++k) {
                     fovsdf__mid *m = &cells[id[k]];
-                    m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
-                    m->rgb[2] = rgb[3u * k + 2u];
+                    const fovsdf__wray *r = &f->wv->ray[k]; /* its slot, as shaded */
+                    m->lit = (uint8_t)(c->cfg.level_filter == 2u && r->lit);
+                    m->nok = (uint8_t)r->lit;
+                    m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
+                    if (m->lit) { /* the pixels take the albedo at their own points */
+                        m->rgb[0] = r->acc[0]; m->rgb[1] = r->acc[1]; m->rgb[2] = r->acc[2];
+                        m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
+                    } else {
+                        m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
+                        m->rgb[2] = rgb[3u * k + 2u];
+                    }
                     m->state = 2;
                 }
             }
@@ -8816,6 +8847,54 @@ FOVSDF__PRIV void fovsdf__lum_range(const float rgb[3], float *lo, float *hi)
     *hi = fov__maxf(*hi, Y);
 }
 
+/* level_filter 2: the colour level sample m (lit; its ray through image point (cx, cy)) gives
+   the pixel whose ray has the unit direction pd: its lighting times the albedo where pd meets
+   the sample's tangent plane, with its material (the sample's own point when pd meets the
+   plane behind the camera, from its other side, or more grazing than a quarter of the sample
+   ray's incidence, as fovsdf__albedo_cell), clamped as a shaded ray's colour. Into out. */
+FOVSDF__PRIV const float *fovsdf__tap_rgb(const fovsdf_ctx *c, const fovsdf__mid *m, float cx,
+                                          float cy, const float pd[3], float out[3])
+{
+    float ro[3], r0[3], q[3], x[3], alb[3], dn, dn0, t;
+    int k;
+    (void)fovsdf__ray(c, cx, cy, ro, r0);
+    for (k = 0; k < 3; ++k) q[k] = r0[k] * m->th;
+    dn = fov__dot(pd, m->n);
+    dn0 = fov__dot(r0, m->n);
+    t = dn * dn0 > 0.0f && fov__absf(dn) >= 0.25f * fov__absf(dn0) ? fov__dot(q, m->n) / dn
+                                                                     : -1.0f;
+    if (t > 0.0f && fov__finite(t))
+        for (k = 0; k < 3; ++k) x[k] = ro[k] + pd[k] * t;
+    else
+        for (k = 0; k < 3; ++k) x[k] = ro[k] + q[k];
+    fovsdf__albedo(c, x, m->mat, alb);
+    for (k = 0; k < 3; ++k) out[k] = fovsdf__clampf(alb[k] * m->rgb[k], 0.0f, FOVSDF__RGB_MAX);
+    return out;
+}
+
+/* What the interpolation taps seen so far say of the geometry (refine_depth, refine_normal_deg,
+   refine_material): the nearest and farthest hit, the hits' and the taps' counts, the hits'
+   material (-2: two or more), the first normal nf and the least cosine between it and the
+   others' (2: no normal yet). The cosine to the first normal, not every pair: at most twice
+   the angle. */
+FOVSDF__PRIV void fovsdf__depth_range(const fovsdf__mid *m, float *lo, float *hi, uint32_t *nhit,
+                                      uint32_t *ntap, int32_t *mat, float nf[3], float *ncos)
+{
+    ++*ntap;
+    if (m->kind == FOVSDF_MISS) return;
+    if (*nhit == 0u) *mat = m->mat;
+    else if (*mat != m->mat) *mat = -2; /* two materials */
+    if (m->nok && *ncos > 1.5f) { /* the first normal */
+        nf[0] = m->n[0]; nf[1] = m->n[1]; nf[2] = m->n[2];
+        *ncos = 1.0f;
+    } else if (m->nok) {
+        *ncos = fov__minf(*ncos, fov__dot(nf, m->n));
+    }
+    ++*nhit;
+    *lo = fov__minf(*lo, m->th);
+    *hi = fov__maxf(*hi, m->th);
+}
+
 /* Steps 3 and 4 for pixel (x, y) of a FIPR / CONE_FOV tile, as far as the cells it needs allow:
    0 when one is missing (requested: f->miss), else 1 (the pixel is queued or written). *ps
    keeps its mask decision between rounds. */
@@ -8878,8 +8957,19 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
     } else {
         int32_t a, b;
         float col[3] = { 0.0f, 0.0f, 0.0f }, s = fovsdf__fov_qw(f, x, y), ylo = 3.4e38f,
-              yhi = -3.4e38f;
+              yhi = -3.4e38f, tlo = 3.4e38f, thi = 0.0f;
+        uint32_t nhit = 0, ntap = 0;
+        int32_t tmat = -1;
+        float tnf[3] = { 0.0f, 0.0f, 0.0f }, tncos = 2.0f; /* 2: no normal yet */
+        const int rd = f->refine;
+        const int rmat = c->cfg.refine_material != 0u;
+        const float rncos = f->rncos;
         const fovsdf__mid *own = &f->dummy;
+        float pd[3] = { 0.0f, 0.0f, 0.0f }, tc[3];
+        if (c->cfg.level_filter == 2u) {
+            float ro[3];
+            (void)fovsdf__ray(c, (float)x + 0.5f, (float)y + 0.5f, ro, pd); /* the pixel's ray */
+        }
         if (s < 1.0f) { /* the mid level, bilinear */
             int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1;
             float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f;
@@ -8888,9 +8978,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                 for (a = 0; a < 2; ++a) {
                     const fovsdf__mid *m = fovsdf__fov_mid(f, ua + a, va + b, 1);
                     float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                    col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
-                    col[2] += wt * m->rgb[2];
+                    const float *mc = m->lit && !f->miss
+                                          ? fovsdf__tap_rgb(c, m, 2.0f * (float)(ua + a) + 1.0f,
+                                                            2.0f * (float)(va + b) + 1.0f, pd, tc)
+                                          : m->rgb;
+                    col[0] += wt * mc[0]; col[1] += wt * mc[1];
+                    col[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
                 }
         }
         if (s > 0.0f) { /* the quarter level, bilinear (weights 5/8 .. 3/8 per axis), blended */
@@ -8903,9 +8998,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                 for (a = 0; a < 2; ++a) {
                     const fovsdf__mid *m = fovsdf__fov_q(f, ia + a, ja + b, 1);
                     float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                    cq[0] += wt * m->rgb[0]; cq[1] += wt * m->rgb[1];
-                    cq[2] += wt * m->rgb[2];
+                    const float *mc = m->lit && !f->miss
+                                          ? fovsdf__tap_rgb(c, m, 4.0f * (float)(ia + a) + 2.0f,
+                                                            4.0f * (float)(ja + b) + 2.0f, pd, tc)
+                                          : m->rgb;
+                    cq[0] += wt * mc[0]; cq[1] += wt * mc[1];
+                    cq[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
                 }
             for (a = 0; a < 3; ++a) col[a] = (1.0f - s) * col[a] + s * cq[a];
             if (s >= 0.5f) own = oq;
@@ -8914,6 +9014,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
         if (c->cfg.refine_contrast > 0.0f &&
             yhi - ylo > c->cfg.refine_contrast * (yhi + ylo + 1e-3f)) {
             *ps = 2u; /* refined: the taps' contrast says an edge; trace the pixel */
+            return fovsdf__fov_pixel(f, x, y, ps, due, o);
+        }
+        if (rd && nhit > 0u &&
+            ((nhit < ntap && c->cfg.refine_depth > 0.0f) || (tmat == -2 && rmat) ||
+             tncos < rncos ||
+             (c->cfg.refine_depth > 0.0f && thi - tlo > c->cfg.refine_depth * tlo))) {
+            /* refined: the taps say a silhouette, another object or a crease; trace the pixel */
+            *ps = 2u;
             return fovsdf__fov_pixel(f, x, y, ps, due, o);
         }
         fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u,
@@ -8965,6 +9073,10 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
     /* the quarter level: the tile's 4x4 cells and a one-cell apron (T is a multiple of 4) */
+    f.refine = c->cfg.refine_depth > 0.0f || c->cfg.refine_normal_deg > 0.0f ||
+               c->cfg.refine_material != 0u;
+    f.rncos = c->cfg.refine_normal_deg > 0.0f
+                  ? FOV__COS(c->cfg.refine_normal_deg * (FOV__PI / 180.0f)) : -2.0f;
     f.quarter = c->cfg.quarter_deg > 0.0f;
     f.qc = qc; f.rqq = rqq; f.nrq = 0;
     f.qs = T / 4u + 2u; f.qu0 = (int32_t)(tx / 4u) - 1; f.qv0 = (int32_t)(ty / 4u) - 1;

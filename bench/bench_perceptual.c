@@ -237,7 +237,39 @@ typedef struct opts_t {
     const float *qual;
     int nqual;
     const char *displays, *headers, *scenes_sdf, *scenes_pt;
+    const char *variants; /* --variants: cone_fov_acuity's extra rows (NULL: none) */
+    int acuity_only;      /* --acuity-only: no fipr, cone_fov, fipr_acuity rows */
 } opts_t;
+
+/* A variant of cone_fov_acuity (--variants): "rdX" refine_depth X, "rcX" refine_contrast X,
+   "lfN" level_filter N, "rnX" refine_normal_deg X, "rmN" refine_material N, "pl" the fields
+   as fovsdf 0.7.0's fovsdf_config_acuity set them (level filter 1, no refinement);
+   parts joined by '+'. 0 when the text is not a variant. */
+static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
+{
+    size_t i = 0;
+    while (i < n) {
+        char buf[32];
+        size_t k = i;
+        double x;
+        while (k < n && v[k] != '+') ++k;
+        if (k - i >= sizeof buf || k - i < 2) return 0;
+        memcpy(buf, v + i, k - i); buf[k - i] = 0;
+        x = atof(buf + 2);
+        if (!strncmp(buf, "rd", 2)) cfg->refine_depth = (float)x;
+        else if (!strncmp(buf, "rc", 2)) cfg->refine_contrast = (float)x;
+        else if (!strncmp(buf, "lf", 2)) cfg->level_filter = (uint32_t)x;
+        else if (!strncmp(buf, "rn", 2)) cfg->refine_normal_deg = (float)x;
+        else if (!strncmp(buf, "rm", 2)) cfg->refine_material = (uint32_t)x;
+        else if (!strcmp(buf, "pl")) {
+            cfg->refine_depth = 0.0f; cfg->refine_contrast = 0.0f; cfg->refine_normal_deg = 0.0f;
+            cfg->refine_material = 0u; cfg->level_filter = 1u;
+        }
+        else return 0;
+        i = k + 1;
+    }
+    return 1;
+}
 
 /* ---- fovsdf and fovlp on fovsdf's scenes ---------------------------------------------------- */
 static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, const fovsdf_config *shade_cfg,
@@ -356,7 +388,7 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
     full = meas_img(&m, img, "classic");
     if (listed(o->headers, "sdf")) row(&rc, "classic", 0.0f, work_ref, work_ref, "evaluations", full, full, "classic");
     nk = 3 + o->nqual;
-    for (k = 0; k < nk && listed(o->headers, "sdf"); ++k) {
+    for (k = o->acuity_only ? 3 : 0; k < nk && listed(o->headers, "sdf"); ++k) {
         /* 0 fipr, 1 cone_fov (fixed), 2 fipr_acuity (quality 1), 3.. cone_fov_acuity */
         float q = k == 2 ? 1.0f : (k >= 3 ? o->qual[k - 3] : 0.0f);
         char name[64];
@@ -378,6 +410,28 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
         if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) continue;
         fovrun_render(&ctx, &out, o->threads, &st);
         row(&rc, name, q, (double)st.evals, work_ref, "evaluations", meas_img(&m, img, name), full, "classic");
+        if (k >= 3 && o->variants) { /* the variants at this quality */
+            const char *v = o->variants;
+            fovsdf_config acfg = cfg;
+            while (*v) {
+                size_t n = strcspn(v, ",");
+                char base[64];
+                cfg = acfg;
+                if (n > 0 && n < 40 && variant_apply(v, n, &cfg)) {
+                    snprintf(base, sizeof base, "cone_fov_acuity_%.*s", (int)n, v);
+                    method_name(name, sizeof name, base, q);
+                    if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) == FOV_OK) {
+                        fovrun_render(&ctx, &out, o->threads, &st);
+                        row(&rc, name, q, (double)st.evals, work_ref, "evaluations",
+                            meas_img(&m, img, name), full, "classic");
+                    }
+                } else {
+                    fprintf(stderr, "--variants: cannot read '%.*s'\n", (int)n, v);
+                }
+                v += n;
+                if (*v == ',') ++v;
+            }
+        }
     }
     if (listed(o->headers, "lp")) lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
     meas_free(&m);
@@ -533,6 +587,10 @@ static void usage(FILE *f)
           "  --scenes-sdf a,b     fovsdf / fovlp scenes (default primitives,temple)\n"
           "  --scenes-pt a,b      fovpt scenes (default cornell)\n"
           "  --qualities a,b      the acuity rows' quality knobs (default 0.25,0.35,0.5,0.7,1,1.5,2,3)\n"
+          "  --variants a,b       also cone_fov_acuity with rdX (refine_depth X), rcX (refine_contrast X),\n"
+          "                       lfN (level_filter N), rnX (refine_normal_deg X), rmN (refine_material N),\n"
+          "                       pl (0.7.0's acuity: level_filter 1, no refinement); '+' joins parts: rows cone_fov_acuity_<variant>[_qQ]\n"
+          "  --acuity-only        no fipr, cone_fov and fipr_acuity rows\n"
           "  --gt-spp N           fovsdf ground truth samples per pixel (default 4)\n"
           "  --gt-spp-pt N        fovpt ground truth samples per pixel (default 32)\n"
           "  --threads N          render threads (default the number of cores)\n"
@@ -564,6 +622,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--headers") && a + 1 < argc) o.headers = argv[++a];
         else if (!strcmp(argv[a], "--scenes-sdf") && a + 1 < argc) o.scenes_sdf = argv[++a];
         else if (!strcmp(argv[a], "--scenes-pt") && a + 1 < argc) o.scenes_pt = argv[++a];
+        else if (!strcmp(argv[a], "--variants") && a + 1 < argc) o.variants = argv[++a];
+        else if (!strcmp(argv[a], "--acuity-only")) o.acuity_only = 1;
         else if (!strcmp(argv[a], "--qualities") && a + 1 < argc) {
             char *p = argv[++a];
             o.nqual = 0;
