@@ -142,8 +142,8 @@ ACCELERATED METHODS
    (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss).
    The thesis's mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by
    default: its own study found it made the foveation more visible.
-   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and
-   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough
+   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 48 bytes and
+   twice as many floats (level 0: hits and certified starts), on the stack (17.7 KiB), enough
    for ipr_tile 32 with radius 1 (FIPR) and cone_tile 32 (CONE_FOV); configs that need more
    are FOV_ERR_LIMIT. acuity.fovea_deg 0 means the default 7.5: for no fovea at all pass a
    tiny angle such as 1e-3.
@@ -167,11 +167,42 @@ ACCELERATED METHODS
    spacing, and the aliases are coarse enough to see (ACUITY-DRIVEN FOVEATION). Costs
    4 S^2 albedo calls per level sample: cheap for the built-in checkerboard and palette, to be
    weighed for an expensive scene.albedo callback.
+   Per-pixel texture (config.level_filter 2; beyond the thesis): a mid or quarter sample keeps
+   its lighting (the shaded colour over the albedo: ambient plus lights, with shadows) and its
+   normal instead of its colour, and each interpolated pixel takes, per interpolation tap, the
+   albedo where the pixel's own ray meets the tap's tangent plane (the tap's material; the
+   tap's own point where the ray meets the plane behind the camera, from its other side or
+   more grazing than a quarter of the tap ray's incidence), times the tap's lighting, clamped
+   as a shaded colour, weighted as the bilinear. Lighting is smooth and shared; texture edges
+   come out where a full-resolution ray puts them (on a plane: the classic pixel's albedo),
+   with no blur from the level's spacing, at no distance evaluation: 4 albedo calls per
+   interpolated pixel (8 in the quarter blend band). What it fixes: the level filter's box and
+   the bilinear blur every texture edge over 2-4 pixels, which the eye resolves near the
+   fovea of a dense display (ACUITY-DRIVEN FOVEATION). Only the lit shadings
+   (FOVSDF_SHADE_FULL, NO_SHADOWS) have a lighting to keep; other shadings and misses (the
+   sky) interpolate colours as level_filter 0.
    Contrast refinement (config.refine_contrast C > 0; beyond the thesis): a pixel outside the
    mask whose interpolation taps (mid and quarter cells) have luminances (Rec. 709 weights,
    linear) whose Michelson contrast (max - min) / (max + min + 1e-3) exceeds C traces its own
    rays instead (mask output 1): silhouettes and shadow edges, which the sparse rays alias,
    and which the level filter cannot prefilter. Its cost follows the edges in the image.
+   With level_filter 2 the taps' values are their lighting, so it compares lighting (shadow
+   edges; the texture is per pixel already).
+   Geometric refinement (config.refine_depth, refine_normal_deg, refine_material; beyond the
+   thesis): a pixel outside the mask whose interpolation taps (mid and quarter cells) disagree
+   on hit and miss or whose hits' depths differ by more than refine_depth of the nearest (a
+   silhouette), whose hits' normals differ by more than refine_normal_deg from the first
+   hit's (a crease; the lit shadings, where the levels have normals), or whose hits lie on
+   different materials (refine_material 1: another object touching or crossing this one)
+   traces its own rays instead (mask output 1), from its 2x2 cell's certified start, so a
+   refined pixel is the pixel of the same method with a fovea over the whole image bit for
+   bit (tested; without a quarter level, whose pyramid may stop at 4x4 cells). The levels
+   point-sample geometry: a silhouette between two level rays steps in stairs of 2 or 4 pixels
+   that the eye sees just outside the fovea of a dense display, and interpolated lighting
+   across a crease or a contact darkens a band of pixels. The cost follows the silhouettes,
+   creases and object boundaries in the image, not the texture: a scene without them in view
+   costs no evaluation more (tested), and it is monotone in each threshold (tested). 0 (the
+   default) turns each test off; all three 0 give the images and counts of 0.7.0.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -194,7 +225,15 @@ ACUITY-DRIVEN FOVEATION
      0.05 dB; randomly placed full-resolution pixels among interpolated ones are noise.
    - refresh 1: the periphery is the part of the visual field most sensitive to flicker, and
      tiles that refresh on alternate frames flicker wherever the image changes.
-   - level_filter 1, acuity.outer_deg 0 (A, rate and C stay; the fovea mask ignores them).
+   - acuity.outer_deg 0 (A, rate and C stay; the fovea mask ignores them).
+   - level_filter 2 (texture per pixel) and geometric refinement: refine_depth 0.05,
+     refine_normal_deg 25, refine_material 1 (silhouettes, creases and object boundaries
+     trace their own pixels). Measured at equal perceived quality (bench/bench_perceptual.c:
+     eye-filtered FLIP against a 4-spp ground truth at most 0.001 above classic's), these
+     turned the loss at quality 1 into a tie on most scenes: the level filter's box and the
+     bilinear blur of texture edges, and the levels' stairs along silhouettes and contacts,
+     were what the eye filter saw (see What the eye notices, below). Set level_filter 1 and
+     the three refine fields 0 after the call for 0.7.0's configuration.
    - refine_contrast stays as the caller set it (default 0, off): at 640x360 the quality knob
      buys the same perceived quality for fewer evaluations (primitives: as good as classic
      with refine_contrast 0.1 at a saving of 2.1x, with quality 0.7 at 2.9x).
@@ -202,6 +241,17 @@ ACUITY-DRIVEN FOVEATION
    and CONE_FOV the fields have no effect). Errors, with a message through cfg->logger and
    *cfg unchanged: FOV_ERR_NULL; the eccentricity model's code for a bad camera or display;
    FOV_ERR_INVALID_ARG or FOV_ERR_NOT_FINITE for a bad eye.
+   What the eye notices near the fovea of a dense display (bench_perceptual, eye-filtered FLIP
+   at 33.6 px/degree, primitives, quality 1 of 0.7.0's configuration: 0.0282 against classic's
+   0.0180, the loss at 2-10 degrees): the checkerboard's edges blurred over 2-4 pixels by the
+   level filter and the bilinear (level_filter 2 alone: 0.0227), stairs of 2 and 4 pixels
+   along silhouettes and where objects touch the floor (adding refine_depth and
+   refine_material: 0.0192), and lighting interpolated across creases (adding
+   refine_normal_deg: 0.0185, a tie, at 10.5x instead of 13.0x). Left: lighting interpolated
+   over fast-varying lighting (columns and atrium, many point lights, curved columns: 0.0170
+   against 0.0148 at desktop27; neither refine_contrast on the lighting, 0.1, nor a normal
+   threshold of 15 degrees closes it); textured curved surfaces, whose texture the tangent
+   planes misplace by the curvature over a tap's spacing.
    What the eye notices in the periphery (bench/bench_sdf_acuity.c: both images filtered to the
    eye's resolution, a Gaussian of standard deviation MAR(e) / 2 per pixel, then PSNR per
    eccentricity band against a 16-spp ground truth; primitives 640x360, 6.7 px/degree):
@@ -320,9 +370,10 @@ MEMORY
    (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
-   CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB) and (FOVSDF_FOV_CELLS / 2 + 8) * 36
-   bytes for the quarter level's cells (6.0 KiB; fovsdf__fov_tile measured 34.5 KiB in 0.5.0,
-   40.2 KiB now, with the passes inlined). Lower the two macros for small
+   CONE_FOV add FOVSDF_FOV_CELLS * 56 bytes (17.7 KiB) and (FOVSDF_FOV_CELLS / 2 + 8) * 52
+   bytes for the quarter level's cells (8.6 KiB; fovsdf__fov_tile measured 34.5 KiB in 0.5.0,
+   40.2 KiB in 0.7.0, 47.3 KiB now that a level cell keeps its normal, with the passes
+   inlined). Lower the two macros for small
    stacks (configs that need more are then FOV_ERR_LIMIT). The wavefront adds about
    FOVSDF_WAVE * 0.6 KiB (77 KiB at 128, 19 KiB at 32) and the batch evaluator about
    FOVSDF_BATCH * 1.4 KiB (45 KiB at 32; nothing at 1); tests/xtarget/mem_test.c renders
@@ -557,6 +608,18 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   unreleased         foveation the eye does not notice near the fovea: config.level_filter 2
+                      (the levels keep their lighting and normal; each interpolated pixel
+                      takes the albedo at its own ray's point on the taps' tangent planes) and
+                      geometric refinement (config.refine_depth, refine_normal_deg,
+                      refine_material: pixels whose taps straddle a silhouette, a crease or
+                      two materials trace their own rays, bit for bit the full-resolution
+                      pixel). fovsdf_config_acuity sets level_filter 2, refine_depth 0.05,
+                      refine_normal_deg 25 and refine_material 1 (its images and counts
+                      change: as good as classic by the eye-filtered measure at quality 1 on
+                      most scenes and displays, see ACUITY-DRIVEN FOVEATION). With the three
+                      new fields 0 and level_filter 0 or 1 every image and count is 0.7.0's.
+                      A level cell is 48 bytes (was 32): fovsdf__fov_tile 47.3 KiB of stack.
    0.7.0 (2026-12-02) the mandelbulb and the terrain use the library's own branch-free float
                       kernels (sin, cos, atan2, log, pow; within 4 ulp) with libm,
                       FOV_NO_LIBM and the math hooks alike, and run vectorised in the batch
@@ -1371,7 +1434,7 @@ FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
 /* Acuity-driven foveation (ACCELERATED METHODS, ACUITY-DRIVEN FOVEATION): fills only the
    foveation fields of *cfg (acuity.fovea_deg, acuity.outer_deg, quarter_deg, refresh, fov_mask,
-   level_filter) from the display in cfg->display (all zero: cam's fov_y_deg), cam's size (cam
+   level_filter, refine_depth, refine_normal_deg, refine_material) from the display in cfg->display (all zero: cam's fov_y_deg), cam's size (cam
    must not be NULL) and the eye (NULL: the defaults, fov_eye); every other field, method
    included, stays as the caller set it. FOV_ERR_NULL, the eccentricity model's or the eye's
    error code, or fovsdf_config_resolve's for the config it would give, with a message through
@@ -2514,7 +2577,10 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
     c.quarter_deg = pl.e_quarter < 180.0f ? fov__maxf(pl.e_quarter, fovea) : 0.0f;
     c.refresh = 1u; /* the periphery is the part of the visual field most sensitive to flicker */
     c.fov_mask = (uint32_t)FOVSDF_MASK_FOVEA;
-    c.level_filter = 1u;
+    c.level_filter = 2u;     /* texture per pixel: no blur of its edges near the fovea */
+    c.refine_depth = 0.05f;  /* silhouettes, */
+    c.refine_normal_deg = 25.0f; /* creases */
+    c.refine_material = 1u;  /* and object boundaries trace their own pixels */
     /* the whole config must be valid, as fovlp's and fovpt's config_acuity check (resolve logs
        its own message) */
     r = fovsdf_config_resolve(&c, &res);

@@ -14,7 +14,8 @@
    both images filtered to the eye's resolution at each pixel's eccentricity (fovm_eye_filter:
    a Gaussian of 0.375 MAR(e), MAR = 1 + 1.32 e arc minutes, Guenter et al. 2012) and FLIP
    (Andersson et al. 2020) of the filtered pair at the display's pixels per degree at the gaze.
-     fovsdf  scenes primitives, temple (--scenes-sdf); full resolution: classic; fixed: fipr,
+     fovsdf  scenes primitives, temple (--scenes-sdf), and columns, thin with fovsdf's rows
+             only (--scenes-sdf-only; not in --quick); full resolution: classic; fixed: fipr,
              cone_fov (7.5-degree fovea, mid level beyond); acuity: cone_fov_acuity (and
              fipr_acuity at quality 1). work = distance evaluations (all: head starts, sample
              rays, normals; shading without shadow rays, as bench-lp shades). Ground truth:
@@ -237,6 +238,7 @@ typedef struct opts_t {
     const float *qual;
     int nqual;
     const char *displays, *headers, *scenes_sdf, *scenes_pt;
+    const char *scenes_sdf_only; /* --scenes-sdf-only: fovsdf's rows only (no fovlp rows) */
     const char *variants; /* --variants: cone_fov_acuity's extra rows (NULL: none) */
     int acuity_only;      /* --acuity-only: no fipr, cone_fov, fipr_acuity rows */
 } opts_t;
@@ -336,7 +338,7 @@ static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, co
     free(cd);
 }
 
-static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
+static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id, int sdf_only)
 {
     fovsdf_builtin bi;
     size_t bytes = 0, npx = (size_t)D->w * D->h;
@@ -391,7 +393,7 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
     for (k = o->acuity_only ? 3 : 0; k < nk && listed(o->headers, "sdf"); ++k) {
         /* 0 fipr, 1 cone_fov (fixed), 2 fipr_acuity (quality 1), 3.. cone_fov_acuity */
         float q = k == 2 ? 1.0f : (k >= 3 ? o->qual[k - 3] : 0.0f);
-        char name[64];
+        char name[128];
         cfg = shade_cfg;
         cfg.method = (k == 0 || k == 2) ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV;
         if (k >= 2) {
@@ -433,7 +435,7 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
             }
         }
     }
-    if (listed(o->headers, "lp")) lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
+    if (listed(o->headers, "lp") && !sdf_only) lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
     meas_free(&m);
     free(img);
     free(mem);
@@ -585,6 +587,8 @@ static void usage(FILE *f)
           "  --displays a,b       of bench,desktop27,hmd (default all)\n"
           "  --headers a,b        of sdf,lp,pt (default all)\n"
           "  --scenes-sdf a,b     fovsdf / fovlp scenes (default primitives,temple)\n"
+          "  --scenes-sdf-only a,b  more scenes with fovsdf's rows only (default columns,thin;\n"
+          "                       \"\" for none)\n"
           "  --scenes-pt a,b      fovpt scenes (default cornell)\n"
           "  --qualities a,b      the acuity rows' quality knobs (default 0.25,0.35,0.5,0.7,1,1.5,2,3)\n"
           "  --variants a,b       also cone_fov_acuity with rdX (refine_depth X), rcX (refine_contrast X),\n"
@@ -611,6 +615,7 @@ int main(int argc, char **argv)
     o.qual = g_qual_all; o.nqual = 8;
     o.displays = "bench,desktop27,hmd"; o.headers = "sdf,lp,pt";
     o.scenes_sdf = "primitives,temple"; o.scenes_pt = "cornell";
+    o.scenes_sdf_only = "columns,thin";
     for (a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
         else if (!strcmp(argv[a], "--quick")) quick = 1;
@@ -621,6 +626,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--displays") && a + 1 < argc) o.displays = argv[++a];
         else if (!strcmp(argv[a], "--headers") && a + 1 < argc) o.headers = argv[++a];
         else if (!strcmp(argv[a], "--scenes-sdf") && a + 1 < argc) o.scenes_sdf = argv[++a];
+        else if (!strcmp(argv[a], "--scenes-sdf-only") && a + 1 < argc) o.scenes_sdf_only = argv[++a];
         else if (!strcmp(argv[a], "--scenes-pt") && a + 1 < argc) o.scenes_pt = argv[++a];
         else if (!strcmp(argv[a], "--variants") && a + 1 < argc) o.variants = argv[++a];
         else if (!strcmp(argv[a], "--acuity-only")) o.acuity_only = 1;
@@ -654,6 +660,8 @@ int main(int argc, char **argv)
         if (k == argc) o.gt_spp_pt = 16;
         for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf")) break;
         if (k == argc) o.scenes_sdf = "primitives";
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf-only")) break;
+        if (k == argc) o.scenes_sdf_only = "";
     }
     if (o.threads < 1) o.threads = 1;
     if (o.gt_spp < 1 || o.gt_spp > 256 || o.gt_spp_pt < 1 || o.gt_spp_pt > 4096) {
@@ -673,8 +681,12 @@ int main(int argc, char **argv)
         int p;
         if (!listed(o.displays, g_disps[d].name)) continue;
         if (listed(o.headers, "sdf") || listed(o.headers, "lp"))
-            for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id)
-                if (listed(o.scenes_sdf, fovsdf_builtin_name(id))) sdf_scene(csv, &o, &g_disps[d], id);
+            for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+                if (listed(o.scenes_sdf, fovsdf_builtin_name(id)))
+                    sdf_scene(csv, &o, &g_disps[d], id, 0);
+                else if (listed(o.headers, "sdf") && listed(o.scenes_sdf_only, fovsdf_builtin_name(id)))
+                    sdf_scene(csv, &o, &g_disps[d], id, 1);
+            }
         if (listed(o.headers, "pt"))
             for (p = 0; p < PT_SCENE_NUM; ++p)
                 if (listed(o.scenes_pt, pt_scene_names[p])) pt_scene_rows(csv, &o, &g_disps[d], p);

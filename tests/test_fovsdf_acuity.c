@@ -100,11 +100,13 @@ static void test_params(void)
         }
         if (cfg.acuity.fovea_deg > prev_f || cfg.quarter_deg > prev_q) ok_m = 0;
         if (cfg.refresh != 1u || cfg.fov_mask != (uint32_t)FOVSDF_MASK_FOVEA ||
-            cfg.level_filter != 1u)
+            cfg.level_filter != 2u || !(cfg.refine_depth > 0.0f) ||
+            !(cfg.refine_normal_deg > 0.0f) || cfg.refine_material != 1u)
             ok_v = 0;
         prev_f = cfg.acuity.fovea_deg; prev_q = cfg.quarter_deg;
     }
-    check(ok_v, "acuity_params_match_model", "fovea = e_half, quarter = e_quarter, refresh 1");
+    check(ok_v, "acuity_params_match_model",
+          "fovea = e_half, quarter = e_quarter, refresh 1, level_filter 2, refinement on");
     check(ok_m, "acuity_params_monotone_in_ppd", "a finer display has a smaller full-res region");
     /* the 640x360, 45-degree display: 7.58 px/degree, e_half 11.2, e_quarter 23.2 */
     cfg = fovsdf_config_default();
@@ -150,6 +152,8 @@ static void test_params(void)
     cfg.acuity = before.acuity; cfg.quarter_deg = before.quarter_deg;
     cfg.refresh = before.refresh; cfg.fov_mask = before.fov_mask;
     cfg.level_filter = before.level_filter;
+    cfg.refine_depth = before.refine_depth; cfg.refine_normal_deg = before.refine_normal_deg;
+    cfg.refine_material = before.refine_material;
     check(r == FOV_OK && memcmp(&cfg, &before, sizeof cfg) == 0, "acuity_other_fields_kept",
           "r %d", (int)r);
     /* the result resolves (outer_deg cleared, quarter_deg >= fovea) */
