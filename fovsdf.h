@@ -250,8 +250,22 @@ ACUITY-DRIVEN FOVEATION
    refine_normal_deg: 0.0185, a tie, at 10.5x instead of 13.0x). Left: lighting interpolated
    over fast-varying lighting (columns and atrium, many point lights, curved columns: 0.0170
    against 0.0148 at desktop27; neither refine_contrast on the lighting, 0.1, nor a normal
-   threshold of 15 degrees closes it); textured curved surfaces, whose texture the tangent
-   planes misplace by the curvature over a tap's spacing.
+   threshold of 15 degrees closes it; the quarter level is where it lies: with quarter_deg 0
+   columns ties at quality 1, 0.0155, saving 4.3x instead of 7.9x); textured curved surfaces,
+   whose texture the tangent planes misplace by the curvature over a tap's spacing.
+   As good as classic (eye-filtered FLIP at most 0.001 above classic's against the 4-spp
+   ground truth, gaze at the centre, no shadows; CONE_FOV; the saving in distance evaluations
+   at the highest quality knob of 0.25 .. 1 that ties; make bench-perceptual and
+   bench_perceptual --scenes-sdf atrium,fractals --qualities 0.7,1):
+     640x360 (5-8 px/degree)  primitives 1 (3.5x), temple 0.7 (3.7x), thin 1 (2.5x),
+                              columns 0.5 (2.2x), atrium 0.7 (2.9x), fractals 1 (2.7x)
+     desktop27 (33.6)         primitives 1 (10.4x), temple 1 (9.4x), thin 1 (4.8x),
+                              fractals 1 (2.9x), atrium 0.35 (6.3x), columns 0.25 (4.3x)
+     hmd (11.7)               primitives 1 (7.7x), temple 1 (9.0x), thin 1 (5.4x),
+                              atrium 1 (7.3x), fractals 1 (6.1x), columns 0.5 (5.2x)
+   (0.7.0's configuration: primitives and temple tied at 0.25-0.5 only, 3.3x / 5.4x / 5.9x.)
+   Above quality 1 the saving grows little (most scenes still tie at 3: primitives 10.9x at
+   desktop27): the refinement traces what the coarser levels would have missed.
    What the eye notices in the periphery (bench/bench_sdf_acuity.c: both images filtered to the
    eye's resolution, a Gaussian of standard deviation MAR(e) / 2 per pixel, then PSNR per
    eccentricity band against a 16-spp ground truth; primitives 640x360, 6.7 px/degree):
@@ -1434,11 +1448,12 @@ FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
 /* Acuity-driven foveation (ACCELERATED METHODS, ACUITY-DRIVEN FOVEATION): fills only the
    foveation fields of *cfg (acuity.fovea_deg, acuity.outer_deg, quarter_deg, refresh, fov_mask,
-   level_filter, refine_depth, refine_normal_deg, refine_material) from the display in cfg->display (all zero: cam's fov_y_deg), cam's size (cam
-   must not be NULL) and the eye (NULL: the defaults, fov_eye); every other field, method
-   included, stays as the caller set it. FOV_ERR_NULL, the eccentricity model's or the eye's
-   error code, or fovsdf_config_resolve's for the config it would give, with a message through
-   cfg->logger; *cfg is unchanged on error. */
+   level_filter, refine_depth, refine_normal_deg, refine_material) from the display in
+   cfg->display (all zero: cam's fov_y_deg), cam's size (cam must not be NULL) and the eye
+   (NULL: the defaults, fov_eye); every other field, method included, stays as the caller set
+   it. FOV_ERR_NULL, the eccentricity model's or the eye's error code, or
+   fovsdf_config_resolve's for the config it would give, with a message through cfg->logger;
+   *cfg is unchanged on error. */
 FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_camera *cam,
                                            const fov_eye *eye);
 

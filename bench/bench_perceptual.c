@@ -244,7 +244,8 @@ typedef struct opts_t {
 } opts_t;
 
 /* A variant of cone_fov_acuity (--variants): "rdX" refine_depth X, "rcX" refine_contrast X,
-   "lfN" level_filter N, "rnX" refine_normal_deg X, "rmN" refine_material N, "pl" the fields
+   "lfN" level_filter N, "rnX" refine_normal_deg X, "rmN" refine_material N, "nq" no quarter
+   level, "pl" the fields
    as fovsdf 0.7.0's fovsdf_config_acuity set them (level filter 1, no refinement);
    parts joined by '+'. 0 when the text is not a variant. */
 static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
@@ -263,6 +264,7 @@ static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
         else if (!strncmp(buf, "lf", 2)) cfg->level_filter = (uint32_t)x;
         else if (!strncmp(buf, "rn", 2)) cfg->refine_normal_deg = (float)x;
         else if (!strncmp(buf, "rm", 2)) cfg->refine_material = (uint32_t)x;
+        else if (!strcmp(buf, "nq")) cfg->quarter_deg = 0.0f;
         else if (!strcmp(buf, "pl")) {
             cfg->refine_depth = 0.0f; cfg->refine_contrast = 0.0f; cfg->refine_normal_deg = 0.0f;
             cfg->refine_material = 0u; cfg->level_filter = 1u;
@@ -435,7 +437,8 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id, 
             }
         }
     }
-    if (listed(o->headers, "lp") && !sdf_only) lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
+    if (listed(o->headers, "lp") && !sdf_only)
+        lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
     meas_free(&m);
     free(img);
     free(mem);
@@ -591,9 +594,13 @@ static void usage(FILE *f)
           "                       \"\" for none)\n"
           "  --scenes-pt a,b      fovpt scenes (default cornell)\n"
           "  --qualities a,b      the acuity rows' quality knobs (default 0.25,0.35,0.5,0.7,1,1.5,2,3)\n"
-          "  --variants a,b       also cone_fov_acuity with rdX (refine_depth X), rcX (refine_contrast X),\n"
-          "                       lfN (level_filter N), rnX (refine_normal_deg X), rmN (refine_material N),\n"
-          "                       pl (0.7.0's acuity: level_filter 1, no refinement); '+' joins parts: rows cone_fov_acuity_<variant>[_qQ]\n"
+          "  --variants a,b       also cone_fov_acuity with rdX (refine_depth X),\n"
+          "                       rcX (refine_contrast X),\n"
+          "                       lfN (level_filter N), rnX (refine_normal_deg X),\n"
+          "                       rmN (refine_material N),\n"
+          "                       nq (quarter_deg 0: no quarter level),\n"
+          "                       pl (0.7.0's acuity: level_filter 1, no refinement); '+' joins\n"
+          "                       parts: rows cone_fov_acuity_<variant>[_qQ]\n"
           "  --acuity-only        no fipr, cone_fov and fipr_acuity rows\n"
           "  --gt-spp N           fovsdf ground truth samples per pixel (default 4)\n"
           "  --gt-spp-pt N        fovpt ground truth samples per pixel (default 32)\n"
@@ -626,7 +633,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--displays") && a + 1 < argc) o.displays = argv[++a];
         else if (!strcmp(argv[a], "--headers") && a + 1 < argc) o.headers = argv[++a];
         else if (!strcmp(argv[a], "--scenes-sdf") && a + 1 < argc) o.scenes_sdf = argv[++a];
-        else if (!strcmp(argv[a], "--scenes-sdf-only") && a + 1 < argc) o.scenes_sdf_only = argv[++a];
+        else if (!strcmp(argv[a], "--scenes-sdf-only") && a + 1 < argc)
+            o.scenes_sdf_only = argv[++a];
         else if (!strcmp(argv[a], "--scenes-pt") && a + 1 < argc) o.scenes_pt = argv[++a];
         else if (!strcmp(argv[a], "--variants") && a + 1 < argc) o.variants = argv[++a];
         else if (!strcmp(argv[a], "--acuity-only")) o.acuity_only = 1;
@@ -684,7 +692,8 @@ int main(int argc, char **argv)
             for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
                 if (listed(o.scenes_sdf, fovsdf_builtin_name(id)))
                     sdf_scene(csv, &o, &g_disps[d], id, 0);
-                else if (listed(o.headers, "sdf") && listed(o.scenes_sdf_only, fovsdf_builtin_name(id)))
+                else if (listed(o.headers, "sdf") &&
+                         listed(o.scenes_sdf_only, fovsdf_builtin_name(id)))
                     sdf_scene(csv, &o, &g_disps[d], id, 1);
             }
         if (listed(o.headers, "pt"))

@@ -20,13 +20,13 @@
  *   4. level_filter: less error against a 16-spp ground truth on a checkerboard floor, the
  *      same evaluations, an untextured image unchanged, bad values rejected; refine_contrast:
  *      more pixels traced, less error, bad values rejected.
- *   5. level_filter 2 (the albedo per pixel on the taps' tangent planes): less error than
- *      level_filter 1 against full resolution on the checkerboard, the same evaluations, an untextured image as the
- *      point samples'; geometric refinement (refine_depth, refine_normal_deg,
- *      refine_material): a refined pixel is the full-resolution pixel bit for bit, a scene
- *      without silhouettes, creases or second materials costs no refinement, the cost
- *      monotone in each threshold, nearer full resolution, bad values rejected with code and
- *      message.
+ *   5. level_filter 2 (the albedo per pixel on the taps' tangent planes): nearer full
+ *      resolution than level_filter 1 on the checkerboard, the same evaluations, an
+ *      untextured image as the point samples'; geometric refinement (refine_depth,
+ *      refine_normal_deg, refine_material): a refined pixel is the full-resolution pixel bit
+ *      for bit, a scene without silhouettes, creases or second materials costs no
+ *      refinement, the cost monotone in each threshold, nearer full resolution, bad values
+ *      rejected with code and message.
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
