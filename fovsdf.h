@@ -142,8 +142,8 @@ ACCELERATED METHODS
    (a mid-level hit the tracer reports beyond t_max, or a non-finite one, counts as a miss).
    The thesis's mask-guided blur (pass 5) is fovsdf_mask_blur, a post-process nobody calls by
    default: its own study found it made the foveation more visible.
-   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 32 bytes and
-   twice as many floats (level 0: hits and certified starts), on the stack (12.7 KiB), enough
+   Working memory per tile: FOVSDF_FOV_CELLS (default 324) mid-level cells of 48 bytes and
+   twice as many floats (level 0: hits and certified starts), on the stack (17.7 KiB), enough
    for ipr_tile 32 with radius 1 (FIPR) and cone_tile 32 (CONE_FOV); configs that need more
    are FOV_ERR_LIMIT. acuity.fovea_deg 0 means the default 7.5: for no fovea at all pass a
    tiny angle such as 1e-3.
@@ -167,11 +167,42 @@ ACCELERATED METHODS
    spacing, and the aliases are coarse enough to see (ACUITY-DRIVEN FOVEATION). Costs
    4 S^2 albedo calls per level sample: cheap for the built-in checkerboard and palette, to be
    weighed for an expensive scene.albedo callback.
+   Per-pixel texture (config.level_filter 2; beyond the thesis): a mid or quarter sample keeps
+   its lighting (the shaded colour over the albedo: ambient plus lights, with shadows) and its
+   normal instead of its colour, and each interpolated pixel takes, per interpolation tap, the
+   albedo where the pixel's own ray meets the tap's tangent plane (the tap's material; the
+   tap's own point where the ray meets the plane behind the camera, from its other side or
+   more grazing than a quarter of the tap ray's incidence), times the tap's lighting, clamped
+   as a shaded colour, weighted as the bilinear. Lighting is smooth and shared; texture edges
+   come out where a full-resolution ray puts them (on a plane: the classic pixel's albedo),
+   with no blur from the level's spacing, at no distance evaluation: 4 albedo calls per
+   interpolated pixel (8 in the quarter blend band). What it fixes: the level filter's box and
+   the bilinear blur every texture edge over 2-4 pixels, which the eye resolves near the
+   fovea of a dense display (ACUITY-DRIVEN FOVEATION). Only the lit shadings
+   (FOVSDF_SHADE_FULL, NO_SHADOWS) have a lighting to keep; other shadings and misses (the
+   sky) interpolate colours as level_filter 0.
    Contrast refinement (config.refine_contrast C > 0; beyond the thesis): a pixel outside the
    mask whose interpolation taps (mid and quarter cells) have luminances (Rec. 709 weights,
    linear) whose Michelson contrast (max - min) / (max + min + 1e-3) exceeds C traces its own
    rays instead (mask output 1): silhouettes and shadow edges, which the sparse rays alias,
    and which the level filter cannot prefilter. Its cost follows the edges in the image.
+   With level_filter 2 the taps' values are their lighting, so it compares lighting (shadow
+   edges; the texture is per pixel already).
+   Geometric refinement (config.refine_depth, refine_normal_deg, refine_material; beyond the
+   thesis): a pixel outside the mask whose interpolation taps (mid and quarter cells) disagree
+   on hit and miss or whose hits' depths differ by more than refine_depth of the nearest (a
+   silhouette), whose hits' normals differ by more than refine_normal_deg from the first
+   hit's (a crease; the lit shadings, where the levels have normals), or whose hits lie on
+   different materials (refine_material 1: another object touching or crossing this one)
+   traces its own rays instead (mask output 1), from its 2x2 cell's certified start, so a
+   refined pixel is the pixel of the same method with a fovea over the whole image bit for
+   bit (tested; without a quarter level, whose pyramid may stop at 4x4 cells). The levels
+   point-sample geometry: a silhouette between two level rays steps in stairs of 2 or 4 pixels
+   that the eye sees just outside the fovea of a dense display, and interpolated lighting
+   across a crease or a contact darkens a band of pixels. The cost follows the silhouettes,
+   creases and object boundaries in the image, not the texture: a scene without them in view
+   costs no evaluation more (tested), and it is monotone in each threshold (tested). 0 (the
+   default) turns each test off; all three 0 give the images and counts of 0.7.0.
    - Six built-in scenes modelled on the thesis's test scenes (Primitives, Columns and Lights,
      Temple on a terrain, Atrium, Thin features, Fractals).
 
@@ -194,7 +225,15 @@ ACUITY-DRIVEN FOVEATION
      0.05 dB; randomly placed full-resolution pixels among interpolated ones are noise.
    - refresh 1: the periphery is the part of the visual field most sensitive to flicker, and
      tiles that refresh on alternate frames flicker wherever the image changes.
-   - level_filter 1, acuity.outer_deg 0 (A, rate and C stay; the fovea mask ignores them).
+   - acuity.outer_deg 0 (A, rate and C stay; the fovea mask ignores them).
+   - level_filter 2 (texture per pixel) and geometric refinement: refine_depth 0.05,
+     refine_normal_deg 25, refine_material 1 (silhouettes, creases and object boundaries
+     trace their own pixels). Measured at equal perceived quality (bench/bench_perceptual.c:
+     eye-filtered FLIP against a 4-spp ground truth at most 0.001 above classic's), these
+     turned the loss at quality 1 into a tie on most scenes: the level filter's box and the
+     bilinear blur of texture edges, and the levels' stairs along silhouettes and contacts,
+     were what the eye filter saw (see What the eye notices, below). Set level_filter 1 and
+     the three refine fields 0 after the call for 0.7.0's configuration.
    - refine_contrast stays as the caller set it (default 0, off): at 640x360 the quality knob
      buys the same perceived quality for fewer evaluations (primitives: as good as classic
      with refine_contrast 0.1 at a saving of 2.1x, with quality 0.7 at 2.9x).
@@ -202,6 +241,31 @@ ACUITY-DRIVEN FOVEATION
    and CONE_FOV the fields have no effect). Errors, with a message through cfg->logger and
    *cfg unchanged: FOV_ERR_NULL; the eccentricity model's code for a bad camera or display;
    FOV_ERR_INVALID_ARG or FOV_ERR_NOT_FINITE for a bad eye.
+   What the eye notices near the fovea of a dense display (bench_perceptual, eye-filtered FLIP
+   at 33.6 px/degree, primitives, quality 1 of 0.7.0's configuration: 0.0282 against classic's
+   0.0180, the loss at 2-10 degrees): the checkerboard's edges blurred over 2-4 pixels by the
+   level filter and the bilinear (level_filter 2 alone: 0.0227), stairs of 2 and 4 pixels
+   along silhouettes and where objects touch the floor (adding refine_depth and
+   refine_material: 0.0192), and lighting interpolated across creases (adding
+   refine_normal_deg: 0.0185, a tie, at 10.5x instead of 13.0x). Left: lighting interpolated
+   over fast-varying lighting (columns and atrium, many point lights, curved columns: 0.0170
+   against 0.0148 at desktop27; neither refine_contrast on the lighting, 0.1, nor a normal
+   threshold of 15 degrees closes it; the quarter level is where it lies: with quarter_deg 0
+   columns ties at quality 1, 0.0155, saving 4.3x instead of 7.9x); textured curved surfaces,
+   whose texture the tangent planes misplace by the curvature over a tap's spacing.
+   As good as classic (eye-filtered FLIP at most 0.001 above classic's against the 4-spp
+   ground truth, gaze at the centre, no shadows; CONE_FOV; the saving in distance evaluations
+   at the highest quality knob of 0.25 .. 1 that ties; make bench-perceptual and
+   bench_perceptual --scenes-sdf atrium,fractals --qualities 0.7,1):
+     640x360 (5-8 px/degree)  primitives 1 (3.5x), temple 0.7 (3.7x), thin 1 (2.5x),
+                              columns 0.5 (2.2x), atrium 0.7 (2.9x), fractals 1 (2.7x)
+     desktop27 (33.6)         primitives 1 (10.4x), temple 1 (9.4x), thin 1 (4.8x),
+                              fractals 1 (2.9x), atrium 0.35 (6.3x), columns 0.25 (4.3x)
+     hmd (11.7)               primitives 1 (7.7x), temple 1 (9.0x), thin 1 (5.4x),
+                              atrium 1 (7.3x), fractals 1 (6.1x), columns 0.5 (5.2x)
+   (0.7.0's configuration: primitives and temple tied at 0.25-0.5 only, 3.3x / 5.4x / 5.9x.)
+   Above quality 1 the saving grows little (most scenes still tie at 3: primitives 10.9x at
+   desktop27): the refinement traces what the coarser levels would have missed.
    What the eye notices in the periphery (bench/bench_sdf_acuity.c: both images filtered to the
    eye's resolution, a Gaussian of standard deviation MAR(e) / 2 per pixel, then PSNR per
    eccentricity band against a 16-spp ground truth; primitives 640x360, 6.7 px/degree):
@@ -320,9 +384,10 @@ MEMORY
    (fovsdf_program_size, fovsdf_builtin_size). Stack use (gcc -fstack-usage, x86-64 -O2): the
    tracers and CONE need less than 4 KiB plus the scene program's value stack
    (FOVSDF_MAX_STACK * 8 bytes); IPR adds FOVSDF_TILE_SCRATCH floats (4 KiB), FIPR and
-   CONE_FOV add FOVSDF_FOV_CELLS * 40 bytes (12.7 KiB) and (FOVSDF_FOV_CELLS / 2 + 8) * 36
-   bytes for the quarter level's cells (6.0 KiB; fovsdf__fov_tile measured 34.5 KiB in 0.5.0,
-   40.2 KiB now, with the passes inlined). Lower the two macros for small
+   CONE_FOV add FOVSDF_FOV_CELLS * 56 bytes (17.7 KiB) and (FOVSDF_FOV_CELLS / 2 + 8) * 52
+   bytes for the quarter level's cells (8.6 KiB; fovsdf__fov_tile measured 34.5 KiB in 0.5.0,
+   40.2 KiB in 0.7.0, 47.3 KiB now that a level cell keeps its normal, with the passes
+   inlined). Lower the two macros for small
    stacks (configs that need more are then FOV_ERR_LIMIT). The wavefront adds about
    FOVSDF_WAVE * 0.6 KiB (77 KiB at 128, 19 KiB at 32) and the batch evaluator about
    FOVSDF_BATCH * 1.4 KiB (45 KiB at 32; nothing at 1); tests/xtarget/mem_test.c renders
@@ -557,6 +622,18 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   unreleased         foveation the eye does not notice near the fovea: config.level_filter 2
+                      (the levels keep their lighting and normal; each interpolated pixel
+                      takes the albedo at its own ray's point on the taps' tangent planes) and
+                      geometric refinement (config.refine_depth, refine_normal_deg,
+                      refine_material: pixels whose taps straddle a silhouette, a crease or
+                      two materials trace their own rays, bit for bit the full-resolution
+                      pixel). fovsdf_config_acuity sets level_filter 2, refine_depth 0.05,
+                      refine_normal_deg 25 and refine_material 1 (its images and counts
+                      change: as good as classic by the eye-filtered measure at quality 1 on
+                      most scenes and displays, see ACUITY-DRIVEN FOVEATION). With the three
+                      new fields 0 and level_filter 0 or 1 every image and count is 0.7.0's.
+                      A level cell is 48 bytes (was 32): fovsdf__fov_tile 47.3 KiB of stack.
    0.7.0 (2026-12-02) the mandelbulb and the terrain use the library's own branch-free float
                       kernels (sin, cos, atan2, log, pow; within 4 ulp) with libm,
                       FOV_NO_LIBM and the math hooks alike, and run vectorised in the batch
@@ -981,7 +1058,18 @@ typedef struct fovsdf_config {
     uint32_t level_filter;  /* FIPR and CONE_FOV: 1 = the mid and quarter levels' samples take
                                their cell's mean albedo (a prefiltered texture: no aliasing of
                                textures the sparse rays would point-sample; no extra distance
-                               evaluations); 0: point samples */
+                               evaluations); 2 = the levels' samples give their lighting only,
+                               and each interpolated pixel takes the albedo at its own ray's
+                               point on each tap's tangent plane (the texture at full
+                               resolution; no extra distance evaluations); 0: point samples */
+    float refine_depth;     /* FIPR and CONE_FOV: a pixel outside the mask whose interpolation
+                               taps disagree on hit and miss, or whose hits' depths differ by
+                               more than this fraction of the nearest, traces its own rays (a
+                               silhouette); >= 0                                    0: never */
+    float refine_normal_deg; /* FIPR and CONE_FOV: ... whose hits' normals differ by more than
+                               this angle, degrees (a crease); in [0, 180]          0: never */
+    uint32_t refine_material; /* FIPR and CONE_FOV: 1 = ... whose hits lie on different
+                               materials (another object); 0 or 1                   0: never */
     uint32_t refresh;       /* pixels outside the mask are refreshed every refresh-th frame:
                                1, 2 or 4 (the thesis's 1/1, 1/2, 1/4 rates)          0: 1 */
     uint32_t frame;         /* frame number: which quarter or half of the periphery refreshes */
@@ -1360,11 +1448,12 @@ FOVSDF_API fovsdf_config fovsdf_config_ground_truth(void);  /* classic, eps 1e-5
 FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_config *out);
 /* Acuity-driven foveation (ACCELERATED METHODS, ACUITY-DRIVEN FOVEATION): fills only the
    foveation fields of *cfg (acuity.fovea_deg, acuity.outer_deg, quarter_deg, refresh, fov_mask,
-   level_filter) from the display in cfg->display (all zero: cam's fov_y_deg), cam's size (cam
-   must not be NULL) and the eye (NULL: the defaults, fov_eye); every other field, method
-   included, stays as the caller set it. FOV_ERR_NULL, the eccentricity model's or the eye's
-   error code, or fovsdf_config_resolve's for the config it would give, with a message through
-   cfg->logger; *cfg is unchanged on error. */
+   level_filter, refine_depth, refine_normal_deg, refine_material) from the display in
+   cfg->display (all zero: cam's fov_y_deg), cam's size (cam must not be NULL) and the eye
+   (NULL: the defaults, fov_eye); every other field, method included, stays as the caller set
+   it. FOV_ERR_NULL, the eccentricity model's or the eye's error code, or
+   fovsdf_config_resolve's for the config it would give, with a message through cfg->logger;
+   *cfg is unchanged on error. */
 FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_camera *cam,
                                            const fov_eye *eye);
 
@@ -2503,7 +2592,10 @@ FOVSDF_API fov_result fovsdf_config_acuity(fovsdf_config *cfg, const fovsdf_came
     c.quarter_deg = pl.e_quarter < 180.0f ? fov__maxf(pl.e_quarter, fovea) : 0.0f;
     c.refresh = 1u; /* the periphery is the part of the visual field most sensitive to flicker */
     c.fov_mask = (uint32_t)FOVSDF_MASK_FOVEA;
-    c.level_filter = 1u;
+    c.level_filter = 2u;     /* texture per pixel: no blur of its edges near the fovea */
+    c.refine_depth = 0.05f;  /* silhouettes, */
+    c.refine_normal_deg = 25.0f; /* creases */
+    c.refine_material = 1u;  /* and object boundaries trace their own pixels */
     /* the whole config must be valid, as fovlp's and fovpt's config_acuity check (resolve logs
        its own message) */
     r = fovsdf_config_resolve(&c, &res);
@@ -2521,12 +2613,13 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
         FOV__FIELD(fovsdf_config, omega, 1), FOV__FIELD(fovsdf_config, ar_beta, 1),
         FOV__FIELD(fovsdf_config, bv_relax, 1), FOV__FIELD(fovsdf_config, shadow_eps, 1),
         FOV__FIELD(fovsdf_config, shadow_t0, 1), FOV__FIELD(fovsdf_config, normal_eps, 1) };
-    static const fov__field fa[8] = {
+    static const fov__field fa[10] = {
         FOV__FIELD(fovsdf_config, acuity.A, 1), FOV__FIELD(fovsdf_config, acuity.rate, 1),
         FOV__FIELD(fovsdf_config, acuity.C, 1), FOV__FIELD(fovsdf_config, acuity.fovea_deg, 1),
         FOV__FIELD(fovsdf_config, acuity.outer_deg, 1),
         FOV__FIELD(fovsdf_config, edge_threshold, 1), FOV__FIELD(fovsdf_config, quarter_deg, 1),
-        FOV__FIELD(fovsdf_config, refine_contrast, 1) };
+        FOV__FIELD(fovsdf_config, refine_contrast, 1), FOV__FIELD(fovsdf_config, refine_depth, 1),
+        FOV__FIELD(fovsdf_config, refine_normal_deg, 1) };
     fovsdf_config c;
     const fov_logger *lg;
     fov_result r;
@@ -2632,8 +2725,8 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
                      "config.shadow_fov_steps must be <= shadow_steps (0: shadow_steps)");
     {
         fovsdf_acuity d = fovsdf_acuity_default();
-        r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 8u, 0, (uint32_t)__LINE__);
-        if (r == FOV_OK) r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 8u, 1, __LINE__);
+        r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 10u, 0, (uint32_t)__LINE__);
+        if (r == FOV_OK) r = fov__fields_check(lg, "fovsdf", "config.", &c, fa, 10u, 1, __LINE__);
         if (r != FOV_OK) return r;
         if (fov__is0(c.acuity.A)) c.acuity.A = d.A;
         if (fov__is0(c.acuity.rate)) c.acuity.rate = d.rate;
@@ -2647,8 +2740,12 @@ FOVSDF_API fov_result fovsdf_config_resolve(const fovsdf_config *in, fovsdf_conf
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
                          "config.acuity.outer_deg must exceed fovea_deg (0: 7.5)");
         if (fov__is0(c.edge_threshold)) c.edge_threshold = 0.1f;
-        if (c.level_filter > 1u)
-            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.level_filter must be 0 or 1");
+        if (c.level_filter > 2u)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.level_filter must be 0, 1 or 2");
+        if (c.refine_normal_deg > 180.0f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.refine_normal_deg must be in [0, 180]");
+        if (c.refine_material > 1u)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.refine_material must be 0 or 1");
         if (c.quarter_deg > 180.0f)
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "config.quarter_deg must be <= 180 (0: none)");
         if (c.quarter_deg > 0.0f && c.quarter_deg < c.acuity.fovea_deg)
@@ -8290,9 +8387,13 @@ typedef struct fovsdf__mid {
     float tc;              /* CONE_FOV: the cell cone's t; -1 proven empty; -2 unknown (apron) */
     float th, dist;        /* the centre ray: hit t (t_max: miss) and the distance there; while
                               its march is requested, th holds its start */
-    float rgb[3];          /* its colour, once shaded */
+    float rgb[3];          /* its colour, once shaded (level_filter 2 and lit: its lighting,
+                              the colour over the albedo) */
+    float n[3];            /* level_filter 2 and lit: its normal */
     int32_t mat;
     uint8_t kind, state;   /* fovsdf_hit_kind; 0 untouched, 1 traced, 2 shaded */
+    uint8_t lit;           /* level_filter 2: rgb and n are its lighting and normal */
+    uint8_t nok;           /* n is its normal */
     uint8_t req;           /* requested this round: 1 its march, 2 its shading, 4 its cone
                               (safe FIPR; tc is -3 meanwhile) */
 } fovsdf__mid;
@@ -8326,6 +8427,8 @@ typedef struct fovsdf__fovt {
        fovsdf_acuity_p beyond the fovea (p_hi); ecc_fast 0: always the atan2 */
     int ecc_fast;
     float ft2lo, ft2hi, qt2lo, qt2hi, p_hi;
+    int refine;                /* refine_depth, refine_normal_deg or refine_material set */
+    float rncos;               /* cos refine_normal_deg (-2: never) */
 } fovsdf__fovt;
 
 /* Which side of two eccentricities pixel point (x, y) surely lies on, from the squared tangent
@@ -8613,13 +8716,22 @@ FOVSDF__PRIV void fovsdf__fov_cells_run(fovsdf__fovt *f, fovsdf__mid *cells, con
                     f->st->evals_lowres += hk->evals;
                 }
             } else {
-                f->wv->afoot = c->cfg.level_filter ? (uint32_t)S : 0u;
+                f->wv->afoot = c->cfg.level_filter == 1u ? (uint32_t)S : 0u;
                 fovsdf__wave_shade_rays(f->wv, f->mp, n, px, py, h, mat, rgb);
                 f->wv->afoot = 0;
                 for (k = 0; k < n; ++k) {
                     fovsdf__mid *m = &cells[id[k]];
-                    m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
-                    m->rgb[2] = rgb[3u * k + 2u];
+                    const fovsdf__wray *r = &f->wv->ray[k]; /* its slot, as shaded */
+                    m->lit = (uint8_t)(c->cfg.level_filter == 2u && r->lit);
+                    m->nok = (uint8_t)r->lit;
+                    m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
+                    if (m->lit) { /* the pixels take the albedo at their own points */
+                        m->rgb[0] = r->acc[0]; m->rgb[1] = r->acc[1]; m->rgb[2] = r->acc[2];
+                        m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
+                    } else {
+                        m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
+                        m->rgb[2] = rgb[3u * k + 2u];
+                    }
                     m->state = 2;
                 }
             }
@@ -8816,6 +8928,54 @@ FOVSDF__PRIV void fovsdf__lum_range(const float rgb[3], float *lo, float *hi)
     *hi = fov__maxf(*hi, Y);
 }
 
+/* level_filter 2: the colour level sample m (lit; its ray through image point (cx, cy)) gives
+   the pixel whose ray has the unit direction pd: its lighting times the albedo where pd meets
+   the sample's tangent plane, with its material (the sample's own point when pd meets the
+   plane behind the camera, from its other side, or more grazing than a quarter of the sample
+   ray's incidence, as fovsdf__albedo_cell), clamped as a shaded ray's colour. Into out. */
+FOVSDF__PRIV const float *fovsdf__tap_rgb(const fovsdf_ctx *c, const fovsdf__mid *m, float cx,
+                                          float cy, const float pd[3], float out[3])
+{
+    float ro[3], r0[3], q[3], x[3], alb[3], dn, dn0, t;
+    int k;
+    (void)fovsdf__ray(c, cx, cy, ro, r0);
+    for (k = 0; k < 3; ++k) q[k] = r0[k] * m->th;
+    dn = fov__dot(pd, m->n);
+    dn0 = fov__dot(r0, m->n);
+    t = dn * dn0 > 0.0f && fov__absf(dn) >= 0.25f * fov__absf(dn0) ? fov__dot(q, m->n) / dn
+                                                                     : -1.0f;
+    if (t > 0.0f && fov__finite(t))
+        for (k = 0; k < 3; ++k) x[k] = ro[k] + pd[k] * t;
+    else
+        for (k = 0; k < 3; ++k) x[k] = ro[k] + q[k];
+    fovsdf__albedo(c, x, m->mat, alb);
+    for (k = 0; k < 3; ++k) out[k] = fovsdf__clampf(alb[k] * m->rgb[k], 0.0f, FOVSDF__RGB_MAX);
+    return out;
+}
+
+/* What the interpolation taps seen so far say of the geometry (refine_depth, refine_normal_deg,
+   refine_material): the nearest and farthest hit, the hits' and the taps' counts, the hits'
+   material (-2: two or more), the first normal nf and the least cosine between it and the
+   others' (2: no normal yet). The cosine to the first normal, not every pair: at most twice
+   the angle. */
+FOVSDF__PRIV void fovsdf__depth_range(const fovsdf__mid *m, float *lo, float *hi, uint32_t *nhit,
+                                      uint32_t *ntap, int32_t *mat, float nf[3], float *ncos)
+{
+    ++*ntap;
+    if (m->kind == FOVSDF_MISS) return;
+    if (*nhit == 0u) *mat = m->mat;
+    else if (*mat != m->mat) *mat = -2; /* two materials */
+    if (m->nok && *ncos > 1.5f) { /* the first normal */
+        nf[0] = m->n[0]; nf[1] = m->n[1]; nf[2] = m->n[2];
+        *ncos = 1.0f;
+    } else if (m->nok) {
+        *ncos = fov__minf(*ncos, fov__dot(nf, m->n));
+    }
+    ++*nhit;
+    *lo = fov__minf(*lo, m->th);
+    *hi = fov__maxf(*hi, m->th);
+}
+
 /* Steps 3 and 4 for pixel (x, y) of a FIPR / CONE_FOV tile, as far as the cells it needs allow:
    0 when one is missing (requested: f->miss), else 1 (the pixel is queued or written). *ps
    keeps its mask decision between rounds. */
@@ -8878,8 +9038,19 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
     } else {
         int32_t a, b;
         float col[3] = { 0.0f, 0.0f, 0.0f }, s = fovsdf__fov_qw(f, x, y), ylo = 3.4e38f,
-              yhi = -3.4e38f;
+              yhi = -3.4e38f, tlo = 3.4e38f, thi = 0.0f;
+        uint32_t nhit = 0, ntap = 0;
+        int32_t tmat = -1;
+        float tnf[3] = { 0.0f, 0.0f, 0.0f }, tncos = 2.0f; /* 2: no normal yet */
+        const int rd = f->refine;
+        const int rmat = c->cfg.refine_material != 0u;
+        const float rncos = f->rncos;
         const fovsdf__mid *own = &f->dummy;
+        float pd[3] = { 0.0f, 0.0f, 0.0f }, tc[3];
+        if (c->cfg.level_filter == 2u) {
+            float ro[3];
+            (void)fovsdf__ray(c, (float)x + 0.5f, (float)y + 0.5f, ro, pd); /* the pixel's ray */
+        }
         if (s < 1.0f) { /* the mid level, bilinear */
             int32_t ua = (x & 1u) ? u : u - 1, va = (y & 1u) ? v : v - 1;
             float wx = (x & 1u) ? 0.25f : 0.75f, wy = (y & 1u) ? 0.25f : 0.75f;
@@ -8888,9 +9059,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                 for (a = 0; a < 2; ++a) {
                     const fovsdf__mid *m = fovsdf__fov_mid(f, ua + a, va + b, 1);
                     float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                    col[0] += wt * m->rgb[0]; col[1] += wt * m->rgb[1];
-                    col[2] += wt * m->rgb[2];
+                    const float *mc = m->lit && !f->miss
+                                          ? fovsdf__tap_rgb(c, m, 2.0f * (float)(ua + a) + 1.0f,
+                                                            2.0f * (float)(va + b) + 1.0f, pd, tc)
+                                          : m->rgb;
+                    col[0] += wt * mc[0]; col[1] += wt * mc[1];
+                    col[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
                 }
         }
         if (s > 0.0f) { /* the quarter level, bilinear (weights 5/8 .. 3/8 per axis), blended */
@@ -8903,9 +9079,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                 for (a = 0; a < 2; ++a) {
                     const fovsdf__mid *m = fovsdf__fov_q(f, ia + a, ja + b, 1);
                     float wt = (a ? wx : 1.0f - wx) * (b ? wy : 1.0f - wy);
-                    cq[0] += wt * m->rgb[0]; cq[1] += wt * m->rgb[1];
-                    cq[2] += wt * m->rgb[2];
+                    const float *mc = m->lit && !f->miss
+                                          ? fovsdf__tap_rgb(c, m, 4.0f * (float)(ia + a) + 2.0f,
+                                                            4.0f * (float)(ja + b) + 2.0f, pd, tc)
+                                          : m->rgb;
+                    cq[0] += wt * mc[0]; cq[1] += wt * mc[1];
+                    cq[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
                 }
             for (a = 0; a < 3; ++a) col[a] = (1.0f - s) * col[a] + s * cq[a];
             if (s >= 0.5f) own = oq;
@@ -8914,6 +9095,14 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
         if (c->cfg.refine_contrast > 0.0f &&
             yhi - ylo > c->cfg.refine_contrast * (yhi + ylo + 1e-3f)) {
             *ps = 2u; /* refined: the taps' contrast says an edge; trace the pixel */
+            return fovsdf__fov_pixel(f, x, y, ps, due, o);
+        }
+        if (rd && nhit > 0u &&
+            ((nhit < ntap && c->cfg.refine_depth > 0.0f) || (tmat == -2 && rmat) ||
+             tncos < rncos ||
+             (c->cfg.refine_depth > 0.0f && thi - tlo > c->cfg.refine_depth * tlo))) {
+            /* refined: the taps say a silhouette, another object or a crease; trace the pixel */
+            *ps = 2u;
             return fovsdf__fov_pixel(f, x, y, ps, due, o);
         }
         fovsdf__put(c, o, x, y, col, own->th, (uint8_t)(own->kind != FOVSDF_MISS), 0u, 0.0f, 0u,
@@ -8965,6 +9154,10 @@ fovsdf__fov_tile(const fovsdf_ctx *c, const fovsdf__marcher *mc, const fovsdf__m
         for (i = 0; i < f.ls * f.ls; ++i) { l0[i] = -1.0f; f.l0s[i] = -2.0f; }
     f.t_ring = 0.0f;
     /* the quarter level: the tile's 4x4 cells and a one-cell apron (T is a multiple of 4) */
+    f.refine = c->cfg.refine_depth > 0.0f || c->cfg.refine_normal_deg > 0.0f ||
+               c->cfg.refine_material != 0u;
+    f.rncos = c->cfg.refine_normal_deg > 0.0f
+                  ? FOV__COS(c->cfg.refine_normal_deg * (FOV__PI / 180.0f)) : -2.0f;
     f.quarter = c->cfg.quarter_deg > 0.0f;
     f.qc = qc; f.rqq = rqq; f.nrq = 0;
     f.qs = T / 4u + 2u; f.qu0 = (int32_t)(tx / 4u) - 1; f.qv0 = (int32_t)(ty / 4u) - 1;

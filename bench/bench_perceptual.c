@@ -14,7 +14,8 @@
    both images filtered to the eye's resolution at each pixel's eccentricity (fovm_eye_filter:
    a Gaussian of 0.375 MAR(e), MAR = 1 + 1.32 e arc minutes, Guenter et al. 2012) and FLIP
    (Andersson et al. 2020) of the filtered pair at the display's pixels per degree at the gaze.
-     fovsdf  scenes primitives, temple (--scenes-sdf); full resolution: classic; fixed: fipr,
+     fovsdf  scenes primitives, temple (--scenes-sdf), and columns, thin with fovsdf's rows
+             only (--scenes-sdf-only; not in --quick); full resolution: classic; fixed: fipr,
              cone_fov (7.5-degree fovea, mid level beyond); acuity: cone_fov_acuity (and
              fipr_acuity at quality 1). work = distance evaluations (all: head starts, sample
              rays, normals; shading without shadow rays, as bench-lp shades). Ground truth:
@@ -247,7 +248,42 @@ typedef struct opts_t {
     float budget[16];
     int nbudget;
     const char *displays, *headers, *scenes_sdf, *scenes_pt;
+    const char *scenes_sdf_only; /* --scenes-sdf-only: fovsdf's rows only (no fovlp rows) */
+    const char *variants; /* --variants: cone_fov_acuity's extra rows (NULL: none) */
+    int acuity_only;      /* --acuity-only: no fipr, cone_fov, fipr_acuity rows */
 } opts_t;
+
+/* A variant of cone_fov_acuity (--variants): "rdX" refine_depth X, "rcX" refine_contrast X,
+   "lfN" level_filter N, "rnX" refine_normal_deg X, "rmN" refine_material N, "nq" no quarter
+   level, "pl" the fields
+   as fovsdf 0.7.0's fovsdf_config_acuity set them (level filter 1, no refinement);
+   parts joined by '+'. 0 when the text is not a variant. */
+static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
+{
+    size_t i = 0;
+    while (i < n) {
+        char buf[32];
+        size_t k = i;
+        double x;
+        while (k < n && v[k] != '+') ++k;
+        if (k - i >= sizeof buf || k - i < 2) return 0;
+        memcpy(buf, v + i, k - i); buf[k - i] = 0;
+        x = atof(buf + 2);
+        if (!strncmp(buf, "rd", 2)) cfg->refine_depth = (float)x;
+        else if (!strncmp(buf, "rc", 2)) cfg->refine_contrast = (float)x;
+        else if (!strncmp(buf, "lf", 2)) cfg->level_filter = (uint32_t)x;
+        else if (!strncmp(buf, "rn", 2)) cfg->refine_normal_deg = (float)x;
+        else if (!strncmp(buf, "rm", 2)) cfg->refine_material = (uint32_t)x;
+        else if (!strcmp(buf, "nq")) cfg->quarter_deg = 0.0f;
+        else if (!strcmp(buf, "pl")) {
+            cfg->refine_depth = 0.0f; cfg->refine_contrast = 0.0f; cfg->refine_normal_deg = 0.0f;
+            cfg->refine_material = 0u; cfg->level_filter = 1u;
+        }
+        else return 0;
+        i = k + 1;
+    }
+    return 1;
+}
 
 /* ---- fovsdf and fovlp on fovsdf's scenes ---------------------------------------------------- */
 static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, const fovsdf_config *shade_cfg,
@@ -314,7 +350,7 @@ static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, co
     free(cd);
 }
 
-static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
+static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id, int sdf_only)
 {
     fovsdf_builtin bi;
     size_t bytes = 0, npx = (size_t)D->w * D->h;
@@ -366,10 +402,10 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
     full = meas_img(&m, img, "classic");
     if (listed(o->headers, "sdf")) row(&rc, "classic", 0.0f, work_ref, work_ref, "evaluations", full, full, "classic");
     nk = 3 + o->nqual;
-    for (k = 0; k < nk && listed(o->headers, "sdf"); ++k) {
+    for (k = o->acuity_only ? 3 : 0; k < nk && listed(o->headers, "sdf"); ++k) {
         /* 0 fipr, 1 cone_fov (fixed), 2 fipr_acuity (quality 1), 3.. cone_fov_acuity */
         float q = k == 2 ? 1.0f : (k >= 3 ? o->qual[k - 3] : 0.0f);
-        char name[64];
+        char name[128];
         cfg = shade_cfg;
         cfg.method = (k == 0 || k == 2) ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV;
         if (k >= 2) {
@@ -388,8 +424,31 @@ static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id)
         if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) != FOV_OK) continue;
         fovrun_render(&ctx, &out, o->threads, &st);
         row(&rc, name, q, (double)st.evals, work_ref, "evaluations", meas_img(&m, img, name), full, "classic");
+        if (k >= 3 && o->variants) { /* the variants at this quality */
+            const char *v = o->variants;
+            fovsdf_config acfg = cfg;
+            while (*v) {
+                size_t n = strcspn(v, ",");
+                char base[64];
+                cfg = acfg;
+                if (n > 0 && n < 40 && variant_apply(v, n, &cfg)) {
+                    snprintf(base, sizeof base, "cone_fov_acuity_%.*s", (int)n, v);
+                    method_name(name, sizeof name, base, q);
+                    if (fovsdf_init(&ctx, &cfg, &bi.scene, &bi.camera, gaze, NULL, 0) == FOV_OK) {
+                        fovrun_render(&ctx, &out, o->threads, &st);
+                        row(&rc, name, q, (double)st.evals, work_ref, "evaluations",
+                            meas_img(&m, img, name), full, "classic");
+                    }
+                } else {
+                    fprintf(stderr, "--variants: cannot read '%.*s'\n", (int)n, v);
+                }
+                v += n;
+                if (*v == ',') ++v;
+            }
+        }
     }
-    if (listed(o->headers, "lp")) lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
+    if (listed(o->headers, "lp") && !sdf_only)
+        lp_rows(&rc, o, &bi, &shade_cfg, gaze, &m, full, img);
     meas_free(&m);
     free(img);
     free(mem);
@@ -555,9 +614,19 @@ static void usage(FILE *f)
           "  --displays a,b       of bench,desktop27,hmd (default all)\n"
           "  --headers a,b        of sdf,lp,pt (default all)\n"
           "  --scenes-sdf a,b     fovsdf / fovlp scenes (default primitives,temple)\n"
+          "  --scenes-sdf-only a,b  more scenes with fovsdf's rows only (default columns,thin;\n"
+          "                       \"\" for none)\n"
           "  --scenes-pt a,b      fovpt scenes (default cornell)\n"
           "  --qualities a,b      the acuity rows' quality knobs (default 0.25,0.35,0.5,0.7,1,1.5,2,3)\n"
           "  --budgets a,b        fovpt acuity_budget rows at quality 1 (default 1,0.5,0.35,0.25,0.15)\n"
+          "  --variants a,b       also cone_fov_acuity with rdX (refine_depth X),\n"
+          "                       rcX (refine_contrast X),\n"
+          "                       lfN (level_filter N), rnX (refine_normal_deg X),\n"
+          "                       rmN (refine_material N),\n"
+          "                       nq (quarter_deg 0: no quarter level),\n"
+          "                       pl (0.7.0's acuity: level_filter 1, no refinement); '+' joins\n"
+          "                       parts: rows cone_fov_acuity_<variant>[_qQ]\n"
+          "  --acuity-only        no fipr, cone_fov and fipr_acuity rows\n"
           "  --gt-spp N           fovsdf ground truth samples per pixel (default 4)\n"
           "  --gt-spp-pt N        fovpt ground truth samples per pixel (default 32)\n"
           "  --threads N          render threads (default the number of cores)\n"
@@ -580,6 +649,7 @@ int main(int argc, char **argv)
     o.budget[4] = 0.15f; o.nbudget = 5;
     o.displays = "bench,desktop27,hmd"; o.headers = "sdf,lp,pt";
     o.scenes_sdf = "primitives,temple"; o.scenes_pt = "cornell";
+    o.scenes_sdf_only = "columns,thin";
     for (a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
         else if (!strcmp(argv[a], "--quick")) quick = 1;
@@ -590,7 +660,11 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[a], "--displays") && a + 1 < argc) o.displays = argv[++a];
         else if (!strcmp(argv[a], "--headers") && a + 1 < argc) o.headers = argv[++a];
         else if (!strcmp(argv[a], "--scenes-sdf") && a + 1 < argc) o.scenes_sdf = argv[++a];
+        else if (!strcmp(argv[a], "--scenes-sdf-only") && a + 1 < argc)
+            o.scenes_sdf_only = argv[++a];
         else if (!strcmp(argv[a], "--scenes-pt") && a + 1 < argc) o.scenes_pt = argv[++a];
+        else if (!strcmp(argv[a], "--variants") && a + 1 < argc) o.variants = argv[++a];
+        else if (!strcmp(argv[a], "--acuity-only")) o.acuity_only = 1;
         else if (!strcmp(argv[a], "--qualities") && a + 1 < argc) {
             char *p = argv[++a];
             o.nqual = 0;
@@ -635,6 +709,8 @@ int main(int argc, char **argv)
         if (k == argc) o.gt_spp_pt = 16;
         for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf")) break;
         if (k == argc) o.scenes_sdf = "primitives";
+        for (k = 1; k < argc; ++k) if (!strcmp(argv[k], "--scenes-sdf-only")) break;
+        if (k == argc) o.scenes_sdf_only = "";
     }
     if (o.threads < 1) o.threads = 1;
     if (o.gt_spp < 1 || o.gt_spp > 256 || o.gt_spp_pt < 1 || o.gt_spp_pt > 4096) {
@@ -654,8 +730,13 @@ int main(int argc, char **argv)
         int p;
         if (!listed(o.displays, g_disps[d].name)) continue;
         if (listed(o.headers, "sdf") || listed(o.headers, "lp"))
-            for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id)
-                if (listed(o.scenes_sdf, fovsdf_builtin_name(id))) sdf_scene(csv, &o, &g_disps[d], id);
+            for (id = 0; id < (uint32_t)_FOVSDF_SCENE_NUM; ++id) {
+                if (listed(o.scenes_sdf, fovsdf_builtin_name(id)))
+                    sdf_scene(csv, &o, &g_disps[d], id, 0);
+                else if (listed(o.headers, "sdf") &&
+                         listed(o.scenes_sdf_only, fovsdf_builtin_name(id)))
+                    sdf_scene(csv, &o, &g_disps[d], id, 1);
+            }
         if (listed(o.headers, "pt"))
             for (p = 0; p < PT_SCENE_NUM; ++p)
                 if (listed(o.scenes_pt, pt_scene_names[p])) pt_scene_rows(csv, &o, &g_disps[d], p);

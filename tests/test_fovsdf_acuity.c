@@ -20,6 +20,13 @@
  *   4. level_filter: less error against a 16-spp ground truth on a checkerboard floor, the
  *      same evaluations, an untextured image unchanged, bad values rejected; refine_contrast:
  *      more pixels traced, less error, bad values rejected.
+ *   5. level_filter 2 (the albedo per pixel on the taps' tangent planes): nearer full
+ *      resolution than level_filter 1 on the checkerboard, the same evaluations, an
+ *      untextured image as the point samples'; geometric refinement (refine_depth,
+ *      refine_normal_deg, refine_material): a refined pixel is the full-resolution pixel bit
+ *      for bit, a scene without silhouettes, creases or second materials costs no
+ *      refinement, the cost monotone in each threshold, nearer full resolution, bad values
+ *      rejected with code and message.
  */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
@@ -93,11 +100,13 @@ static void test_params(void)
         }
         if (cfg.acuity.fovea_deg > prev_f || cfg.quarter_deg > prev_q) ok_m = 0;
         if (cfg.refresh != 1u || cfg.fov_mask != (uint32_t)FOVSDF_MASK_FOVEA ||
-            cfg.level_filter != 1u)
+            cfg.level_filter != 2u || !(cfg.refine_depth > 0.0f) ||
+            !(cfg.refine_normal_deg > 0.0f) || cfg.refine_material != 1u)
             ok_v = 0;
         prev_f = cfg.acuity.fovea_deg; prev_q = cfg.quarter_deg;
     }
-    check(ok_v, "acuity_params_match_model", "fovea = e_half, quarter = e_quarter, refresh 1");
+    check(ok_v, "acuity_params_match_model",
+          "fovea = e_half, quarter = e_quarter, refresh 1, level_filter 2, refinement on");
     check(ok_m, "acuity_params_monotone_in_ppd", "a finer display has a smaller full-res region");
     /* the 640x360, 45-degree display: 7.58 px/degree, e_half 11.2, e_quarter 23.2 */
     cfg = fovsdf_config_default();
@@ -143,6 +152,8 @@ static void test_params(void)
     cfg.acuity = before.acuity; cfg.quarter_deg = before.quarter_deg;
     cfg.refresh = before.refresh; cfg.fov_mask = before.fov_mask;
     cfg.level_filter = before.level_filter;
+    cfg.refine_depth = before.refine_depth; cfg.refine_normal_deg = before.refine_normal_deg;
+    cfg.refine_material = before.refine_material;
     check(r == FOV_OK && memcmp(&cfg, &before, sizeof cfg) == 0, "acuity_other_fields_kept",
           "r %d", (int)r);
     /* the result resolves (outer_deg cleared, quarter_deg >= fovea) */
@@ -531,7 +542,7 @@ static void test_level_filter(void)
         check(worst < 1e-5, "lf_untextured_unchanged", "largest difference %g", worst);
     }
     cfg = fovsdf_config_default();
-    cfg.level_filter = 2;
+    cfg.level_filter = 3;
     check(fovsdf_config_resolve(&cfg, &out) == FOV_ERR_INVALID_ARG, "lf_bad_value", "-");
     /* refine_contrast: pixels whose taps differ trace their own rays (more traced pixels, not
        all); the error against the ground truth drops; bad values rejected */
@@ -571,11 +582,215 @@ done:
     free(s.mem);
 }
 
+/* a tilted plane with one material and no silhouette in view (for the no-refinement case) */
+static float wall_sdf(const float p[3], void *user)
+{
+    (void)user;
+    return 0.1f * p[0] + 0.05f * p[1] + 0.9937f * p[2] + 2.0f; /* unit normal, facing +z */
+}
+
+static long count_mask(const frame_t *f, size_t n, uint8_t v)
+{
+    long k = 0;
+    size_t i;
+    for (i = 0; i < n; ++i) k += f->mask[i] == v;
+    return k;
+}
+
+static double sq_err(const frame_t *a, const frame_t *gt, size_t n)
+{
+    double e = 0.0;
+    size_t i;
+    for (i = 0; i < 3 * n; ++i) {
+        double d = (double)a->rgb[i] - (double)gt->rgb[i];
+        e += d * d;
+    }
+    return e;
+}
+
+static void test_refine(void)
+{
+    const uint32_t W = 192, H = 108;
+    size_t n = (size_t)W * H, i;
+    scene_t s;
+    frame_t gt, a, b, full; /* gt: classic (full resolution, one ray per pixel) */
+    fovsdf_config cfg, base, out;
+    uint32_t m;
+    logrec lr;
+    if (!check(scene_open(&s, FOVSDF_SCENE_PRIMITIVES, W, H, 45.0f), "refine_scene", "-")) return;
+    frame_alloc(&gt, n); frame_alloc(&a, n); frame_alloc(&b, n); frame_alloc(&full, n);
+    /* the reference: full resolution, one ray per pixel (the classic tracer) */
+    cfg = fovsdf_config_default();
+    cfg.method = FOVSDF_METHOD_CLASSIC;
+    cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+    if (!check(render(&cfg, &s.bi.scene, &s.bi.camera, &gt), "refine_classic", "-")) goto done;
+    /* level_filter 2: the checkerboard at each pixel's own point, so the interpolated pixels
+       come far closer to full resolution's than with the cell's mean albedo */
+    for (m = 0; m < 2; ++m) {
+        double e1, e2;
+        cfg = fovsdf_config_default();
+        cfg.method = m ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV;
+        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+        cfg.acuity.fovea_deg = 4.0f;
+        cfg.fov_mask = FOVSDF_MASK_FOVEA;
+        cfg.quarter_deg = 10.0f;
+        cfg.level_filter = 1;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &a)) break;
+        cfg.level_filter = 2;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &b)) break;
+        e1 = sq_err(&a, &gt, n); e2 = sq_err(&b, &gt, n);
+        check(e2 < 0.5 * e1, fovcheck_name("lf2_nearer_full_res_%s", m ? "fipr" : "cone_fov"),
+              "squared difference to classic %g against level_filter 1's %g", e2, e1);
+        check(a.st.evals == b.st.evals, fovcheck_name("lf2_same_evals_%s", m ? "fipr" : "cone_fov"),
+              "%llu against %llu", (unsigned long long)b.st.evals, (unsigned long long)a.st.evals);
+    }
+    {   /* untextured (one colour): level_filter 2 is the point samples' image */
+        fovsdf_scene ps;
+        fovsdf_camera cam = cam_make(W, H, 60.0f);
+        double worst = 0.0;
+        fovsdf_scene_init(&ps);
+        ps.dist = plane_sdf;
+        ps.t_max = 30.0f;
+        cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
+        cfg = fovsdf_config_default();
+        cfg.method = FOVSDF_METHOD_CONE_FOV;
+        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+        cfg.acuity.fovea_deg = 3.0f;
+        cfg.quarter_deg = 8.0f;
+        if (render(&cfg, &ps, &cam, &a)) {
+            cfg.level_filter = 2;
+            if (render(&cfg, &ps, &cam, &b))
+                for (i = 0; i < 3 * n; ++i)
+                    worst = fmax(worst, fabs((double)a.rgb[i] - (double)b.rgb[i]));
+        }
+        check(worst < 1e-5, "lf2_untextured_unchanged", "largest difference %g", worst);
+    }
+    /* a refined pixel is the full-resolution pixel (the fovea over the whole image; no quarter
+       level, so every 2x2 cell's cone is the same) bit for bit */
+    for (m = 0; m < 2; ++m) {
+        long bad = 0, refined, traced0;
+        base = fovsdf_config_default();
+        base.method = m ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV;
+        base.shading = FOVSDF_SHADE_NO_SHADOWS;
+        base.fov_mask = FOVSDF_MASK_FOVEA;
+        base.level_filter = 2;
+        cfg = base;
+        cfg.acuity.fovea_deg = 179.0f;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &full)) break;
+        cfg = base;
+        cfg.acuity.fovea_deg = 4.0f;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &a)) break;
+        cfg.refine_depth = 0.1f; cfg.refine_normal_deg = 30.0f; cfg.refine_material = 1;
+        if (!render(&cfg, &s.bi.scene, &s.bi.camera, &b)) break;
+        traced0 = count_mask(&a, n, 1u);
+        refined = count_mask(&b, n, 1u) - traced0;
+        for (i = 0; i < n; ++i)
+            if (b.mask[i] == 1u && memcmp(&b.rgb[3 * i], &full.rgb[3 * i], 3 * sizeof(float)))
+                ++bad;
+        check(refined > 200 && refined < (long)n / 2 && bad == 0,
+              fovcheck_name("refine_pixels_are_full_res_%s", m ? "fipr" : "cone_fov"),
+              "%ld refined (%ld traced before), %ld traced pixels differ from full resolution",
+              refined, traced0, bad);
+        check(b.st.evals > a.st.evals && sq_err(&b, &full, n) < 0.7 * sq_err(&a, &full, n),
+              fovcheck_name("refine_costs_and_helps_%s", m ? "fipr" : "cone_fov"),
+              "evaluations %llu -> %llu, squared difference to full resolution %g -> %g",
+              (unsigned long long)a.st.evals, (unsigned long long)b.st.evals, sq_err(&a, &full, n),
+              sq_err(&b, &full, n));
+    }
+    /* the cost is monotone in each threshold (a lower threshold refines a superset) */
+    {
+        static const float rd[3] = { 0.4f, 0.1f, 0.02f }, rn[3] = { 60.0f, 30.0f, 10.0f };
+        long prev_t = -1;
+        unsigned long long prev_e = 0;
+        int ok = 1, k, which;
+        for (which = 0; which < 2; ++which)
+            for (k = 0, prev_t = -1, prev_e = 0; k < 3; ++k) {
+                cfg = fovsdf_config_default();
+                cfg.method = FOVSDF_METHOD_CONE_FOV;
+                cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+                cfg.fov_mask = FOVSDF_MASK_FOVEA;
+                cfg.acuity.fovea_deg = 4.0f;
+                cfg.quarter_deg = 10.0f;
+                cfg.level_filter = 2;
+                if (which == 0) cfg.refine_depth = rd[k];
+                else cfg.refine_normal_deg = rn[k];
+                if (!render(&cfg, &s.bi.scene, &s.bi.camera, &a)) { ok = 0; break; }
+                if (count_mask(&a, n, 1u) < prev_t || a.st.evals < prev_e) ok = 0;
+                prev_t = count_mask(&a, n, 1u); prev_e = a.st.evals;
+            }
+        check(ok, "refine_cost_monotone", "traced pixels and evaluations grow as thresholds fall");
+    }
+    {   /* no silhouette, crease or second material in view: no pixel refined, no evaluation more */
+        fovsdf_scene ps;
+        fovsdf_camera cam = cam_make(W, H, 60.0f);
+        long t0, t1;
+        fovsdf_scene_init(&ps);
+        ps.dist = wall_sdf;
+        ps.t_max = 30.0f;
+        cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
+        cfg = fovsdf_config_default();
+        cfg.method = FOVSDF_METHOD_CONE_FOV;
+        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+        cfg.fov_mask = FOVSDF_MASK_FOVEA;
+        cfg.acuity.fovea_deg = 3.0f;
+        cfg.quarter_deg = 8.0f;
+        cfg.level_filter = 2;
+        if (render(&cfg, &ps, &cam, &a)) {
+            cfg.refine_depth = 0.05f; cfg.refine_normal_deg = 5.0f; cfg.refine_material = 1;
+            if (render(&cfg, &ps, &cam, &b)) {
+                t0 = count_mask(&a, n, 1u); t1 = count_mask(&b, n, 1u);
+                check(t0 == t1 && t0 < (long)n / 4 && a.st.evals == b.st.evals &&
+                          count_mask(&a, n, 0u) + count_mask(&a, n, 3u) > (long)n / 2,
+                      "refine_nothing_without_edges", "traced %ld -> %ld, evaluations %llu -> %llu",
+                      t0, t1, (unsigned long long)a.st.evals, (unsigned long long)b.st.evals);
+            }
+        }
+    }
+    /* bad values: code and message */
+    {
+        static const struct { int field; float v; fov_result code; const char *word; } bad[7] = {
+            { 0, -0.1f, FOV_ERR_INVALID_ARG, "refine_depth" },
+            { 0, NAN, FOV_ERR_NOT_FINITE, "refine_depth" },
+            { 1, -1.0f, FOV_ERR_INVALID_ARG, "refine_normal_deg" },
+            { 1, 181.0f, FOV_ERR_INVALID_ARG, "refine_normal_deg" },
+            { 1, INFINITY, FOV_ERR_NOT_FINITE, "refine_normal_deg" },
+            { 2, 2.0f, FOV_ERR_INVALID_ARG, "refine_material" },
+            { 3, 3.0f, FOV_ERR_INVALID_ARG, "level_filter" } };
+        int k;
+        for (k = 0; k < 7; ++k) {
+            fov_result r;
+            cfg = fovsdf_config_default();
+            cfg.method = FOVSDF_METHOD_CONE_FOV;
+            cfg.logger.func = rec_logger; cfg.logger.user = &lr;
+            if (bad[k].field == 0) cfg.refine_depth = bad[k].v;
+            else if (bad[k].field == 1) cfg.refine_normal_deg = bad[k].v;
+            else if (bad[k].field == 2) cfg.refine_material = (uint32_t)bad[k].v;
+            else cfg.level_filter = (uint32_t)bad[k].v;
+            memset(&lr, 0, sizeof lr);
+            r = fovsdf_config_resolve(&cfg, &out);
+            check(r == bad[k].code && lr.calls == 1 && lr.code == (int32_t)bad[k].code &&
+                      strstr(lr.msg, bad[k].word) != NULL,
+                  fovcheck_name("refine_bad_value_%d", k), "r %d, log %d '%s'", (int)r, lr.calls,
+                  lr.msg);
+        }
+        cfg = fovsdf_config_default();
+        cfg.refine_normal_deg = 180.0f; cfg.refine_material = 1; cfg.refine_depth = 1e3f;
+        cfg.level_filter = 2;
+        check(fovsdf_config_resolve(&cfg, &out) == FOV_OK && out.refine_normal_deg == 180.0f &&
+                  out.refine_material == 1u && out.level_filter == 2u,
+              "refine_good_values", "-");
+    }
+done:
+    frame_free(&gt); frame_free(&a); frame_free(&b); frame_free(&full);
+    free(s.mem);
+}
+
 int main(void)
 {
     test_params();
     test_coarse_display();
     test_quarter();
     test_level_filter();
+    test_refine();
     return fovcheck_summary();
 }
