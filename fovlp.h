@@ -193,30 +193,42 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    eye nearly everywhere (the disc would reach beyond half the diagonal) gives
    FOV_ERR_UNSUPPORTED: trace every pixel instead.
    The rule is on the sample spacing; what the reconstruction makes of the samples is
-   measured by bench_lp --acuity-study (primitives unless named; both images filtered to the
-   eye first, a Gaussian of sigma MAR(e) ppd / 2 at quality 1; PSNR and FLIP per band of
-   eccentricity against 16 samples per pixel; still camera, gaze at the centre; "full" = the
-   full-resolution frame, one sample per pixel). Use it with TAA: one frame of point samples
-   at the eye's own spacing aliases (640x360, beyond 20 degrees: 33-35 dB against 39-42 dB
-   for full), the same buffer with prefiltered samples (4 x 4 points per texel) does not
-   (41-43 dB), and TAA's jitter prefilters: after 20 still frames 43.6-44.8 dB. At 640x360
-   the acuity buffer beats full in every band up to 20 degrees by PSNR and FLIP (primitives,
-   thin, columns), beyond by PSNR too but for the far periphery of columns (45.0 against
-   45.7 dB), while FLIP there is a little higher (beyond 30 degrees 0.021-0.029 against
-   0.017-0.026; columns from 20); at quality 0.7 (saving 2.5-2.8x) it beats full in every
-   band by both. Where the pixels are much finer than the eye, full is nearly perfect at the
-   eye's scale and quality 1 stays below it: the monitor 39-41 dB against 46-53 beyond 5
-   degrees (FLIP 0.04-0.05 against 0.01-0.02), the 100 degree display by FLIP beyond 20
-   degrees (0.016 / 0.009 against 0.012 / 0.005): the bilinear reconstruction of samples at
-   the eye's spacing loses contrast at the eye's own scale (detail after the eye filter 0.5-0.8
-   of the ground truth's). Equal or better in every band: the 100 degree display at quality
-   0.5 (saving 6.3x), the monitor at quality 0.25 (4.2x; at 0.5, 12.3x, FLIP 0.018-0.021
-   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter while it moves, the
-   thesis) is not in the study; a sideways camera against 4 samples per pixel showed the
-   one-frame aliasing back beyond 30 degrees at quality 1 (33.5 dB against 39.7 for full at
-   640x360) and none at quality 0.5 (42.0). So pick the quality for the criterion of equal
-   perceived quality you need; the rule and the figures at the top are for quality 1, the
-   eye model's threshold.
+   measured by bench/bench_perceptual.c (examples/fovmetrics.h: both images filtered to the
+   eye, a Gaussian of 0.375 MAR(e), then FLIP at the display's ppd; against fovsdf's 4 spp
+   ground truth; still camera, gaze at the centre; "full" = one sample per pixel centre, one
+   frame; equal = perr at most 0.001 above full's). Three causes, separated by
+   --lp-study (rows lp_acuity_pre: each LP sample the mean of 4 x 4 points over its texel):
+   - aliasing of one frame of point samples. Where the pixels are much finer than the eye
+     it is the worst: at the 27" monitor (33.6 ppd, primitives) quality 0.25 (4.2x) has perr
+     0.0194 against full's 0.0180, prefiltered samples 0.0134 (the loss beyond 10 degrees
+     gone), 16 frames of TAA (jitter: the same prefilter, free) 0.0118;
+   - contrast loss of the interpolation once the samples are prefiltered: bilinear over
+     samples near the eye's spacing flattens detail the eye still sees (the monitor at
+     quality 0.5: prefiltered 0.0275, TAA 0.0228; columns at 640x360: prefiltered samples
+     are no better than point samples). FOVLP_RECON_CUBIC (what this call picks) keeps it:
+     the monitor at 0.5 with TAA 0.0202, columns at 640x360 with TAA equal at quality 0.7
+     (2.5x; bilinear: 0.5);
+   - the screen border and the far periphery of scenes with fine structure (columns at the
+     monitor, beyond 20 degrees): LP samples that fall off the screen are not shaded, so a
+     thin feature at the border is filled from inside; there every fovlp configuration
+     (the C Fov and Fov presets too) stays above full.
+   The gap rule is not what fails at the monitor's quality 0.25 (the same buffer with
+   prefiltered samples beats full); from about 0.5 up the gaps themselves are too wide for the
+   measure's eye. So use it with TAA and a quality below 1: still camera, 16 frames
+   (one cycle of the jitter), cubic reconstruction, equal to full (saving, scenes primitives
+   temple; columns where stated):
+      640x360 (5-8 ppd)      one frame quality 0.5 (1.7-2.0x; atrium 0.35);
+                             TAA quality 1 for primitives, temple (4.7-5.1x), 0.7 for
+                             columns, atrium (2.4-2.5x)
+      27" monitor (33.6 ppd) one frame: none at 0.25 (0.0192 / 0.0180); TAA: primitives
+                             0.45 (10.3x), temple 0.35 (6.9x); columns none (0.25: 0.0184
+                             against 0.0148)
+      100 degree headset     one frame 0.35 (3.7x); TAA 0.7 (10.5x, primitives)
+   Full resolution gains from the same jitter and averaging too (the monitor, primitives:
+   0.0093 after 16 frames; 640x360: 0.0191), so these are savings against one frame of
+   full resolution, and only for a still view: while the camera moves there is no jitter
+   (the thesis) and the one-frame figures apply. The rule and the figures at the top are
+   for quality 1, the eye model's threshold.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
