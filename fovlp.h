@@ -221,9 +221,10 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
                              TAA quality 1 for primitives, temple (4.7-5.1x), 0.7 for
                              columns, atrium (2.4-2.5x)
       27" monitor (33.6 ppd) one frame: none at 0.25 (0.0192 / 0.0180); TAA: primitives
-                             0.45 (10.3x), temple 0.35 (6.9x); columns none (0.25: 0.0184
-                             against 0.0148)
-      100 degree headset     one frame 0.35 (3.7x); TAA 0.7 (10.5x, primitives)
+                             0.45 (10.3x), temple 0.35 (6.9x), atrium 0.25 (4.2x); columns
+                             none (0.25: 0.0184 against 0.0148)
+      100 degree headset     one frame 0.35 (3.7x; temple 0.5); TAA 0.7 (10.5x; temple
+                             1, 18.5x)
    Full resolution gains from the same jitter and averaging too (the monitor, primitives:
    0.0093 after 16 frames; 640x360: 0.0191), so these are savings against one frame of
    full resolution, and only for a still view: while the camera moves there is no jitter
@@ -839,9 +840,9 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze,
                                         fovlp_geometry *out);
 
 /* Acuity-driven configuration (see ACUITY-DRIVEN CONFIGURATION in the doc block): fills
-   sigma, alpha, gaze_angle, no_disc, lp_aspect, norm and edge of *cfg so that the LP sample
-   spacing meets the eye (eye NULL = the fov_eye defaults) for cfg's display, with the fewest
-   samples; cam (may be NULL) gives the field of view when cfg->display is all zero (then
+   sigma, alpha, gaze_angle, no_disc, lp_aspect, norm, edge and recon (FOVLP_RECON_CUBIC) of
+   *cfg so that the LP sample spacing meets the eye (eye NULL = the fov_eye defaults) for
+   cfg's display, with the fewest samples; cam (may be NULL) gives the field of view when cfg->display is all zero (then
    cfg->cam_fov_y_deg is set to it). Every other field is left as it was; *cfg is written
    only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG (eye, cam, config), _UNSUPPORTED
    (the eye needs every pixel of the screen), _LIMIT, _DEGENERATE (no buffer meets the eye);
@@ -2790,14 +2791,21 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
    extremes). Leaves rgb (the bilinear value) as it is when a column is missing, a tap is not
    shaded or the sum is not finite. */
 FOVLP__PRIV void fovlp__lp_cubic(const fovlp_ctx *ctx, const float *smp_rgb, int32_t i0,
-                                 int32_t j0, float fu, float fv, float in_r, float rgb[3])
+                                 int32_t j0, float fu, float fv, float in_r, float edge,
+                                 float rgb[3])
 {
     const fovlp_geometry *g = &ctx->geo;
     float wu[4], wv[4], a[3] = { 0.0f, 0.0f, 0.0f }, lo[3], hi[3], t;
     int32_t di, dj, c;
     int all_on;
     if (i0 < 1 || i0 + 2 >= (int32_t)g->lp_cols) return;
-    all_on = ctx->rho[i0 + 2] < in_r;
+    /* all 16 taps on the screen for sure (no test each) when their rings lie inside it, or
+       when the pixel is farther from the border than a tap can be from it: radially within
+       rho[i0 + 2] - rho[i0 - 1], along the arc within two angle steps at rho[i0 + 2] (with
+       1 % and 0.01 px to spare) */
+    all_on = ctx->rho[i0 + 2] < in_r ||
+             ((ctx->rho[i0 + 2] - ctx->rho[i0 - 1]) +
+              ctx->rho[i0 + 2] * (2.0f * FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge;
     /* Catmull-Rom weights (sum 1) */
     wu[0] = 0.5f * fu * (fu * (2.0f - fu) - 1.0f);
     wu[1] = 0.5f * (fu * fu * (3.0f * fu - 5.0f) + 2.0f);
@@ -2906,7 +2914,7 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, c
         t = (rgb[0] - rgb[0]) + (rgb[1] - rgb[1]) + (rgb[2] - rgb[2]);   /* NaN unless finite */
         if (pass == 0 && t >= 0.0f && t <= 0.0f) {
             if (ctx->cfg.recon == (uint32_t)FOVLP_RECON_CUBIC && !clamped && wsum > 0.999f)
-                fovlp__lp_cubic(ctx, smp_rgb, i0, j0, fu, fv, in_r, rgb);
+                fovlp__lp_cubic(ctx, smp_rgb, i0, j0, fu, fv, in_r, edge, rgb);
             return wsum;
         }
         if (pass == 1) {
