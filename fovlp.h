@@ -842,11 +842,11 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze,
 /* Acuity-driven configuration (see ACUITY-DRIVEN CONFIGURATION in the doc block): fills
    sigma, alpha, gaze_angle, no_disc, lp_aspect, norm, edge and recon (FOVLP_RECON_CUBIC) of
    *cfg so that the LP sample spacing meets the eye (eye NULL = the fov_eye defaults) for
-   cfg's display, with the fewest samples; cam (may be NULL) gives the field of view when cfg->display is all zero (then
-   cfg->cam_fov_y_deg is set to it). Every other field is left as it was; *cfg is written
-   only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG (eye, cam, config), _UNSUPPORTED
-   (the eye needs every pixel of the screen), _LIMIT, _DEGENERATE (no buffer meets the eye);
-   each logged through cfg->logger. */
+   cfg's display, with the fewest samples; cam (may be NULL) gives the field of view when
+   cfg->display is all zero (then cfg->cam_fov_y_deg is set to it). Every other field is
+   left as it was; *cfg is written only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG
+   (eye, cam, config), _UNSUPPORTED (the eye needs every pixel of the screen), _LIMIT,
+   _DEGENERATE (no buffer meets the eye); each logged through cfg->logger. */
 FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *cam,
                                          const fov_eye *eye);
 
