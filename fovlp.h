@@ -1,4 +1,4 @@
-/* fovlp.h - v0.4.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.5.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -79,7 +79,14 @@ on Meng et al. 2018, "Kernel Foveated Rendering")
       test of the four taps skipped when their ring lies inside the screen), at
       the positions actually shaded, with the angle wrapping (v = h is v = 0: no seam), taps
       whose sample was not shaded left out (weights renormalised; none left: the nearest
-      shaded sample inwards). Between the disc edge and the innermost LP ring: linear along
+      shaded sample inwards). With cfg.recon = FOVLP_RECON_CUBIC (ours; what
+      fovlp_config_acuity picks): Catmull-Rom over the 4 x 4 nearest LP samples instead,
+      clamped per channel to the range of the 2 x 2 nearest (no ringing at edges), where all
+      16 are shaded and inside the dispatched columns (else bilinear). Bilinear interpolation
+      of samples spaced near the eye's MAR flattens detail the eye still sees (a sinusoid of
+      8 texels: RMS error 0.020 bilinear, 0.003 cubic; tests/test_fovlp_acuity.c); averaged
+      over TAA's jitter it acts as a tent filter as wide as two sample gaps, Catmull-Rom as
+      a much flatter pass band. Between the disc edge and the innermost LP ring: linear along
       the radius from the nearest disc pixel to the ring (no step at the disc edge). Inside
       the innermost ring without a disc: a blend towards the centre sample (no singularity
       at the gaze). Optional 3x3 Gaussian blend in the periphery (eq. 3.13,
@@ -147,7 +154,8 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
       fov_eye eye = { 0.0f, 0.0f, 1.0f };           // defaults; quality 1 = matched to the eye
       fovlp_config_acuity(&cfg, NULL, &eye);        // sigma, alpha, gaze disc, lp_aspect
       // then fovlp_memory_size / fovlp_init as above (cfg.taa, cfg.blend are yours)
-   It fills sigma, alpha, gaze_angle (no_disc 0), lp_aspect, norm (DIAGONAL) and edge (LOG_R)
+   It fills sigma, alpha, gaze_angle (no_disc 0), lp_aspect, norm (DIAGONAL), edge (LOG_R)
+   and recon (CUBIC: Catmull-Rom over the LP samples, see step 7 of THE PIPELINE)
    and nothing else; cam (a fovlp_camera, may be NULL) gives the field of view only when
    cfg.display is all zero, and is then written to cfg.cam_fov_y_deg so that fovlp_init uses
    the same eccentricity model (with neither, the thesis's viewing distance). The fixed
@@ -185,30 +193,43 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    eye nearly everywhere (the disc would reach beyond half the diagonal) gives
    FOV_ERR_UNSUPPORTED: trace every pixel instead.
    The rule is on the sample spacing; what the reconstruction makes of the samples is
-   measured by bench_lp --acuity-study (primitives unless named; both images filtered to the
-   eye first, a Gaussian of sigma MAR(e) ppd / 2 at quality 1; PSNR and FLIP per band of
-   eccentricity against 16 samples per pixel; still camera, gaze at the centre; "full" = the
-   full-resolution frame, one sample per pixel). Use it with TAA: one frame of point samples
-   at the eye's own spacing aliases (640x360, beyond 20 degrees: 33-35 dB against 39-42 dB
-   for full), the same buffer with prefiltered samples (4 x 4 points per texel) does not
-   (41-43 dB), and TAA's jitter prefilters: after 20 still frames 43.6-44.8 dB. At 640x360
-   the acuity buffer beats full in every band up to 20 degrees by PSNR and FLIP (primitives,
-   thin, columns), beyond by PSNR too but for the far periphery of columns (45.0 against
-   45.7 dB), while FLIP there is a little higher (beyond 30 degrees 0.021-0.029 against
-   0.017-0.026; columns from 20); at quality 0.7 (saving 2.5-2.8x) it beats full in every
-   band by both. Where the pixels are much finer than the eye, full is nearly perfect at the
-   eye's scale and quality 1 stays below it: the monitor 39-41 dB against 46-53 beyond 5
-   degrees (FLIP 0.04-0.05 against 0.01-0.02), the 100 degree display by FLIP beyond 20
-   degrees (0.016 / 0.009 against 0.012 / 0.005): the bilinear reconstruction of samples at
-   the eye's spacing loses contrast at the eye's own scale (detail after the eye filter 0.5-0.8
-   of the ground truth's). Equal or better in every band: the 100 degree display at quality
-   0.5 (saving 6.3x), the monitor at quality 0.25 (4.2x; at 0.5, 12.3x, FLIP 0.018-0.021
-   against 0.011-0.012 beyond 10 degrees). A moving camera (no jitter while it moves, the
-   thesis) is not in the study; a sideways camera against 4 samples per pixel showed the
-   one-frame aliasing back beyond 30 degrees at quality 1 (33.5 dB against 39.7 for full at
-   640x360) and none at quality 0.5 (42.0). So pick the quality for the criterion of equal
-   perceived quality you need; the rule and the figures at the top are for quality 1, the
-   eye model's threshold.
+   measured by bench/bench_perceptual.c (examples/fovmetrics.h: both images filtered to the
+   eye, a Gaussian of 0.375 MAR(e), then FLIP at the display's ppd; against fovsdf's 4 spp
+   ground truth; still camera, gaze at the centre; "full" = one sample per pixel centre, one
+   frame; equal = perr at most 0.001 above full's). Three causes, separated by
+   --lp-study (rows lp_acuity_pre: each LP sample the mean of 4 x 4 points over its texel):
+   - aliasing of one frame of point samples. Where the pixels are much finer than the eye
+     it is the worst: at the 27" monitor (33.6 ppd, primitives) quality 0.25 (4.2x) has perr
+     0.0194 against full's 0.0180, prefiltered samples 0.0134 (the loss beyond 10 degrees
+     gone), 16 frames of TAA (jitter: the same prefilter, free) 0.0118;
+   - contrast loss of the interpolation once the samples are prefiltered: bilinear over
+     samples near the eye's spacing flattens detail the eye still sees (the monitor at
+     quality 0.5: prefiltered 0.0275, TAA 0.0228; columns at 640x360: prefiltered samples
+     are no better than point samples). FOVLP_RECON_CUBIC (what this call picks) keeps it:
+     the monitor at 0.5 with TAA 0.0202, columns at 640x360 with TAA equal at quality 0.7
+     (2.5x; bilinear: 0.5);
+   - the screen border and the far periphery of scenes with fine structure (columns at the
+     monitor, beyond 20 degrees): LP samples that fall off the screen are not shaded, so a
+     thin feature at the border is filled from inside; there every fovlp configuration
+     (the C Fov and Fov presets too) stays above full.
+   The gap rule is not what fails at the monitor's quality 0.25 (the same buffer with
+   prefiltered samples beats full); from about 0.5 up the gaps themselves are too wide for the
+   measure's eye. So use it with TAA and a quality below 1: still camera, 16 frames
+   (one cycle of the jitter), cubic reconstruction, equal to full (saving, scenes primitives
+   temple; columns where stated):
+      640x360 (5-8 ppd)      one frame quality 0.5 (1.7-2.0x; atrium 0.35);
+                             TAA quality 1 for primitives, temple (4.7-5.1x), 0.7 for
+                             columns, atrium (2.4-2.5x)
+      27" monitor (33.6 ppd) one frame: none at 0.25 (0.0192 / 0.0180); TAA: primitives
+                             0.45 (10.3x), temple 0.35 (6.9x), atrium 0.25 (4.2x); columns
+                             none (0.25: 0.0184 against 0.0148)
+      100 degree headset     one frame 0.35 (3.7x; temple 0.5); TAA 0.7 (10.5x; temple
+                             1, 18.5x)
+   Full resolution gains from the same jitter and averaging too (the monitor, primitives:
+   0.0093 after 16 frames; 640x360: 0.0191), so these are savings against one frame of
+   full resolution, and only for a still view: while the camera moves there is no jitter
+   (the thesis) and the one-frame figures apply. The rule and the figures at the top are
+   for quality 1, the eye model's threshold.
 
 DOES NOT
    - shade, trace or rasterise anything (you shade the positions), use a GPU API, start
@@ -279,6 +300,9 @@ NUMERICS
                        uses (bilinear with renormalised weights, linear blends towards the
                        disc or centre sample): inside their [min, max] up to float
                        rounding (the fuzz check allows 1e-5 of the largest magnitude).
+                       RECON_CUBIC: clamped to the [min, max] of the 2 x 2 nearest
+                       samples (exactly; a sum that is not finite gives the bilinear
+                       value).
                        Where the weighted sum of finite taps near FLT_MAX rounds past it,
                        the mean is recomputed with half weights (exact) and doubled back,
                        saturating at +-FLT_MAX; elsewhere the image is bit for bit the
@@ -337,6 +361,11 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.5.0 (2026-12-05) cfg.recon (fovlp_recon): FOVLP_RECON_CUBIC, Catmull-Rom over the 4 x 4
+                      nearest LP samples clamped to the 2 x 2 nearest's range, which keeps
+                      the contrast bilinear interpolation loses at the eye's scale;
+                      fovlp_config_acuity selects it (its images change; the presets and a
+                      zero recon stay bilinear, bit for bit as before).
    0.4.0 (2026-12-02) fovlp_config_acuity: sigma, alpha, the gaze disc and lp_aspect from the
                       shared eye model (fov_eye, Guenter et al. 2012) and the display, the
                       fewest samples whose gaps meet quality * MAR(e) * ppd from the disc edge
@@ -380,9 +409,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVLP_VERSION_MAJOR 0
-#define FOVLP_VERSION_MINOR 4
+#define FOVLP_VERSION_MINOR 5
 #define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.4.0"
+#define FOVLP_VERSION_STRING "0.5.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
@@ -611,6 +640,15 @@ typedef enum fovlp_edge {
     _FOVLP_EDGE_FORCE_U32 = 0x7FFFFFFF
 } fovlp_edge;
 
+typedef enum fovlp_recon {
+    FOVLP_RECON_BILINEAR = 0, /* bilinear in (u, v) over the 2 x 2 nearest LP samples */
+    FOVLP_RECON_CUBIC = 1,    /* Catmull-Rom in (u, v) over the 4 x 4 nearest, clamped to the
+                                 range of the 2 x 2 nearest (no overshoot); bilinear where
+                                 one of the 16 is not shaded */
+    _FOVLP_RECON_NUM,
+    _FOVLP_RECON_FORCE_U32 = 0x7FFFFFFF
+} fovlp_recon;
+
 typedef enum fovlp_clamp {
     FOVLP_CLAMP_NONE = 0,     /* depth rejection only (the thesis) */
     FOVLP_CLAMP_AABB = 1,     /* history clamped to the min/max box of the current 3x3
@@ -664,6 +702,7 @@ typedef struct fovlp_config {
                                sample spacing, (0, 89)                              0: 15 */
     uint32_t norm;          /* fovlp_norm                                         0: diagonal */
     uint32_t edge;          /* fovlp_edge                                         0: log r_G */
+    uint32_t recon;         /* fovlp_recon, the LP samples' interpolation      0: bilinear */
     float cam_fov_y_deg;    /* used when display is all zero: the field of view of the image
                                height at the eye; 0: the thesis's viewing distance
                                d = diagonal / tan 60 degrees */
@@ -801,13 +840,13 @@ FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze,
                                         fovlp_geometry *out);
 
 /* Acuity-driven configuration (see ACUITY-DRIVEN CONFIGURATION in the doc block): fills
-   sigma, alpha, gaze_angle, no_disc, lp_aspect, norm and edge of *cfg so that the LP sample
-   spacing meets the eye (eye NULL = the fov_eye defaults) for cfg's display, with the fewest
-   samples; cam (may be NULL) gives the field of view when cfg->display is all zero (then
-   cfg->cam_fov_y_deg is set to it). Every other field is left as it was; *cfg is written
-   only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG (eye, cam, config), _UNSUPPORTED
-   (the eye needs every pixel of the screen), _LIMIT, _DEGENERATE (no buffer meets the eye);
-   each logged through cfg->logger. */
+   sigma, alpha, gaze_angle, no_disc, lp_aspect, norm, edge and recon (FOVLP_RECON_CUBIC) of
+   *cfg so that the LP sample spacing meets the eye (eye NULL = the fov_eye defaults) for
+   cfg's display, with the fewest samples; cam (may be NULL) gives the field of view when
+   cfg->display is all zero (then cfg->cam_fov_y_deg is set to it). Every other field is
+   left as it was; *cfg is written only on success. FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG
+   (eye, cam, config), _UNSUPPORTED (the eye needs every pixel of the screen), _LIMIT,
+   _DEGENERATE (no buffer meets the eye); each logged through cfg->logger. */
 FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *cam,
                                          const fov_eye *eye);
 
@@ -1704,6 +1743,8 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.norm: unknown (see fovlp_norm)");
     if (c.edge >= (uint32_t)_FOVLP_EDGE_NUM)
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.edge: unknown (see fovlp_edge)");
+    if (c.recon >= (uint32_t)_FOVLP_RECON_NUM)
+        FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.recon: unknown (see fovlp_recon)");
     if (c.cam_fov_y_deg >= 180.0f)
         FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.cam_fov_y_deg must be in (0, 180)");
     r = fov__display_check(lg, "fovlp", &c.display, 2, (uint32_t)__LINE__);
@@ -2175,6 +2216,7 @@ FOVLP_API fov_result fovlp_config_acuity(fovlp_config *cfg, const fovlp_camera *
     cfg->lp_aspect = t.lp_aspect;
     cfg->norm = FOVLP_NORM_DIAGONAL;
     cfg->edge = FOVLP_EDGE_LOG_R;
+    cfg->recon = FOVLP_RECON_CUBIC;
     if (cam && disp0) cfg->cam_fov_y_deg = t.cam_fov_y_deg;
     return FOV_OK;
 }
@@ -2743,6 +2785,64 @@ FOVLP_API fov_result fovlp_count_samples(const fovlp_ctx *ctx, fovlp_counts *out
 }
 
 /* ---- reconstruction ----------------------------------------------------------------------- */
+/* FOVLP_RECON_CUBIC: Catmull-Rom over the 4 x 4 LP samples around (i0 + fu, j0 + fv) (columns
+   i0 - 1 .. i0 + 2, rows j0 - 1 .. j0 + 2 wrapped), the result clamped per channel to the
+   range of the inner 2 x 2 (so it stays inside the samples it uses: no ringing, no new
+   extremes). Leaves rgb (the bilinear value) as it is when a column is missing, a tap is not
+   shaded or the sum is not finite. */
+FOVLP__PRIV void fovlp__lp_cubic(const fovlp_ctx *ctx, const float *smp_rgb, int32_t i0,
+                                 int32_t j0, float fu, float fv, float in_r, float edge,
+                                 float rgb[3])
+{
+    const fovlp_geometry *g = &ctx->geo;
+    float wu[4], wv[4], a[3] = { 0.0f, 0.0f, 0.0f }, lo[3], hi[3], t;
+    int32_t di, dj, c;
+    int all_on;
+    if (i0 < 1 || i0 + 2 >= (int32_t)g->lp_cols) return;
+    /* all 16 taps on the screen for sure (no test each) when their rings lie inside it, or
+       when the pixel is farther from the border than a tap can be from it: radially within
+       rho[i0 + 2] - rho[i0 - 1], along the arc within two angle steps at rho[i0 + 2] (with
+       1 % and 0.01 px to spare) */
+    all_on = ctx->rho[i0 + 2] < in_r ||
+             ((ctx->rho[i0 + 2] - ctx->rho[i0 - 1]) +
+              ctx->rho[i0 + 2] * (2.0f * FOVLP__TWO_PI / (float)g->lp_h)) * 1.01f + 0.01f < edge;
+    /* Catmull-Rom weights (sum 1) */
+    wu[0] = 0.5f * fu * (fu * (2.0f - fu) - 1.0f);
+    wu[1] = 0.5f * (fu * fu * (3.0f * fu - 5.0f) + 2.0f);
+    wu[2] = 0.5f * fu * (fu * (4.0f - 3.0f * fu) + 1.0f);
+    wu[3] = 0.5f * fu * fu * (fu - 1.0f);
+    wv[0] = 0.5f * fv * (fv * (2.0f - fv) - 1.0f);
+    wv[1] = 0.5f * (fv * fv * (3.0f * fv - 5.0f) + 2.0f);
+    wv[2] = 0.5f * fv * (fv * (4.0f - 3.0f * fv) + 1.0f);
+    wv[3] = 0.5f * fv * fv * (fv - 1.0f);
+    lo[0] = lo[1] = lo[2] = FLT_MAX;
+    hi[0] = hi[1] = hi[2] = -FLT_MAX;
+    for (dj = 0; dj < 4; ++dj) {
+        int32_t j = j0 - 1 + dj;
+        while (j < 0) j += (int32_t)g->lp_h;
+        while (j >= (int32_t)g->lp_h) j -= (int32_t)g->lp_h;
+        for (di = 0; di < 4; ++di) {
+            int32_t i = i0 - 1 + di;
+            float x, y, w = wu[di] * wv[dj];
+            const float *p;
+            if (!all_on && !fovlp__lp_pos(ctx, (uint32_t)i, (uint32_t)j, &x, &y)) return;
+            p = smp_rgb + 3u * ((size_t)(uint32_t)j * g->lp_w + (uint32_t)i);
+            for (c = 0; c < 3; ++c) {
+                a[c] += w * p[c];
+                if (di == 1 || di == 2) {
+                    if (dj == 1 || dj == 2) {
+                        lo[c] = fov__minf(lo[c], p[c]);
+                        hi[c] = fov__maxf(hi[c], p[c]);
+                    }
+                }
+            }
+        }
+    }
+    t = (a[0] - a[0]) + (a[1] - a[1]) + (a[2] - a[2]);   /* NaN unless finite */
+    if (!(t >= 0.0f && t <= 0.0f)) return;
+    for (c = 0; c < 3; ++c) rgb[c] = fov__clampf(a[c], lo[c], hi[c]);
+}
+
 /* Bilinear lookup of the LP samples at continuous (uc, vc), angle wrapped, unshaded taps left
    out; edge: the distance of the pixel (at (uc, vc)) to the nearest screen border. Returns the
    weight found (0: none); rgb and the depth of the heaviest tap. */
@@ -2812,7 +2912,11 @@ FOVLP__PRIV float fovlp__lp_lookup(const fovlp_ctx *ctx, const float *smp_rgb, c
         if (!(wsum > 1e-6f)) break;
         rgb[0] = a0 / wsum; rgb[1] = a1 / wsum; rgb[2] = a2 / wsum;
         t = (rgb[0] - rgb[0]) + (rgb[1] - rgb[1]) + (rgb[2] - rgb[2]);   /* NaN unless finite */
-        if (pass == 0 && t >= 0.0f && t <= 0.0f) return wsum;
+        if (pass == 0 && t >= 0.0f && t <= 0.0f) {
+            if (ctx->cfg.recon == (uint32_t)FOVLP_RECON_CUBIC && !clamped && wsum > 0.999f)
+                fovlp__lp_cubic(ctx, smp_rgb, i0, j0, fu, fv, in_r, edge, rgb);
+            return wsum;
+        }
         if (pass == 1) {
             rgb[0] = fovlp__twice_sat(rgb[0]);
             rgb[1] = fovlp__twice_sat(rgb[1]);

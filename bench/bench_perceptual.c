@@ -25,6 +25,22 @@
              classic image above); fixed: lp_c_fov (C Fov, sigma 1.4), lp_fov; acuity:
              lp_acuity. One frame, no TAA. work = shaded samples (fovlp_count_samples). The
              ground truth is fovsdf's.
+             lp_acuity_taa (--lp-taa N, default 16; 0: none): the same configuration with
+             fovlp's TAA (taa.enable 1, the defaults: 16 Halton phases, age cap 20, no clamp)
+             over N frames of a still camera and gaze; the image after frame N against the
+             same ground truth. work = shaded samples per frame (the mean over the N frames),
+             against lp_full's one sample per pixel per frame. N = 16 is one cycle of the
+             jitter (every texel sampled at all 16 offsets; with the age cap 20 the output is
+             the plain mean of the 16 frames): a user at a still view sees it after 16 frames
+             (0.27 s at 60 Hz) for as long as the view stays; a moving camera jitters nothing
+             (the thesis's default) and the history is clipped, so while the view moves the
+             one-frame rows apply. lp_full has no TAA: with the same jitter and averaging
+             full resolution also improves (--lp-study's lp_full_taaN row).
+             --lp-study adds diagnostic rows: lp_full_taaN (full resolution, one sample per
+             pixel per frame at the same Halton offsets, averaged over N frames),
+             lp_acuity_pre (each LP sample the mean of 4 x 4 points over its texel: what
+             point sampling costs; work counts one sample per texel) and the presets' TAA
+             rows. --lp-recon bilinear|cubic forces cfg.recon on every fovlp row.
      fovpt   scene cornell (--scenes-pt); full resolution: uniform4 (4 spp, the layers' spp) and
              uniform1 (1 spp, the zones'); fixed: layers (6/10/20-degree radii, strides 1-4, 4
              spp), zones (7.5 / 32.5 degrees, 1 spp); acuity: layers_acuity, zones_acuity.
@@ -57,7 +73,8 @@
 
    usage: bench_perceptual [--quick] [--out FILE] [--threads N] [--displays a,b]
                            [--headers sdf,lp,pt] [--scenes-sdf a,b] [--scenes-pt a,b]
-                           [--gt-spp N] [--gt-spp-pt N] [--append]
+                           [--gt-spp N] [--gt-spp-pt N] [--append] [--lp-taa N]
+                           [--lp-study] [--lp-recon bilinear|cubic]
    --quick: the bench display and desktop27 only, qualities 0.5, 1 and 2, scene primitives,
    fovpt ground truth 16 spp. make bench-perceptual runs fovpt in a second process beside
    fovsdf and fovlp (--headers pt / --headers sdf,lp) and joins the two CSVs. */
@@ -251,6 +268,9 @@ typedef struct opts_t {
     const char *scenes_sdf_only; /* --scenes-sdf-only: fovsdf's rows only (no fovlp rows) */
     const char *variants; /* --variants: cone_fov_acuity's extra rows (NULL: none) */
     int acuity_only;      /* --acuity-only: no fipr, cone_fov, fipr_acuity rows */
+    int lp_taa;   /* --lp-taa N: fovlp's TAA rows after N still frames (0: none) */
+    int lp_recon; /* --lp-recon bilinear|cubic: forced on every fovlp config (-1: as configured) */
+    int lp_study; /* --lp-study: fovlp's diagnostic rows (prefiltered samples, full with TAA) */
 } opts_t;
 
 /* A variant of cone_fov_acuity (--variants): "rdX" refine_depth X, "rcX" refine_contrast X,
@@ -286,6 +306,130 @@ static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
 }
 
 /* ---- fovsdf and fovlp on fovsdf's scenes ---------------------------------------------------- */
+/* the LP samples of the current frame each replaced by the mean of k x k points over its
+   texel (--lp-study's prefiltered rows: what point sampling costs); 0 on success */
+static int lp_prefilter(const fovlp_ctx *lp, lpsdf_user *user, float *smp, uint32_t k)
+{
+    size_t n = 0, i, m, j;
+    fovlp_sample *s;
+    float *xy, *c;
+    uint32_t W = lp->geo.width, H = lp->geo.height;
+    int ok = 1;
+    if (fovlp_samples(lp, 0, fovlp_sample_rows(lp), NULL, 0, &n) != FOV_OK) return -1;
+    s = (fovlp_sample *)malloc(n * sizeof *s);
+    xy = (float *)malloc(65536u * 2u * k * k * sizeof(float));
+    c = (float *)malloc(65536u * 3u * k * k * sizeof(float));
+    if (!s || !xy || !c || fovlp_samples(lp, 0, fovlp_sample_rows(lp), s, n, &n) != FOV_OK) ok = 0;
+    for (i = 0; ok && i < n; i += 65536u) {
+        size_t e = i + 65536u < n ? i + 65536u : n;
+        uint32_t *cnt = (uint32_t *)calloc(e - i, sizeof(uint32_t));
+        m = 0;
+        for (j = i; j < e; ++j) {
+            uint32_t slot = s[j].slot, a, b;
+            if (slot >= lp->geo.lp_slots) continue; /* disc and centre samples: pixel centres */
+            for (a = 0; a < k; ++a)
+                for (b = 0; b < k; ++b) {
+                    float x, y;
+                    if (fovlp_lp_to_screen(lp, (float)(slot % lp->geo.lp_w) + ((float)a + 0.5f) / (float)k,
+                                           (float)(slot / lp->geo.lp_w) + ((float)b + 0.5f) / (float)k, &x, &y) != FOV_OK)
+                        continue;
+                    if (!(x >= 0.0f && y >= 0.0f && x < (float)W && y < (float)H)) continue;
+                    xy[2 * m] = x; xy[2 * m + 1] = y; ++m; ++cnt[j - i];
+                }
+        }
+        if (m && fovsdf_shade_points_grouped(user->sdf, (uint32_t)m, xy, 2, 0, c, NULL, NULL, &user->stats) != FOV_OK) ok = 0;
+        m = 0;
+        for (j = i; ok && j < e; ++j) {
+            uint32_t q, slot = s[j].slot;
+            float acc[3] = { 0.0f, 0.0f, 0.0f };
+            if (!cnt[j - i]) continue;
+            for (q = 0; q < cnt[j - i]; ++q, ++m) { acc[0] += c[3 * m]; acc[1] += c[3 * m + 1]; acc[2] += c[3 * m + 2]; }
+            for (q = 0; q < 3; ++q) smp[3 * (size_t)slot + q] = acc[q] / (float)cnt[j - i];
+        }
+        free(cnt);
+    }
+    free(s); free(xy); free(c);
+    return ok ? 0 : -1;
+}
+
+/* one fovlp frame of config c (gaze, camera still): mode 0 point samples, 1 prefiltered
+   samples (4 x 4 per texel), 2 TAA over nfr still frames (the library's jitter and history;
+   the image after the last frame). The image in img; the shaded samples per frame (mean over
+   the frames) in *work. 0 on success. */
+static int lp_render(const fovlp_config *c0, int mode, int nfr, fov_gaze gaze, const fovlp_camera *lcam,
+                     lpsdf_user *user, float *img, double *work)
+{
+    fovlp_config c = *c0;
+    fovlp_ctx lp;
+    fovlp_counts cnt;
+    size_t bytes = 0, npx = (size_t)c.width * c.height;
+    void *mem;
+    float *smp, *sd, *cd, *hist[2] = { NULL, NULL }, *hd[2] = { NULL, NULL };
+    uint8_t *ag[2] = { NULL, NULL };
+    int fi, ping = 0, k, ok = 1;
+    double sum = 0.0;
+    c.taa.enable = mode == 2 ? 1u : 0u;
+    if (mode != 2) nfr = 1;
+    if (fovlp_memory_size(&c, &bytes) != FOV_OK) return -1;
+    mem = malloc(bytes);
+    if (!mem || fovlp_init(&lp, &c, mem, bytes) != FOV_OK) { free(mem); return -1; }
+    smp = (float *)calloc((size_t)lp.geo.samples * 3, sizeof(float));
+    sd = (float *)calloc((size_t)lp.geo.samples, sizeof(float));
+    cd = (float *)malloc(npx * sizeof(float));
+    if (mode == 2)
+        for (k = 0; k < 2; ++k) {
+            hist[k] = (float *)calloc(npx * 3, sizeof(float)); hd[k] = (float *)calloc(npx, sizeof(float));
+            ag[k] = (uint8_t *)calloc(npx, 1);
+            if (!hist[k] || !hd[k] || !ag[k]) ok = 0;
+        }
+    if (!smp || !sd || !cd) ok = 0;
+    for (fi = 0; ok && fi < nfr; ++fi) {
+        fovlp_taa_io io;
+        fovlp_begin_frame(&lp, gaze, lcam);
+        if (lpsdf_shade_samples(&lp, 0, fovlp_sample_rows(&lp), user, smp, sd) != 0) ok = 0;
+        if (ok && mode == 1 && lp_prefilter(&lp, user, smp, 4u) != 0) ok = 0;
+        fovlp_count_samples(&lp, &cnt);
+        sum += (double)cnt.shaded;
+        if (!ok) break;
+        if (mode != 2) { fovlp_reconstruct_rows(&lp, smp, sd, 0, c.height, img, 0, cd); break; }
+        fovlp_reconstruct_rows(&lp, smp, sd, 0, c.height, img, 0, cd);
+        fovlp_taa_io_init(&io);
+        io.cur_rgb = img; io.cur_depth = cd;
+        io.prev_rgb = hist[ping]; io.prev_depth = hd[ping]; io.prev_age = ag[ping];
+        io.out_rgb = hist[1 - ping]; io.out_depth = hd[1 - ping]; io.out_age = ag[1 - ping];
+        if (fovlp_taa_rows(&lp, &io, 0, c.height, NULL) != FOV_OK) ok = 0;
+        ping = 1 - ping;
+    }
+    if (ok && mode == 2) memcpy(img, hist[ping], npx * 3 * sizeof(float));
+    *work = sum / (double)(fi < nfr ? fi + 1 : nfr);
+    for (k = 0; k < 2; ++k) { free(hist[k]); free(hd[k]); free(ag[k]); }
+    free(smp); free(sd); free(cd); free(mem);
+    return ok ? 0 : -1;
+}
+
+/* full resolution with the same jitter and averaging as TAA over nfr still frames (one
+   sample per pixel per frame at the Halton (2, 3) points fovlp uses, averaged: what TAA gives
+   the full-resolution method; --lp-study) */
+static void full_taa(lpsdf_user *user, uint32_t W, uint32_t H, int nfr, float *img)
+{
+    float *xy = (float *)malloc((size_t)W * 2 * sizeof(float)), *c = (float *)malloc((size_t)W * 3 * sizeof(float));
+    uint32_t x, y;
+    int f;
+    memset(img, 0, (size_t)W * H * 3 * sizeof(float));
+    for (f = 0; f < nfr; ++f) {
+        float jx = 0.0f, jy = 0.0f, inv;
+        uint32_t i, b;
+        for (i = (uint32_t)(f % 16) + 1, inv = 0.5f; i; i /= 2, inv *= 0.5f) jx += inv * (float)(i % 2);
+        for (i = (uint32_t)(f % 16) + 1, inv = 1.0f / 3.0f; i; i /= 3, inv /= 3.0f) jy += inv * (float)(i % 3);
+        for (y = 0; y < H; ++y) {
+            for (x = 0; x < W; ++x) { xy[2 * x] = (float)x + jx; xy[2 * x + 1] = (float)y + jy; }
+            fovsdf_shade_points_grouped(user->sdf, W, xy, 2, 0, c, NULL, NULL, &user->stats);
+            for (b = 0; b < 3 * W; ++b) img[3 * (size_t)y * W + b] += c[b] / (float)nfr;
+        }
+    }
+    free(xy); free(c);
+}
+
 static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, const fovsdf_config *shade_cfg,
                     fov_gaze gaze, meas_t *m, score_t full, float *img)
 {
@@ -297,27 +441,30 @@ static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, co
     size_t npx = (size_t)W * H;
     double work_ref = (double)npx;
     int k, nk = 2 + o->nqual;
-    float *cd = (float *)malloc(npx * sizeof(float));
     rc.header = "fovlp";
-    if (fovsdf_init(&sdf, shade_cfg, &bi->scene, &bi->camera, gaze, NULL, 0) != FOV_OK) { free(cd); return; }
+    if (fovsdf_init(&sdf, shade_cfg, &bi->scene, &bi->camera, gaze, NULL, 0) != FOV_OK) return;
     memset(&user, 0, sizeof user);
     user.sdf = &sdf;
     fovlp_camera_from(&bi->camera, &lcam);
     row(&rc, "lp_full", 0.0f, work_ref, work_ref, "samples", full, full, "lp_full");
+    if (o->lp_study && o->lp_taa > 0) {
+        char name[64];
+        full_taa(&user, W, H, o->lp_taa, img);
+        snprintf(name, sizeof name, "lp_full_taa%d", o->lp_taa);
+        row(&rc, name, 0.0f, work_ref, work_ref, "samples", meas_img(m, img, name), full, "lp_full");
+    }
     for (k = 0; k < nk; ++k) {
         fovlp_config c;
-        fovlp_ctx lp;
-        fovlp_counts cnt;
-        size_t bytes = 0;
-        void *mem;
-        float *smp, *sd, q = k >= 2 ? o->qual[k - 2] : 0.0f;
-        char name[64];
+        float q = k >= 2 ? o->qual[k - 2] : 0.0f;
+        char name[64], base[24];
+        double work;
+        int mode;
         fov_result r;
         if (k < 2) {
             c = fovlp_config_preset(k == 0 ? FOVLP_PRESET_C_FOV : FOVLP_PRESET_FOV, W, H);
             c.display = rc.D->d;
             c.cam_fov_y_deg = bi->camera.fov_y_deg;
-            snprintf(name, sizeof name, "%s", k == 0 ? "lp_c_fov" : "lp_fov");
+            snprintf(base, sizeof base, "%s", k == 0 ? "lp_c_fov" : "lp_fov");
         } else {
             fov_eye eye;
             memset(&eye, 0, sizeof eye);
@@ -331,23 +478,21 @@ static void lp_rows(const rowctx_t *rc0, const opts_t *o, fovsdf_builtin *bi, co
                 fprintf(stderr, "  fovlp_config_acuity (quality %g): %s\n", (double)q, fovlp_result_string(r));
                 continue;
             }
-            method_name(name, sizeof name, "lp_acuity", q);
+            snprintf(base, sizeof base, "lp_acuity");
         }
-        c.taa.enable = 0u;
         c.logger.func = logf_;
-        if (fovlp_memory_size(&c, &bytes) != FOV_OK) continue;
-        mem = malloc(bytes);
-        if (fovlp_init(&lp, &c, mem, bytes) != FOV_OK) { free(mem); continue; }
-        smp = (float *)calloc((size_t)lp.geo.samples * 3, sizeof(float));
-        sd = (float *)calloc((size_t)lp.geo.samples, sizeof(float));
-        fovlp_begin_frame(&lp, gaze, &lcam);
-        lpsdf_shade_samples(&lp, 0, fovlp_sample_rows(&lp), &user, smp, sd);
-        fovlp_reconstruct_rows(&lp, smp, sd, 0, H, img, 0, cd);
-        fovlp_count_samples(&lp, &cnt);
-        row(&rc, name, q, (double)cnt.shaded, work_ref, "samples", meas_img(m, img, name), full, "lp_full");
-        free(smp); free(sd); free(mem);
+        if (o->lp_recon >= 0) c.recon = (uint32_t)o->lp_recon;
+        /* 0 one frame of point samples; 1 prefiltered (--lp-study); 2 TAA after --lp-taa frames */
+        for (mode = 0; mode < 3; ++mode) {
+            char b2[40];
+            if (mode == 1 && !(o->lp_study && k >= 2)) continue;
+            if (mode == 2 && !(o->lp_taa > 0 && (k >= 2 || o->lp_study))) continue;
+            snprintf(b2, sizeof b2, "%s%s", base, mode == 1 ? "_pre" : (mode == 2 ? "_taa" : ""));
+            method_name(name, sizeof name, b2, q);
+            if (lp_render(&c, mode, o->lp_taa, gaze, &lcam, &user, img, &work) != 0) continue;
+            row(&rc, name, q, work, work_ref, "samples", meas_img(m, img, name), full, "lp_full");
+        }
     }
-    free(cd);
 }
 
 static void sdf_scene(FILE *csv, const opts_t *o, const disp_t *D, uint32_t id, int sdf_only)
@@ -632,7 +777,10 @@ static void usage(FILE *f)
           "  --threads N          render threads (default the number of cores)\n"
           "  --out FILE           the CSV (default bench/results/perceptual.csv)\n"
           "  --append             add rows to FILE without a header line\n"
-          "  --dump DIR           write every image (and the ground truth) as sRGB PPM into DIR\n", f);
+          "  --dump DIR           write every image (and the ground truth) as sRGB PPM into DIR\n"
+          "  --lp-taa N           fovlp's TAA rows after N still frames (default 16; 0: none)\n"
+          "  --lp-study           fovlp's diagnostic rows (prefiltered samples, full resolution with TAA)\n"
+          "  --lp-recon R         bilinear or cubic: cfg.recon of every fovlp row (default as configured)\n", f);
 }
 
 int main(int argc, char **argv)
@@ -644,6 +792,8 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.threads = (int)sysconf(_SC_NPROCESSORS_ONLN);
     o.gt_spp = 4; o.gt_spp_pt = 32;
+    o.lp_taa = 16;
+    o.lp_recon = -1;
     o.qual = g_qual_all; o.nqual = 8;
     o.budget[0] = 1.0f; o.budget[1] = 0.5f; o.budget[2] = 0.35f; o.budget[3] = 0.25f;
     o.budget[4] = 0.15f; o.nbudget = 5;
@@ -653,6 +803,17 @@ int main(int argc, char **argv)
     for (a = 1; a < argc; ++a) {
         if (!strcmp(argv[a], "--help") || !strcmp(argv[a], "-h")) { usage(stdout); return 0; }
         else if (!strcmp(argv[a], "--quick")) quick = 1;
+        else if (!strcmp(argv[a], "--lp-study")) o.lp_study = 1;
+        else if (!strcmp(argv[a], "--lp-recon") && a + 1 < argc) {
+            ++a;
+            if (!strcmp(argv[a], "bilinear")) o.lp_recon = 0;
+            else if (!strcmp(argv[a], "cubic")) o.lp_recon = 1;
+            else { fprintf(stderr, "--lp-recon bilinear or cubic\n"); return 2; }
+        }
+        else if (!strcmp(argv[a], "--lp-taa") && a + 1 < argc) {
+            o.lp_taa = atoi(argv[++a]);
+            if (o.lp_taa < 0 || o.lp_taa > 1000) { fprintf(stderr, "--lp-taa 0..1000\n"); return 2; }
+        }
         else if (!strcmp(argv[a], "--append")) append = 1;
         else if (!strcmp(argv[a], "--dump") && a + 1 < argc) g_dump = argv[++a];
         else if (!strcmp(argv[a], "--out") && a + 1 < argc) outpath = argv[++a];

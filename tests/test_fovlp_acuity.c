@@ -330,6 +330,98 @@ static void test_coarse(void)
     }
 }
 
+/* FOVLP_RECON_CUBIC (what fovlp_config_acuity selects): LP samples holding sinusoids of period 8
+   texels along v (channel 0) and along u (channel 1) and a ramp along u (channel 2), gaze at
+   the centre, no TAA; at every pixel whose LP coordinate lies away from the first and last
+   columns and the angle seam, 3 sample spacings or more from the screen's border, the
+   reconstruction against the continuous functions the
+   samples were taken from: Catmull-Rom's error below 0.35 of bilinear's on both sinusoids
+   (bilinear flattens them), the ramp the same as bilinear's (both reproduce linear
+   functions), every pixel inside the samples' range; a recon value out of range rejected. */
+static double g8(double t) { return 0.5 + 0.5 * sin(2.0 * PI_D * t / 8.0); }
+static void test_cubic(void)
+{
+    static const dcase dc = { "640x360 at 45 degrees", 640, 360, { 0.0f, 0.0f, 0.0f, 0.0f, 0.0f }, 45.0f };
+    fovlp_config cfg[2];
+    env e[2];
+    fov_gaze gz = { 320.0f, 180.0f };
+    float *smp = NULL, *img[2] = { NULL, NULL };
+    double err[2][2] = { { 0, 0 }, { 0, 0 } }, ramp = 0.0;
+    float lo = 1.0f, hi = 0.0f;
+    long n = 0;
+    uint32_t k, x, y;
+    fov_result r;
+    int ok = make(&dc, 1.0f, &cfg[0]) == FOV_OK;
+    check(ok && cfg[0].recon == (uint32_t)FOVLP_RECON_CUBIC, "acuity_selects_cubic", "%u",
+          (unsigned)cfg[0].recon);
+    cfg[1] = cfg[0];
+    cfg[1].recon = FOVLP_RECON_BILINEAR;
+    for (k = 0; k < 2 && ok; ++k) {
+        ok = env_init(&e[k], &cfg[k]) == FOV_OK && fovlp_begin_frame(&e[k].ctx, gz, NULL) == FOV_OK;
+        img[k] = (float *)malloc((size_t)dc.w * dc.h * 3 * sizeof(float));
+    }
+    if (ok) {
+        const fovlp_geometry *g = &e[0].ctx.geo;
+        smp = (float *)malloc((size_t)g->samples * 3 * sizeof(float));
+        for (k = 0; k < g->samples; ++k) {
+            uint32_t u = k % g->lp_w, v = k / g->lp_w;
+            int lp = k < g->lp_slots;
+            smp[3 * k] = lp ? (float)g8((double)v) : 0.5f;
+            smp[3 * k + 1] = lp ? (float)g8((double)u) : 0.5f;
+            smp[3 * k + 2] = lp ? (float)u / (float)g->lp_w : 0.5f;
+        }
+        for (k = 0; k < 2; ++k)
+            ok = ok && fovlp_reconstruct_rows(&e[k].ctx, smp, NULL, 0, dc.h, img[k], 0, NULL) == FOV_OK;
+    }
+    for (y = 0; ok && y < dc.h; ++y)
+        for (x = 0; x < dc.w; ++x) {
+            const float *a = img[0] + 3 * ((size_t)y * dc.w + x), *b = img[1] + 3 * ((size_t)y * dc.w + x);
+            float u, v;
+            double su, sv;
+            for (k = 0; k < 3; ++k) { lo = fminf(lo, a[k]); hi = fmaxf(hi, a[k]); }
+            if (fovlp_screen_to_lp(&e[0].ctx, (float)x + 0.5f, (float)y + 0.5f, &u, &v) != FOV_OK) continue;
+            su = (double)u - (double)e[0].ctx.jit_u;   /* in sample indices */
+            sv = (double)v - (double)e[0].ctx.jit_v;
+            if (su < 2.0 || su > (double)e[0].ctx.geo.lp_cols - 4.0 || sv < 2.0 ||
+                sv > (double)e[0].ctx.geo.lp_h - 3.0)
+                continue;
+            {   /* the 4 x 4 taps on the screen: 3 sample spacings from every border */
+                float dx = (float)x + 0.5f - gz.x, dy = (float)y + 0.5f - gz.y, rs, as;
+                float bd = fminf(fminf((float)x + 0.5f, (float)dc.w - (float)x - 0.5f),
+                                 fminf((float)y + 0.5f, (float)dc.h - (float)y - 0.5f));
+                if (fovlp_spacing(&e[0].ctx, sqrtf(dx * dx + dy * dy), &rs, &as) != FOV_OK ||
+                    bd < 3.0f * fmaxf(rs, as))
+                    continue;
+            }
+            err[0][0] += ((double)a[0] - g8(sv)) * ((double)a[0] - g8(sv));
+            err[1][0] += ((double)b[0] - g8(sv)) * ((double)b[0] - g8(sv));
+            err[0][1] += ((double)a[1] - g8(su)) * ((double)a[1] - g8(su));
+            err[1][1] += ((double)b[1] - g8(su)) * ((double)b[1] - g8(su));
+            ramp = fmax(ramp, fabs((double)a[2] - (double)b[2]));
+            ++n;
+        }
+    fovcheck_info("cubic: %ld pixels, RMS error along v %.5f (bilinear %.5f), along u %.5f (bilinear %.5f)", n,
+                  sqrt(err[0][0] / (double)(n ? n : 1)), sqrt(err[1][0] / (double)(n ? n : 1)),
+                  sqrt(err[0][1] / (double)(n ? n : 1)), sqrt(err[1][1] / (double)(n ? n : 1)));
+    check(ok && n > 10000 && err[0][0] < 0.35 * 0.35 * err[1][0] && err[0][1] < 0.35 * 0.35 * err[1][1],
+          "cubic_keeps_the_contrast_bilinear_loses",
+          "%ld pixels, RMS error along v %.5f (bilinear %.5f), along u %.5f (bilinear %.5f)", n,
+          sqrt(err[0][0] / (double)(n ? n : 1)), sqrt(err[1][0] / (double)(n ? n : 1)),
+          sqrt(err[0][1] / (double)(n ? n : 1)), sqrt(err[1][1] / (double)(n ? n : 1)));
+    check(ok && ramp < 1e-5, "cubic_reproduces_a_ramp", "max |cubic - bilinear| %g", ramp);
+    check(ok && lo >= 0.0f && hi <= 1.0f, "cubic_inside_the_samples_range", "[%g, %g]", (double)lo,
+          (double)hi);
+    for (k = 0; k < 2; ++k) { free(e[k].mem); free(img[k]); }
+    free(smp);
+    cfg[0] = fovlp_config_default();
+    cfg[0].width = 64; cfg[0].height = 64; cfg[0].logger.func = logger;
+    cfg[0].recon = (uint32_t)_FOVLP_RECON_NUM;
+    log_calls = 0; log_msg[0] = 0;
+    r = fovlp_config_resolve(&cfg[0], &cfg[1]);
+    check(r == FOV_ERR_INVALID_ARG && log_calls == 1 && strstr(log_msg, "recon") != NULL,
+          "bad_config_recon", "%d, %d logger calls, \"%s\"", (int)r, log_calls, log_msg);
+}
+
 static void test_fields_and_errors(void)
 {
     fovlp_config cfg, keep;
@@ -345,12 +437,13 @@ static void test_fields_and_errors(void)
     keep = cfg;
     r = fovlp_config_acuity(&cfg, NULL, NULL);
     keep.sigma = cfg.sigma; keep.alpha = cfg.alpha; keep.gaze_angle = cfg.gaze_angle;
-    keep.lp_aspect = cfg.lp_aspect;
+    keep.lp_aspect = cfg.lp_aspect; keep.recon = cfg.recon;
     check(r == FOV_OK && memcmp(&keep, &cfg, sizeof cfg) == 0,
           "acuity_fills_only_the_foveation_fields", "%d", (int)r);
     /* the presets */
     cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 640, 360);
     check(fabsf(cfg.sigma - 1.4f) < 1e-6f && fabsf(cfg.gaze_angle - 0.2f) < 1e-6f &&
+              cfg.recon == (uint32_t)FOVLP_RECON_BILINEAR &&
               fabsf(cfg.lp_aspect - 0.33f) < 1e-6f && !strcmp(fovlp_preset_name(2), "C Fov"),
           "presets_unchanged", " ");
     /* bad input */
@@ -431,5 +524,6 @@ int main(void)
     test_monotone();
     test_coarse();
     test_fields_and_errors();
+    test_cubic();
     return fovcheck_summary();
 }
