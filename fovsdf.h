@@ -743,7 +743,7 @@ RECENT REVISION HISTORY
    failure calls it with a code, a specific message and the header's source line. */
 #ifndef FOV_SHARED_DECL_INCLUDED
 #define FOV_SHARED_DECL_INCLUDED 1
-#define FOV_SHARED_REVISION 2 /* the revision of this block; headers that differ must not mix */
+#define FOV_SHARED_REVISION 3 /* the revision of this block; headers that differ must not mix */
 
 #include <stddef.h>
 #include <stdint.h>
@@ -888,13 +888,19 @@ typedef struct fov_ecc_model {
    study puts the slope at 1.32 (conservative: users judged the foveated image as good as or
    better than full resolution) to 1.65 arc minutes per degree (aggressive); 1 arc minute is
    the MAR of 20/20 vision at the gaze. A sampling that follows the eye places its samples at
-   most quality * MAR(e) apart. A zero field takes its default. */
+   most quality * MAR(e) apart. A zero field takes its default.
+   Quality 1 spaces the samples one MAR apart: the Nyquist rate of the finest grating the eye
+   resolves (a period of 2 MAR). Point samples and the interpolating reconstructions the
+   headers use lose contrast and alias at their Nyquist rate (bilinear keeps 41 % of a
+   grating's contrast there, 81 % at half of it), so the default is 0.5, twice that rate:
+   measured with bench/bench_perceptual.c, the rate at which the three headers' acuity-driven
+   images are as good as full resolution on a 640x360 display (bench/README.md). */
 typedef struct fov_eye {
     float mar0_arcmin;  /* MAR at the gaze, arc minutes, (0, 60]                      0: 1 */
     float slope_arcmin; /* MAR growth, arc minutes per degree, (0, 60]             0: 1.32 */
     float quality;      /* the one quality knob: allowed sample spacing as a multiple of the
-                           MAR, (0, 100]; 1 = matched to the eye, below 1 safer, above 1
-                           coarser than the eye resolves                              0: 1 */
+                           MAR, (0, 100]; 1 = the eye's Nyquist rate, below 1 safer,
+                           above 1 coarser than the eye resolves                   0: 0.5 */
 } fov_eye;
 
 /* What a display needs, from fov_eye and the display's pixels per degree (ppd). Each header's
@@ -913,7 +919,7 @@ typedef struct fov_eye_plan {
 #ifdef __cplusplus
 }
 #endif
-#elif FOV_SHARED_REVISION != 2
+#elif FOV_SHARED_REVISION != 3
 #error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
 #endif /* FOV_SHARED_DECL_INCLUDED */
 /* ==== FOV_SHARED_END decl ==================================================================== */
@@ -2258,7 +2264,7 @@ FOV__PRIV int fov__eye_get(const fov_eye *e, float *mar0, float *slope, float *q
     float c = e ? e->quality : 0.0f;
     if (fov__is0(a)) a = 1.0f;
     if (fov__is0(b)) b = 1.32f;
-    if (fov__is0(c)) c = 1.0f;
+    if (fov__is0(c)) c = 0.5f;
     if (!(a > 0.0f && a <= 60.0f) || !(b > 0.0f && b <= 60.0f) || !(c > 0.0f && c <= 100.0f))
         return 0;
     *mar0 = a / 60.0f; *slope = b / 60.0f; *q = c;

@@ -538,7 +538,7 @@ static void acuity_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uin
     void *mem;
     fov_gaze gaze;
     fov_ecc_model em;
-    fov_eye eye;
+    fov_eye eye, eye1 = { 0.0f, 0.0f, 1.0f }; /* eye1: the eye itself (quality 1) */
     fovlp_config ac;
     fovlp_camera cam;
     acu_env e;
@@ -577,7 +577,7 @@ static void acuity_study(uint32_t id, const fovsdf_config *scfg, uint32_t W, uin
     e.W = W; e.H = H; e.ppd = (double)em.f_px * 3.14159265358979 / 180.0; e.ecc = ecc; e.sig = sig;
     for (i = 0; i < npx; ++i) {
         ecc[i] = fovlp_ecc_deg(&em, (float)(i % W) + 0.5f, (float)(i / W) + 0.5f);
-        sig[i] = 0.5f * fovlp_eye_mar(NULL, ecc[i]) * (float)e.ppd; /* the eye: quality 1 */
+        sig[i] = 0.5f * fovlp_eye_mar(&eye1, ecc[i]) * (float)e.ppd; /* the eye: quality 1 */
     }
     gt = (float *)malloc(npx * 3 * sizeof(float)); gtf = (float *)malloc(npx * 3 * sizeof(float));
     tmp = (float *)malloc(npx * 3 * sizeof(float)); f = (float *)malloc(npx * 3 * sizeof(float));

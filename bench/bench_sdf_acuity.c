@@ -123,6 +123,7 @@ int main(int argc, char **argv)
     int W = 640, H = 360, nthreads = 2, a, si, mi, gt_spp = 16, shading = 0;
     float fovy = 0.0f, pitch = 0.0f, dist = 0.0f, quality = 1.0f, qlist[8] = { 1.0f };
     int nq = 1, qi;
+    fov_eye eye1 = { 0.0f, 0.0f, 1.0f }; /* the eye itself (quality 1), for its filter */
     const char *scenes = "primitives,columns,temple,atrium,thin,fractals";
     const char *methods = "cone_fov,cone_fov_acuity,cone_fov_acuity_edges,cone_fov_acuity_noq,"
                           "fipr_acuity";
@@ -198,7 +199,7 @@ int main(int argc, char **argv)
                 float e = fovsdf_ecc_deg(&ctx.ecc, (float)(i % (size_t)W) + 0.5f,
                                          (float)(i / (size_t)W) + 0.5f);
                 ecc[i] = e;
-                sig[i] = 0.5f * fovsdf_eye_mar(NULL, e) * pl.ppd;
+                sig[i] = 0.5f * fovsdf_eye_mar(&eye1, e) * pl.ppd; /* the eye: quality 1 */
             }
             dump(bi.name, "gt", rgb, W, H);
             eye_filter(rgb, gt, tmp, W, H, sig);
