@@ -151,7 +151,7 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
       fovlp_config cfg = fovlp_config_default();
       cfg.width = 1920;  cfg.height = 1080;
       cfg.display.pixel_pitch_mm = 0.3113f;  cfg.display.distance_mm = 600.0f;  // 27", 60 cm
-      fov_eye eye = { 0.0f, 0.0f, 1.0f };           // defaults; quality 1 = matched to the eye
+      fov_eye eye = { 0.0f, 0.0f, 0.5f };           // the defaults (quality 0.5, see fov_eye)
       fovlp_config_acuity(&cfg, NULL, &eye);        // sigma, alpha, gaze disc, lp_aspect
       // then fovlp_memory_size / fovlp_init as above (cfg.taa, cfg.blend are yours)
    It fills sigma, alpha, gaze_angle (no_disc 0), lp_aspect, norm (DIAGONAL), edge (LOG_R)
@@ -179,7 +179,7 @@ ACUITY-DRIVEN CONFIGURATION (fovlp_config_acuity: the parameters from the eye an
    rule, and alpha > 1 lets the radial spacing grow faster than r near the disc, as the
    eye's does (s(r) has the offset mar0). Then it builds the geometry fovlp_init will
    derive (fovlp_geometry_get's formulas), checks every gap on it (4 offsets per column) and
-   grows the buffer until all meet the rule. Figures (quality 1, the defaults; saving =
+   grows the buffer until all meet the rule. Figures (quality 1, not the default 0.5; saving =
    screen pixels / samples shaded incl. the disc, gaze at the centre; tests/test_fovlp_acuity.c
    prints them):
       640x360, 45 degree camera  7.6 ppd  LP 142 x 460, disc 63 px   5.1x
@@ -365,7 +365,8 @@ RECENT REVISION HISTORY
                       nearest LP samples clamped to the 2 x 2 nearest's range, which keeps
                       the contrast bilinear interpolation loses at the eye's scale;
                       fovlp_config_acuity selects it (its images change; the presets and a
-                      zero recon stay bilinear, bit for bit as before).
+                      zero recon stay bilinear, bit for bit as before). The shared block of
+                      revision 3: fov_eye's default quality is 0.5 (was 1; fov_eye).
    0.4.0 (2026-12-02) fovlp_config_acuity: sigma, alpha, the gaze disc and lp_aspect from the
                       shared eye model (fov_eye, Guenter et al. 2012) and the display, the
                       fewest samples whose gaps meet quality * MAR(e) * ppd from the disc edge

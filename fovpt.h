@@ -168,7 +168,7 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
       fovpt_config cfg = fovpt_config_default();
       cfg.method = FOVPT_METHOD_LAYERS;                // or ZONES, SELECTIVE
       cfg.display.pixel_pitch_mm = 0.3113f; cfg.display.distance_mm = 600.0f;  // or all zero
-      fov_eye eye = { 0 };  eye.quality = 1.0f;        // NULL: the defaults (fov_eye)
+      fov_eye eye = { 0 };  eye.quality = 0.5f;        // NULL: the same defaults (fov_eye)
       if (fovpt_config_acuity(&cfg, &cam, &eye) != FOV_OK) ...   // then fovpt_memory_size, init
    fills the three foveation families from the display (cfg.display; all zero: the camera's
    frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
@@ -420,7 +420,10 @@ RECENT REVISION HISTORY
                       UNIFORM), layers.cell_jitter / zones.cell_jitter (samples over the
                       lattice cell: prefiltered), zones.spp[3]; all zero by default (presets'
                       images unchanged). fovpt_config_acuity no longer keeps the caller's layer
-                      spp (set them after the call to override).
+                      spp (set them after the call to override). The shared block of
+                      revision 3: fov_eye's default quality is 0.5 (was 1; fov_eye). Fix: a
+                      second fovpt_config_acuity call no longer moves the selective borders
+                      by float rounding.
    0.4.0 (2026-12-02) fovpt_config_acuity: the layer table (radii, strides from a ladder), the
                       zone radii and the selective borders from the display and the shared eye
                       model (fov_eye, fovpt_eye_plan; Guenter et al. 2012), presets kept by
@@ -4477,6 +4480,9 @@ FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *
         fovpt_selective_cfg *s = &out.selective;
         float k = fov__maxf(plan.e_full, 0.01f) / c.selective.e_deg[3];
         k = fov__minf(k, 179.0f / c.selective.e_deg[4]);
+        /* a config this call filled scales by 1 up to float rounding: keep it as it is, so a
+           second call changes nothing */
+        if (k > 0.99999f && k < 1.00001f) k = 1.0f;
         for (i = 0; i < 5; ++i) s->e_deg[i] = c.selective.e_deg[i] * k;
         for (i = 0; i < 4; ++i) s->tau_shape[i] = c.selective.tau_shape[i];
         s->tau_shape[2] = c.selective.tau_shape[2] / k;

@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.7.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.8.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -211,7 +211,8 @@ ACUITY-DRIVEN FOVEATION
    the display (cfg.display; all zero: cam's field of view) and the eye (fov_eye: the minimum
    angle of resolution MAR(e) = mar0 + slope e of Guenter et al. 2012, and the quality knob,
    the allowed sample spacing as a multiple of the MAR; NULL: 1 arc minute, 1.32 arc minutes
-   per degree, quality 1) through fovsdf_eye_plan (the pixels per degree at the eye's axis;
+   per degree, quality 0.5, twice the Nyquist rate of the finest grating the eye resolves; see
+   fov_eye) through fovsdf_eye_plan (the pixels per degree at the eye's axis;
    the plan does not depend on the gaze):
    - acuity.fovea_deg = plan.e_half: every pixel traces its own rays wherever one sample per
      2x2 pixels would be coarser than the eye resolves. A display coarser than the eye out to
@@ -622,7 +623,7 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
-   unreleased         foveation the eye does not notice near the fovea: config.level_filter 2
+   0.8.0 (2026-12-05) foveation the eye does not notice near the fovea: config.level_filter 2
                       (the levels keep their lighting and normal; each interpolated pixel
                       takes the albedo at its own ray's point on the taps' tangent planes) and
                       geometric refinement (config.refine_depth, refine_normal_deg,
@@ -634,6 +635,8 @@ RECENT REVISION HISTORY
                       most scenes and displays, see ACUITY-DRIVEN FOVEATION). With the three
                       new fields 0 and level_filter 0 or 1 every image and count is 0.7.0's.
                       A level cell is 48 bytes (was 32): fovsdf__fov_tile 47.3 KiB of stack.
+                      The shared block of revision 3: fov_eye's default quality is 0.5 (was
+                      1), twice the Nyquist rate of the eye's finest grating (fov_eye).
    0.7.0 (2026-12-02) the mandelbulb and the terrain use the library's own branch-free float
                       kernels (sin, cos, atan2, log, pow; within 4 ulp) with libm,
                       FOV_NO_LIBM and the math hooks alike, and run vectorised in the batch
@@ -717,9 +720,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 7
+#define FOVSDF_VERSION_MINOR 8
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.7.0"
+#define FOVSDF_VERSION_STRING "0.8.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a

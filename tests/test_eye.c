@@ -18,6 +18,10 @@
 
 #define N fovcheck_name
 
+/* fov_eye's documented default quality (a zero field, or a NULL eye): samples at most 0.5 MAR
+   apart, twice the Nyquist rate of the finest grating the eye resolves */
+#define Q0 0.5
+
 static fov_eye eye(float mar0, float slope, float q)
 {
     fov_eye e;
@@ -39,11 +43,11 @@ static void test_mar(void)
     fov_eye aggressive = eye(0.0f, 1.65f, 0.0f), twice = eye(0.0f, 0.0f, 2.0f);
     size_t i;
     for (i = 0; i < sizeof ecc / sizeof ecc[0]; i++) {
-        double e = ecc[i], want = (1.0 + 1.32 * e) / 60.0;
+        double e = ecc[i], want = Q0 * (1.0 + 1.32 * e) / 60.0;
         double got = (double)fovsdf_eye_mar(NULL, ecc[i]);
         check(rel_near(got, want, 1e-5), N("mar_default_%g", e), "%.7g, want %.7g", got, want);
         got = (double)fovsdf_eye_mar(&aggressive, ecc[i]);
-        want = (1.0 + 1.65 * e) / 60.0;
+        want = Q0 * (1.0 + 1.65 * e) / 60.0; /* quality 0: the default */
         check(rel_near(got, want, 1e-5), N("mar_aggressive_%g", e), "%.7g, want %.7g", got, want);
         got = (double)fovsdf_eye_mar(&twice, ecc[i]);
         want = 2.0 * (1.0 + 1.32 * e) / 60.0;
@@ -68,15 +72,15 @@ static void test_density(void)
     for (i = 0; i < sizeof ppds / sizeof ppds[0]; i++) {
         double ppd = (double)ppds[i];
         for (j = 0; j < 6; j++) {
-            double e = 7.0 * (double)j, want = 1.0 / (ppd * (1.0 + 1.32 * e) / 60.0);
+            double e = 7.0 * (double)j, want = 1.0 / (ppd * Q0 * (1.0 + 1.32 * e) / 60.0);
             double got = (double)fovsdf_eye_density(NULL, ppds[i], (float)e);
             if (want > 1.0) want = 1.0;
             check(rel_near(got, want, 1e-5), N("density_ppd%g_e%g", ppd, e), "%.7g, want %.7g",
                   got, want);
         }
         for (j = 0; j < sizeof dens / sizeof dens[0]; j++) {
-            /* the eccentricity where 1 / (ppd (1 + 1.32 e) / 60) = d, clamped to [0, 180] */
-            double d = (double)dens[j], want = (60.0 / (ppd * d) - 1.0) / 1.32;
+            /* the eccentricity where 1 / (ppd Q0 (1 + 1.32 e) / 60) = d, clamped to [0, 180] */
+            double d = (double)dens[j], want = (60.0 / (ppd * Q0 * d) - 1.0) / 1.32;
             float gotf = fovsdf_eye_ecc(NULL, ppds[i], dens[j]);
             double got = (double)gotf;
             if (want < 0.0) want = 0.0;
@@ -90,18 +94,19 @@ static void test_density(void)
             }
         }
     }
-    /* a display finer than 1 arc minute per pixel needs less than every pixel at the gaze */
-    check(fovsdf_eye_ecc(NULL, 120.0f, 1.0f) == 0.0f && fovsdf_eye_density(NULL, 120.0f, 0.0f)
+    /* a display finer than Q0 arc minutes per pixel needs less than every pixel at the gaze
+       (240 px/degree: 0.25 arc minutes per pixel, half the default spacing 0.5 arc minutes) */
+    check(fovsdf_eye_ecc(NULL, 240.0f, 1.0f) == 0.0f && fovsdf_eye_density(NULL, 240.0f, 0.0f)
           < 0.51f, "finer_than_eye_at_gaze", "ecc %g density %g",
-          (double)fovsdf_eye_ecc(NULL, 120.0f, 1.0f),
-          (double)fovsdf_eye_density(NULL, 120.0f, 0.0f));
+          (double)fovsdf_eye_ecc(NULL, 240.0f, 1.0f),
+          (double)fovsdf_eye_density(NULL, 240.0f, 0.0f));
 }
 
 /* a display coarser than the eye out to E: no reduction inside E (ppd 4: 15 arc minutes per
-   pixel, E = (15 - 1) / 1.32 = 10.6 degrees) */
+   pixel; the default spacing Q0 MAR(E) reaches it at E = (15 / Q0 - 1) / 1.32 = 22.0 degrees) */
 static void test_coarse_display(void)
 {
-    double E = (60.0 / 4.0 - 1.0) / 1.32;
+    double E = (60.0 / 4.0 / Q0 - 1.0) / 1.32;
     float e;
     int all = 1;
     fov_eye_plan p;
@@ -143,8 +148,8 @@ static void test_plan_monitor(void)
     check(fovsdf_ecc_init(&m, &d, 0.0f, 1920, 1080, g) == FOV_OK, "monitor_ecc_init", "-");
     check(fovsdf_eye_plan(NULL, &m, &p) == FOV_OK, "monitor_plan", "-");
     check(rel_near((double)p.ppd, ppd, 1e-5), "monitor_ppd", "%g, want %g", (double)p.ppd, ppd);
-    for (k = 0; k < 3; k++) want[k] = (60.0 / (ppd * (k == 0 ? 1.0 : k == 1 ? 0.5 : 0.25)) - 1.0)
-                                      / 1.32;
+    for (k = 0; k < 3; k++)
+        want[k] = (60.0 / (ppd * Q0 * (k == 0 ? 1.0 : k == 1 ? 0.5 : 0.25)) - 1.0) / 1.32;
     got[0] = (double)p.e_full; got[1] = (double)p.e_half; got[2] = (double)p.e_quarter;
     for (k = 0; k < 3; k++)
         check(fabs(got[k] - want[k]) <= 1e-4 * fmax(want[k], 1.0), N("monitor_e_%d", k),

@@ -52,6 +52,9 @@ static void rec_logger(const char *tag, uint32_t level, int32_t code, const char
 
 /* the model's eccentricity from which `density` linear samples per pixel suffice, for a display
    of ppd pixels per degree (double; the published values, quality q) */
+/* fov_eye's documented default quality (NULL eye): samples at most 0.5 MAR apart */
+#define Q0 0.5
+
 static double model_ecc(double ppd, double density, double q)
 {
     double e = (1.0 / (ppd * density * q) - 1.0 / 60.0) / (1.32 / 60.0);
@@ -84,8 +87,8 @@ static void test_params(void)
     fov_result r;
     /* pixels per degree grows as the same pixels span a smaller field */
     for (i = 0; i < 6; ++i) {
-        double ppd = ppd_of((double)fovs[i], 360), eh = model_ecc(ppd, 0.5, 1.0),
-               eq = model_ecc(ppd, 0.25, 1.0);
+        double ppd = ppd_of((double)fovs[i], 360), eh = model_ecc(ppd, 0.5, Q0),
+               eq = model_ecc(ppd, 0.25, Q0);
         cfg = fovsdf_config_default();
         cfg.method = FOVSDF_METHOD_CONE_FOV;
         cfg.display.fov_y_deg = fovs[i];
@@ -108,12 +111,13 @@ static void test_params(void)
     check(ok_v, "acuity_params_match_model",
           "fovea = e_half, quarter = e_quarter, refresh 1, level_filter 2, refinement on");
     check(ok_m, "acuity_params_monotone_in_ppd", "a finer display has a smaller full-res region");
-    /* the 640x360, 45-degree display: 7.58 px/degree, e_half 11.2, e_quarter 23.2 */
+    /* the 640x360, 45-degree display: 7.58 px/degree; at quality 0.5, e_half
+       (60 / (7.58 0.5 0.5) - 1) / 1.32 = 23.2, e_quarter 47.2 */
     cfg = fovsdf_config_default();
     cfg.display.fov_y_deg = 45.0f;
     r = fovsdf_config_acuity(&cfg, &cam, NULL);
-    check(r == FOV_OK && fabs((double)cfg.acuity.fovea_deg - 11.2) < 0.1 &&
-              fabs((double)cfg.quarter_deg - 23.2) < 0.1,
+    check(r == FOV_OK && fabs((double)cfg.acuity.fovea_deg - 23.2) < 0.1 &&
+              fabs((double)cfg.quarter_deg - 47.2) < 0.1,
           "acuity_640x360_45deg", "fovea %g quarter %g", (double)cfg.acuity.fovea_deg,
           (double)cfg.quarter_deg);
     /* the quality knob: safer (smaller) quality, a larger full-resolution region */
@@ -138,8 +142,8 @@ static void test_params(void)
     r = fovsdf_config_acuity(&cfg, &cam, NULL);
     {
         double ppd = 600.0 / 0.3113 * PI_D / 180.0;
-        check(r == FOV_OK && fabs((double)cfg.acuity.fovea_deg - model_ecc(ppd, 0.5, 1.0)) < 0.01 &&
-                  fabs((double)cfg.quarter_deg - model_ecc(ppd, 0.25, 1.0)) < 0.01,
+        check(r == FOV_OK && fabs((double)cfg.acuity.fovea_deg - model_ecc(ppd, 0.5, Q0)) < 0.01 &&
+                  fabs((double)cfg.quarter_deg - model_ecc(ppd, 0.25, Q0)) < 0.01,
               "acuity_monitor_27in_60cm", "ppd %g fovea %g quarter %g", ppd,
               (double)cfg.acuity.fovea_deg, (double)cfg.quarter_deg);
     }
@@ -263,17 +267,18 @@ static double ecc_of(double x, double y, uint32_t W, uint32_t H, double f_px)
 
 static void test_coarse_display(void)
 {
-    /* 4 px per degree at the axis: f = 4 * 180 / pi = 229.2 px; 320 x 90 reaches 36 degrees
-       of eccentricity in its corners (e_half 22 degrees: beyond it, a reduction) */
-    const uint32_t W = 320, H = 90;
-    const double f_px = 4.0 * 180.0 / PI_D, E = model_ecc(4.0, 1.0, 1.0);
+    /* 4 px per degree at the axis: f = 4 * 180 / pi = 229.2 px; 640 x 90 reaches 55 degrees
+       of eccentricity in its corners (the default quality 0.5: E = e_full 22 degrees, e_half
+       44.7: beyond it, a reduction) */
+    const uint32_t W = 640, H = 90;
+    const double f_px = 4.0 * 180.0 / PI_D, E = model_ecc(4.0, 1.0, Q0);
     const float fov_y = (float)(2.0 * atan(0.5 * H / f_px) * 180.0 / PI_D);
     scene_t s;
     frame_t fr;
     uint32_t m, x, y;
     if (!check(scene_open(&s, FOVSDF_SCENE_PRIMITIVES, W, H, fov_y), "coarse_scene", "-")) return;
     frame_alloc(&fr, (size_t)W * H);
-    check(E > 10.0 && E < 11.0, "coarse_model_e_full", "E %g", E);
+    check(E > 21.0 && E < 23.0, "coarse_model_e_full", "E %g", E);
     for (m = 0; m < 2; ++m) {
         fovsdf_config cfg = fovsdf_config_default();
         long inside = 0, bad = 0, reduced = 0;
