@@ -8,8 +8,9 @@ usage: python3 bench/perceptual_tables.py [bench/results/perceptual.csv]
 Prints markdown:
   1. per header and display: the largest saving (above 1) at equal perceived quality (a
      configuration counts when its row has equal_quality 1 in every scene of that header; the
-     equal-time rows *_eqt do not count), and the fixed preset and the quality-1 acuity
-     configuration beside it;
+     equal-time rows *_eqt do not count; rows with still-view TAA, *_taa*, have a column of
+     their own), and the fixed preset, the acuity configuration at the default quality (0.5)
+     and at quality 1 beside it;
   2. the quality sweep of each acuity-driven family: per display and quality the saving (the
      least over the scenes), the mean perceptual error, and =, equal quality in every scene.
 """
@@ -22,6 +23,7 @@ import readme_sections
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results")
 FIXED = {"fovsdf": "cone_fov", "fovlp": "lp_c_fov", "fovpt": "layers"}
 ACUITY = {"fovsdf": "cone_fov_acuity", "fovlp": "lp_acuity", "fovpt": "layers_acuity"}
+DEFAULT_Q = 0.5  # fov_eye's default quality (tools/fov_shared.h)
 
 
 def f(v):
@@ -59,9 +61,11 @@ def tables(path):
 
     sec = {}
     out = ["| header | display | ppd at gaze | scenes | best at equal quality | saving | "
-           "perr / ref | %s | %s |" % ("fixed preset: saving, perr, equal",
-                                       "acuity (quality 1): saving, perr, equal"),
-           "|---|---|---:|---|---|---:|---:|---|---|"]
+           "perr / ref | best with still-view TAA | %s | %s | %s |"
+           % ("fixed preset: saving, perr, equal",
+              "acuity default (quality %g): saving, perr, equal" % DEFAULT_Q,
+              "acuity quality 1: saving, perr, equal"),
+           "|---|---|---:|---|---|---:|---:|---|---|---|---|"]
     for h in headers:
         for d in displays:
             ms = [m for (hh, dd, m) in by if hh == h and dd == d]
@@ -69,7 +73,7 @@ def tables(path):
                 continue
             pp = sorted({f(x["ppd_center"]) for x in by[(h, d, ms[0])].values()})
             ppd = "-".join("%.1f" % v for v in (pp if len(pp) < 3 else [pp[0], pp[-1]]))
-            best = None
+            best, best_taa = None, None
             for m in ms:
                 s = summary(h, d, m)
                 if s is None or not s[1]:
@@ -77,10 +81,16 @@ def tables(path):
                 ref = next(iter(by[(h, d, m)].values()))["ref_method"]
                 if m == ref or m.endswith("_eqt") or not s[0] > 1.0:
                     continue
-                if best is None or s[0] > best[1][0]:
+                if "_taa" in m:
+                    if best_taa is None or s[0] > best_taa[1][0]:
+                        best_taa = (m, s)
+                elif best is None or s[0] > best[1][0]:
                     best = (m, s)
+            taa = "-" if best_taa is None else "%s %.2fx" % (best_taa[0], best_taa[1][0])
+            if best_taa is None and any("_taa" in m for m in ms):
+                taa = "none"
             cells = []
-            for m in (FIXED[h], ACUITY[h]):
+            for m in (FIXED[h], "%s_q%g" % (ACUITY[h], DEFAULT_Q), ACUITY[h]):
                 s = summary(h, d, m)
                 cells.append("n/a" if s is None else "%.2fx, %.4f, %s" % (s[0], s[2], "yes" if s[1] else "no"))
             if best:
@@ -89,8 +99,9 @@ def tables(path):
                 bp = "%.4f / %.4f" % (best[1][2], best[1][3])
             else:
                 bm, bs, bp = "none", "1x", "-"
-            out.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s |"
-                       % (h, d, ppd, " ".join(scenes[h]), bm, bs, bp, cells[0], cells[1]))
+            out.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |"
+                       % (h, d, ppd, " ".join(scenes[h]), bm, bs, bp, taa, cells[0], cells[1],
+                          cells[2]))
     sec["perceptual"] = out
     # 2. the quality sweep of each acuity family: saving (least over scenes) and mean perr
     fams = []

@@ -479,6 +479,32 @@ static void test_quarter(void)
 /* level_filter: the levels' samples take their cell's mean albedo. Against a 16-spp ground
    truth (the image the eye would see), the periphery's error of the checkerboard floor drops;
    an untextured scene's image does not change; bad values are rejected. */
+/* the plane of test_quarter in one colour (untextured), CONE_FOV with a quarter level: the
+   largest channel difference between level_filter 0 and level_filter lf (-1: a render failed) */
+static double untextured_diff(uint32_t lf, uint32_t W, uint32_t H, frame_t *a, frame_t *b)
+{
+    fovsdf_scene ps;
+    fovsdf_camera cam = cam_make(W, H, 60.0f);
+    fovsdf_config cfg = fovsdf_config_default();
+    double worst = -1.0;
+    size_t i, n = (size_t)W * H;
+    fovsdf_scene_init(&ps);
+    ps.dist = plane_sdf;
+    ps.t_max = 30.0f;
+    cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
+    cfg.method = FOVSDF_METHOD_CONE_FOV;
+    cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+    cfg.acuity.fovea_deg = 3.0f;
+    cfg.quarter_deg = 8.0f;
+    if (render(&cfg, &ps, &cam, a)) {
+        cfg.level_filter = lf;
+        if (render(&cfg, &ps, &cam, b))
+            for (worst = 0.0, i = 0; i < 3 * n; ++i)
+                worst = fmax(worst, fabs((double)a->rgb[i] - (double)b->rgb[i]));
+    }
+    return worst;
+}
+
 static void test_level_filter(void)
 {
     const uint32_t W = 192, H = 108;
@@ -525,26 +551,10 @@ static void test_level_filter(void)
         check(a.st.evals == b.st.evals, fovcheck_name("lf_same_evals_%s", m ? "fipr" : "cone_fov"),
               "%llu against %llu", (unsigned long long)b.st.evals, (unsigned long long)a.st.evals);
     }
-    {   /* untextured: the plane of test_quarter with one colour */
-        fovsdf_scene ps;
-        fovsdf_camera cam = cam_make(W, H, 60.0f);
-        double worst = 0.0;
-        fovsdf_scene_init(&ps);
-        ps.dist = plane_sdf;
-        ps.t_max = 30.0f;
-        cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
-        cfg = fovsdf_config_default();
-        cfg.method = FOVSDF_METHOD_CONE_FOV;
-        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-        cfg.acuity.fovea_deg = 3.0f;
-        cfg.quarter_deg = 8.0f;
-        if (render(&cfg, &ps, &cam, &a)) {
-            cfg.level_filter = 1;
-            if (render(&cfg, &ps, &cam, &b))
-                for (i = 0; i < 3 * n; ++i)
-                    worst = fmax(worst, fabs((double)a.rgb[i] - (double)b.rgb[i]));
-        }
-        check(worst < 1e-5, "lf_untextured_unchanged", "largest difference %g", worst);
+    {   /* untextured: the level filter changes nothing */
+        double worst = untextured_diff(1u, W, H, &a, &b);
+        check(worst >= 0.0 && worst < 1e-5, "lf_untextured_unchanged", "largest difference %g",
+              worst);
     }
     cfg = fovsdf_config_default();
     cfg.level_filter = 3;
@@ -650,25 +660,9 @@ static void test_refine(void)
               "%llu against %llu", (unsigned long long)b.st.evals, (unsigned long long)a.st.evals);
     }
     {   /* untextured (one colour): level_filter 2 is the point samples' image */
-        fovsdf_scene ps;
-        fovsdf_camera cam = cam_make(W, H, 60.0f);
-        double worst = 0.0;
-        fovsdf_scene_init(&ps);
-        ps.dist = plane_sdf;
-        ps.t_max = 30.0f;
-        cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
-        cfg = fovsdf_config_default();
-        cfg.method = FOVSDF_METHOD_CONE_FOV;
-        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-        cfg.acuity.fovea_deg = 3.0f;
-        cfg.quarter_deg = 8.0f;
-        if (render(&cfg, &ps, &cam, &a)) {
-            cfg.level_filter = 2;
-            if (render(&cfg, &ps, &cam, &b))
-                for (i = 0; i < 3 * n; ++i)
-                    worst = fmax(worst, fabs((double)a.rgb[i] - (double)b.rgb[i]));
-        }
-        check(worst < 1e-5, "lf2_untextured_unchanged", "largest difference %g", worst);
+        double worst = untextured_diff(2u, W, H, &a, &b);
+        check(worst >= 0.0 && worst < 1e-5, "lf2_untextured_unchanged", "largest difference %g",
+              worst);
     }
     /* a refined pixel is the full-resolution pixel (the fovea over the whole image; no quarter
        level, so every 2x2 cell's cone is the same) bit for bit */
