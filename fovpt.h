@@ -173,8 +173,9 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    fills the three foveation families from the display (cfg.display; all zero: the camera's
    frustum, off-axis ones included, as fovpt_init derives it) and the eye model (fov_eye, the
    shared MAR(e) = mar0 + slope e of Guenter et al. 2012, one quality knob): cfg.layers (count,
-   radius_deg, stride, spp, bspline = hollow = cell_jitter = 1), cfg.zones (inner_deg,
-   middle_deg, spp[3], bspline = hollow = cell_jitter = 1), cfg.selective.e_deg[5] and
+   radius_deg, stride, spp, bspline = hollow = cell_jitter = 1, clamp_white =
+   FOVPT_ACUITY_CLAMP_WHITE), cfg.zones (inner_deg, middle_deg, spp[3], bspline = hollow =
+   cell_jitter = 1, clamp_white = FOVPT_ACUITY_CLAMP_WHITE), cfg.selective.e_deg[5] and
    tau_shape; whichever method cfg.method picks then uses its own family. Every other field
    (method, spp, acuity_budget, blend_deg, overlap_px, n_sd, tau, temporal, display, logger,
    ...) stays as the caller set it; on an error cfg is unchanged and the
@@ -281,6 +282,7 @@ CONFIGURATION (define before including the implementation)
    FOVPT_ACUITY_CELL_JITTER  cell_jitter fovpt_config_acuity sets, 0 or 1  (default 1)
    FOVPT_ACUITY_NOISE_MARGIN fovpt_config_acuity, acuity_budget 0: the coarse layers' spp
                         times this over the equal-noise rule              (default 1)
+   FOVPT_ACUITY_CLAMP_WHITE  clamp_white fovpt_config_acuity sets          (default 1)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
    Shared by the three headers (listed in the shared declarations block below):
@@ -418,7 +420,8 @@ RECENT REVISION HISTORY
                       fields layers.hollow / zones.hollow (no layer traced under a finer one;
                       UNIFORM's streams: a display coarser than the eye costs and shows exactly
                       UNIFORM), layers.cell_jitter / zones.cell_jitter (samples over the
-                      lattice cell: prefiltered), zones.spp[3]; all zero by default (presets'
+                      lattice cell: prefiltered), layers.clamp_white / zones.clamp_white,
+                      zones.spp[3]; all zero by default (presets'
                       images unchanged). fovpt_config_acuity no longer keeps the caller's layer
                       spp (set them after the call to override). The shared block of
                       revision 3: fov_eye's default quality is 0.5 (was 1; fov_eye). Fix: a
@@ -1055,10 +1058,10 @@ FOVPT_API fovpt_config fovpt_config_default(void);
 FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *out);
 FOVPT_API fov_result fovpt_layers_preset(fovpt_layers_cfg *out, uint32_t preset);
 /* Acuity-driven foveation (see ACUITY-DRIVEN CONFIGURATION): fills cfg's layer table (with its
-   spp), zone radii and spp, hollow and cell_jitter, and the selective borders (with the tau_fov
-   slope) from cfg->display (all zero: cam's frustum), the eye (NULL: the defaults),
-   fovpt_eye_plan, cfg->spp (UNIFORM's, the reference) and cfg->acuity_budget; every other
-   field stays as set. Errors through cfg->logger; on error cfg is unchanged. */
+   spp), zone radii and spp, hollow, cell_jitter and clamp_white, and the selective borders
+   (with the tau_fov slope) from cfg->display (all zero: cam's frustum), the eye (NULL: the
+   defaults), fovpt_eye_plan, cfg->spp (UNIFORM's, the reference) and cfg->acuity_budget;
+   every other field stays as set. Errors through cfg->logger; on error cfg is unchanged. */
 FOVPT_API fov_result fovpt_config_acuity(fovpt_config *cfg, const fovpt_camera *cam,
                                          const fov_eye *eye);
 
@@ -4309,12 +4312,12 @@ FOVPT__PRIV void fovpt__acuity_spp(const fov_ecc_model *m, uint32_t W, uint32_t 
     }
     if (!(budget > 0.0f)) {
         /* the band's mean filtered variance sigma^2 cl / spp_n at most UNIFORM's sigma^2 cu /
-           spp_u: spp_n = spp_u cl / cu, times FOVPT_ACUITY_NOISE_MARGIN (1 % slack against
-           rounding a ratio of 1 up) */
+           spp_u: spp_n = spp_u cl / cu, times FOVPT_ACUITY_NOISE_MARGIN, rounded up with a
+           slack of 0.01 sample (a ratio of 1 in float rounding stays spp_u, at any spp_u) */
         for (n = 0; n < nl; ++n) {
             float v = (float)spp_u * cl[n] / cu[n];
             if (d[n] >= 2u) v *= FOVPT_ACUITY_NOISE_MARGIN;
-            v = FOV__FLOOR(v * 0.99f) + 1.0f;
+            v = -FOV__FLOOR(0.01f - v); /* ceil(v - 0.01) */
             spp[n] = (uint32_t)fov__clampf(v, 1.0f, (float)FOVPT_MAX_SPP);
         }
         return;

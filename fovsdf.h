@@ -233,8 +233,9 @@ ACUITY-DRIVEN FOVEATION
      eye-filtered FLIP against a 4-spp ground truth at most 0.001 above classic's), these
      turned the loss at quality 1 into a tie on most scenes: the level filter's box and the
      bilinear blur of texture edges, and the levels' stairs along silhouettes and contacts,
-     were what the eye filter saw (see What the eye notices, below). Set level_filter 1 and
-     the three refine fields 0 after the call for 0.7.0's configuration.
+     were what the eye filter saw (see What the eye notices, below). For 0.7.0's
+     configuration pass an eye with quality 1 and set level_filter 1 and the three refine
+     fields 0 after the call.
    - refine_contrast stays as the caller set it (default 0, off): at 640x360 the quality knob
      buys the same perceived quality for fewer evaluations (primitives: as good as classic
      with refine_contrast 0.1 at a saving of 2.1x, with quality 0.7 at 2.9x).
@@ -8733,10 +8734,10 @@ FOVSDF__PRIV void fovsdf__fov_cells_run(fovsdf__fovt *f, fovsdf__mid *cells, con
                     const fovsdf__wray *r = &f->wv->ray[k]; /* its slot, as shaded */
                     m->lit = (uint8_t)(c->cfg.level_filter == 2u && r->lit);
                     m->nok = (uint8_t)r->lit;
-                    m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
+                    m->n[0] = m->n[1] = m->n[2] = 0.0f;
+                    if (r->lit) { m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2]; }
                     if (m->lit) { /* the pixels take the albedo at their own points */
                         m->rgb[0] = r->acc[0]; m->rgb[1] = r->acc[1]; m->rgb[2] = r->acc[2];
-                        m->n[0] = r->n[0]; m->n[1] = r->n[1]; m->n[2] = r->n[2];
                     } else {
                         m->rgb[0] = rgb[3u * k]; m->rgb[1] = rgb[3u * k + 1u];
                         m->rgb[2] = rgb[3u * k + 2u];
@@ -8968,12 +8969,13 @@ FOVSDF__PRIV const float *fovsdf__tap_rgb(const fovsdf_ctx *c, const fovsdf__mid
    others' (2: no normal yet). The cosine to the first normal, not every pair: at most twice
    the angle. */
 FOVSDF__PRIV void fovsdf__depth_range(const fovsdf__mid *m, float *lo, float *hi, uint32_t *nhit,
-                                      uint32_t *ntap, int32_t *mat, float nf[3], float *ncos)
+                                      uint32_t *ntap, int32_t *mat, int *mixed, float nf[3],
+                                      float *ncos)
 {
     ++*ntap;
     if (m->kind == FOVSDF_MISS) return;
     if (*nhit == 0u) *mat = m->mat;
-    else if (*mat != m->mat) *mat = -2; /* two materials */
+    else if (*mat != m->mat) *mixed = 1; /* two materials (any int32_t is a material id) */
     if (m->nok && *ncos > 1.5f) { /* the first normal */
         nf[0] = m->n[0]; nf[1] = m->n[1]; nf[2] = m->n[2];
         *ncos = 1.0f;
@@ -9050,6 +9052,7 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
               yhi = -3.4e38f, tlo = 3.4e38f, thi = 0.0f;
         uint32_t nhit = 0, ntap = 0;
         int32_t tmat = -1;
+        int tmix = 0;
         float tnf[3] = { 0.0f, 0.0f, 0.0f }, tncos = 2.0f; /* 2: no normal yet */
         const int rd = f->refine;
         const int rmat = c->cfg.refine_material != 0u;
@@ -9075,7 +9078,8 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                     col[0] += wt * mc[0]; col[1] += wt * mc[1];
                     col[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
-                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, &tmix, tnf,
+                                                &tncos);
                 }
         }
         if (s > 0.0f) { /* the quarter level, bilinear (weights 5/8 .. 3/8 per axis), blended */
@@ -9095,7 +9099,8 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
                     cq[0] += wt * mc[0]; cq[1] += wt * mc[1];
                     cq[2] += wt * mc[2];
                     if (c->cfg.refine_contrast > 0.0f) fovsdf__lum_range(m->rgb, &ylo, &yhi);
-                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, tnf, &tncos);
+                    if (rd) fovsdf__depth_range(m, &tlo, &thi, &nhit, &ntap, &tmat, &tmix, tnf,
+                                                &tncos);
                 }
             for (a = 0; a < 3; ++a) col[a] = (1.0f - s) * col[a] + s * cq[a];
             if (s >= 0.5f) own = oq;
@@ -9107,7 +9112,7 @@ FOVSDF__PRIV int fovsdf__fov_pixel(fovsdf__fovt *f, uint32_t x, uint32_t y, uint
             return fovsdf__fov_pixel(f, x, y, ps, due, o);
         }
         if (rd && nhit > 0u &&
-            ((nhit < ntap && c->cfg.refine_depth > 0.0f) || (tmat == -2 && rmat) ||
+            ((nhit < ntap && c->cfg.refine_depth > 0.0f) || (tmix && rmat) ||
              tncos < rncos ||
              (c->cfg.refine_depth > 0.0f && thi - tlo > c->cfg.refine_depth * tlo))) {
             /* refined: the taps say a silhouette, another object or a crease; trace the pixel */

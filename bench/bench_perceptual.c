@@ -289,6 +289,7 @@ static int variant_apply(const char *v, size_t n, fovsdf_config *cfg)
         if (k - i >= sizeof buf || k - i < 2) return 0;
         memcpy(buf, v + i, k - i); buf[k - i] = 0;
         x = atof(buf + 2);
+        if (!(x >= 0.0 && x <= 1e6)) return 0; /* every part's value: a count or a threshold */
         if (!strncmp(buf, "rd", 2)) cfg->refine_depth = (float)x;
         else if (!strncmp(buf, "rc", 2)) cfg->refine_contrast = (float)x;
         else if (!strncmp(buf, "lf", 2)) cfg->level_filter = (uint32_t)x;
@@ -323,6 +324,7 @@ static int lp_prefilter(const fovlp_ctx *lp, lpsdf_user *user, float *smp, uint3
     for (i = 0; ok && i < n; i += 65536u) {
         size_t e = i + 65536u < n ? i + 65536u : n;
         uint32_t *cnt = (uint32_t *)calloc(e - i, sizeof(uint32_t));
+        if (!cnt) { ok = 0; break; }
         m = 0;
         for (j = i; j < e; ++j) {
             uint32_t slot = s[j].slot, a, b;

@@ -352,6 +352,7 @@ static void test_cubic(void)
     uint32_t k, x, y;
     fov_result r;
     int ok = make(&dc, 1.0f, &cfg[0]) == FOV_OK;
+    e[0].mem = e[1].mem = NULL; /* freed below whatever failed */
     check(ok && cfg[0].recon == (uint32_t)FOVLP_RECON_CUBIC, "acuity_selects_cubic", "%u",
           (unsigned)cfg[0].recon);
     cfg[1] = cfg[0];

@@ -652,8 +652,12 @@ static void t_hollow(void)
     f = 0.5 * H / tan(30.0 * 3.14159265358979 / 180.0);
     c.method = FOVPT_METHOD_LAYERS;
     c.layers.hollow = 1;
-    check(smem != NULL && render_cfg(&sc, &c, &cam, g, NULL, &s1, &ctx, &mem) == FOV_OK,
-          "hollow: preset renders", "-");
+    if (!check(smem != NULL && render_cfg(&sc, &c, &cam, g, NULL, &s1, &ctx, &mem) == FOV_OK,
+               "hollow: preset renders", "-")) {
+        free(mem);
+        free(smem);
+        return;
+    }
     for (n = 0; n < ctx.lay.count; ++n) {
         double d = (double)ctx.lay.layer[n].stride, b = (double)ctx.lay.blend_deg;
         double hi = n ? (double)ctx.lay.layer[n].radius_deg + 0.5 * b : 1e9;
@@ -738,6 +742,26 @@ static void t_spp(void)
           "spp: acuity at the monitor", "count %u", c.layers.count);
     check(c.layers.layer[c.layers.count - 1].spp == 4, "spp: the stride-1 layer takes cfg.spp", "%u",
           c.layers.layer[c.layers.count - 1].spp);
+    {   /* any cfg.spp: the stride-1 layer and the inner zone take it exactly (a ratio of 1) */
+        static const uint32_t big[3] = { 101u, 200u, 1000u };
+        fovpt_config cb;
+        fovpt_camera cc;
+        int okb = 1;
+        for (k = 0; k < 3; ++k) {
+            monitor(&cb, &cc, 1920, 1080, 600.0);
+            cb.method = FOVPT_METHOD_LAYERS;
+            cb.spp = big[k];
+            if (fovpt_config_acuity(&cb, &cc, NULL) != FOV_OK ||
+                cb.layers.layer[cb.layers.count - 1].spp != big[k] || cb.zones.spp[0] != big[k]) {
+                okb = 0;
+                snprintf(why, sizeof why, "spp %u: stride-1 layer %u, inner zone %u", big[k],
+                         cb.layers.layer[cb.layers.count - 1].spp, cb.zones.spp[0]);
+            }
+        }
+        check(okb, "spp: the stride-1 layer and the inner zone take cfg.spp above 100 too", "%s",
+              why);
+        why[0] = 0;
+    }
     for (n = 0; n + 1u < c.layers.count; ++n) {
         uint32_t d = c.layers.layer[n].stride, sp = c.layers.layer[n].spp;
         double ein = (double)c.layers.layer[n + 1].radius_deg, r, lo, hi;
