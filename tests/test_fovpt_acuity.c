@@ -415,6 +415,32 @@ static double sumsq(int f)
     return acc;
 }
 
+/* A Lambert floor (y = -1) under a sphere lamp (emission 3) of radius r at height y: built into
+   sc (materials and shapes in the caller's mat and sh) with the check `name`; the scene's
+   memory (free it), NULL when it did not build */
+static void *lamp_floor_scene(fovpt_scene *sc, fovpt_material mat[2], fovpt_shape sh[2], float y,
+                              float r, const char *name)
+{
+    fovpt_scene_desc desc;
+    size_t sb = 0;
+    void *smem;
+    float p0[3] = { 0.0f, -1.0f, 0.0f }, nrm[3] = { 0.0f, 1.0f, 0.0f };
+    fovpt_material_init(&mat[0]);
+    fovpt_material_init(&mat[1]);
+    mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 3.0f;
+    fovpt_shape_plane(&sh[0], p0, nrm, 0);
+    fovpt_shape_sphere(&sh[1], 0.0f, y, 0.0f, r, 1);
+    fovpt_scene_desc_init(&desc);
+    desc.shapes = sh; desc.num_shapes = 2; desc.materials = mat; desc.num_materials = 2;
+    fovpt_scene_size(&desc, &sb);
+    smem = malloc(sb + 16u);
+    if (!check(smem != NULL && fovpt_scene_build(sc, &desc, smem, sb) == FOV_OK, name, "-")) {
+        free(smem);
+        return NULL;
+    }
+    return smem;
+}
+
 /* layers.bspline and zones.bspline: a flat, noisy field (a Lambert floor under a sphere lamp,
    path traced) reconstructed from a stride-4 lattice: the B-spline's per-pixel noise variance
    against Catmull-Rom's (LAYERS) or Lanczos-3's (ZONES) should follow the filters' sums of
@@ -423,23 +449,11 @@ static void t_bspline(void)
 {
     fovpt_material mat[2];
     fovpt_shape sh[2];
-    fovpt_scene_desc desc;
     fovpt_scene sc;
-    size_t sb = 0;
-    void *smem;
-    float p0[3] = { 0.0f, -1.0f, 0.0f }, nrm[3] = { 0.0f, 1.0f, 0.0f };
+    void *smem = lamp_floor_scene(&sc, mat, sh, 6.0f, 2.0f, "floor scene builds");
     uint32_t W = 160, H = 120;
     int m, z;
-    fovpt_material_init(&mat[0]);
-    fovpt_material_init(&mat[1]);
-    mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 3.0f;
-    fovpt_shape_plane(&sh[0], p0, nrm, 0);
-    fovpt_shape_sphere(&sh[1], 0.0f, 6.0f, 0.0f, 2.0f, 1);
-    fovpt_scene_desc_init(&desc);
-    desc.shapes = sh; desc.num_shapes = 2; desc.materials = mat; desc.num_materials = 2;
-    fovpt_scene_size(&desc, &sb);
-    smem = malloc(sb + 16u);
-    check(fovpt_scene_build(&sc, &desc, smem, sb) == FOV_OK, "floor scene builds", "-");
+    if (!smem) return;
     for (z = 0; z < 2; ++z) {
         double mean[3], var[3];
         for (m = 0; m < 3; ++m) { /* the method's filter, B-spline, UNIFORM (the mean) */
@@ -812,26 +826,14 @@ static void t_clamp(void)
 {
     fovpt_material mat[2];
     fovpt_shape sh[2];
-    fovpt_scene_desc desc;
     fovpt_scene sc;
-    size_t sb = 0;
-    void *smem;
-    float p0[3] = { 0.0f, -1.0f, 0.0f }, nrm[3] = { 0.0f, 1.0f, 0.0f };
+    void *smem = lamp_floor_scene(&sc, mat, sh, 0.0f, 1.0f, "clamp: scene builds");
     uint32_t W = 120, H = 80, m;
     float *img = (float *)malloc(sizeof(float) * 3u * W * H), mx[2] = { 0.0f, 0.0f };
     fovpt_camera cam;
     fov_gaze g = { 2.0f, 2.0f };
     uint64_t ns = 0;
-    fovpt_material_init(&mat[0]);
-    fovpt_material_init(&mat[1]);
-    mat[1].emission[0] = mat[1].emission[1] = mat[1].emission[2] = 3.0f;
-    fovpt_shape_plane(&sh[0], p0, nrm, 0);
-    fovpt_shape_sphere(&sh[1], 0.0f, 0.0f, 0.0f, 1.0f, 1);
-    fovpt_scene_desc_init(&desc);
-    desc.shapes = sh; desc.num_shapes = 2; desc.materials = mat; desc.num_materials = 2;
-    fovpt_scene_size(&desc, &sb);
-    smem = malloc(sb + 16u);
-    check(fovpt_scene_build(&sc, &desc, smem, sb) == FOV_OK, "clamp: scene builds", "-");
+    if (!smem) { free(img); return; }
     fovpt_camera_init(&cam, W, H);
     for (m = 0; m < 2; ++m) {
         fovpt_config c = fovpt_config_default();

@@ -479,23 +479,34 @@ static void test_quarter(void)
 /* level_filter: the levels' samples take their cell's mean albedo. Against a 16-spp ground
    truth (the image the eye would see), the periphery's error of the checkerboard floor drops;
    an untextured scene's image does not change; bad values are rejected. */
+/* a foveated config without shadows, the fovea only in the mask, a quarter level and the given
+   level filter: the setting of the level-filter and refinement tests */
+static fovsdf_config level_cfg(uint32_t method, float fovea, float quarter, uint32_t lf)
+{
+    fovsdf_config cfg = fovsdf_config_default();
+    cfg.method = method;
+    cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
+    cfg.fov_mask = FOVSDF_MASK_FOVEA;
+    cfg.acuity.fovea_deg = fovea;
+    cfg.quarter_deg = quarter;
+    cfg.level_filter = lf;
+    return cfg;
+}
+
 /* the plane of test_quarter in one colour (untextured), CONE_FOV with a quarter level: the
    largest channel difference between level_filter 0 and level_filter lf (-1: a render failed) */
 static double untextured_diff(uint32_t lf, uint32_t W, uint32_t H, frame_t *a, frame_t *b)
 {
     fovsdf_scene ps;
     fovsdf_camera cam = cam_make(W, H, 60.0f);
-    fovsdf_config cfg = fovsdf_config_default();
+    fovsdf_config cfg = level_cfg(FOVSDF_METHOD_CONE_FOV, 3.0f, 8.0f, 0u);
     double worst = -1.0;
     size_t i, n = (size_t)W * H;
+    cfg.fov_mask = fovsdf_config_default().fov_mask; /* the default mask, as before */
     fovsdf_scene_init(&ps);
     ps.dist = plane_sdf;
     ps.t_max = 30.0f;
     cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
-    cfg.method = FOVSDF_METHOD_CONE_FOV;
-    cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-    cfg.acuity.fovea_deg = 3.0f;
-    cfg.quarter_deg = 8.0f;
     if (render(&cfg, &ps, &cam, a)) {
         cfg.level_filter = lf;
         if (render(&cfg, &ps, &cam, b))
@@ -643,13 +654,7 @@ static void test_refine(void)
        come far closer to full resolution's than with the cell's mean albedo */
     for (m = 0; m < 2; ++m) {
         double e1, e2;
-        cfg = fovsdf_config_default();
-        cfg.method = m ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV;
-        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-        cfg.acuity.fovea_deg = 4.0f;
-        cfg.fov_mask = FOVSDF_MASK_FOVEA;
-        cfg.quarter_deg = 10.0f;
-        cfg.level_filter = 1;
+        cfg = level_cfg(m ? FOVSDF_METHOD_FIPR : FOVSDF_METHOD_CONE_FOV, 4.0f, 10.0f, 1u);
         if (!render(&cfg, &s.bi.scene, &s.bi.camera, &a)) break;
         cfg.level_filter = 2;
         if (!render(&cfg, &s.bi.scene, &s.bi.camera, &b)) break;
@@ -704,13 +709,7 @@ static void test_refine(void)
         int ok = 1, k, which;
         for (which = 0; which < 2; ++which)
             for (k = 0, prev_t = -1, prev_e = 0; k < 3; ++k) {
-                cfg = fovsdf_config_default();
-                cfg.method = FOVSDF_METHOD_CONE_FOV;
-                cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-                cfg.fov_mask = FOVSDF_MASK_FOVEA;
-                cfg.acuity.fovea_deg = 4.0f;
-                cfg.quarter_deg = 10.0f;
-                cfg.level_filter = 2;
+                cfg = level_cfg(FOVSDF_METHOD_CONE_FOV, 4.0f, 10.0f, 2u);
                 if (which == 0) cfg.refine_depth = rd[k];
                 else cfg.refine_normal_deg = rn[k];
                 if (!render(&cfg, &s.bi.scene, &s.bi.camera, &a)) { ok = 0; break; }
@@ -727,13 +726,7 @@ static void test_refine(void)
         ps.dist = wall_sdf;
         ps.t_max = 30.0f;
         cam.pos[0] = 0.0f; cam.pos[1] = 0.0f; cam.pos[2] = 3.0f;
-        cfg = fovsdf_config_default();
-        cfg.method = FOVSDF_METHOD_CONE_FOV;
-        cfg.shading = FOVSDF_SHADE_NO_SHADOWS;
-        cfg.fov_mask = FOVSDF_MASK_FOVEA;
-        cfg.acuity.fovea_deg = 3.0f;
-        cfg.quarter_deg = 8.0f;
-        cfg.level_filter = 2;
+        cfg = level_cfg(FOVSDF_METHOD_CONE_FOV, 3.0f, 8.0f, 2u);
         if (render(&cfg, &ps, &cam, &a)) {
             cfg.refine_depth = 0.05f; cfg.refine_normal_deg = 5.0f; cfg.refine_material = 1;
             if (render(&cfg, &ps, &cam, &b)) {
