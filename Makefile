@@ -62,7 +62,7 @@ $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 # Embree (Debian libembree-dev) gives the reference ray throughput when it is installed
 EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lembree3)
 
-$(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h fovpt.h
+$(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h examples/lp_pt_shade.h fovpt.h fovlp.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
 
@@ -75,7 +75,12 @@ $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
+# fovlp + fovpt: path tracing at fovlp's log-polar positions (fovpt_shade_points), TAA
+$(BUILD)/lp_pt: examples/lp_pt.c examples/lp_pt_shade.h examples/pt_scenes.h fovlp.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic $(BUILD)/lp_pt
 
 demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	./$(BUILD)/sdf_scenes --out out

@@ -262,6 +262,36 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
    bench/pt_acuity.c prints the samples per pixel and savings at three displays (and the
    error by cause after an eye-resolution filter).
 
+SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with fovlp.h)
+   Another header decides where to shade, fovpt shades those image points, the other header
+   reconstructs: fovlp.h's kernel log-polar samples (Meng et al. 2018), as Koskela et al. 2019
+   path trace a regular grid in their Visual-Polar space on the GPU and map it to the screen.
+      fovlp_begin_frame(&lp, gaze, &lcam);                      // fovlp picks the positions
+      fovlp_samples(&lp, 0, fovlp_sample_rows(&lp), smp, cap, &n);
+      fovpt_shade_points(&scene, &cfg, &cam, (uint32_t)n, &smp[0].x, 3, 0, frame, spp,
+                         col, dep, &st);                        // x, y, slot: stride 3 floats
+      for (i = 0; i < n; ++i) copy col[3 i ..] (and dep[i]) to slot smp[i].slot;
+      fovlp_reconstruct_rows(&lp, rgb, sdep, 0, H, img, 0, idep);   // then fovlp_taa_rows
+   examples/lp_pt.c is the whole program (Cornell box, TAA over frames). Point i is
+   (xy[i stride], xy[i stride + 1]) in the camera's image (pixels, continuous, centres at
+   +0.5; off-image points work as in fovpt_camera_ray). Its sample k (k < spp) is exactly
+      fovpt_rng_init(&rng, cfg->seed, first + i, k, frame);     // stream (first + i) mod 2^32
+      fovpt_camera_ray(cam, x, y, org, dir);                    // through the point, no jitter
+      fovpt_radiance(scene, cfg, org, dir, &rng, c_k, stats);
+   and rgb[3 i ..] = (c_0 + ... + c_(spp-1)) / spp, the sum in k order (bit for bit; tested
+   against these calls). The stream is the point's index, not its pixel: two points in one
+   pixel get independent noise; give `first` the index of a batch's first point when you split
+   a list over threads or calls, and a new `frame` each frame (the same frame repeats the
+   noise). t (may be NULL) gets the distance along the unit camera ray to the first surface
+   (FLT_MAX when the ray leaves the scene): the depth fovlp's TAA reprojects with. No pixel
+   filter: the point is the sample (fovlp's TAA jitter moves the points over frames, which
+   anti-aliases). The config's method, foveation tables, temporal and display fields are not
+   read (mode, max_depth, rr_start, no_nee, seed and logger are); spp 0 takes cfg->spp.
+   Every pointer, the config, the camera and every point are checked before any work (NULL:
+   FOV_ERR_NULL; a NaN or infinite x or y: FOV_ERR_NOT_FINITE; a point whose ray overflows:
+   FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
+   on an error nothing is written. stats: samples and camera_rays n spp, plus the paths' rays.
+
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
    - keep any global or thread-local state;
@@ -407,6 +437,13 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Kay & Kajiya 1986  T. L. Kay, J. T. Kajiya, "Ray Tracing Complex Scenes", SIGGRAPH 1986.
    Moller & Trumbore 1997  T. Moller, B. Trumbore, "Fast, Minimum Storage Ray-Triangle
                     Intersection", Journal of Graphics Tools 2(1), 1997.
+   Koskela et al. 2019  M. Koskela, A. Lotvonen, M. Makitalo, P. Kivi, T. Viitanen,
+                    P. Jaaskelainen, "Foveated Real-Time Path Tracing in Visual-Polar Space",
+                    Eurographics Symposium on Rendering (EGSR, DL-only and Industry Track),
+                    2019. (path tracing in a polar sample space, fovpt_shade_points)
+   Meng et al. 2018 X. Meng, R. Du, M. Zwicker, A. Varshney, "Kernel Foveated Rendering",
+                    Proceedings of the ACM on Computer Graphics and Interactive Techniques
+                    1(1), article 5, 2018. (the kernel log-polar mapping of fovlp.h)
    Duff et al. 2017 T. Duff, J. Burgess, P. Christensen, C. Hery, A. Kensler, M. Liani,
                     R. Villemin, "Building an Orthonormal Basis, Revisited", Journal of
                     Computer Graphics Techniques 6(1), 2017.
@@ -1137,6 +1174,19 @@ FOVPT_API void fovpt_bsdf_eval(const fovpt_material *m, const float n[3], const 
 FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *resolved,
                                     const float org[3], const float dir[3], fovpt_rng *rng,
                                     float rgb[3], fovpt_stats *stats);
+
+/* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar
+   samples; see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1])
+   (stride in floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each
+   (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame)
+   through exactly that point (fovpt_camera_ray, no jitter), fovpt_radiance's estimator; rgb
+   gets the mean (3 floats per point), t (may be NULL) the first-hit distance along the unit
+   camera ray (FLT_MAX: a miss). Everything is checked before any work: FOV_ERR_NULL,
+   _NOT_FINITE, _INVALID_ARG, _LIMIT, the camera's errors. stats is added to. */
+FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *scene, const fovpt_config *resolved,
+                                        const fovpt_camera *cam, uint32_t n, const float *xy,
+                                        uint32_t stride, uint32_t first, uint32_t frame,
+                                        uint32_t spp, float *rgb, float *t, fovpt_stats *stats);
 
 /* Eccentricity (the shared model; see fov_display): the same semantics as fovsdf_ecc_*. */
 FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *display,
@@ -4034,6 +4084,81 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (!fov__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
+    }
+    return FOV_OK;
+}
+
+/* ---- shading image points (fovpt_shade_points: fovlp's log-polar samples) ------------------ */
+FOVPT__PRIV fov_result fovpt__cam_fail(const fov_logger *lg, fov_result e, const char *who,
+                                       uint32_t line);
+FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config *c,
+                                        const fovpt_camera *cam, uint32_t n, const float *xy,
+                                        uint32_t stride, uint32_t first, uint32_t frame,
+                                        uint32_t spp, float *rgb, float *t, fovpt_stats *stats)
+{
+    float r[3], u[3], f[3], t4[4], o[3];
+    uint32_t i, k, W, H;
+    fovpt_stats st;
+    fov_result e;
+    if (!c) return FOV_ERR_NULL;
+    if (!s || !cam || (n && (!xy || !rgb)))
+        FOVPT__FAIL(&c->logger, FOV_ERR_NULL, "shade_points: scene, cam, xy and rgb are required");
+    if (!s->prims && !s->user_hit && s->num_prims)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "shade_points: scene not built (call fovpt_scene_build)");
+    if (c->mode >= (uint32_t)_FOVPT_MODE_NUM)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: c.mode unknown (see fovpt_mode)");
+    if (c->max_depth > FOVPT_MAX_BOUNCES ||
+        (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "shade_points: c.max_depth above FOVPT_MAX_BOUNCES (Whitted: FOVPT_MAX_WHITTED)");
+    if (stride == 0) stride = 2;
+    if (stride < 2)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: stride must be 0 or >= 2");
+    if (spp == 0) spp = c->spp ? c->spp : 1u;
+    if (spp > FOVPT_MAX_SPP)
+        FOVPT__FAIL(&c->logger, FOV_ERR_LIMIT, "shade_points: spp above FOVPT_MAX_SPP");
+    /* the largest index read or written, (n - 1) max(stride, 3) + 2 floats, within size_t */
+    if (n && (uint64_t)n * (stride > 3u ? stride : 3u) > (uint64_t)(SIZE_MAX / sizeof(float)))
+        FOVPT__FAIL(&c->logger, FOV_ERR_LIMIT, "shade_points: n points overflow size_t");
+    e = fovpt__camera_setup(cam, r, u, f, t4, o);
+    if (e != FOV_OK) return fovpt__cam_fail(&c->logger, e, FOV__MSG("shade_points"), __LINE__);
+    W = cam->width; H = cam->height;
+    for (i = 0; i < n; ++i) { /* every point is checked before any work */
+        float d[3], x = xy[(size_t)i * stride], y = xy[(size_t)i * stride + 1u];
+        if (!fov__finite(x) || !fov__finite(y))
+            FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE,
+                        "shade_points: a point's x or y is NaN or infinite");
+        if (!(fovpt__primary(r, u, f, t4, W, H, x, y, d) > 0.0f))
+            FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                        "shade_points: a point so far off the image that its ray overflows");
+    }
+    FOV_MEMSET(&st, 0, sizeof st);
+    for (i = 0; i < n; ++i) {
+        float d[3], sum[3] = { 0.0f, 0.0f, 0.0f };
+        float x = xy[(size_t)i * stride], y = xy[(size_t)i * stride + 1u];
+        (void)fovpt__primary(r, u, f, t4, W, H, x, y, d);
+        for (k = 0; k < spp; ++k) {
+            fovpt_rng rng;
+            fovpt__attr at;
+            float c3[3];
+            at.pt = -1.0f;
+            fovpt_rng_init(&rng, c->seed, first + i, k, frame);
+            (void)fovpt__radiance(s, c, o, d, &rng, c3, &st, (k == 0u && t) ? &at : NULL);
+            if (k == 0u && t) t[i] = at.pt >= 0.0f ? at.pt : FLT_MAX;
+            sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+        }
+        rgb[3u * (size_t)i] = sum[0] / (float)spp;
+        rgb[3u * (size_t)i + 1u] = sum[1] / (float)spp;
+        rgb[3u * (size_t)i + 2u] = sum[2] / (float)spp;
+    }
+    st.samples = (uint64_t)n * spp;
+    st.camera_rays = st.samples;
+    st.rays = st.camera_rays + st.bounce_rays + st.shadow_rays;
+    if (stats) {
+        stats->samples += st.samples; stats->camera_rays += st.camera_rays;
+        stats->bounce_rays += st.bounce_rays; stats->shadow_rays += st.shadow_rays;
+        stats->rays += st.rays; stats->bad_samples += st.bad_samples;
     }
     return FOV_OK;
 }

@@ -58,5 +58,20 @@ if $CC -std=c99 -O2 $W -I. examples/lp_sdf.c -lm -o build/examples/lp_sdf; then
 else
     bad "lp_sdf build"
 fi
+# fovlp + fovpt: path tracing at the log-polar positions, TAA over frames, a PPM of the last
+if $CC -std=c99 -O2 $W -I. examples/lp_pt.c -lm -o build/examples/lp_pt; then
+    ok "lp_pt builds with $W"
+    rm -f build/examples/lp_pt.ppm
+    if out=$(build/examples/lp_pt --width 160 --height 120 --frames 3 --out build/examples/lp_pt.ppm 2>&1) \
+       && [ "$(head -c 15 build/examples/lp_pt.ppm)" = "$(printf 'P6\n160 120\n255')" ] \
+       && [ "$(stat -c %s build/examples/lp_pt.ppm)" -eq $((15 + 160 * 120 * 3)) ] \
+       && [ "$(echo "$out" | grep -c '^frame ')" -eq 3 ]; then
+        ok "lp_pt writes a 160x120 PPM after 3 frames"
+    else
+        bad "lp_pt output: $(echo "$out" | tail -2 | tr '\n' ' ')"
+    fi
+else
+    bad "lp_pt build"
+fi
 echo "$P passed, $F failed"
 [ "$F" -eq 0 ]
