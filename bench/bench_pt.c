@@ -5,7 +5,7 @@
                             Whitted; every method and budget; about 10-15 minutes here)
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
-                    [--threads N] [--temporal]
+                    [--threads N] [--temporal] [--lp]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
                     box's fovea error falls with spp, see README)
@@ -17,7 +17,10 @@
      system of Axblad 2020, Sec. 3.1.3, uses 4), layers (Axblad 2020, 6/10/20 deg as radii),
      layers_diam (as diameters), zones (Polychronakis 2025, ch. 4), whitted1 (UNIFORM
      Whitted, 1 spp), selective (Kim et al. 2021), jin (Jin et al. 2009); the papers are
-     listed in full at the end of this comment.
+     listed in full at the end of this comment. lp_cfov, lp_cfov_taa, lp_acuity,
+     lp_acuity_taa: path tracing at fovlp.h's log-polar positions (fovpt_shade_points; Koskela
+     et al. 2019 on the GPU), see "path tracing in log-polar space" below; --lp runs only them
+     and the rows they sit beside.
    - budget: which budget the row was given.
        default          the method's own settings (the rows above).
        eqrays_<m>       method uniform_eq: UNIFORM at the spp whose camera rays match method
@@ -63,7 +66,10 @@
 #define _POSIX_C_SOURCE 200809L
 #define FOVPT_IMPLEMENTATION
 #include "fovpt.h"
+#define FOVLP_IMPLEMENTATION
+#include "fovlp.h"
 #include "examples/pt_scenes.h"
+#include "examples/lp_pt_shade.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -578,6 +584,137 @@ static void row(FILE *csv, const char *scene, const char *method, const char *ga
     else fprintf(csv, "nan,%u\n", spp_f);
 }
 
+/* ---- path tracing in log-polar space: fovlp decides where, fovpt shades, fovlp reconstructs -
+   (examples/lp_pt.c's pipeline; Koskela et al. 2019 = M. Koskela, A. Lotvonen, M. Makitalo,
+   P. Kivi, T. Viitanen, P. Jaaskelainen, "Foveated Real-Time Path Tracing in Visual-Polar
+   Space", EGSR 2019, do this on the GPU; the mapping is fovlp.h's kernel log-polar one, Meng et
+   al. 2018, "Kernel Foveated Rendering", with Andersson & Hansson 2020's gaze disc).
+   Rows (mode path, fovpt_config_default's path tracer, as uniform4):
+     lp_cfov          fovlp's C Fov preset (Andersson & Hansson 2020, Table 5.1), one frame;
+                      default: 4 path samples per position (uniform4's spp); eqtime_uniform4:
+                      the samples per position scaled to uniform4's time
+     lp_cfov_taa      the same over F frames of fovlp's TAA (still camera and gaze, the jitter
+                      moves the positions; the image is the last TAA output), eqtime_uniform4:
+                      the whole sequence takes uniform4's time (F = 16, one Halton cycle, with
+                      the spp per frame scaled; fewer frames at 1 spp when 16 do not fit)
+     lp_acuity, lp_acuity_taa   the same with fovlp_config_acuity (the eye model, quality 0.5,
+                      at the camera's field of view; Catmull-Rom reconstruction)
+   time_ms: the thread CPU time of every frame (sample list, path tracing, reconstruction, TAA);
+   camera_rays: the positions shaded x spp, summed over the frames; spp_fovea: path samples per
+   fovea pixel in the output (spp per frame x frames: the gaze disc shades every pixel once). */
+static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32_t frames, uint32_t spp, float *img,
+                        fovpt_stats *st, double *shaded_pct)
+{
+    fovlp_config lc = *lc0;
+    fovlp_ctx lp;
+    fovlp_camera lcam;
+    fovpt_config pc = fovpt_config_default();
+    size_t bytes = 0, np = (size_t)S->cam.width * S->cam.height;
+    void *mem;
+    float *smp, *sdep, *cur, *cdep, *hist[2], *hdep[2];
+    uint8_t *age[2];
+    uint32_t f, H = S->cam.height;
+    int ping = 0, a, ok = 1;
+    double t0, t;
+    memset(st, 0, sizeof *st);
+    lc.taa.enable = frames > 1 ? 1u : 0u;
+    if (fovlp_camera_from(&S->cam, &lcam) != FOV_OK || fovlp_memory_size(&lc, &bytes) != FOV_OK) return -1.0;
+    mem = malloc(bytes);
+    if (fovlp_init(&lp, &lc, mem, bytes) != FOV_OK) { free(mem); return -1.0; }
+    smp = (float *)calloc((size_t)lp.geo.samples * 3u, sizeof(float));
+    sdep = (float *)calloc(lp.geo.samples, sizeof(float));
+    cur = (float *)malloc(np * 12u);
+    cdep = (float *)malloc(np * 4u);
+    for (a = 0; a < 2; ++a) {
+        hist[a] = (float *)calloc(np * 3u, sizeof(float));
+        hdep[a] = (float *)calloc(np, sizeof(float));
+        age[a] = (uint8_t *)calloc(np, 1);
+    }
+    *shaded_pct = 0.0;
+    t0 = cpu_ms();
+    for (f = 0; f < frames && ok; ++f) {
+        lppt_user u;
+        memset(&u, 0, sizeof u);
+        u.scene = &S->scene; u.cfg = &pc; u.cam = &S->cam; u.frame = f; u.spp = spp;
+        ok = fovlp_begin_frame(&lp, g, &lcam) == FOV_OK && lppt_shade_samples(&lp, 0, fovlp_sample_rows(&lp), &u, smp, sdep) == FOV_OK &&
+             fovlp_reconstruct_rows(&lp, smp, sdep, 0, H, lc.taa.enable ? cur : img, 0, cdep) == FOV_OK;
+        if (ok && lc.taa.enable) {
+            fovlp_taa_io io;
+            fovlp_taa_io_init(&io);
+            io.cur_rgb = cur; io.cur_depth = cdep;
+            io.prev_rgb = hist[ping]; io.prev_depth = hdep[ping]; io.prev_age = age[ping];
+            io.out_rgb = f + 1u == frames ? img : hist[1 - ping]; io.out_depth = hdep[1 - ping]; io.out_age = age[1 - ping];
+            ok = fovlp_taa_rows(&lp, &io, 0, H, NULL) == FOV_OK;
+            ping = 1 - ping;
+        }
+        fovpt_stats_add(st, &u.stats);
+    }
+    t = cpu_ms() - t0;
+    if (ok) {
+        fovlp_counts cnt;
+        if (fovlp_count_samples(&lp, &cnt) == FOV_OK) *shaded_pct = (double)cnt.shaded_pct;
+    }
+    free(mem); free(smp); free(sdep); free(cur); free(cdep);
+    for (a = 0; a < 2; ++a) { free(hist[a]); free(hdep[a]); free(age[a]); }
+    return ok ? t : -1.0;
+}
+
+/* x path samples per position in all (frame-spp units) as frames x spp: one frame without TAA,
+   else 16 frames (one Halton cycle) with the spp scaled, or fewer frames at 1 spp */
+static void lp_split(double x, int taa, uint32_t *frames, uint32_t *spp)
+{
+    if (!taa) { *frames = 1; *spp = spp_of(x); return; }
+    if (x >= 16.0) { *frames = 16; *spp = spp_of(x / 16.0); return; }
+    *frames = x >= 2.0 ? (uint32_t)(x + 0.5) : 2u;
+    *spp = 1;
+}
+
+/* The lp_ rows of one scene and gaze beside uniform4 (time t_u4, fovea PSNR f1_u4) */
+static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc, size_t np,
+                    double t_u4, double f1_u4, float *img)
+{
+    int v, taa;
+    for (v = 0; v < 2; ++v) {
+        fovlp_config lc = fovlp_config_preset(FOVLP_PRESET_C_FOV, S->cam.width, S->cam.height);
+        fovlp_camera lcam;
+        fovpt_stats st;
+        double t_p, t, ps[5], pct = 0.0;
+        const char *base = v ? "lp_acuity" : "lp_cfov";
+        lc.cam_fov_y_deg = S->cam.fov_y_deg;
+        if (v && (fovlp_camera_from(&S->cam, &lcam) != FOV_OK || fovlp_config_acuity(&lc, &lcam, NULL) != FOV_OK)) {
+            printf("  %-12s fovlp_config_acuity: no reduction at this display (skipped)\n", base);
+            continue;
+        }
+        /* the pilot: one frame, 4 spp per position (uniform4's spp): the default row */
+        t_p = lp_render(S, &lc, g, 1, 4, img, &st, &pct);
+        if (t_p <= 0.0) { printf("  %-12s failed\n", base); continue; }
+        psnr_fields(img, ref, ecc, np, ps);
+        row(csv, nm, base, gz, "default", &st, t_p, ps, 0, t_u4, -1.0, 4);
+        printf("  %-12s %9.1f ms (%.1f %% of the pixels shaded) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  speedup %.2f\n", base, t_p, pct,
+               ps[0], ps[1], ps[2], ps[3], ps[4], t_u4 / t_p);
+        for (taa = 0; taa < 2; ++taa) {
+            double x = 4.0 * t_u4 / t_p, t1 = t_p, x1 = 4.0;
+            uint32_t fr = 1, spp = 4;
+            int it;
+            char mname[64];
+            for (it = 0; it < 2; ++it) { /* equal time: from the pilot, corrected once along the secant */
+                double xn;
+                lp_split(x, taa, &fr, &spp);
+                t = lp_render(S, &lc, g, fr, spp, img, &st, &pct);
+                if (t <= 0.0 || fabs(t / t_u4 - 1.0) <= 0.08 || it == 1) break;
+                xn = (t > t1 && x != x1) ? x + (t_u4 - t) * (x - x1) / (t - t1) : x * t_u4 / t;
+                x1 = x; t1 = t; x = xn;
+            }
+            if (t <= 0.0) continue;
+            psnr_fields(img, ref, ecc, np, ps);
+            snprintf(mname, sizeof mname, "%s%s", base, taa ? "_taa" : "");
+            row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fr * spp);
+            printf("  %-14s at uniform4's time (%.1f ms): %8.1f ms, %u frame(s) x %u spp, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
+                   " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fr, spp, ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
+        }
+    }
+}
+
 /* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
 static void usage(FILE *f)
 {
@@ -588,6 +725,9 @@ static void usage(FILE *f)
           "  --throughput        only the fovpt / Embree ray-rate rows\n"
           "  --temporal          only pt_temporal.csv, written beside FILE\n"
           "  --fovea-spp         prints how the Cornell box's fovea error falls with spp\n"
+          "  --lp                only the lp_ rows (fovlp + fovpt) and the rows they sit beside\n"
+          "                      (uniform4, layers, layers_diam, zones, selective default, the\n"
+          "                      eqtime_uniform4 rows), to FILE (default build/pt_lp.csv)\n"
           "  --w W, --h H        image size (default 320 x 240)\n"
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
           "  --threads N         render threads (default 2)\n"
@@ -598,7 +738,7 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, threads = 2, i, sc, gi;
+    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, out_set = 0, threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv;
     double t_start = now_ms();
@@ -608,14 +748,16 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--throughput")) only_tp = 1;
         else if (!strcmp(argv[i], "--temporal")) only_temporal = 1;
+        else if (!strcmp(argv[i], "--lp")) only_lp = 1;
         else if (!strcmp(argv[i], "--fovea-spp")) { fovea_spp_curve(); return 0; }
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
-        else if (!strcmp(argv[i], "--out") && i + 1 < argc) out_path = argv[++i];
+        else if (!strcmp(argv[i], "--out") && i + 1 < argc) { out_path = argv[++i]; out_set = 1; }
         else { fprintf(stderr, "unknown option %s\n", argv[i]); usage(stderr); return 2; }
     }
+    if (only_lp && !out_set) out_path = "build/pt_lp.csv"; /* pt.csv is left alone */
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
     if (only_temporal) { /* pt_temporal.csv beside --out only */
@@ -661,6 +803,7 @@ int main(int argc, char **argv)
             for (m = 0; m < 8; ++m) {
                 double ps[5];
                 int whitted = m >= 5;
+                if (only_lp && (m == 1 || m == 5 || m == 7)) { t_m[m] = 1.0; continue; }
                 method_cfg(&c, (int)m);
                 t = render(&S, &c, g, img, &st, 1);
                 if (m == 0) t_u4 = t;
@@ -674,7 +817,7 @@ int main(int argc, char **argv)
                        (double)st.rays / (t * 1e3), ps[0], ps[1], ps[2], ps[3], ps[4], t_u4 / t);
             }
             /* equal ray budget: UNIFORM at the camera-ray count of each foveated method */
-            for (m = 2; m < 8; ++m) {
+            for (m = 2; m < 8 && !only_lp; ++m) {
                 double ps[5];
                 uint32_t spp = (uint32_t)((double)cam_rays[m] / (double)np + 0.5);
                 int whitted = m >= 5;
@@ -705,8 +848,10 @@ int main(int argc, char **argv)
                            " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
                 }
             }
+            /* path tracing in log-polar space (fovlp + fovpt): the lp_ rows */
+            lp_rows(csv, &S, nm, gz, g, ref_p, ecc, np, t_u4, f1_u4, img);
             /* equal time, 2: UNIFORM at the spp whose time matches each foveated method's */
-            for (m = 2; m < 8; ++m) {
+            for (m = 2; m < 8 && !only_lp; ++m) {
                 double ps[5];
                 int whitted = m >= 5;
                 double unit = whitted ? t_m[5] : t_m[1];
@@ -728,8 +873,8 @@ int main(int argc, char **argv)
         pt_scene_free(&S);
         free(ref_p); free(ref_w); free(img); free(ecc);
     }
-    if (!quick) throughput_rows(csv, W, H);
-    if (!only_tp) {
+    if (!quick && !only_lp) throughput_rows(csv, W, H);
+    if (!only_tp && !only_lp) {
         char tpath[1024];
         const char *sl = strrchr(out_path, '/');
         snprintf(tpath, sizeof tpath, "%.*spt_temporal.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
@@ -739,7 +884,7 @@ int main(int argc, char **argv)
     printf("wrote %s (%.0f s)\n", out_path, (now_ms() - t_start) * 1e-3);
     /* plots next to the CSV: pt_<scene>.png, speed-up over uniform4 against fovea PSNR (f1)
        and near-periphery PSNR (f4), every method, both gazes */
-    if (!only_tp && system("command -v gnuplot > /dev/null 2>&1") == 0) {
+    if (!only_tp && !only_lp && system("command -v gnuplot > /dev/null 2>&1") == 0) {
         FILE *gp = popen("gnuplot", "w");
         const char *slash = strrchr(out_path, '/');
         int dirlen = slash ? (int)(slash - out_path + 1) : 0;
@@ -759,7 +904,7 @@ int main(int argc, char **argv)
             pclose(gp);
             printf("plots next to %s: pt_<scene>.png\n", out_path);
         }
-    } else if (!only_tp) {
+    } else if (!only_tp && !only_lp) {
         printf("gnuplot not installed: no plots (apt-get install gnuplot-nox)\n");
     }
     return 0;
