@@ -268,7 +268,7 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    path trace a regular grid in their Visual-Polar space on the GPU and map it to the screen.
       fovlp_begin_frame(&lp, gaze, &lcam);                      // fovlp picks the positions
       fovlp_samples(&lp, 0, fovlp_sample_rows(&lp), smp, cap, &n);
-      fovpt_shade_points(&scene, &cfg, &cam, (uint32_t)n, &smp[0].x, 3, 0, frame, spp,
+      fovpt_shade_points(&scene, &cfg, &cam, (uint32_t)n, &smp[0].x, 3, 0, frame, spp, 0.0f,
                          col, dep, &st);                        // x, y, slot: stride 3 floats
       for (i = 0; i < n; ++i) copy col[3 i ..] (and dep[i]) to slot smp[i].slot;
       fovlp_reconstruct_rows(&lp, rgb, sdep, 0, H, img, 0, idep);   // then fovlp_taa_rows
@@ -276,20 +276,25 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    (xy[i stride], xy[i stride + 1]) in the camera's image (pixels, continuous, centres at
    +0.5; off-image points work as in fovpt_camera_ray). Its sample k (k < spp) is exactly
       fovpt_rng_init(&rng, cfg->seed, first + i, k, frame);     // stream (first + i) mod 2^32
-      fovpt_camera_ray(cam, x, y, org, dir);                    // through the point, no jitter
+      if (jitter > 0) { x += (fovpt_rng_next(&rng) - 0.5f) * jitter;    // in this order
+                        y += (fovpt_rng_next(&rng) - 0.5f) * jitter; }
+      fovpt_camera_ray(cam, x, y, org, dir);
       fovpt_radiance(scene, cfg, org, dir, &rng, c_k, stats);
    and rgb[3 i ..] = (c_0 + ... + c_(spp-1)) / spp, the sum in k order (bit for bit; tested
    against these calls). The stream is the point's index, not its pixel: two points in one
    pixel get independent noise; give `first` the index of a batch's first point when you split
    a list over threads or calls, and a new `frame` each frame (the same frame repeats the
-   noise). t (may be NULL) gets the distance along the unit camera ray to the first surface
-   (FLT_MAX when the ray leaves the scene): the depth fovlp's TAA reprojects with. No pixel
-   filter: the point is the sample (fovlp's TAA jitter moves the points over frames, which
-   anti-aliases). The config's method, foveation tables, temporal and display fields are not
-   read (mode, max_depth, rr_start, no_nee, seed and logger are); spp 0 takes cfg->spp.
+   noise). jitter 0: the point is the sample (fovlp's TAA jitter moves the points over
+   frames, which anti-aliases); jitter 1 at pixel centres, first = y W + x0 for the pixels
+   x0, x0 + 1, ... of row y, is UNIFORM's pixel (its box filter and streams: fovpt_render's
+   image bit for bit, tested); a texel's size prefilters a coarser sample. t (may be NULL)
+   gets the distance along sample 0's unit camera ray to the first surface (FLT_MAX when it
+   leaves the scene): the depth fovlp's TAA reprojects with. The config's method, foveation
+   tables, temporal and display fields are not read (mode, max_depth, rr_start, no_nee, seed
+   and logger are); spp 0 takes cfg->spp.
    Every pointer, the config, the camera and every point are checked before any work (NULL:
-   FOV_ERR_NULL; a NaN or infinite x or y: FOV_ERR_NOT_FINITE; a point whose ray overflows:
-   FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
+   FOV_ERR_NULL; a NaN or infinite x, y or jitter: FOV_ERR_NOT_FINITE; a negative jitter, a
+   point whose ray (or its jitter square's corner's) overflows: FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
    on an error nothing is written. stats: samples and camera_rays n spp, plus the paths' rays.
 
 DOES NOT
@@ -1178,15 +1183,18 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *re
 /* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar
    samples; see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1])
    (stride in floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each
-   (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame)
-   through exactly that point (fovpt_camera_ray, no jitter), fovpt_radiance's estimator; rgb
-   gets the mean (3 floats per point), t (may be NULL) the first-hit distance along the unit
-   camera ray (FLT_MAX: a miss). Everything is checked before any work: FOV_ERR_NULL,
-   _NOT_FINITE, _INVALID_ARG, _LIMIT, the camera's errors. stats is added to. */
+   (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame),
+   its ray through the point (jitter 0) or through a point uniform in the jitter x jitter
+   pixels centred on it (the stream's first two numbers; jitter 1 at pixel centres is
+   UNIFORM's box filter, bit for bit), fovpt_radiance's estimator; rgb gets the mean (3 floats
+   per point), t (may be NULL) the first-hit distance along sample 0's unit camera ray
+   (FLT_MAX: a miss). Everything is checked before any work: FOV_ERR_NULL, _NOT_FINITE,
+   _INVALID_ARG, _LIMIT, the camera's errors. stats is added to. */
 FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *scene, const fovpt_config *resolved,
                                         const fovpt_camera *cam, uint32_t n, const float *xy,
                                         uint32_t stride, uint32_t first, uint32_t frame,
-                                        uint32_t spp, float *rgb, float *t, fovpt_stats *stats);
+                                        uint32_t spp, float jitter, float *rgb, float *t,
+                                        fovpt_stats *stats);
 
 /* Eccentricity (the shared model; see fov_display): the same semantics as fovsdf_ecc_*. */
 FOVPT_API fov_result fovpt_ecc_init(fov_ecc_model *m, const fov_display *display,
@@ -4094,9 +4102,10 @@ FOVPT__PRIV fov_result fovpt__cam_fail(const fov_logger *lg, fov_result e, const
 FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config *c,
                                         const fovpt_camera *cam, uint32_t n, const float *xy,
                                         uint32_t stride, uint32_t first, uint32_t frame,
-                                        uint32_t spp, float *rgb, float *t, fovpt_stats *stats)
+                                        uint32_t spp, float jitter, float *rgb, float *t,
+                                        fovpt_stats *stats)
 {
-    float r[3], u[3], f[3], t4[4], o[3];
+    float r[3], u[3], f[3], t4[4], o[3], hj;
     uint32_t i, k, W, H;
     fovpt_stats st;
     fov_result e;
@@ -4115,6 +4124,11 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
     if (stride == 0) stride = 2;
     if (stride < 2)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: stride must be 0 or >= 2");
+    if (!fov__finite(jitter))
+        FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE, "shade_points: jitter NaN or infinite");
+    if (jitter < 0.0f)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: jitter must be >= 0");
+    hj = 0.5f * jitter;
     if (spp == 0) spp = c->spp ? c->spp : 1u;
     if (spp > FOVPT_MAX_SPP)
         FOVPT__FAIL(&c->logger, FOV_ERR_LIMIT, "shade_points: spp above FOVPT_MAX_SPP");
@@ -4129,7 +4143,10 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
         if (!fov__finite(x) || !fov__finite(y))
             FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE,
                         "shade_points: a point's x or y is NaN or infinite");
-        if (!(fovpt__primary(r, u, f, t4, W, H, x, y, d) > 0.0f))
+        /* sx and sy are each linear in x and y: the square's two extreme corners bound it */
+        if (!(fovpt__primary(r, u, f, t4, W, H, x, y, d) > 0.0f) ||
+            (jitter > 0.0f && (!(fovpt__primary(r, u, f, t4, W, H, x - hj, y - hj, d) > 0.0f) ||
+                               !(fovpt__primary(r, u, f, t4, W, H, x + hj, y + hj, d) > 0.0f))))
             FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                         "shade_points: a point so far off the image that its ray overflows");
     }
@@ -4137,13 +4154,18 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
     for (i = 0; i < n; ++i) {
         float d[3], sum[3] = { 0.0f, 0.0f, 0.0f };
         float x = xy[(size_t)i * stride], y = xy[(size_t)i * stride + 1u];
-        (void)fovpt__primary(r, u, f, t4, W, H, x, y, d);
+        if (!(jitter > 0.0f)) (void)fovpt__primary(r, u, f, t4, W, H, x, y, d);
         for (k = 0; k < spp; ++k) {
             fovpt_rng rng;
             fovpt__attr at;
             float c3[3];
             at.pt = -1.0f;
             fovpt_rng_init(&rng, c->seed, first + i, k, frame);
+            if (jitter > 0.0f) { /* a box filter of jitter pixels (UNIFORM's at 1) */
+                float jx = fovpt_rng_next(&rng), jy = fovpt_rng_next(&rng);
+                (void)fovpt__primary(r, u, f, t4, W, H, x + (jx - 0.5f) * jitter,
+                                     y + (jy - 0.5f) * jitter, d);
+            }
             (void)fovpt__radiance(s, c, o, d, &rng, c3, &st, (k == 0u && t) ? &at : NULL);
             if (k == 0u && t) t[i] = at.pt >= 0.0f ? at.pt : FLT_MAX;
             sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];

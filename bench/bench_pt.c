@@ -17,8 +17,8 @@
      system of Axblad 2020, Sec. 3.1.3, uses 4), layers (Axblad 2020, 6/10/20 deg as radii),
      layers_diam (as diameters), zones (Polychronakis 2025, ch. 4), whitted1 (UNIFORM
      Whitted, 1 spp), selective (Kim et al. 2021), jin (Jin et al. 2009); the papers are
-     listed in full at the end of this comment. lp_cfov, lp_cfov_taa, lp_acuity,
-     lp_acuity_taa: path tracing at fovlp.h's log-polar positions (fovpt_shade_points; Koskela
+     listed in full at the end of this comment. lp_cfov, lp_cfov_taa, lp_cfov_fovea, lp_acuity,
+     lp_acuity_taa, lp_acuity_fovea: path tracing at fovlp.h's log-polar positions (fovpt_shade_points; Koskela
      et al. 2019 on the GPU), see "path tracing in log-polar space" below; --lp runs only them
      and the rows they sit beside.
    - budget: which budget the row was given.
@@ -589,7 +589,9 @@ static void row(FILE *csv, const char *scene, const char *method, const char *ga
    P. Kivi, T. Viitanen, P. Jaaskelainen, "Foveated Real-Time Path Tracing in Visual-Polar
    Space", EGSR 2019, do this on the GPU; the mapping is fovlp.h's kernel log-polar one, Meng et
    al. 2018, "Kernel Foveated Rendering", with Andersson & Hansson 2020's gaze disc).
-   Rows (mode path, fovpt_config_default's path tracer, as uniform4):
+   Rows (mode path, fovpt_config_default's path tracer, as uniform4; the LP positions are shaded
+   as they are; the gaze disc's pixels with fovpt_shade_points' jitter 1, UNIFORM's box filter,
+   in one frame, and at fovlp's jittered positions under TAA):
      lp_cfov          fovlp's C Fov preset (Andersson & Hansson 2020, Table 5.1), one frame;
                       default: 4 path samples per position (uniform4's spp); eqtime_uniform4:
                       the samples per position scaled to uniform4's time
@@ -597,13 +599,15 @@ static void row(FILE *csv, const char *scene, const char *method, const char *ga
                       moves the positions; the image is the last TAA output), eqtime_uniform4:
                       the whole sequence takes uniform4's time (F = 16, one Halton cycle, with
                       the spp per frame scaled; fewer frames at 1 spp when 16 do not fit)
-     lp_acuity, lp_acuity_taa   the same with fovlp_config_acuity (the eye model, quality 0.5,
+     lp_cfov_fovea    one frame, the LP positions at 4 spp and only the gaze disc's (and the
+                      centre sample's) spp raised to uniform4's time (as layers_fovea)
+     lp_acuity, lp_acuity_taa, lp_acuity_fovea   the same with fovlp_config_acuity (the eye model, quality 0.5,
                       at the camera's field of view; Catmull-Rom reconstruction)
    time_ms: the thread CPU time of every frame (sample list, path tracing, reconstruction, TAA);
    camera_rays: the positions shaded x spp, summed over the frames; spp_fovea: path samples per
    fovea pixel in the output (spp per frame x frames: the gaze disc shades every pixel once). */
-static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32_t frames, uint32_t spp, float *img,
-                        fovpt_stats *st, double *shaded_pct)
+static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32_t frames, uint32_t spp, uint32_t spp_disc,
+                        float *img, fovpt_stats *st, fovlp_counts *cnt)
 {
     fovlp_config lc = *lc0;
     fovlp_ctx lp;
@@ -630,13 +634,17 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
         hdep[a] = (float *)calloc(np, sizeof(float));
         age[a] = (uint8_t *)calloc(np, 1);
     }
-    *shaded_pct = 0.0;
+    memset(cnt, 0, sizeof *cnt);
     t0 = cpu_ms();
     for (f = 0; f < frames && ok; ++f) {
         lppt_user u;
         memset(&u, 0, sizeof u);
         u.scene = &S->scene; u.cfg = &pc; u.cam = &S->cam; u.frame = f; u.spp = spp;
-        ok = fovlp_begin_frame(&lp, g, &lcam) == FOV_OK && lppt_shade_samples(&lp, 0, fovlp_sample_rows(&lp), &u, smp, sdep) == FOV_OK &&
+        /* the LP rows at spp, the gaze disc's rows and the centre sample at spp_disc */
+        ok = fovlp_begin_frame(&lp, g, &lcam) == FOV_OK && lppt_shade_samples(&lp, 0, lp.geo.lp_h, &u, smp, sdep) == FOV_OK;
+        u.spp = spp_disc;
+        u.jitter = lc.taa.enable ? 0.0f : 1.0f; /* one frame: the disc pixels box-filtered as UNIFORM's */
+        ok = ok && lppt_shade_samples(&lp, lp.geo.lp_h, fovlp_sample_rows(&lp), &u, smp, sdep) == FOV_OK &&
              fovlp_reconstruct_rows(&lp, smp, sdep, 0, H, lc.taa.enable ? cur : img, 0, cdep) == FOV_OK;
         if (ok && lc.taa.enable) {
             fovlp_taa_io io;
@@ -650,10 +658,7 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
         fovpt_stats_add(st, &u.stats);
     }
     t = cpu_ms() - t0;
-    if (ok) {
-        fovlp_counts cnt;
-        if (fovlp_count_samples(&lp, &cnt) == FOV_OK) *shaded_pct = (double)cnt.shaded_pct;
-    }
+    if (ok && fovlp_count_samples(&lp, cnt) != FOV_OK) ok = 0;
     free(mem); free(smp); free(sdep); free(cur); free(cdep);
     for (a = 0; a < 2; ++a) { free(hist[a]); free(hdep[a]); free(age[a]); }
     return ok ? t : -1.0;
@@ -673,12 +678,13 @@ static void lp_split(double x, int taa, uint32_t *frames, uint32_t *spp)
 static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc, size_t np,
                     double t_u4, double f1_u4, float *img)
 {
-    int v, taa;
+    int v, var;
     for (v = 0; v < 2; ++v) {
         fovlp_config lc = fovlp_config_preset(FOVLP_PRESET_C_FOV, S->cam.width, S->cam.height);
         fovlp_camera lcam;
+        fovlp_counts cnt, cnt_p;
         fovpt_stats st;
-        double t_p, t, ps[5], pct = 0.0;
+        double t_p, t, ps[5];
         const char *base = v ? "lp_acuity" : "lp_cfov";
         lc.cam_fov_y_deg = S->cam.fov_y_deg;
         if (v && (fovlp_camera_from(&S->cam, &lcam) != FOV_OK || fovlp_config_acuity(&lc, &lcam, NULL) != FOV_OK)) {
@@ -686,31 +692,37 @@ static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_
             continue;
         }
         /* the pilot: one frame, 4 spp per position (uniform4's spp): the default row */
-        t_p = lp_render(S, &lc, g, 1, 4, img, &st, &pct);
+        t_p = lp_render(S, &lc, g, 1, 4, 4, img, &st, &cnt_p);
         if (t_p <= 0.0) { printf("  %-12s failed\n", base); continue; }
         psnr_fields(img, ref, ecc, np, ps);
         row(csv, nm, base, gz, "default", &st, t_p, ps, 0, t_u4, -1.0, 4);
-        printf("  %-12s %9.1f ms (%.1f %% of the pixels shaded) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  speedup %.2f\n", base, t_p, pct,
+        printf("  %-12s %9.1f ms (%.1f %% of the pixels shaded, %llu in the gaze disc) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  speedup %.2f\n",
+               base, t_p, (double)cnt_p.shaded_pct, (unsigned long long)cnt_p.disc_shaded,
                ps[0], ps[1], ps[2], ps[3], ps[4], t_u4 / t_p);
-        for (taa = 0; taa < 2; ++taa) {
-            double x = 4.0 * t_u4 / t_p, t1 = t_p, x1 = 4.0;
-            uint32_t fr = 1, spp = 4;
+        /* var 0: every position's samples scaled; 1: over 16 TAA frames; 2: only the gaze disc's
+           (and the centre sample's) samples raised, the LP samples kept at 4 (as layers_fovea) */
+        for (var = 0; var < 3; ++var) {
+            double x1, x0 = 4.0, t0 = t_p, share = (double)cnt_p.disc_shaded / (double)(cnt_p.shaded ? cnt_p.shaded : 1u);
+            uint32_t fr = 1, spp = 4, sppd = 4;
             int it;
             char mname[64];
+            if (var == 2 && cnt_p.disc_shaded == 0) continue;
+            x1 = var == 2 ? 4.0 * (1.0 + (t_u4 / t_p - 1.0) / (share > 0.01 ? share : 0.01)) : 4.0 * t_u4 / t_p;
             for (it = 0; it < 2; ++it) { /* equal time: from the pilot, corrected once along the secant */
                 double xn;
-                lp_split(x, taa, &fr, &spp);
-                t = lp_render(S, &lc, g, fr, spp, img, &st, &pct);
+                if (var == 2) { fr = 1; spp = 4; sppd = spp_of(x1); }
+                else { lp_split(x1, var == 1, &fr, &spp); sppd = spp; }
+                t = lp_render(S, &lc, g, fr, spp, sppd, img, &st, &cnt);
                 if (t <= 0.0 || fabs(t / t_u4 - 1.0) <= 0.08 || it == 1) break;
-                xn = (t > t1 && x != x1) ? x + (t_u4 - t) * (x - x1) / (t - t1) : x * t_u4 / t;
-                x1 = x; t1 = t; x = xn;
+                xn = (t > t0 && x1 != x0) ? x1 + (t_u4 - t) * (x1 - x0) / (t - t0) : x1 * t_u4 / t;
+                x0 = x1; t0 = t; x1 = xn;
             }
             if (t <= 0.0) continue;
             psnr_fields(img, ref, ecc, np, ps);
-            snprintf(mname, sizeof mname, "%s%s", base, taa ? "_taa" : "");
-            row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fr * spp);
-            printf("  %-14s at uniform4's time (%.1f ms): %8.1f ms, %u frame(s) x %u spp, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
-                   " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fr, spp, ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
+            snprintf(mname, sizeof mname, "%s%s", base, var == 1 ? "_taa" : var == 2 ? "_fovea" : "");
+            row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fr * sppd);
+            printf("  %-16s at uniform4's time (%.1f ms): %8.1f ms, %u frame(s) x %u spp (disc %u), PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
+                   " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fr, spp, sppd, ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
         }
     }
 }

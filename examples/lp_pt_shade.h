@@ -17,6 +17,9 @@ typedef struct lppt_user {
     const fovpt_config *cfg;   /* resolved (fovpt_config_resolve or fovpt_config_default) */
     const fovpt_camera *cam;   /* the same camera as fovlp_camera_from's (TAA) */
     uint32_t frame, spp;       /* the random streams' frame; samples per position */
+    float jitter;              /* fovpt_shade_points' jitter: 0, the positions themselves (with
+                                  fovlp's TAA, whose jitter moves them); 1 on the gaze disc's
+                                  pixel centres, UNIFORM's box filter */
     fovpt_stats stats;         /* added to; one per thread */
 } lppt_user;
 
@@ -44,7 +47,7 @@ static fov_result lppt_shade_samples(const fovlp_ctx *lp, uint32_t r0, uint32_t 
     if (r == FOV_OK)
         r = fovpt_shade_points(u->scene, u->cfg, u->cam, (uint32_t)n, &smp[0].x,
                                (uint32_t)(sizeof *smp / sizeof(float)), (uint32_t)before, u->frame,
-                               u->spp, c, depth ? t : NULL, &u->stats);
+                               u->spp, u->jitter, c, depth ? t : NULL, &u->stats);
     if (r == FOV_OK)
         for (i = 0; i < n; ++i) {
             size_t s = smp[i].slot;

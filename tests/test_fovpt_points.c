@@ -43,22 +43,26 @@ static int same_bits(float a, float b) { return memcmp(&a, &b, sizeof a) == 0; }
 
 /* point i, sample k: the documented recipe through the public one-ray calls */
 static void reference_point(const fovpt_scene *s, const fovpt_config *c, const fovpt_camera *cam,
-                            float x, float y, uint32_t id, uint32_t frame, uint32_t spp,
+                            float x, float y, float jitter, uint32_t id, uint32_t frame, uint32_t spp,
                             float rgb[3], float *t)
 {
     float org[3], dir[3], sum[3] = { 0.0f, 0.0f, 0.0f };
     uint32_t k;
     fovpt_hit h;
-    fovpt_camera_ray(cam, x, y, org, dir);
     for (k = 0; k < spp; ++k) {
         fovpt_rng rng;
-        float c3[3];
+        float c3[3], px = x, py = y;
         fovpt_rng_init(&rng, c->seed, id, k, frame);
+        if (jitter > 0.0f) {
+            px += (fovpt_rng_next(&rng) - 0.5f) * jitter;
+            py += (fovpt_rng_next(&rng) - 0.5f) * jitter;
+        }
+        fovpt_camera_ray(cam, px, py, org, dir);
         fovpt_radiance(s, c, org, dir, &rng, c3, NULL);
         sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+        if (k == 0) *t = fovpt_intersect(s, org, dir, 0.0f, FLT_MAX, &h) ? h.t : FLT_MAX;
     }
     rgb[0] = sum[0] / (float)spp; rgb[1] = sum[1] / (float)spp; rgb[2] = sum[2] / (float)spp;
-    *t = fovpt_intersect(s, org, dir, 0.0f, FLT_MAX, &h) ? h.t : FLT_MAX;
 }
 
 static void test_equals_reference(void)
@@ -74,62 +78,109 @@ static void test_equals_reference(void)
     fovpt_stats st;
     if (!check(pt_scene_make(&S, PT_SCENE_CORNELL) == 0, "cornell scene builds", "pt_scene_make")) return;
     S.cam.width = 160; S.cam.height = 120;
-    for (mode = 0; mode < 2; ++mode) {
-        uint32_t spp = mode ? 1u : 3u, first = mode ? 7u : 1000u, frame = mode ? 0u : 5u;
+    for (mode = 0; mode < 3; ++mode) {
+        /* path tracing at the points, Whitted at the points, path tracing jittered over 1.5 px */
+        uint32_t spp = mode == 1 ? 1u : 3u, first = mode == 1 ? 7u : 1000u, frame = mode == 1 ? 0u : 5u;
+        float jit = mode == 2 ? 1.5f : 0.0f;
+        const char *lbl = mode == 0 ? "path" : mode == 1 ? "whitted" : "path, jitter 1.5";
         bad = badt = 0;
         c = fovpt_config_default();
-        c.mode = mode;
+        c.mode = mode == 1 ? FOVPT_MODE_WHITTED : FOVPT_MODE_PATH;
         c.seed = 99u;
         fovpt_config_resolve(&c, &c);
         fovpt_stats_init(&st);
-        if (!check(fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 0, first, frame, spp, rgb, t, &st) == FOV_OK,
-                   N("shade_points %s FOV_OK", mode ? "whitted" : "path"), "error"))
+        if (!check(fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 0, first, frame, spp, jit, rgb, t, &st) == FOV_OK,
+                   N("shade_points %s FOV_OK", lbl), "error"))
             continue;
         for (i = 0; i < n; ++i) {
             float ref[3], tr;
-            reference_point(&S.scene, &c, &S.cam, xy[2 * i], xy[2 * i + 1], first + i, frame, spp, ref, &tr);
+            reference_point(&S.scene, &c, &S.cam, xy[2 * i], xy[2 * i + 1], jit, first + i, frame, spp, ref, &tr);
             if (!same_bits(rgb[3 * i], ref[0]) || !same_bits(rgb[3 * i + 1], ref[1]) || !same_bits(rgb[3 * i + 2], ref[2])) bad++;
             if (!(same_bits(t[i], tr) || (tr < FLT_MAX && fabsf(t[i] - tr) <= 1e-6f * tr))) {
                 badt++;
                 printf("INFO point (%g, %g): depth %.9g, fovpt_intersect %.9g\n", (double)xy[2 * i], (double)xy[2 * i + 1], (double)t[i], (double)tr);
             }
         }
-        check(bad == 0, N("%s: colours bit for bit camera_ray + radiance on stream (seed, first + i, k, frame)", mode ? "whitted" : "path"),
+        check(bad == 0, N("%s: colours bit for bit camera_ray + radiance on stream (seed, first + i, k, frame)", lbl),
               "%u of %u differ", bad, n);
-        check(badt == 0, N("%s: depth = fovpt_intersect's t of the camera ray within 1e-6 (FLT_MAX: miss)", mode ? "whitted" : "path"),
+        check(badt == 0, N("%s: depth = fovpt_intersect's t of the camera ray within 1e-6 (FLT_MAX: miss)", lbl),
               "%u of %u differ", badt, n);
         check(st.samples == (uint64_t)n * spp && st.camera_rays == (uint64_t)n * spp &&
               st.rays == st.camera_rays + st.bounce_rays + st.shadow_rays && st.bounce_rays + st.shadow_rays > 0,
-              N("%s: stats samples = camera_rays = n spp, rays = the sum", mode ? "whitted" : "path"),
+              N("%s: stats samples = camera_rays = n spp, rays = the sum", lbl),
               "samples %llu camera %llu rays %llu", (unsigned long long)st.samples, (unsigned long long)st.camera_rays,
               (unsigned long long)st.rays);
         /* a split batch with `first` continuing the numbering gives the same values */
-        if (fovpt_shade_points(&S.scene, &c, &S.cam, 5, xy, 2, first, frame, spp, rgb2, t2, NULL) == FOV_OK &&
-            fovpt_shade_points(&S.scene, &c, &S.cam, n - 5, xy + 10, 0, first + 5, frame, spp, rgb2 + 15, t2 + 5, NULL) == FOV_OK)
+        if (fovpt_shade_points(&S.scene, &c, &S.cam, 5, xy, 2, first, frame, spp, jit, rgb2, t2, NULL) == FOV_OK &&
+            fovpt_shade_points(&S.scene, &c, &S.cam, n - 5, xy + 10, 0, first + 5, frame, spp, jit, rgb2 + 15, t2 + 5, NULL) == FOV_OK)
             check(memcmp(rgb, rgb2, sizeof rgb) == 0 && memcmp(t, t2, sizeof t) == 0,
-                  N("%s: two batches (first = 0, 5) equal one", mode ? "whitted" : "path"), "differ");
+                  N("%s: two batches (first = 0, 5) equal one", lbl), "differ");
         else
-            check(0, N("%s: split batches", mode ? "whitted" : "path"), "error");
+            check(0, N("%s: split batches", lbl), "error");
         bad = 0;
         for (i = 0; i < 3 * n; ++i) bad += !(rgb[i] >= 0.0f && rgb[i] <= FLT_MAX);
-        check(bad == 0, N("%s: colours finite, >= 0", mode ? "whitted" : "path"), "%u bad", bad);
+        check(bad == 0, N("%s: colours finite, >= 0", lbl), "%u bad", bad);
     }
     /* a strided array (fovlp_sample layout: x, y, slot) gives the same as packed points */
     {
         float s3[3 * 12];
         c = fovpt_config_default();
         for (i = 0; i < n; ++i) { s3[3 * i] = xy[2 * i]; s3[3 * i + 1] = xy[2 * i + 1]; s3[3 * i + 2] = -1.0f; }
-        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 1, 2, rgb, t, NULL);
-        fovpt_shade_points(&S.scene, &c, &S.cam, n, s3, 3, 3, 1, 2, rgb2, NULL, NULL);
+        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 1, 2, 0.0f, rgb, t, NULL);
+        fovpt_shade_points(&S.scene, &c, &S.cam, n, s3, 3, 3, 1, 2, 0.0f, rgb2, NULL, NULL);
         check(memcmp(rgb, rgb2, sizeof rgb) == 0, "stride 3 (x, y, slot) equals stride 2", "differ");
         /* spp 0 takes cfg.spp; other frames and seeds change the noise */
         c.spp = 2;
-        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 1, 0, rgb2, NULL, NULL);
+        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 1, 0, 0.0f, rgb2, NULL, NULL);
         check(memcmp(rgb, rgb2, sizeof rgb) == 0, "spp 0 takes cfg.spp", "differ");
-        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 2, 2, rgb2, NULL, NULL);
+        fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 2, 3, 2, 2, 0.0f, rgb2, NULL, NULL);
         check(memcmp(rgb, rgb2, sizeof rgb) != 0, "another frame: other streams", "identical");
     }
     pt_scene_free(&S);
+}
+
+/* jitter 1 at pixel centres, first = y W for row y: UNIFORM's pixels, fovpt_render's own
+   image bit for bit (its jitter, streams, path and mean) */
+static void test_equals_uniform(void)
+{
+    pt_scene S;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output out;
+    const uint32_t W = 48, H = 36;
+    size_t bytes = 0;
+    void *mem;
+    float *img = (float *)malloc((size_t)W * H * 12u), *row = (float *)malloc(W * 12u), *xy = (float *)malloc(W * 8u);
+    uint32_t x, y, bad = 0, mode;
+    if (!img || !row || !xy || pt_scene_make(&S, PT_SCENE_CORNELL) != 0) { check(0, "uniform: setup", "failed"); free(img); free(row); free(xy); return; }
+    S.cam.width = W; S.cam.height = H;
+    for (mode = 0; mode < 2; ++mode) {
+        fov_gaze g;
+        g.x = 20.0f; g.y = 10.0f;
+        c = fovpt_config_default();
+        c.spp = 3; c.seed = 4242u; c.mode = mode;
+        fovpt_config_resolve(&c, &c);
+        bad = 0;
+        fovpt_memory_size(&c, &S.cam, &bytes);
+        mem = malloc(bytes);
+        fovpt_output_init(&out);
+        out.rgb = img;
+        if (fovpt_init(&ctx, &c, &S.scene, &S.cam, g, mem, bytes) != FOV_OK || fovpt_render(&ctx, 6, &out, NULL) != FOV_OK) {
+            check(0, "uniform: fovpt_render", "failed");
+            free(mem);
+            continue;
+        }
+        for (y = 0; y < H; ++y) {
+            for (x = 0; x < W; ++x) { xy[2 * x] = (float)x + 0.5f; xy[2 * x + 1] = (float)y + 0.5f; }
+            if (fovpt_shade_points(&S.scene, &c, &S.cam, W, xy, 0, y * W, 6, 0, 1.0f, row, NULL, NULL) != FOV_OK) { bad += W; continue; }
+            for (x = 0; x < 3 * W; ++x) bad += !same_bits(row[x], img[3 * (size_t)y * W + x]);
+        }
+        check(bad == 0, N("%s: jitter 1 at pixel centres, first = y W: fovpt_render's UNIFORM image bit for bit", mode ? "whitted" : "path"),
+              "%u of %u values differ", bad, 3 * W * H);
+        free(mem);
+    }
+    pt_scene_free(&S);
+    free(img); free(row); free(xy);
 }
 
 static void test_errors(void)
@@ -144,7 +195,7 @@ static void test_errors(void)
     if (pt_scene_make(&S, PT_SCENE_CORNELL) != 0) { check(0, "errors: scene", "build"); return; }
     S.cam.width = 64; S.cam.height = 48;
     c.logger.func = logger;
-    check(fovpt_shade_points(&S.scene, NULL, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL) == FOV_ERR_NULL, "NULL config: FOV_ERR_NULL", "other code");
+    check(fovpt_shade_points(&S.scene, NULL, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL) == FOV_ERR_NULL, "NULL config: FOV_ERR_NULL", "other code");
 #define EXPECT(call, code, name)                                                                    \
     do {                                                                                            \
         for (k = 0; k < 6; ++k) rgb[k] = -7.0f;                                                     \
@@ -156,38 +207,45 @@ static void test_errors(void)
               "got %d (%s), logged %d x code %d, rgb %s", (int)r, fovpt_result_string(r), g_log_count, \
               (int)g_log_code, unchanged ? "untouched" : "written");                                 \
     } while (0)
-    EXPECT(fovpt_shade_points(NULL, &c, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NULL, "NULL scene: FOV_ERR_NULL, logged");
-    EXPECT(fovpt_shade_points(&S.scene, &c, NULL, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NULL, "NULL camera: FOV_ERR_NULL");
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, NULL, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NULL, "NULL xy: FOV_ERR_NULL");
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, NULL, t, NULL), FOV_ERR_NULL, "NULL rgb: FOV_ERR_NULL");
+    EXPECT(fovpt_shade_points(NULL, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NULL, "NULL scene: FOV_ERR_NULL, logged");
+    EXPECT(fovpt_shade_points(&S.scene, &c, NULL, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NULL, "NULL camera: FOV_ERR_NULL");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, NULL, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NULL, "NULL xy: FOV_ERR_NULL");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, NULL, t, NULL), FOV_ERR_NULL, "NULL rgb: FOV_ERR_NULL");
     xy[3] = nanv;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NOT_FINITE,
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NOT_FINITE,
            "NaN y of the 2nd point: FOV_ERR_NOT_FINITE, the 1st not shaded");
     xy[3] = 20.0f; xy[0] = (float)INFINITY;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NOT_FINITE, "infinite x: FOV_ERR_NOT_FINITE");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NOT_FINITE, "infinite x: FOV_ERR_NOT_FINITE");
     xy[0] = 3e38f; /* on a 1 x 1 image of 170 degrees the image-plane offset overflows */
     cam = S.cam; cam.width = cam.height = 1; cam.fov_y_deg = 170.0f;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_INVALID_ARG,
+    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_INVALID_ARG,
            "a point whose ray overflows: FOV_ERR_INVALID_ARG");
     xy[0] = 10.0f;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 1, 0, 0, 1, rgb, t, NULL), FOV_ERR_INVALID_ARG, "stride 1: FOV_ERR_INVALID_ARG");
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, FOVPT_MAX_SPP + 1u, rgb, t, NULL), FOV_ERR_LIMIT,
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 1, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_INVALID_ARG, "stride 1: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, -0.5f, rgb, t, NULL), FOV_ERR_INVALID_ARG, "negative jitter: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, nanv, rgb, t, NULL), FOV_ERR_NOT_FINITE, "NaN jitter: FOV_ERR_NOT_FINITE");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, (float)INFINITY, rgb, t, NULL), FOV_ERR_NOT_FINITE,
+           "infinite jitter: FOV_ERR_NOT_FINITE");
+    cam = S.cam; cam.width = cam.height = 1; cam.fov_y_deg = 170.0f;
+    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 3e38f, rgb, t, NULL), FOV_ERR_INVALID_ARG,
+           "a jitter square whose corner's ray overflows: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, FOVPT_MAX_SPP + 1u, 0.0f, rgb, t, NULL), FOV_ERR_LIMIT,
            "spp above FOVPT_MAX_SPP: FOV_ERR_LIMIT");
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 0xFFFFFFFFu, xy, 0xFFFFFFFFu, 0, 0, 1, rgb, t, NULL), FOV_ERR_LIMIT,
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 0xFFFFFFFFu, xy, 0xFFFFFFFFu, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_LIMIT,
            "n x stride beyond size_t: FOV_ERR_LIMIT");
     c.mode = 7;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_INVALID_ARG, "unknown mode: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_INVALID_ARG, "unknown mode: FOV_ERR_INVALID_ARG");
     c.mode = FOVPT_MODE_PATH; c.max_depth = FOVPT_MAX_BOUNCES + 1u;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_INVALID_ARG, "max_depth above the cap: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_INVALID_ARG, "max_depth above the cap: FOV_ERR_INVALID_ARG");
     c.max_depth = 8;
     cam = S.cam; cam.width = 0;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_INVALID_ARG, "camera width 0: FOV_ERR_INVALID_ARG");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_INVALID_ARG, "camera width 0: FOV_ERR_INVALID_ARG");
     cam = S.cam; cam.pos[1] = nanv;
-    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_NOT_FINITE, "NaN camera: FOV_ERR_NOT_FINITE");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_NOT_FINITE, "NaN camera: FOV_ERR_NOT_FINITE");
     cam = S.cam; memcpy(cam.target, cam.pos, sizeof cam.pos);
-    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, rgb, t, NULL), FOV_ERR_DEGENERATE, "target == pos: FOV_ERR_DEGENERATE");
+    EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_DEGENERATE, "target == pos: FOV_ERR_DEGENERATE");
     g_log_count = 0;
-    check(fovpt_shade_points(&S.scene, &c, &S.cam, 0, NULL, 0, 0, 0, 1, NULL, NULL, NULL) == FOV_OK && g_log_count == 0,
+    check(fovpt_shade_points(&S.scene, &c, &S.cam, 0, NULL, 0, 0, 0, 1, 0.0f, NULL, NULL, NULL) == FOV_OK && g_log_count == 0,
           "n = 0 with NULL buffers: FOV_OK, nothing logged", "failed");
 #undef EXPECT
     pt_scene_free(&S);
@@ -301,6 +359,7 @@ static void test_constant_pipeline(void)
 int main(void)
 {
     test_equals_reference();
+    test_equals_uniform();
     test_errors();
     test_constant_pipeline();
     return fovcheck_summary();
