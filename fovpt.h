@@ -294,7 +294,8 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    and logger are); spp 0 takes cfg->spp.
    Every pointer, the config, the camera and every point are checked before any work (NULL:
    FOV_ERR_NULL; a NaN or infinite x, y or jitter: FOV_ERR_NOT_FINITE; a negative jitter, a
-   point whose ray (or its jitter square's corner's) overflows: FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
+   point whose ray (or its jitter square's corner's) overflows: FOV_ERR_INVALID_ARG; spp
+   above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
    on an error nothing is written. stats: samples and camera_rays n spp, plus the paths' rays.
 
 DOES NOT
@@ -4116,11 +4117,13 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "shade_points: scene not built (call fovpt_scene_build)");
     if (c->mode >= (uint32_t)_FOVPT_MODE_NUM)
-        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: c.mode unknown (see fovpt_mode)");
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "shade_points: c.mode unknown (see fovpt_mode)");
     if (c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
-                    "shade_points: c.max_depth above FOVPT_MAX_BOUNCES (Whitted: FOVPT_MAX_WHITTED)");
+                    "shade_points: c.max_depth above FOVPT_MAX_BOUNCES (Whitted: "
+                    "FOVPT_MAX_WHITTED)");
     if (stride == 0) stride = 2;
     if (stride < 2)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: stride must be 0 or >= 2");
