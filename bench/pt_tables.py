@@ -12,7 +12,10 @@ Prints markdown:
      UNIFORM Whitted at the spp of the same time;
   3. equal ray budget: the same gains against UNIFORM at the method's camera-ray count;
   4. the closest-hit throughput rows (fovpt against Embree);
-  5. from pt_temporal.csv beside it: PSNR and flicker per temporal option of SELECTIVE.
+  5. from pt_temporal.csv beside it: PSNR and flicker per temporal option of SELECTIVE;
+  6. path tracing in log-polar space (the lp_ rows: fovlp.h's positions, fovpt_shade_points):
+     fovea (f1) / near-periphery (f4) PSNR gain over uniform4 at uniform4's time, beside the
+     best of layers / layers_fovea / layers_diam / layers_diam_fovea / zones at equal time.
 """
 import os
 import csv
@@ -159,6 +162,36 @@ def tables(path):
                 r["scene"], r["option"], r["alpha"], fmt_db(f(r["psnr_f1"])), fmt_db(f(r["psnr_f2"])), fmt_db(f(r["psnr_f3"])),
                 fmt_db(f(r["psnr_f4"])), f(r["flicker_f1"]), f(r["flicker_f2"]), f(r["flicker_f3"]), f(r["flicker_f4"]), r["reused_pct"]))
     sec["temporal"] = cur
+    cur = []
+
+    # 6. path tracing in log-polar space (lp_ rows), equal time with uniform4
+    lp = [m for m in ["lp_cfov", "lp_cfov_taa", "lp_cfov_fovea", "lp_acuity", "lp_acuity_taa", "lp_acuity_fovea"]
+          if any(k[2] == m for k in idx)]
+    if not lp:
+        print("(no lp_ rows in this pt.csv: make bench-pt writes them; ./build/bench_pt --lp --out FILE runs only them)")
+    else:
+        fov = ["layers", "layers_fovea", "layers_diam", "layers_diam_fovea", "zones"]
+        print("| scene | gaze | uniform4 f1/f4 dB | " + " | ".join(lp) + " | best layers/zones f1 (f4) |")
+        print("|---|---|---|" + "---:|" * len(lp) + "---|")
+        for sc in scenes:
+            for gz in gazes:
+                u = get(sc, gz, "uniform4")
+                if not u:
+                    continue
+                cells = []
+                for m in lp:
+                    r = get(sc, gz, m, "eqtime_uniform4")
+                    cells.append("%+.1f/%+.1f (%.2f)" % (f(r["psnr_f1"]) - f(u["psnr_f1"]), f(r["psnr_f4"]) - f(u["psnr_f4"]),
+                                                       f(r["time_ms"]) / f(r["budget_time_ms"])) if r else "")
+                best = None
+                for m in fov:
+                    r = get(sc, gz, m, "eqtime_uniform4")
+                    if r and (best is None or f(r["psnr_f1"]) > f(best["psnr_f1"])):
+                        best = r
+                bcell = "%s %+.1f (%+.1f)" % (best["method"], f(best["psnr_f1"]) - f(u["psnr_f1"]),
+                                              f(best["psnr_f4"]) - f(u["psnr_f4"])) if best else ""
+                print("| %s | %s | %s/%s | %s | %s |" % (sc, gz, fmt_db(f(u["psnr_f1"])), fmt_db(f(u["psnr_f4"])), " | ".join(cells), bcell))
+    sec["lp"] = cur
     return sec
 
 
@@ -166,6 +199,8 @@ CAPTIONS = {
     "eqtime": "Equal time: fovea PSNR gain (dB) over uniform4 at uniform4's time (time / target), and of "
               "selective / jin over UNIFORM Whitted at the spp of the method's time",
     "eqrays": "Equal ray budget: fovea PSNR gain (dB) of each method over UNIFORM at its camera-ray count",
+    "lp": "Path tracing in log-polar space at equal time: fovea / near-periphery PSNR gain (dB) over uniform4 "
+          "(time / target)",
 }
 
 
@@ -176,7 +211,7 @@ def main(argv):
         return 0
     sec = tables(argv[1] if len(argv) > 1 else os.path.join(RESULTS, "pt.csv"))
     first = True
-    for name in ("default", "eqtime", "eqrays", "throughput", "temporal"):
+    for name in ("default", "eqtime", "eqrays", "throughput", "temporal", "lp"):
         if name not in sec:
             continue
         if not first:
