@@ -75,7 +75,8 @@ STATUS (v0.5.0)
    temporal reuse and smoothing (SELECTIVE and JIN only, as in Kim et al. 2021;
    FOV_ERR_UNSUPPORTED with the others).
    The acuity-driven configuration (fovpt_config_acuity) and the B-spline layer
-   reconstruction (layers.bspline).
+   reconstruction (layers.bspline). Path tracing at arbitrary image points
+   (fovpt_shade_points: fovlp.h's log-polar samples, examples/lp_pt.c).
 
 CHOICES WHERE THE SOURCES ARE OPEN (each one is tested)
    - Phong (Axblad 2020, Eq. 3.7-3.15): the thesis mixes a uniform-hemisphere weight (3.13)
