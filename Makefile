@@ -21,6 +21,9 @@
 #                fov.pc into $(PREFIX)/share/pkgconfig/ (nothing is built; CMake: docs/build.md)
 #   make gallery the README's pictures: build/gallery renders PPMs into build/gallery_ppm/,
 #                examples/gallery_png.py (python3, standard library) writes docs/img/*.png
+#   make web     the browser demo (examples/web: the three headers in WebAssembly, the mouse as
+#                the gaze) into build/web/; make web-serve serves it on 127.0.0.1 (WEB_PORT, 8000);
+#                make bench-web: frames per second in headless chromium, bench/results/web.csv
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -31,7 +34,8 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install \
+        web web-serve bench-web
 
 all: examples
 
@@ -184,3 +188,18 @@ $(BUILD)/bench_stress: bench/bench_stress.c fovsdf.h tests/common/fovstress.h
 bench-stress: $(BUILD)/bench_stress
 	@mkdir -p bench/results
 	nice ./$(BUILD)/bench_stress $(BENCH_ARGS)
+
+# issue 15: the browser demo (examples/web/build.sh: clang --target=wasm32 -ffreestanding
+# -nostdlib, scalar and SIMD128 builds of each module) and its server; tests/web/web_test.mjs
+# drives it in headless chromium (make test T=web; bench-web writes bench/results/web.csv)
+WEB_PORT ?= 8000
+web:
+	bash examples/web/build.sh $(BUILD)/web
+
+web-serve: web
+	@echo "fov web demo: http://127.0.0.1:$(WEB_PORT)/  (Ctrl-C stops the server)"
+	cd $(BUILD)/web && python3 -m http.server $(WEB_PORT) --bind 127.0.0.1
+
+bench-web: web
+	@mkdir -p bench/results
+	node tests/web/web_test.mjs --bench --csv bench/results/web.csv
