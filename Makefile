@@ -35,7 +35,7 @@ BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
         bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install \
-        web web-serve bench-web
+        web web-serve bench-web bench-web-native web-screenshot
 
 all: examples
 
@@ -203,3 +203,18 @@ web-serve: web
 bench-web: web
 	@mkdir -p bench/results
 	node tests/web/web_test.mjs --bench --csv bench/results/web.csv
+
+# the README's picture of the page (headless chromium, tests/web)
+web-screenshot: web
+	node tests/web/web_test.mjs --screenshot docs/img/web_demo.png --shot-only
+
+# the same frames natively (examples/web/native_bench.c: the demo's glue built with gcc, one
+# thread), bench/results/web_native.csv, for the WebAssembly-against-native comparison
+bench-web-native:
+	@mkdir -p $(BUILD) bench/results
+	@echo "mode,scene,width,height,workers,simd,fps_foveated,fps_reference,ratio" > bench/results/web_native.csv
+	for m in sdf lp pt; do \
+	    $(CC) $(STD) -O2 -ffp-contract=off -Wall -Wextra -DWEB_NATIVE -DWEB_MODULE_$$m examples/web/native_bench.c \
+	        -o $(BUILD)/native_bench_$$m && ./$(BUILD)/native_bench_$$m >> bench/results/web_native.csv || exit 1; \
+	done
+	cat bench/results/web_native.csv

@@ -11,8 +11,8 @@
 //   setGazeFilter(fn)   fn({x, y, t}) -> {x, y}, pixels of the rendered image: every gaze sample
 //                       passes through it before the renderer (a place for a gaze filter; the
 //                       default passes it through)
-//   setOptions(o), renderOnce(o), measure(o), pause(), resume(), restart(), getGaze(), stats()
-//                       used by tests/web (see each function)
+//   setOptions(o), renderOnce(o), measure(o), pause(), resume(), restart(), getGaze(), stats(),
+//   crashWorker(k)      used by tests/web (see each function)
 // Query flags: ?simd=0 forces the scalar modules, ?workers=N, ?ignore_gaze=1 makes the glue
 // foveate at the image centre whatever the gaze (the negative control of tests/web).
 
@@ -93,6 +93,8 @@ function workerMain() {
             return { y0: a.y0, y1: a.y1, rgba: band(m, W, a.y0, a.y1), stats: stats(m) };
         },
         ptRestart() { check(mods.pt.pt_restart(), 'pt_restart'); return {}; },
+        // tests/web: an uncaught error in the worker, which the page must report as a death
+        crash() { setTimeout(() => { throw new Error('worker crash requested (fovDemo.crashWorker)'); }, 0); return {}; },
     };
 
     self.onmessage = async (e) => {
@@ -451,7 +453,9 @@ function pageMain() {
             drawOverlay();
             return { ms: fr.ms, s: fr.s, gaze: fr.gaze, width: W, height: H };
         },
-        // frames/s of the foveated and the reference frame, interleaved in this page
+        // frame times of the foveated and the reference frame, rendered interleaved in this page
+        // (after a warm-up pair): the fastest of `frames` each (the least disturbed by other
+        // load on the machine) and the median
         async measure(o = {}) {
             paused = true;
             await idle();
@@ -459,10 +463,12 @@ function pageMain() {
             await renderFrame(false); await renderFrame(true);   // warm-up
             for (let i = 0; i < n; ++i) { fov.push((await renderFrame(false)).ms); ref.push((await renderFrame(true)).ms); }
             const med = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1];
-            return { msFov: med(fov), msRef: med(ref) };
+            return { msFov: Math.min(...fov), msRef: Math.min(...ref), medFov: med(fov), medRef: med(ref) };
         },
         async restart() { if (opt.mode === 'pt') await Promise.all(workers.map((_, k) => call(k, 'ptRestart'))); },
         stats() { return { fovMs: timing.fov.ms(), refMs: timing.ref.ms(), fov: timing.fov.s, ref: timing.ref.s }; },
+        // tests/web: make worker k throw an uncaught error (the page shows "Worker k died")
+        crashWorker(k = 0) { return call(k, 'crash'); },
     };
     window.fovDemo = api;
 

@@ -11,8 +11,39 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#ifdef WEB_NATIVE
+#define WEB_EXPORT(name)
+#else
 #define WEB_EXPORT(name) __attribute__((export_name(#name), visibility("default")))
+#endif
 
+#ifdef WEB_NATIVE
+/* a native build of the same glue (examples/web/native_bench.c): libc's mem* functions and a
+   fixed arena instead of the wasm linear memory */
+#include <string.h>
+#ifndef WEB_NATIVE_ARENA
+#define WEB_NATIVE_ARENA (256u << 20)
+#endif
+static unsigned char *web__arena;
+static size_t web__top;
+void *malloc(size_t n);
+static void web_heap_reset(void)
+{
+    if (!web__arena) web__arena = (unsigned char *)malloc(WEB_NATIVE_ARENA);
+    web__top = 0;
+}
+static void *web_alloc(size_t n)
+{
+    size_t start;
+    if (!web__arena) web_heap_reset();
+    if (!web__arena) return NULL;
+    start = (web__top + 15u) & ~(size_t)15u;
+    if (n > WEB_NATIVE_ARENA - start) return NULL;
+    web__top = start + n;
+    memset(web__arena + start, 0, n);
+    return web__arena + start;
+}
+#else
 void *memset(void *d, int c, size_t n);
 void *memcpy(void *d, const void *s, size_t n);
 void *memmove(void *d, const void *s, size_t n);
@@ -62,6 +93,7 @@ static void *web_alloc(size_t n)
     memset((void *)start, 0, n);
     return (void *)start;
 }
+#endif
 
 /* a float counter area the JS reads after each call (WEB_STAT_*) */
 static double web_stats[16];

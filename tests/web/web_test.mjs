@@ -25,8 +25,13 @@
 //                ignores the gaze cannot pass
 //   workers <mode>  1 and 2 workers give the same image, byte for byte
 //   errors       no page errors and no console errors in any of the pages
+//   shown <case> the page shows a clear error (#error) without WebAssembly (removed by an init
+//                script), when a module fails to load (HTTP 404 for the .wasm files) and when a
+//                worker dies (fovDemo.crashWorker: an uncaught error in the worker)
+// --screenshot FILE also saves a PNG of the page (docs/img/web_demo.png; with --shot-only
+// nothing else: make web-screenshot).
 // It also measures frames per second of the foveated and the reference frame, interleaved in
-// the page (fovDemo.measure: medians of MEASURE_FRAMES each) and writes them to --csv
+// the page (fovDemo.measure: the fastest of 3 frames each, --bench 7) and writes them to --csv
 // (default build/web_test/web.csv): mode,scene,width,height,workers,simd,fps_foveated,
 // fps_reference,ratio. --bench measures the full grid (320x180 and 640x360, 1 and 2 workers,
 // scalar and SIMD, every mode) for bench/results/web.csv (make bench-web) and skips the checks.
@@ -47,6 +52,7 @@ const argOf = (name, def) => { const i = args.indexOf(name); return i >= 0 && i 
 const BENCH = args.includes('--bench');
 const CSV = argOf('--csv', path.join(ROOT, 'build/web_test/web.csv'));
 const DEBUG = argOf('--debug', null);
+const SHOT = argOf('--screenshot', null);
 
 let passed = 0, failed = 0;
 const pass = (name, detail) => { passed++; console.log(`PASS ${name}${detail ? `: ${detail}` : ''}`); };
@@ -188,19 +194,66 @@ async function gazeErrors(page, m, tag) {
 const follows = (e, m) => e.onA <= m.onMax && e.onB <= m.onMax && e.offA >= e.onA + OFF_GAP && e.offB >= e.onB + OFF_GAP;
 const fmtE = (e) => `err_on A ${e.onA.toFixed(2)} B ${e.onB.toFixed(2)}, err_off A ${e.offA.toFixed(2)} B ${e.offB.toFixed(2)}`;
 
+// the page's error reports: each case in a page of its own (its errors are expected)
+async function errorCases() {
+    const cases = [
+        ['no WebAssembly', /no WebAssembly/, async (p) => { await p.addInitScript(() => { delete globalThis.WebAssembly; }); }, null],
+        ['module load failure', /cannot load .*\.wasm: HTTP 404/, async (p) => {
+            await p.route(/\.wasm$/, (r) => r.fulfill({ status: 404, body: 'missing' }));
+        }, null],
+        ['worker death', /Worker 1 died/, null, async (p) => { await p.evaluate(() => window.fovDemo.crashWorker(1)); }],
+    ];
+    for (const [name, re, before, after] of cases) {
+        const page = await browser.newPage();
+        try {
+            if (before) await before(page);
+            await page.goto(BASE + 'index.html?workers=2');
+            if (after) {
+                await page.waitForFunction(() => window.fovDemo && window.fovDemo.state === 'ready', null, { timeout: 30000 });
+                await after(page);
+            }
+            await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 15000 });
+            const msg = await page.textContent('#error');
+            if (re.test(msg)) pass(`shown ${name}`, `"${msg.trim().slice(0, 100)}"`);
+            else fail(`shown ${name}`, `the page shows "${msg.trim().slice(0, 200)}", expected ${re}`);
+        } catch (e) {
+            fail(`shown ${name}`, `no error shown: ${String(e.message || e).split('\n')[0]}`);
+        } finally {
+            await page.close();
+        }
+    }
+}
+
+// the README's picture: the page at 640x360, fovsdf cone_fov with the overlay, gaze left of centre
+async function screenshot(file) {
+    const page = await browser.newPage({ viewport: { width: 1130, height: 600 } });
+    await page.goto(BASE + 'index.html?workers=2');
+    await page.waitForFunction(() => window.fovDemo && window.fovDemo.state === 'ready', null, { timeout: 30000 });
+    await page.evaluate(() => window.fovDemo.setOptions({ mode: 'sdf', sdfMethod: 'cone_fov', scene: 0, res: '640x360', scale: 1,
+        overlay: true, ref: 'alternate', orbit: false, gazeSource: 'mouse' }));
+    await moveMouse(page, 0.36, 0.62);
+    await page.waitForTimeout(4000);
+    fs.mkdirSync(path.dirname(file), { recursive: true });
+    await page.screenshot({ path: file });
+    await page.close();
+    pass('screenshot', `${path.relative(ROOT, file)}, ${fs.statSync(file).size} bytes`);
+}
+
 const rows = [];
 async function measureRow(page, m, res, workers, simd) {
     const o = await page.evaluate((opt) => window.fovDemo.setOptions(opt),
         { ...BASE_OPT, ...m.o, res, workers, ...(m.o.mode === 'lp' ? { taa: true } : {}) });
     await moveMouse(page, 0.5, 0.5);
-    const t = await page.evaluate((n) => window.fovDemo.measure({ frames: n }), BENCH ? 5 : 3);
+    const t = await page.evaluate((n) => window.fovDemo.measure({ frames: n }), BENCH ? 7 : 3);
     const ff = 1000 / t.msFov, fr = 1000 / t.msRef;
     rows.push([m.csv[0], m.csv[1], o.width, o.height, workers, simd ? 1 : 0, ff.toFixed(2), fr.toFixed(2), (ff / fr).toFixed(3)]);
     return { ff, fr };
 }
 
 try {
-    if (BENCH) {
+    if (SHOT && args.includes('--shot-only')) {
+        await screenshot(SHOT);
+    } else if (BENCH) {
         for (const simd of [true, false]) {
             const page = await openPage(simd ? '' : '?simd=0');
             const isSimd = await page.evaluate(() => window.fovDemo.simd);
@@ -251,6 +304,8 @@ try {
         const s0 = await sc.evaluate(() => window.fovDemo.simd);
         if (s0 === false) pass('load scalar', '?simd=0 runs the scalar modules'); else fail('load scalar', '?simd=0 still runs SIMD');
         await sc.close();
+        await errorCases();
+        if (SHOT) await screenshot(SHOT);
         console.log(`# ${((Date.now() - t0) / 1000).toFixed(1)} s in the browser`);
     }
     if (pageErrors.length === 0) pass('errors', 'no page errors, no console errors');
