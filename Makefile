@@ -208,13 +208,17 @@ bench-web: web
 web-screenshot: web
 	node tests/web/web_test.mjs --screenshot docs/img/web_demo.png --shot-only
 
-# the same frames natively (examples/web/native_bench.c: the demo's glue built with gcc, one
-# thread), bench/results/web_native.csv, for the WebAssembly-against-native comparison
-bench-web-native:
+# the same frames natively (examples/web/native_bench.c: the demo's glue built with gcc and
+# libm, one thread; FOV_NO_LIBM natively has no hardware square root) and by the same WebAssembly modules in node (examples/web/node_bench.mjs, V8, one
+# thread): bench/results/web_native.csv, for the WebAssembly-against-native comparison
+bench-web-native: web
 	@mkdir -p $(BUILD) bench/results
 	@echo "mode,scene,width,height,workers,simd,fps_foveated,fps_reference,ratio" > bench/results/web_native.csv
 	for m in sdf lp pt; do \
-	    $(CC) $(STD) -O2 -ffp-contract=off -Wall -Wextra -DWEB_NATIVE -DWEB_MODULE_$$m examples/web/native_bench.c \
-	        -o $(BUILD)/native_bench_$$m && ./$(BUILD)/native_bench_$$m >> bench/results/web_native.csv || exit 1; \
+	    $(CC) $(STD) -O2 -ffp-contract=off -Wall -Wextra -DWEB_NATIVE -DWEB_NATIVE_LIBM -DWEB_MODULE_$$m \
+	        examples/web/native_bench.c -lm -o $(BUILD)/native_bench_$$m && \
+	        ./$(BUILD)/native_bench_$$m >> bench/results/web_native.csv || exit 1; \
 	done
+	node examples/web/node_bench.mjs $(BUILD)/web simd >> bench/results/web_native.csv
+	node examples/web/node_bench.mjs $(BUILD)/web scalar >> bench/results/web_native.csv
 	cat bench/results/web_native.csv

@@ -8,8 +8,8 @@ usage: python3 bench/web_tables.py [bench/results/web.csv [bench/results/web_nat
            (rewrites the marked section web of bench/README.md; see bench/readme_sections.py)
 Prints markdown: per mode and size the frames per second of the foveated frame and of the
 full-resolution reference (foveated / reference) for the scalar and SIMD128 modules with 1
-and 2 workers, natively with one thread, and the speed-up (reference time over foveated
-time) of the SIMD build with 2 workers.
+and 2 workers, natively with one thread (gcc), the same modules in node with one thread, and
+the speed-up (reference time over foveated time) of the SIMD build with 2 workers.
 """
 import os
 import sys
@@ -33,8 +33,8 @@ def table(web, native):
                 return "%.1f / %.1f" % (float(r["fps_foveated"]), float(r["fps_reference"]))
         return "-"
     out = ["| mode | size | scalar, 1 worker | SIMD, 1 worker | scalar, 2 workers | SIMD, 2 workers "
-           "| native, 1 thread | speed-up (SIMD, 2 workers) |",
-           "|---|---|---|---|---|---|---|---|"]
+           "| native, 1 thread | node SIMD, 1 thread | node scalar, 1 thread | speed-up (SIMD, 2 workers) |",
+           "|---|---|---|---|---|---|---|---|---|---|"]
     for k in order:
         rs = [r for r in rows if key(r) == k]
         ns = [r for r in nat if key(r) == k]
@@ -42,9 +42,10 @@ def table(web, native):
         for r in rs:
             if r["workers"] == "2" and r["simd"] == "1":
                 sp = "%.2fx" % float(r["ratio"])
-        out.append("| %s (%s) | %sx%s | %s | %s | %s | %s | %s | %s |" % (
+        out.append("| %s (%s) | %sx%s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             k[0], rs[0]["scene"], k[1], k[2], cell(rs, "1", "0"), cell(rs, "1", "1"), cell(rs, "2", "0"),
-            cell(rs, "2", "1"), cell(ns, "1", "native"), sp))
+            cell(rs, "2", "1"), cell(ns, "1", "native"), cell(ns, "1", "node-simd"),
+            cell(ns, "1", "node-scalar"), sp))
     return out
 
 

@@ -1,12 +1,14 @@
 /* native_bench.c - the browser demo's frames measured natively, to compare with WebAssembly:
-   the same glue (web_sdf.c, web_lp.c or web_pt.c, built with -DWEB_NATIVE), the same calls
+   the same glue (web_sdf.c, web_lp.c or web_pt.c, built with -DWEB_NATIVE; -DWEB_NATIVE_LIBM
+   uses libm instead of FOV_NO_LIBM, whose square root on x86 is a software Newton iteration
+   about 2x slower in fovsdf, where wasm's is one f32.sqrt), the same calls
    the page makes with one worker (the whole image as one band), one thread. Prints CSV rows
    with the columns of bench/results/web.csv (workers 1, simd "native"): the fastest frame
    time of the foveated and of the reference frame (the least disturbed by other load, as the
    page's fovDemo.measure), measured interleaved.
      for m in sdf lp pt; do
-       cc -std=c99 -O2 -ffp-contract=off -DWEB_NATIVE -DWEB_MODULE_$m examples/web/native_bench.c \
-          -o build/native_bench_$m && ./build/native_bench_$m [frames]; done
+       cc -std=c99 -O2 -ffp-contract=off -DWEB_NATIVE -DWEB_NATIVE_LIBM -DWEB_MODULE_$m \
+          examples/web/native_bench.c -lm -o build/native_bench_$m && ./build/native_bench_$m; done
    (make bench-web-native does this). frames: 7 of each by default, after one warm-up pair.
    Not part of the library. */
 #define _POSIX_C_SOURCE 200809L

@@ -6,7 +6,9 @@
    and encodes the whole frame (lp_finish). The full-resolution reference is sdf_render-like:
    lp_reference renders rows with fovsdf_render_rows (the same fovsdf config, 1 spp).
    Not part of the library; the headers are used through their public API only. */
+#ifndef WEB_NATIVE_LIBM /* native_bench.c may use libm instead */
 #define FOV_NO_LIBM
+#endif
 #define FOV_ASSERT(c) ((void)0)
 #include "web_rt.h"
 #define FOVSDF_IMPLEMENTATION

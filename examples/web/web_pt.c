@@ -8,7 +8,9 @@
    taps above and below, the neighbours' presamples), so the image does not depend on the
    split. Accumulation restarts when the camera or the gaze moves (fovpt_set_view), or on
    pt_restart. Not part of the library; the headers are used through their public API only. */
+#ifndef WEB_NATIVE_LIBM /* native_bench.c may use libm instead */
 #define FOV_NO_LIBM
+#endif
 #define FOV_ASSERT(c) ((void)0)
 #include "web_rt.h"
 #define FOVPT_IMPLEMENTATION

@@ -3,7 +3,9 @@
    resolution (CONE, the reference), into an RGBA8 image the page draws.
    Exports: sdf_setup, sdf_render, rgba_ptr, stats_ptr, sdf_fov_y, sdf_fovea_deg.
    Not part of the library; the headers are used through their public API only. */
+#ifndef WEB_NATIVE_LIBM /* native_bench.c may use libm instead */
 #define FOV_NO_LIBM
+#endif
 #define FOV_ASSERT(c) ((void)0)
 #include "web_rt.h"
 #define FOVSDF_IMPLEMENTATION
