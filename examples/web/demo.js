@@ -430,7 +430,8 @@ function pageMain() {
             Object.assign(opt, o);
             for (const [id, key] of [['mode', 'mode'], ['sdf-method', 'sdfMethod'], ['scene', 'scene'], ['preset', 'preset'],
                 ['taa', 'taa'], ['pt-method', 'ptMethod'], ['res', 'res'], ['scale', 'scale'], ['workers', 'workers'],
-                ['overlay-toggle', 'overlay'], ['ref', 'ref'], ['orbit', 'orbit'], ['gaze-source', 'gazeSource']]) {
+                ['overlay-toggle', 'overlay'], ['ref', 'ref'], ['orbit', 'orbit'], ['gaze-source', 'gazeSource'],
+                ['noise', 'noiseDeg'], ['latency', 'latencyMs']]) {
                 const el = $(id);
                 if (el.type === 'checkbox') el.checked = !!opt[key]; else el.value = String(opt[key]);
             }

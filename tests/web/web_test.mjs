@@ -24,6 +24,8 @@
 //                whatever the gaze): the gaze check above must FAIL, so a build whose foveation
 //                ignores the gaze cannot pass
 //   workers <mode>  1 and 2 workers give the same image, byte for byte
+//   gaze hooks   fovDemo.setGazeSource and setGazeFilter drive the gaze; the simulated eye
+//                tracker with 0 deg noise and 0 ms latency gives the mouse
 //   errors       no page errors and no console errors in any of the pages
 //   shown <case> the page shows a clear error (#error) without WebAssembly (removed by an init
 //                script), when a module fails to load (HTTP 404 for the .wasm files) and when a
@@ -288,6 +290,29 @@ try {
             if (imgs[0].length > 0 && diff === 0) pass(`workers ${m.name}`, `1 and 2 workers: identical ${imgs[0].length / 4} pixels`);
             else fail(`workers ${m.name}`, `${diff} bytes differ between 1 and 2 workers`);
         }
+        // the gaze hooks: a gaze source, a gaze filter, the simulated eye tracker (no noise, no
+        // latency: the mouse itself)
+        const hk = await page.evaluate(async () => {
+            const d = window.fovDemo, o = d.options(), out = {};
+            d.setGazeSource(() => ({ x: 0.1, y: 0.2 }));
+            await d.renderOnce({});
+            out.source = d.getGaze();
+            d.setGazeFilter((p) => ({ x: p.x + 3, y: p.y }));
+            await d.renderOnce({});
+            out.filter = d.getGaze();
+            d.setGazeFilter(null); d.setGazeSource(null);
+            await d.setOptions({ gazeSource: 'sim', noiseDeg: 0, latencyMs: 0 });
+            await d.renderOnce({});
+            out.sim = d.getGaze(); out.mouse = d.getMouse();
+            await d.setOptions({ gazeSource: 'mouse', noiseDeg: 1, latencyMs: 50 });
+            out.w = o.width; out.h = o.height;
+            return out;
+        });
+        const near = (a, x, y) => Math.abs(a.x - x) < 1e-3 && Math.abs(a.y - y) < 1e-3;
+        if (near(hk.source, 0.1 * hk.w, 0.2 * hk.h) && near(hk.filter, 0.1 * hk.w + 3, 0.2 * hk.h) &&
+            near(hk.sim, hk.mouse.x * hk.w, hk.mouse.y * hk.h))
+            pass('gaze hooks', 'setGazeSource, setGazeFilter and the simulated tracker (0 deg, 0 ms) drive the gaze');
+        else fail('gaze hooks', JSON.stringify(hk));
         for (const m of MODES) {
             const r = await measureRow(page, m, '320x180', 2, simd[0]);
             console.log(`# fps ${m.name} 320x180 2 workers ${simd[0] ? 'SIMD' : 'scalar'}: foveated ${r.ff.toFixed(1)}, reference ${r.fr.toFixed(1)}`);
