@@ -21,6 +21,9 @@
 #                fov.pc into $(PREFIX)/share/pkgconfig/ (nothing is built; CMake: docs/build.md)
 #   make gallery the README's pictures: build/gallery renders PPMs into build/gallery_ppm/,
 #                examples/gallery_png.py (python3, standard library) writes docs/img/*.png
+#   make web     the browser demo (examples/web: the three headers in WebAssembly, the mouse as
+#                the gaze) into build/web/; make web-serve serves it on 127.0.0.1 (WEB_PORT, 8000);
+#                make bench-web: frames per second in headless chromium, bench/results/web.csv
 #   make examples, make clean
 # Nothing here is needed to *use* the headers: copy fovsdf.h into your project.
 
@@ -31,7 +34,8 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install \
+        web web-serve bench-web bench-web-native web-screenshot
 
 all: examples
 
@@ -189,3 +193,37 @@ $(BUILD)/bench_stress: bench/bench_stress.c fovsdf.h tests/common/fovstress.h
 bench-stress: $(BUILD)/bench_stress
 	@mkdir -p bench/results
 	nice ./$(BUILD)/bench_stress $(BENCH_ARGS)
+
+# issue 15: the browser demo (examples/web/build.sh: clang --target=wasm32 -ffreestanding
+# -nostdlib, scalar and SIMD128 builds of each module) and its server; tests/web/web_test.mjs
+# drives it in headless chromium (make test T=web; bench-web writes bench/results/web.csv)
+WEB_PORT ?= 8000
+web:
+	bash examples/web/build.sh $(BUILD)/web
+
+web-serve: web
+	@echo "fov web demo: http://127.0.0.1:$(WEB_PORT)/  (Ctrl-C stops the server)"
+	cd $(BUILD)/web && python3 -m http.server $(WEB_PORT) --bind 127.0.0.1
+
+bench-web: web
+	@mkdir -p bench/results
+	node tests/web/web_test.mjs --bench --csv bench/results/web.csv
+
+# the README's picture of the page (headless chromium, tests/web)
+web-screenshot: web
+	node tests/web/web_test.mjs --screenshot docs/img/web_demo.png --shot-only
+
+# the same frames natively (examples/web/native_bench.c: the demo's glue built with gcc and
+# libm, one thread; FOV_NO_LIBM natively has no hardware square root) and by the same WebAssembly modules in node (examples/web/node_bench.mjs, V8, one
+# thread): bench/results/web_native.csv, for the WebAssembly-against-native comparison
+bench-web-native: web
+	@mkdir -p $(BUILD) bench/results
+	@echo "mode,scene,width,height,workers,simd,fps_foveated,fps_reference,ratio" > bench/results/web_native.csv
+	for m in sdf lp pt; do \
+	    $(CC) $(STD) -O2 -ffp-contract=off -Wall -Wextra -DWEB_NATIVE -DWEB_NATIVE_LIBM -DWEB_MODULE_$$m \
+	        examples/web/native_bench.c -lm -o $(BUILD)/native_bench_$$m && \
+	        ./$(BUILD)/native_bench_$$m >> bench/results/web_native.csv || exit 1; \
+	done
+	node examples/web/node_bench.mjs $(BUILD)/web simd >> bench/results/web_native.csv
+	node examples/web/node_bench.mjs $(BUILD)/web scalar >> bench/results/web_native.csv
+	cat bench/results/web_native.csv

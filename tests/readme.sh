@@ -103,7 +103,7 @@ if ! command -v python3 >/dev/null 2>&1; then
 fi
 cp "$BENCH_README" "$TMP/bench.md"
 gen=1
-for s in sdf lp pt perceptual; do
+for s in sdf lp pt perceptual web; do
     if ! python3 "bench/${s}_tables.py" --write "$TMP/bench.md" >"$TMP/$s.gen.log" 2>&1; then
         gen=0
         bad "bench/${s}_tables.py --write failed: $(head -c 300 "$TMP/$s.gen.log")"

@@ -17,7 +17,8 @@
 #     errors_nostrings,
 #     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
-#   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers
+#   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers;
+#   web
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
 # The suite block below runs twice: once to list the sections and test programs (run_section
 # and build_test only record; the programs are then compiled JOBS at a time), then for real;
@@ -207,6 +208,11 @@ run_section programs bash tests/programs.sh
 run_section compile_matrix bash tests/compile/run.sh
 run_section cross_targets bash tests/xtarget/run.sh
 run_section cmake_consumers bash tests/cmake/run.sh
+
+# --- the browser demo (examples/web) in headless chromium: the sharp region follows the mouse
+# in each mode, a build that ignores the gaze fails that check, 1 and 2 workers agree, no page
+# or console errors (chromium, nodejs, npm ci in tests/web; a failure when missing under CI=true)
+run_section web bash tests/web/run.sh
 }
 
 SEL_LISTING=1

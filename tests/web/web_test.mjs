@@ -1,0 +1,351 @@
+// tests/web/web_test.mjs - the browser demo (examples/web) in a real browser: Debian's
+// chromium, headless, driven by playwright-core (pinned in tests/web/package.json and
+// package-lock.json; install: apt-get install chromium, then npm ci in tests/web).
+//
+//   node tests/web/web_test.mjs [--csv FILE] [--bench] [--debug DIR]
+//
+// Builds the page (examples/web/build.sh into build/web/), serves it from 127.0.0.1 (a static
+// server in this process) and checks, each a PASS or FAIL line, closing with "N passed, N failed":
+//   load         the page reaches ready (fovDemo.state) with the SIMD128 modules where the
+//                browser validates the SIMD probe, and with the scalar ones under ?simd=0
+//   gaze <mode>  the sharp region follows the mouse. The mouse moves (real input events) to two
+//                distant points A and B of the canvas; at each the foveated frame is drawn and
+//                read back from the canvas, and so is the full-resolution reference rendered by
+//                the same module (sdf: the cone tracer at every pixel; lp: fovsdf at every pixel;
+//                pt: UNIFORM at the layers' spp / Whitted 16 spp for selective; pt views start
+//                afresh and accumulate PT_FRAMES frames). For a disc of radius R_DISC pixels
+//                around each point P: err_on(P) = the mean absolute difference (0..255) against
+//                the reference while the gaze is at P, err_off(P) = the same while the gaze is
+//                at the other point. Pass when err_on(P) <= the mode's ON_MAX (the sharp region
+//                equals the reference: 0.5 for the tracers that shade the same samples; larger
+//                for selective, which supersamples towards its 16-spp reference) and
+//                err_off(P) >= err_on(P) + OFF_GAP at both points.
+//   control <mode>  the same page with ?ignore_gaze=1 (the glue foveates at the image centre
+//                whatever the gaze): the gaze check above must FAIL, so a build whose foveation
+//                ignores the gaze cannot pass
+//   workers <mode>  1 and 2 workers give the same image, byte for byte
+//   gaze hooks   fovDemo.setGazeSource and setGazeFilter drive the gaze; the simulated eye
+//                tracker with 0 deg noise and 0 ms latency gives the mouse
+//   errors       no page errors and no console errors in any of the pages
+//   shown <case> the page shows a clear error (#error) without WebAssembly (removed by an init
+//                script), when a module fails to load (HTTP 404 for the .wasm files) and when a
+//                worker dies (fovDemo.crashWorker: an uncaught error in the worker)
+// --screenshot FILE also saves a PNG of the page (docs/img/web_demo.png; with --shot-only
+// nothing else: make web-screenshot).
+// It also measures frames per second of the foveated and the reference frame, interleaved in
+// the page (fovDemo.measure: the fastest of 3 frames each, --bench 7) and writes them to --csv
+// (default build/web_test/web.csv): mode,scene,width,height,workers,simd,fps_foveated,
+// fps_reference,ratio. --bench measures the full grid (320x180 and 640x360, 1 and 2 workers,
+// scalar and SIMD, every mode) for bench/results/web.csv (make bench-web) and skips the checks.
+// Outside CI a missing chromium or node_modules prints SKIP with what to install; with CI=true
+// it is a FAIL.
+import { spawnSync } from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import { fileURLToPath, pathToFileURL } from 'node:url';
+
+const HERE = path.dirname(fileURLToPath(import.meta.url));
+const ROOT = path.resolve(HERE, '../..');
+const OUT = path.join(ROOT, 'build/web');
+const IS_CI = process.env.CI === 'true';
+const args = process.argv.slice(2);
+const argOf = (name, def) => { const i = args.indexOf(name); return i >= 0 && i + 1 < args.length ? args[i + 1] : def; };
+const BENCH = args.includes('--bench');
+const CSV = argOf('--csv', path.join(ROOT, 'build/web_test/web.csv'));
+const DEBUG = argOf('--debug', null);
+const SHOT = argOf('--screenshot', null);
+
+let passed = 0, failed = 0;
+const pass = (name, detail) => { passed++; console.log(`PASS ${name}${detail ? `: ${detail}` : ''}`); };
+const fail = (name, detail) => { failed++; console.log(`FAIL ${name}: ${detail}`); };
+const done = () => { console.log(`${passed} passed, ${failed} failed`); process.exit(failed ? 1 : 0); };
+const missing = (name, what) => {
+    if (IS_CI) fail(name, `${what} (CI=true: a missing tool is a failure)`);
+    else console.log(`SKIP ${name}: ${what}`);
+};
+
+// ---- tools ----------------------------------------------------------------------------------
+function findChromium() {
+    const cands = [process.env.CHROMIUM, 'chromium', 'chromium-browser', 'google-chrome'].filter(Boolean);
+    for (const c of cands) {
+        if (c.includes('/')) { if (fs.existsSync(c)) return c; continue; }
+        const r = spawnSync('sh', ['-c', `command -v ${c}`], { encoding: 'utf8' });
+        if (r.status === 0 && r.stdout.trim()) return r.stdout.trim();
+    }
+    return null;
+}
+const chromiumPath = findChromium();
+if (!chromiumPath) { missing('browser', 'chromium not found (apt-get install chromium)'); done(); }
+let chromium;
+try {
+    ({ chromium } = await import(pathToFileURL(path.join(HERE, 'node_modules/playwright-core/index.mjs')).href));
+} catch (e) {
+    missing('playwright', `playwright-core not installed (cd tests/web && npm ci): ${e.message.split('\n')[0]}`);
+    done();
+}
+const build = spawnSync('bash', [path.join(ROOT, 'examples/web/build.sh'), OUT], { encoding: 'utf8' });
+if (build.status !== 0) {
+    const why = (build.stderr || build.stdout || '').split('\n').slice(0, 4).join(' | ');
+    if (/not found|No such file/.test(why)) missing('build', `clang / wasm-ld missing (apt-get install clang lld): ${why}`);
+    else fail('build', `examples/web/build.sh failed: ${why}`);
+    done();
+}
+const sizes = JSON.parse(fs.readFileSync(path.join(OUT, 'sizes.json'), 'utf8'));
+pass('build', `module sizes (bytes) ${Object.entries(sizes).map(([k, v]) => `${k} ${v}`).join(', ')}`);
+
+// ---- static server --------------------------------------------------------------------------
+const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.json': 'application/json' };
+const server = http.createServer((req, res) => {
+    const p = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    const f = path.join(OUT, p === '/' ? 'index.html' : p);
+    if (!f.startsWith(OUT) || !fs.existsSync(f) || fs.statSync(f).isDirectory()) { res.writeHead(404); res.end('not found'); return; }
+    res.writeHead(200, { 'Content-Type': MIME[path.extname(f)] || 'application/octet-stream', 'Cache-Control': 'no-store' });
+    fs.createReadStream(f).pipe(res);
+});
+await new Promise((r) => server.listen(0, '127.0.0.1', r));
+const BASE = `http://127.0.0.1:${server.address().port}/`;
+
+const browser = await chromium.launch({
+    executablePath: chromiumPath, headless: true,
+    args: ['--no-sandbox', '--disable-gpu', '--disable-dev-shm-usage'],
+});
+const pageErrors = [];
+async function openPage(query) {
+    const page = await browser.newPage({ viewport: { width: 1100, height: 760 } });
+    page.on('pageerror', (e) => pageErrors.push(`${query}: page error ${e.message}`));
+    page.on('console', (m) => { if (m.type() === 'error') pageErrors.push(`${query}: console error ${m.text()}`); });
+    await page.goto(BASE + 'index.html' + query);
+    await page.waitForFunction(() => window.fovDemo && (window.fovDemo.state === 'ready' || window.fovDemo.state === 'error'), null, { timeout: 30000 });
+    const st = await page.evaluate(() => window.fovDemo.state);
+    if (st !== 'ready') throw new Error(`page ${query} did not start: ${await page.textContent('#error')}`);
+    return page;
+}
+
+// ---- helpers --------------------------------------------------------------------------------
+async function readCanvas(page) {
+    const b64 = await page.evaluate(() => {
+        const c = document.getElementById('view');
+        const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+        let s = '';
+        for (let i = 0; i < d.length; i += 0x8000) s += String.fromCharCode.apply(null, d.subarray(i, i + 0x8000));
+        return btoa(s);
+    });
+    return new Uint8Array(Buffer.from(b64, 'base64'));
+}
+async function moveMouse(page, fx, fy) {
+    const box = await page.locator('#overlay').boundingBox();
+    await page.mouse.move(box.x + fx * box.width, box.y + fy * box.height, { steps: 4 });
+    await page.waitForFunction(([x, y]) => {
+        const m = window.fovDemo.getMouse();
+        return Math.abs(m.x - x) < 0.01 && Math.abs(m.y - y) < 0.01;
+    }, [fx, fy], { timeout: 5000 });
+}
+function discErr(img, ref, w, cx, cy, r) {
+    let s = 0, n = 0;
+    for (let y = Math.floor(cy - r); y <= Math.ceil(cy + r); ++y)
+        for (let x = Math.floor(cx - r); x <= Math.ceil(cx + r); ++x) {
+            if ((x + 0.5 - cx) ** 2 + (y + 0.5 - cy) ** 2 > r * r) continue;
+            const i = 4 * (y * w + x);
+            for (let c = 0; c < 3; ++c) { s += Math.abs(img[i + c] - ref[i + c]); n++; }
+        }
+    return s / n;
+}
+function savePng(name, img, w, h) {   // debugging aid: a PPM (no PNG encoder needed)
+    if (!DEBUG) return;
+    fs.mkdirSync(DEBUG, { recursive: true });
+    const buf = Buffer.alloc(w * h * 3);
+    for (let i = 0; i < w * h; ++i) { buf[3 * i] = img[4 * i]; buf[3 * i + 1] = img[4 * i + 1]; buf[3 * i + 2] = img[4 * i + 2]; }
+    fs.writeFileSync(path.join(DEBUG, `${name}.ppm`), Buffer.concat([Buffer.from(`P6\n${w} ${h}\n255\n`), buf]));
+}
+
+// The modes. A and B: two distant points with detail under them (fractions of the image).
+const PT_FRAMES = 2;
+const MODES = [
+    { name: 'sdf cone_fov', o: { mode: 'sdf', sdfMethod: 'cone_fov', scene: 0 }, onMax: 0.5, csv: ['sdf_cone_fov', 'primitives'] },
+    { name: 'sdf fipr', o: { mode: 'sdf', sdfMethod: 'fipr', scene: 0 }, onMax: 0.5, csv: ['sdf_fipr', 'primitives'] },
+    { name: 'lp C Fov', o: { mode: 'lp', preset: 2, taa: false, scene: 0 }, onMax: 0.5, csv: ['lp_c_fov', 'primitives'] },
+    { name: 'pt layers', o: { mode: 'pt', ptMethod: 'layers' }, onMax: 0.5, csv: ['pt_layers', 'cornell'] },
+    // selective supersampling changes only edges: the points are on the light's edge and on
+    // the shadow edge at the lower left (where a scan of gaze points found large on / off gaps)
+    { name: 'pt selective', o: { mode: 'pt', ptMethod: 'selective' }, onMax: 3.0, csv: ['pt_selective', 'cornell'],
+      pa: [0.5, 0.1], pb: [0.3, 0.9] },
+];
+const PA = [0.25, 0.72], PB = [0.75, 0.72];
+const R_DISC = 5, OFF_GAP = 1.0;
+const BASE_OPT = { res: '320x180', scale: 1, overlay: false, ref: 'off', orbit: false, gazeSource: 'mouse' };
+
+async function gazeErrors(page, m, tag) {
+    const o = await page.evaluate((opt) => window.fovDemo.setOptions(opt), { ...BASE_OPT, workers: 2, ...m.o });
+    const w = o.width, h = o.height;
+    const imgs = [], A = m.pa || PA, B = m.pb || PB;
+    for (const [fx, fy] of [A, B]) {
+        await moveMouse(page, fx, fy);
+        await page.evaluate(() => window.fovDemo.renderOnce({ frames: 2 }));
+        imgs.push(await readCanvas(page));
+    }
+    await page.evaluate((f) => window.fovDemo.renderOnce({ reference: true, frames: f }), PT_FRAMES);
+    const ref = await readCanvas(page);
+    savePng(`${tag}_${m.csv[0]}_A`, imgs[0], w, h); savePng(`${tag}_${m.csv[0]}_B`, imgs[1], w, h); savePng(`${tag}_${m.csv[0]}_ref`, ref, w, h);
+    const pa = [A[0] * w, A[1] * h], pb = [B[0] * w, B[1] * h];
+    return {
+        onA: discErr(imgs[0], ref, w, pa[0], pa[1], R_DISC), offA: discErr(imgs[1], ref, w, pa[0], pa[1], R_DISC),
+        onB: discErr(imgs[1], ref, w, pb[0], pb[1], R_DISC), offB: discErr(imgs[0], ref, w, pb[0], pb[1], R_DISC),
+    };
+}
+const follows = (e, m) => e.onA <= m.onMax && e.onB <= m.onMax && e.offA >= e.onA + OFF_GAP && e.offB >= e.onB + OFF_GAP;
+const fmtE = (e) => `err_on A ${e.onA.toFixed(2)} B ${e.onB.toFixed(2)}, err_off A ${e.offA.toFixed(2)} B ${e.offB.toFixed(2)}`;
+
+// the page's error reports: each case in a page of its own (its errors are expected)
+async function errorCases() {
+    const cases = [
+        ['no WebAssembly', /no WebAssembly/, async (p) => { await p.addInitScript(() => { delete globalThis.WebAssembly; }); }, null],
+        ['module load failure', /cannot load .*\.wasm: HTTP 404/, async (p) => {
+            await p.route(/\.wasm$/, (r) => r.fulfill({ status: 404, body: 'missing' }));
+        }, null],
+        ['worker death', /Worker 1 died/, null, async (p) => { await p.evaluate(() => window.fovDemo.crashWorker(1)); }],
+    ];
+    for (const [name, re, before, after] of cases) {
+        const page = await browser.newPage();
+        try {
+            if (before) await before(page);
+            await page.goto(BASE + 'index.html?workers=2');
+            if (after) {
+                await page.waitForFunction(() => window.fovDemo && window.fovDemo.state === 'ready', null, { timeout: 30000 });
+                await after(page);
+            }
+            await page.waitForFunction(() => !document.getElementById('error').hidden, null, { timeout: 15000 });
+            const msg = await page.textContent('#error');
+            if (re.test(msg)) pass(`shown ${name}`, `"${msg.trim().slice(0, 100)}"`);
+            else fail(`shown ${name}`, `the page shows "${msg.trim().slice(0, 200)}", expected ${re}`);
+        } catch (e) {
+            fail(`shown ${name}`, `no error shown: ${String(e.message || e).split('\n')[0]}`);
+        } finally {
+            await page.close();
+        }
+    }
+}
+
+// the README's picture: the page at 640x360, fovsdf cone_fov with the overlay, gaze left of centre
+async function screenshot(file) {
+    const page = await browser.newPage({ viewport: { width: 1130, height: 600 } });
+    await page.goto(BASE + 'index.html?workers=2');
+    await page.waitForFunction(() => window.fovDemo && window.fovDemo.state === 'ready', null, { timeout: 30000 });
+    await page.evaluate(() => window.fovDemo.setOptions({ mode: 'sdf', sdfMethod: 'cone_fov', scene: 0, res: '640x360', scale: 1,
+        overlay: true, ref: 'alternate', orbit: false, gazeSource: 'mouse' }));
+    await moveMouse(page, 0.36, 0.62);
+    await page.waitForTimeout(4000);
+    fs.mkdirSync(path.dirname(file), { recursive: true });
+    await page.screenshot({ path: file });
+    await page.close();
+    pass('screenshot', `${path.relative(ROOT, file)}, ${fs.statSync(file).size} bytes`);
+}
+
+const rows = [];
+async function measureRow(page, m, res, workers, simd) {
+    const o = await page.evaluate((opt) => window.fovDemo.setOptions(opt),
+        { ...BASE_OPT, ...m.o, res, workers, ...(m.o.mode === 'lp' ? { taa: true } : {}) });
+    await moveMouse(page, 0.5, 0.5);
+    const t = await page.evaluate((n) => window.fovDemo.measure({ frames: n }), BENCH ? 7 : 3);
+    const ff = 1000 / t.msFov, fr = 1000 / t.msRef;
+    rows.push([m.csv[0], m.csv[1], o.width, o.height, workers, simd ? 1 : 0, ff.toFixed(2), fr.toFixed(2), (ff / fr).toFixed(3)]);
+    return { ff, fr };
+}
+
+try {
+    if (SHOT && args.includes('--shot-only')) {
+        await screenshot(SHOT);
+    } else if (BENCH) {
+        for (const simd of [true, false]) {
+            const page = await openPage(simd ? '' : '?simd=0');
+            const isSimd = await page.evaluate(() => window.fovDemo.simd);
+            if (isSimd !== simd) { fail(`bench simd=${simd}`, 'the page did not pick the requested build'); continue; }
+            for (const m of MODES) for (const res of ['320x180', '640x360']) for (const wk of [1, 2]) {
+                const r = await measureRow(page, m, res, wk, simd);
+                console.log(`# ${m.csv[0]} ${res} workers ${wk} ${simd ? 'simd' : 'scalar'}: ${r.ff.toFixed(1)} / ${r.fr.toFixed(1)} fps`);
+            }
+            await page.close();
+        }
+        pass('bench', `${rows.length} rows`);
+    } else {
+        const t0 = Date.now();
+        const page = await openPage('');
+        const simd = await page.evaluate(() => [window.fovDemo.simd, window.fovDemo.simdSupported]);
+        if (simd[0] === simd[1]) pass('load', `SIMD128 ${simd[1] ? 'validated, SIMD build running' : 'not supported, scalar build running'}`);
+        else fail('load', `simd supported ${simd[1]} but running simd=${simd[0]}`);
+        for (const m of MODES) {
+            const e = await gazeErrors(page, m, 'on');
+            if (follows(e, m)) pass(`gaze ${m.name}`, fmtE(e)); else fail(`gaze ${m.name}`, `${fmtE(e)} (need on <= ${m.onMax}, off >= on + ${OFF_GAP})`);
+        }
+        for (const m of MODES) {
+            const imgs = [];
+            for (const wk of [1, 2]) {
+                await page.evaluate((opt) => window.fovDemo.setOptions(opt), { ...BASE_OPT, ...m.o, workers: wk });
+                await moveMouse(page, 0.3, 0.4);
+                await page.evaluate(() => window.fovDemo.renderOnce({ frames: 2 }));
+                imgs.push(await readCanvas(page));
+            }
+            let diff = 0;
+            for (let i = 0; i < imgs[0].length; ++i) diff += imgs[0][i] !== imgs[1][i];
+            if (imgs[0].length > 0 && diff === 0) pass(`workers ${m.name}`, `1 and 2 workers: identical ${imgs[0].length / 4} pixels`);
+            else fail(`workers ${m.name}`, `${diff} bytes differ between 1 and 2 workers`);
+        }
+        // the gaze hooks: a gaze source, a gaze filter, the simulated eye tracker (no noise, no
+        // latency: the mouse itself)
+        const hk = await page.evaluate(async () => {
+            const d = window.fovDemo, o = d.options(), out = {};
+            d.setGazeSource(() => ({ x: 0.1, y: 0.2 }));
+            await d.renderOnce({});
+            out.source = d.getGaze();
+            d.setGazeFilter((p) => ({ x: p.x + 3, y: p.y }));
+            await d.renderOnce({});
+            out.filter = d.getGaze();
+            d.setGazeFilter(null); d.setGazeSource(null);
+            await d.setOptions({ gazeSource: 'sim', noiseDeg: 0, latencyMs: 0 });
+            await d.renderOnce({});
+            out.sim = d.getGaze(); out.mouse = d.getMouse();
+            await d.setOptions({ gazeSource: 'mouse', noiseDeg: 1, latencyMs: 50 });
+            out.w = o.width; out.h = o.height;
+            return out;
+        });
+        const near = (a, x, y) => Math.abs(a.x - x) < 1e-3 && Math.abs(a.y - y) < 1e-3;
+        if (near(hk.source, 0.1 * hk.w, 0.2 * hk.h) && near(hk.filter, 0.1 * hk.w + 3, 0.2 * hk.h) &&
+            near(hk.sim, hk.mouse.x * hk.w, hk.mouse.y * hk.h))
+            pass('gaze hooks', 'setGazeSource, setGazeFilter and the simulated tracker (0 deg, 0 ms) drive the gaze');
+        else fail('gaze hooks', JSON.stringify(hk));
+        for (const m of MODES) {
+            const r = await measureRow(page, m, '320x180', 2, simd[0]);
+            console.log(`# fps ${m.name} 320x180 2 workers ${simd[0] ? 'SIMD' : 'scalar'}: foveated ${r.ff.toFixed(1)}, reference ${r.fr.toFixed(1)}`);
+        }
+        await page.close();
+        const ctl = await openPage('?ignore_gaze=1');
+        for (const m of MODES) {
+            const e = await gazeErrors(ctl, m, 'ctl');
+            if (!follows(e, m)) pass(`control ${m.name}`, `?ignore_gaze=1 fails the gaze check as it must (${fmtE(e)})`);
+            else fail(`control ${m.name}`, `a build that ignores the gaze passed the gaze check (${fmtE(e)})`);
+        }
+        await ctl.close();
+        const sc = await openPage('?simd=0');
+        const s0 = await sc.evaluate(() => window.fovDemo.simd);
+        if (s0 === false) pass('load scalar', '?simd=0 runs the scalar modules'); else fail('load scalar', '?simd=0 still runs SIMD');
+        await sc.close();
+        await errorCases();
+        if (SHOT) await screenshot(SHOT);
+        console.log(`# ${((Date.now() - t0) / 1000).toFixed(1)} s in the browser`);
+    }
+    if (pageErrors.length === 0) pass('errors', 'no page errors, no console errors');
+    else fail('errors', pageErrors.slice(0, 5).join(' | '));
+} catch (e) {
+    fail('run', String(e && e.stack || e).split('\n').slice(0, 3).join(' | '));
+} finally {
+    await browser.close();
+    server.close();
+}
+if (rows.length) {
+    fs.mkdirSync(path.dirname(CSV), { recursive: true });
+    const head = 'mode,scene,width,height,workers,simd,fps_foveated,fps_reference,ratio,browser\n';
+    const ver = browser.version ? browser.version() : '';
+    fs.writeFileSync(CSV, head + rows.map((r) => [...r, `chromium ${ver}`].join(',')).join('\n') + '\n');
+    console.log(`# wrote ${path.relative(ROOT, CSV)} (${rows.length} rows)`);
+}
+done();
