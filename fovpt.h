@@ -287,16 +287,20 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    a list over threads or calls, and a new `frame` each frame (the same frame repeats the
    noise). jitter 0: the point is the sample (fovlp's TAA jitter moves the points over
    frames, which anti-aliases); jitter 1 at pixel centres, first = y W + x0 for the pixels
-   x0, x0 + 1, ... of row y, is UNIFORM's pixel (its box filter and streams: fovpt_render's
-   image bit for bit, tested); a texel's size prefilters a coarser sample. t (may be NULL)
-   gets the distance along sample 0's unit camera ray to the first surface (FLT_MAX when it
-   leaves the scene): the depth fovlp's TAA reprojects with. The config's method, foveation
-   tables, temporal and display fields are not read (mode, max_depth, rr_start, no_nee, seed
-   and logger are); spp 0 takes cfg->spp.
+   x0, x0 + 1, ... of row y, is the UNIFORM method's pixel (its box filter and streams:
+   fovpt_render's image bit for bit, tested with and without clamp_white set, as UNIFORM
+   never clamps). clamp_white is not read here: rgb is the plain mean, not a LAYERS or ZONES
+   stride >= 2 lattice point's mean of sample groups clamped at clamp_white; a texel's size
+   prefilters a coarser sample. t (may be NULL) gets the distance along sample 0's unit
+   camera ray to the first surface (FLT_MAX when it leaves the scene): the depth fovlp's TAA
+   reprojects with. The config's method, foveation tables (layers, zones, with their
+   clamp_white), temporal and display fields are not read (mode, max_depth, rr_start,
+   no_nee, seed and logger are); spp 0 takes cfg->spp.
    Every pointer, the config, the camera and every point are checked before any work (NULL:
    FOV_ERR_NULL; a NaN or infinite x, y or jitter: FOV_ERR_NOT_FINITE; a negative jitter, a
-   point whose ray (or its jitter square's corner's) overflows: FOV_ERR_INVALID_ARG; spp
-   above FOVPT_MAX_SPP or 3 n floats beyond SIZE_MAX: FOV_ERR_LIMIT);
+   point whose ray or the ray of any of its jitter square's 4 corners overflows (then no
+   sample's ray can): FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond
+   SIZE_MAX: FOV_ERR_LIMIT);
    on an error nothing is written. stats: samples and camera_rays n spp, plus the paths' rays.
 
 DOES NOT
@@ -1188,10 +1192,11 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *re
    (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame),
    its ray through the point (jitter 0) or through a point uniform in the jitter x jitter
    pixels centred on it (the stream's first two numbers; jitter 1 at pixel centres is
-   UNIFORM's box filter, bit for bit), fovpt_radiance's estimator; rgb gets the mean (3 floats
-   per point), t (may be NULL) the first-hit distance along sample 0's unit camera ray
-   (FLT_MAX: a miss). Everything is checked before any work: FOV_ERR_NULL, _NOT_FINITE,
-   _INVALID_ARG, _LIMIT, the camera's errors. stats is added to. */
+   UNIFORM's box filter, bit for bit), fovpt_radiance's estimator; rgb gets the plain mean (3
+   floats per point; clamp_white is not read), t (may be NULL) the first-hit distance along
+   sample 0's unit camera ray (FLT_MAX: a miss). Everything is checked before any work
+   (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG incl. a jitter square corner's ray overflowing,
+   _LIMIT, the camera's errors). stats is added to. */
 FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *scene, const fovpt_config *resolved,
                                         const fovpt_camera *cam, uint32_t n, const float *xy,
                                         uint32_t stride, uint32_t first, uint32_t frame,
@@ -4109,6 +4114,7 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
 {
     float r[3], u[3], f[3], t4[4], o[3], hj;
     uint32_t i, k, W, H;
+    int bad;
     fovpt_stats st;
     fov_result e;
     if (!c) return FOV_ERR_NULL;
@@ -4147,10 +4153,15 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
         if (!fov__finite(x) || !fov__finite(y))
             FOVPT__FAIL(&c->logger, FOV_ERR_NOT_FINITE,
                         "shade_points: a point's x or y is NaN or infinite");
-        /* sx and sy are each linear in x and y: the square's two extreme corners bound it */
-        if (!(fovpt__primary(r, u, f, t4, W, H, x, y, d) > 0.0f) ||
-            (jitter > 0.0f && (!(fovpt__primary(r, u, f, t4, W, H, x - hj, y - hj, d) > 0.0f) ||
-                               !(fovpt__primary(r, u, f, t4, W, H, x + hj, y + hj, d) > 0.0f))))
+        /* a ray component f + sx r + sy u is monotone in x (through sx) and in y (through sy),
+           rounding included, and a jittered x lies in [x - hj, x + hj] (y alike): over the
+           square its extremes sit at corners, but which two depends on the signs of r and u
+           (a rolled camera mixes sx and sy), so all four corners are checked */
+        bad = !(fovpt__primary(r, u, f, t4, W, H, x, y, d) > 0.0f);
+        for (k = 0; k < 4u && jitter > 0.0f && !bad; ++k)
+            bad = !(fovpt__primary(r, u, f, t4, W, H, (k & 1u) ? x + hj : x - hj,
+                                   (k & 2u) ? y + hj : y - hj, d) > 0.0f);
+        if (bad)
             FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                         "shade_points: a point so far off the image that its ray overflows");
     }

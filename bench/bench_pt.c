@@ -29,8 +29,10 @@
                         factor) and layers_fovea, layers_diam_fovea (only the innermost
                         layer's samples raised): the time of uniform4 in the same run
                         (equal time; calibrated from the default row as a timed pilot,
-                        corrected once along the secant when more than 8 % off; the
-                        measured time is in time_ms, the target in budget_time_ms).
+                        corrected along the secant while more than 8 % off, at most
+                        EQT_RUNS = 4 timed runs; a row still outside +-8 % is written
+                        all the same with a WARNING line on stdout; the measured time is
+                        in time_ms, the target in budget_time_ms).
        eqtime_<m>       method uniform_eqt: UNIFORM at the spp whose time matches method
                         <m>'s (spp = time of <m> / time of uniform1 or whitted1, rounded).
    - mode: path (path tracing, max depth 8, NEE) for uniform/layers/zones; whitted (depth 3) for
@@ -538,16 +540,30 @@ static uint32_t spp_of(double v)
 /* Method m (LAYERS, LAYERS diameter or ZONES) with the time t_target: its samples scaled by
    x, all layers alike (fov_only = 0: x multiplies every spp) or the innermost layer only
    (fov_only = 1: x is its spp). The first x comes from the pilot (the default row: time
-   t_pilot, sample counts sp), assuming time proportional to samples; when the measured time
-   is more than 8 % off, x is corrected once along the secant through the two measurements.
-   Returns the measured time; c and st are those of the returned run. */
+   t_pilot, sample counts sp), assuming time proportional to samples; while the measured time
+   is more than 8 % off, x is corrected along the secant through the last two measurements
+   (a step the spp rounding would undo moves on to the neighbouring config), at most EQT_RUNS
+   timed runs; a result still outside +-8 % is returned all the same (the row is written)
+   after a WARNING line on stdout. Returns the measured time; c and st are those of the
+   returned run (the last). */
+#define EQT_RUNS 4
+#define EQT_TOL 0.08
+static void eqtime_cfg(const fovpt_config *base, int m, int fov_only, double x, fovpt_config *c)
+{
+    uint32_t l, n = base->layers.count;
+    *c = *base;
+    if (m == 4) c->spp = spp_of(4.0 * x);
+    else if (fov_only) c->layers.layer[n - 1u].spp = spp_of(x);
+    else
+        for (l = 0; l < n; ++l) c->layers.layer[l].spp = spp_of((double)base->layers.layer[l].spp * x);
+}
 static double eqtime_render(pt_scene *S, int m, int fov_only, double t_target, double t_pilot, const fovpt_stats *sp, fov_gaze g,
                             float *img, fovpt_config *c, fovpt_stats *st)
 {
-    fovpt_config base;
+    fovpt_config base, next;
     double x0, t0 = t_pilot, x1, t1 = t_pilot;
     uint32_t l, n;
-    int it;
+    int it, runs = 0, k;
     method_cfg(&base, m);
     n = base.layers.count;
     if (!fov_only) {
@@ -559,18 +575,25 @@ static double eqtime_render(pt_scene *S, int m, int fov_only, double t_target, d
         x0 = (double)base.layers.layer[n - 1u].spp;
         x1 = x0 * (1.0 + (t_target / t_pilot - 1.0) * tot / (in > 0.0 ? in : 1.0));
     }
-    for (it = 0; it < 2; ++it) {
+    for (it = 0; it < EQT_RUNS; ++it) {
         double xn;
-        *c = base;
-        if (m == 4) c->spp = spp_of(4.0 * x1);
-        else if (fov_only) c->layers.layer[n - 1u].spp = spp_of(x1);
-        else
-            for (l = 0; l < n; ++l) c->layers.layer[l].spp = spp_of((double)base.layers.layer[l].spp * x1);
+        eqtime_cfg(&base, m, fov_only, x1, c);
         t1 = render(S, c, g, img, st, 1);
-        if (fabs(t1 / t_target - 1.0) <= 0.08 || it == 1) break;
+        runs++;
+        if (!(t1 > 0.0) || fabs(t1 / t_target - 1.0) <= EQT_TOL) break;
         xn = (t1 > t0 && x1 != x0) ? x1 + (t_target - t1) * (x1 - x0) / (t1 - t0) : x1 * t_target / t1;
+        if (!(xn > 0.0)) xn = x1 * t_target / t1;
+        eqtime_cfg(&base, m, fov_only, xn, &next);
+        for (k = 0; k < 200 && memcmp(&next, c, sizeof next) == 0; ++k) { /* rounded to the same run */
+            xn *= t1 > t_target ? 0.97 : 1.03;
+            eqtime_cfg(&base, m, fov_only, xn, &next);
+        }
+        if (memcmp(&next, c, sizeof next) == 0) break; /* no other config in that direction */
         x0 = x1; t0 = t1; x1 = xn;
     }
+    if (t1 > 0.0 && fabs(t1 / t_target - 1.0) > EQT_TOL)
+        printf("  WARNING method %d%s: equal time not reached, time / target %.2f after %d run(s) (row written)\n", m,
+               fov_only ? " (fovea only)" : "", t1 / t_target, runs);
     return t1;
 }
 
@@ -622,9 +645,16 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
     double t0, t;
     memset(st, 0, sizeof *st);
     lc.taa.enable = frames > 1 ? 1u : 0u;
-    if (fovlp_camera_from(&S->cam, &lcam) != FOV_OK || fovlp_memory_size(&lc, &bytes) != FOV_OK) return -1.0;
-    mem = malloc(bytes);
-    if (fovlp_init(&lp, &lc, mem, bytes) != FOV_OK) { free(mem); return -1.0; }
+    if (fovlp_camera_from(&S->cam, &lcam) != FOV_OK || fovlp_memory_size(&lc, &bytes) != FOV_OK) {
+        printf("  lp_render: fovlp_camera_from / fovlp_memory_size failed\n");
+        return -1.0;
+    }
+    mem = malloc(bytes ? bytes : 1u);
+    if (!mem || fovlp_init(&lp, &lc, mem, bytes) != FOV_OK) {
+        printf("  lp_render: %s\n", mem ? "fovlp_init failed" : "out of memory");
+        free(mem);
+        return -1.0;
+    }
     smp = (float *)calloc((size_t)lp.geo.samples * 3u, sizeof(float));
     sdep = (float *)calloc(lp.geo.samples, sizeof(float));
     cur = (float *)malloc(np * 12u);
@@ -633,6 +663,10 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
         hist[a] = (float *)calloc(np * 3u, sizeof(float));
         hdep[a] = (float *)calloc(np, sizeof(float));
         age[a] = (uint8_t *)calloc(np, 1);
+    }
+    if (!smp || !sdep || !cur || !cdep || !hist[0] || !hist[1] || !hdep[0] || !hdep[1] || !age[0] || !age[1]) {
+        printf("  lp_render: out of memory\n");
+        ok = 0;
     }
     memset(cnt, 0, sizeof *cnt);
     t0 = cpu_ms();
@@ -644,8 +678,12 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
         ok = fovlp_begin_frame(&lp, g, &lcam) == FOV_OK && lppt_shade_samples(&lp, 0, lp.geo.lp_h, &u, smp, sdep) == FOV_OK;
         u.spp = spp_disc;
         u.jitter = lc.taa.enable ? 0.0f : 1.0f; /* one frame: the disc pixels box-filtered as UNIFORM's */
-        ok = ok && lppt_shade_samples(&lp, lp.geo.lp_h, fovlp_sample_rows(&lp), &u, smp, sdep) == FOV_OK &&
-             fovlp_reconstruct_rows(&lp, smp, sdep, 0, H, lc.taa.enable ? cur : img, 0, cdep) == FOV_OK;
+        ok = ok && lppt_shade_samples(&lp, lp.geo.lp_h, fovlp_sample_rows(&lp), &u, smp, sdep) == FOV_OK;
+        if (!ok) { printf("  lp_render: frame %u: fovlp_begin_frame / lppt_shade_samples failed\n", f); break; }
+        if (fovlp_reconstruct_rows(&lp, smp, sdep, 0, H, lc.taa.enable ? cur : img, 0, cdep) != FOV_OK) {
+            printf("  lp_render: frame %u: fovlp_reconstruct_rows failed\n", f);
+            ok = 0;
+        }
         if (ok && lc.taa.enable) {
             fovlp_taa_io io;
             fovlp_taa_io_init(&io);
@@ -653,12 +691,13 @@ static double lp_render(pt_scene *S, const fovlp_config *lc0, fov_gaze g, uint32
             io.prev_rgb = hist[ping]; io.prev_depth = hdep[ping]; io.prev_age = age[ping];
             io.out_rgb = f + 1u == frames ? img : hist[1 - ping]; io.out_depth = hdep[1 - ping]; io.out_age = age[1 - ping];
             ok = fovlp_taa_rows(&lp, &io, 0, H, NULL) == FOV_OK;
+            if (!ok) printf("  lp_render: frame %u: fovlp_taa_rows failed\n", f);
             ping = 1 - ping;
         }
         fovpt_stats_add(st, &u.stats);
     }
     t = cpu_ms() - t0;
-    if (ok && fovlp_count_samples(&lp, cnt) != FOV_OK) ok = 0;
+    if (ok && fovlp_count_samples(&lp, cnt) != FOV_OK) { printf("  lp_render: fovlp_count_samples failed\n"); ok = 0; }
     free(mem); free(smp); free(sdep); free(cur); free(cdep);
     for (a = 0; a < 2; ++a) { free(hist[a]); free(hdep[a]); free(age[a]); }
     return ok ? t : -1.0;
@@ -672,6 +711,14 @@ static void lp_split(double x, int taa, uint32_t *frames, uint32_t *spp)
     if (x >= 16.0) { *frames = 16; *spp = spp_of(x / 16.0); return; }
     *frames = x >= 2.0 ? (uint32_t)(x + 0.5) : 2u;
     *spp = 1;
+}
+
+/* the frames, spp per LP position and spp per disc position of x (var as in lp_rows) */
+static void lp_budget(double x, int var, uint32_t *frames, uint32_t *spp, uint32_t *spp_disc)
+{
+    if (var == 2) { *frames = 1; *spp = 4; *spp_disc = spp_of(x); return; }
+    lp_split(x, var == 1, frames, spp);
+    *spp_disc = *spp;
 }
 
 /* The lp_ rows of one scene and gaze beside uniform4 (time t_u4, fovea PSNR f1_u4) */
@@ -693,7 +740,7 @@ static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_
         }
         /* the pilot: one frame, 4 spp per position (uniform4's spp): the default row */
         t_p = lp_render(S, &lc, g, 1, 4, 4, img, &st, &cnt_p);
-        if (t_p <= 0.0) { printf("  %-12s failed\n", base); continue; }
+        if (t_p <= 0.0) { printf("  %-12s failed (rows skipped)\n", base); continue; }
         psnr_fields(img, ref, ecc, np, ps);
         row(csv, nm, base, gz, "default", &st, t_p, ps, 0, t_u4, -1.0, 4);
         printf("  %-12s %9.1f ms (%.1f %% of the pixels shaded, %llu in the gaze disc) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f  speedup %.2f\n",
@@ -704,22 +751,38 @@ static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_
         for (var = 0; var < 3; ++var) {
             double x1, x0 = 4.0, t0 = t_p, share = (double)cnt_p.disc_shaded / (double)(cnt_p.shaded ? cnt_p.shaded : 1u);
             uint32_t fr = 1, spp = 4, sppd = 4;
-            int it;
+            int it, runs = 0, k;
             char mname[64];
             if (var == 2 && cnt_p.disc_shaded == 0) continue;
             x1 = var == 2 ? 4.0 * (1.0 + (t_u4 / t_p - 1.0) / (share > 0.01 ? share : 0.01)) : 4.0 * t_u4 / t_p;
-            for (it = 0; it < 2; ++it) { /* equal time: from the pilot, corrected once along the secant */
+            snprintf(mname, sizeof mname, "%s%s", base, var == 1 ? "_taa" : var == 2 ? "_fovea" : "");
+            /* equal time: from the pilot, corrected along the secant through the last two runs
+               while more than EQT_TOL (8 %) off, at most EQT_RUNS (4) timed runs (a step the
+               rounding to frames and spp would undo moves on to the neighbouring split); a row
+               still outside is written all the same, with a WARNING line */
+            t = -1.0;
+            for (it = 0; it < EQT_RUNS; ++it) {
                 double xn;
-                if (var == 2) { fr = 1; spp = 4; sppd = spp_of(x1); }
-                else { lp_split(x1, var == 1, &fr, &spp); sppd = spp; }
+                uint32_t nf, ns, nd;
+                lp_budget(x1, var, &fr, &spp, &sppd);
                 t = lp_render(S, &lc, g, fr, spp, sppd, img, &st, &cnt);
-                if (t <= 0.0 || fabs(t / t_u4 - 1.0) <= 0.08 || it == 1) break;
+                runs++;
+                if (t <= 0.0 || fabs(t / t_u4 - 1.0) <= EQT_TOL) break;
                 xn = (t > t0 && x1 != x0) ? x1 + (t_u4 - t) * (x1 - x0) / (t - t0) : x1 * t_u4 / t;
+                if (!(xn > 0.0)) xn = x1 * t_u4 / t;
+                lp_budget(xn, var, &nf, &ns, &nd);
+                for (k = 0; k < 200 && nf == fr && ns == spp && nd == sppd; ++k) { /* rounded to the same run */
+                    xn *= t > t_u4 ? 0.97 : 1.03;
+                    lp_budget(xn, var, &nf, &ns, &nd);
+                }
+                if (nf == fr && ns == spp && nd == sppd) break; /* no other split in that direction */
                 x0 = x1; t0 = t; x1 = xn;
             }
-            if (t <= 0.0) continue;
+            if (t <= 0.0) { printf("  %-16s lp_render failed (row skipped)\n", mname); continue; }
+            if (fabs(t / t_u4 - 1.0) > EQT_TOL)
+                printf("  WARNING %s: equal time not reached, time / target %.2f after %d run(s) (row written)\n", mname, t / t_u4,
+                       runs);
             psnr_fields(img, ref, ecc, np, ps);
-            snprintf(mname, sizeof mname, "%s%s", base, var == 1 ? "_taa" : var == 2 ? "_fovea" : "");
             row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fr * sppd);
             printf("  %-16s at uniform4's time (%.1f ms): %8.1f ms, %u frame(s) x %u spp (disc %u), PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
                    " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fr, spp, sppd, ps[0], ps[1], ps[2], ps[3], ps[4], f1_u4, ps[0] - f1_u4);
@@ -846,7 +909,7 @@ int main(int argc, char **argv)
                        ps[2], ps[3], ps[4]);
             }
             /* equal time, 1: each foveated path method gets uniform4's time (samples scaled by
-               a timed pilot, the default row, and corrected once by the measured time) */
+               a timed pilot, the default row, and corrected by the measured times: eqtime_render) */
             for (m = 2; m <= 4; ++m) {
                 int fov_only;
                 for (fov_only = 0; fov_only < (m == 4 ? 1 : 2); ++fov_only) {

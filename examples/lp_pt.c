@@ -118,8 +118,10 @@ int main(int argc, char **argv)
     }
     cfg.taa.enable = (uint32_t)taa;
     if ((r = fovlp_memory_size(&cfg, &bytes)) != FOV_OK) { fprintf(stderr, "fovlp: %s\n", fovlp_result_string(r)); return 1; }
-    lpmem = malloc(bytes);
+    lpmem = malloc(bytes ? bytes : 1);
+    if (!lpmem) { fprintf(stderr, "lp_pt: out of memory (fovlp's working memory)\n"); return 1; }
     if ((r = fovlp_init(&lp, &cfg, lpmem, bytes)) != FOV_OK) { fprintf(stderr, "fovlp_init: %s\n", fovlp_result_string(r)); return 1; }
+    if ((uint64_t)W * H > (uint64_t)(SIZE_MAX / (3 * sizeof(float)))) { fprintf(stderr, "lp_pt: %ux%u too large\n", W, H); return 1; }
     npx = (size_t)W * H;
     samples = (float *)calloc((size_t)lp.geo.samples * 3, sizeof(float));
     sdepth = (float *)calloc((size_t)lp.geo.samples, sizeof(float));
@@ -129,6 +131,10 @@ int main(int argc, char **argv)
         hist[a] = (float *)calloc(npx * 3, sizeof(float));
         hdep[a] = (float *)calloc(npx, sizeof(float));
         age[a] = (uint8_t *)calloc(npx, 1);
+    }
+    if (!samples || !sdepth || !cur || !cdep || !hist[0] || !hist[1] || !hdep[0] || !hdep[1] || !age[0] || !age[1]) {
+        fprintf(stderr, "lp_pt: out of memory (image buffers for %ux%u)\n", W, H);
+        return 1;
     }
     printf("lp_pt: cornell, %ux%u, %s, LP buffer %ux%u, gaze disc r_G %.1f px, %u spp per position, TAA %s\n", W, H,
            acuity ? "fovlp_config_acuity" : "C Fov", lp.geo.lp_w, lp.geo.lp_h, (double)lp.geo.r_g, spp, taa ? "on" : "off");
@@ -146,14 +152,20 @@ int main(int argc, char **argv)
             fprintf(stderr, "shade: %s\n", fovpt_result_string(r));
             return 1;
         }
-        fovlp_reconstruct_rows(&lp, samples, sdepth, 0, H, cur, 0, cdep);
+        if ((r = fovlp_reconstruct_rows(&lp, samples, sdepth, 0, H, cur, 0, cdep)) != FOV_OK) {
+            fprintf(stderr, "fovlp_reconstruct_rows: %s\n", fovlp_result_string(r));
+            return 1;
+        }
         if (taa) {
             fovlp_taa_io io;
             fovlp_taa_io_init(&io);
             io.cur_rgb = cur; io.cur_depth = cdep;
             io.prev_rgb = hist[ping]; io.prev_depth = hdep[ping]; io.prev_age = age[ping];
             io.out_rgb = hist[1 - ping]; io.out_depth = hdep[1 - ping]; io.out_age = age[1 - ping];
-            fovlp_taa_rows(&lp, &io, 0, H, NULL);
+            if ((r = fovlp_taa_rows(&lp, &io, 0, H, NULL)) != FOV_OK) {
+                fprintf(stderr, "fovlp_taa_rows: %s\n", fovlp_result_string(r));
+                return 1;
+            }
             ping = 1 - ping;
             img = hist[ping];
         }

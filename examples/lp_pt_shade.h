@@ -2,7 +2,7 @@
    bench/bench_pt.c (the lp_ rows) and tests/test_fovpt_points.c: fovlp_samples hands out the
    log-polar and gaze-disc positions of a range of sample rows, fovpt_shade_points path traces
    them as one batch (the stream of the k-th position of the frame is first + k, so a split of
-   the rows over threads gives the same image), and the colours (and first-hit distances, for
+   the rows over threads gives the same image, bit for bit: tests/test_fovpt_points.c), and the colours (and first-hit distances, for
    the TAA) go to the samples' slots. Path tracing in a log-polar sample space is what Koskela
    et al. 2019 do on the GPU (M. Koskela, A. Lotvonen, M. Makitalo, P. Kivi, T. Viitanen,
    P. Jaaskelainen, "Foveated Real-Time Path Tracing in Visual-Polar Space", EGSR 2019); the
@@ -25,7 +25,8 @@ typedef struct lppt_user {
 
 /* The samples of rows [r0, r1) path traced into rgb (3 floats per slot) and depth (1 per
    slot, may be NULL); slots of other rows and unshaded slots keep their value. Returns
-   FOV_OK or the first error (then nothing is written); FOV_ERR_TOO_SMALL when malloc fails. */
+   FOV_OK or the first error (then nothing is written); FOV_ERR_LIMIT when the sample count's
+   buffers exceed size_t, FOV_ERR_TOO_SMALL when malloc fails. */
 #if defined(__GNUC__) || defined(__clang__)
 __attribute__((unused))
 #endif
@@ -40,6 +41,8 @@ static fov_result lppt_shade_samples(const fovlp_ctx *lp, uint32_t r0, uint32_t 
     if (r0 > 0 && (r = fovlp_samples(lp, 0, r0, NULL, 0, &before)) != FOV_OK) return r;
     if (n == 0) return FOV_OK;
     if (n > 0xFFFFFFFFu) return FOV_ERR_LIMIT;
+    /* the byte counts below (n 3 floats, n samples) within size_t (a 32-bit size_t overflows) */
+    if (n > SIZE_MAX / (3 * sizeof(float)) || n > SIZE_MAX / sizeof *smp) return FOV_ERR_LIMIT;
     smp = (fovlp_sample *)malloc(n * sizeof *smp);
     c = (float *)malloc(n * 3 * sizeof(float));
     t = (float *)malloc(n * sizeof(float));

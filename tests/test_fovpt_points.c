@@ -140,7 +140,9 @@ static void test_equals_reference(void)
 }
 
 /* jitter 1 at pixel centres, first = y W for row y: UNIFORM's pixels, fovpt_render's own
-   image bit for bit (its jitter, streams, path and mean) */
+   image bit for bit (its jitter, streams, path and mean); also with clamp_white set (UNIFORM
+   does not clamp and shade_points does not read it; the Cornell light is above 1, so a
+   clamp in either would show) */
 static void test_equals_uniform(void)
 {
     pt_scene S;
@@ -154,11 +156,12 @@ static void test_equals_uniform(void)
     uint32_t x, y, bad = 0, mode;
     if (!img || !row || !xy || pt_scene_make(&S, PT_SCENE_CORNELL) != 0) { check(0, "uniform: setup", "failed"); free(img); free(row); free(xy); return; }
     S.cam.width = W; S.cam.height = H;
-    for (mode = 0; mode < 2; ++mode) {
+    for (mode = 0; mode < 3; ++mode) {
         fov_gaze g;
         g.x = 20.0f; g.y = 10.0f;
         c = fovpt_config_default();
-        c.spp = 3; c.seed = 4242u; c.mode = mode;
+        c.spp = 3; c.seed = 4242u; c.mode = mode == 1 ? FOVPT_MODE_WHITTED : FOVPT_MODE_PATH;
+        if (mode == 2) c.layers.clamp_white = c.zones.clamp_white = 1.0f;
         fovpt_config_resolve(&c, &c);
         bad = 0;
         fovpt_memory_size(&c, &S.cam, &bytes);
@@ -175,7 +178,8 @@ static void test_equals_uniform(void)
             if (fovpt_shade_points(&S.scene, &c, &S.cam, W, xy, 0, y * W, 6, 0, 1.0f, row, NULL, NULL) != FOV_OK) { bad += W; continue; }
             for (x = 0; x < 3 * W; ++x) bad += !same_bits(row[x], img[3 * (size_t)y * W + x]);
         }
-        check(bad == 0, N("%s: jitter 1 at pixel centres, first = y W: fovpt_render's UNIFORM image bit for bit", mode ? "whitted" : "path"),
+        check(bad == 0, N("%s: jitter 1 at pixel centres, first = y W: fovpt_render's UNIFORM image bit for bit",
+                mode == 0 ? "path" : mode == 1 ? "whitted" : "path, clamp_white 1"),
               "%u of %u values differ", bad, 3 * W * H);
         free(mem);
     }
@@ -229,6 +233,32 @@ static void test_errors(void)
     cam = S.cam; cam.width = cam.height = 1; cam.fov_y_deg = 170.0f;
     EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, xy, 0, 0, 0, 1, 3e38f, rgb, t, NULL), FOV_ERR_INVALID_ARG,
            "a jitter square whose corner's ray overflows: FOV_ERR_INVALID_ARG");
+    /* a camera rolled 45 degrees (r = (s, -s, 0), u = (s, s, 0), s = 1/sqrt 2; 2 x 2 pixels of
+       90 degrees: sx = x - 1, sy = 1 - y) and the point (-h, h), jitter 2h, h = 0.45 FLT_MAX:
+       at the corners (-2h, 0), (0, 2h) and the point, every ray component is at most
+       s (2h + 2) < FLT_MAX, but at the corner (-2h, 2h) the x component s (sx + sy) is about
+       -4 s h = -1.27 FLT_MAX: those samples' rays overflow (black samples, were they traced) */
+    {
+        float far_xy[4] = { -1.53e38f, 1.53e38f, 10.0f, 10.0f }, dd[3], oo[3];
+        cam = S.cam; cam.width = cam.height = 2; cam.fov_y_deg = 90.0f;
+        cam.pos[0] = cam.pos[1] = cam.pos[2] = 0.0f;
+        cam.target[0] = 0.0f; cam.target[1] = 0.0f; cam.target[2] = -1.0f;
+        cam.up[0] = 1.0f; cam.up[1] = 1.0f; cam.up[2] = 0.0f;
+        /* independent of shade_points: fovpt_camera_ray accepts the point and the two checked
+           corners of the old test and rejects the fourth corner */
+        check(fovpt_camera_ray(&cam, -1.53e38f, 1.53e38f, oo, dd) == FOV_OK &&
+              fovpt_camera_ray(&cam, -3.06e38f, 0.0f, oo, dd) == FOV_OK &&
+              fovpt_camera_ray(&cam, 0.0f, 3.06e38f, oo, dd) == FOV_OK &&
+              fovpt_camera_ray(&cam, 0.0f, 0.0f, oo, dd) == FOV_OK &&
+              fovpt_camera_ray(&cam, -3.06e38f, 3.06e38f, oo, dd) == FOV_ERR_INVALID_ARG,
+              "rolled camera: point and 3 corners have rays, the corner (-2h, 2h) overflows", "other codes");
+        EXPECT(fovpt_shade_points(&S.scene, &c, &cam, 2, far_xy, 0, 0, 0, 4, 3.06e38f, rgb, t, NULL), FOV_ERR_INVALID_ARG,
+               "rolled camera: a jitter square whose anti-diagonal corner's ray overflows: FOV_ERR_INVALID_ARG");
+        /* half the jitter: every corner's ray exists, so the points are shaded */
+        far_xy[0] = -0.765e38f; far_xy[1] = 0.765e38f;
+        check(fovpt_shade_points(&S.scene, &c, &cam, 2, far_xy, 0, 0, 0, 4, 1.53e38f, rgb, t, NULL) == FOV_OK,
+              "rolled camera, half the jitter: FOV_OK", "error");
+    }
     EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 2, xy, 0, 0, 0, FOVPT_MAX_SPP + 1u, 0.0f, rgb, t, NULL), FOV_ERR_LIMIT,
            "spp above FOVPT_MAX_SPP: FOV_ERR_LIMIT");
     EXPECT(fovpt_shade_points(&S.scene, &c, &S.cam, 0xFFFFFFFFu, xy, 0xFFFFFFFFu, 0, 0, 1, 0.0f, rgb, t, NULL), FOV_ERR_LIMIT,
@@ -356,10 +386,77 @@ static void test_constant_pipeline(void)
         }
 }
 
+/* examples/lp_pt_shade.h: the sample rows shaded in two ranges (split in the LP rows, at the
+   LP / disc boundary, in the disc rows) give the one-range colours and depths bit for bit,
+   and the one range writes every sample slot (the split's stream numbering is first + k) */
+static void test_row_split(void)
+{
+    pt_scene S;
+    fovpt_config pc = fovpt_config_default();
+    fovlp_config cfg;
+    fovlp_camera lcam;
+    fovlp_ctx lp;
+    const uint32_t W = 160, H = 120;
+    size_t bytes = 0, ns, i;
+    void *lmem = NULL;
+    float *rgb1 = NULL, *dep1 = NULL, *rgb2 = NULL, *dep2 = NULL;
+    uint32_t rows, k, unset = 0;
+    fov_gaze g;
+    if (pt_scene_make(&S, PT_SCENE_CORNELL) != 0) { check(0, "row split: scene", "build"); return; }
+    S.cam.width = W; S.cam.height = H;
+    g.x = 0.4f * (float)W; g.y = 0.55f * (float)H;
+    cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+    cfg.cam_fov_y_deg = S.cam.fov_y_deg;
+    if (fovlp_camera_from(&S.cam, &lcam) != FOV_OK || fovlp_memory_size(&cfg, &bytes) != FOV_OK ||
+        !(lmem = malloc(bytes ? bytes : 1u)) || fovlp_init(&lp, &cfg, lmem, bytes) != FOV_OK ||
+        fovlp_begin_frame(&lp, g, &lcam) != FOV_OK) {
+        check(0, "row split: fovlp setup", "failed");
+        free(lmem); pt_scene_free(&S);
+        return;
+    }
+    ns = lp.geo.samples;
+    rows = fovlp_sample_rows(&lp);
+    rgb1 = (float *)malloc(ns * 12u); dep1 = (float *)malloc(ns * 4u);
+    rgb2 = (float *)malloc(ns * 12u); dep2 = (float *)malloc(ns * 4u);
+    if (!rgb1 || !dep1 || !rgb2 || !dep2 || rows < 3u || lp.geo.lp_h < 2u || lp.geo.lp_h + 1u >= rows) {
+        check(0, "row split: buffers and rows", "failed");
+    } else {
+        uint32_t split[3];
+        lppt_user u;
+        split[0] = lp.geo.lp_h / 2u; split[1] = lp.geo.lp_h; split[2] = lp.geo.lp_h + (rows - lp.geo.lp_h) / 2u;
+        for (i = 0; i < 3 * ns; ++i) rgb1[i] = -5.0f;
+        for (i = 0; i < ns; ++i) dep1[i] = -5.0f;
+        memset(&u, 0, sizeof u);
+        u.scene = &S.scene; u.cfg = &pc; u.cam = &S.cam; u.frame = 3; u.spp = 2;
+        check(lppt_shade_samples(&lp, 0, rows, &u, rgb1, dep1) == FOV_OK, "row split: one range FOV_OK", "error");
+        /* the slots no sample row holds keep -5 (fovlp_samples skips them); count the rest */
+        for (i = 0; i < ns; ++i) unset += rgb1[3 * i] == -5.0f;
+        check(unset < ns, N("row split: the one range shaded %u of %u slots", (unsigned)(ns - unset), (unsigned)ns), "none");
+        for (k = 0; k < 3; ++k) {
+            u.jitter = k == 2 ? 1.0f : 0.0f; /* the disc split also with lp_render's jitter 1 */
+            for (i = 0; i < 3 * ns; ++i) rgb1[i] = rgb2[i] = -5.0f;
+            for (i = 0; i < ns; ++i) dep1[i] = dep2[i] = -5.0f;
+            if (lppt_shade_samples(&lp, 0, rows, &u, rgb1, dep1) != FOV_OK ||
+                lppt_shade_samples(&lp, 0, split[k], &u, rgb2, dep2) != FOV_OK ||
+                lppt_shade_samples(&lp, split[k], rows, &u, rgb2, dep2) != FOV_OK) {
+                check(0, N("row split at %u: shading", split[k]), "error");
+                continue;
+            }
+            check(memcmp(rgb1, rgb2, ns * 12u) == 0 && memcmp(dep1, dep2, ns * 4u) == 0,
+                  N("row split at sample row %u of %u (%s): colours and depths = one range, bit for bit", split[k], rows,
+                    k == 0 ? "in the LP rows" : k == 1 ? "LP / disc boundary" : "in the disc rows, jitter 1"),
+                  "differ");
+        }
+    }
+    free(rgb1); free(dep1); free(rgb2); free(dep2); free(lmem);
+    pt_scene_free(&S);
+}
+
 int main(void)
 {
     test_equals_reference();
     test_equals_uniform();
+    test_row_split();
     test_errors();
     test_constant_pipeline();
     return fovcheck_summary();
