@@ -5696,6 +5696,24 @@ FOVPT_API fov_result fovpt_render_guide(fovpt_ctx *ctx, uint32_t frame, const fo
 }
 
 /* ---- denoising: the foveated a-trous filter (Dammertz et al. 2010; Schied et al. 2017) -- */
+/* exp(-x) for x in [0, 30] (edge-stopping weights): 2^(-x log2 e) as 2^-i by the exponent
+   bits times a degree-6 Taylor polynomial of 2^-f, f in [0, 1) (relative error below 5e-5) */
+FOVPT__PRIV float fovpt__exp_neg(float x)
+{
+    float t = x * 1.44269504f, f, p;
+    int32_t i;
+    union { float f; uint32_t u; } b;
+    if (!(t < 126.0f)) return 0.0f;
+    if (!(t > 0.0f)) return 1.0f;
+    i = (int32_t)t;
+    f = t - (float)i;
+    /* 2^-f on [0, 1): Taylor in (-f ln 2), Horner */
+    f *= -0.693147181f;
+    p = 1.0f + f * (1.0f + f * (0.5f + f * (0.166666667f + f * (0.0416666667f +
+                                                             f * (0.00833333333f + f * 0.00138888889f)))));
+    b.u = (uint32_t)(127 - i) << 23;
+    return p * b.f;
+}
 #define FOVPT__DN_HIST 12u
 #define FOVPT__DN_MAXN 32.0f
 
@@ -6044,7 +6062,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
 {
     static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
     static const float g3[3] = { 0.25f, 0.5f, 0.25f };
-    uint32_t x, y, k, W, H;
+    uint32_t x, y, k, W, H, ipn;
     int step;
     const fovpt_guide *g;
     const float *src;
@@ -6064,6 +6082,9 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     src = dn->buf[pass & 1u];
     dst = dn->buf[(pass & 1u) ^ 1u];
     step = 1 << pass;
+    ipn = 0;
+    if (dn->cfg.phi_normal <= 4096.0f && fov__is0(dn->cfg.phi_normal - FOV__FLOOR(dn->cfg.phi_normal)))
+        ipn = (uint32_t)dn->cfg.phi_normal;
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
@@ -6073,6 +6094,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
             const float *ap = g->albedo ? fovpt__gin(g->albedo, g->albedo_stride, 3u, W, x, y) : NULL;
             float zp = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y), sl[2];
             float lp = fovpt__lum(p), v3 = 0.0f, sig, ws = 0.0f, wv = 0.0f, acc[3] = { 0, 0, 0 };
+            float ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
             int dx, dy, hitp = zp > 0.0f && fov__finite(zp);
             if ((float)step > dn->cfg.fovea_step * dn->coarse[i]) { /* not at this pixel */
                 o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
@@ -6084,39 +6106,50 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
                     int qy = (int)fov__clampf((float)((int)y + dy), 0.0f, (float)H - 1.0f);
                     v3 += g3[dx + 1] * g3[dy + 1] * src[4u * ((size_t)qy * W + (size_t)qx) + 3u];
                 }
-            sig = dn->cfg.phi_lum * FOV__SQRT(fov__maxf(v3, 0.0f)) + 1e-6f;
+            sig = 1.0f / (dn->cfg.phi_lum * FOV__SQRT(fov__maxf(v3, 0.0f)) + 1e-6f);
             fovpt__dn_slope(dn, x, y, sl);
+            sl[0] *= dn->cfg.phi_depth; sl[1] *= dn->cfg.phi_depth;
             for (dy = -2; dy <= 2; ++dy)
                 for (dx = -2; dx <= 2; ++dx) {
                     int qx = (int)x + dx * step, qy = (int)y + dy * step;
                     const float *q, *nq;
-                    float w, zq, t;
+                    float w, zq, ex;
                     if (qx < 0 || qy < 0 || qx >= (int)W || qy >= (int)H) continue;
                     q = src + 4u * ((size_t)qy * W + (size_t)qx);
                     w = h5[dx + 2] * h5[dy + 2];
                     if (dx || dy) {
-                        nq = fovpt__gin(g->normal, g->normal_stride, 3u, W, (uint32_t)qx, (uint32_t)qy);
+                        /* one exponential for the depth, albedo and luminance stops */
+                        ex = fov__absf(lp - fovpt__lum(q)) * sig;
                         zq = *fovpt__gin(g->depth, g->depth_stride, 1u, W, (uint32_t)qx, (uint32_t)qy);
                         if (hitp != (zq > 0.0f && fov__finite(zq))) continue;
                         if (hitp) {
-                            float dn_ = fov__maxf(0.0f, fov__dot(np_, nq));
-                            float reach = dn->cfg.phi_depth *
-                                              (sl[0] * fov__absf((float)(dx * step)) +
-                                               sl[1] * fov__absf((float)(dy * step))) +
-                                          1e-3f * zp;
-                            w *= FOV__POW(dn_, dn->cfg.phi_normal);
-                            w *= FOV__EXP(-fov__absf(zp - zq) / reach);
+                            float reach = sl[0] * (float)(dx < 0 ? -dx : dx) * (float)step +
+                                          sl[1] * (float)(dy < 0 ? -dy : dy) * (float)step + 1e-3f * zp;
+                            ex += fov__absf(zp - zq) / reach;
                         }
                         if (ap) {
                             const float *aq = fovpt__gin(g->albedo, g->albedo_stride, 3u, W,
                                                          (uint32_t)qx, (uint32_t)qy);
                             float da = 0.0f;
                             for (k = 0; k < 3; ++k) da += (ap[k] - aq[k]) * (ap[k] - aq[k]);
-                            w *= FOV__EXP(-da / (dn->cfg.phi_albedo * dn->cfg.phi_albedo));
+                            ex += da * ia2;
                         }
-                        t = fov__absf(lp - fovpt__lum(q)) / sig;
-                        w *= FOV__EXP(-fov__minf(t, 80.0f));
-                        if (!(w > 1e-12f)) continue;
+                        if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
+                        if (hitp) {
+                            float c = fov__dot(np_, (nq = fovpt__gin(g->normal, g->normal_stride, 3u,
+                                                                      W, (uint32_t)qx, (uint32_t)qy)));
+                            if (!(c > 0.0f)) continue;
+                            if (ipn) { /* an integer exponent: by squaring */
+                                float r_ = 1.0f;
+                                uint32_t e_ = ipn;
+                                while (e_) { if (e_ & 1u) r_ *= c; c *= c; e_ >>= 1; }
+                                w *= r_;
+                            } else {
+                                w *= FOV__POW(c, dn->cfg.phi_normal);
+                            }
+                        }
+                        w *= fovpt__exp_neg(ex);
+                        if (!(w > 1e-13f)) continue;
                     }
                     for (k = 0; k < 3; ++k) acc[k] += w * q[k];
                     ws += w;
