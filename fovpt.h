@@ -66,6 +66,12 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       (Eq. 3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
       smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
       output.
+   6. Denoising (optional; fovpt_trace_rows_guide, fovpt_denoise_*): first-hit guide buffers
+      (albedo, normal, depth, samples per pixel, variance) from the traced samples, then
+      temporal accumulation with reprojection and the edge-avoiding a-trous wavelet filter
+      (Dammertz et al. 2010) with variance guidance (Schied et al. 2017), foveated: fewer
+      passes and a shorter history where the eye resolves the pixels and the samples are dense
+      (the declarations' DENOISING comment has the details).
 
 STATUS (v0.5.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
@@ -285,6 +291,7 @@ CONFIGURATION (define before including the implementation)
    FOVPT_ACUITY_CLAMP_WHITE  clamp_white fovpt_config_acuity sets          (default 1)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
+   FOVPT_DN_MAX_LEVELS  hard cap on the denoiser's a-trous passes         (default 8)
    Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
@@ -304,6 +311,8 @@ MEMORY
    FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, 3 entries of 8 bytes (node,
    entry distance) per depth level; radiance 2.1 KiB, with the Whitted branch stack of 2 *
    FOVPT_MAX_WHITTED entries; trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
+   The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
+   (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
@@ -336,6 +345,9 @@ THREADING
    as many threads as you like (each with its own fovpt_stats, summed by fovpt_stats_add),
    then, after all of them, fovpt_refine_rows (SELECTIVE, JIN) and after that
    fovpt_resolve_rows, each on disjoint rows. Results do not depend on the split.
+   The denoiser likewise: fovpt_denoise_frame, then fovpt_denoise_temporal_rows on every row,
+   then each a-trous pass (fovpt_denoise_atrous_rows, pass 0, 1, ...) on every row before the
+   next pass starts, then fovpt_denoise_resolve_rows (a barrier between phases).
 
 NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
@@ -407,6 +419,14 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Kay & Kajiya 1986  T. L. Kay, J. T. Kajiya, "Ray Tracing Complex Scenes", SIGGRAPH 1986.
    Moller & Trumbore 1997  T. Moller, B. Trumbore, "Fast, Minimum Storage Ray-Triangle
                     Intersection", Journal of Graphics Tools 2(1), 1997.
+   Dammertz et al. 2010  H. Dammertz, D. Sewtz, J. Hanika, H. P. A. Lensch, "Edge-Avoiding
+                    A-Trous Wavelet Transform for fast Global Illumination Filtering", High
+                    Performance Graphics 2010. (the denoiser's spatial filter)
+   Schied et al. 2017  C. Schied, A. Kaplanyan, C. Wyman, A. Patney, C. R. A. Chaitanya,
+                    J. Burgess, S. Liu, C. Dachsbacher, A. Lefohn, M. Salvi, "Spatiotemporal
+                    Variance-Guided Filtering: Real-Time Reconstruction for Path-Traced Global
+                    Illumination", High Performance Graphics 2017. (variance guidance, the
+                    edge-stopping functions, temporal accumulation)
    Duff et al. 2017 T. Duff, J. Burgess, P. Christensen, C. Hery, A. Kensler, M. Liani,
                     R. Villemin, "Building an Orthonormal Basis, Revisited", Journal of
                     Computer Graphics Techniques 6(1), 2017.
@@ -1262,8 +1282,8 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    pass i filters the pixel only while 2^i <= fovea_step * r (else the pixel is passed
    through), and the history weight is 1 - alpha, alpha(p) = max(alpha_periphery,
    alpha_fovea / r): the fovea keeps the fewest passes and the shortest history.
-   Memory: fovpt_denoise_size, 132 bytes per pixel (two history frames of 12 floats, two
-   filter buffers of 4, the coarseness); no threads, no allocation. */
+   Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
+   filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
 #ifndef FOVPT_DN_MAX_LEVELS
 #define FOVPT_DN_MAX_LEVELS 8
 #endif
@@ -1283,7 +1303,7 @@ typedef struct fovpt_denoise_cfg {
     uint32_t no_temporal;     /* 1: no history (each frame filtered alone) */
     float fovea_step;         /* widest step where r = 1, pixels, [1, 2^16]           0: 4 */
     float spp_ref;            /* density of r = 1 (>= 0); 0: the guide's at the gaze pixel */
-    float phi_lum;            /* luminance stop, (0, 1e6]                             0: 4 */
+    float phi_lum;            /* luminance stop, (0, 1e6]                             0: 8 */
     float phi_normal;         /* normal exponent, (0, 1e6]                          0: 128 */
     float phi_depth;          /* depth-slope multiplier, (0, 1e6]                     0: 1 */
     float phi_albedo;         /* albedo difference scale, (0, 1e6]                  0: 0.1 */
@@ -1306,6 +1326,7 @@ typedef struct fovpt_denoise {  /* filled by fovpt_denoise_init; read-only for t
     float *hist[2];             /* 12 floats per pixel: rgb, m1, m2, n, var, depth, normal */
     float *buf[2];              /* 4 floats per pixel: rgb, var */
     float *coarse;              /* 1 float per pixel: r */
+    float *pack;                /* 8 floats per pixel: depth, normal, albedo, luminance */
     uint32_t cur, frames, has_prev, passes, in_frame;
     void *mem;
     size_t mem_size;
@@ -5480,7 +5501,8 @@ FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fov
     G->hits++;
     G->dep += at->pt;
     fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
-    if (at->pmat < s->num_materials) fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
+    if (at->pmat < s->num_materials)
+        fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
 }
 
 FOVPT__PRIV float *fovpt__gptr(float *p, uint32_t stride, uint32_t ch, uint32_t W, uint32_t x,
@@ -5520,8 +5542,9 @@ FOVPT__PRIV void fovpt__gwrite(const fovpt_guide *g, uint32_t W, uint32_t x, uin
 }
 
 /* fovpt__pixel for a stride-1 target (jitter in the pixel, no clamp), with the guide sums */
-FOVPT__PRIV void fovpt__pixel_g(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp,
-                                uint32_t sample0, float sum[3], fovpt__gsum *G, fovpt_stats *st)
+FOVPT__PRIV void fovpt__pixel_g(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y,
+                                uint32_t spp, uint32_t sample0, float sum[3], fovpt__gsum *G,
+                                fovpt_stats *st)
 {
     uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
     float t4[4];
@@ -5596,8 +5619,9 @@ FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint
     if (y0 > y1 || y1 > H)
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
                     "trace_rows_guide: needs y0 <= y1 <= height");
-    if (fovpt__gstride_bad(g->albedo_stride, 3u, W) || fovpt__gstride_bad(g->normal_stride, 3u, W) ||
-        fovpt__gstride_bad(g->depth_stride, 1u, W) || fovpt__gstride_bad(g->spp_stride, 1u, W) ||
+    if (fovpt__gstride_bad(g->albedo_stride, 3u, W) ||
+        fovpt__gstride_bad(g->normal_stride, 3u, W) || fovpt__gstride_bad(g->depth_stride, 1u, W) ||
+        fovpt__gstride_bad(g->spp_stride, 1u, W) ||
         fovpt__gstride_bad(g->var_stride, 1u, W))
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
                     "trace_rows_guide: a guide stride below the packed one (3 * width for "
@@ -5709,8 +5733,8 @@ FOVPT__PRIV float fovpt__exp_neg(float x)
     f = t - (float)i;
     /* 2^-f on [0, 1): Taylor in (-f ln 2), Horner */
     f *= -0.693147181f;
-    p = 1.0f + f * (1.0f + f * (0.5f + f * (0.166666667f + f * (0.0416666667f +
-                                                             f * (0.00833333333f + f * 0.00138888889f)))));
+    p = 0.00833333333f + f * 0.00138888889f;
+    p = 1.0f + f * (1.0f + f * (0.5f + f * (0.166666667f + f * (0.0416666667f + f * p))));
     b.u = (uint32_t)(127 - i) << 23;
     return p * b.f;
 }
@@ -5723,7 +5747,7 @@ FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void)
     FOV_MEMSET(&c, 0, sizeof c);
     c.levels = 5;
     c.fovea_step = 4.0f;
-    c.phi_lum = 4.0f;
+    c.phi_lum = 8.0f;
     c.phi_normal = 128.0f;
     c.phi_depth = 1.0f;
     c.phi_albedo = 0.1f;
@@ -5734,7 +5758,10 @@ FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void)
     return c;
 }
 
-FOVPT__PRIV int fovpt__dn_in(float v, float lo, float hi) { return fov__finite(v) && v > lo && v <= hi; }
+FOVPT__PRIV int fovpt__dn_in(float v, float lo, float hi)
+{
+    return fov__finite(v) && v > lo && v <= hi;
+}
 
 FOVPT_API fov_result fovpt_denoise_resolve(const fovpt_denoise_cfg *in, fovpt_denoise_cfg *out)
 {
@@ -5763,7 +5790,8 @@ FOVPT_API fov_result fovpt_denoise_resolve(const fovpt_denoise_cfg *in, fovpt_de
     if (fov__is0(c.phi_depth)) c.phi_depth = d.phi_depth;
     if (fov__is0(c.phi_albedo)) c.phi_albedo = d.phi_albedo;
     if (fov__is0(c.alpha_fovea)) c.alpha_fovea = d.alpha_fovea;
-    if (fov__is0(c.alpha_periphery)) c.alpha_periphery = fov__minf(d.alpha_periphery, c.alpha_fovea);
+    if (fov__is0(c.alpha_periphery))
+        c.alpha_periphery = fov__minf(d.alpha_periphery, c.alpha_fovea);
     if (fov__is0(c.depth_tol)) c.depth_tol = d.depth_tol;
     if (fov__is0(c.normal_cos)) c.normal_cos = d.normal_cos;
     if (!(c.fovea_step >= 1.0f && c.fovea_step <= 65536.0f))
@@ -5798,7 +5826,7 @@ FOVPT_API fov_result fovpt_denoise_size(const fovpt_denoise_cfg *cfg, size_t *by
     e = fovpt_denoise_resolve(cfg, &c);
     if (e != FOV_OK) return e;
     px = (uint64_t)c.width * c.height;
-    px = px * 4u * (2u * FOVPT__DN_HIST + 2u * 4u + 1u) + 64u;
+    px = px * 4u * (2u * FOVPT__DN_HIST + 2u * 4u + 1u + 8u) + 64u;
     if (px > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(&cfg->logger, FOV_ERR_LIMIT, "denoise_size: memory overflows size_t");
     *bytes = (size_t)px;
@@ -5828,7 +5856,8 @@ FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_c
     dn->hist[1] = p; p += FOVPT__DN_HIST * px;
     dn->buf[0] = p; p += 4u * px;
     dn->buf[1] = p; p += 4u * px;
-    dn->coarse = p;
+    dn->coarse = p; p += px;
+    dn->pack = p;
     dn->mem = mem;
     dn->mem_size = bytes;
     dn->passes = dn->cfg.no_filter ? 0u : dn->cfg.levels;
@@ -6024,7 +6053,8 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                 if (var_in < 0.0f && n >= 4.0f) var_in = fov__maxf(0.0f, m2 - m1 * m1);
                 vh = hs[6] * inv;
                 o[6] = -1.0f;
-                if (var_in >= 0.0f) o[6] = (1.0f - a) * (1.0f - a) * fov__maxf(vh, 0.0f) + a * a * var_in;
+                if (var_in >= 0.0f)
+                    o[6] = (1.0f - a) * (1.0f - a) * fov__maxf(vh, 0.0f) + a * a * var_in;
             } else {
                 for (k = 0; k < 3; ++k) o[k] = in[k];
                 o[3] = l; o[4] = l * l;
@@ -6041,7 +6071,8 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                         float lq, cq[3];
                         if (qx < 0 || qy < 0 || qx >= (int)W || qy >= (int)H) continue;
                         q = fovpt__gin(dn->in, dn->in_stride, 3u, W, (uint32_t)qx, (uint32_t)qy);
-                        for (k = 0; k < 3; ++k) cq[k] = fov__finite(q[k]) ? fov__maxf(q[k], 0.0f) : 0.0f;
+                        for (k = 0; k < 3; ++k)
+                            cq[k] = fov__finite(q[k]) ? fov__maxf(q[k], 0.0f) : 0.0f;
                         lq = fovpt__lum(cq);
                         s1 += lq; s2 += lq * lq; cnt++;
                     }
@@ -6052,9 +6083,33 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
             o[7] = 0.0f;
             o[8] = z;
             fovpt__copy3(o + 9, nrm);
+            {
+                float *pk = dn->pack + 8u * i;
+                pk[0] = z;
+                fovpt__copy3(pk + 1, nrm);
+                if (g->albedo)
+                    fovpt__copy3(pk + 4, fovpt__gin(g->albedo, g->albedo_stride, 3u, W, x, y));
+                else pk[4] = pk[5] = pk[6] = 0.0f;
+                pk[7] = 0.0f;
+            }
             b[0] = o[0]; b[1] = o[1]; b[2] = o[2]; b[3] = o[6];
         }
     return FOV_OK;
+}
+
+/* the packed depth's slope at (x, y) (the smaller one-sided difference per axis) */
+FOVPT__PRIV void fovpt__dn_pslope(const float *pk, uint32_t W, uint32_t H, uint32_t x, uint32_t y,
+                                  float s[2])
+{
+    const float *p = pk + 8u * ((size_t)y * W + x);
+    float z = p[0], a = FLT_MAX, b = FLT_MAX;
+    if (x > 0) a = fov__absf(z - p[-8]);
+    if (x + 1u < W) b = fov__absf(z - p[8]);
+    s[0] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
+    a = b = FLT_MAX;
+    if (y > 0) a = fov__absf(z - p[-(ptrdiff_t)(8u * W)]);
+    if (y + 1u < H) b = fov__absf(z - p[8u * W]);
+    s[1] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
 }
 
 FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
@@ -6063,10 +6118,9 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
     static const float g3[3] = { 0.25f, 0.5f, 0.25f };
     uint32_t x, y, k, W, H, ipn;
-    int step;
-    const fovpt_guide *g;
-    const float *src;
-    float *dst;
+    int step, alb;
+    const float *src, *pk;
+    float *dst, ia2;
     if (!dn) return FOV_ERR_NULL;
     if (!dn->in_frame)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
@@ -6078,24 +6132,24 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     if (y0 > y1 || y1 > H)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: needs y0 <= y1 <= height");
-    g = &dn->guide;
+    alb = dn->guide.albedo != NULL;
+    pk = dn->pack;
     src = dn->buf[pass & 1u];
     dst = dn->buf[(pass & 1u) ^ 1u];
     step = 1 << pass;
+    ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
     ipn = 0;
-    if (dn->cfg.phi_normal <= 4096.0f && fov__is0(dn->cfg.phi_normal - FOV__FLOOR(dn->cfg.phi_normal)))
+    if (dn->cfg.phi_normal <= 4096.0f &&
+        fov__is0(dn->cfg.phi_normal - FOV__FLOOR(dn->cfg.phi_normal)))
         ipn = (uint32_t)dn->cfg.phi_normal;
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
-            const float *p = src + 4u * i;
+            const float *p = src + 4u * i, *gp = pk + 8u * i;
             float *o = dst + 4u * i;
-            const float *np_ = fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y);
-            const float *ap = g->albedo ? fovpt__gin(g->albedo, g->albedo_stride, 3u, W, x, y) : NULL;
-            float zp = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y), sl[2];
-            float lp = fovpt__lum(p), v3 = 0.0f, sig, ws = 0.0f, wv = 0.0f, acc[3] = { 0, 0, 0 };
-            float ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
-            int dx, dy, hitp = zp > 0.0f && fov__finite(zp);
+            float zp = gp[0], sl[2], lp = fovpt__lum(p), v3 = 0.0f, sig, ws = 0.0f, wv = 0.0f;
+            float acc[3] = { 0.0f, 0.0f, 0.0f };
+            int dx, dy, hitp = zp > 0.0f;
             if ((float)step > dn->cfg.fovea_step * dn->coarse[i]) { /* not at this pixel */
                 o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
                 continue;
@@ -6107,37 +6161,35 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
                     v3 += g3[dx + 1] * g3[dy + 1] * src[4u * ((size_t)qy * W + (size_t)qx) + 3u];
                 }
             sig = 1.0f / (dn->cfg.phi_lum * FOV__SQRT(fov__maxf(v3, 0.0f)) + 1e-6f);
-            fovpt__dn_slope(dn, x, y, sl);
-            sl[0] *= dn->cfg.phi_depth; sl[1] *= dn->cfg.phi_depth;
-            for (dy = -2; dy <= 2; ++dy)
+            fovpt__dn_pslope(pk, W, H, x, y, sl);
+            sl[0] *= dn->cfg.phi_depth * (float)step; sl[1] *= dn->cfg.phi_depth * (float)step;
+            for (dy = -2; dy <= 2; ++dy) {
+                int qy = (int)y + dy * step;
+                if (qy < 0 || qy >= (int)H) continue;
                 for (dx = -2; dx <= 2; ++dx) {
-                    int qx = (int)x + dx * step, qy = (int)y + dy * step;
-                    const float *q, *nq;
-                    float w, zq, ex;
-                    if (qx < 0 || qy < 0 || qx >= (int)W || qy >= (int)H) continue;
-                    q = src + 4u * ((size_t)qy * W + (size_t)qx);
+                    int qx = (int)x + dx * step;
+                    size_t j = (size_t)qy * W + (size_t)qx;
+                    const float *q, *gq;
+                    float w, ex;
+                    if (qx < 0 || qx >= (int)W) continue;
+                    q = src + 4u * j;
+                    gq = pk + 8u * j;
                     w = h5[dx + 2] * h5[dy + 2];
                     if (dx || dy) {
                         /* one exponential for the depth, albedo and luminance stops */
                         ex = fov__absf(lp - fovpt__lum(q)) * sig;
-                        zq = *fovpt__gin(g->depth, g->depth_stride, 1u, W, (uint32_t)qx, (uint32_t)qy);
-                        if (hitp != (zq > 0.0f && fov__finite(zq))) continue;
-                        if (hitp) {
-                            float reach = sl[0] * (float)(dx < 0 ? -dx : dx) * (float)step +
-                                          sl[1] * (float)(dy < 0 ? -dy : dy) * (float)step + 1e-3f * zp;
-                            ex += fov__absf(zp - zq) / reach;
-                        }
-                        if (ap) {
-                            const float *aq = fovpt__gin(g->albedo, g->albedo_stride, 3u, W,
-                                                         (uint32_t)qx, (uint32_t)qy);
-                            float da = 0.0f;
-                            for (k = 0; k < 3; ++k) da += (ap[k] - aq[k]) * (ap[k] - aq[k]);
-                            ex += da * ia2;
+                        if (hitp != (gq[0] > 0.0f)) continue;
+                        if (hitp)
+                            ex += fov__absf(zp - gq[0]) /
+                                  (sl[0] * (float)(dx < 0 ? -dx : dx) +
+                                   sl[1] * (float)(dy < 0 ? -dy : dy) + 1e-3f * zp);
+                        if (alb) {
+                            float a0 = gp[4] - gq[4], a1 = gp[5] - gq[5], a2 = gp[6] - gq[6];
+                            ex += (a0 * a0 + a1 * a1 + a2 * a2) * ia2;
                         }
                         if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
                         if (hitp) {
-                            float c = fov__dot(np_, (nq = fovpt__gin(g->normal, g->normal_stride, 3u,
-                                                                      W, (uint32_t)qx, (uint32_t)qy)));
+                            float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
                             if (!(c > 0.0f)) continue;
                             if (ipn) { /* an integer exponent: by squaring */
                                 float r_ = 1.0f;
@@ -6155,6 +6207,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
                     ws += w;
                     wv += w * w * fov__maxf(q[3], 0.0f);
                 }
+            }
             for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
             o[3] = wv / (ws * ws);
         }
@@ -6183,11 +6236,13 @@ FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_
         for (x = 0; x < W; ++x) {
             const float *c = src + 4u * ((size_t)y * W + x);
             if (out->rgb) {
-                float *o = out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
+                float *o =
+                    out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
                 o[0] = c[0]; o[1] = c[1]; o[2] = c[2];
             }
             if (out->rgb8) {
-                uint8_t *o = out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
+                uint8_t *o =
+                    out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
                 o[0] = fovpt__srgb8(c[0]); o[1] = fovpt__srgb8(c[1]); o[2] = fovpt__srgb8(c[2]);
             }
         }

@@ -594,13 +594,16 @@ static void row(FILE *csv, const char *scene, const char *method, const char *ga
    examples/fovmetrics.h fovm_perceptual, the camera's field of view as the display; flip_f1
    the same over the fovea annulus only... computed on the eye-filtered FLIP map), with the
    undenoised method in the same run beside each _dn row.
-   Flicker (pt_flicker.csv: scene,method,flicker_static,flicker_moving; gaze at the centre,
+   Flicker (pt_flicker.csv: scene,method,flicker_static,flicker_moving,psnr_f1_static,
+   psnr_all_static; gaze at the centre,
    DN_TF frames, the default budgets of uniform4, layers, zones with and without the
    denoiser, which keeps its history across the frames): per pixel of the periphery (e >= 12.1
    degrees) the mean absolute frame-to-frame difference of the sRGB values, frames 2 .. DN_TF
    - 1; the moving view turns 0.1 degree per frame about the vertical and the previous frame
    is first warped to the current view (a pure rotation: exact per pixel, bilinear), so a
-   static scene seen by a noiseless renderer scores about its bilinear warp error. */
+   static scene seen by a noiseless renderer scores about its bilinear warp error.
+   psnr_f1_static / psnr_all_static: the last frame of the static view against the ground
+   truth (what DN_TF frames of temporal accumulation reach). */
 #define DN_TF 8u
 /* g_dn (declared above render()): 1 = trace with guides and denoise */
 static double g_dn_ms;           /* the denoiser's share of the last render, ms */
@@ -752,7 +755,8 @@ static int bilin(const float *img, uint32_t W, uint32_t H, float x, float y, flo
 }
 
 /* flicker of one method over DN_TF frames (moving 0/1); dn: with the denoiser (history kept) */
-static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int moving, int dn_on, const float *ecc)
+static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int moving, int dn_on, const float *ecc, const float *ref,
+                          double ps[5])
 {
     uint32_t W = S->cam.width, H = S->cam.height, f, x, y;
     size_t np = (size_t)W * H, n = 0, dnb = 0, cnt = 0;
@@ -811,23 +815,25 @@ static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int mo
         memcpy(old, cur, np * 12u);
         prev = cam;
     }
+    if (ref) psnr_fields(cur, ref, ecc, np, ps); /* the last frame of the static view */
     free(noisy); free(gb); free(cur); free(old); free(mem); free(dmem);
     return cnt ? sum / (double)cnt : NAN;
 }
 
-static void flicker_rows(FILE *fc, pt_scene *S, const char *nm, fov_gaze g, const float *ecc)
+static void flicker_rows(FILE *fc, pt_scene *S, const char *nm, fov_gaze g, const float *ecc, const float *ref)
 {
     static const int ms[3] = { 0, 2, 4 };
     int i, d;
     for (i = 0; i < 3; ++i)
         for (d = 0; d < 2; ++d) {
             fovpt_config c;
-            double fs, fm;
+            double fs, fm, ps[5];
             method_cfg(&c, ms[i]);
-            fs = flicker_seq(S, &c, g, 0, d, ecc);
-            fm = flicker_seq(S, &c, g, 1, d, ecc);
-            fprintf(fc, "%s,%s%s,%.5f,%.5f\n", nm, names[ms[i]], d ? "_dn" : "", fs, fm);
-            printf("  flicker %-12s%s static %.5f moving %.5f\n", names[ms[i]], d ? "_dn" : "   ", fs, fm);
+            fs = flicker_seq(S, &c, g, 0, d, ecc, ref, ps);
+            fm = flicker_seq(S, &c, g, 1, d, ecc, NULL, ps);
+            fprintf(fc, "%s,%s%s,%.5f,%.5f,%.2f,%.2f\n", nm, names[ms[i]], d ? "_dn" : "", fs, fm, ps[0], ps[4]);
+            printf("  flicker %-12s%s static %.5f moving %.5f; static view, frame %u: PSNR f1 %.2f all %.2f\n", names[ms[i]], d ? "_dn" : "   ", fs, fm,
+                   DN_TF, ps[0], ps[4]);
         }
     fflush(fc);
 }
@@ -846,7 +852,7 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
     if (!csv || !side || !fc) { fprintf(stderr, "cannot write %s / %s / %s\n", out_path, spath, fpath); return; }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
     fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
-    fprintf(fc, "scene,method,flicker_static,flicker_moving\n");
+    fprintf(fc, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
         pt_scene S;
         size_t np = (size_t)W * H;
@@ -873,7 +879,7 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
             t_u4 = render(&S, &c, g, img, &st, 1);
             printf("%s %s (uniform4 %.1f ms):\n", pt_scene_names[sc], gi ? "corner" : "centre", t_u4);
             dn_rows(csv, side, &S, pt_scene_names[sc], gi ? "corner" : "centre", g, ref, ecc, t_u4);
-            if (!gi) flicker_rows(fc, &S, pt_scene_names[sc], g, ecc);
+            if (!gi) flicker_rows(fc, &S, pt_scene_names[sc], g, ecc, ref);
         }
         pt_scene_free(&S);
         free(ref); free(img); free(ecc);
@@ -950,7 +956,7 @@ int main(int argc, char **argv)
         snprintf(p2, sizeof p2, "%.*spt_flicker.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
         if (!only_tp) { dn_side = fopen(p1, "w"); dn_flicker = fopen(p2, "w"); }
         if (dn_side) fprintf(dn_side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
-        if (dn_flicker) fprintf(dn_flicker, "scene,method,flicker_static,flicker_moving\n");
+        if (dn_flicker) fprintf(dn_flicker, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
     }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
     printf("fovpt benchmark: %ux%u, ground truth %u spp (path) / 64 spp (Whitted), one thread per method\n", W, H, gt_spp);
@@ -1049,7 +1055,7 @@ int main(int argc, char **argv)
             }
             /* the denoised rows (_dn) and, gaze at the centre, the flicker */
             if (dn_side) dn_rows(csv, dn_side, &S, nm, gz, g, ref_p, ecc, t_u4);
-            if (dn_flicker && !gi) flicker_rows(dn_flicker, &S, nm, g, ecc);
+            if (dn_flicker && !gi) flicker_rows(dn_flicker, &S, nm, g, ecc, ref_p);
             fflush(csv);
         }
         pt_scene_free(&S);

@@ -195,9 +195,9 @@ static void t_constant(void)
 }
 
 /* furnace: a closed box of albedo 0.5 emitting 0.5: radiance 1; the denoiser keeps the mean.
-   The stated tolerance: 3 % with the default luminance stop (phi_lum 4, Schied et al. 2017's;
-   it down-weights bright outliers of the heavy-tailed path-tracing noise, a known bias), 1 %
-   with phi_lum 16. */
+   The stated tolerance: 2 % with the default luminance stop (phi_lum 8; the stop down-weights
+   bright outliers of the heavy-tailed path-tracing noise, a known bias: 2.5 % at Schied et
+   al. 2017's phi_lum 4), 1 % with phi_lum 16. */
 static void t_furnace(void)
 {
     fovpt_material m;
@@ -220,7 +220,7 @@ static void t_furnace(void)
         fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
         fov_gaze g = { 32.0f, 24.0f };
         fovpt_output o;
-        double mi = 0.0, mo = 0.0, ei = 0.0, eo = 0.0, tol = pass ? 0.01 : 0.03;
+        double mi = 0.0, mo = 0.0, ei = 0.0, eo = 0.0, tol = pass ? 0.01 : 0.02;
         size_t i;
         int k, ok;
         dc.width = 64; dc.height = 48;
@@ -237,8 +237,9 @@ static void t_furnace(void)
         mi /= (double)(3u * n); mo /= (double)(3u * n);
         ei = sqrt(ei / (double)(3u * n)); eo = sqrt(eo / (double)(3u * n));
         if (!pass) check(ok && fabs(mi - 1.0) < 0.03, "furnace_input_mean_1", "input mean %.4f (rmse %.3f)", mi, ei);
-        check(ok && fabs(mo - mi) <= tol * mi, N("furnace_energy_phi_lum_%d", pass ? 16 : 4), "mean %.4f -> %.4f (tolerance %.0f %%)", mi, mo, 100.0 * tol);
-        check(ok && eo < 0.5 * ei, N("furnace_noise_halved_phi_lum_%d", pass ? 16 : 4), "rmse against 1: %.4f -> %.4f", ei, eo);
+        fovcheck_info("furnace phi_lum %d: mean %.4f -> %.4f, rmse %.4f -> %.4f", pass ? 16 : 8, mi, mo, ei, eo);
+        check(ok && fabs(mo - mi) <= tol * mi, N("furnace_energy_phi_lum_%d", pass ? 16 : 8), "mean %.4f -> %.4f (tolerance %.0f %%)", mi, mo, 100.0 * tol);
+        check(ok && eo < 0.5 * ei, N("furnace_noise_halved_phi_lum_%d", pass ? 16 : 8), "rmse against 1: %.4f -> %.4f", ei, eo);
         free(dm);
     }
     free(out); img_free(&a); free(sm);
