@@ -684,8 +684,8 @@ static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
     uint32_t W = S->cam.width, H = S->cam.height;
     size_t np = (size_t)W * H;
     float *img = (float *)malloc(np * 12u);
-    double t_m[5], f1_u4 = NAN;
-    fovpt_stats st_m[5], st;
+    double t_m[5][2], f1_u4 = NAN;
+    fovpt_stats st_m[5][2], st;
     fovpt_config c;
     int m;
     for (m = 0; m <= 4; ++m) { /* default budgets, with and without the denoiser */
@@ -700,11 +700,9 @@ static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
             psnr_fields(img, ref, ecc, np, ps);
             flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
             snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_dn" : "");
-            if (d) {
-                row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
-                t_m[m] = t;
-                st_m[m] = st;
-            }
+            if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
+            t_m[m][d] = t; /* the pilots of the equal-time rows, each its own */
+            st_m[m][d] = st;
             if (m == 0 && !d) f1_u4 = ps[0];
             dn_side_row(side, nm, mname, gz, "default", ps, fl, fl1, t, d ? g_dn_ms : 0.0);
             printf("  %-20s %8.1f ms (denoise %5.1f) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f (f1 %.4f)\n", mname, t,
@@ -719,7 +717,7 @@ static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
             int d;
             for (d = 0; d < 2; ++d) {
                 g_dn = d;
-                t = eqtime_render(S, m, fov_only, t_u4, d ? t_m[m] : t_m[m], &st_m[m], g, img, &c, &st);
+                t = eqtime_render(S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
                 g_dn = 0;
                 psnr_fields(img, ref, ecc, np, ps);
                 flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
