@@ -66,7 +66,7 @@ $(BUILD)/pt_basic: examples/pt_basic.c fovpt.h
 # Embree (Debian libembree-dev) gives the reference ray throughput when it is installed
 EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lembree3)
 
-$(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h examples/lp_pt_shade.h fovpt.h fovlp.h
+$(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h examples/fovmetrics.h examples/lp_pt_shade.h fovpt.h fovlp.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
 
@@ -98,9 +98,10 @@ $(BUILD)/gallery: examples/gallery.c examples/lp_sdf_shade.h examples/pt_scenes.
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -ffp-contract=off -I. $< -lm -o $@
 
-gallery: $(BUILD)/gallery
+gallery: $(BUILD)/gallery $(BUILD)/pt_basic
 	@mkdir -p $(BUILD)/gallery_ppm
 	./$(BUILD)/gallery --out $(BUILD)/gallery_ppm
+	./$(BUILD)/pt_basic --pair > $(BUILD)/gallery_ppm/pt_denoise.ppm
 	python3 examples/gallery_png.py docs/img $(BUILD)/gallery_ppm/*.ppm
 
 test:

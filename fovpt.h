@@ -66,6 +66,12 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       (Eq. 3.18); ZONES: Lanczos upsampling and linear overlap blending; temporal reuse and
       smoothing (Kim et al. 2021, steps 2 and 4, Sec. 4.4 and 4.7); 8-bit sRGB or float
       output.
+   6. Denoising (optional; fovpt_trace_rows_guide, fovpt_denoise_*): first-hit guide buffers
+      (albedo, normal, depth, samples per pixel, variance) from the traced samples, then
+      temporal accumulation with reprojection and the edge-avoiding a-trous wavelet filter
+      (Dammertz et al. 2010) with variance guidance (Schied et al. 2017), foveated: fewer
+      passes and a shorter history where the eye resolves the pixels and the samples are dense
+      (the declarations' DENOISING comment has the details).
 
 STATUS (v0.5.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
@@ -326,6 +332,7 @@ CONFIGURATION (define before including the implementation)
    FOVPT_ACUITY_CLAMP_WHITE  clamp_white fovpt_config_acuity sets          (default 1)
    FOVPT_MAX_WHITTED    hard cap on the Whitted depth (branch stack)      (default 16)
    FOVPT_RAY_EPS        relative offset of secondary ray origins          (default 1e-4)
+   FOVPT_DN_MAX_LEVELS  hard cap on the denoiser's a-trous passes         (default 8)
    Shared by the three headers (listed in the shared declarations block below):
    FOV_DLL, FOV_ASSERT, FOV_NO_LIBM, the math hooks FOV_SQRTF ... FOV_POWF, FOV_MEMSET,
    FOV_MEMCPY and FOV_NO_ERROR_STRINGS.
@@ -345,6 +352,8 @@ MEMORY
    FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, 3 entries of 8 bytes (node,
    entry distance) per depth level; radiance 2.1 KiB, with the Whitted branch stack of 2 *
    FOVPT_MAX_WHITTED entries; trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
+   The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
+   (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
@@ -377,6 +386,9 @@ THREADING
    as many threads as you like (each with its own fovpt_stats, summed by fovpt_stats_add),
    then, after all of them, fovpt_refine_rows (SELECTIVE, JIN) and after that
    fovpt_resolve_rows, each on disjoint rows. Results do not depend on the split.
+   The denoiser likewise: fovpt_denoise_frame, then fovpt_denoise_temporal_rows on every row,
+   then each a-trous pass (fovpt_denoise_atrous_rows, pass 0, 1, ...) on every row before the
+   next pass starts, then fovpt_denoise_resolve_rows (a barrier between phases).
 
 NUMERICS
    - float only. Secondary rays start at the hit point moved along the normal by
@@ -448,6 +460,14 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Kay & Kajiya 1986  T. L. Kay, J. T. Kajiya, "Ray Tracing Complex Scenes", SIGGRAPH 1986.
    Moller & Trumbore 1997  T. Moller, B. Trumbore, "Fast, Minimum Storage Ray-Triangle
                     Intersection", Journal of Graphics Tools 2(1), 1997.
+   Dammertz et al. 2010  H. Dammertz, D. Sewtz, J. Hanika, H. P. A. Lensch, "Edge-Avoiding
+                    A-Trous Wavelet Transform for fast Global Illumination Filtering", High
+                    Performance Graphics 2010. (the denoiser's spatial filter)
+   Schied et al. 2017  C. Schied, A. Kaplanyan, C. Wyman, A. Patney, C. R. A. Chaitanya,
+                    J. Burgess, S. Liu, C. Dachsbacher, A. Lefohn, M. Salvi, "Spatiotemporal
+                    Variance-Guided Filtering: Real-Time Reconstruction for Path-Traced Global
+                    Illumination", High Performance Graphics 2017. (variance guidance, the
+                    edge-stopping functions, temporal accumulation)
    Koskela et al. 2019  M. Koskela, A. Lotvonen, M. Makitalo, P. Kivi, T. Viitanen,
                     P. Jaaskelainen, "Foveated Real-Time Path Tracing in Visual-Polar Space",
                     Eurographics Symposium on Rendering (EGSR, DL-only and Industry Track),
@@ -1268,6 +1288,145 @@ FOVPT_API fov_result fovpt_tau_fov(const fovpt_selective_cfg *resolved, float e_
    beyond e_max. */
 FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
                             const fovpt_selective_cfg *resolved_s, float e_deg);
+
+/* ==== denoising: guide buffers and a foveated edge-avoiding a-trous filter ================== */
+/* DENOISING (see also the DENOISING section of the doc block)
+   Guide buffers. fovpt_trace_rows_guide traces rows [y0, y1) exactly as fovpt_trace_rows
+   (the same samples, streams and image) and also writes per-pixel first-hit guides of those
+   rows into the caller's buffers (every pointer may be NULL: not written; strides in
+   elements per row, 0: packed; a stride below the packed one is FOV_ERR_INVALID_ARG):
+     albedo  3 floats: the mean over the pixel's samples of the first hit's material albedo
+             (kd, or the mirror / glass tint); 0 where a sample leaves the scene
+     normal  3 floats: the normalised mean of the first hits' unit normals, turned towards
+             the camera; (0, 0, 0) when no sample hits
+     depth   1 float: the mean distance from the pinhole to the first hit along the unit
+             ray (ray distance, not view-plane depth), over the samples that hit; 0: none hit
+     spp     1 float: samples per pixel behind the pixel's value: UNIFORM its samples (with
+             accumulate: the running total); LAYERS, ZONES the layers' densities spp_n / d_n^2
+             blended as the resolve blends the layers (fovea: the stride-1 layer's spp);
+             SELECTIVE, JIN 1 (the presample)
+     var     1 float: the variance of the pixel's mean luminance (0.2126 R + 0.7152 G +
+             0.0722 B, linear) from its own samples, sample variance / n (n >= 2 samples
+             traced in this pixel in this call); -1 where unknown (fewer than 2 own samples)
+   Which samples: UNIFORM and the pixels a stride-1 layer or zone traces: the pixel's own
+   samples (the guides are their means). Pixels filled by a coarser layer or zone (and
+   every pixel of SELECTIVE and JIN): one extra ray through the pixel centre, first hit only
+   (counted in stats.camera_rays and rays; no shading), var -1.
+   The denoiser (fovpt_denoise_*). Temporal accumulation with reprojection, then an
+   edge-avoiding a-trous wavelet filter (Dammertz et al. 2010) with variance guidance (Schied
+   et al. 2017), foveated. Per frame:
+      fovpt_denoise_frame(&dn, &cam, gaze, rgb, rgb_stride, &guide);   // the noisy frame
+      fovpt_denoise_temporal_rows(&dn, y0, y1);                  // all rows, then (barrier)
+      for (i = 0; i < fovpt_denoise_passes(&dn); ++i)
+          fovpt_denoise_atrous_rows(&dn, i, y0, y1);             // all rows of pass i, barrier
+      fovpt_denoise_resolve_rows(&dn, y0, y1, &out);             // after the last pass
+   (fovpt_denoise_run does all of it for the whole image.) Every row-range call may run on
+   disjoint rows on as many threads as you like, but each phase must have finished on every
+   row before any row of the next phase starts (a pass reads neighbours up to 2^(i+1) rows
+   away). The buffers given to fovpt_denoise_frame must stay unchanged until the frame's
+   resolve is done. Results do not depend on the row split.
+   Temporal: each pixel's first hit (pinhole + depth * the unit ray through the pixel centre;
+   depth 0: the direction, at infinity) is projected into the previous frame's camera and the
+   history read bilinearly from the 4 pixels around it, each tap kept only when its stored
+   depth agrees (|d_prev - distance to the previous pinhole| <= depth_tol d + 2 |local depth
+   slope|) and its normal too (dot >= normal_cos; a miss only matches a miss); a point that
+   lands within 1e-3 px of a pixel centre takes that pixel alone (a static camera maps every
+   pixel onto itself exactly). Colour = (1 - a) history + a input with
+   a = max(alpha(p), 1 / n), n the history length (<= 32); the luminance moments and the
+   variance (propagated: (1 - a)^2 var_history + a^2 var_input) alike.
+   Spatial: pass i (0 .. passes - 1) takes the 5 x 5 B3-spline taps at step 2^i with the
+   edge-stopping weights of Schied et al. 2017: normals max(0, n.n')^phi_normal, depth
+   exp(-|z - z'| / (phi_depth |grad z| |offset| + 1e-3 z)), albedo
+   exp(-|a - a'|^2 / phi_albedo^2) and luminance exp(-|l - l'| / (phi_lum sqrt(var3x3))),
+   var3x3 the 3 x 3 Gaussian of the variance; the variance is filtered with the squared
+   weights. Input variance: the guide's var where >= 0, else the temporal moments
+   (n >= 4), else the luminance variance over the 3 x 3 pixels at the lattice spacing.
+   Foveation: a pixel's coarseness r = max(s(e), sqrt(spp_ref / spp)) >= 1, s(e) the eye's
+   allowed sample spacing in pixels at its eccentricity e (fov_eye: quality * MAR(e) * ppd,
+   the shared model) and spp the guide's density (spp_ref 0: the density at the gaze);
+   pass i filters the pixel only while 2^i <= fovea_step * r (else the pixel is passed
+   through), and the history weight is 1 - alpha, alpha(p) = max(alpha_periphery,
+   alpha_fovea / r): the fovea keeps the fewest passes and the shortest history.
+   Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
+   filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
+#ifndef FOVPT_DN_MAX_LEVELS
+#define FOVPT_DN_MAX_LEVELS 8
+#endif
+typedef struct fovpt_guide {
+    float *albedo;  uint32_t albedo_stride;  /* 3 floats per pixel */
+    float *normal;  uint32_t normal_stride;  /* 3 floats per pixel */
+    float *depth;   uint32_t depth_stride;   /* 1 float per pixel */
+    float *spp;     uint32_t spp_stride;     /* 1 float per pixel */
+    float *var;     uint32_t var_stride;     /* 1 float per pixel */
+} fovpt_guide;
+
+typedef struct fovpt_denoise_cfg {
+    uint32_t width, height;   /* image size, 1 .. FOVPT_MAX_DIM (the frames' camera size) */
+    uint32_t levels;          /* a-trous passes at most (steps 1 .. 2^(levels-1)), 1 ..
+                                 FOVPT_DN_MAX_LEVELS                                  0: 5 */
+    uint32_t no_filter;       /* 1: no a-trous pass (temporal accumulation only) */
+    uint32_t no_temporal;     /* 1: no history (each frame filtered alone) */
+    float fovea_step;         /* widest step where r = 1, pixels, [1, 2^16]           0: 4 */
+    float spp_ref;            /* density of r = 1 (>= 0); 0: the guide's at the gaze pixel */
+    float phi_lum;            /* luminance stop, (0, 1e6]                             0: 8 */
+    float phi_normal;         /* normal exponent, (0, 1e6]                          0: 128 */
+    float phi_depth;          /* depth-slope multiplier, (0, 1e6]                     0: 1 */
+    float phi_albedo;         /* albedo difference scale, (0, 1e6]                  0: 0.1 */
+    float alpha_fovea;        /* input weight where r = 1, (0, 1]                   0: 0.2 */
+    float alpha_periphery;    /* the least input weight, (0, alpha_fovea]          0: 0.05 */
+    float depth_tol;          /* relative depth tolerance of reprojection, (0, 1]  0: 0.02 */
+    float normal_cos;         /* least normal dot of reprojection, [-1, 1)          0: 0.9 */
+    fov_display display;      /* eccentricity (fov_display); all zero: the camera's frustum */
+    fov_eye eye;              /* the eye model (fov_eye), zero fields: the defaults */
+    fov_logger logger;
+} fovpt_denoise_cfg;
+
+typedef struct fovpt_denoise {  /* filled by fovpt_denoise_init; read-only for the caller */
+    fovpt_denoise_cfg cfg;      /* resolved */
+    fovpt_view view, prev_view; /* this frame's and the previous frame's cameras */
+    fov_ecc_model ecc;
+    float spp_ref;              /* this frame's */
+    const float *in;  uint32_t in_stride;
+    fovpt_guide guide;
+    float *hist[2];             /* 12 floats per pixel: rgb, m1, m2, n, var, depth, normal */
+    float *buf[2];              /* 4 floats per pixel: rgb, var */
+    float *coarse;              /* 1 float per pixel: r */
+    float *pack;                /* 8 floats per pixel: depth, normal, albedo, luminance */
+    uint32_t cur, frames, has_prev, passes, in_frame;
+    void *mem;
+    size_t mem_size;
+} fovpt_denoise;
+
+FOVPT_API void fovpt_guide_init(fovpt_guide *g);   /* every pointer NULL, strides 0 */
+/* fovpt_trace_rows plus the guide buffers of rows [y0, y1) (g NULL: fovpt_trace_rows). */
+FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                            uint32_t y1, const fovpt_guide *g,
+                                            fovpt_stats *stats);
+/* fovpt_render with the guides of the whole image. */
+FOVPT_API fov_result fovpt_render_guide(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
+                                        const fovpt_guide *g, fovpt_stats *stats);
+FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void);
+/* Defaults filled in, every field checked (FOV_ERR_INVALID_ARG, _LIMIT, _NOT_FINITE). */
+FOVPT_API fov_result fovpt_denoise_resolve(const fovpt_denoise_cfg *in, fovpt_denoise_cfg *out);
+FOVPT_API fov_result fovpt_denoise_size(const fovpt_denoise_cfg *cfg, size_t *bytes);
+/* mem: at least fovpt_denoise_size bytes, 8-byte aligned (FOV_ERR_TOO_SMALL, _INVALID_ARG). */
+FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_cfg *cfg,
+                                        void *mem, size_t bytes);
+FOVPT_API fov_result fovpt_denoise_reset(fovpt_denoise *dn);   /* forgets the history */
+/* Starts a frame: its camera (the size of the config), gaze, the noisy linear image (3 floats
+   per pixel, stride in floats, 0: packed) and its guides (depth and normal required; albedo,
+   spp, var optional). The previous frame (if any) becomes the history. */
+FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
+                                         fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
+                                         const fovpt_guide *g);
+FOVPT_API uint32_t fovpt_denoise_passes(const fovpt_denoise *dn);  /* a-trous passes (0: none) */
+FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1);
+FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
+                                               uint32_t y1);
+FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_t y0,
+                                                uint32_t y1, const fovpt_output *out);
+/* Every phase on the whole image (after fovpt_denoise_frame). */
+FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *out);
 
 #ifdef __cplusplus
 }
@@ -3835,6 +3994,7 @@ typedef struct fovpt__attr {
     float pn[3], sn[3];     /* unit normals facing the incoming ray */
     uint32_t psc, ssc;      /* shadow rays found occluded at the hit */
     float pt;               /* distance of the primary hit (unit ray), -1: no hit */
+    uint32_t pmat;          /* material of the primary hit (guide buffers) */
 } fovpt__attr;
 FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
 {
@@ -3868,6 +4028,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         if (at && bounce == 0) {
             fovpt__attr_hit(&h, d, &at->poid, at->pn);
             at->pt = h.t;
+            at->pmat = h.material;
             sec = m->type == FOVPT_MAT_MIRROR || m->type == FOVPT_MAT_DIELECTRIC;
         } else if (at && bounce == 1 && sec) {
             fovpt__attr_hit(&h, d, &at->soid, at->sn);
@@ -3968,7 +4129,11 @@ FOVPT__PRIV void fovpt__whitted(const fovpt_scene *s, const fovpt_config *c, con
             continue;
         }
         m = &s->materials[h.material];
-        if (at && b.depth == 0) { fovpt__attr_hit(&h, b.d, &at->poid, at->pn); at->pt = h.t; }
+        if (at && b.depth == 0) {
+            fovpt__attr_hit(&h, b.d, &at->poid, at->pn);
+            at->pt = h.t;
+            at->pmat = h.material;
+        }
         if (at && b.depth == 1 && !sec_done) fovpt__attr_hit(&h, b.d, &at->soid, at->sn);
         for (k = 0; k < 3; ++k) L[k] += b.w[k] * m->emission[k];
         wo[0] = -b.d[0]; wo[1] = -b.d[1]; wo[2] = -b.d[2];
@@ -5472,6 +5637,790 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *t, const fovpt_selective_c
             return t->alpha[i] + w * (t->alpha[i + 1u] - t->alpha[i]);
         }
     return t->alpha[5];
+}
+
+
+/* ---- denoising: guide buffers (fovpt_trace_rows_guide) --------------------------------- */
+FOVPT__PRIV float fovpt__lum(const float c[3])
+{
+    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
+
+/* per-pixel guide sums over its samples */
+typedef struct fovpt__gsum {
+    float alb[3], nrm[3], dep, l1, l2;
+    uint32_t n, hits;
+} fovpt__gsum;
+
+FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fovpt__attr *at,
+                                 const float rgb[3])
+{
+    float l = fovpt__lum(rgb);
+    G->n++;
+    G->l1 += l;
+    G->l2 += l * l;
+    if (at->poid == FOVPT_PRIM_NONE || !(at->pt > 0.0f)) return;
+    G->hits++;
+    G->dep += at->pt;
+    fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
+    if (at->pmat < s->num_materials)
+        fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
+}
+
+FOVPT__PRIV float *fovpt__gptr(float *p, uint32_t stride, uint32_t ch, uint32_t W, uint32_t x,
+                               uint32_t y)
+{
+    return p + (size_t)y * (stride ? stride : ch * W) + (size_t)ch * x;
+}
+
+/* writes the guides of pixel (x, y) from G; var_ok 0: var -1; spp < 0: G->n */
+FOVPT__PRIV void fovpt__gwrite(const fovpt_guide *g, uint32_t W, uint32_t x, uint32_t y,
+                               const fovpt__gsum *G, float spp, int var_ok)
+{
+    uint32_t k;
+    float inv = G->n ? 1.0f / (float)G->n : 0.0f;
+    if (g->albedo) {
+        float *o = fovpt__gptr(g->albedo, g->albedo_stride, 3u, W, x, y);
+        for (k = 0; k < 3; ++k) o[k] = G->alb[k] * inv;
+    }
+    if (g->normal) {
+        float *o = fovpt__gptr(g->normal, g->normal_stride, 3u, W, x, y), n[3];
+        fovpt__copy3(n, G->nrm);
+        if (G->hits && fov__normalize(n) > 0.0f) fovpt__copy3(o, n);
+        else o[0] = o[1] = o[2] = 0.0f;
+    }
+    if (g->depth)
+        *fovpt__gptr(g->depth, g->depth_stride, 1u, W, x, y) =
+            G->hits ? G->dep / (float)G->hits : 0.0f;
+    if (g->spp) *fovpt__gptr(g->spp, g->spp_stride, 1u, W, x, y) = spp < 0.0f ? (float)G->n : spp;
+    if (g->var) {
+        float v = -1.0f;
+        if (var_ok && G->n >= 2u) {
+            float m = G->l1 * inv;
+            v = fov__maxf(0.0f, (G->l2 - G->l1 * m) / (float)(G->n - 1u)) * inv;
+        }
+        *fovpt__gptr(g->var, g->var_stride, 1u, W, x, y) = v;
+    }
+}
+
+/* fovpt__pixel for a stride-1 target (jitter in the pixel, no clamp), with the guide sums */
+FOVPT__PRIV void fovpt__pixel_g(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y,
+                                uint32_t spp, uint32_t sample0, float sum[3], fovpt__gsum *G,
+                                fovpt_stats *st)
+{
+    uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
+    float t4[4];
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    sum[0] = sum[1] = sum[2] = 0.0f;
+    for (s = 0; s < spp; ++s) {
+        fovpt_rng rng;
+        fovpt__attr at;
+        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
+        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
+        jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
+        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
+        st->camera_rays++;
+        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, &at);
+        sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
+        fovpt__gsum_add(G, ctx->scene, &at, rgb);
+    }
+    st->samples += spp;
+}
+
+/* LAYERS, ZONES: is pixel (x, y) a traced point of a stride-1 layer (traced with its guides)? */
+FOVPT__PRIV int fovpt__own_pixel(const fovpt_ctx *ctx, uint32_t x, uint32_t y, float e)
+{
+    uint32_t n;
+    for (n = 0; n < ctx->lay.count; ++n)
+        if (ctx->lay.layer[n].stride == 1u && x >= ctx->layer_ox[n] && y >= ctx->layer_oy[n] &&
+            !(e > ctx->layer_trace_deg[n] || e < ctx->layer_inner_deg[n]))
+            return 1;
+    return 0;
+}
+
+/* LAYERS, ZONES: the samples per pixel behind pixel (x, y), blended as the resolve does */
+FOVPT__PRIV float fovpt__density(const fovpt_ctx *ctx, float e)
+{
+    const fovpt_layers_cfg *L = &ctx->lay;
+    uint32_t n, top = 0;
+    float D;
+    for (n = L->count - 1u; n > 0; --n)
+        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+    D = (float)L->layer[top].spp / (float)(L->layer[top].stride * L->layer[top].stride);
+    for (n = top + 1u; n < L->count; ++n) {
+        float vb = fovpt__vb(L, n, e);
+        D = (1.0f - vb) * D + vb * (float)L->layer[n].spp /
+                                  (float)(L->layer[n].stride * L->layer[n].stride);
+    }
+    return D;
+}
+
+FOVPT__PRIV int fovpt__gstride_bad(uint32_t stride, uint32_t ch, uint32_t W)
+{
+    return stride != 0u && stride < ch * W;
+}
+
+FOVPT_API void fovpt_guide_init(fovpt_guide *g)
+{
+    if (g) FOV_MEMSET(g, 0, sizeof *g);
+}
+
+FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                            uint32_t y1, const fovpt_guide *g,
+                                            fovpt_stats *stats)
+{
+    fovpt_stats st;
+    uint32_t x, y, n, W, H;
+    float t4[4];
+    if (!g) return fovpt_trace_rows(ctx, frame, y0, y1, stats);
+    if (!ctx) return FOV_ERR_NULL;
+    if (!ctx->scene || (!ctx->accum && !ctx->layer_buf[0]))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
+                    "trace_rows_guide: ctx not initialised (fovpt_init)");
+    W = ctx->cam.width; H = ctx->cam.height;
+    if (y0 > y1 || y1 > H)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "trace_rows_guide: needs y0 <= y1 <= height");
+    if (fovpt__gstride_bad(g->albedo_stride, 3u, W) ||
+        fovpt__gstride_bad(g->normal_stride, 3u, W) || fovpt__gstride_bad(g->depth_stride, 1u, W) ||
+        fovpt__gstride_bad(g->spp_stride, 1u, W) ||
+        fovpt__gstride_bad(g->var_stride, 1u, W))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "trace_rows_guide: a guide stride below the packed one (3 * width for "
+                    "albedo and normal, width for depth, spp, var)");
+    FOV_MEMSET(&st, 0, sizeof st);
+    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
+    if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                float sum[3], *acc = ctx->accum + 4u * ((size_t)y * W + x);
+                fovpt__gsum G;
+                FOV_MEMSET(&G, 0, sizeof G);
+                fovpt__pixel_g(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &G, &st);
+                fovpt__store(acc, sum, ctx->cfg.spp, ctx->cfg.accumulate);
+                fovpt__gwrite(g, W, x, y, &G, acc[3], 1);
+            }
+    } else if (ctx->pre) {
+        fov_result e = fovpt_trace_rows(ctx, frame, y0, y1, &st);
+        if (e != FOV_OK) return e;
+    } else {
+        /* the loop of fovpt_trace_rows (same samples); stride-1 points keep their guides */
+        for (n = 0; n < ctx->lay.count; ++n) {
+            uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
+            uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
+            float tr = ctx->layer_trace_deg[n], ti = ctx->layer_inner_deg[n];
+            uint32_t s0 = ctx->lay.hollow ? 0u : n << 16;
+            uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
+            for (l = l0; l < ctx->layer_ny[n]; ++l) {
+                uint32_t py = oy + l * d;
+                if (py >= y1) break;
+                for (k = 0; k < nx; ++k) {
+                    uint32_t px = ox + k * d;
+                    float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
+                    float ep = fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f);
+                    if (ep > tr || ep < ti) {
+                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f;
+                        continue;
+                    }
+                    if (d == 1u) {
+                        fovpt__gsum G;
+                        FOV_MEMSET(&G, 0, sizeof G);
+                        fovpt__pixel_g(ctx, frame, px, py, spp, s0, sum, &G, &st);
+                        fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), 1);
+                    } else {
+                        fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
+                                     ctx->cfg.spp, ctx->lay.clamp_white, sum, &st);
+                    }
+                    fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
+                    st.layer_targets[n]++;
+                    st.layer_samples[n] += spp;
+                }
+            }
+        }
+    }
+    /* pixels without their own samples: the first hit of the ray through the centre */
+    if (ctx->cfg.method != FOVPT_METHOD_UNIFORM)
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), dir[3];
+                fovpt__gsum G;
+                fovpt__attr at;
+                fovpt_hit h;
+                if (!ctx->pre && fovpt__own_pixel(ctx, x, y, e)) continue;
+                FOV_MEMSET(&G, 0, sizeof G);
+                FOV_MEMSET(&at, 0, sizeof at);
+                at.poid = FOVPT_PRIM_NONE;
+                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
+                               (float)y + 0.5f, dir);
+                st.camera_rays++;
+                if (fovpt__hit(ctx->scene, ctx->origin, dir, 0.0f, FLT_MAX, &h, 0)) {
+                    fovpt__attr_hit(&h, dir, &at.poid, at.pn);
+                    at.pt = h.t;
+                    at.pmat = h.material;
+                }
+                {
+                    float zero[3] = { 0.0f, 0.0f, 0.0f };
+                    fovpt__gsum_add(&G, ctx->scene, &at, zero);
+                }
+                fovpt__gwrite(g, W, x, y, &G, ctx->pre ? 1.0f : fovpt__density(ctx, e), 0);
+            }
+    fovpt__add_stats(stats, &st);
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_render_guide(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,
+                                        const fovpt_guide *g, fovpt_stats *stats)
+{
+    fov_result e;
+    if (!ctx) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "render_guide: out is NULL");
+    e = fovpt_trace_rows_guide(ctx, frame, 0, ctx->cam.height, g, stats);
+    if (e != FOV_OK) return e;
+    e = fovpt_refine_rows(ctx, frame, 0, ctx->cam.height, stats);
+    if (e != FOV_OK) return e;
+    return fovpt_resolve_rows(ctx, 0, ctx->cam.height, out);
+}
+
+/* ---- denoising: the foveated a-trous filter (Dammertz et al. 2010; Schied et al. 2017) -- */
+/* exp(-x) for x in [0, 30] (edge-stopping weights): 2^(-x log2 e) as 2^-i by the exponent
+   bits times a degree-6 Taylor polynomial of 2^-f, f in [0, 1) (relative error below 5e-5) */
+FOVPT__PRIV float fovpt__exp_neg(float x)
+{
+    float t = x * 1.44269504f, f, p;
+    int32_t i;
+    union { float f; uint32_t u; } b;
+    if (!(t < 126.0f)) return 0.0f;
+    if (!(t > 0.0f)) return 1.0f;
+    i = (int32_t)t;
+    f = t - (float)i;
+    /* 2^-f on [0, 1): Taylor in (-f ln 2), Horner */
+    f *= -0.693147181f;
+    p = 0.00833333333f + f * 0.00138888889f;
+    p = 1.0f + f * (1.0f + f * (0.5f + f * (0.166666667f + f * (0.0416666667f + f * p))));
+    b.u = (uint32_t)(127 - i) << 23;
+    return p * b.f;
+}
+#define FOVPT__DN_HIST 12u
+#define FOVPT__DN_MAXN 32.0f
+
+FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void)
+{
+    fovpt_denoise_cfg c;
+    FOV_MEMSET(&c, 0, sizeof c);
+    c.levels = 5;
+    c.fovea_step = 4.0f;
+    c.phi_lum = 8.0f;
+    c.phi_normal = 128.0f;
+    c.phi_depth = 1.0f;
+    c.phi_albedo = 0.1f;
+    c.alpha_fovea = 0.2f;
+    c.alpha_periphery = 0.05f;
+    c.depth_tol = 0.02f;
+    c.normal_cos = 0.9f;
+    return c;
+}
+
+FOVPT__PRIV int fovpt__dn_in(float v, float lo, float hi)
+{
+    return fov__finite(v) && v > lo && v <= hi;
+}
+
+FOVPT_API fov_result fovpt_denoise_resolve(const fovpt_denoise_cfg *in, fovpt_denoise_cfg *out)
+{
+    fovpt_denoise_cfg c, d = fovpt_denoise_cfg_default();
+    const fov_logger *lg;
+    if (!in || !out) return FOV_ERR_NULL;
+    c = *in;
+    lg = &in->logger;
+    if (c.width == 0 || c.height == 0)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.width and cfg.height must be >= 1");
+    if (c.width > FOVPT_MAX_DIM || c.height > FOVPT_MAX_DIM)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "denoise: cfg.width or cfg.height above FOVPT_MAX_DIM");
+    if (!c.levels) c.levels = d.levels;
+    if (c.levels > FOVPT_DN_MAX_LEVELS)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.levels above FOVPT_DN_MAX_LEVELS");
+    if (c.no_filter > 1u || c.no_temporal > 1u)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.no_filter and no_temporal are 0 or 1");
+    if (!fov__finite(c.fovea_step) || !fov__finite(c.spp_ref) || !fov__finite(c.phi_lum) ||
+        !fov__finite(c.phi_normal) || !fov__finite(c.phi_depth) || !fov__finite(c.phi_albedo) ||
+        !fov__finite(c.alpha_fovea) || !fov__finite(c.alpha_periphery) ||
+        !fov__finite(c.depth_tol) || !fov__finite(c.normal_cos))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "denoise: a cfg field is NaN or infinite");
+    if (fov__is0(c.fovea_step)) c.fovea_step = d.fovea_step;
+    if (fov__is0(c.phi_lum)) c.phi_lum = d.phi_lum;
+    if (fov__is0(c.phi_normal)) c.phi_normal = d.phi_normal;
+    if (fov__is0(c.phi_depth)) c.phi_depth = d.phi_depth;
+    if (fov__is0(c.phi_albedo)) c.phi_albedo = d.phi_albedo;
+    if (fov__is0(c.alpha_fovea)) c.alpha_fovea = d.alpha_fovea;
+    if (fov__is0(c.alpha_periphery))
+        c.alpha_periphery = fov__minf(d.alpha_periphery, c.alpha_fovea);
+    if (fov__is0(c.depth_tol)) c.depth_tol = d.depth_tol;
+    if (fov__is0(c.normal_cos)) c.normal_cos = d.normal_cos;
+    if (!(c.fovea_step >= 1.0f && c.fovea_step <= 65536.0f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.fovea_step must be in [1, 65536]");
+    if (!(c.spp_ref >= 0.0f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.spp_ref must be >= 0");
+    if (!fovpt__dn_in(c.phi_lum, 0.0f, 1e6f) || !fovpt__dn_in(c.phi_normal, 0.0f, 1e6f) ||
+        !fovpt__dn_in(c.phi_depth, 0.0f, 1e6f) || !fovpt__dn_in(c.phi_albedo, 0.0f, 1e6f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.phi_* must be in (0, 1e6]");
+    if (!fovpt__dn_in(c.alpha_fovea, 0.0f, 1.0f) || !fovpt__dn_in(c.alpha_periphery, 0.0f, 1.0f) ||
+        c.alpha_periphery > c.alpha_fovea)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "denoise: cfg.alpha_fovea in (0, 1], alpha_periphery in (0, alpha_fovea]");
+    if (!fovpt__dn_in(c.depth_tol, 0.0f, 1.0f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.depth_tol must be in (0, 1]");
+    if (!(c.normal_cos >= -1.0f && c.normal_cos < 1.0f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.normal_cos must be in [-1, 1)");
+    if (!fov__finite(c.eye.mar0_arcmin) || !fov__finite(c.eye.slope_arcmin) ||
+        !fov__finite(c.eye.quality) || c.eye.mar0_arcmin < 0.0f || c.eye.slope_arcmin < 0.0f ||
+        c.eye.quality < 0.0f)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.eye fields must be finite and >= 0");
+    *out = c;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_denoise_size(const fovpt_denoise_cfg *cfg, size_t *bytes)
+{
+    fovpt_denoise_cfg c;
+    fov_result e;
+    uint64_t px;
+    if (!cfg || !bytes) return FOV_ERR_NULL;
+    e = fovpt_denoise_resolve(cfg, &c);
+    if (e != FOV_OK) return e;
+    px = (uint64_t)c.width * c.height;
+    px = px * 4u * (2u * FOVPT__DN_HIST + 2u * 4u + 1u + 8u) + 64u;
+    if (px > (uint64_t)(SIZE_MAX / 2u))
+        FOVPT__FAIL(&cfg->logger, FOV_ERR_LIMIT, "denoise_size: memory overflows size_t");
+    *bytes = (size_t)px;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_cfg *cfg,
+                                        void *mem, size_t bytes)
+{
+    size_t need = 0, px;
+    fov_result e;
+    float *p;
+    if (!dn || !cfg) return FOV_ERR_NULL;
+    e = fovpt_denoise_size(cfg, &need);
+    if (e != FOV_OK) return e;
+    if (!mem) FOVPT__FAIL(&cfg->logger, FOV_ERR_NULL, "denoise_init: mem is NULL");
+    if (((uintptr_t)mem & 7u) != 0u)
+        FOVPT__FAIL(&cfg->logger, FOV_ERR_INVALID_ARG, "denoise_init: mem not 8-byte aligned");
+    if (bytes < need)
+        FOVPT__FAIL(&cfg->logger, FOV_ERR_TOO_SMALL,
+                    "denoise_init: bytes below fovpt_denoise_size");
+    FOV_MEMSET(dn, 0, sizeof *dn);
+    (void)fovpt_denoise_resolve(cfg, &dn->cfg);
+    px = (size_t)dn->cfg.width * dn->cfg.height;
+    p = (float *)mem;
+    dn->hist[0] = p; p += FOVPT__DN_HIST * px;
+    dn->hist[1] = p; p += FOVPT__DN_HIST * px;
+    dn->buf[0] = p; p += 4u * px;
+    dn->buf[1] = p; p += 4u * px;
+    dn->coarse = p; p += px;
+    dn->pack = p;
+    dn->mem = mem;
+    dn->mem_size = bytes;
+    dn->passes = dn->cfg.no_filter ? 0u : dn->cfg.levels;
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_denoise_reset(fovpt_denoise *dn)
+{
+    if (!dn) return FOV_ERR_NULL;
+    if (!dn->mem) FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_NULL, "denoise_reset: not initialised");
+    dn->frames = 0;
+    dn->has_prev = 0;
+    dn->in_frame = 0;
+    return FOV_OK;
+}
+
+FOVPT_API uint32_t fovpt_denoise_passes(const fovpt_denoise *dn) { return dn ? dn->passes : 0u; }
+
+FOVPT__PRIV const float *fovpt__gin(const float *p, uint32_t stride, uint32_t ch, uint32_t W,
+                                    uint32_t x, uint32_t y)
+{
+    return p + (size_t)y * (stride ? stride : ch * W) + (size_t)ch * x;
+}
+
+FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
+                                         fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
+                                         const fovpt_guide *g)
+{
+    const fov_logger *lg;
+    fovpt_view v;
+    fov_result e;
+    uint32_t W, H;
+    if (!dn) return FOV_ERR_NULL;
+    lg = &dn->cfg.logger;
+    if (!dn->mem) FOVPT__FAIL(lg, FOV_ERR_NULL, "denoise_frame: not initialised (denoise_init)");
+    if (!cam || !rgb || !g)
+        FOVPT__FAIL(lg, FOV_ERR_NULL, "denoise_frame: cam, rgb and g are required");
+    if (!g->depth || !g->normal)
+        FOVPT__FAIL(lg, FOV_ERR_NULL, "denoise_frame: g.depth and g.normal are required");
+    W = dn->cfg.width; H = dn->cfg.height;
+    if (cam->width != W || cam->height != H)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise_frame: camera size differs from cfg's");
+    if (fovpt__gstride_bad(rgb_stride, 3u, W) || fovpt__gstride_bad(g->albedo_stride, 3u, W) ||
+        fovpt__gstride_bad(g->normal_stride, 3u, W) || fovpt__gstride_bad(g->depth_stride, 1u, W) ||
+        fovpt__gstride_bad(g->spp_stride, 1u, W) || fovpt__gstride_bad(g->var_stride, 1u, W))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "denoise_frame: a stride below the packed one (3 * width for rgb, albedo "
+                    "and normal, width for depth, spp, var)");
+    if (!fov__finite(gaze.x) || !fov__finite(gaze.y))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "denoise_frame: gaze NaN or infinite");
+    e = fovpt__camera_setup(cam, v.right, v.up, v.fwd, v.tan4, v.pos);
+    if (e != FOV_OK) FOVPT__FAIL(lg, e, "denoise_frame: invalid camera (see fov_camera)");
+    e = fovpt__ecc_of(&dn->cfg.display, cam, v.tan4, gaze, &dn->ecc);
+    if (e != FOV_OK) FOVPT__FAIL(lg, e, "denoise_frame: invalid cfg.display (see fov_display)");
+    if (dn->frames > 0u) {
+        dn->cur ^= 1u;
+        dn->prev_view = dn->view;
+        dn->has_prev = !dn->cfg.no_temporal;
+    }
+    dn->view = v;
+    dn->frames++;
+    dn->in = rgb;
+    dn->in_stride = rgb_stride;
+    dn->guide = *g;
+    dn->spp_ref = dn->cfg.spp_ref;
+    if (!(dn->spp_ref > 0.0f)) {
+        dn->spp_ref = 1.0f;
+        if (g->spp) {
+            float gx = fov__clampf(gaze.x, 0.0f, (float)W - 1.0f);
+            float gy = fov__clampf(gaze.y, 0.0f, (float)H - 1.0f);
+            float s = *fovpt__gin(g->spp, g->spp_stride, 1u, W, (uint32_t)gx, (uint32_t)gy);
+            if (s > 0.0f && fov__finite(s)) dn->spp_ref = s;
+        }
+    }
+    dn->in_frame = 1;
+    return FOV_OK;
+}
+
+/* the 4-neighbour depth slope at (x, y) (the smaller one-sided difference per axis) */
+FOVPT__PRIV void fovpt__dn_slope(const fovpt_denoise *dn, uint32_t x, uint32_t y, float s[2])
+{
+    const fovpt_guide *g = &dn->guide;
+    uint32_t W = dn->cfg.width, H = dn->cfg.height;
+    float z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y), a = FLT_MAX, b = FLT_MAX;
+    if (x > 0) a = fov__absf(z - *fovpt__gin(g->depth, g->depth_stride, 1u, W, x - 1u, y));
+    if (x + 1u < W) b = fov__absf(z - *fovpt__gin(g->depth, g->depth_stride, 1u, W, x + 1u, y));
+    s[0] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
+    a = b = FLT_MAX;
+    if (y > 0) a = fov__absf(z - *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y - 1u));
+    if (y + 1u < H) b = fov__absf(z - *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y + 1u));
+    s[1] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
+}
+
+FOVPT__PRIV float fovpt__dn_coarse(const fovpt_denoise *dn, uint32_t x, uint32_t y)
+{
+    const fovpt_guide *g = &dn->guide;
+    float e = fovpt_ecc_deg(&dn->ecc, (float)x + 0.5f, (float)y + 0.5f);
+    float r = fovpt_eye_mar(&dn->cfg.eye, e) * fovpt_ecc_ppd(&dn->ecc);
+    if (g->spp) {
+        float s = *fovpt__gin(g->spp, g->spp_stride, 1u, dn->cfg.width, x, y);
+        if (s > 0.0f && fov__finite(s)) r = fov__maxf(r, FOV__SQRT(dn->spp_ref / s));
+    }
+    return fov__clampf(r, 1.0f, 65536.0f);
+}
+
+FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
+{
+    uint32_t x, y, k, W, H;
+    const fovpt_guide *g;
+    if (!dn) return FOV_ERR_NULL;
+    if (!dn->in_frame)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_temporal_rows: call fovpt_denoise_frame first");
+    W = dn->cfg.width; H = dn->cfg.height;
+    if (y0 > y1 || y1 > H)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_temporal_rows: needs y0 <= y1 <= height");
+    g = &dn->guide;
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            const float *c = fovpt__gin(dn->in, dn->in_stride, 3u, W, x, y);
+            const float *nrm = fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y);
+            float z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y);
+            float *o = dn->hist[dn->cur] + FOVPT__DN_HIST * i, *b = dn->buf[0] + 4u * i;
+            float in[3], l, var_in = -1.0f, r = fovpt__dn_coarse(dn, x, y), hs[8], hw = 0.0f;
+            float a = fov__maxf(dn->cfg.alpha_periphery, dn->cfg.alpha_fovea / r), n = 1.0f;
+            int hit = z > 0.0f && fov__finite(z);
+            for (k = 0; k < 3; ++k) in[k] = fov__finite(c[k]) ? fov__maxf(c[k], 0.0f) : 0.0f;
+            if (!hit) z = 0.0f;
+            l = fovpt__lum(in);
+            dn->coarse[i] = r;
+            for (k = 0; k < 8; ++k) hs[k] = 0.0f;
+            if (g->var) {
+                float v = *fovpt__gin(g->var, g->var_stride, 1u, W, x, y);
+                if (v >= 0.0f && fov__finite(v)) var_in = v;
+            }
+            if (dn->has_prev) { /* reproject the first hit into the previous view */
+                const fovpt_view *pv = &dn->prev_view, *cv = &dn->view;
+                float dir[3], X[3], d[3], zz, sx, sy, px, py, fx, fy, dist, sl[2], tol;
+                int ix, iy, tx, ty;
+                fovpt__primary(cv->right, cv->up, cv->fwd, cv->tan4, W, H, (float)x + 0.5f,
+                               (float)y + 0.5f, dir);
+                if (hit) fovpt__madd3(X, cv->pos, z, dir);
+                else fovpt__madd3(X, pv->pos, 1.0f, dir);
+                fovpt__sub3(d, X, pv->pos);
+                zz = fov__dot(d, pv->fwd);
+                dist = fov__len(d);
+                fovpt__dn_slope(dn, x, y, sl);
+                tol = dn->cfg.depth_tol * z + 2.0f * fov__maxf(sl[0], sl[1]);
+                if (zz > 0.0f) {
+                    sx = fov__dot(d, pv->right) / zz;
+                    sy = fov__dot(d, pv->up) / zz;
+                    px = (sx - pv->tan4[0]) / (pv->tan4[1] - pv->tan4[0]) * (float)W - 0.5f;
+                    py = (sy - pv->tan4[2]) / (pv->tan4[3] - pv->tan4[2]) * (float)H - 0.5f;
+                    if (px > -1.0f && py > -1.0f && px < (float)W && py < (float)H) {
+                        float rx = FOV__FLOOR(px + 0.5f), ry = FOV__FLOOR(py + 0.5f);
+                        if (fov__absf(px - rx) < 1e-3f) px = rx; /* on a pixel centre */
+                        if (fov__absf(py - ry) < 1e-3f) py = ry;
+                        ix = (int)FOV__FLOOR(px); iy = (int)FOV__FLOOR(py);
+                        fx = px - (float)ix; fy = py - (float)iy;
+                        for (ty = 0; ty < 2; ++ty)
+                            for (tx = 0; tx < 2; ++tx) {
+                                int qx = ix + tx, qy = iy + ty;
+                                float w = (tx ? fx : 1.0f - fx) * (ty ? fy : 1.0f - fy);
+                                const float *q;
+                                if (!(w > 0.0f) || qx < 0 || qy < 0 || qx >= (int)W ||
+                                    qy >= (int)H)
+                                    continue;
+                                q = dn->hist[dn->cur ^ 1u] + FOVPT__DN_HIST *
+                                        ((size_t)qy * W + (size_t)qx);
+                                if (hit) {
+                                    if (!(q[8] > 0.0f) || !(fov__absf(q[8] - dist) <= tol) ||
+                                        fov__dot(q + 9, nrm) < dn->cfg.normal_cos)
+                                        continue;
+                                } else if (q[8] > 0.0f) {
+                                    continue;
+                                }
+                                for (k = 0; k < 8; ++k) hs[k] += w * q[k];
+                                hw += w;
+                            }
+                    }
+                }
+            }
+            if (hw > 0.01f) {
+                float m1, m2, inv = 1.0f / hw, vh;
+                n = fov__minf(hs[5] * inv + 1.0f, FOVPT__DN_MAXN);
+                a = fov__maxf(a, 1.0f / n);
+                for (k = 0; k < 3; ++k) o[k] = (1.0f - a) * hs[k] * inv + a * in[k];
+                m1 = (1.0f - a) * hs[3] * inv + a * l;
+                m2 = (1.0f - a) * hs[4] * inv + a * l * l;
+                o[3] = m1; o[4] = m2;
+                if (var_in < 0.0f && n >= 4.0f) var_in = fov__maxf(0.0f, m2 - m1 * m1);
+                vh = hs[6] * inv;
+                o[6] = -1.0f;
+                if (var_in >= 0.0f)
+                    o[6] = (1.0f - a) * (1.0f - a) * fov__maxf(vh, 0.0f) + a * a * var_in;
+            } else {
+                for (k = 0; k < 3; ++k) o[k] = in[k];
+                o[3] = l; o[4] = l * l;
+                o[6] = var_in;
+            }
+            o[5] = n;
+            if (o[6] < 0.0f || n < 4.0f) { /* spatial: 3 x 3 pixels at the lattice spacing */
+                int st = (int)fov__clampf(FOV__FLOOR(r + 0.5f), 1.0f, 4.0f), dx, dy, cnt = 0;
+                float s1 = 0.0f, s2 = 0.0f;
+                for (dy = -1; dy <= 1; ++dy)
+                    for (dx = -1; dx <= 1; ++dx) {
+                        int qx = (int)x + dx * st, qy = (int)y + dy * st;
+                        const float *q;
+                        float lq, cq[3];
+                        if (qx < 0 || qy < 0 || qx >= (int)W || qy >= (int)H) continue;
+                        q = fovpt__gin(dn->in, dn->in_stride, 3u, W, (uint32_t)qx, (uint32_t)qy);
+                        for (k = 0; k < 3; ++k)
+                            cq[k] = fov__finite(q[k]) ? fov__maxf(q[k], 0.0f) : 0.0f;
+                        lq = fovpt__lum(cq);
+                        s1 += lq; s2 += lq * lq; cnt++;
+                    }
+                s1 /= (float)cnt;
+                s1 = fov__maxf(0.0f, s2 / (float)cnt - s1 * s1);
+                o[6] = o[6] < 0.0f ? s1 : 0.5f * (o[6] + s1);
+            }
+            o[7] = 0.0f;
+            o[8] = z;
+            fovpt__copy3(o + 9, nrm);
+            {
+                float *pk = dn->pack + 8u * i;
+                pk[0] = z;
+                fovpt__copy3(pk + 1, nrm);
+                if (g->albedo)
+                    fovpt__copy3(pk + 4, fovpt__gin(g->albedo, g->albedo_stride, 3u, W, x, y));
+                else pk[4] = pk[5] = pk[6] = 0.0f;
+                pk[7] = 0.0f;
+            }
+            b[0] = o[0]; b[1] = o[1]; b[2] = o[2]; b[3] = o[6];
+        }
+    return FOV_OK;
+}
+
+/* the packed depth's slope at (x, y) (the smaller one-sided difference per axis) */
+FOVPT__PRIV void fovpt__dn_pslope(const float *pk, uint32_t W, uint32_t H, uint32_t x, uint32_t y,
+                                  float s[2])
+{
+    const float *p = pk + 8u * ((size_t)y * W + x);
+    float z = p[0], a = FLT_MAX, b = FLT_MAX;
+    if (x > 0) a = fov__absf(z - p[-8]);
+    if (x + 1u < W) b = fov__absf(z - p[8]);
+    s[0] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
+    a = b = FLT_MAX;
+    if (y > 0) a = fov__absf(z - p[-(ptrdiff_t)(8u * W)]);
+    if (y + 1u < H) b = fov__absf(z - p[8u * W]);
+    s[1] = fov__minf(a, b) < FLT_MAX ? fov__minf(a, b) : 0.0f;
+}
+
+FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
+                                               uint32_t y1)
+{
+    static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
+    static const float g3[3] = { 0.25f, 0.5f, 0.25f };
+    uint32_t x, y, k, W, H, ipn;
+    int step, alb;
+    const float *src, *pk;
+    float *dst, ia2;
+    if (!dn) return FOV_ERR_NULL;
+    if (!dn->in_frame)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_atrous_rows: call fovpt_denoise_frame first");
+    W = dn->cfg.width; H = dn->cfg.height;
+    if (pass >= dn->passes)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_atrous_rows: pass must be below fovpt_denoise_passes");
+    if (y0 > y1 || y1 > H)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_atrous_rows: needs y0 <= y1 <= height");
+    alb = dn->guide.albedo != NULL;
+    pk = dn->pack;
+    src = dn->buf[pass & 1u];
+    dst = dn->buf[(pass & 1u) ^ 1u];
+    step = 1 << pass;
+    ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
+    ipn = 0;
+    if (dn->cfg.phi_normal <= 4096.0f &&
+        fov__is0(dn->cfg.phi_normal - FOV__FLOOR(dn->cfg.phi_normal)))
+        ipn = (uint32_t)dn->cfg.phi_normal;
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            const float *p = src + 4u * i, *gp = pk + 8u * i;
+            float *o = dst + 4u * i;
+            float zp = gp[0], sl[2], lp = fovpt__lum(p), v3 = 0.0f, sig, ws = 0.0f, wv = 0.0f;
+            float acc[3] = { 0.0f, 0.0f, 0.0f };
+            int dx, dy, hitp = zp > 0.0f;
+            if ((float)step > dn->cfg.fovea_step * dn->coarse[i]) { /* not at this pixel */
+                o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
+                continue;
+            }
+            for (dy = -1; dy <= 1; ++dy) /* the variance's 3 x 3 Gaussian */
+                for (dx = -1; dx <= 1; ++dx) {
+                    int qx = (int)fov__clampf((float)((int)x + dx), 0.0f, (float)W - 1.0f);
+                    int qy = (int)fov__clampf((float)((int)y + dy), 0.0f, (float)H - 1.0f);
+                    v3 += g3[dx + 1] * g3[dy + 1] * src[4u * ((size_t)qy * W + (size_t)qx) + 3u];
+                }
+            sig = 1.0f / (dn->cfg.phi_lum * FOV__SQRT(fov__maxf(v3, 0.0f)) + 1e-6f);
+            fovpt__dn_pslope(pk, W, H, x, y, sl);
+            sl[0] *= dn->cfg.phi_depth * (float)step; sl[1] *= dn->cfg.phi_depth * (float)step;
+            for (dy = -2; dy <= 2; ++dy) {
+                int qy = (int)y + dy * step;
+                if (qy < 0 || qy >= (int)H) continue;
+                for (dx = -2; dx <= 2; ++dx) {
+                    int qx = (int)x + dx * step;
+                    size_t j = (size_t)qy * W + (size_t)qx;
+                    const float *q, *gq;
+                    float w, ex;
+                    if (qx < 0 || qx >= (int)W) continue;
+                    q = src + 4u * j;
+                    gq = pk + 8u * j;
+                    w = h5[dx + 2] * h5[dy + 2];
+                    if (dx || dy) {
+                        /* one exponential for the depth, albedo and luminance stops */
+                        ex = fov__absf(lp - fovpt__lum(q)) * sig;
+                        if (hitp != (gq[0] > 0.0f)) continue;
+                        if (hitp)
+                            ex += fov__absf(zp - gq[0]) /
+                                  (sl[0] * (float)(dx < 0 ? -dx : dx) +
+                                   sl[1] * (float)(dy < 0 ? -dy : dy) + 1e-3f * zp);
+                        if (alb) {
+                            float a0 = gp[4] - gq[4], a1 = gp[5] - gq[5], a2 = gp[6] - gq[6];
+                            ex += (a0 * a0 + a1 * a1 + a2 * a2) * ia2;
+                        }
+                        if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
+                        if (hitp) {
+                            float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
+                            if (!(c > 0.0f)) continue;
+                            if (ipn) { /* an integer exponent: by squaring */
+                                float r_ = 1.0f;
+                                uint32_t e_ = ipn;
+                                while (e_) { if (e_ & 1u) r_ *= c; c *= c; e_ >>= 1; }
+                                w *= r_;
+                            } else {
+                                w *= FOV__POW(c, dn->cfg.phi_normal);
+                            }
+                        }
+                        w *= fovpt__exp_neg(ex);
+                        if (!(w > 1e-13f)) continue;
+                    }
+                    for (k = 0; k < 3; ++k) acc[k] += w * q[k];
+                    ws += w;
+                    wv += w * w * fov__maxf(q[3], 0.0f);
+                }
+            }
+            for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
+            o[3] = wv / (ws * ws);
+        }
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_t y0,
+                                                uint32_t y1, const fovpt_output *out)
+{
+    uint32_t x, y, W;
+    const float *src;
+    if (!dn) return FOV_ERR_NULL;
+    if (!out) FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_NULL, "denoise_resolve_rows: out is NULL");
+    if (!dn->in_frame)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_resolve_rows: call fovpt_denoise_frame first");
+    W = dn->cfg.width;
+    if (y0 > y1 || y1 > dn->cfg.height)
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_resolve_rows: needs y0 <= y1 <= height");
+    if (fovpt__gstride_bad(out->rgb_stride, 3u, W) || fovpt__gstride_bad(out->rgb8_stride, 3u, W))
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
+    src = dn->buf[dn->passes & 1u];
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            const float *c = src + 4u * ((size_t)y * W + x);
+            if (out->rgb) {
+                float *o =
+                    out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;
+                o[0] = c[0]; o[1] = c[1]; o[2] = c[2];
+            }
+            if (out->rgb8) {
+                uint8_t *o =
+                    out->rgb8 + (size_t)y * (out->rgb8_stride ? out->rgb8_stride : 3u * W) + 3u * x;
+                o[0] = fovpt__srgb8(c[0]); o[1] = fovpt__srgb8(c[1]); o[2] = fovpt__srgb8(c[2]);
+            }
+        }
+    return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *out)
+{
+    fov_result e;
+    uint32_t i;
+    if (!dn) return FOV_ERR_NULL;
+    e = fovpt_denoise_temporal_rows(dn, 0, dn->cfg.height);
+    for (i = 0; e == FOV_OK && i < dn->passes; ++i)
+        e = fovpt_denoise_atrous_rows(dn, i, 0, dn->cfg.height);
+    if (e != FOV_OK) return e;
+    return fovpt_denoise_resolve_rows(dn, 0, dn->cfg.height, out);
 }
 
 #endif /* FOVPT_IMPLEMENTATION */

@@ -72,6 +72,8 @@
 #include "fovlp.h"
 #include "examples/pt_scenes.h"
 #include "examples/lp_pt_shade.h"
+#define FOVM_IMPLEMENTATION
+#include "examples/fovmetrics.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -111,6 +113,8 @@ static void *worker(void *a)
 }
 
 /* renders with cfg; threads > 1 only for ground truths (UNIFORM: no refine phase) */
+static int g_dn;
+static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st);
 static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st, int threads)
 {
     size_t n = 0;
@@ -118,6 +122,7 @@ static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rg
     fovpt_ctx ctx;
     fovpt_output out;
     double t0, t;
+    if (g_dn && threads <= 1) return render_dn(S, cfg, g, rgb, st); /* --denoise rows */
     memset(st, 0, sizeof *st);
     if (fovpt_memory_size(cfg, &S->cam, &n) != FOV_OK) return -1.0;
     mem = malloc(n + 16u);
@@ -790,6 +795,309 @@ static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_
     }
 }
 
+/* ---- denoised rows (_dn): guide buffers + fovpt_denoise (issue 14) -----------------------
+   For the path methods (uniform4, uniform1, layers, layers_diam, zones) at their default
+   budget and at eqtime_uniform4 (layers, layers_diam, zones, layers_fovea, layers_diam_fovea:
+   the time of uniform4 WITHOUT a denoiser in the same run, the denoiser's cost counted in the
+   row's time): rows <method>_dn in pt.csv (same columns; time_ms = trace with guides +
+   refine + resolve + denoise, one thread; a single frame, so no history: the spatial filter
+   alone). Beside pt.csv, pt_denoise.csv: scene,method,gaze,budget,psnr_f1..f4,psnr_all,
+   flip,flip_f1,time_ms,dn_ms (flip: mean LDR-FLIP of the eye-filtered pair,
+   examples/fovmetrics.h fovm_perceptual, the camera's field of view as the display; flip_f1
+   the same over the fovea annulus only... computed on the eye-filtered FLIP map), with the
+   undenoised method in the same run beside each _dn row.
+   Flicker (pt_flicker.csv: scene,method,flicker_static,flicker_moving,psnr_f1_static,
+   psnr_all_static; gaze at the centre,
+   DN_TF frames, the default budgets of uniform4, layers, zones with and without the
+   denoiser, which keeps its history across the frames): per pixel of the periphery (e >= 12.1
+   degrees) the mean absolute frame-to-frame difference of the sRGB values, frames 2 .. DN_TF
+   - 1; the moving view turns 0.1 degree per frame about the vertical and the previous frame
+   is first warped to the current view (a pure rotation: exact per pixel, bilinear), so a
+   static scene seen by a noiseless renderer scores about its bilinear warp error.
+   psnr_f1_static / psnr_all_static: the last frame of the static view against the ground
+   truth (what DN_TF frames of temporal accumulation reach). */
+#define DN_TF 8u
+/* g_dn (declared above render()): 1 = trace with guides and denoise */
+static double g_dn_ms;           /* the denoiser's share of the last render, ms */
+static int g_dn_scene = -1;      /* --denoise --scene N: that scene only */
+
+static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st)
+{
+    size_t n = 0, dnb = 0, np = (size_t)S->cam.width * S->cam.height;
+    void *mem, *dmem;
+    fovpt_ctx ctx;
+    fovpt_output out;
+    fovpt_guide gd;
+    fovpt_denoise dn;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    float *noisy = (float *)malloc(np * 12u), *gb = (float *)malloc(np * 32u);
+    double t0, t1, t;
+    memset(st, 0, sizeof *st);
+    dc.width = S->cam.width; dc.height = S->cam.height;
+    if (fovpt_memory_size(cfg, &S->cam, &n) != FOV_OK || fovpt_denoise_size(&dc, &dnb) != FOV_OK) return -1.0;
+    mem = malloc(n + 16u);
+    dmem = malloc(dnb);
+    if (fovpt_init(&ctx, cfg, &S->scene, &S->cam, g, mem, n) != FOV_OK || fovpt_denoise_init(&dn, &dc, dmem, dnb) != FOV_OK) {
+        free(mem); free(dmem); return -1.0;
+    }
+    fovpt_guide_init(&gd);
+    gd.albedo = gb; gd.normal = gb + 3u * np; gd.depth = gb + 6u * np; gd.spp = gb + 7u * np;
+    gd.var = (float *)malloc(np * 4u);
+    fovpt_output_init(&out);
+    out.rgb = noisy;
+    t0 = cpu_ms();
+    fovpt_render_guide(&ctx, 0, &out, &gd, st);
+    t1 = cpu_ms();
+    fovpt_denoise_frame(&dn, &S->cam, g, noisy, 0, &gd);
+    out.rgb = rgb;
+    fovpt_denoise_run(&dn, &out);
+    t = cpu_ms() - t0;
+    g_dn_ms = cpu_ms() - t1;
+    free(gd.var); free(noisy); free(gb); free(mem); free(dmem);
+    return t;
+}
+
+static void srgb_img(const float *a, float *o, size_t n3)
+{
+    size_t i;
+    for (i = 0; i < n3; ++i) o[i] = (float)srgb((double)a[i]);
+}
+
+/* FLIP of the eye-filtered pair over the image and over the fovea annulus (e < 3.3) */
+static void flip_of(const float *img, const float *ref, const float *ecc, uint32_t W, uint32_t H, float fovy, fov_gaze g,
+                    double *flip_all, double *flip_f1)
+{
+    size_t np = (size_t)W * H, i, c = 0;
+    float *a = (float *)calloc(np * 3u, 4u), *b = (float *)calloc(np * 3u, 4u), *map = (float *)calloc(np, 4u);
+    fovm_eye eye = fovm_eye_from_fov((int)W, (int)H, (double)fovy, (double)g.x, (double)g.y);
+    double s = 0.0;
+    srgb_img(img, a, np * 3u);
+    srgb_img(ref, b, np * 3u);
+    *flip_all = NAN; *flip_f1 = NAN;
+    if (fovm_perceptual(b, a, (int)W, (int)H, 3, &eye, NULL, flip_all, map) == FOVM_OK) {
+        for (i = 0; i < np; ++i)
+            if (ecc[i] < 3.3f) { s += map[i]; c++; }
+        *flip_f1 = c ? s / (double)c : NAN;
+    }
+    free(a); free(b); free(map);
+}
+
+static void dn_side_row(FILE *side, const char *scene, const char *method, const char *gz, const char *budget, const double ps[5],
+                        double fl, double fl1, double t, double tdn)
+{
+    fprintf(side, "%s,%s,%s,%s,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%.2f\n", scene, method, gz, budget, ps[0], ps[1], ps[2], ps[3], ps[4],
+            fl, fl1, t, tdn);
+}
+
+/* the _dn rows of one scene and gaze; t_u4 = uniform4's time without a denoiser (same run) */
+static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc,
+                    double t_u4)
+{
+    uint32_t W = S->cam.width, H = S->cam.height;
+    size_t np = (size_t)W * H;
+    float *img = (float *)malloc(np * 12u);
+    double t_m[5][2], f1_u4 = NAN;
+    fovpt_stats st_m[5][2], st;
+    fovpt_config c;
+    int m;
+    for (m = 0; m <= 4; ++m) { /* default budgets, with and without the denoiser */
+        double ps[5], fl, fl1, t;
+        char mname[64];
+        int d;
+        for (d = 0; d < 2; ++d) {
+            method_cfg(&c, m);
+            g_dn = d;
+            t = render(S, &c, g, img, &st, 1);
+            g_dn = 0;
+            psnr_fields(img, ref, ecc, np, ps);
+            flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+            snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_dn" : "");
+            if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
+            t_m[m][d] = t; /* the pilots of the equal-time rows, each its own */
+            st_m[m][d] = st;
+            if (m == 0 && !d) f1_u4 = ps[0];
+            dn_side_row(side, nm, mname, gz, "default", ps, fl, fl1, t, d ? g_dn_ms : 0.0);
+            printf("  %-20s %8.1f ms (denoise %5.1f) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f (f1 %.4f)\n", mname, t,
+                   d ? g_dn_ms : 0.0, ps[0], ps[1], ps[2], ps[3], ps[4], fl, fl1);
+        }
+    }
+    for (m = 2; m <= 4; ++m) { /* equal time with uniform4 (no denoiser), the denoiser's cost counted */
+        int fov_only;
+        for (fov_only = 0; fov_only < (m == 4 ? 1 : 2); ++fov_only) {
+            double ps[5], fl, fl1, t;
+            char mname[64];
+            int d;
+            for (d = 0; d < 2; ++d) {
+                g_dn = d;
+                t = eqtime_render(S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
+                g_dn = 0;
+                psnr_fields(img, ref, ecc, np, ps);
+                flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+                snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_dn" : "");
+                if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
+                dn_side_row(side, nm, mname, gz, "eqtime_uniform4", ps, fl, fl1, t, d ? g_dn_ms : 0.0);
+                printf("  %-20s at uniform4's time (%.1f ms): %8.1f ms, fovea spp %u, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f"
+                       " (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3], ps[4], fl, f1_u4, ps[0] - f1_u4);
+            }
+        }
+    }
+    fflush(csv);
+    fflush(side);
+    free(img);
+}
+
+/* bilinear sample of img (W x H x 3) at continuous pixel point (x, y); 0 outside */
+static int bilin(const float *img, uint32_t W, uint32_t H, float x, float y, float o[3])
+{
+    int ix, iy, k;
+    float fx, fy;
+    x -= 0.5f; y -= 0.5f;
+    if (!(x >= 0.0f && y >= 0.0f && x <= (float)W - 1.0f && y <= (float)H - 1.0f)) return 0;
+    ix = (int)x; iy = (int)y;
+    if (ix >= (int)W - 1) ix = (int)W - 2;
+    if (iy >= (int)H - 1) iy = (int)H - 2;
+    fx = x - (float)ix; fy = y - (float)iy;
+    for (k = 0; k < 3; ++k) {
+        const float *p = img + 3 * ((size_t)iy * W + (size_t)ix) + k;
+        o[k] = (1 - fx) * (1 - fy) * p[0] + fx * (1 - fy) * p[3] + (1 - fx) * fy * p[3 * W] + fx * fy * p[3 * W + 3];
+    }
+    return 1;
+}
+
+/* flicker of one method over DN_TF frames (moving 0/1); dn: with the denoiser (history kept) */
+static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int moving, int dn_on, const float *ecc, const float *ref,
+                          double ps[5])
+{
+    uint32_t W = S->cam.width, H = S->cam.height, f, x, y;
+    size_t np = (size_t)W * H, n = 0, dnb = 0, cnt = 0;
+    void *mem, *dmem;
+    fovpt_ctx ctx;
+    fovpt_output out;
+    fovpt_guide gd;
+    fovpt_denoise dn;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fovpt_camera cam, prev;
+    float *noisy = (float *)malloc(np * 12u), *gb = (float *)malloc(np * 36u), *cur = (float *)malloc(np * 12u),
+          *old = (float *)malloc(np * 12u);
+    double sum = 0.0;
+    dc.width = W; dc.height = H;
+    fovpt_memory_size(c, &S->cam, &n);
+    fovpt_denoise_size(&dc, &dnb);
+    mem = malloc(n + 16u);
+    dmem = malloc(dnb);
+    fovpt_init(&ctx, c, &S->scene, &S->cam, g, mem, n);
+    fovpt_denoise_init(&dn, &dc, dmem, dnb);
+    fovpt_guide_init(&gd);
+    gd.albedo = gb; gd.normal = gb + 3u * np; gd.depth = gb + 6u * np; gd.spp = gb + 7u * np; gd.var = gb + 8u * np;
+    prev = S->cam;
+    for (f = 0; f < DN_TF; ++f) {
+        turn_cam(&S->cam, moving ? 0.1f * (float)f : 0.0f, &cam);
+        if (f > 0) fovpt_set_view(&ctx, &cam, g);
+        fovpt_output_init(&out);
+        out.rgb = dn_on ? noisy : cur;
+        if (dn_on) {
+            fovpt_render_guide(&ctx, f, &out, &gd, NULL);
+            fovpt_denoise_frame(&dn, &cam, g, noisy, 0, &gd);
+            out.rgb = cur;
+            fovpt_denoise_run(&dn, &out);
+        } else {
+            fovpt_render(&ctx, f, &out, NULL);
+        }
+        if (f >= 2) {
+            for (y = 0; y < H; ++y)
+                for (x = 0; x < W; ++x) {
+                    size_t i = (size_t)y * W + x;
+                    float o[3], p[3], d[3];
+                    int k;
+                    if (ecc[i] < 12.1f) continue;
+                    /* the previous view's pixel that sees this pixel's direction */
+                    fovpt_camera_ray(&cam, (float)x + 0.5f, (float)y + 0.5f, o, d);
+                    for (k = 0; k < 3; ++k) p[k] = o[k] + d[k];
+                    {
+                        fov_gaze q;
+                        float v[3];
+                        if (fovpt_gaze_from_point(&prev, p, &q) != FOV_OK || !bilin(old, W, H, q.x, q.y, v)) continue;
+                        for (k = 0; k < 3; ++k) sum += fabs(srgb((double)cur[3 * i + (size_t)k]) - srgb((double)v[k]));
+                        cnt += 3;
+                    }
+                }
+        }
+        memcpy(old, cur, np * 12u);
+        prev = cam;
+    }
+    if (ref) psnr_fields(cur, ref, ecc, np, ps); /* the last frame of the static view */
+    free(noisy); free(gb); free(cur); free(old); free(mem); free(dmem);
+    return cnt ? sum / (double)cnt : NAN;
+}
+
+static void flicker_rows(FILE *fc, pt_scene *S, const char *nm, fov_gaze g, const float *ecc, const float *ref)
+{
+    static const int ms[3] = { 0, 2, 4 };
+    int i, d;
+    for (i = 0; i < 3; ++i)
+        for (d = 0; d < 2; ++d) {
+            fovpt_config c;
+            double fs, fm, ps[5];
+            method_cfg(&c, ms[i]);
+            fs = flicker_seq(S, &c, g, 0, d, ecc, ref, ps);
+            fm = flicker_seq(S, &c, g, 1, d, ecc, NULL, ps);
+            fprintf(fc, "%s,%s%s,%.5f,%.5f,%.2f,%.2f\n", nm, names[ms[i]], d ? "_dn" : "", fs, fm, ps[0], ps[4]);
+            printf("  flicker %-12s%s static %.5f moving %.5f; static view, frame %u: PSNR f1 %.2f all %.2f\n", names[ms[i]], d ? "_dn" : "   ", fs, fm,
+                   DN_TF, ps[0], ps[4]);
+        }
+    fflush(fc);
+}
+
+/* --denoise: only the _dn rows (and their undenoised twins in pt_denoise.csv) and pt_flicker.csv */
+static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t gt_spp, int quick, int threads)
+{
+    char spath[1024], fpath[1024];
+    const char *sl = strrchr(out_path, '/');
+    FILE *csv = fopen(out_path, "w"), *side, *fc;
+    int sc, gi;
+    snprintf(spath, sizeof spath, "%.*spt_denoise.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    snprintf(fpath, sizeof fpath, "%.*spt_flicker.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    side = fopen(spath, "w");
+    fc = fopen(fpath, "w");
+    if (!csv || !side || !fc) { fprintf(stderr, "cannot write %s / %s / %s\n", out_path, spath, fpath); return; }
+    fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
+    fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
+    fprintf(fc, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
+    for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
+        pt_scene S;
+        size_t np = (size_t)W * H;
+        float *ref = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u), *ecc = (float *)malloc(np * 4u);
+        if (quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) continue;
+        if (g_dn_scene >= 0 && sc != g_dn_scene) continue;
+        if (pt_scene_make(&S, sc) != 0) continue;
+        S.cam.width = W; S.cam.height = H;
+        for (gi = 0; gi < 2; ++gi) {
+            fov_gaze g;
+            fov_ecc_model em;
+            fovpt_config c;
+            fovpt_stats st;
+            double t_u4;
+            uint32_t x, y;
+            g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
+            g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
+            fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
+            for (y = 0; y < H; ++y)
+                for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
+            render(&S, &c, g, ref, &st, threads);
+            method_cfg(&c, 0);
+            t_u4 = render(&S, &c, g, img, &st, 1);
+            printf("%s %s (uniform4 %.1f ms):\n", pt_scene_names[sc], gi ? "corner" : "centre", t_u4);
+            dn_rows(csv, side, &S, pt_scene_names[sc], gi ? "corner" : "centre", g, ref, ecc, t_u4);
+            if (!gi) flicker_rows(fc, &S, pt_scene_names[sc], g, ecc, ref);
+        }
+        pt_scene_free(&S);
+        free(ref); free(img); free(ecc);
+    }
+    fclose(csv); fclose(side); fclose(fc);
+    printf("wrote %s, %s, %s\n", out_path, spath, fpath);
+}
+
 /* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
 static void usage(FILE *f)
 {
@@ -803,6 +1111,9 @@ static void usage(FILE *f)
           "  --lp                only the lp_ rows (fovlp + fovpt) and the rows they sit beside\n"
           "                      (uniform4, layers, layers_diam, zones, selective default, the\n"
           "                      eqtime_uniform4 rows), to FILE (default build/pt_lp.csv)\n"
+          "  --denoise           only the denoised (_dn) rows: FILE (default\n"
+          "                      bench/results/pt_dn.csv), pt_denoise.csv and pt_flicker.csv beside it\n"
+          "  --scene N           with --denoise: scene N only (0 cornell .. 4 interior)\n"
           "  --w W, --h H        image size (default 320 x 240)\n"
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
           "  --threads N         render threads (default 2)\n"
@@ -813,9 +1124,9 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, out_set = 0, threads = 2, i, sc, gi;
+    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, out_set = 0, threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
-    FILE *csv;
+    FILE *csv, *dn_side = NULL, *dn_flicker = NULL;
     double t_start = now_ms();
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
@@ -824,6 +1135,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--throughput")) only_tp = 1;
         else if (!strcmp(argv[i], "--temporal")) only_temporal = 1;
         else if (!strcmp(argv[i], "--lp")) only_lp = 1;
+        else if (!strcmp(argv[i], "--denoise")) only_dn = 1;
+        else if (!strcmp(argv[i], "--scene") && i + 1 < argc) g_dn_scene = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--fovea-spp")) { fovea_spp_curve(); return 0; }
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
@@ -835,6 +1148,12 @@ int main(int argc, char **argv)
     if (only_lp && !out_set) out_path = "build/pt_lp.csv"; /* pt.csv is left alone */
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
+    if (only_dn) {
+        if (!strcmp(out_path, "bench/results/pt.csv")) out_path = "bench/results/pt_dn.csv";
+        denoise_only(out_path, W, H, gt_spp, quick, threads);
+        printf("(%.0f s)\n", (now_ms() - t_start) * 1e-3);
+        return 0;
+    }
     if (only_temporal) { /* pt_temporal.csv beside --out only */
         char tpath[1024];
         const char *sl = strrchr(out_path, '/');
@@ -845,6 +1164,15 @@ int main(int argc, char **argv)
     }
     csv = fopen(out_path, "w");
     if (!csv) { fprintf(stderr, "cannot write %s\n", out_path); return 1; }
+    {
+        char p1[1024], p2[1024];
+        const char *sl = strrchr(out_path, '/');
+        snprintf(p1, sizeof p1, "%.*spt_denoise.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+        snprintf(p2, sizeof p2, "%.*spt_flicker.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+        if (!only_tp && !only_lp) { dn_side = fopen(p1, "w"); dn_flicker = fopen(p2, "w"); }
+        if (dn_side) fprintf(dn_side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
+        if (dn_flicker) fprintf(dn_flicker, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
+    }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
     printf("fovpt benchmark: %ux%u, ground truth %u spp (path) / 64 spp (Whitted), one thread per method\n", W, H, gt_spp);
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
@@ -943,6 +1271,9 @@ int main(int argc, char **argv)
                 printf("  uniform_eqt(%s, %u spp) %8.1f ms (method %.1f ms) PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f\n", names[m], spp, t,
                        t_m[m], ps[0], ps[1], ps[2], ps[3], ps[4]);
             }
+            /* the denoised rows (_dn) and, gaze at the centre, the flicker */
+            if (dn_side) dn_rows(csv, dn_side, &S, nm, gz, g, ref_p, ecc, t_u4);
+            if (dn_flicker && !gi) flicker_rows(dn_flicker, &S, nm, g, ecc, ref_p);
             fflush(csv);
         }
         pt_scene_free(&S);
@@ -956,6 +1287,8 @@ int main(int argc, char **argv)
         temporal_rows(tpath, W, H, quick, threads);
     }
     fclose(csv);
+    if (dn_side) fclose(dn_side);
+    if (dn_flicker) fclose(dn_flicker);
     printf("wrote %s (%.0f s)\n", out_path, (now_ms() - t_start) * 1e-3);
     /* plots next to the CSV: pt_<scene>.png, speed-up over uniform4 against fovea PSNR (f1)
        and near-periphery PSNR (f4), every method, both gazes */

@@ -30,9 +30,9 @@ else
 fi
 if $CC -std=c99 -O2 $W -I. examples/pt_basic.c -lm -o build/examples/pt_basic; then ok "pt_basic builds with $W"; else bad "pt_basic build"; fi
 if [ -x build/examples/pt_basic ] && build/examples/pt_basic > build/examples/pt_basic.ppm 2>/dev/null \
-   && [ "$(head -c 15 build/examples/pt_basic.ppm)" = "$(printf 'P6\n320 240\n255')" ] \
-   && [ "$(stat -c %s build/examples/pt_basic.ppm)" -eq $((15 + 320 * 240 * 3)) ]; then
-    ok "pt_basic writes a 320x240 PPM"
+   && [ "$(head -c 15 build/examples/pt_basic.ppm)" = "$(printf 'P6\n640 360\n255')" ] \
+   && [ "$(stat -c %s build/examples/pt_basic.ppm)" -eq $((15 + 640 * 360 * 3)) ]; then
+    ok "pt_basic writes a 640x360 PPM (denoised)"
 else
     bad "pt_basic output"
 fi

@@ -1,0 +1,596 @@
+/*
+ * test_fovpt_denoise.c - fovpt's guide buffers (fovpt_trace_rows_guide) and its foveated
+ * denoiser (fovpt_denoise_*: temporal accumulation with reprojection, then the edge-avoiding
+ * a-trous wavelet filter of Dammertz, Sewtz, Hanika, Lensch, "Edge-Avoiding A-Trous Wavelet
+ * Transform for fast Global Illumination Filtering", HPG 2010, with the variance guidance of
+ * Schied et al., "Spatiotemporal Variance-Guided Filtering", HPG 2017).
+ *
+ * Build and run from the repository root (tests/run_all.sh builds it three ways):
+ *   gcc -std=c99 -O2 -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
+ *       -I. -Itests/common tests/test_fovpt_denoise.c -lm -o build/tests/t
+ *
+ * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
+ * Expected values are analytic: a closed box whose walls emit E and do not scatter shows E
+ * everywhere; a furnace box (albedo 0.5, emission 0.5, closed) has radiance 0.5 / (1 - 0.5) = 1
+ * up to the bounce limit (0.5^41 with max_depth 40); a two-region image keeps its two values
+ * when a guide separates them; a static camera blends frame k with weight max(alpha, 1/k)
+ * (the running mean for the first frames); a camera moved by exactly one pixel over a
+ * fronto-parallel plane reads its history one pixel over.
+ */
+#define FOVPT_IMPLEMENTATION
+#include "fovpt.h"
+#include "fovcheck.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define N fovcheck_name
+
+static int g_log_count;
+static int32_t g_log_code;
+static void logger(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line,
+                   void *user)
+{
+    (void)tag; (void)level; (void)line; (void)user; (void)msg;
+    g_log_count++;
+    g_log_code = code;
+}
+
+typedef struct img {
+    uint32_t w, h;
+    float *rgb, *alb, *nrm, *dep, *spp, *var;
+    fovpt_guide g;
+} img;
+static void img_alloc(img *m, uint32_t w, uint32_t h)
+{
+    size_t n = (size_t)w * h;
+    m->w = w; m->h = h;
+    m->rgb = (float *)calloc(n * 3u, sizeof(float));
+    m->alb = (float *)calloc(n * 3u, sizeof(float));
+    m->nrm = (float *)calloc(n * 3u, sizeof(float));
+    m->dep = (float *)calloc(n, sizeof(float));
+    m->spp = (float *)calloc(n, sizeof(float));
+    m->var = (float *)calloc(n, sizeof(float));
+    fovpt_guide_init(&m->g);
+    m->g.albedo = m->alb; m->g.normal = m->nrm; m->g.depth = m->dep;
+    m->g.spp = m->spp; m->g.var = m->var;
+}
+static void img_free(img *m)
+{
+    free(m->rgb); free(m->alb); free(m->nrm); free(m->dep); free(m->spp); free(m->var);
+}
+
+/* a closed axis-aligned box [-1,1]^3 of six quads (camera inside), every wall one material */
+static int box_scene(fovpt_scene *s, void **mem, const fovpt_material *m)
+{
+    static fovpt_shape sh[6];
+    static const float c[6][3] = { { -1, -1, -1 }, { -1, -1, 1 }, { -1, -1, -1 },
+                                   { -1, 1, -1 }, { -1, -1, -1 }, { 1, -1, -1 } };
+    static const float u[6][3] = { { 2, 0, 0 }, { 0, 2, 0 }, { 0, 0, 2 },
+                                   { 2, 0, 0 }, { 0, 2, 0 }, { 0, 0, 2 } };
+    static const float v[6][3] = { { 0, 2, 0 }, { 2, 0, 0 }, { 2, 0, 0 },
+                                   { 0, 0, 2 }, { 0, 0, 2 }, { 0, 2, 0 } };
+    fovpt_scene_desc d;
+    size_t b = 0;
+    int i;
+    for (i = 0; i < 6; ++i) fovpt_shape_quad(&sh[i], c[i], u[i], v[i], 0);
+    fovpt_scene_desc_init(&d);
+    d.shapes = sh; d.num_shapes = 6; d.materials = m; d.num_materials = 1;
+    if (fovpt_scene_size(&d, &b) != FOV_OK) return 0;
+    *mem = malloc(b + 16u);
+    return fovpt_scene_build(s, &d, *mem, b) == FOV_OK;
+}
+static void box_cam(fovpt_camera *cam, uint32_t w, uint32_t h)
+{
+    fovpt_camera_init(cam, w, h);
+    cam->pos[0] = 0.1f; cam->pos[1] = 0.2f; cam->pos[2] = 0.7f;
+    cam->target[0] = -0.6f; cam->target[1] = -0.4f; cam->target[2] = -1.0f; /* a corner in view */
+    cam->fov_y_deg = 90.0f;
+}
+
+/* renders frame f of the box with method / spp into m (image + guides) */
+static int box_render(const fovpt_scene *s, const fovpt_camera *cam, uint32_t method, uint32_t spp,
+                      uint32_t f, img *m, fovpt_stats *st)
+{
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    size_t b = 0;
+    void *mem;
+    fov_gaze g;
+    int ok;
+    c.method = method; c.spp = spp; c.max_depth = 40;
+    g.x = 0.5f * (float)cam->width; g.y = 0.5f * (float)cam->height;
+    if (fovpt_memory_size(&c, cam, &b) != FOV_OK) return 0;
+    mem = malloc(b + 16u);
+    ok = fovpt_init(&ctx, &c, s, cam, g, mem, b) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = m->rgb;
+    ok = ok && fovpt_render_guide(&ctx, f, &o, &m->g, st) == FOV_OK;
+    free(mem);
+    return ok;
+}
+
+static int dn_make(fovpt_denoise *dn, fovpt_denoise_cfg *c, void **mem)
+{
+    size_t b = 0;
+    if (fovpt_denoise_size(c, &b) != FOV_OK) return 0;
+    *mem = malloc(b);
+    return fovpt_denoise_init(dn, c, *mem, b) == FOV_OK;
+}
+
+/* a constant-radiance scene (walls emit E, albedo 0) stays constant through the denoiser */
+static void t_constant(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    void *sm = NULL, *dm = NULL;
+    img a;
+    float *out;
+    uint32_t meth, f;
+    fovpt_material_init(&m);
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.0f;
+    m.emission[0] = 0.3f; m.emission[1] = 0.5f; m.emission[2] = 0.7f;
+    if (!check(box_scene(&s, &sm, &m), "constant_scene", "build failed")) return;
+    box_cam(&cam, 48, 36);
+    img_alloc(&a, 48, 36);
+    out = (float *)malloc(48u * 36u * 12u);
+    for (meth = 0; meth < 2; ++meth) {
+        fovpt_denoise dn;
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 24.0f, 18.0f };
+        double worst = 0.0;
+        int ok = 1;
+        dc.width = 48; dc.height = 36;
+        ok = dn_make(&dn, &dc, &dm);
+        for (f = 0; f < 3 && ok; ++f) {
+            fovpt_output o;
+            size_t i;
+            int k;
+            ok = box_render(&s, &cam, meth ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_UNIFORM, 2, f, &a, NULL);
+            fovpt_output_init(&o); o.rgb = out;
+            ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK;
+            ok = ok && fovpt_denoise_run(&dn, &o) == FOV_OK;
+            for (i = 0; i < 48u * 36u; ++i)
+                for (k = 0; k < 3; ++k) {
+                    double d = fabs((double)out[3 * i + (size_t)k] - (double)m.emission[k]);
+                    if (d > worst) worst = d;
+                }
+        }
+        check(ok && worst <= 1e-5, N("constant_stays_constant_%s", meth ? "layers" : "uniform"),
+              "worst deviation %g from E", worst);
+        free(dm);
+    }
+    /* the guides of that scene: depth is the distance to a wall, normals unit and facing */
+    {
+        double dworst = 0.0, nworst = 0.0;
+        uint32_t x, y;
+        box_render(&s, &cam, FOVPT_METHOD_UNIFORM, 1, 0, &a, NULL);
+        for (y = 0; y < 36; y += 5)
+            for (x = 0; x < 48; x += 5) {
+                size_t i = (size_t)y * 48u + x;
+                float o[3], d[3], tmin = 1e30f, t;
+                int k;
+                double nl = 0.0;
+                fovpt_camera_ray(&cam, (float)x + 0.5f, (float)y + 0.5f, o, d);
+                for (k = 0; k < 3; ++k) { /* the nearest wall along the centre ray */
+                    t = d[k] > 0.0f ? (1.0f - o[k]) / d[k] : (-1.0f - o[k]) / d[k];
+                    if (t < tmin) tmin = t;
+                }
+                /* the samples jitter inside the pixel: within a pixel's spread of the centre's */
+                if (fabs((double)a.dep[i] - (double)tmin) > 0.05 * (double)tmin)
+                    dworst = fmax(dworst, fabs((double)a.dep[i] - (double)tmin) / (double)tmin);
+                for (k = 0; k < 3; ++k) nl += (double)a.nrm[3 * i + (size_t)k] * (double)a.nrm[3 * i + (size_t)k];
+                nworst = fmax(nworst, fabs(sqrt(nl) - 1.0));
+            }
+        check(dworst == 0.0, "guide_depth_is_ray_distance", "relative error %g", dworst);
+        check(nworst < 1e-5, "guide_normal_unit", "|n| - 1 up to %g", nworst);
+    }
+    img_free(&a);
+    free(out);
+    free(sm);
+}
+
+/* furnace: a closed box of albedo 0.5 emitting 0.5: radiance 1; the denoiser keeps the mean.
+   The stated tolerance: 2 % with the default luminance stop (phi_lum 8; the stop down-weights
+   bright outliers of the heavy-tailed path-tracing noise, a known bias: 2.5 % at Schied et
+   al. 2017's phi_lum 4), 1 % with phi_lum 16. */
+static void t_furnace(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    void *sm = NULL, *dm = NULL;
+    img a;
+    float *out;
+    size_t n = 64u * 48u;
+    int pass;
+    fovpt_material_init(&m);
+    m.albedo[0] = m.albedo[1] = m.albedo[2] = 0.5f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.5f;
+    if (!check(box_scene(&s, &sm, &m), "furnace_scene", "build failed")) return;
+    box_cam(&cam, 64, 48);
+    img_alloc(&a, 64, 48);
+    out = (float *)malloc(n * 12u);
+    for (pass = 0; pass < 2; ++pass) {
+        fovpt_denoise dn;
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 32.0f, 24.0f };
+        fovpt_output o;
+        double mi = 0.0, mo = 0.0, ei = 0.0, eo = 0.0, tol = pass ? 0.01 : 0.02;
+        size_t i;
+        int k, ok;
+        dc.width = 64; dc.height = 48;
+        if (pass) dc.phi_lum = 16.0f;
+        ok = dn_make(&dn, &dc, &dm) && box_render(&s, &cam, FOVPT_METHOD_UNIFORM, 2, 0, &a, NULL);
+        fovpt_output_init(&o); o.rgb = out;
+        ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+        for (i = 0; i < n; ++i)
+            for (k = 0; k < 3; ++k) {
+                double vi = a.rgb[3 * i + (size_t)k], vo = out[3 * i + (size_t)k];
+                mi += vi; mo += vo;
+                ei += (vi - 1.0) * (vi - 1.0); eo += (vo - 1.0) * (vo - 1.0);
+            }
+        mi /= (double)(3u * n); mo /= (double)(3u * n);
+        ei = sqrt(ei / (double)(3u * n)); eo = sqrt(eo / (double)(3u * n));
+        if (!pass) check(ok && fabs(mi - 1.0) < 0.03, "furnace_input_mean_1", "input mean %.4f (rmse %.3f)", mi, ei);
+        fovcheck_info("furnace phi_lum %d: mean %.4f -> %.4f, rmse %.4f -> %.4f", pass ? 16 : 8, mi, mo, ei, eo);
+        check(ok && fabs(mo - mi) <= tol * mi, N("furnace_energy_phi_lum_%d", pass ? 16 : 8), "mean %.4f -> %.4f (tolerance %.0f %%)", mi, mo, 100.0 * tol);
+        check(ok && eo < 0.5 * ei, N("furnace_noise_halved_phi_lum_%d", pass ? 16 : 8), "rmse against 1: %.4f -> %.4f", ei, eo);
+        free(dm);
+    }
+    free(out); img_free(&a); free(sm);
+}
+
+/* an analytic two-region image: a guide edge keeps both values, no guide edge blurs */
+static void t_edges(void)
+{
+    const uint32_t W = 64, H = 32;
+    static const char *const what[4] = { "albedo", "normal", "depth", "none" };
+    img a;
+    fovpt_camera cam;
+    float *out = (float *)malloc((size_t)W * H * 12u);
+    int e;
+    img_alloc(&a, W, H);
+    fovpt_camera_init(&cam, W, H);
+    for (e = 0; e < 4; ++e) {
+        fovpt_denoise dn;
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 32.0f, 16.0f };
+        fovpt_output o;
+        void *dm = NULL;
+        uint32_t x, y;
+        double worst = 0.0;
+        int ok;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                size_t i = (size_t)y * W + x;
+                int right = x >= W / 2;
+                int k;
+                for (k = 0; k < 3; ++k) {
+                    a.rgb[3 * i + (size_t)k] = right ? 0.8f : 0.2f;
+                    a.alb[3 * i + (size_t)k] = (e == 0 && right) ? 0.8f : 0.2f;
+                    a.nrm[3 * i + (size_t)k] = 0.0f;
+                }
+                a.nrm[3 * i + ((e == 1 && right) ? 0u : 2u)] = 1.0f;
+                a.dep[i] = (e == 2 && right) ? 2.0f : 1.0f;
+                a.spp[i] = 1.0f;
+                a.var[i] = 1.0f; /* a large variance: the luminance stop lets everything through */
+            }
+        dc.width = W; dc.height = H;
+        dc.fovea_step = 65536.0f; /* every pass at every pixel */
+        dc.no_temporal = 1;
+        ok = dn_make(&dn, &dc, &dm);
+        fovpt_output_init(&o); o.rgb = out;
+        ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                double want = x >= W / 2 ? 0.8 : 0.2, d = fabs((double)out[3 * ((size_t)y * W + x)] - want);
+                if (d > worst) worst = d;
+            }
+        if (e < 3) check(ok && worst <= 1e-3, N("edge_%s_preserved", what[e]), "worst %g from the analytic value", worst);
+        else check(ok && worst > 0.05, "edge_without_guide_is_blurred", "worst %g (the filter must reach across)", worst);
+        free(dm);
+    }
+    free(out);
+    img_free(&a);
+}
+
+/* the ray distance to the plane z = -zp of a camera at the origin looking down -z */
+static float plane_dist(const fovpt_camera *cam, uint32_t x, uint32_t y, float zp)
+{
+    float o[3], d[3];
+    fovpt_camera_ray(cam, (float)x + 0.5f, (float)y + 0.5f, o, d);
+    return (zp + o[2]) / -d[2];
+}
+
+/* reprojection: static camera exact (running mean), disocclusion rejected, one-pixel pan */
+static void t_reproject(void)
+{
+    const uint32_t W = 40, H = 30;
+    size_t n = (size_t)W * H, i;
+    img a;
+    fovpt_camera cam, cam2;
+    fovpt_denoise dn;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fov_gaze g = { 20.0f, 15.0f };
+    fovpt_output o;
+    float *A = (float *)malloc(n * 12u), *B = (float *)malloc(n * 12u), *C = (float *)malloc(n * 12u);
+    float *out = (float *)malloc(n * 12u);
+    void *dm = NULL;
+    double w1 = 0.0, w2 = 0.0, w3 = 0.0, w4 = 0.0;
+    uint32_t x, y, s = 12345u;
+    int ok;
+    img_alloc(&a, W, H);
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[0] = cam.pos[1] = cam.pos[2] = 0.0f;
+    cam.target[0] = cam.target[1] = 0.0f; cam.target[2] = -1.0f;
+    for (i = 0; i < 3u * n; ++i) {
+        s = s * 1664525u + 1013904223u; A[i] = (float)(s >> 8) / 16777216.0f;
+        s = s * 1664525u + 1013904223u; B[i] = (float)(s >> 8) / 16777216.0f;
+        s = s * 1664525u + 1013904223u; C[i] = (float)(s >> 8) / 16777216.0f;
+    }
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            i = (size_t)y * W + x;
+            a.dep[i] = plane_dist(&cam, x, y, 3.0f);
+            a.nrm[3 * i + 2] = 1.0f;
+        }
+    a.g.var = NULL; a.g.spp = NULL; a.g.albedo = NULL;
+    dc.width = W; dc.height = H; dc.no_filter = 1;
+    ok = dn_make(&dn, &dc, &dm);
+    fovpt_output_init(&o); o.rgb = out;
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, A, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, B, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (i = 0; i < 3u * n; ++i) w1 = fmax(w1, fabs((double)out[i] - 0.5 * ((double)A[i] + (double)B[i])));
+    check(ok && w1 <= 1e-6, "static_history_maps_to_itself", "frame 2 differs from (A + B) / 2 by %g", w1);
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, C, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (i = 0; i < 3u * n; ++i) w2 = fmax(w2, fabs((double)out[i] - ((double)A[i] + (double)B[i] + (double)C[i]) / 3.0));
+    check(ok && w2 <= 1e-6, "static_running_mean_frame3", "frame 3 differs from (A + B + C) / 3 by %g", w2);
+    /* disocclusion: every depth doubled -> no history, the frame alone */
+    for (i = 0; i < n; ++i) a.dep[i] *= 2.0f;
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, A, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (i = 0; i < 3u * n; ++i) w3 = fmax(w3, fabs((double)out[i] - (double)A[i]));
+    check(ok && w3 <= 1e-6, "depth_mismatch_rejects_history", "differs from the frame by %g", w3);
+    free(dm);
+    /* a pan by exactly one pixel: the plane z = -3, the camera moves +x by one pixel's width */
+    ok = dn_make(&dn, &dc, &dm);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) a.dep[(size_t)y * W + x] = plane_dist(&cam, x, y, 3.0f);
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, A, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    cam2 = cam;
+    {
+        float px = 3.0f * 2.0f * tanf(30.0f * 3.14159265f / 180.0f) / (float)H; /* one pixel at z = 3 */
+        cam2.pos[0] += px; cam2.target[0] += px;
+    }
+    ok = ok && fovpt_denoise_frame(&dn, &cam2, g, B, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (y = 0; y < H; ++y)
+        for (x = 0; x + 1u < W; ++x) {
+            int k;
+            for (k = 0; k < 3; ++k) {
+                size_t p = 3 * ((size_t)y * W + x) + (size_t)k;
+                w4 = fmax(w4, fabs((double)out[p] - 0.5 * ((double)A[p + 3] + (double)B[p])));
+            }
+        }
+    check(ok && w4 <= 1e-3, "pan_one_pixel_reads_the_neighbour", "differs from (A[x+1] + B[x]) / 2 by %g", w4);
+    free(dm);
+    free(A); free(B); free(C); free(out);
+    img_free(&a);
+}
+
+/* the foveation: the same noise is filtered less at the gaze than in the periphery */
+static void t_foveation(void)
+{
+    const uint32_t W = 160, H = 120;
+    size_t n = (size_t)W * H, i;
+    img a;
+    fovpt_camera cam;
+    float *out = (float *)malloc(n * 12u);
+    uint32_t x, y, s = 777u;
+    int mode;
+    img_alloc(&a, W, H);
+    fovpt_camera_init(&cam, W, H);
+    for (mode = 0; mode < 2; ++mode) {
+        fovpt_denoise dn;
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 80.0f, 60.0f };
+        fovpt_output o;
+        void *dm = NULL;
+        double sf = 0.0, sp = 0.0;
+        size_t cf = 0, cp = 0;
+        int ok;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                double r = hypot((double)x + 0.5 - 80.0, (double)y + 0.5 - 60.0);
+                int k;
+                i = (size_t)y * W + x;
+                for (k = 0; k < 3; ++k) {
+                    s = s * 1664525u + 1013904223u;
+                    a.rgb[3 * i + (size_t)k] = 0.5f + 0.2f * ((float)(s >> 8) / 16777216.0f - 0.5f);
+                    a.alb[3 * i + (size_t)k] = 0.5f;
+                    a.nrm[3 * i + (size_t)k] = k == 2 ? 1.0f : 0.0f;
+                }
+                a.dep[i] = 1.0f;
+                a.var[i] = -1.0f;
+                /* mode 1: a layered density, 4 spp inside 20 px, 0.25 outside */
+                a.spp[i] = (mode == 0 || r < 20.0) ? 4.0f : 0.25f;
+            }
+        dc.width = W; dc.height = H; dc.no_temporal = 1;
+        if (mode == 0) dc.eye.quality = 8.0f; /* the eye's spacing passes a pixel at ~1 degree */
+        ok = dn_make(&dn, &dc, &dm);
+        fovpt_output_init(&o); o.rgb = out;
+        ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+        for (y = 0; y < H; ++y)
+            for (x = 0; x < W; ++x) {
+                double r = hypot((double)x + 0.5 - 80.0, (double)y + 0.5 - 60.0), d;
+                i = (size_t)y * W + x;
+                if (x < 16 || y < 16 || x >= W - 16 || y >= H - 16) continue; /* no border */
+                d = (double)out[3 * i] - 0.5;
+                if (r < 8.0) { sf += d * d; cf++; }
+                else if (r > 40.0) { sp += d * d; cp++; }
+            }
+        sf = sqrt(sf / (double)cf); sp = sqrt(sp / (double)cp);
+        check(ok && sp < 0.6 * sf, N("fovea_filtered_least_%s", mode ? "density" : "eccentricity"),
+              "residual noise fovea %.5f, periphery %.5f", sf, sp);
+        free(dm);
+    }
+    free(out);
+    img_free(&a);
+}
+
+static void t_errors(void)
+{
+    fovpt_denoise dn;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default(), r;
+    fovpt_camera cam;
+    fovpt_output o;
+    fov_gaze g = { 4.0f, 4.0f }, bad = { NAN, 0.0f };
+    img a;
+    size_t b = 0;
+    uint64_t *mem;
+    img_alloc(&a, 8, 8);
+    fovpt_camera_init(&cam, 8, 8);
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    dc.logger.func = logger;
+    check(fovpt_denoise_size(&dc, &b) == FOV_ERR_INVALID_ARG, "size_zero", "width 0 accepted");
+    dc.width = 8; dc.height = 8;
+    check(fovpt_denoise_size(NULL, &b) == FOV_ERR_NULL && fovpt_denoise_size(&dc, NULL) == FOV_ERR_NULL, "size_null", "NULL accepted");
+    r = dc; r.width = FOVPT_MAX_DIM + 1u;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_LIMIT, "size_limit", "over FOVPT_MAX_DIM accepted");
+    r = dc; r.levels = FOVPT_DN_MAX_LEVELS + 1u;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "levels_cap", "levels above the cap accepted");
+    r = dc; r.phi_lum = NAN;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_NOT_FINITE, "nan_field", "NaN accepted");
+    r = dc; r.alpha_fovea = 0.1f; r.alpha_periphery = 0.5f;
+    g_log_count = 0;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG && g_log_count == 1 && g_log_code == FOV_ERR_INVALID_ARG,
+          "alpha_order_logged", "alpha_periphery > alpha_fovea accepted or not logged");
+    check(fovpt_denoise_size(&dc, &b) == FOV_OK && b >= 8u * 8u * 132u, "size_ok", "%zu bytes", b);
+    mem = (uint64_t *)malloc(b + 8u);
+    check(fovpt_denoise_init(&dn, &dc, mem, b - 1u) == FOV_ERR_TOO_SMALL, "init_too_small", "accepted");
+    check(fovpt_denoise_init(&dn, &dc, (char *)mem + 4, b) == FOV_ERR_INVALID_ARG, "init_misaligned", "accepted");
+    check(fovpt_denoise_init(&dn, &dc, NULL, b) == FOV_ERR_NULL, "init_null_mem", "accepted");
+    check(fovpt_denoise_init(&dn, &dc, mem, b) == FOV_OK, "init_ok", "failed");
+    check(fovpt_denoise_temporal_rows(&dn, 0, 8) == FOV_ERR_INVALID_ARG, "rows_before_frame", "accepted");
+    check(fovpt_denoise_frame(&dn, &cam, g, NULL, 0, &a.g) == FOV_ERR_NULL, "frame_null_rgb", "accepted");
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, NULL) == FOV_ERR_NULL, "frame_null_guide", "accepted");
+    a.g.depth = NULL;
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_ERR_NULL, "frame_no_depth", "accepted");
+    a.g.depth = a.dep;
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 23, &a.g) == FOV_ERR_INVALID_ARG, "frame_rgb_stride", "stride 23 < 24 accepted");
+    a.g.normal_stride = 5;
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_ERR_INVALID_ARG, "frame_normal_stride", "accepted");
+    a.g.normal_stride = 0;
+    check(fovpt_denoise_frame(&dn, &cam, bad, a.rgb, 0, &a.g) == FOV_ERR_NOT_FINITE, "frame_nan_gaze", "accepted");
+    cam.width = 9;
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_ERR_INVALID_ARG, "frame_size_mismatch", "accepted");
+    cam.width = 8;
+    cam.target[0] = cam.pos[0]; cam.target[1] = cam.pos[1]; cam.target[2] = cam.pos[2];
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_ERR_DEGENERATE, "frame_bad_camera", "accepted");
+    fovpt_camera_init(&cam, 8, 8);
+    check(fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK, "frame_ok", "failed");
+    check(fovpt_denoise_temporal_rows(&dn, 5, 9) == FOV_ERR_INVALID_ARG, "temporal_rows_range", "accepted");
+    check(fovpt_denoise_atrous_rows(&dn, fovpt_denoise_passes(&dn), 0, 8) == FOV_ERR_INVALID_ARG, "atrous_pass_range", "accepted");
+    check(fovpt_denoise_atrous_rows(&dn, 0, 3, 2) == FOV_ERR_INVALID_ARG, "atrous_rows_range", "accepted");
+    o.rgb_stride = 10;
+    check(fovpt_denoise_resolve_rows(&dn, 0, 8, &o) == FOV_ERR_INVALID_ARG, "resolve_stride", "accepted");
+    check(fovpt_denoise_resolve_rows(&dn, 0, 8, NULL) == FOV_ERR_NULL, "resolve_null", "accepted");
+    o.rgb_stride = 0;
+    check(fovpt_denoise_run(&dn, &o) == FOV_OK, "run_ok", "failed");
+    check(fovpt_denoise_run(NULL, &o) == FOV_ERR_NULL && fovpt_denoise_reset(NULL) == FOV_ERR_NULL, "null_ctx", "accepted");
+    /* the guide trace rejects a short stride */
+    {
+        fovpt_material m;
+        fovpt_scene s;
+        void *sm = NULL, *cm;
+        fovpt_config c = fovpt_config_default();
+        fovpt_ctx ctx;
+        size_t cb = 0;
+        fovpt_material_init(&m);
+        if (box_scene(&s, &sm, &m)) {
+            box_cam(&cam, 8, 8);
+            fovpt_memory_size(&c, &cam, &cb);
+            cm = malloc(cb + 16u);
+            fovpt_init(&ctx, &c, &s, &cam, g, cm, cb);
+            a.g.depth_stride = 7;
+            check(fovpt_trace_rows_guide(&ctx, 0, 0, 8, &a.g, NULL) == FOV_ERR_INVALID_ARG, "guide_stride", "accepted");
+            a.g.depth_stride = 0;
+            check(fovpt_trace_rows_guide(&ctx, 0, 4, 2, &a.g, NULL) == FOV_ERR_INVALID_ARG, "guide_rows", "accepted");
+            check(fovpt_trace_rows_guide(NULL, 0, 0, 8, &a.g, NULL) == FOV_ERR_NULL, "guide_null_ctx", "accepted");
+            free(cm);
+        }
+        free(sm);
+    }
+    free(mem);
+    img_free(&a);
+}
+
+/* the guided trace traces the same samples as fovpt_trace_rows: the same image */
+static void t_same_image(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    void *sm = NULL;
+    uint32_t meth;
+    fovpt_material_init(&m);
+    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    if (!box_scene(&s, &sm, &m)) return;
+    box_cam(&cam, 40, 30);
+    for (meth = 0; meth < 3; ++meth) {
+        fovpt_config c = fovpt_config_default();
+        fovpt_ctx ctx;
+        fovpt_output o;
+        fovpt_stats s1, s2;
+        size_t b = 0;
+        void *mem;
+        fov_gaze g = { 20.0f, 15.0f };
+        img a;
+        float *ref = (float *)malloc(40u * 30u * 12u);
+        c.method = meth == 0 ? FOVPT_METHOD_UNIFORM : meth == 1 ? FOVPT_METHOD_LAYERS : FOVPT_METHOD_ZONES;
+        c.spp = 2;
+        img_alloc(&a, 40, 30);
+        fovpt_memory_size(&c, &cam, &b);
+        mem = malloc(b + 16u);
+        fovpt_init(&ctx, &c, &s, &cam, g, mem, b);
+        fovpt_output_init(&o);
+        o.rgb = ref;
+        fovpt_stats_init(&s1); fovpt_stats_init(&s2);
+        fovpt_render(&ctx, 3, &o, &s1);
+        o.rgb = a.rgb;
+        fovpt_render_guide(&ctx, 3, &o, &a.g, &s2);
+        check(memcmp(ref, a.rgb, 40u * 30u * 12u) == 0 && s1.samples == s2.samples,
+              N("guided_trace_same_image_%u", meth), "images or sample counts differ");
+        check(s2.rays == s2.camera_rays + s2.bounce_rays + s2.shadow_rays, N("guided_stats_sum_%u", meth), "rays not the sum");
+        if (meth == 0) {
+            size_t i, bad = 0;
+            for (i = 0; i < 40u * 30u; ++i) bad += a.spp[i] != 2.0f || !(a.var[i] >= 0.0f) || fabsf(a.alb[3 * i] - 0.6f) > 1e-6f;
+            check(bad == 0, "guide_uniform_spp_var_albedo", "%zu pixels with spp != 2, var < 0 or albedo != 0.6", bad);
+        } else {
+            /* the gaze pixel has the innermost layer's density, the corner a coarser one */
+            check(a.spp[15 * 40 + 20] > a.spp[0] && a.var[15 * 40 + 20] >= 0.0f && fabsf(a.var[0] + 1.0f) < 1e-6f,
+                  N("guide_layers_density_%u", meth), "gaze spp %g var %g, corner spp %g var %g", (double)a.spp[15 * 40 + 20],
+                  (double)a.var[15 * 40 + 20], (double)a.spp[0], (double)a.var[0]);
+        }
+        free(mem); free(ref);
+        img_free(&a);
+    }
+    free(sm);
+}
+
+int main(void)
+{
+    t_constant();
+    t_furnace();
+    t_edges();
+    t_reproject();
+    t_foveation();
+    t_errors();
+    t_same_image();
+    return fovcheck_summary();
+}
