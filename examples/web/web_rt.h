@@ -142,9 +142,14 @@ static float web__sin(float x)
 }
 static int web_orbit(const float base_pos[3], const float target[3], float angle, float out[3])
 {
-    float dx = base_pos[0] - target[0], dz = base_pos[2] - target[2], s, c;
+    const float pi = 3.14159265f, two_pi = 6.28318531f;
+    float dx = base_pos[0] - target[0], dz = base_pos[2] - target[2], s, c, a;
     if (!(angle >= -3.4e38f && angle <= 3.4e38f)) return -1;
-    s = web__sin(angle); c = web__sin(angle + 1.57079633f);
+    /* into [-pi, pi] first, so that a + pi/2 differs from a also for a huge angle (whose
+       reduction is meaningless when floats are wider apart than 2 pi: clamped then) */
+    a = angle - two_pi * web__floor(angle / two_pi + 0.5f);
+    a = a > pi ? pi : a < -pi ? -pi : a;
+    s = web__sin(a); c = web__sin(a + 1.57079633f);
     out[0] = target[0] + c * dx + s * dz;
     out[1] = base_pos[1];
     out[2] = target[2] - s * dx + c * dz;

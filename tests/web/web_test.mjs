@@ -109,6 +109,25 @@ if (build.status !== 0) {
 const sizes = JSON.parse(fs.readFileSync(path.join(OUT, 'sizes.json'), 'utf8'));
 pass('build', `module sizes (bytes) ${Object.entries(sizes).map(([k, v]) => `${k} ${v}`).join(', ')}`);
 
+// the glue's camera angle (from JS, unchecked there): NaN and infinities are rejected with an
+// error code, a huge finite angle renders (its reduction ends); the modules in node, 32x32
+if (!BENCH && !args.includes('--shot-only')) {
+    const mod = async (n) => (await WebAssembly.instantiate(fs.readFileSync(path.join(OUT, `${n}.wasm`)), {})).instance.exports;
+    const [sdf, lp, pt] = [await mod('sdf'), await mod('lp'), await mod('pt')];
+    const setup = [sdf.sdf_setup(0, 32, 32, 0), lp.lp_setup(0, 32, 32, 2, 1, 0), pt.pt_setup(32, 32, 1, 0)];
+    const calls = {
+        sdf: (a) => sdf.sdf_render(8, 16, 16, a, 0, 32, 0, 0), 'lp begin': (a) => lp.lp_begin(16, 16, a),
+        'lp reference': (a) => lp.lp_reference(a, 0, 32), pt: (a) => pt.pt_render(0, 16, 16, a, 0, 32, 0),
+    };
+    const bad = [];
+    for (const [name, f] of Object.entries(calls)) {
+        for (const a of [NaN, Infinity, -Infinity]) if (!(f(a) < 0)) bad.push(`${name}(${a}) not rejected`);
+        for (const a of [1e30, -3e38, 0.5]) { const r = f(a); if (r < 0) bad.push(`${name}(${a}) = ${r}`); }
+    }
+    if (setup.every((r) => r === 0) && bad.length === 0) pass('camera angle', 'NaN / inf rejected, 1e30 and -3e38 render (sdf, lp, pt glue)');
+    else fail('camera angle', `setup ${setup.join(' ')}; ${bad.join(', ')}`);
+}
+
 // ---- static server --------------------------------------------------------------------------
 const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.wasm': 'application/wasm', '.json': 'application/json' };
 const server = http.createServer((req, res) => {
