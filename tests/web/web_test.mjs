@@ -29,6 +29,10 @@
 //                off and on, 3 frames)
 //   gaze hooks   fovDemo.setGazeSource and setGazeFilter drive the gaze; the simulated eye
 //                tracker with 0 deg noise and 0 ms latency gives the mouse
+//   overlapping changes  setOptions and renderOnce called at once (as quick changes in the page
+//                do) run one after the other without errors; the animation resumes after them
+//   camera angle the glue (in node) rejects a NaN or infinite camera angle with an error code
+//                and renders with a huge one (its reduction ends)
 //   errors       no page errors and no console errors in any of the pages
 //   shown <case> the page shows a clear error (#error) without WebAssembly (removed by an init
 //                script), when a module fails to load (HTTP 404 for the .wasm files) and when a
