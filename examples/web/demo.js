@@ -131,6 +131,7 @@ function pageMain() {
     }
     if (typeof Worker !== 'function') {
         showError('This browser has no Web Workers: the demo cannot run.');
+        window.fovDemo = { ready, state: 'error' };
         readyReject(new Error('no Worker'));
         return;
     }
@@ -192,7 +193,6 @@ function pageMain() {
     }
 
     // ---- geometry, gaze ----
-    const resWH = () => opt.res.split('x').map((v) => parseInt(v, 10));
     let mouse = { x: 0.5, y: 0.5 }, gaze = { x: 0, y: 0 }, customSource = null, gazeFilter = null;
     const simQueue = [];
     function pxPerDeg() {
@@ -247,22 +247,39 @@ function pageMain() {
     });
 
     // ---- configuration ----
-    let configured = null, busy = false, paused = false;
+    // configured: what the workers are set up for ({ key, mode }), null while (re)configuring
+    // or after a failure (tick renders nothing then). Everything that calls the workers outside
+    // tick (configure, renderOnce, measure, restart) runs through serial(), one after the
+    // other, and holds a pause (pauses > 0: tick renders nothing) while it runs; userPaused is
+    // fovDemo.pause() / resume().
+    let configured = null, busy = false, pauses = 0, userPaused = false, chain = Promise.resolve();
     const SDF_METHOD = { cone_fov: 8, fipr: 7 }, PT_METHOD = { layers: 1, selective: 3 };
-    async function configure() {
-        const [rw, rh] = resWH();
-        const w = Math.max(16, Math.round(rw * opt.scale)), h = Math.max(16, Math.round(rh * opt.scale));
-        const key = JSON.stringify([opt.workers, useSimd]);
-        if (!configured || configured.key !== key) await startWorkers(opt.workers);
+    const idle = async () => { while (busy) await new Promise((r) => setTimeout(r, 5)); };
+    function serial(fn) {   // fn runs after every earlier serial(fn) settled, with tick held off
+        const p = chain.then(async () => {
+            pauses++;
+            try { await idle(); return await fn(); } finally { pauses--; }
+        });
+        chain = p.catch(() => {});
+        return p;
+    }
+    async function configure() {   // only through serial()
+        const o = { ...opt };
+        const [rw, rh] = o.res.split('x').map((v) => parseInt(v, 10));
+        const w = Math.max(16, Math.round(rw * o.scale)), h = Math.max(16, Math.round(rh * o.scale));
+        const key = JSON.stringify([o.workers, useSimd]);
+        const prevKey = configured ? configured.key : null;
+        configured = null;
+        if (prevKey !== key) await startWorkers(o.workers);
         W = w; H = h;
         canvas.width = W; canvas.height = H;
         over.width = W; over.height = H;
         for (const c of [canvas, over]) { c.style.width = `${rw}px`; c.style.height = `${rh}px`; }
-        const mod = opt.mode;
-        const args = { mod, w: W, h: H, scene: opt.scene, preset: opt.preset, taa: opt.taa, method: PT_METHOD[opt.ptMethod] };
+        const mod = o.mode;
+        const args = { mod, w: W, h: H, scene: o.scene, preset: o.preset, taa: o.taa, method: PT_METHOD[o.ptMethod] };
         const res = await Promise.all(workers.map((_, k) => call(k, 'setup', args)));
         info = res[0];
-        configured = { key };
+        configured = { key, mode: mod };
         frameNo = 0;
         timing.fov.reset(); timing.ref.reset();
         updateGaze(performance.now());
@@ -277,16 +294,18 @@ function pageMain() {
 
     // ---- one frame ----
     async function renderFrame(reference) {
+        if (!configured) throw new Error('the demo is not set up (a configuration failed)');
+        const mode = configured.mode;
         const g = { gx: gaze.x, gy: gaze.y, cam: camAngle };
         const t0 = performance.now();
         let parts, s = {};
-        if (opt.mode === 'sdf') {
+        if (mode === 'sdf') {
             const method = reference ? 4 : SDF_METHOD[opt.sdfMethod];
             parts = await Promise.all(bands(16).map(([y0, y1], k) =>
                 call(k, 'sdf', { ...g, method, y0, y1, overlay: opt.overlay && !reference, frame: frameNo })));
             s.evalsPx = sum(parts, 0) / (W * H);
             s.traced = sum(parts, 2) / (W * H);
-        } else if (opt.mode === 'lp') {
+        } else if (mode === 'lp') {
             if (reference) {
                 parts = await Promise.all(bands(1).map(([y0, y1], k) => call(k, 'lpRef', { cam: camAngle, y0, y1 })));
                 s.evalsPx = sum(parts, 0) / (W * H);
@@ -318,7 +337,7 @@ function pageMain() {
     }
     function drawOverlay() {
         octx.clearRect(0, 0, W, H);
-        const r = opt.mode === 'lp' ? (info.discR || 0) : (info.foveaDeg || 0) * pxPerDeg();
+        const r = configured && configured.mode === 'lp' ? (info.discR || 0) : (info.foveaDeg || 0) * pxPerDeg();
         octx.strokeStyle = 'rgba(255,255,255,0.8)';
         octx.lineWidth = 1;
         if (opt.overlay && r > 0) { octx.beginPath(); octx.arc(gaze.x, gaze.y, r, 0, 2 * Math.PI); octx.stroke(); }
@@ -349,7 +368,7 @@ function pageMain() {
 
     async function tick() {
         requestAnimationFrame(tick);
-        if (busy || paused || !configured) return;
+        if (busy || pauses > 0 || userPaused || !configured) return;
         busy = true;
         try {
             const now = performance.now();
@@ -368,8 +387,6 @@ function pageMain() {
             busy = false;
         }
     }
-    const idle = async () => { while (busy) await new Promise((r) => setTimeout(r, 5)); };
-
     // ---- controls ----
     function bind(id, key, conv) {
         const el = $(id);
@@ -387,10 +404,11 @@ function pageMain() {
         });
     }
     async function reconfigure() {
-        paused = true;
-        await idle();
-        try { await configure(); } catch (err) { showError(String(err.message || err)); } finally { paused = false; }
+        try { await serial(configure); } catch (err) { showError(String(err.message || err)); }
     }
+    const ptRestartAll = async () => {
+        if (configured && configured.mode === 'pt') await Promise.all(workers.map((_, k) => call(k, 'ptRestart')));
+    };
     function syncControls() {
         for (const el of document.querySelectorAll('[data-mode]')) el.hidden = el.dataset.mode !== opt.mode;
         $('sim-opts').hidden = opt.gazeSource !== 'sim';
@@ -409,9 +427,9 @@ function pageMain() {
     bind('workers', 'workers', int); bind('overlay-toggle', 'overlay'); bind('ref', 'ref'); bind('orbit', 'orbit');
     bind('gaze-source', 'gazeSource'); bind('noise', 'noiseDeg', num); bind('latency', 'latencyMs', num);
     $('restart').addEventListener('click', async () => {
-        paused = true; await idle();
-        if (opt.mode === 'pt') await Promise.all(workers.map((_, k) => call(k, 'ptRestart')));
-        timing.fov.reset(); timing.ref.reset(); paused = false;
+        try {
+            await serial(async () => { await ptRestartAll(); timing.fov.reset(); timing.ref.reset(); });
+        } catch (err) { showError(String(err.message || err)); }
     });
     syncControls();
 
@@ -424,9 +442,7 @@ function pageMain() {
         getMouse() { return { ...mouse }; },
         options() { return { ...opt, width: W, height: H, workersRunning: workers.length }; },
         // set options (the control names of opt) and rebuild; resolves when set up
-        async setOptions(o) {
-            paused = true;
-            await idle();
+        setOptions: (o) => serial(async () => {
             Object.assign(opt, o);
             for (const [id, key] of [['mode', 'mode'], ['sdf-method', 'sdfMethod'], ['scene', 'scene'], ['preset', 'preset'],
                 ['taa', 'taa'], ['pt-method', 'ptMethod'], ['res', 'res'], ['scale', 'scale'], ['workers', 'workers'],
@@ -436,37 +452,37 @@ function pageMain() {
                 if (el.type === 'checkbox') el.checked = !!opt[key]; else el.value = String(opt[key]);
             }
             syncControls();
-            try { await configure(); } finally { paused = false; }
+            await configure();
             return api.options();
-        },
-        pause: async () => { paused = true; await idle(); },
-        resume: () => { paused = false; },
-        // one frame drawn on the canvas: the foveated one or the reference; fovpt: both views
-        // restart and `frames` frames accumulate first. Resolves with its timing and counts.
-        async renderOnce(o = {}) {
-            paused = true;
-            await idle();
+        }),
+        // the animation stops (after the frame in flight) until resume(); renderOnce and
+        // measure still render, and leave it paused
+        pause: async () => { userPaused = true; await idle(); },
+        resume: () => { userPaused = false; },
+        // `frames` frames (default 1) rendered, the last drawn on the canvas: the foveated view
+        // or the reference; fovpt: both views restart first, so the frames accumulate; fovlp
+        // with TAA: they build its history. Resolves with the last one's timing and counts.
+        // The animation (unless paused) goes on afterwards and draws over it.
+        renderOnce: (o = {}) => serial(async () => {
             updateGaze(performance.now());
-            if (opt.mode === 'pt') await Promise.all(workers.map((_, k) => call(k, 'ptRestart')));
+            await ptRestartAll();
             let fr = null;
-            for (let i = 0; i < (opt.mode === 'pt' ? (o.frames || 1) : 1); ++i) fr = await renderFrame(!!o.reference);
+            for (let i = 0; i < Math.max(1, o.frames || 1); ++i) fr = await renderFrame(!!o.reference);
             draw(fr.img);
             drawOverlay();
             return { ms: fr.ms, s: fr.s, gaze: fr.gaze, width: W, height: H };
-        },
+        }),
         // frame times of the foveated and the reference frame, rendered interleaved in this page
         // (after a warm-up pair): the fastest of `frames` each (the least disturbed by other
         // load on the machine) and the median
-        async measure(o = {}) {
-            paused = true;
-            await idle();
+        measure: (o = {}) => serial(async () => {
             const n = o.frames || 6, fov = [], ref = [];
             await renderFrame(false); await renderFrame(true);   // warm-up
             for (let i = 0; i < n; ++i) { fov.push((await renderFrame(false)).ms); ref.push((await renderFrame(true)).ms); }
             const med = (a) => a.slice().sort((x, y) => x - y)[a.length >> 1];
             return { msFov: Math.min(...fov), msRef: Math.min(...ref), medFov: med(fov), medRef: med(ref) };
-        },
-        async restart() { if (opt.mode === 'pt') await Promise.all(workers.map((_, k) => call(k, 'ptRestart'))); },
+        }),
+        restart: () => serial(ptRestartAll),
         stats() { return { fovMs: timing.fov.ms(), refMs: timing.ref.ms(), fov: timing.fov.s, ref: timing.ref.s }; },
         // tests/web: make worker k throw an uncaught error (the page shows "Worker k died")
         crashWorker(k = 0) { return call(k, 'crash'); },
@@ -480,7 +496,7 @@ function pageMain() {
                 const kb = (b) => `${(b / 1024).toFixed(0)} KiB`;
                 $('t-sizes').textContent = ['sdf', 'lp', 'pt'].map((m) => `${m} ${kb(sz[m])} / ${kb(sz[m + '.simd'])}`).join(', ') + ' (scalar / SIMD128)';
             } catch (e) { $('t-sizes').textContent = 'sizes.json missing'; }
-            await configure();
+            await serial(configure);
             api.state = 'ready';
             document.body.dataset.state = 'ready';
             readyResolve(api);

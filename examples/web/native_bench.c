@@ -94,13 +94,18 @@ int main(int argc, char **argv)
                 fprintf(stderr, "%s frame: %d\n", names[mode], r);
                 return 1;
             }
-            for (i = 0; i < frames; ++i) {
+            for (i = 0; i < frames; ++i) {   /* a failing frame is an error, never a fast one */
                 double t0 = now_ms();
-                frame(mode, w, h, 0, (uint32_t)i + 1u);
+                int rf = frame(mode, w, h, 0, (uint32_t)i + 1u), rr;
                 tf[i] = now_ms() - t0;
                 t0 = now_ms();
-                frame(mode, w, h, 1, (uint32_t)i + 1u);
+                rr = frame(mode, w, h, 1, (uint32_t)i + 1u);
                 tr[i] = now_ms() - t0;
+                if (rf != 0 || rr != 0) {
+                    fprintf(stderr, "%s %ux%u frame %d: %d (foveated) %d (reference)\n", names[mode],
+                            w, h, i + 1, rf, rr);
+                    return 1;
+                }
             }
             {
                 double ff = 1000.0 / fastest(tf, frames), fr = 1000.0 / fastest(tr, frames);

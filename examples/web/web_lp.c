@@ -111,7 +111,7 @@ int lp_begin(float gx, float gy, float cam_angle)
     fov_result r;
     if (!S.rgba) return FOV_ERR_NULL;
     cam = S.bi.camera;
-    web_orbit(S.base_pos, cam.target, cam_angle, cam.pos);
+    if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     gaze.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
     gaze.y = S.ignore_gaze ? 0.5f * (float)S.h : gy;
     if ((r = fovsdf_init(&S.sdf, &scfg, &S.bi.scene, &cam, gaze, NULL, 0)) != FOV_OK) return r;
@@ -220,7 +220,7 @@ int lp_reference(float cam_angle, uint32_t y0, uint32_t y1)
     if (!S.rgba) return FOV_ERR_NULL;
     if (y0 > y1 || y1 > S.h) return FOV_ERR_INVALID_ARG;
     cam = S.bi.camera;
-    web_orbit(S.base_pos, cam.target, cam_angle, cam.pos);
+    if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     gaze.x = 0.5f * (float)S.w;
     gaze.y = 0.5f * (float)S.h;
     if ((r = fovsdf_init(&ctx, &scfg, &S.bi.scene, &cam, gaze, NULL, 0)) != FOV_OK) return r;

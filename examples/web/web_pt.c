@@ -7,7 +7,10 @@
    it traces (and refines) a halo of rows around them, which the resolve reads (the lattice
    taps above and below, the neighbours' presamples), so the image does not depend on the
    split. Accumulation restarts when the camera or the gaze moves (fovpt_set_view), or on
-   pt_restart. Not part of the library; the headers are used through their public API only. */
+   pt_restart. Not part of the library. It calls fovpt.h's public API, with one exception:
+   the layers overlay (pt_render with overlay 1) reads fields of fovpt_ctx that have no getter
+   (ecc, lay, layer_trace_deg: which layer traces each pixel); the share of pixels traced comes
+   from fovpt_stats and the fovea radius from fovpt_config_resolve. */
 #ifndef WEB_NATIVE_LIBM /* native_bench.c may use libm instead */
 #define FOV_NO_LIBM
 #endif
@@ -35,6 +38,7 @@ static struct {
     fovpt_camera cam;
     float base_pos[3];
     uint32_t w, h, ignore_gaze, method;
+    float fovea_deg;         /* stride-1 layer's radius (LAYERS) or e_f (SELECTIVE), resolved */
     pt_view_state v[2];      /* 0 foveated, 1 reference */
     uint8_t *rgb8, *rgba, *tint;
 } S;
@@ -142,6 +146,12 @@ int pt_setup(uint32_t w, uint32_t h, uint32_t method, uint32_t ignore_gaze)
         ref.mode = FOVPT_MODE_WHITTED;
         ref.spp = 16;
     }
+    {
+        fovpt_config res;
+        if ((r = fovpt_config_resolve(&cfg, &res)) != FOV_OK) return r;
+        S.fovea_deg = method == FOVPT_METHOD_LAYERS ? res.layers.layer[res.layers.count - 1u].radius_deg
+                                                    : res.selective.e_deg[0];
+    }
     if ((r = pt_view_init(&S.v[0], &cfg)) != FOV_OK) return r;
     if ((r = pt_view_init(&S.v[1], &ref)) != FOV_OK) return r;
     npx = (size_t)w * h;
@@ -154,12 +164,7 @@ int pt_setup(uint32_t w, uint32_t h, uint32_t method, uint32_t ignore_gaze)
 
 /* the fovea radius of the layers (the stride-1 layer), degrees; selective: e_f */
 WEB_EXPORT(pt_fovea_deg) float pt_fovea_deg(void);
-float pt_fovea_deg(void)
-{
-    const fovpt_ctx *c = &S.v[0].ctx;
-    if (S.method == FOVPT_METHOD_LAYERS) return c->lay.layer[c->lay.count - 1].radius_deg;
-    return c->cfg.selective.e_deg[0];
-}
+float pt_fovea_deg(void) { return S.fovea_deg; }
 WEB_EXPORT(pt_fov_y) float pt_fov_y(void);
 float pt_fov_y(void) { return S.cam.fov_y_deg; }
 
@@ -199,7 +204,7 @@ int pt_render(uint32_t which, float gx, float gy, float cam_angle, uint32_t y0, 
     if (which > 1u || y0 > y1 || y1 > S.h) return FOV_ERR_INVALID_ARG;
     v = &S.v[which];
     cam = S.cam;
-    web_orbit(S.base_pos, cam.target, cam_angle, cam.pos);
+    if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     g.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
     g.y = S.ignore_gaze ? 0.5f * (float)S.h : gy;
     /* fovpt_set_view restarts the accumulation when the camera (or, foveated, the gaze) moved */
@@ -227,26 +232,29 @@ int pt_render(uint32_t which, float gx, float gy, float cam_angle, uint32_t y0, 
     out.rgb8 = S.rgb8;
     if ((r = fovpt_resolve_rows(&v->ctx, y0, y1, &out)) != FOV_OK) return r;
     v->frame++;
-    /* overlay and the share of pixels traced at full density */
-    for (y = y0; y < y1; ++y)
-        for (x = 0; x < S.w; ++x) {
-            uint8_t t = 0;
-            if (which == 0 && S.method == FOVPT_METHOD_LAYERS) {
-                const fovpt_ctx *c = &v->ctx;
-                fov_ecc_model m = c->ecc;
-                float e = fovpt_ecc_deg(&m, (float)x + 0.5f, (float)y + 0.5f);
-                uint32_t lay = c->lay.count, k;
-                for (k = c->lay.count; k-- > 0;)
-                    if (e <= c->layer_trace_deg[k]) { lay = k; break; }
-                /* the finest layer that covers the pixel: count-1 is the stride-1 fovea */
-                if (lay == c->lay.count - 1u) traced += 1.0;
-                t = (uint8_t)(overlay ? (lay == c->lay.count - 1u ? 1 : lay == c->lay.count - 2u ? 2 : lay == c->lay.count - 3u ? 3 : 0) : 0);
-            } else {
-                traced += 1.0;
-            }
-            S.tint[(size_t)y * S.w + x] = t;
-        }
-    web_rgba_rows(S.rgb8, S.rgba, S.tint, S.w, y0, y1);
+    /* the share of pixels traced at full density: LAYERS, the stride-1 layer's lattice points
+       traced in the band (every pixel of the fovea); the others trace every pixel's own samples */
+    if (which == 0 && S.method == FOVPT_METHOD_LAYERS) {
+        const fovpt_ctx *c = &v->ctx;
+        uint32_t fin = c->lay.count - 1u;
+        traced = (double)st_band.layer_targets[fin];
+        /* overlay only (the tint is not needed otherwise): the finest layer that traces each
+           pixel's lattice point (ctx fields, no public getter), red the stride-1 fovea */
+        if (overlay)
+            for (y = y0; y < y1; ++y)
+                for (x = 0; x < S.w; ++x) {
+                    float e = fovpt_ecc_deg(&c->ecc, (float)x + 0.5f, (float)y + 0.5f);
+                    uint32_t lay = c->lay.count, k;
+                    for (k = c->lay.count; k-- > 0;)
+                        if (e <= c->layer_trace_deg[k]) { lay = k; break; }
+                    S.tint[(size_t)y * S.w + x] =
+                        (uint8_t)(lay == fin ? 1 : lay + 1u == fin ? 2 : lay + 2u == fin ? 3 : 0);
+                }
+    } else {
+        traced = (double)(y1 - y0) * (double)S.w;
+    }
+    web_rgba_rows(S.rgb8, S.rgba, which == 0 && S.method == FOVPT_METHOD_LAYERS && overlay ? S.tint : NULL,
+                  S.w, y0, y1);
     n = y1 - y0;
     web_stats[0] = (double)st_band.samples;
     web_stats[1] = (double)st_band.rays;

@@ -119,24 +119,40 @@ static void web_rgba_rows(const uint8_t *rgb, uint8_t *rgba, const uint8_t *tint
 }
 
 /* the camera orbits its target about +y by `angle` radians (FOV_NO_LIBM: small polynomials;
-   exactness does not matter, every worker computes the same bits) */
+   exactness does not matter, every worker computes the same bits). The angle comes from JS:
+   web_orbit returns 0, or -1 (and leaves out[] alone) when it is not finite. */
+static float web__floor(float x)   /* no libm: exact for every float */
+{
+    float t;
+    if (!(x > -8388608.0f && x < 8388608.0f)) return x;   /* |x| >= 2^23: an integer already */
+    t = (float)(int32_t)x;
+    return t > x ? t - 1.0f : t;
+}
 static float web__sin(float x)
 {
-    const float pi = 3.14159265f;
+    const float pi = 3.14159265f, two_pi = 6.28318531f;
     float x2;
-    while (x > pi) x -= 2.0f * pi;
-    while (x < -pi) x += 2.0f * pi;
+    x -= two_pi * web__floor(x / two_pi + 0.5f);   /* one step into [-pi, pi] (about) */
     if (x > 0.5f * pi) x = pi - x;
     if (x < -0.5f * pi) x = -pi - x;
+    if (x > 0.5f * pi) x = 0.5f * pi;               /* rounding at the ends, and |x| >= 2^25 */
+    if (x < -0.5f * pi) x = -0.5f * pi;
     x2 = x * x;
     return x * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f * (1.0f - x2 / 72.0f))));
 }
-static void web_orbit(const float base_pos[3], const float target[3], float angle, float out[3])
+static int web_orbit(const float base_pos[3], const float target[3], float angle, float out[3])
 {
-    float dx = base_pos[0] - target[0], dz = base_pos[2] - target[2];
-    float s = web__sin(angle), c = web__sin(angle + 1.57079633f);
+    const float pi = 3.14159265f, two_pi = 6.28318531f;
+    float dx = base_pos[0] - target[0], dz = base_pos[2] - target[2], s, c, a;
+    if (!(angle >= -3.4e38f && angle <= 3.4e38f)) return -1;
+    /* into [-pi, pi] first, so that a + pi/2 differs from a also for a huge angle (whose
+       reduction is meaningless when floats are wider apart than 2 pi: clamped then) */
+    a = angle - two_pi * web__floor(angle / two_pi + 0.5f);
+    a = a > pi ? pi : a < -pi ? -pi : a;
+    s = web__sin(a); c = web__sin(a + 1.57079633f);
     out[0] = target[0] + c * dx + s * dz;
     out[1] = base_pos[1];
     out[2] = target[2] - s * dx + c * dz;
+    return 0;
 }
 #endif

@@ -78,7 +78,7 @@ int sdf_render(uint32_t method, float gx, float gy, float cam_angle, uint32_t y0
     cfg.method = method;
     cfg.frame = frame;
     cam = S.bi.camera;
-    web_orbit(S.base_pos, cam.target, cam_angle, cam.pos);
+    if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     gaze.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
     gaze.y = S.ignore_gaze ? 0.5f * (float)S.h : gy;
     if ((r = fovsdf_init(&ctx, &cfg, &S.bi.scene, &cam, gaze, NULL, 0)) != FOV_OK) return r;

@@ -10,4 +10,5 @@ if ! command -v node >/dev/null 2>&1; then
     if [ "${CI:-}" = true ]; then echo "FAIL web: node not found (apt-get install nodejs)"; echo "0 passed, 1 failed"; exit 1; fi
     echo "SKIP web: node not found (apt-get install nodejs)"; echo "0 passed, 0 failed"; exit 0
 fi
-exec node tests/web/web_test.mjs --csv build/web_test/web.csv "$@"
+# timeout: the last guard against a hang (the test has its own 600 s watchdog)
+exec timeout 900 node tests/web/web_test.mjs --csv build/web_test/web.csv "$@"
