@@ -522,10 +522,12 @@ typedef struct fov_gaze {
        pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
                                                    size: the TAA uses the fovlp image's)
        eye_offset                                  all three
-       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
-                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
-                                                   for non-zero ones (their tracers and the
-                                                   TAA reprojection assume a symmetric frustum)
+       tan_left, tan_right, tan_bottom, tan_top    fovsdf and fovpt (rays, eccentricity);
+                                                   fovlp through config.display
+                                                   (fovlp_camera_display) and config.taa.frustum
+                                                   (its reprojection); a symmetric camera (all
+                                                   0) gives the rays of earlier releases, bit
+                                                   for bit
    The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
    the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
    width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
@@ -541,7 +543,7 @@ typedef struct fov_camera {
     float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
                                (-ipd/2 for the left eye, +ipd/2 for the right one); the view
                                axis keeps its direction */
-    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_left, tan_right; /* off-axis frustum (an HMD eye): tangents of the angles from the */
     float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
                                positive for an edge on that side of the axis (left + right
                                > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
@@ -557,7 +559,10 @@ typedef struct fov_camera {
    All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
    off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
    image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
-   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovsdf and fovpt derive these from
+   the camera when the display is all zero, *_camera_display gives them (for fovlp). The model
+   has square pixels: for tangents whose (l + r) / (t + b) differs from W / H, f follows the
+   vertical.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -785,6 +790,12 @@ typedef struct fovlp_taa_config {
                                only by taa.clamp; it ghosts); 0: while the camera moves,
                                history is variance-clipped in YCoCg (gamma clip_gamma)
                                wherever taa.clamp is NONE (ours) */
+    float frustum[4];       /* an off-axis camera (an HMD eye): the fov_camera's tan_left,
+                               tan_right, tan_bottom, tan_top; the reprojection then maps
+                               screen point (x, y) to fwd + (-tl + (tl + tr) x / W) right +
+                               (tt - (tt + tb) y / H) up (fovlp_camera's tan_half_y unused).
+                               Finite, left + right and bottom + top > 1e-6, each <= 1e6.
+                               All 0: symmetric, from tan_half_y                   0: 0 */
 } fovlp_taa_config;
 
 /* A zero-filled config means "all defaults" (listed per field) apart from width and height,
@@ -1028,10 +1039,12 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
 FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovlp_camera *cam);
 /* The TAA camera of a fov_camera (the one you render with): pos = the pinhole pos +
    eye_offset * right, the frame of fov_camera, tan_half_y = tan(fov_y_deg / 2) (fov_y_deg 0:
-   60). The size is not used (the TAA uses the fovlp image's). FOV_ERR_UNSUPPORTED for
-   non-zero tan_left .. tan_top (the reprojection assumes a symmetric frustum); else
-   FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside (0, 180),
-   a pinhole beyond float) or FOV_ERR_DEGENERATE (target == pos, up parallel to the view).
+   60). The size is not used (the TAA uses the fovlp image's). An off-axis camera (non-zero
+   tan_left .. tan_top) gives tan_half_y = (tan_bottom + tan_top) / 2: set config.taa.frustum
+   to its four tangents (the reprojection) and config.display with fovlp_camera_display (the
+   eccentricity). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside
+   (0, 180), tangents as fovsdf_init rejects them, a pinhole beyond float) or
+   FOV_ERR_DEGENERATE (target == pos, up parallel to the view).
    out is written only on success. */
 FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out);
 FOVLP_API void fovlp_reset_history(fovlp_ctx *ctx);   /* the next frame starts TAA afresh */
@@ -2199,6 +2212,16 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
     if (fov__is0(c.taa.clip_gamma)) c.taa.clip_gamma = 1.0f;
     if (fov__is0(c.taa.depth_tol)) c.taa.depth_tol = 0.02f;
     if (fov__is0(c.taa.reset_deg)) c.taa.reset_deg = 2.0f;
+    {
+        const float *t = c.taa.frustum;
+        int any = !fov__is0(t[0]) || !fov__is0(t[1]) || !fov__is0(t[2]) || !fov__is0(t[3]);
+        if (!fov__finite(t[0]) || !fov__finite(t[1]) || !fov__finite(t[2]) || !fov__finite(t[3]))
+            FOVLP__FAIL(lg, FOV_ERR_NOT_FINITE, "config.taa.frustum[] NaN or infinite");
+        if (any && (!(t[0] + t[1] > 1e-6f) || !(t[2] + t[3] > 1e-6f) || t[0] > 1e6f ||
+                    t[1] > 1e6f || t[2] > 1e6f || t[3] > 1e6f))
+            FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.frustum: left + right and bottom + "
+                        "top must exceed 1e-6, each at most 1e6");
+    }
     if (fov__is0(c.taa.periphery)) c.taa.periphery = 1.0f / 3.0f;
     *out = c;
     return FOV_OK;
@@ -2887,17 +2910,20 @@ FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out)
 {
     float r[3], u[3], f[3], o[3], fov;
     fov_result e;
-    int k;
+    int k, off;
     if (!cam || !out) return FOV_ERR_NULL;
     if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->eye_offset) ||
         !fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
         !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top))
         return FOV_ERR_NOT_FINITE;
-    if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
-        !fov__is0(cam->tan_top))
-        return FOV_ERR_UNSUPPORTED;
+    off = !fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) ||
+          !fov__is0(cam->tan_bottom) || !fov__is0(cam->tan_top);
+    if (off && (!(cam->tan_left + cam->tan_right > 1e-6f) ||
+                !(cam->tan_bottom + cam->tan_top > 1e-6f) || cam->tan_left > 1e6f ||
+                cam->tan_right > 1e6f || cam->tan_bottom > 1e6f || cam->tan_top > 1e6f))
+        return FOV_ERR_INVALID_ARG;
     fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
-    if (!(fov > 0.0f && fov < 180.0f)) return FOV_ERR_INVALID_ARG;
+    if (!off && !(fov > 0.0f && fov < 180.0f)) return FOV_ERR_INVALID_ARG;
     e = fov__camera_basis(cam, r, u, f);
     if (e != FOV_OK) return e;
     for (k = 0; k < 3; ++k) o[k] = cam->pos[k] + r[k] * cam->eye_offset; /* as fovsdf_init */
@@ -2908,7 +2934,8 @@ FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out)
         out->up[k] = u[k];
         out->fwd[k] = f[k];
     }
-    out->tan_half_y = FOV__TAN(0.5f * fov * FOV__DEG);
+    out->tan_half_y = off ? 0.5f * (cam->tan_bottom + cam->tan_top)
+                          : FOV__TAN(0.5f * fov * FOV__DEG);
     return FOV_OK;
 }
 
@@ -3794,6 +3821,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     const fovlp_config *c;
     uint32_t W, H, x, y, reproject;
     float diag, asp, per;
+    int offc;
     if (!ctx) return FOV_ERR_NULL;
     c = &ctx->cfg;
     if (!io) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa_rows: io is NULL");
@@ -3823,6 +3851,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     per = c->taa.periphery * diag;
     asp = (float)W / (float)H;
+    offc = !fov__is0(c->taa.frustum[0]) || !fov__is0(c->taa.frustum[1]) ||
+           !fov__is0(c->taa.frustum[2]) || !fov__is0(c->taa.frustum[3]);
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
@@ -3842,9 +3872,14 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (reproject) {
                 /* world point of this pixel, then its place in the previous frame */
                 const fovlp_camera *a = &ctx->cam, *p = &ctx->prev_cam;
+                const float *ft = c->taa.frustum;
                 float sxn = (hx / (float)W * 2.0f - 1.0f) * a->tan_half_y * asp;
                 float syn = (hy / (float)H * 2.0f - 1.0f) * a->tan_half_y;
                 float d[3], wp[3], rel[3], z;
+                if (offc) { /* off-axis (taa.frustum); syn points down as above */
+                    sxn = -ft[0] + (ft[0] + ft[1]) * (hx / (float)W);
+                    syn = -ft[3] + (ft[2] + ft[3]) * (hy / (float)H);
+                }
                 for (ch = 0; ch < 3; ++ch)
                     d[ch] = a->fwd[ch] + sxn * a->right[ch] - syn * a->up[ch];
                 fovlp__normalize(d);
@@ -3859,6 +3894,11 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     float py = fov__dot(rel, p->up) / (z * p->tan_half_y);
                     hx = (px + 1.0f) * 0.5f * (float)W;
                     hy = (1.0f - py) * 0.5f * (float)H;
+                    if (offc) {
+                        float qx = fov__dot(rel, p->right) / z, qy = fov__dot(rel, p->up) / z;
+                        hx = (qx + ft[0]) / (ft[0] + ft[1]) * (float)W;
+                        hy = (ft[3] - qy) / (ft[2] + ft[3]) * (float)H;
+                    }
                     if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
                         reject = 1;
                     } else {

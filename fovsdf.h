@@ -400,8 +400,9 @@ ERRORS AND LOGGING
    fovsdf_result_string() never returns NULL. Bad input (NULL pointers, zero, negative,
    overflowing or over-cap sizes, NaN or infinite camera, gaze or parameters, a field of view
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
-   rejected with an error code before any work is done (an off-axis camera, non-zero
-   cam.tan_left .. tan_top, with FOV_ERR_UNSUPPORTED); nothing asserts on data.
+   rejected with an error code before any work is done (an off-axis camera with
+   tan_left + tan_right or tan_bottom + tan_top <= 1e-6, or a tangent above 1e6, with
+   FOV_ERR_INVALID_ARG); nothing asserts on data.
    Messages are on by default (no FOV_DEBUG needed): set cfg.logger and every failure calls it
    once, with the code and a message naming the field and the rule, e.g.
    "config.spp must be 1, 4 or 16 (0: 1)", "init: scene.num_lights above FOVSDF_MAX_LIGHTS",
@@ -833,10 +834,12 @@ typedef struct fov_gaze {
        pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
                                                    size: the TAA uses the fovlp image's)
        eye_offset                                  all three
-       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
-                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
-                                                   for non-zero ones (their tracers and the
-                                                   TAA reprojection assume a symmetric frustum)
+       tan_left, tan_right, tan_bottom, tan_top    fovsdf and fovpt (rays, eccentricity);
+                                                   fovlp through config.display
+                                                   (fovlp_camera_display) and config.taa.frustum
+                                                   (its reprojection); a symmetric camera (all
+                                                   0) gives the rays of earlier releases, bit
+                                                   for bit
    The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
    the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
    width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
@@ -852,7 +855,7 @@ typedef struct fov_camera {
     float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
                                (-ipd/2 for the left eye, +ipd/2 for the right one); the view
                                axis keeps its direction */
-    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_left, tan_right; /* off-axis frustum (an HMD eye): tangents of the angles from the */
     float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
                                positive for an edge on that side of the axis (left + right
                                > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
@@ -868,7 +871,10 @@ typedef struct fov_camera {
    All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
    off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
    image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
-   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovsdf and fovpt derive these from
+   the camera when the display is all zero, *_camera_display gives them (for fovlp). The model
+   has square pixels: for tangents whose (l + r) / (t + b) differs from W / H, f follows the
+   vertical.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -1215,13 +1221,15 @@ typedef enum fovsdf_finish {
 /* ==== camera ============================================================================== */
 
 /* The shared camera, fov_camera (its declaration documents the frame, handedness, pixel
-   convention and defaults). fovsdf uses every field but the off-axis tangents: non-zero
-   tan_left .. tan_top make fovsdf_init return FOV_ERR_UNSUPPORTED (the pixel-cone thresholds
-   and the head-start tracers assume a symmetric frustum). Limits: width and height 1 ..
-   FOVSDF_MAX_DIM; pos, eye_offset and the pinhole pos + eye_offset * right lie within 1e18
-   of the origin (per component; fovsdf_init rejects more with FOV_ERR_INVALID_ARG, see
-   NUMERICS). Stereo: eye_offset -ipd/2 for the left eye, +ipd/2 for the right one; render
-   each eye with its own context. */
+   convention and defaults). fovsdf uses every field. Off-axis tangents (an HMD eye's, e.g.
+   OpenVR's GetProjectionRaw or OpenXR's XrFovf, as positive tangents) give every tracer the
+   frustum's rays and, when config.display is all zero, the frustum's eccentricity model
+   (fov_display); all 0 keeps the symmetric camera of fov_y_deg, bit for bit. Limits: width
+   and height 1 .. FOVSDF_MAX_DIM; pos, eye_offset and the pinhole pos + eye_offset * right
+   lie within 1e18 of the origin (per component; fovsdf_init rejects more with
+   FOV_ERR_INVALID_ARG, see NUMERICS). Stereo: eye_offset -ipd/2 for the left eye, +ipd/2 for
+   the right one, each eye's tangents and gaze; render each eye with its own context
+   (examples/sdf_stereo.c). */
 typedef fov_camera fovsdf_camera;
 
 /* ==== scenes ============================================================================== */
@@ -1460,6 +1468,8 @@ typedef struct fovsdf_ctx {  /* filled by fovsdf_init; read-only afterwards */
     float shadow_fov_cos;    /* cos(cfg.shadow_fov_deg): eccentricity test of the shaded rays */
     void *mem;
     size_t mem_size;
+    uint32_t off_axis;       /* 1: cam.tan_left .. tan_top give the frustum (tan4) */
+    float tan4[4];           /* off-axis: tan_left, tan_right, tan_bottom, tan_top */
 } fovsdf_ctx;
 
 /* Per-pixel outputs; every pointer may be NULL (not written). Strides are in elements
@@ -6976,8 +6986,13 @@ FOVSDF__PRIV int fovsdf__shadow_far(const fovsdf_ctx *c, const float rd[3])
     rf = fov__dot(rd, c->fwd);
     if (!(rf > 0.0f)) return 1; /* behind the image plane: far from any gaze on it */
     a = 0.5f * (float)c->cam.height / c->tan_half_y;
-    e[0] = a * fov__dot(rd, c->right) - (c->ecc.cx - 0.5f * (float)c->cam.width) * rf;
-    e[1] = (c->ecc.cy - 0.5f * (float)c->cam.height) * -rf - a * fov__dot(rd, c->up);
+    if (c->off_axis) { /* the axis's image point is (a tl, a tt), not the centre */
+        e[0] = a * fov__dot(rd, c->right) - (c->ecc.cx - a * c->tan4[0]) * rf;
+        e[1] = (c->ecc.cy - a * c->tan4[3]) * -rf - a * fov__dot(rd, c->up);
+    } else {
+        e[0] = a * fov__dot(rd, c->right) - (c->ecc.cx - 0.5f * (float)c->cam.width) * rf;
+        e[1] = (c->ecc.cy - 0.5f * (float)c->cam.height) * -rf - a * fov__dot(rd, c->up);
+    }
     e[2] = c->ecc.f_px * rf;
     return fov__dot(e, c->ecc.g) < c->shadow_fov_cos * fov__len(e);
 }
@@ -7139,6 +7154,7 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
     size_t need;
     float tanh, fov, rt[3], up[3], fw[3], rt_o[3];
     uint32_t i;
+    int off;
     fov_ecc_model em;
     if (!ctx) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: ctx is NULL");
     if (!scene) FOVSDF__FAIL(lg, FOV_ERR_NULL, "init: scene is NULL");
@@ -7159,10 +7175,20 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
         !fov__finite(gaze.y))
         FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE,
                      "init: cam.fov_y_deg, cam.eye_offset or gaze NaN or infinite");
-    if (!fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
-        !fov__is0(cam->tan_top))
-        FOVSDF__FAIL(lg, FOV_ERR_UNSUPPORTED,
-                     "init: cam.tan_left .. tan_top must be 0 (symmetric frusta only)");
+    off = !fov__is0(cam->tan_left) || !fov__is0(cam->tan_right) || !fov__is0(cam->tan_bottom) ||
+          !fov__is0(cam->tan_top);
+    if (off) {
+        if (!fov__finite(cam->tan_left) || !fov__finite(cam->tan_right) ||
+            !fov__finite(cam->tan_bottom) || !fov__finite(cam->tan_top))
+            FOVSDF__FAIL(lg, FOV_ERR_NOT_FINITE, "init: cam.tan_left .. tan_top NaN or infinite");
+        if (!(cam->tan_left + cam->tan_right > 1e-6f) ||
+            !(cam->tan_bottom + cam->tan_top > 1e-6f) ||
+            cam->tan_left > 1e6f || cam->tan_right > 1e6f || cam->tan_bottom > 1e6f ||
+            cam->tan_top > 1e6f)
+            FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
+                         "init: cam.tan_*: left + right and bottom + top must exceed 1e-6, each "
+                         "at most 1e6");
+    }
     fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f))
         FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG, "init: cam.fov_y_deg must be in (0, 180) (0: 60)");
@@ -7183,7 +7209,19 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
     if (r != FOV_OK) return r;
     if (mem_size < need || (need > 0 && !mem))
         FOVSDF__FAIL(lg, FOV_ERR_TOO_SMALL, "init: mem NULL or mem_size below fovsdf_memory_size");
-    r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
+    if (off && fov__is0(c.display.fov_y_deg) && fov__is0(c.display.pixel_pitch_mm) &&
+        fov__is0(c.display.distance_mm)) {
+        /* an off-axis frustum without a display: the camera's own (fov_display) */
+        fov_display dd;
+        r = fov__camera_display(cam, &dd);
+        if (r == FOV_OK) {
+            dd.axis_dx += c.display.axis_dx;
+            dd.axis_dy += c.display.axis_dy;
+            r = fovsdf_ecc_init(&em, &dd, fov, cam->width, cam->height, gaze);
+        }
+    } else {
+        r = fovsdf_ecc_init(&em, &c.display, fov, cam->width, cam->height, gaze);
+    }
     if (r != FOV_OK)
         FOVSDF__FAIL(lg, r, "init: gaze or config.display: the eye direction overflows");
     /* everything is valid: only now is ctx written (a failed call leaves it as it was) */
@@ -7201,9 +7239,16 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
     ctx->origin[1] = cam->pos[1] + ctx->right[1] * cam->eye_offset;
     ctx->origin[2] = cam->pos[2] + ctx->right[2] * cam->eye_offset;
     tanh = FOV__TAN(0.5f * fov * FOV__DEG);
+    ctx->off_axis = off ? 1u : 0u;
+    ctx->tan4[0] = cam->tan_left; ctx->tan4[1] = cam->tan_right;
+    ctx->tan4[2] = cam->tan_bottom; ctx->tan4[3] = cam->tan_top;
+    if (off) tanh = 0.5f * (cam->tan_bottom + cam->tan_top);
     ctx->tan_half_y = tanh;
     ctx->aspect = (float)cam->width / (float)cam->height;
     ctx->pixel_angle = 2.0f * tanh / (float)cam->height;
+    if (off) /* the larger of a pixel's two extents at the axis */
+        ctx->pixel_angle = fov__maxf(ctx->pixel_angle,
+                                     (cam->tan_left + cam->tan_right) / (float)cam->width);
     ctx->t_max = c.t_max > 0.0f ? c.t_max : (scene->t_max > 0.0f ? scene->t_max : 100.0f);
     ctx->mem = mem;
     ctx->mem_size = mem_size;
@@ -7213,12 +7258,33 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
     return FOV_OK;
 }
 
+/* The ray of an off-axis frustum (fov_camera): fwd + sx right + sy up, sx = -tl + (tl + tr)
+   px / W, sy = tt - (tt + tb) py / H; a point so far off the image that sx or sy overflow is
+   scaled down first (only the direction counts). */
+FOVSDF__PRIV int fovsdf__ray_off(const fovsdf_ctx *c, float px, float py, float ro[3],
+                                float rd[3])
+{
+    const float *t = c->tan4;
+    float a = px / (float)c->cam.width, b = py / (float)c->cam.height, k, f = 1.0f, u, v;
+    int i;
+    ro[0] = c->origin[0]; ro[1] = c->origin[1]; ro[2] = c->origin[2];
+    k = fov__maxf(fov__absf(a), fov__absf(b));
+    if (k > 1e6f && fov__finite(k)) f = 1.0f / k;
+    u = -t[0] * f + (t[0] + t[1]) * (a * f);
+    v = t[3] * f - (t[2] + t[3]) * (b * f);
+    for (i = 0; i < 3; ++i) rd[i] = c->fwd[i] * f + u * c->right[i] + v * c->up[i];
+    if (fovsdf__normalize(rd) > 0.0f) return 1;
+    rd[0] = c->fwd[0]; rd[1] = c->fwd[1]; rd[2] = c->fwd[2];
+    return 0;
+}
+
 /* The ray through image point (px, py); no argument checks (internal use). Returns 0 when
    the direction is not finite (an image point ~1e38 / tan(fov_y / 2) pixels off the image):
    never for points within a few image sizes of the image. */
 FOVSDF__PRIV int fovsdf__ray(const fovsdf_ctx *c, float px, float py, float ro[3], float rd[3])
 {
     float u, v;
+    if (c->off_axis) return fovsdf__ray_off(c, px, py, ro, rd);
     u = (px / (float)c->cam.width * 2.0f - 1.0f) * c->tan_half_y * c->aspect;
     v = (1.0f - py / (float)c->cam.height * 2.0f) * c->tan_half_y;
     rd[0] = c->fwd[0] + u * c->right[0] + v * c->up[0];
@@ -7804,6 +7870,7 @@ FOVSDF__PRIV void fovsdf__albedo_cell(const fovsdf_ctx *c, const float p[3], con
     if (!(rf > 1e-6f)) { fovsdf__albedo(c, p, mc->mat, rgb); return; }
     sx = 2.0f * c->tan_half_y * c->aspect / (float)c->cam.width;
     sy = -2.0f * c->tan_half_y / (float)c->cam.height;
+    if (c->off_axis) sx = (c->tan4[0] + c->tan4[1]) / (float)c->cam.width;
     for (k = 0; k < 3; ++k) {
         d0[k] = mc->rd[k] / rf; /* the centre ray's direction with unit depth along fwd */
         du[k] = sx * c->right[k]; dv[k] = sy * c->up[k];

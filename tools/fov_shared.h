@@ -114,10 +114,12 @@ typedef struct fov_gaze {
        pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
                                                    size: the TAA uses the fovlp image's)
        eye_offset                                  all three
-       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
-                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
-                                                   for non-zero ones (their tracers and the
-                                                   TAA reprojection assume a symmetric frustum)
+       tan_left, tan_right, tan_bottom, tan_top    fovsdf and fovpt (rays, eccentricity);
+                                                   fovlp through config.display
+                                                   (fovlp_camera_display) and config.taa.frustum
+                                                   (its reprojection); a symmetric camera (all
+                                                   0) gives the rays of earlier releases, bit
+                                                   for bit
    The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
    the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
    width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
@@ -133,7 +135,7 @@ typedef struct fov_camera {
     float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
                                (-ipd/2 for the left eye, +ipd/2 for the right one); the view
                                axis keeps its direction */
-    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_left, tan_right; /* off-axis frustum (an HMD eye): tangents of the angles from the */
     float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
                                positive for an edge on that side of the axis (left + right
                                > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
@@ -149,7 +151,10 @@ typedef struct fov_camera {
    All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
    off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
    image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
-   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovsdf and fovpt derive these from
+   the camera when the display is all zero, *_camera_display gives them (for fovlp). The model
+   has square pixels: for tangents whose (l + r) / (t + b) differs from W / H, f follows the
+   vertical.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
