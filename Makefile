@@ -77,7 +77,17 @@ $(BUILD)/lp_sdf: examples/lp_sdf.c examples/lp_sdf_shade.h fovlp.h fovsdf.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
+# stereo: two off-axis eyes side by side, each with its own gaze (issue 16)
+$(BUILD)/sdf_stereo: examples/sdf_stereo.c fovsdf.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+$(BUILD)/pt_stereo: examples/pt_stereo.c fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic \
+          $(BUILD)/sdf_stereo $(BUILD)/pt_stereo
 
 demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	./$(BUILD)/sdf_scenes --out out
@@ -144,13 +154,13 @@ bench-lp: $(BUILD)/bench_lp
 bench: bench-sdf bench-lp bench-pt bench-perceptual bench-gaze
 
 # issue 16: fov_gaze_filter and the latency margin on generated gaze traces (bench/bench_gaze.c)
-$(BUILD)/bench_gaze: bench/bench_gaze.c fovsdf.h tests/common/gaze_trace.h
+$(BUILD)/bench_gaze: bench/bench_gaze.c fovsdf.h bench/gaze_trace.h
 	@mkdir -p $(BUILD)
-	$(CC) $(STD) $(CFLAGS) $(WARN) -I. -Itests/common $< -lm -o $@
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
 bench-gaze: $(BUILD)/bench_gaze
 	@mkdir -p bench/results
-	./$(BUILD)/bench_gaze bench/results/gaze.csv
+	./$(BUILD)/bench_gaze --out bench/results/gaze.csv
 
 # issue 13: fovsdf, fovlp and fovpt against full resolution by the eye-filtered FLIP of
 # examples/fovmetrics.h at three displays (bench/bench_perceptual.c)

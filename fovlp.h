@@ -46,6 +46,12 @@ QUICK START (the library never renders: you shade the positions it hands out)
           fovlp_srgb8_rows(&ctx, hist[1-p], 0, 0, 1080, rgba, 0, 4);   p = 1 - p;
    The depths are optional while the camera stands still (see fovlp_taa_io).
    examples/lp_sdf.c renders fovsdf.h's scenes through this library, with TAA.
+   No eye tracker: fixed foveation, the gaze at the display's axis point and a larger disc
+      fovlp_gaze_fixed(&cfg.display, 1920, 1080, &gaze);                 // the screen centre
+      fovlp_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg);  // disc + 15 deg
+   With one: filter its samples and grow the disc by the latency margin (GAZE INPUT).
+   A head-mounted display's eye (off-axis): cfg.taa.frustum = its tangents and
+   fovlp_camera_display(&cam, &cfg.display).
 
 THE PIPELINE (in the order the data flows; Andersson & Hansson 2020, "Performance
 Optimizations for Foveated Real-Time Raytracing", LU-CS-EX 2020-64, = "the thesis"; it builds

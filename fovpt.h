@@ -30,6 +30,11 @@ QUICK START
 
    See examples/pt_basic.c for a complete program.
 
+   No eye tracker: fixed foveation, the gaze at the display's axis point and larger foveae
+      fovpt_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
+      fovpt_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // radii + 15 deg
+   With one: filter its samples and grow the radii by the latency margin (GAZE INPUT).
+
    Stereo, per-eye gaze: one context per eye (Axblad 2020, Sec. 3.2.1, and Kim et al. 2021,
    Fig. 4, render the eyes independently).
       fovpt_camera eye[2];  fovpt_camera_eyes(&head, 0.064f, eye);   // ipd in scene units

@@ -27,6 +27,13 @@ QUICK START
    See examples/sdf_basic.c (a complete program) and examples/sdf_scenes.c (the built-in
    scenes, all tracers, written to image files).
 
+   No eye tracker: fixed foveation, the gaze at the display's axis point and a larger fovea
+      fovsdf_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
+      fovsdf_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // fovea + 15 deg
+   With one: filter its samples and grow the fovea by the latency margin (GAZE INPUT).
+   A head-mounted display: per eye tan_left .. tan_top, eye_offset and its own gaze (see
+   fovsdf_camera, examples/sdf_stereo.c: both eyes side by side).
+
 WHAT IT DOES
    - Sphere tracing (Hart 1996) of a signed distance function (SDF) given as a C callback, or
      as a tree of built-in primitives and operators compiled into a small program that skips

@@ -1,6 +1,6 @@
 /* bench_gaze.c - the gaze filter and the latency-safe fovea (fov_gaze_filter of the shared
    block; fovsdf.h's copy) on generated gaze traces with a known true gaze
-   (tests/common/gaze_trace.h: fixations with drift, smooth pursuit, main-sequence saccades,
+   (bench/gaze_trace.h: fixations with drift, smooth pursuit, main-sequence saccades,
    a blink). Writes bench/results/gaze.csv:
      trace,latency_ms,noise_deg,mode,inside_pct,work_ratio,jitter_deg_rms,lag_deg,settle_frames
    one row per trace, latency (0, 20, 50, 80 ms), tracker noise (RMS in 2-D: 0.25, 0.5, 1
@@ -23,7 +23,7 @@
    is within 1 degree of the true gaze, mean over saccades. Deterministic (seeded). */
 #define FOVSDF_IMPLEMENTATION
 #include "fovsdf.h"
-#include "gaze_trace.h"
+#include "bench/gaze_trace.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -56,14 +56,26 @@ int main(int argc, char **argv)
     static const int lats[4] = { 0, 20, 50, 80 };
     static const double noises[3] = { 0.25, 0.5, 1.0 };
     static const char *const modes[3] = { "raw", "filtered", "filtered_margin" };
-    const char *out = argc > 1 ? argv[1] : "bench/results/gaze.csv";
+    const char *out = "bench/results/gaze.csv";
     fov_display disp;
     fov_ecc_model em;
     fov_eye_plan plan;
     fov_gaze g0;
     double r_full;
     int tr, li, ni, mo;
-    FILE *f = fopen(out, "w");
+    FILE *f;
+    if (argc > 1) {
+        int help = !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h");
+        if (!help && !strcmp(argv[1], "--out") && argc == 3) {
+            out = argv[2];
+        } else {
+            fputs("usage: bench_gaze [--out FILE]\n  the gaze filter and latency margin on "
+                  "generated gaze traces;\n  writes bench/results/gaze.csv (or FILE)\n"
+                  "  -h, --help  this text\n", help ? stdout : stderr);
+            return help ? 0 : 2;
+        }
+    }
+    f = fopen(out, "w");
     if (!f) { fprintf(stderr, "cannot write %s\n", out); return 1; }
     memset(&disp, 0, sizeof disp);
     disp.pixel_pitch_mm = (float)(27.0 * 25.4 / sqrt(1920.0 * 1920.0 + 1080.0 * 1080.0));
@@ -95,7 +107,7 @@ int main(int argc, char **argv)
                     if (fovsdf_gaze_filter_init(&gf, NULL) != FOV_OK) return 1;
                     for (fr = 0;; ++fr) {
                         uint64_t T = (uint64_t)((double)fr * 1e6 / FRAME_HZ + 0.5);
-                        uint64_t Ts = T >= (uint64_t)lats[li] * 1000u ? T - (uint64_t)lats[li] * 1000u : 0u;
+                        uint64_t L = (uint64_t)lats[li] * 1000u, Ts = T >= L ? T - L : 0u;
                         int ms, ph, in_sacc = 0, j;
                         double tx, ty, d, R;
                         if (T / 1000u >= (uint64_t)g_tr.n_ms) break;
@@ -107,7 +119,10 @@ int main(int argc, char **argv)
                                 r = fovsdf_gaze_filter_push(&gf, g_t[k], (float)g_x[k],
                                                             (float)g_y[k]);
                             }
-                            if (r != FOV_OK) { fprintf(stderr, "push failed %d\n", (int)r); return 1; }
+                            if (r != FOV_OK) {
+                                fprintf(stderr, "push failed %d\n", (int)r);
+                                return 1;
+                            }
                             if (mo == 0) { ex = g_x[k]; ey = g_y[k]; }
                             else { ex = gf.x_deg; ey = gf.y_deg; }
                             have = 1;
@@ -119,8 +134,8 @@ int main(int argc, char **argv)
                             float m;
                             /* latency: the system's plus the age of the newest sample (up to
                                one tracker period) */
-                            fovsdf_gaze_margin(&gf, 0.0f, (float)lats[li] + (float)(1000.0 / RATE_HZ),
-                                               &m);
+                            fovsdf_gaze_margin(&gf, 0.0f,
+                                               (float)lats[li] + (float)(1000.0 / RATE_HZ), &m);
                             margin = m;
                         }
                         R = r_full + margin;

@@ -1,6 +1,6 @@
 /* test_gaze.c - gaze input of the shared block (fov_gaze_filter: One Euro filter with saccade
    reset, the latency margin, fixed foveation, pixel <-> degree mapping) in fovsdf.h, fovlp.h
-   and fovpt.h, and the gaze trace generator (tests/common/gaze_trace.h). Expected values are
+   and fovpt.h, and the gaze trace generator (bench/gaze_trace.h). Expected values are
    worked out here from the stated rules (a still input, a step, Gaussian noise of known RMS,
    a ramp), never taken from the code under test. Prints "N passed, N failed". */
 #define FOV_IMPL
@@ -8,7 +8,7 @@
 #include "fovlp.h"
 #include "fovpt.h"
 #include "fovcheck.h"
-#include "gaze_trace.h"
+#include "bench/gaze_trace.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -211,7 +211,8 @@ static void test_margin(void)
     /* a steady pursuit: the margin covers where the eye is latency later */
     ramp(&f, 20.0f);
     {
-        double true_later = 20.0 * (119.0 / 120.0 + 0.050), err = fabs(true_later - (double)f.x_deg);
+        double true_later = 20.0 * (119.0 / 120.0 + 0.050);
+        double err = fabs(true_later - (double)f.x_deg);
         fovsdf_gaze_margin(&f, 0.0f, 50.0f, &m);
         check((double)m >= err, "margin_covers_pursuit_at_50ms", "margin %g error %g",
               (double)m, err);

@@ -1,4 +1,4 @@
-/* gaze_trace.h - deterministic synthetic gaze traces with a known true gaze, for the gaze
+/* bench/gaze_trace.h - deterministic synthetic gaze traces with a known true gaze, for the gaze
    filter's tests (tests/test_gaze.c) and benchmark (bench/bench_gaze.c). Test code, double
    precision; include it in one program (everything is static).
 
@@ -46,7 +46,10 @@ static uint64_t gt__rng(uint64_t *s) /* splitmix64 */
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
 }
-static double gt_u01(uint64_t *s) { return (double)(gt__rng(s) >> 11) * (1.0 / 9007199254740992.0); }
+static double gt_u01(uint64_t *s)
+{
+    return (double)(gt__rng(s) >> 11) * (1.0 / 9007199254740992.0);
+}
 static double gt_gauss(uint64_t *s)
 {
     double u = gt_u01(s), v = gt_u01(s);
@@ -120,7 +123,9 @@ static void gt_make(gt_trace *t, int which, uint64_t seed)
     int blinked = 0, k = 0;
     t->name = names[which % GT_NUM_TRACES];
     t->n_ms = 0; t->n_sacc = 0;
-    g.t = t; g.rng = seed * UINT64_C(0x632BE59BD9B4E019) + (uint64_t)(which + 1); g.x = 0.0; g.y = 0.0;
+    g.t = t;
+    g.rng = seed * UINT64_C(0x632BE59BD9B4E019) + (uint64_t)(which + 1);
+    g.x = 0.0; g.y = 0.0;
     gt_fixation(&g, 400);
     while (t->n_ms < 12000) {
         int pursue = which == 1 || (which == 2 && gt_u01(&g.rng) < 0.4);
