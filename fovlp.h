@@ -1834,6 +1834,10 @@ FOV__PRIV void fov__gaze_reset(fov_gaze_filter *f)
     f->saccades = k;
 }
 
+/* A microsecond difference as 32 bits, saturated (about 71 minutes): 32-bit targets convert
+   it to float without a 64-bit runtime helper. */
+FOV__PRIV uint32_t fov__us32(uint64_t d) { return d > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)d; }
+
 /* The smoothing weight of cutoff fc (Hz) for a time step of te seconds. */
 FOV__PRIV float fov__gaze_alpha(float fc, float te)
 {
@@ -1867,7 +1871,7 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
             *bad = FOV__MSG("gaze_filter_push: zero time step (the same timestamp twice)");
             return FOV_ERR_INVALID_ARG;
         }
-        if ((float)(t_us - f->t_us) > f->cfg.max_dt_ms * 1000.0f) {
+        if ((float)fov__us32(t_us - f->t_us) > f->cfg.max_dt_ms * 1000.0f) {
             *bad = FOV__MSG("gaze_filter_push: time step above cfg.max_dt_ms (tracking lost: "
                             "call _gaze_filter_reset)");
             return FOV_ERR_LIMIT;
@@ -1890,7 +1894,7 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
         *f = s;
         return FOV_OK;
     }
-    te = (float)(t_us - s.t_us) * 1e-6f;
+    te = (float)fov__us32(t_us - s.t_us) * 1e-6f;
     s.t_us = t_us;
     s.te_s = te;
     s.samples = s.samples < 0xFFFFFFFFu ? s.samples + 1u : s.samples;
@@ -1899,10 +1903,10 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
     k = s.head;
     for (i = 1u; i < s.count; ++i) {
         k = (s.head + FOV_GAZE_HISTORY - i) % FOV_GAZE_HISTORY;
-        if ((float)(t_us - s.hist_t[k]) >= s.cfg.window_ms * 1000.0f) break;
+        if ((float)fov__us32(t_us - s.hist_t[k]) >= s.cfg.window_ms * 1000.0f) break;
     }
     wx = x - s.hist_x[k]; wy = y - s.hist_y[k];
-    wt = (float)(t_us - s.hist_t[k]) * 1e-6f;
+    wt = (float)fov__us32(t_us - s.hist_t[k]) * 1e-6f;
     spd = wt > 0.0f ? FOV__SQRT(wx * wx + wy * wy) / wt : 0.0f;
     if (!s.saccade && spd > s.cfg.saccade_deg_s) {
         s.saccade = 1u;
