@@ -657,15 +657,19 @@ typedef struct fov_eye_plan {
 
    The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
    full-quality radii so that the true gaze stays inside them:
-       margin = accuracy_deg + 2.5 jitter + speed (latency_ms / 1000 + 1 / (2 pi fc))
-   capped at max_margin_deg (and max_margin_deg itself during a saccade). accuracy_deg is the
-   tracker's stated accuracy (its systematic error); jitter the RMS of the filtered gaze's
-   noise, from the filter's running estimate of the raw noise (noise_deg) scaled by the
-   smoothing (sqrt(a / (2 - a)) for an exponential smoother of weight a): a 2-D Gaussian
-   error exceeds 2.15 times its RMS in 1 % of samples, 2.5 times in 0.2 %; speed times the
-   latency is how far the eye moves before the frame shows, and speed / (2 pi fc) the
-   smoothing's own lag behind a moving eye. It grows with the latency and with the speed
-   (fc grows with the speed, but speed / fc and a do too). */
+       margin = accuracy_deg + 2.5 jitter + motion (latency_ms / 1000 + 1 / (2 pi fc))
+   capped at max_margin_deg. accuracy_deg is the tracker's stated accuracy (its systematic
+   error); jitter the RMS of the filtered gaze's noise, the filter's running estimate of the
+   raw noise (noise_deg) scaled by the smoothing (sqrt(a / (2 - a)) for an exponential
+   smoother of weight a): a 2-D Gaussian error exceeds 2.15 times its RMS in 1 % of samples,
+   2.5 times in 0.2 %; motion the speed of the filtered gaze (out_speed_deg_s) less twice the
+   speed the tracker's noise alone gives it (a n / te sqrt(ad / (2 - ad)), ad the velocity
+   smoother's weight: a still eye's output jitters, it does not move), times the latency (how
+   far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
+   a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
+   2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
+   fovea lands with it. The margin grows with the latency and with the output's speed.
+   bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
