@@ -11,6 +11,8 @@
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv;
 #                bench-perceptual: the three headers' savings at equal perceived quality per
 #                          display, bench/results/perceptual.csv; BENCH_ARGS=--quick);
+#                bench-gaze: the gaze filter and latency margin on generated gaze traces,
+#                          bench/results/gaze.csv (under a second);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid;
 #                make bench-sdf-native / bench-sdf-nosimd add rows of a -march=native and a
 #                FOVSDF_NO_SIMD build to sdf.csv, bench-sdf-all runs the three builds
@@ -34,7 +36,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual clean install \
+        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual bench-gaze clean install \
         web web-serve bench-web bench-web-native web-screenshot
 
 all: examples
@@ -84,7 +86,17 @@ $(BUILD)/lp_pt: examples/lp_pt.c examples/lp_pt_shade.h examples/pt_scenes.h fov
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
 
-examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic $(BUILD)/lp_pt
+# stereo: two off-axis eyes side by side, each with its own gaze (issue 16)
+$(BUILD)/sdf_stereo: examples/sdf_stereo.c fovsdf.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+$(BUILD)/pt_stereo: examples/pt_stereo.c fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+examples: $(BUILD)/sdf_basic $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic $(BUILD)/lp_pt \
+          $(BUILD)/sdf_stereo $(BUILD)/pt_stereo
 
 demo: $(BUILD)/sdf_scenes $(BUILD)/lp_sdf $(BUILD)/pt_basic
 	./$(BUILD)/sdf_scenes --out out
@@ -149,7 +161,16 @@ bench-lp: $(BUILD)/bench_lp
 	@mkdir -p bench/results
 	./$(BUILD)/bench_lp $(if $(FULL),--full) $(BENCH_ARGS)
 
-bench: bench-sdf bench-lp bench-pt bench-perceptual
+bench: bench-sdf bench-lp bench-pt bench-perceptual bench-gaze
+
+# issue 16: fov_gaze_filter and the latency margin on generated gaze traces (bench/bench_gaze.c)
+$(BUILD)/bench_gaze: bench/bench_gaze.c fovsdf.h bench/gaze_trace.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) $(WARN) -I. $< -lm -o $@
+
+bench-gaze: $(BUILD)/bench_gaze
+	@mkdir -p bench/results
+	./$(BUILD)/bench_gaze --out bench/results/gaze.csv
 
 # issue 13: fovsdf, fovlp and fovpt against full resolution by the eye-filtered FLIP of
 # examples/fovmetrics.h at three displays (bench/bench_perceptual.c)

@@ -30,6 +30,11 @@ QUICK START
 
    See examples/pt_basic.c for a complete program.
 
+   No eye tracker: fixed foveation, the gaze at the display's axis point and larger foveae
+      fovpt_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
+      fovpt_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // radii + 15 deg
+   With one: filter its samples and grow the radii by the latency margin (GAZE INPUT).
+
    Stereo, per-eye gaze: one context per eye (Axblad 2020, Sec. 3.2.1, and Kim et al. 2021,
    Fig. 4, render the eyes independently).
       fovpt_camera eye[2];  fovpt_camera_eyes(&head, 0.064f, eye);   // ipd in scene units
@@ -593,7 +598,7 @@ RECENT REVISION HISTORY
    failure calls it with a code, a specific message and the header's source line. */
 #ifndef FOV_SHARED_DECL_INCLUDED
 #define FOV_SHARED_DECL_INCLUDED 1
-#define FOV_SHARED_REVISION 3 /* the revision of this block; headers that differ must not mix */
+#define FOV_SHARED_REVISION 4 /* the revision of this block; headers that differ must not mix */
 
 #include <stddef.h>
 #include <stdint.h>
@@ -679,10 +684,12 @@ typedef struct fov_gaze {
        pos, target, up, fov_y_deg, width, height   all three (fovlp_camera_from ignores the
                                                    size: the TAA uses the fovlp image's)
        eye_offset                                  all three
-       tan_left, tan_right, tan_bottom, tan_top    fovpt only: fovsdf_init and
-                                                   fovlp_camera_from return FOV_ERR_UNSUPPORTED
-                                                   for non-zero ones (their tracers and the
-                                                   TAA reprojection assume a symmetric frustum)
+       tan_left, tan_right, tan_bottom, tan_top    fovsdf and fovpt (rays, eccentricity);
+                                                   fovlp through config.display
+                                                   (fovlp_camera_display) and config.taa.frustum
+                                                   (its reprojection); a symmetric camera (all
+                                                   0) gives the rays of earlier releases, bit
+                                                   for bit
    The defaults ("the fov_camera defaults", set by fovsdf_camera_init and fovpt_camera_init,
    the same in both): pos (0, 0, 5), target (0, 0, 0), up (0, 1, 0), fov_y_deg 60, the given
    width and height, eye_offset 0, tangents 0. A zeroed fov_camera with a size, pos and
@@ -698,7 +705,7 @@ typedef struct fov_camera {
     float eye_offset;       /* stereo: the pinhole moves by this along `right`, world units
                                (-ipd/2 for the left eye, +ipd/2 for the right one); the view
                                axis keeps its direction */
-    float tan_left, tan_right; /* off-axis frustum (fovpt): tangents of the angles from the */
+    float tan_left, tan_right; /* off-axis frustum (an HMD eye): tangents of the angles from the */
     float tan_bottom, tan_top; /* view axis to the left, right, bottom and top image edges,
                                positive for an edge on that side of the axis (left + right
                                > 0, bottom + top > 0); all 0: symmetric, from fov_y_deg */
@@ -714,7 +721,10 @@ typedef struct fov_camera {
    All zero assumes a symmetric frustum (the camera's axis through the image centre). For an
    off-axis frustum (an HMD eye with tangents l, r, b, t, as in OpenVR's GetProjectionRaw, the
    image W x H) give fov_y_deg = 2 atan((t + b) / 2), so f = H / (t + b), and
-   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovpt derives these from its camera.
+   axis_dx = f l - W / 2, axis_dy = f t - H / 2 (y down); fovsdf and fovpt derive these from
+   the camera when the display is all zero, *_camera_display gives them (for fovlp). The model
+   has square pixels: for tangents whose (l + r) / (t + b) differs from W / H, f follows the
+   vertical.
    Eccentricity of a point q of the image = the angle, in degrees, between the eye's rays
    through q and through the gaze point. This is the one definition all fov headers use. */
 typedef struct fov_display {
@@ -766,10 +776,107 @@ typedef struct fov_eye_plan {
     float e_quarter; /* from here a sample per 4 x 4 pixels suffices */
 } fov_eye_plan;
 
+/* ---- gaze input: filter, latency margin, fixed foveation (see each header's GAZE INPUT) --- */
+/* Gaze angles: a gaze point (x, y) in pixels of an image with eccentricity model m (fov_ecc
+   model: axis point (cx, cy), eye distance f) is, in degrees, h = atan2(x - cx, f) to the
+   right and v = atan2(y - cy, sqrt((x - cx)^2 + f^2)) downwards (a longitude and latitude
+   about the display's axis; the inverse is x = cx + f tan h, y = cy + f tan v / cos h). Near
+   the axis a step of one degree in h or v is one degree of eccentricity; 20 degrees off the
+   axis an h step is cos(v) of one. The filter works in these degrees.
+
+   The filter (Casiez, Roussel and Vogel, "1 Euro Filter: A Simple Speed-based Low-pass
+   Filter for Noisy Input in Interactive Systems", CHI 2012): per sample, with Te the time
+   step, a(fc) = 1 / (1 + 1 / (2 pi fc Te)):
+       velocity  dv = a(d_cutoff_hz) (x - x_prev) / Te + (1 - a(d_cutoff_hz)) dv_prev
+       cutoff    fc = min_cutoff_hz + beta |dv|         (|dv| in degrees per second)
+       position  x  = x_prev + max(a(fc), 1 / (n + 1)) (x_raw - x_prev)
+   one cutoff for both axes (|dv| the 2-D speed). n counts the samples since the last reset
+   or saccade landing: the first samples of a fixation are averaged (a running mean, the
+   best estimate of a still target) until the One Euro weight takes over, so the filter
+   settles in a few samples instead of its time constant 1 / (2 pi min_cutoff_hz).
+   Saccades (velocity-threshold identification, I-VT: Salvucci and Goldberg, "Identifying
+   Fixations and Saccades in Eye-Tracking Protocols", ETRA 2000): the speed of the raw gaze
+   over the last window_ms (the newest sample against the one window_ms before it, so the
+   tracker's noise is divided by the window, not by one sample step) above saccade_deg_s
+   starts a saccade; the output is then the raw sample (no smoothing lag while the eye
+   jumps). Below half of saccade_deg_s the saccade has landed: the filter restarts at the
+   landing sample (n = 0, velocity 0) so the fovea jumps with the eye instead of sliding.
+   100 deg/s: saccades of 2 degrees and more peak above 100 deg/s (the main sequence:
+   Bahill, Clark and Stark, "The main sequence, a tool for studying human eye movements",
+   Mathematical Biosciences 1975), smooth pursuit stays below about 30 to 50 deg/s, and a
+   tracker noise of 0.5 degrees RMS over a 20 ms window gives about 35 deg/s RMS of speed.
+   Error checks leave the filter unchanged: a timestamp not after the previous one
+   (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
+   the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
+   sample (FOV_ERR_NOT_FINITE), an angle beyond +-90 degrees (FOV_ERR_INVALID_ARG). A blink
+   shorter than max_dt_ms needs nothing: push no samples while the tracker reports none.
+
+   The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
+   full-quality radii so that the true gaze stays inside them:
+       margin = accuracy_deg + 2.5 jitter + motion (latency_ms / 1000 + 1 / (2 pi fc))
+   capped at max_margin_deg. accuracy_deg is the tracker's stated accuracy (its systematic
+   error); jitter the RMS of the filtered gaze's noise, the filter's running estimate of the
+   raw noise (noise_deg) scaled by the smoothing (sqrt(a / (2 - a)) for an exponential
+   smoother of weight a): a 2-D Gaussian error exceeds 2.15 times its RMS in 1 % of samples,
+   2.5 times in 0.2 %; motion the speed of the filtered gaze (out_speed_deg_s) less twice the
+   speed the tracker's noise alone gives it (a n / te sqrt(ad / (2 - ad)), ad the velocity
+   smoother's weight: a still eye's output jitters, it does not move), times the latency (how
+   far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
+   a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
+   2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
+   fovea lands with it. The margin grows with the latency and with the output's speed.
+   bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
+typedef struct fov_gaze_filter_config {
+    float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
+    float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
+                            [0, 10]; FOV_GAZE_BETA_NONE for 0                    0: 0.1 */
+    float d_cutoff_hz;   /* cutoff of the velocity estimate, Hz, (0, 100]            0: 1 */
+    float saccade_deg_s; /* saccade onset speed, deg/s, [20, 2000] (landing at half) 0: 100 */
+    float window_ms;     /* the saccade detector's speed window, ms, [1, 100]        0: 20 */
+    float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
+    float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
+                                                                                  0: 15 */
+} fov_gaze_filter_config;
+#define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
+#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window */
+/* Fixed foveation for users without an eye tracker: the gaze at the display's axis point
+   (the lens centre of an HMD, the screen centre of a monitor: _gaze_fixed) and the foveae
+   grown by this many degrees (_config_gaze_margin): most natural saccades are 15 degrees or
+   smaller and larger gaze shifts come with a head movement (Bahill, Adler and Stark, "Most
+   naturally occurring human saccades have magnitudes of 15 degrees or less", Investigative
+   Ophthalmology 1975), so a still head mostly looks within 15 degrees of straight ahead. */
+#define FOV_GAZE_FIXED_MARGIN_DEG 15.0f
+
+/* The filter's state, in caller memory (a few hundred bytes, no pointers: copy it freely).
+   Fill it with _gaze_filter_init; read x_deg, y_deg (the filtered gaze) and the rest after
+   each push; write nothing. */
+typedef struct fov_gaze_filter {
+    fov_gaze_filter_config cfg; /* resolved (defaults filled in) */
+    float x_deg, y_deg;   /* the filtered gaze, degrees (valid once samples > 0) */
+    float vx, vy;         /* its filtered velocity, deg/s */
+    float speed_deg_s;    /* |(vx, vy)| (during a saccade: the raw window speed) */
+    float ox, oy;         /* velocity of the filtered gaze itself (its steps over time,
+                             smoothed at d_cutoff_hz), deg/s: what the margin uses */
+    float out_speed_deg_s; /* |(ox, oy)| */
+    float te_s;           /* the last time step, seconds */
+    float cutoff_hz;      /* the position cutoff fc of the last sample */
+    float alpha;          /* the position weight of the last sample (1 in a saccade) */
+    float noise_deg;      /* running RMS of raw - filtered (2-D), the raw noise estimate */
+    float raw_x, raw_y;   /* the last raw sample, degrees */
+    uint32_t saccade;     /* 1 while a saccade is in flight (output = raw) */
+    uint32_t saccades;    /* saccades detected since init */
+    uint32_t samples;     /* samples since init or reset */
+    uint32_t settled;     /* samples since the last reset or landing (n above) */
+    uint64_t t_us;        /* the last sample's timestamp, microseconds */
+    uint32_t head, count; /* ring of the last raw samples (saccade window) */
+    uint64_t hist_t[FOV_GAZE_HISTORY];
+    float hist_x[FOV_GAZE_HISTORY], hist_y[FOV_GAZE_HISTORY];
+} fov_gaze_filter;
+
 #ifdef __cplusplus
 }
 #endif
-#elif FOV_SHARED_REVISION != 3
+#elif FOV_SHARED_REVISION != 4
 #error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
 #endif /* FOV_SHARED_DECL_INCLUDED */
 /* ==== FOV_SHARED_END decl ==================================================================== */
@@ -1240,6 +1347,57 @@ FOVPT_API float fovpt_eye_density(const fov_eye *eye, float ppd, float ecc_deg);
 FOVPT_API float fovpt_eye_ecc(const fov_eye *eye, float ppd, float density);
 FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
                                     fov_eye_plan *plan);
+
+/* GAZE INPUT (the shared model: see fov_gaze_filter_config; the same functions in fovsdf.h,
+   fovlp.h and fovpt.h). A filter in your memory conditions the tracker's raw samples; its
+   state, the tracker's accuracy and the system's latency give a margin that
+   fovpt_config_gaze_margin adds to the config's full-quality radii. No eye tracker: fixed
+   foveation, fovpt_gaze_fixed (the display's axis point) with FOV_GAZE_FIXED_MARGIN_DEG.
+      fov_gaze_filter gf;  fovpt_gaze_filter_init(&gf, NULL);           // once (NULL: defaults)
+      // per tracker sample (timestamps in microseconds, strictly increasing):
+      fovpt_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
+      // per frame:
+      float m;  fovpt_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
+      fovpt_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+   _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
+   FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
+   _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
+   _gaze_filter_push: one raw sample (t_us, x_deg right, y_deg down; the gaze angles of
+   fov_gaze_filter_config); the filtered gaze is then f->x_deg, f->y_deg. Errors leave f as
+   it was (see fov_gaze_filter_config). _gaze_filter_push_px: the same for a sample in pixels
+   of the image of eccentricity model m (only m's axis point and f_px are used), the filtered
+   gaze in pixels in *out (may be NULL). _gaze_to_deg / _gaze_from_deg: pixels to gaze angles
+   and back (FOV_ERR_INVALID_ARG beyond +-90 degrees or off the float range).
+   _gaze_margin: the margin in degrees for the filter's last state (FOV_ERR_INVALID_ARG for a
+   negative accuracy or latency, *margin_deg then the cap). _gaze_fixed: the gaze at the
+   display's axis point (width / 2 + axis_dx, height / 2 + axis_dy; display may be NULL).
+   _camera_display: the fov_display of a camera's own frustum, off-axis or not (fov_y_deg,
+   axis_dx, axis_dy as fov_display describes; the eccentricity model every header derives
+   from a camera when config.display is all zero). */
+FOVPT_API fov_gaze_filter_config fovpt_gaze_filter_config_default(void);
+FOVPT_API fov_result fovpt_gaze_filter_init(fov_gaze_filter *f,
+                                            const fov_gaze_filter_config *cfg);
+FOVPT_API void fovpt_gaze_filter_reset(fov_gaze_filter *f);
+FOVPT_API fov_result fovpt_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us, float x_deg,
+                                            float y_deg);
+FOVPT_API fov_result fovpt_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
+                                               uint64_t t_us, fov_gaze raw, fov_gaze *out);
+FOVPT_API fov_result fovpt_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2]);
+FOVPT_API fov_result fovpt_gaze_from_deg(const fov_ecc_model *m, const float deg[2],
+                                         fov_gaze *px);
+FOVPT_API fov_result fovpt_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
+                                       float latency_ms, float *margin_deg);
+FOVPT_API fov_result fovpt_gaze_fixed(const fov_display *display, uint32_t width,
+                                      uint32_t height, fov_gaze *out);
+FOVPT_API fov_result fovpt_camera_display(const fov_camera *cam, fov_display *out);
+/* The margin applied: *out = base resolved (fovpt_config_resolve) with every full-quality
+   and visual-field radius grown by margin_deg (>= 0): the layers' radius_deg (layer[0]'s
+   only when it is a mask, > 0), zones.inner_deg and middle_deg, selective.e_deg[0..4] (the
+   order of each set kept). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin <
+   0), FOV_ERR_LIMIT (a radius reaching 180 degrees), or the base's resolve error; *out
+   written only on success. */
+FOVPT_API fov_result fovpt_config_gaze_margin(const fovpt_config *base, float margin_deg,
+                                              fovpt_config *out);
 
 /* Context: working memory for a config and camera, then init (validates everything). */
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
@@ -2077,6 +2235,284 @@ FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov
     out->e_quarter = fov__eye_ecc(e, ppd, 0.25f);
     return FOV_OK;
 }
+/* ---- gaze input (see fov_gaze_filter_config) -------------------------------------------- */
+/* The config with defaults; FOV_ERR_* (and which field) for bad fields. */
+FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_filter_config *o,
+                                   const char **bad)
+{
+    fov_gaze_filter_config c;
+    if (in) c = *in; else FOV_MEMSET(&c, 0, sizeof c);
+    *bad = FOV__MSG("");
+    if (!fov__finite(c.min_cutoff_hz) || !fov__finite(c.beta) || !fov__finite(c.d_cutoff_hz) ||
+        !fov__finite(c.saccade_deg_s) || !fov__finite(c.window_ms) ||
+        !fov__finite(c.max_dt_ms) || !fov__finite(c.max_margin_deg)) {
+        *bad = FOV__MSG("gaze filter config: a field is NaN or infinite");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (fov__is0(c.min_cutoff_hz)) c.min_cutoff_hz = 0.5f;
+    if (fov__is0(c.beta)) c.beta = 0.3f;
+    else if (c.beta < 0.0f && c.beta >= FOV_GAZE_BETA_NONE && c.beta <= FOV_GAZE_BETA_NONE)
+        c.beta = 0.0f;
+    if (fov__is0(c.d_cutoff_hz)) c.d_cutoff_hz = 1.0f;
+    if (fov__is0(c.saccade_deg_s)) c.saccade_deg_s = 100.0f;
+    if (fov__is0(c.window_ms)) c.window_ms = 20.0f;
+    if (fov__is0(c.max_dt_ms)) c.max_dt_ms = 500.0f;
+    if (fov__is0(c.max_margin_deg)) c.max_margin_deg = 15.0f;
+    if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
+        *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
+    else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
+        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] or FOV_GAZE_BETA_NONE");
+    else if (!(c.d_cutoff_hz > 0.0f && c.d_cutoff_hz <= 100.0f))
+        *bad = FOV__MSG("gaze filter config: d_cutoff_hz must be in (0, 100] (0: 1)");
+    else if (!(c.saccade_deg_s >= 20.0f && c.saccade_deg_s <= 2000.0f))
+        *bad = FOV__MSG("gaze filter config: saccade_deg_s must be in [20, 2000] (0: 100)");
+    else if (!(c.window_ms >= 1.0f && c.window_ms <= 100.0f))
+        *bad = FOV__MSG("gaze filter config: window_ms must be in [1, 100] (0: 20)");
+    else if (!(c.max_dt_ms > 0.0f && c.max_dt_ms <= 1e6f))
+        *bad = FOV__MSG("gaze filter config: max_dt_ms must be in (0, 1e6] (0: 500)");
+    else if (!(c.max_margin_deg > 0.0f && c.max_margin_deg <= 90.0f))
+        *bad = FOV__MSG("gaze filter config: max_margin_deg must be in (0, 90] (0: 15)");
+    else {
+        *o = c;
+        return FOV_OK;
+    }
+    return FOV_ERR_INVALID_ARG;
+}
+
+FOV__PRIV void fov__gaze_reset(fov_gaze_filter *f)
+{
+    fov_gaze_filter_config c = f->cfg;
+    uint32_t k = f->saccades;
+    FOV_MEMSET(f, 0, sizeof *f);
+    f->cfg = c;
+    f->saccades = k;
+}
+
+/* A microsecond difference as 32 bits, saturated (about 71 minutes): 32-bit targets convert
+   it to float without a 64-bit runtime helper. */
+FOV__PRIV uint32_t fov__us32(uint64_t d) { return d > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)d; }
+
+/* The smoothing weight of cutoff fc (Hz) for a time step of te seconds. */
+FOV__PRIV float fov__gaze_alpha(float fc, float te)
+{
+    float r = 2.0f * FOV__PI * fc * te;
+    return r / (r + 1.0f);
+}
+
+/* One sample; on any error *f is left as it was and *bad names the rule. */
+FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, float y,
+                                    const char **bad)
+{
+    fov_gaze_filter s;
+    float te, wx, wy, wt, spd, a, ad, dvx, dvy, ex, ey, sp;
+    uint32_t i, k;
+    *bad = FOV__MSG("");
+    if (!fov__finite(x) || !fov__finite(y)) {
+        *bad = FOV__MSG("gaze_filter_push: sample NaN or infinite (skip the tracker's invalid "
+                        "samples)");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (!(fov__absf(x) <= 90.0f && fov__absf(y) <= 90.0f)) {
+        *bad = FOV__MSG("gaze_filter_push: sample beyond +-90 degrees");
+        return FOV_ERR_INVALID_ARG;
+    }
+    if (f->samples > 0u) {
+        if (t_us < f->t_us) {
+            *bad = FOV__MSG("gaze_filter_push: timestamp before the previous sample's");
+            return FOV_ERR_INVALID_ARG;
+        }
+        if (t_us == f->t_us) {
+            *bad = FOV__MSG("gaze_filter_push: zero time step (the same timestamp twice)");
+            return FOV_ERR_INVALID_ARG;
+        }
+        if ((float)fov__us32(t_us - f->t_us) > f->cfg.max_dt_ms * 1000.0f) {
+            *bad = FOV__MSG("gaze_filter_push: time step above cfg.max_dt_ms (tracking lost: "
+                            "call _gaze_filter_reset)");
+            return FOV_ERR_LIMIT;
+        }
+    }
+    s = *f;
+    /* the ring of raw samples */
+    s.head = (s.head + 1u) % FOV_GAZE_HISTORY;
+    s.hist_t[s.head] = t_us; s.hist_x[s.head] = x; s.hist_y[s.head] = y;
+    if (s.count < FOV_GAZE_HISTORY) s.count++;
+    s.raw_x = x; s.raw_y = y;
+    if (s.samples == 0u) {
+        s.x_deg = x; s.y_deg = y;
+        s.vx = s.vy = s.speed_deg_s = 0.0f;
+        s.ox = s.oy = s.out_speed_deg_s = 0.0f;
+        s.cutoff_hz = s.cfg.min_cutoff_hz;
+        s.alpha = 1.0f;
+        s.samples = 1u; s.settled = 1u; s.saccade = 0u;
+        s.t_us = t_us;
+        *f = s;
+        return FOV_OK;
+    }
+    te = (float)fov__us32(t_us - s.t_us) * 1e-6f;
+    s.t_us = t_us;
+    s.te_s = te;
+    s.samples = s.samples < 0xFFFFFFFFu ? s.samples + 1u : s.samples;
+    /* the window speed: the newest sample against the newest one at least window_ms older
+       (or the oldest kept) */
+    k = s.head;
+    for (i = 1u; i < s.count; ++i) {
+        k = (s.head + FOV_GAZE_HISTORY - i) % FOV_GAZE_HISTORY;
+        if ((float)fov__us32(t_us - s.hist_t[k]) >= s.cfg.window_ms * 1000.0f) break;
+    }
+    wx = x - s.hist_x[k]; wy = y - s.hist_y[k];
+    wt = (float)fov__us32(t_us - s.hist_t[k]) * 1e-6f;
+    spd = wt > 0.0f ? FOV__SQRT(wx * wx + wy * wy) / wt : 0.0f;
+    if (!s.saccade && spd > s.cfg.saccade_deg_s) {
+        s.saccade = 1u;
+        s.saccades++;
+    } else if (s.saccade && spd < 0.5f * s.cfg.saccade_deg_s) {
+        /* landing: restart at the landing sample */
+        s.saccade = 0u;
+        s.x_deg = x; s.y_deg = y;
+        s.vx = s.vy = s.speed_deg_s = 0.0f;
+        s.ox = s.oy = s.out_speed_deg_s = 0.0f;
+        s.cutoff_hz = s.cfg.min_cutoff_hz;
+        s.alpha = 1.0f;
+        s.settled = 1u;
+        *f = s;
+        return FOV_OK;
+    }
+    if (s.saccade) {
+        s.x_deg = x; s.y_deg = y;
+        s.vx = wt > 0.0f ? wx / wt : 0.0f; s.vy = wt > 0.0f ? wy / wt : 0.0f;
+        s.speed_deg_s = s.out_speed_deg_s = spd;
+        s.ox = s.vx; s.oy = s.vy;
+        s.alpha = 1.0f;
+        *f = s;
+        return FOV_OK;
+    }
+    /* One Euro */
+    ad = fov__gaze_alpha(s.cfg.d_cutoff_hz, te);
+    ex = x - s.x_deg; ey = y - s.y_deg;
+    dvx = ex / te; dvy = ey / te;
+    s.vx += ad * (dvx - s.vx);
+    s.vy += ad * (dvy - s.vy);
+    sp = FOV__SQRT(s.vx * s.vx + s.vy * s.vy);
+    s.speed_deg_s = sp;
+    s.cutoff_hz = s.cfg.min_cutoff_hz + s.cfg.beta * sp;
+    a = fov__gaze_alpha(s.cutoff_hz, te);
+    if (a < 1.0f / (float)(s.settled + 1u)) a = 1.0f / (float)(s.settled + 1u);
+    s.alpha = a;
+    s.x_deg += a * ex;
+    s.y_deg += a * ey;
+    s.ox += ad * (a * ex / te - s.ox);
+    s.oy += ad * (a * ey / te - s.oy);
+    s.out_speed_deg_s = FOV__SQRT(s.ox * s.ox + s.oy * s.oy);
+    s.settled = s.settled < 0xFFFFFFFFu ? s.settled + 1u : s.settled;
+    /* the raw noise: a running mean square of the innovation over about a second (a
+       running mean for the first samples) */
+    {
+        float an = fov__gaze_alpha(0.16f, te), e2 = ex * ex + ey * ey, n2;
+        if (an < 1.0f / (float)s.samples) an = 1.0f / (float)s.samples;
+        n2 = s.noise_deg * s.noise_deg;
+        n2 += an * (e2 - n2);
+        s.noise_deg = FOV__SQRT(n2);
+    }
+    if (!fov__finite(s.x_deg) || !fov__finite(s.y_deg) || !fov__finite(s.vx) ||
+        !fov__finite(s.vy) || !fov__finite(s.noise_deg)) {
+        *bad = FOV__MSG("gaze_filter_push: the state overflows (time step too small)");
+        return FOV_ERR_INVALID_ARG;
+    }
+    *f = s;
+    return FOV_OK;
+}
+
+/* The speed of the filtered gaze beyond what the tracker's noise alone gives it: a still eye
+   seen through noise of RMS n (2-D) moves the output by a n per sample, whose velocity,
+   smoothed with weight ad, has an RMS of a n / te sqrt(ad / (2 - ad)); twice that is
+   subtracted (a still eye's output speed exceeds it in 2 % of samples). */
+FOV__PRIV float fov__gaze_motion(const fov_gaze_filter *f)
+{
+    float te = f->te_s > 0.0f ? f->te_s : 1.0f, ad = fov__gaze_alpha(f->cfg.d_cutoff_hz, te);
+    float sn = fov__clampf(f->alpha, 0.0f, 1.0f) * f->noise_deg / te * FOV__SQRT(ad / (2.0f - ad));
+    float v = f->out_speed_deg_s - 2.0f * sn;
+    return v > 0.0f ? v : 0.0f;
+}
+
+/* The margin in degrees (see fov_gaze_filter_config); speed, cutoff and alpha from the
+   filter. Bad input: the cap (the safe answer) and FOV_ERR_*. */
+FOV__PRIV fov_result fov__gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
+                                      float latency_ms, float *out)
+{
+    float cap, m, jit, a, fc;
+    if (!f || !out) return FOV_ERR_NULL;
+    cap = f->cfg.max_margin_deg > 0.0f && f->cfg.max_margin_deg <= 90.0f ? f->cfg.max_margin_deg
+                                                                          : 15.0f;
+    *out = cap;
+    if (!fov__finite(accuracy_deg) || !fov__finite(latency_ms)) return FOV_ERR_NOT_FINITE;
+    if (accuracy_deg < 0.0f || latency_ms < 0.0f || latency_ms > 1e6f || accuracy_deg > 90.0f)
+        return FOV_ERR_INVALID_ARG;
+    if (f->samples == 0u) return FOV_OK;
+    if (f->saccade) {
+        /* the output is the raw sample; the eye sees next to nothing while it jumps */
+        m = accuracy_deg + 2.5f * f->noise_deg;
+        *out = m < cap ? m : cap;
+        return FOV_OK;
+    }
+    a = fov__clampf(f->alpha, 0.0f, 1.0f);
+    fc = f->cutoff_hz > 0.0f ? f->cutoff_hz : 1e-3f;
+    jit = f->noise_deg * FOV__SQRT(a / (2.0f - a));
+    m = accuracy_deg + 2.5f * jit +
+        fov__gaze_motion(f) * (latency_ms * 1e-3f + 1.0f / (2.0f * FOV__PI * fc));
+    if (!(m < cap)) m = cap; /* NaN too */
+    *out = m;
+    return FOV_OK;
+}
+
+/* Pixels to gaze degrees and back (see fov_gaze_filter_config); 0 when not finite. */
+FOV__PRIV int fov__gaze_to_deg(const fov_ecc_model *m, float x, float y, float d[2])
+{
+    float dx = x - m->cx, dy = y - m->cy;
+    if (!fov__finite(dx) || !fov__finite(dy) || !(m->f_px > 0.0f)) return 0;
+    d[0] = FOV__ATAN2(dx, m->f_px) / FOV__DEG;
+    d[1] = FOV__ATAN2(dy, FOV__SQRT(dx * dx + m->f_px * m->f_px)) / FOV__DEG;
+    return fov__finite(d[0]) && fov__finite(d[1]);
+}
+FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float *x, float *y)
+{
+    float h = d[0] * FOV__DEG, v = d[1] * FOV__DEG, ch;
+    if (!(fov__absf(d[0]) < 90.0f && fov__absf(d[1]) < 90.0f) || !(m->f_px > 0.0f)) return 0;
+    ch = FOV__COS(h);
+    *x = m->cx + m->f_px * FOV__TAN(h);
+    *y = m->cy + m->f_px * FOV__TAN(v) / ch;
+    return fov__finite(*x) && fov__finite(*y);
+}
+
+/* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
+   point of tangent 0); the camera's tangents, or the symmetric ones of fov_y_deg (0: 60).
+   FOV_ERR_* for bad fields. */
+FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
+{
+    float tl, tr, tb, tt, f, fy;
+    if (!cam || !d) return FOV_ERR_NULL;
+    if (cam->width == 0 || cam->height == 0) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(cam->fov_y_deg) || !fov__finite(cam->tan_left) ||
+        !fov__finite(cam->tan_right) || !fov__finite(cam->tan_bottom) ||
+        !fov__finite(cam->tan_top))
+        return FOV_ERR_NOT_FINITE;
+    FOV_MEMSET(d, 0, sizeof *d);
+    if (fov__is0(cam->tan_left) && fov__is0(cam->tan_right) && fov__is0(cam->tan_bottom) &&
+        fov__is0(cam->tan_top)) {
+        fy = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
+        if (!(fy > 0.0f && fy < 180.0f)) return FOV_ERR_INVALID_ARG;
+        d->fov_y_deg = fy;
+        return FOV_OK;
+    }
+    tl = cam->tan_left; tr = cam->tan_right; tb = cam->tan_bottom; tt = cam->tan_top;
+    if (!(tl + tr > 1e-6f) || !(tb + tt > 1e-6f) || tl > 1e6f || tr > 1e6f || tb > 1e6f ||
+        tt > 1e6f)
+        return FOV_ERR_INVALID_ARG;
+    f = (float)cam->height / (tt + tb);
+    d->fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, f) / FOV__DEG;
+    d->axis_dx = tl * f - 0.5f * (float)cam->width;
+    d->axis_dy = tt * f - 0.5f * (float)cam->height;
+    return FOV_OK;
+}
 #endif /* FOV__SHARED_IMPL_INCLUDED */
 /* ==== FOV_SHARED_END impl ==================================================================== */
 
@@ -2187,6 +2623,125 @@ FOVPT_API float fovpt_eye_ecc(const fov_eye *eye, float ppd, float density)
 FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
                                     fov_eye_plan *plan)
 { return fov__eye_plan(eye, m, plan); }
+
+/* ---- gaze input (GAZE INPUT; the shared fov__gaze_*) ------------------------------------- */
+FOVPT_API fov_gaze_filter_config fovpt_gaze_filter_config_default(void)
+{
+    fov_gaze_filter_config c;
+    const char *bad;
+    FOV_MEMSET(&c, 0, sizeof c);
+    (void)fov__gaze_cfg(0, &c, &bad);
+    return c;
+}
+FOVPT_API fov_result fovpt_gaze_filter_init(fov_gaze_filter *f, const fov_gaze_filter_config *cfg)
+{
+    fov_gaze_filter_config c;
+    const char *bad;
+    fov_result r;
+    if (!f) return FOV_ERR_NULL;
+    r = fov__gaze_cfg(cfg, &c, &bad);
+    if (r != FOV_OK) return r;
+    FOV_MEMSET(f, 0, sizeof *f);
+    f->cfg = c;
+    return FOV_OK;
+}
+FOVPT_API void fovpt_gaze_filter_reset(fov_gaze_filter *f)
+{
+    if (f) fov__gaze_reset(f);
+}
+FOVPT_API fov_result fovpt_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us, float x_deg,
+                                            float y_deg)
+{
+    const char *bad;
+    if (!f) return FOV_ERR_NULL;
+    return fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+}
+FOVPT_API fov_result fovpt_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
+                                               uint64_t t_us, fov_gaze raw, fov_gaze *out)
+{
+    float d[2];
+    fov_result r;
+    if (!f || !m) return FOV_ERR_NULL;
+    if (!fov__finite(raw.x) || !fov__finite(raw.y)) return FOV_ERR_NOT_FINITE;
+    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) return FOV_ERR_INVALID_ARG;
+    r = fovpt_gaze_filter_push(f, t_us, d[0], d[1]);
+    if (r != FOV_OK || !out) return r;
+    d[0] = f->x_deg; d[1] = f->y_deg;
+    if (!fov__gaze_from_deg(m, d, &out->x, &out->y)) return FOV_ERR_INVALID_ARG;
+    return FOV_OK;
+}
+FOVPT_API fov_result fovpt_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2])
+{
+    if (!m || !deg) return FOV_ERR_NULL;
+    if (!fov__finite(px.x) || !fov__finite(px.y)) return FOV_ERR_NOT_FINITE;
+    return fov__gaze_to_deg(m, px.x, px.y, deg) ? FOV_OK : FOV_ERR_INVALID_ARG;
+}
+FOVPT_API fov_result fovpt_gaze_from_deg(const fov_ecc_model *m, const float deg[2], fov_gaze *px)
+{
+    fov_gaze g;
+    if (!m || !deg || !px) return FOV_ERR_NULL;
+    if (!fov__finite(deg[0]) || !fov__finite(deg[1])) return FOV_ERR_NOT_FINITE;
+    if (!fov__gaze_from_deg(m, deg, &g.x, &g.y)) return FOV_ERR_INVALID_ARG;
+    *px = g;
+    return FOV_OK;
+}
+FOVPT_API fov_result fovpt_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
+                                       float latency_ms, float *margin_deg)
+{
+    return fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+}
+FOVPT_API fov_result fovpt_gaze_fixed(const fov_display *display, uint32_t width,
+                                      uint32_t height, fov_gaze *out)
+{
+    float dx = display ? display->axis_dx : 0.0f, dy = display ? display->axis_dy : 0.0f;
+    if (!out) return FOV_ERR_NULL;
+    if (width == 0 || height == 0) return FOV_ERR_INVALID_ARG;
+    if (!fov__finite(dx) || !fov__finite(dy)) return FOV_ERR_NOT_FINITE;
+    out->x = 0.5f * (float)width + dx;
+    out->y = 0.5f * (float)height + dy;
+    return FOV_OK;
+}
+FOVPT_API fov_result fovpt_camera_display(const fov_camera *cam, fov_display *out)
+{
+    fov_display d;
+    fov_result r = fov__camera_display(cam, &d);
+    if (r == FOV_OK && out) *out = d;
+    return out ? r : FOV_ERR_NULL;
+}
+FOVPT_API fov_result fovpt_config_gaze_margin(const fovpt_config *base, float margin_deg,
+                                              fovpt_config *out)
+{
+    fovpt_config c;
+    fov_result r;
+    uint32_t i;
+    int over = 0;
+    if (!base || !out) return FOV_ERR_NULL;
+    if (!fov__finite(margin_deg))
+        FOVPT__FAIL(&base->logger, FOV_ERR_NOT_FINITE,
+                    "config_gaze_margin: margin NaN or infinite");
+    if (margin_deg < 0.0f)
+        FOVPT__FAIL(&base->logger, FOV_ERR_INVALID_ARG,
+                    "config_gaze_margin: margin must be >= 0");
+    r = fovpt_config_resolve(base, &c);
+    if (r != FOV_OK) return r;
+    for (i = 0; i < c.layers.count && i < FOVPT_MAX_LAYERS; ++i)
+        if (c.layers.layer[i].radius_deg > 0.0f) {
+            c.layers.layer[i].radius_deg += margin_deg;
+            over |= !(c.layers.layer[i].radius_deg < 180.0f);
+        }
+    c.zones.inner_deg += margin_deg;
+    c.zones.middle_deg += margin_deg;
+    over |= !(c.zones.middle_deg < 180.0f) || !(c.zones.inner_deg < 180.0f);
+    for (i = 0; i < 5u; ++i) {
+        c.selective.e_deg[i] += margin_deg;
+        over |= !(c.selective.e_deg[i] < 180.0f);
+    }
+    if (over)
+        FOVPT__FAIL(&base->logger, FOV_ERR_LIMIT,
+                    "config_gaze_margin: a layer, zone or selective radius reaches 180");
+    *out = c;
+    return FOV_OK;
+}
 
 FOVPT_API const char *fovpt_method_name(uint32_t method)
 {

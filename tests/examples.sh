@@ -41,6 +41,29 @@ if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. bench/be
 else
     bad "bench_pt build"
 fi
+# stereo: two off-axis eyes side by side (fovsdf 2 x 160x176, fovpt 2 x 128x144); the two
+# halves differ (each eye its own frustum, offset and gaze) and neither is blank
+for ex in "sdf_stereo 320 176" "pt_stereo 256 144"; do
+    set -- $ex
+    if $CC -std=c99 -O2 $W -I. examples/$1.c -lm -o build/examples/$1; then ok "$1 builds with $W"; else bad "$1 build"; continue; fi
+    hdr=$(printf 'P6
+%s %s
+255' "$2" "$3")
+    if build/examples/$1 > build/examples/$1.ppm 2>/dev/null && [ "$(head -c ${#hdr} build/examples/$1.ppm)" = "$hdr" ] \
+       && [ "$(stat -c %s build/examples/$1.ppm)" -eq $((${#hdr} + 1 + $2 * $3 * 3)) ] \
+       && python3 - "build/examples/$1.ppm" "$2" "$3" <<'PY'
+import sys
+d = open(sys.argv[1], 'rb').read(); w, h = int(sys.argv[2]), int(sys.argv[3]); px = d[len(d) - w * h * 3:]
+left = b''.join(px[y * w * 3:y * w * 3 + w * 3 // 2] for y in range(h))
+right = b''.join(px[y * w * 3 + w * 3 // 2:(y + 1) * w * 3] for y in range(h))
+sys.exit(0 if left != right and len(set(left)) > 8 and len(set(right)) > 8 else 1)
+PY
+    then
+        ok "$1 writes a ${2}x$3 PPM, two different non-blank eyes"
+    else
+        bad "$1 output"
+    fi
+done
 # fovlp + fovsdf: frames written, and frame 0 matches a full-resolution render in the gaze disc
 if $CC -std=c99 -O2 $W -I. examples/lp_sdf.c -lm -o build/examples/lp_sdf; then
     ok "lp_sdf builds with $W"

@@ -166,6 +166,9 @@ run_section style bash tests/style.sh
 three_builds camera tests/test_camera.c
 # fov_eye: the shared eye model against Guenter et al. 2012, densities, plans, bad input
 three_builds eye tests/test_eye.c
+# fov_gaze_filter: One Euro filter with saccade reset, the latency margin, fixed foveation,
+# the gaze trace generator
+three_builds gaze tests/test_gaze.c
 # errors name the field and the rule, once per failure, in the default build (and with
 # FOV_NO_ERROR_STRINGS: the codes still logged, every message "")
 three_builds errors tests/test_errors.c

@@ -450,9 +450,9 @@ static void test_eye_offset(void)
     }
 }
 
-/* 6. fields a header does not support: off-axis tangents in fovsdf (FOV_ERR_UNSUPPORTED,
-   logged with the field's name) and in fovlp_camera_from */
-static void test_unsupported(void)
+/* 6. off-axis tangents (an HMD eye): accepted by every header; bad tangents rejected and
+   logged with the field's name */
+static void test_off_axis_errors(void)
 {
     fovsdf_camera cam;
     fovsdf_ctx ctx;
@@ -470,20 +470,346 @@ static void test_unsupported(void)
     cam.tan_bottom = 0.5f;
     cam.tan_top = 0.6f;
     e = sdf_ctx(&ctx, &cam, &b, &lg);
-    check(e == FOV_ERR_UNSUPPORTED && r.calls == 1 && r.code == (int32_t)FOV_ERR_UNSUPPORTED,
-          "unsupported_sdf_tangents_rejected_and_logged", "%s, %d log calls",
+    check(e == FOV_OK && r.calls == 0 && ctx.off_axis == 1u, "off_axis_sdf_accepted", "%s",
+          fovsdf_result_string(e));
+    e = fovlp_camera_from(&cam, &lc);
+    check(e == FOV_OK && fabsf(lc.tan_half_y - 0.55f) < 1e-6f, "off_axis_lp_camera_from",
+          "%s %g", fovlp_result_string(e), (double)lc.tan_half_y);
+    cam.tan_left = -0.7f; /* left + right <= 0 */
+    e = sdf_ctx(&ctx, &cam, &b, &lg);
+    check(e == FOV_ERR_INVALID_ARG && r.calls == 1 && r.code == (int32_t)FOV_ERR_INVALID_ARG,
+          "off_axis_sdf_bad_tangents_rejected_and_logged", "%s, %d log calls",
           fovsdf_result_string(e), r.calls);
 #ifndef FOV_NO_ERROR_STRINGS
-    check(strstr(r.msg, "tan_") != NULL, "unsupported_sdf_tangents_message_names_field",
-          "message \"%s\"", r.msg);
+    check(strstr(r.msg, "tan_") != NULL, "off_axis_sdf_message_names_field", "message \"%s\"",
+          r.msg);
 #endif
-    e = fovlp_camera_from(&cam, &lc);
-    check(e == FOV_ERR_UNSUPPORTED, "unsupported_lp_tangents", "%s", fovlp_result_string(e));
+    check(fovlp_camera_from(&cam, &lc) == FOV_ERR_INVALID_ARG, "off_axis_lp_bad_tangents", "-");
+    cam.tan_left = (float)NAN;
+    check(sdf_ctx(&ctx, &cam, &b, NULL) == FOV_ERR_NOT_FINITE, "off_axis_sdf_nan_tangent", "-");
     cam.tan_left = cam.tan_right = cam.tan_bottom = 0.0f;
-    cam.tan_top = -0.0f; /* -0 is 0 */
+    cam.tan_top = -0.0f; /* -0 is 0: symmetric */
     e = sdf_ctx(&ctx, &cam, &b, &lg);
-    check(e == FOV_OK && fovlp_camera_from(&cam, &lc) == FOV_OK, "unsupported_zero_tangents_fine",
-          "%s", fovsdf_result_string(e));
+    check(e == FOV_OK && ctx.off_axis == 0u && fovlp_camera_from(&cam, &lc) == FOV_OK,
+          "zero_tangents_symmetric", "%s", fovsdf_result_string(e));
+    {
+        fovlp_config lcfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 64, 48), out;
+        lcfg.taa.frustum[0] = 0.5f;
+        lcfg.taa.frustum[1] = -0.6f;
+        check(fovlp_config_resolve(&lcfg, &out) == FOV_ERR_INVALID_ARG, "lp_bad_frustum", "-");
+        lcfg.taa.frustum[1] = (float)INFINITY;
+        check(fovlp_config_resolve(&lcfg, &out) == FOV_ERR_NOT_FINITE, "lp_inf_frustum", "-");
+    }
+}
+
+/* 7. symmetric frusta are today's camera, bit for bit: with the tangents 0, fovsdf's rays are
+   the formula of fov_camera worked out here in the same float operations (u = (x / W 2 - 1)
+   tan(fov / 2) W / H, v = (1 - y / H 2) tan(fov / 2), fwd + u right + v up, normalised the
+   library's way: the three divisions by the length) from fovsdf_camera_basis's frame; the
+   context's eccentricity model is the one fovsdf_ecc_init gives for the camera's field of
+   view */
+static void test_symmetric_bitwise(void)
+{
+    int it, bad = 0, n = 0;
+    for (it = 0; it < 200; ++it) {
+        fovsdf_camera cam;
+        fovsdf_ctx ctx;
+        fov_ecc_model em;
+        float rt[3], up[3], fw[3], tanh, asp;
+        ball b = {{0.0f, 0.0f, 0.0f}, 0.1f};
+        int k, j;
+        fovsdf_camera_init(&cam, 8u + (uint32_t)frand(0.0f, 900.0f),
+                           8u + (uint32_t)frand(0.0f, 900.0f));
+        for (k = 0; k < 3; ++k) {
+            cam.pos[k] = frand(-20.0f, 20.0f);
+            cam.target[k] = frand(-20.0f, 20.0f);
+        }
+        cam.fov_y_deg = frand(10.0f, 150.0f);
+        if (it % 2) cam.eye_offset = frand(-0.05f, 0.05f);
+        if (sdf_ctx(&ctx, &cam, &b, NULL) != FOV_OK ||
+            fovsdf_camera_basis(&cam, rt, up, fw) != FOV_OK) {
+            bad++;
+            continue;
+        }
+        tanh = tanf(0.5f * cam.fov_y_deg * 0.0174532925199433f);
+        asp = (float)cam.width / (float)cam.height;
+        {
+            fov_gaze g;
+            g.x = 0.5f * (float)cam.width;
+            g.y = 0.5f * (float)cam.height;
+            fovsdf_ecc_init(&em, NULL, cam.fov_y_deg, cam.width, cam.height, g);
+            if (memcmp(&em, &ctx.ecc, sizeof em)) bad++; /* the same call as before */
+        }
+        for (j = 0; j < 10; ++j) {
+            float x = frand(0.0f, 1.0f) * (float)cam.width;
+            float y = frand(0.0f, 1.0f) * (float)cam.height;
+            float u = (x / (float)cam.width * 2.0f - 1.0f) * tanh * asp;
+            float v = (1.0f - y / (float)cam.height * 2.0f) * tanh, d[3], l, ro[3], rd[3];
+            for (k = 0; k < 3; ++k) d[k] = fw[k] + u * rt[k] + v * up[k];
+            l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            for (k = 0; k < 3; ++k) d[k] /= l;
+#ifndef FOV_NO_LIBM
+            if (fovsdf_camera_ray(&ctx, x, y, ro, rd) != FOV_OK || memcmp(rd, d, sizeof d)) bad++;
+#else /* the library's own tan and sqrt approximations: within a few ulps of libm's */
+            if (fovsdf_camera_ray(&ctx, x, y, ro, rd) != FOV_OK ||
+                ulps_apart(rd[0], d[0]) > 8.0 || ulps_apart(rd[1], d[1]) > 8.0 ||
+                ulps_apart(rd[2], d[2]) > 8.0)
+                bad++;
+#endif
+            n++;
+        }
+    }
+    check(bad == 0 && n == 2000, "symmetric_sdf_rays_bit_for_bit", "%d of %d differ", bad, n);
+}
+
+/* 9. every fovsdf method renders an off-axis frustum whose tangents are the symmetric ones
+   (l = r = tan(30 deg) W / H, b = t = tan 30 deg) as the symmetric camera: the rays differ in
+   the last bits only, so the images agree to 1e-3 in 99 % of the pixel values */
+static void test_off_axis_render(void)
+{
+    enum { W = 48, H = 32 };
+    static float im0[W * H * 3], im1[W * H * 3];
+    uint32_t m;
+    for (m = 0; m <= (uint32_t)FOVSDF_METHOD_CONE_FOV; ++m) {
+        fovsdf_camera c0, c1;
+        fovsdf_ctx k0, k1;
+        fovsdf_scene sc;
+        fovsdf_config cfg = fovsdf_config_default();
+        fovsdf_output o0, o1;
+        ball b = {{0.3f, 0.0f, 0.0f}, 1.0f};
+        fov_gaze g = {20.0f, 14.0f};
+        fov_result e;
+        int i, close = 0;
+        float t = tanf(30.0f * 0.0174532925199433f);
+        fovsdf_scene_init(&sc);
+        sc.dist = ball_sdf;
+        sc.user = &b;
+        cfg.method = m;
+        fovsdf_camera_init(&c0, W, H);
+        c1 = c0;
+        c1.tan_left = c1.tan_right = t * (float)W / (float)H;
+        c1.tan_bottom = c1.tan_top = t;
+        fovsdf_output_init(&o0);
+        o0.rgb = im0;
+        fovsdf_output_init(&o1);
+        o1.rgb = im1;
+        e = fovsdf_init(&k0, &cfg, &sc, &c0, g, NULL, 0);
+        if (e == FOV_OK) e = fovsdf_init(&k1, &cfg, &sc, &c1, g, NULL, 0);
+        if (e == FOV_OK) e = fovsdf_render_rows(&k0, 0, H, &o0, NULL);
+        if (e == FOV_OK) e = fovsdf_render_rows(&k1, 0, H, &o1, NULL);
+        for (i = 0; i < W * H * 3; ++i) close += fabsf(im0[i] - im1[i]) <= 1e-3f;
+        check(e == FOV_OK && close >= (W * H * 3) * 99 / 100,
+              N("off_axis_render_method%u_equals_symmetric", m), "%s, %d of %d close",
+              fovsdf_result_string(e), close, W * H * 3);
+    }
+}
+
+/* 10. fovlp's reprojection with taa.frustum: given the symmetric camera's own tangents
+   (l = r = tan(fov / 2) W / H, b = t = tan(fov / 2)) it finds the same history pixels as
+   without (frustum 0): a camera moving towards a plane at a known depth, the TAA outputs
+   agree to 1e-4 in 99 % of the values; a frustum whose axis is the image's left edge (l 0,
+   r 2 tan W / H) scales the image about that edge instead of the centre: different history
+   pixels (the off-axis path is used) */
+static void lp_taa_run(const float frustum[4], float *out, fovlp_taa_stats *st)
+{
+    enum { W = 64, H = 48 };
+    static float cur[W * H * 3], dep[W * H], prev[W * H * 3], pdep[W * H], hdep[W * H];
+    static uint8_t age[W * H], oage[W * H];
+    fovlp_config cfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+    fovlp_ctx ctx;
+    fov_camera c;
+    fovlp_camera lc;
+    fovlp_taa_io io;
+    fov_gaze g = {32.0f, 24.0f};
+    size_t bytes = 0;
+    void *mem;
+    int i, f;
+    cfg.taa.enable = 1;
+    for (i = 0; i < 4; ++i) cfg.taa.frustum[i] = frustum[i];
+    fovlp_memory_size(&cfg, &bytes);
+    mem = malloc(bytes ? bytes : 1);
+    if (fovlp_init(&ctx, &cfg, mem, bytes) != FOV_OK) { free(mem); return; }
+    for (i = 0; i < W * H; ++i) {
+        prev[3 * i] = (float)(i % 7) * 0.1f; prev[3 * i + 1] = (float)(i % 5) * 0.2f;
+        prev[3 * i + 2] = 0.5f;
+        cur[3 * i] = (float)(i % 3) * 0.3f; cur[3 * i + 1] = (float)(i % 11) * 0.05f;
+        cur[3 * i + 2] = 0.3f;
+        age[i] = 5;
+    }
+    for (f = 0; f < 2; ++f) {
+        fov__camera_init(&c, W, H);
+        c.pos[2] = 5.0f - 0.5f * (float)f; /* a dolly towards the plane z = 0 */
+        fovlp_camera_from(&c, &lc);
+        fovlp_begin_frame(&ctx, g, &lc);
+        for (i = 0; i < W * H; ++i) { /* the plane z = 0 seen from z = 5: depth along the ray */
+            float x = ((float)(i % W) + 0.5f) / W * 2.0f - 1.0f;
+            float y = ((float)(i / W) + 0.5f) / H * 2.0f - 1.0f;
+            float t = tanf(30.0f * 0.0174532925199433f), sx = x * t * W / H, sy = y * t;
+            dep[i] = c.pos[2] * sqrtf(1.0f + sx * sx + sy * sy);
+            pdep[i] = 5.0f * sqrtf(1.0f + sx * sx + sy * sy);
+        }
+        fovlp_taa_io_init(&io);
+        io.cur_rgb = cur; io.cur_depth = dep;
+        io.prev_rgb = prev; io.prev_depth = pdep; io.prev_age = age;
+        io.out_rgb = out; io.out_depth = hdep; io.out_age = oage;
+        fovlp_taa_stats_init(st);
+        fovlp_taa_rows(&ctx, &io, 0, H, st);
+    }
+    free(mem);
+}
+static void test_lp_frustum(void)
+{
+    static float a[64 * 48 * 3], b[64 * 48 * 3], c[64 * 48 * 3];
+    float t = tanf(30.0f * 0.0174532925199433f), z[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    float sym[4], shift[4];
+    int i, same = 0, diff = 0;
+    fovlp_taa_stats sa, sb, sc;
+    sym[0] = sym[1] = t * 64.0f / 48.0f; sym[2] = sym[3] = t;
+    shift[0] = 0.0f; shift[1] = 2.0f * t * 64.0f / 48.0f; shift[2] = shift[3] = t;
+    lp_taa_run(z, a, &sa);
+    lp_taa_run(sym, b, &sb);
+    lp_taa_run(shift, c, &sc);
+    for (i = 0; i < 64 * 48 * 3; ++i) {
+        same += fabsf(a[i] - b[i]) <= 1e-4f;
+        diff += fabsf(a[i] - c[i]) > 1e-4f;
+    }
+    check(same >= 64 * 48 * 3 * 99 / 100 && sa.rejected == sb.rejected &&
+          sa.kept_periphery == sb.kept_periphery, "lp_taa_frustum_symmetric_equals_plain",
+          "%d of %d values, rejected %llu / %llu", same, 64 * 48 * 3,
+          (unsigned long long)sa.rejected, (unsigned long long)sb.rejected);
+    check(diff > 0 && sc.rejected > sa.rejected, "lp_taa_frustum_shifted_differs",
+          "%d values differ, rejected %llu / %llu", diff, (unsigned long long)sc.rejected,
+          (unsigned long long)sa.rejected);
+}
+
+/* an independent reference of an off-axis eye, in double: the frame of fov_camera from pos,
+   target, up; the ray through (x, y) is fwd + (-l + (l + r) x / W) right + (t - (t + b) y / H)
+   up from pos + eye_offset right */
+static void ref_ray(const fov_camera *c, double x, double y, double o[3], double d[3])
+{
+    double f[3], u[3], r[3], l;
+    int k;
+    for (k = 0; k < 3; ++k) { f[k] = (double)c->target[k] - (double)c->pos[k]; u[k] = c->up[k]; }
+    l = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (k = 0; k < 3; ++k) f[k] /= l;
+    r[0] = f[1] * u[2] - f[2] * u[1];
+    r[1] = f[2] * u[0] - f[0] * u[2];
+    r[2] = f[0] * u[1] - f[1] * u[0];
+    l = sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+    for (k = 0; k < 3; ++k) r[k] /= l;
+    u[0] = r[1] * f[2] - r[2] * f[1];
+    u[1] = r[2] * f[0] - r[0] * f[2];
+    u[2] = r[0] * f[1] - r[1] * f[0];
+    {
+        double tl = c->tan_left, tr = c->tan_right, tb = c->tan_bottom, tt = c->tan_top;
+        double sx = -tl + (tl + tr) * x / c->width, sy = tt - (tt + tb) * y / c->height;
+        for (k = 0; k < 3; ++k) {
+            d[k] = f[k] + sx * r[k] + sy * u[k];
+            o[k] = (double)c->pos[k] + (double)c->eye_offset * r[k];
+        }
+    }
+    l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (k = 0; k < 3; ++k) d[k] /= l;
+}
+
+/* 8. per-eye off-axis rays (OpenVR-like tangents of a left and a right eye, each with its own
+   gaze) from fovsdf and fovpt against the reference; the eccentricity of the same pixel in
+   fovsdf's, fovpt's and fovlp's context (fovlp given fovlp_camera_display) against the angle
+   between the reference rays through the pixel and through the gaze */
+static void test_off_axis_eyes(void)
+{
+    /* tangents as OpenVR's GetProjectionRaw gives them for a left eye (left, right, top,
+       bottom = -1.39, 1.24, -1.47, 1.46), made positive; the right eye mirrored */
+    static const float tl[2] = { 1.39f, 1.24f }, tr[2] = { 1.24f, 1.39f };
+    enum { W = 263, H = 293 }; /* square pixels: (l + r) / W = (t + b) / H */
+    int eye, worst_ok = 1, ecc_ok = 1, three_ok = 1;
+    double worst = 0.0, worst_e = 0.0, worst_3 = 0.0;
+    for (eye = 0; eye < 2; ++eye) {
+        fovsdf_camera cam;
+        fovsdf_ctx sctx;
+        fovpt_ctx pctx;
+        fovlp_ctx lctx;
+        fovlp_config lcfg;
+        fovpt_config pcfg = fovpt_config_default();
+        fovpt_material mat;
+        fovpt_shape sh;
+        fovpt_scene_desc d;
+        fovpt_scene scene;
+        fov_gaze g;
+        ball b = {{0.0f, 0.0f, 0.0f}, 0.5f};
+        void *smem, *pmem, *lmem;
+        size_t sb = 0, pb = 0, lb = 0;
+        fov_result e1, e2, e3;
+        int x, y;
+        fovsdf_camera_init(&cam, W, H);
+        cam.pos[0] = 0.3f; cam.pos[1] = 0.2f; cam.pos[2] = 4.0f;
+        cam.target[0] = -0.1f; cam.target[1] = 0.1f;
+        cam.eye_offset = eye ? 0.032f : -0.032f;
+        cam.tan_left = tl[eye]; cam.tan_right = tr[eye];
+        cam.tan_top = 1.47f; cam.tan_bottom = 1.46f;
+        g.x = eye ? 150.0f : 110.0f; /* a per-eye gaze: the eyes converge */
+        g.y = 140.0f;
+        {
+            fovsdf_scene sc;
+            fovsdf_scene_init(&sc);
+            sc.dist = ball_sdf;
+            sc.user = &b;
+            e1 = fovsdf_init(&sctx, NULL, &sc, &cam, g, NULL, 0);
+        }
+        fovpt_material_init(&mat);
+        fovpt_shape_sphere(&sh, 0.0f, 0.0f, 0.0f, 0.5f, 0);
+        fovpt_scene_desc_init(&d);
+        d.shapes = &sh; d.num_shapes = 1; d.materials = &mat; d.num_materials = 1;
+        fovpt_scene_size(&d, &sb);
+        smem = malloc(sb);
+        e2 = fovpt_scene_build(&scene, &d, smem, sb);
+        if (e2 == FOV_OK) e2 = fovpt_memory_size(&pcfg, &cam, &pb);
+        pmem = malloc(pb ? pb : 1);
+        if (e2 == FOV_OK) e2 = fovpt_init(&pctx, &pcfg, &scene, &cam, g, pmem, pb);
+        lcfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H);
+        e3 = fovlp_camera_display(&cam, &lcfg.display);
+        lcfg.taa.frustum[0] = cam.tan_left; lcfg.taa.frustum[1] = cam.tan_right;
+        lcfg.taa.frustum[2] = cam.tan_bottom; lcfg.taa.frustum[3] = cam.tan_top;
+        if (e3 == FOV_OK) e3 = fovlp_memory_size(&lcfg, &lb);
+        lmem = malloc(lb ? lb : 1);
+        if (e3 == FOV_OK) e3 = fovlp_init(&lctx, &lcfg, lmem, lb);
+        if (e3 == FOV_OK) e3 = fovlp_begin_frame(&lctx, g, NULL);
+        check(e1 == FOV_OK && e2 == FOV_OK && e3 == FOV_OK, N("off_axis_eye%d_contexts", eye),
+              "%d %d %d", (int)e1, (int)e2, (int)e3);
+        if (e1 == FOV_OK && e2 == FOV_OK && e3 == FOV_OK)
+            for (y = 0; y <= H; y += 21)
+                for (x = 0; x <= W; x += 19) {
+                    double o[3], dr[3], og[3], dg[3], c, ang;
+                    float ro[3], rd[3], po[3], pd[3], es, ep, el;
+                    int k;
+                    ref_ray(&cam, x + 0.5, y + 0.5, o, dr);
+                    fovsdf_camera_ray(&sctx, (float)x + 0.5f, (float)y + 0.5f, ro, rd);
+                    fovpt_camera_ray(&cam, (float)x + 0.5f, (float)y + 0.5f, po, pd);
+                    for (k = 0; k < 3; ++k) {
+                        worst = fmax(worst, fabs((double)rd[k] - dr[k]));
+                        worst = fmax(worst, fabs((double)pd[k] - dr[k]));
+                        worst = fmax(worst, fabs((double)ro[k] - o[k]));
+                    }
+                    ref_ray(&cam, (double)g.x, (double)g.y, og, dg);
+                    c = dr[0] * dg[0] + dr[1] * dg[1] + dr[2] * dg[2];
+                    ang = acos(fmin(1.0, c)) * 180.0 / 3.14159265358979;
+                    es = fovsdf_ecc_deg(&sctx.ecc, (float)x + 0.5f, (float)y + 0.5f);
+                    ep = fovpt_ecc_deg(&pctx.ecc, (float)x + 0.5f, (float)y + 0.5f);
+                    el = fovlp_ecc_deg(&lctx.ecc, (float)x + 0.5f, (float)y + 0.5f);
+                    worst_e = fmax(worst_e, fabs((double)es - ang));
+                    worst_3 = fmax(worst_3, fmax(fabs((double)es - (double)ep),
+                                                 fabs((double)es - (double)el)));
+                }
+        free(smem); free(pmem); free(lmem);
+    }
+    printf("     (off-axis eyes: rays within %.3g of the reference, eccentricity within %.3g deg, "
+           "headers within %.3g deg)\n", worst, worst_e, worst_3);
+    worst_ok = worst <= 2e-6;
+    ecc_ok = worst_e <= 2e-3;
+    three_ok = worst_3 <= 2e-3;
+    check(worst_ok, "off_axis_eye_rays_match_reference", "worst component error %.3g", worst);
+    check(ecc_ok, "off_axis_ecc_matches_reference_angle", "worst %.3g deg", worst_e);
+    check(three_ok, "off_axis_three_headers_same_ecc", "worst %.3g deg", worst_3);
 }
 
 int main(int argc, char **argv)
@@ -501,6 +827,10 @@ int main(int argc, char **argv)
     test_render_sides();
     test_rays_agree();
     test_eye_offset();
-    test_unsupported();
+    test_off_axis_errors();
+    test_symmetric_bitwise();
+    test_off_axis_eyes();
+    test_off_axis_render();
+    test_lp_frustum();
     return fovcheck_summary();
 }

@@ -1,0 +1,382 @@
+/* test_gaze.c - gaze input of the shared block (fov_gaze_filter: One Euro filter with saccade
+   reset, the latency margin, fixed foveation, pixel <-> degree mapping) in fovsdf.h, fovlp.h
+   and fovpt.h, and the gaze trace generator (bench/gaze_trace.h). Expected values are
+   worked out here from the stated rules (a still input, a step, Gaussian noise of known RMS,
+   a ramp), never taken from the code under test. Prints "N passed, N failed". */
+#define FOV_IMPL
+#include "fovsdf.h"
+#include "fovlp.h"
+#include "fovpt.h"
+#include "fovcheck.h"
+#include "bench/gaze_trace.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define N fovcheck_name
+#define DT_US 8333u /* 120 Hz */
+
+static fov_gaze_filter fresh(void)
+{
+    fov_gaze_filter f;
+    fov_result r = fovsdf_gaze_filter_init(&f, NULL);
+    check(r == FOV_OK, N("init_defaults_%d", (int)r), "code %d", (int)r);
+    return f;
+}
+
+/* constant input: the output is the input, the margin the stated accuracy */
+static void test_constant(void)
+{
+    fov_gaze_filter f = fresh();
+    uint32_t i;
+    int ok = 1;
+    float m = -1.0f;
+    for (i = 0; i < 240; ++i) {
+        if (fovsdf_gaze_filter_push(&f, 1000u + i * DT_US, 3.25f, -7.5f) != FOV_OK) ok = 0;
+        if (!(fabsf(f.x_deg - 3.25f) <= 1e-5f && fabsf(f.y_deg + 7.5f) <= 1e-5f)) ok = 0;
+    }
+    check(ok, "constant_input_gives_the_input", "last (%g, %g)", (double)f.x_deg, (double)f.y_deg);
+    check(f.saccades == 0u && !f.saccade, "constant_input_no_saccade", "%u", f.saccades);
+    fovsdf_gaze_margin(&f, 0.7f, 50.0f, &m);
+    check(fabsf(m - 0.7f) <= 1e-4f, "constant_input_margin_is_accuracy", "%g", (double)m);
+}
+
+/* a step of 10 degrees (a saccade seen at 120 Hz): the window speed (10 deg over <= 20 ms)
+   is far above 100 deg/s, so the raw sample passes at once; the landing resets the filter
+   there. Stated: the output is within 0.01 degrees of the target from the first sample after
+   the step on (0 samples of lag), and a plain low-pass at 0.5 Hz is not (takes > 50). */
+static void test_step(void)
+{
+    fov_gaze_filter f = fresh(), lp;
+    fov_gaze_filter_config c = fovsdf_gaze_filter_config_default();
+    uint32_t i, first = 0, lp_first = 0;
+    int stays = 1;
+    c.beta = FOV_GAZE_BETA_NONE;
+    c.saccade_deg_s = 2000.0f;
+    check(fovsdf_gaze_filter_init(&lp, &c) == FOV_OK, "init_lowpass", "-");
+    for (i = 0; i < 240; ++i) {
+        float x = i < 120 ? 0.0f : 10.0f;
+        fovsdf_gaze_filter_push(&f, i * DT_US, x, 0.0f);
+        fovsdf_gaze_filter_push(&lp, i * DT_US, x, 0.0f);
+        if (i >= 120) {
+            int near = fabsf(f.x_deg - 10.0f) <= 0.01f;
+            if (near && !first) first = i - 119;
+            if (first && !near) stays = 0;
+            if (!lp_first && fabsf(lp.x_deg - 10.0f) <= 0.01f) lp_first = i - 119;
+        }
+    }
+    check(first == 1u && stays, "step_followed_within_1_sample", "first %u stays %d", first,
+          stays);
+    check(f.saccades == 1u && !f.saccade, "step_one_saccade_landed", "%u %u", f.saccades,
+          f.saccade);
+    check(lp_first == 0u || lp_first > 50u, "step_lowpass_slower", "%u", lp_first);
+}
+
+/* jitter: a still target seen through white noise of RMS 0.5 degrees (2-D) at 120 Hz; the
+   RMS error of the output over the last 4 of 5 seconds is at most a third of the raw one's */
+static void test_jitter(void)
+{
+    fov_gaze_filter f = fresh();
+    uint64_t rng = 77u;
+    double e_raw = 0.0, e_f = 0.0, s = 0.5 / sqrt(2.0);
+    int i, n = 0;
+    for (i = 0; i < 600; ++i) {
+        double x = 2.0 + s * gt_gauss(&rng), y = 1.0 + s * gt_gauss(&rng);
+        fovsdf_gaze_filter_push(&f, (uint64_t)i * DT_US, (float)x, (float)y);
+        if (i >= 120) {
+            e_raw += (x - 2.0) * (x - 2.0) + (y - 1.0) * (y - 1.0);
+            e_f += ((double)f.x_deg - 2.0) * ((double)f.x_deg - 2.0) +
+                   ((double)f.y_deg - 1.0) * ((double)f.y_deg - 1.0);
+            n++;
+        }
+    }
+    e_raw = sqrt(e_raw / n); e_f = sqrt(e_f / n);
+    fovcheck_info("jitter: raw %.3f deg RMS, filtered %.3f (ratio %.3f), noise estimate %.3f",
+                  e_raw, e_f, e_f / e_raw, (double)f.noise_deg);
+    check(fabs(e_raw - 0.5) < 0.05, "jitter_raw_is_0.5", "%g", e_raw);
+    check(e_f <= e_raw / 3.0, "jitter_filtered_third_of_raw", "%g vs %g", e_f, e_raw);
+    check(f.saccades == 0u, "jitter_no_false_saccades", "%u", f.saccades);
+    check(fabs((double)f.noise_deg - 0.5) < 0.15, "jitter_noise_estimate", "%g",
+          (double)f.noise_deg);
+}
+
+static int same(const fov_gaze_filter *a, const fov_gaze_filter *b)
+{
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+/* errors leave the state as it was */
+static void test_errors(void)
+{
+    fov_gaze_filter f, g;
+    fov_gaze_filter_config c;
+    fov_result r;
+    float nan = (float)NAN, inf = (float)INFINITY;
+    uint32_t i;
+    memset(&f, 0, sizeof f);
+    fovsdf_gaze_filter_init(&f, NULL);
+    for (i = 0; i < 10; ++i) fovsdf_gaze_filter_push(&f, 1000000u + i * DT_US, 1.0f, 2.0f);
+    g = f;
+    r = fovsdf_gaze_filter_push(&f, 1000000u, 1.0f, 2.0f);
+    check(r == FOV_ERR_INVALID_ARG && same(&f, &g), "err_out_of_order", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(&f, 1000000u + 9u * DT_US, 1.0f, 2.0f);
+    check(r == FOV_ERR_INVALID_ARG && same(&f, &g), "err_zero_dt", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(&f, 1000000u + 9u * DT_US + 500001u, 1.0f, 2.0f);
+    check(r == FOV_ERR_LIMIT && same(&f, &g), "err_huge_dt", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(&f, 1000000u + 9u * DT_US + 500000u, 1.0f, 2.0f);
+    check(r == FOV_OK, "dt_at_the_limit_ok", "%d", (int)r);
+    g = f;
+    r = fovsdf_gaze_filter_push(&f, 9000000u, nan, 2.0f);
+    check(r == FOV_ERR_NOT_FINITE && same(&f, &g), "err_nan_x", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(&f, 9000000u, 1.0f, inf);
+    check(r == FOV_ERR_NOT_FINITE && same(&f, &g), "err_inf_y", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(&f, 9000000u, 91.0f, 0.0f);
+    check(r == FOV_ERR_INVALID_ARG && same(&f, &g), "err_beyond_90", "%d", (int)r);
+    r = fovsdf_gaze_filter_push(NULL, 9000000u, 1.0f, 0.0f);
+    check(r == FOV_ERR_NULL, "err_null", "%d", (int)r);
+    /* after the huge gap: reset, then it takes samples again */
+    fovsdf_gaze_filter_reset(&f);
+    r = fovsdf_gaze_filter_push(&f, 90000000u, 5.0f, 5.0f);
+    check(r == FOV_OK && f.x_deg >= 5.0f && f.x_deg <= 5.0f, "reset_then_push", "%d", (int)r);
+    /* config errors: f unchanged */
+    g = f;
+    c = fovsdf_gaze_filter_config_default();
+    c.min_cutoff_hz = -1.0f;
+    r = fovsdf_gaze_filter_init(&f, &c);
+    check(r == FOV_ERR_INVALID_ARG && same(&f, &g), "err_cfg_min_cutoff", "%d", (int)r);
+    c = fovsdf_gaze_filter_config_default();
+    c.saccade_deg_s = nan;
+    r = fovsdf_gaze_filter_init(&f, &c);
+    check(r == FOV_ERR_NOT_FINITE && same(&f, &g), "err_cfg_nan", "%d", (int)r);
+    c = fovsdf_gaze_filter_config_default();
+    c.beta = -0.5f;
+    r = fovsdf_gaze_filter_init(&f, &c);
+    check(r == FOV_ERR_INVALID_ARG && same(&f, &g), "err_cfg_beta", "%d", (int)r);
+    c = fovsdf_gaze_filter_config_default();
+    check(c.min_cutoff_hz >= 0.5f && c.min_cutoff_hz <= 0.5f && c.beta >= 0.3f &&
+          c.beta <= 0.3f && c.saccade_deg_s >= 100.0f && c.saccade_deg_s <= 100.0f &&
+          c.window_ms >= 20.0f && c.window_ms <= 20.0f, "config_defaults_documented", "-");
+    {
+        float m;
+        r = fovsdf_gaze_margin(&f, -1.0f, 10.0f, &m);
+        check(r == FOV_ERR_INVALID_ARG, "err_margin_negative_accuracy", "%d", (int)r);
+        r = fovsdf_gaze_margin(&f, 0.5f, nan, &m);
+        check(r == FOV_ERR_NOT_FINITE, "err_margin_nan_latency", "%d", (int)r);
+    }
+}
+
+/* the margin grows with the latency and with the speed: ramps at known speeds */
+static void ramp(fov_gaze_filter *f, float v)
+{
+    uint32_t i;
+    fovsdf_gaze_filter_init(f, NULL);
+    for (i = 0; i < 120; ++i) fovsdf_gaze_filter_push(f, i * DT_US, v * (float)i / 120.0f, 0.0f);
+}
+static void test_margin(void)
+{
+    static const float speeds[6] = { 0.0f, 2.0f, 5.0f, 10.0f, 20.0f, 40.0f };
+    fov_gaze_filter f;
+    float prev = -1.0f, m;
+    int i, mono = 1, strict = 1;
+    ramp(&f, 10.0f);
+    for (i = 0; i <= 30; ++i) {
+        fovsdf_gaze_margin(&f, 0.3f, 10.0f * (float)i, &m);
+        if (m < prev) mono = 0;
+        if (!(m > prev)) strict = 0;
+        prev = m;
+    }
+    check(mono && strict, "margin_increasing_in_latency", "-");
+    prev = -1.0f; mono = 1;
+    for (i = 0; i < 6; ++i) {
+        ramp(&f, speeds[i]);
+        fovsdf_gaze_margin(&f, 0.3f, 50.0f, &m);
+        fovcheck_info("margin at %g deg/s, 50 ms: %.3f deg (output speed %.2f)",
+                      (double)speeds[i], (double)m, (double)f.out_speed_deg_s);
+        if (m < prev) mono = 0;
+        prev = m;
+    }
+    check(mono, "margin_nondecreasing_in_ramp_speed", "-");
+    /* and in the filter's output speed, everything else held */
+    ramp(&f, 10.0f);
+    prev = -1.0f; mono = 1;
+    for (i = 0; i < 50; ++i) {
+        fov_gaze_filter g = f;
+        g.out_speed_deg_s = (float)i;
+        fovsdf_gaze_margin(&g, 0.3f, 50.0f, &m);
+        if (m < prev) mono = 0;
+        prev = m;
+    }
+    check(mono, "margin_nondecreasing_in_speed", "-");
+    /* a steady pursuit: the margin covers where the eye is latency later */
+    ramp(&f, 20.0f);
+    {
+        double true_later = 20.0 * (119.0 / 120.0 + 0.050);
+        double err = fabs(true_later - (double)f.x_deg);
+        fovsdf_gaze_margin(&f, 0.0f, 50.0f, &m);
+        check((double)m >= err, "margin_covers_pursuit_at_50ms", "margin %g error %g",
+              (double)m, err);
+    }
+    /* the cap */
+    ramp(&f, 20.0f);
+    fovsdf_gaze_margin(&f, 0.0f, 1e5f, &m);
+    check(m >= 15.0f && m <= 15.0f, "margin_capped", "%g", (double)m);
+}
+
+/* pixels <-> degrees, the pixel push, and the three headers agree */
+static void test_pixels(void)
+{
+    fov_ecc_model em;
+    fov_display d;
+    fov_gaze g, o1, o2, o3, px;
+    fov_gaze_filter a, b, c;
+    float deg[2];
+    uint32_t i;
+    int ok = 1;
+    memset(&d, 0, sizeof d);
+    d.fov_y_deg = 90.0f;
+    g.x = 640.0f; g.y = 360.0f;
+    fovsdf_ecc_init(&em, &d, 60.0f, 1280, 720, g);
+    /* worked out: f = 360 / tan 45 = 360 px; (1000, 360) is atan(360 / 360) = 45 deg right */
+    px.x = 1000.0f; px.y = 360.0f;
+    fovlp_gaze_to_deg(&em, px, deg);
+    check(fabsf(deg[0] - 45.0f) < 1e-3f && fabsf(deg[1]) < 1e-4f, "to_deg_45_right", "%g %g",
+          (double)deg[0], (double)deg[1]);
+    px.x = 640.0f; px.y = 0.0f; /* straight up: atan(-360 / 360) = -45 */
+    fovpt_gaze_to_deg(&em, px, deg);
+    check(fabsf(deg[0]) < 1e-4f && fabsf(deg[1] + 45.0f) < 1e-3f, "to_deg_45_up", "%g %g",
+          (double)deg[0], (double)deg[1]);
+    for (i = 0; i < 50; ++i) {
+        fov_gaze q, r;
+        q.x = -300.0f + 41.0f * (float)i; q.y = 700.0f - 13.0f * (float)i;
+        fovsdf_gaze_to_deg(&em, q, deg);
+        fovsdf_gaze_from_deg(&em, deg, &r);
+        if (!(fabsf(r.x - q.x) < 2e-3f && fabsf(r.y - q.y) < 2e-3f)) ok = 0;
+    }
+    check(ok, "deg_px_round_trip", "-");
+    fovsdf_gaze_filter_init(&a, NULL);
+    fovlp_gaze_filter_init(&b, NULL);
+    fovpt_gaze_filter_init(&c, NULL);
+    ok = 1;
+    for (i = 0; i < 100; ++i) {
+        fov_gaze r;
+        r.x = 600.0f + 3.0f * (float)(i % 7); r.y = 300.0f - 2.0f * (float)(i % 5);
+        if (i == 50) r.x += 300.0f;
+        fovsdf_gaze_filter_push_px(&a, &em, i * DT_US, r, &o1);
+        fovlp_gaze_filter_push_px(&b, &em, i * DT_US, r, &o2);
+        fovpt_gaze_filter_push_px(&c, &em, i * DT_US, r, &o3);
+        if (memcmp(&o1, &o2, sizeof o1) || memcmp(&o1, &o3, sizeof o1)) ok = 0;
+    }
+    check(ok && same(&a, &b) && same(&a, &c), "three_headers_same_filter", "-");
+    check(a.saccades == 1u, "px_jump_is_a_saccade", "%u", a.saccades);
+    /* fixed foveation: the display's axis point */
+    d.axis_dx = 12.0f; d.axis_dy = -8.0f;
+    check(fovsdf_gaze_fixed(&d, 1280, 720, &g) == FOV_OK && g.x >= 652.0f && g.x <= 652.0f &&
+          g.y >= 352.0f && g.y <= 352.0f, "fixed_gaze_axis_point", "%g %g", (double)g.x,
+          (double)g.y);
+    check(fovlp_gaze_fixed(NULL, 1280, 720, &g) == FOV_OK && g.x >= 640.0f && g.x <= 640.0f &&
+          g.y >= 360.0f && g.y <= 360.0f, "fixed_gaze_centre", "-");
+    check(fovpt_gaze_fixed(NULL, 0, 720, &g) == FOV_ERR_INVALID_ARG, "fixed_gaze_zero_size", "-");
+}
+
+/* each header's config_gaze_margin */
+static void test_apply(void)
+{
+    fovsdf_config s0 = fovsdf_config_default(), s1;
+    fovlp_config l0 = fovlp_config_preset(FOVLP_PRESET_C_FOV, 640, 360), l1;
+    fovpt_config p0 = fovpt_config_default(), p1, pr;
+    fov_result r;
+    uint32_t i;
+    int ok;
+    r = fovsdf_config_gaze_margin(&s0, 1.5f, &s1);
+    check(r == FOV_OK && fabsf(s1.acuity.fovea_deg - 9.0f) < 1e-5f, "sdf_fovea_grows",
+          "%d %g", (int)r, (double)s1.acuity.fovea_deg);
+    r = fovsdf_config_gaze_margin(&s0, FOV_GAZE_FIXED_MARGIN_DEG, &s1);
+    check(r == FOV_OK && fabsf(s1.acuity.fovea_deg - 22.5f) < 1e-5f, "sdf_fixed_foveation",
+          "%g", (double)s1.acuity.fovea_deg);
+    check(fovsdf_config_gaze_margin(&s0, -1.0f, &s1) == FOV_ERR_INVALID_ARG, "sdf_neg", "-");
+    check(fovsdf_config_gaze_margin(&s0, 175.0f, &s1) == FOV_ERR_LIMIT, "sdf_limit", "-");
+    r = fovlp_config_resolve(&l0, &l1);
+    {
+        float a0 = l1.gaze_angle;
+        r = fovlp_config_gaze_margin(&l0, 2.0f, &l1);
+        check(r == FOV_OK && fabsf(l1.gaze_angle - (a0 + 2.0f * 0.01745329f)) < 1e-5f,
+              "lp_disc_grows", "%d %g", (int)r, (double)l1.gaze_angle);
+    }
+    l0.no_disc = 1;
+    check(fovlp_config_gaze_margin(&l0, 2.0f, &l1) == FOV_ERR_UNSUPPORTED, "lp_no_disc", "-");
+    fovpt_config_resolve(&p0, &pr);
+    r = fovpt_config_gaze_margin(&p0, 1.0f, &p1);
+    ok = r == FOV_OK && fabsf(p1.zones.inner_deg - pr.zones.inner_deg - 1.0f) < 1e-5f &&
+         fabsf(p1.zones.middle_deg - pr.zones.middle_deg - 1.0f) < 1e-5f;
+    for (i = 1; i < pr.layers.count; ++i)
+        if (!(fabsf(p1.layers.layer[i].radius_deg - pr.layers.layer[i].radius_deg - 1.0f) <
+              1e-5f))
+            ok = 0;
+    for (i = 0; i < 5; ++i)
+        if (!(fabsf(p1.selective.e_deg[i] - pr.selective.e_deg[i] - 1.0f) < 1e-5f)) ok = 0;
+    check(ok, "pt_radii_grow", "%d", (int)r);
+    check(fovpt_config_gaze_margin(&p0, (float)NAN, &p1) == FOV_ERR_NOT_FINITE, "pt_nan", "-");
+    /* a grown config still initialises */
+    {
+        fovpt_camera cam;
+        size_t need;
+        fovpt_camera_init(&cam, 64, 48);
+        p0.method = FOVPT_METHOD_ZONES;
+        fovpt_config_gaze_margin(&p0, 3.0f, &p1);
+        check(fovpt_memory_size(&p1, &cam, &need) == FOV_OK, "pt_grown_config_valid", "-");
+    }
+}
+
+/* the generator: saccades follow the main sequence stated in gaze_trace.h, measured here from
+   the position samples; the tracker's noise has the stated RMS */
+static void test_trace(void)
+{
+    static gt_trace t;
+    static uint64_t ts[2000];
+    static double xs[2000], ys[2000];
+    int k, ok = 1, n, blink = 0;
+    double e2 = 0.0;
+    gt_make(&t, 0, 1u);
+    check(t.n_ms >= 12000 && t.n_sacc >= 10, "trace_has_saccades", "%d ms %d saccades", t.n_ms,
+          t.n_sacc);
+    for (k = 0; k < t.n_sacc; ++k) {
+        int a = t.sacc_on[k] - 1, b = t.sacc_off[k] - 1, i;
+        double amp = hypot(t.x[b] - t.x[a], t.y[b] - t.y[a]), vp = 0.0, want;
+        for (i = a + 1; i <= b; ++i)
+            vp = fmax(vp, 1000.0 * hypot(t.x[i] - t.x[i - 1], t.y[i] - t.y[i - 1]));
+        want = 600.0 * (1.0 - exp(-amp / 6.0));
+        /* 1 ms steps of a minimum-jerk profile: the peak within 5 % */
+        if (!(fabs(vp - want) <= 0.05 * want)) ok = 0;
+        if (!(fabs((double)(b - a) - (21.0 + 2.2 * amp)) <= 8.0)) ok = 0;
+    }
+    check(ok, "trace_main_sequence", "-");
+    for (k = 0; k < t.n_ms; ++k) blink += t.phase[k] == GT_BLINK;
+    check(blink == 150, "trace_one_blink_150ms", "%d", blink);
+    n = gt_track(&t, 120.0, 0.5, 3u, ts, xs, ys, 2000);
+    for (k = 0; k < n; ++k) {
+        int ms = gt_ms(&t, ts[k]);
+        e2 += (xs[k] - t.x[ms]) * (xs[k] - t.x[ms]) + (ys[k] - t.y[ms]) * (ys[k] - t.y[ms]);
+    }
+    check(fabs(sqrt(e2 / n) - 0.5) < 0.03, "trace_noise_rms", "%g", sqrt(e2 / n));
+    {
+        /* every 1/120 s over the trace, less the 150 ms blink: 18 samples (150 / 8.33) */
+        int all = (int)floor((double)(t.n_ms - 1) * 120.0 / 1000.0) + 1, inblink = 0;
+        for (k = 0; k < n; ++k) inblink += t.phase[gt_ms(&t, ts[k])] == GT_BLINK;
+        check(inblink == 0 && abs(all - n - 18) <= 1, "trace_no_samples_in_blink",
+              "%d in the blink, %d missing", inblink, all - n);
+    }
+}
+
+int main(void)
+{
+    test_constant();
+    test_step();
+    test_jitter();
+    test_errors();
+    test_margin();
+    test_pixels();
+    test_apply();
+    test_trace();
+    return fovcheck_summary();
+}
