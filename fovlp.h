@@ -367,6 +367,11 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.6.0 (2026-12-05) gaze input from the shared block of revision 4: fovlp_gaze_filter_*,
+                      fovlp_gaze_margin, fovlp_config_gaze_margin (widens the gaze disc),
+                      fovlp_gaze_fixed; off-axis per-eye frusta: fovlp_camera_from accepts tan_left
+                      .. tan_top, config.taa.frustum for the reprojection, fovlp_camera_display for
+                      the eccentricity model.
    0.5.0 (2026-12-05) cfg.recon (fovlp_recon): FOVLP_RECON_CUBIC, Catmull-Rom over the 4 x 4
                       nearest LP samples clamped to the 2 x 2 nearest's range, which keeps
                       the contrast bilinear interpolation loses at the eye's scale;
@@ -416,9 +421,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVLP_VERSION_MAJOR 0
-#define FOVLP_VERSION_MINOR 5
+#define FOVLP_VERSION_MINOR 6
 #define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.5.0"
+#define FOVLP_VERSION_STRING "0.6.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a

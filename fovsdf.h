@@ -632,6 +632,12 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.9.0 (2026-12-05) gaze input from the shared block of revision 4: fovsdf_gaze_filter_* (One Euro
+                      filter with saccade restart), fovsdf_gaze_margin and fovsdf_config_gaze_margin
+                      (a latency-safe fovea), fovsdf_gaze_fixed and FOV_GAZE_FIXED_MARGIN_DEG for
+                      users without an eye tracker; off-axis per-eye frusta: fovsdf_init takes
+                      cam.tan_left .. tan_top (was FOV_ERR_UNSUPPORTED); a symmetric frustum renders
+                      as before, bit for bit.
    0.8.0 (2026-12-05) foveation the eye does not notice near the fovea: config.level_filter 2
                       (the levels keep their lighting and normal; each interpolated pixel
                       takes the albedo at its own ray's point on the taps' tangent planes) and
@@ -729,9 +735,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 8
+#define FOVSDF_VERSION_MINOR 9
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.8.0"
+#define FOVSDF_VERSION_STRING "0.9.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
