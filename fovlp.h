@@ -1,4 +1,4 @@
-/* fovlp.h - v0.5.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.6.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:

@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.8.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.9.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
