@@ -797,7 +797,8 @@ typedef struct fovpt_scene {
     const void *prims;         /* internal primitive records */
     const void *nodes;         /* BVH nodes (NULL: no BVH) */
     const uint32_t *order;     /* primitive order of the BVH leaves */
-    const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise) */
+    const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise), in
+                                  SoA blocks of 4 slots: float[9][4] per block */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
@@ -1859,15 +1860,90 @@ FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov
 #define FOVPT__PRIV FOV__PRIV
 #define FOVPT__FAIL(lg, r, msg) FOV__FAIL(lg, "fovpt", r, msg)
 
-/* SSE: the 4-wide BVH tests a node's four boxes in one pass (FOVPT_NO_SIMD: scalar only;
-   both give the same results) */
+/* SIMD: the 4-wide BVH tests a node's four boxes in one pass and a leaf's triangles four at
+   a time (SoA blocks): SSE on x86 (FOVPT__SIMD 1), NEON on AArch64 (2), SIMD128 on wasm32
+   built with -msimd128 (3); FOVPT_NO_SIMD or any other target: the scalar twin, the same
+   arithmetic one lane at a time (0). Every path gives the same hits (the same float
+   operations in the same order, no FMA contraction: the comparisons are exact). */
 #if !defined(FOVPT_NO_SIMD) && (defined(__SSE__) || defined(_M_X64) || \
                                 (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
-#define FOVPT__SSE 1
+#define FOVPT__SIMD 1
 #include <xmmintrin.h>
+typedef __m128 fovpt__v4;
+typedef __m128 fovpt__m4;
+#define FOVPT__V_SET1(x) _mm_set1_ps(x)
+#define FOVPT__V_LD(p) _mm_loadu_ps(p)
+#define FOVPT__V_ST(p, a) _mm_storeu_ps(p, a)
+#define FOVPT__V_ADD(a, b) _mm_add_ps(a, b)
+#define FOVPT__V_SUB(a, b) _mm_sub_ps(a, b)
+#define FOVPT__V_MUL(a, b) _mm_mul_ps(a, b)
+#define FOVPT__V_DIV(a, b) _mm_div_ps(a, b)
+#define FOVPT__V_MAXT(a, t) _mm_max_ps(a, t) /* a > t ? a : t (NaN a: t) */
+#define FOVPT__V_MINT(a, t) _mm_min_ps(a, t) /* a < t ? a : t (NaN a: t) */
+#define FOVPT__V_LE(a, b) _mm_cmple_ps(a, b)
+#define FOVPT__V_LT(a, b) _mm_cmplt_ps(a, b)
+#define FOVPT__V_GE(a, b) _mm_cmpge_ps(a, b)
+#define FOVPT__V_GT(a, b) _mm_cmpgt_ps(a, b)
+#define FOVPT__M_AND(a, b) _mm_and_ps(a, b)
+#define FOVPT__V_SIGN(a) _mm_and_ps(a, _mm_set1_ps(-0.0f))
+#define FOVPT__V_ABS(a) _mm_andnot_ps(_mm_set1_ps(-0.0f), a)
+#define FOVPT__V_XOR(a, m) _mm_xor_ps(a, m)
+#define FOVPT__M_BITS(m) ((uint32_t)_mm_movemask_ps(m))
+#elif !defined(FOVPT_NO_SIMD) && defined(__aarch64__) && (defined(__ARM_NEON) || defined(_M_ARM64))
+#define FOVPT__SIMD 2
+#include <arm_neon.h>
+typedef float32x4_t fovpt__v4;
+typedef uint32x4_t fovpt__m4;
+#define FOVPT__V_SET1(x) vdupq_n_f32(x)
+#define FOVPT__V_LD(p) vld1q_f32(p)
+#define FOVPT__V_ST(p, a) vst1q_f32(p, a)
+#define FOVPT__V_ADD(a, b) vaddq_f32(a, b)
+#define FOVPT__V_SUB(a, b) vsubq_f32(a, b)
+#define FOVPT__V_MUL(a, b) vmulq_f32(a, b)
+#define FOVPT__V_DIV(a, b) vdivq_f32(a, b)
+#define FOVPT__V_MAXT(a, t) vbslq_f32(vcgtq_f32(a, t), a, t)
+#define FOVPT__V_MINT(a, t) vbslq_f32(vcltq_f32(a, t), a, t)
+#define FOVPT__V_LE(a, b) vcleq_f32(a, b)
+#define FOVPT__V_LT(a, b) vcltq_f32(a, b)
+#define FOVPT__V_GE(a, b) vcgeq_f32(a, b)
+#define FOVPT__V_GT(a, b) vcgtq_f32(a, b)
+#define FOVPT__M_AND(a, b) vandq_u32(a, b)
+#define FOVPT__V_SIGN(a) vandq_u32(vreinterpretq_u32_f32(a), vdupq_n_u32(0x80000000u))
+#define FOVPT__V_ABS(a) vabsq_f32(a)
+#define FOVPT__V_XOR(a, m) vreinterpretq_f32_u32(veorq_u32(vreinterpretq_u32_f32(a), m))
+FOV__PRIV uint32_t fovpt__neon_bits(uint32x4_t m)
+{
+    static const uint32_t w[4] = { 1u, 2u, 4u, 8u };
+    return vaddvq_u32(vandq_u32(m, vld1q_u32(w)));
+}
+#define FOVPT__M_BITS(m) fovpt__neon_bits(m)
+#elif !defined(FOVPT_NO_SIMD) && defined(__wasm_simd128__)
+#define FOVPT__SIMD 3
+#include <wasm_simd128.h>
+typedef v128_t fovpt__v4;
+typedef v128_t fovpt__m4;
+#define FOVPT__V_SET1(x) wasm_f32x4_splat(x)
+#define FOVPT__V_LD(p) wasm_v128_load(p)
+#define FOVPT__V_ST(p, a) wasm_v128_store(p, a)
+#define FOVPT__V_ADD(a, b) wasm_f32x4_add(a, b)
+#define FOVPT__V_SUB(a, b) wasm_f32x4_sub(a, b)
+#define FOVPT__V_MUL(a, b) wasm_f32x4_mul(a, b)
+#define FOVPT__V_DIV(a, b) wasm_f32x4_div(a, b)
+#define FOVPT__V_MAXT(a, t) wasm_f32x4_pmax(t, a) /* t < a ? a : t */
+#define FOVPT__V_MINT(a, t) wasm_f32x4_pmin(t, a) /* a < t ? a : t */
+#define FOVPT__V_LE(a, b) wasm_f32x4_le(a, b)
+#define FOVPT__V_LT(a, b) wasm_f32x4_lt(a, b)
+#define FOVPT__V_GE(a, b) wasm_f32x4_ge(a, b)
+#define FOVPT__V_GT(a, b) wasm_f32x4_gt(a, b)
+#define FOVPT__M_AND(a, b) wasm_v128_and(a, b)
+#define FOVPT__V_SIGN(a) wasm_v128_and(a, wasm_i32x4_splat((int32_t)0x80000000u))
+#define FOVPT__V_ABS(a) wasm_f32x4_abs(a)
+#define FOVPT__V_XOR(a, m) wasm_v128_xor(a, m)
+#define FOVPT__M_BITS(m) ((uint32_t)wasm_i32x4_bitmask(m))
 #else
-#define FOVPT__SSE 0
+#define FOVPT__SIMD 0
 #endif
+#define FOVPT__SSE (FOVPT__SIMD == 1)
 
 
 #ifndef FOVPT_MAX_DIM
@@ -2674,8 +2750,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz += 4u * n_lights;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid);
-                               after the build: the leaf-ordered triangles (v0, e1, e2) */
-    sz += 36u * (uint64_t)L->n_bounded;
+                               after the build: the leaf-ordered triangles (v0, e1, e2) in
+                               SoA blocks of 4 slots (fovpt_scene.leaf_tris) */
+    sz += 36u * (((uint64_t)L->n_bounded + 3u) & ~(uint64_t)3u); /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -3051,19 +3128,22 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                                  (float *)(void *)(base + L.pbox), d);
             if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
             s->nodes = base + L.nodes;
-            {   /* the build data is spent: reuse it for the triangles in leaf order, so a leaf
-                   reads 36 contiguous bytes per triangle instead of a record through order[] */
+            {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
+                   blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
+                   lanes each), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
-                for (i = 0; i < nb; ++i) {
-                    const fovpt__prim *p = &prims[order[i]];
-                    float *q = lt + 9u * (size_t)i;
-                    if (p->type == FOVPT__TRI) {
+                uint32_t nb4 = (nb + 3u) & ~3u;
+                for (i = 0; i < nb4; ++i) {
+                    float *q = lt + 36u * (size_t)(i >> 2) + (i & 3u);
+                    const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    if (p && p->type == FOVPT__TRI) {
                         for (k = 0; k < 3; ++k) {
-                            q[k] = p->a[k]; q[3 + k] = p->b[k]; q[6 + k] = p->c[k];
+                            q[4u * k] = p->a[k]; q[4u * (3u + k)] = p->b[k];
+                            q[4u * (6u + k)] = p->c[k];
                         }
                     } else {
                         /* e1 = e2 = 0: det = 0, see fovpt__closest */
-                        for (k = 0; k < 9; ++k) q[k] = 0.0f;
+                        for (k = 0; k < 9; ++k) q[4u * k] = 0.0f;
                     }
                 }
                 s->leaf_tris = lt;
@@ -3280,6 +3360,122 @@ FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float 
     return tn <= tf * FOVPT__BOX_GROW + grow_k;
 }
 
+/* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
+   s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
+   operations on the same floats as fovpt__isect, so the same t as brute force; SIMD, or the
+   scalar twin lane by lane). Slots that are not triangles (stored as zeros: det = 0) go
+   through fovpt__isect. The closest hit is canonical, as in brute force: the smallest t, and
+   among equal t the lowest primitive slot, whatever order the traversal visits leaves in
+   (a t equal to the closest so far replaces it when its slot is lower; a t equal to the
+   caller's tmax never counts). Returns 1 when any is set and a hit was found. */
+FOVPT__PRIV int fovpt__leaf_take(float t, uint32_t slot, float *tmax, uint32_t *best)
+{
+    if (t < *tmax || (t <= *tmax && *best != FOVPT_PRIM_NONE && slot < *best)) {
+        *tmax = t; *best = slot;
+        return 1;
+    }
+    return 0;
+}
+FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t first,
+                            uint32_t end, float tmin, float *tmax, uint32_t *best, int any)
+{
+    const fovpt__prim *prims = (const fovpt__prim *)s->prims;
+    uint32_t blk, j;
+    for (blk = first >> 2; blk <= (end - 1u) >> 2; ++blk) {
+        const float *q = s->leaf_tris + 36u * (size_t)blk;
+        const uint32_t b0 = blk << 2, lo = first > b0 ? first - b0 : 0u,
+            hi = end - b0 < 4u ? end - b0 : 4u;
+        const uint32_t lanes = (0xFu << lo) & (0xFu >> (4u - hi)) & 0xFu;
+        uint32_t hm, dm;
+        float tv[4];
+#if FOVPT__SIMD
+        {
+            const fovpt__v4 dx = FOVPT__V_SET1(r->d[0]), dy = FOVPT__V_SET1(r->d[1]),
+                dz = FOVPT__V_SET1(r->d[2]);
+            const fovpt__v4 e1x = FOVPT__V_LD(q + 12), e1y = FOVPT__V_LD(q + 16),
+                e1z = FOVPT__V_LD(q + 20), e2x = FOVPT__V_LD(q + 24), e2y = FOVPT__V_LD(q + 28),
+                e2z = FOVPT__V_LD(q + 32);
+            const fovpt__v4 sx = FOVPT__V_SUB(FOVPT__V_SET1(r->o[0]), FOVPT__V_LD(q)),
+                sy = FOVPT__V_SUB(FOVPT__V_SET1(r->o[1]), FOVPT__V_LD(q + 4)),
+                sz = FOVPT__V_SUB(FOVPT__V_SET1(r->o[2]), FOVPT__V_LD(q + 8));
+            const fovpt__v4 pvx = FOVPT__V_SUB(FOVPT__V_MUL(dy, e2z), FOVPT__V_MUL(dz, e2y)),
+                pvy = FOVPT__V_SUB(FOVPT__V_MUL(dz, e2x), FOVPT__V_MUL(dx, e2z)),
+                pvz = FOVPT__V_SUB(FOVPT__V_MUL(dx, e2y), FOVPT__V_MUL(dy, e2x));
+            const fovpt__v4 det = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(e1x, pvx),
+                                                            FOVPT__V_MUL(e1y, pvy)),
+                                               FOVPT__V_MUL(e1z, pvz));
+            const fovpt__v4 ad = FOVPT__V_ABS(det);
+            const fovpt__m4 okd = FOVPT__V_GT(ad, FOVPT__V_SET1(1e-30f));
+            const fovpt__v4 zero = FOVPT__V_SET1(0.0f);
+            fovpt__v4 u, v, t, qx, qy, qz;
+            fovpt__m4 m;
+            u = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(sx, pvx), FOVPT__V_MUL(sy, pvy)),
+                             FOVPT__V_MUL(sz, pvz));
+            u = FOVPT__V_XOR(u, FOVPT__V_SIGN(det)); /* u * sg: the sign flipped where det < 0 */
+            m = FOVPT__M_AND(okd, FOVPT__M_AND(FOVPT__V_GE(u, zero), FOVPT__V_LE(u, ad)));
+            hm = FOVPT__M_BITS(m) & lanes;
+            dm = ~FOVPT__M_BITS(okd) & lanes;
+            if (hm) {
+                qx = FOVPT__V_SUB(FOVPT__V_MUL(sy, e1z), FOVPT__V_MUL(sz, e1y));
+                qy = FOVPT__V_SUB(FOVPT__V_MUL(sz, e1x), FOVPT__V_MUL(sx, e1z));
+                qz = FOVPT__V_SUB(FOVPT__V_MUL(sx, e1y), FOVPT__V_MUL(sy, e1x));
+                v = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(dx, qx), FOVPT__V_MUL(dy, qy)),
+                                 FOVPT__V_MUL(dz, qz));
+                v = FOVPT__V_XOR(v, FOVPT__V_SIGN(det));
+                t = FOVPT__V_DIV(FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(e2x, qx),
+                                                           FOVPT__V_MUL(e2y, qy)),
+                                              FOVPT__V_MUL(e2z, qz)), det);
+                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GE(v, zero),
+                                                 FOVPT__V_LE(FOVPT__V_ADD(u, v), ad)));
+                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GT(t, FOVPT__V_SET1(tmin)),
+                                                 FOVPT__V_LE(t, FOVPT__V_SET1(*tmax))));
+                hm &= FOVPT__M_BITS(m);
+                FOVPT__V_ST(tv, t);
+            }
+        }
+#else
+        (void)lanes;
+        hm = dm = 0;
+        for (j = lo; j < hi; ++j) {
+            float v0[3], e1[3], e2[3], pv[3], sv[3], qv[3], det, ad, sg, u, v, t;
+            uint32_t k;
+            for (k = 0; k < 3; ++k) {
+                v0[k] = q[4u * k + j]; e1[k] = q[4u * (3u + k) + j]; e2[k] = q[4u * (6u + k) + j];
+            }
+            fov__cross(r->d, e2, pv);
+            det = fov__dot(e1, pv);
+            if (!(fov__absf(det) > 1e-30f)) { dm |= 1u << j; continue; }
+            sg = det < 0.0f ? -1.0f : 1.0f;
+            ad = det * sg;
+            fovpt__sub3(sv, r->o, v0);
+            u = fov__dot(sv, pv) * sg;
+            if (!(u >= 0.0f && u <= ad)) continue;
+            fov__cross(sv, e1, qv);
+            v = fov__dot(r->d, qv) * sg;
+            if (!(v >= 0.0f && u + v <= ad)) continue;
+            t = fov__dot(e2, qv) / det;
+            if (!(t > tmin && t <= *tmax)) continue;
+            tv[j] = t;
+            hm |= 1u << j;
+        }
+#endif
+        if (!(hm | dm)) continue;
+        for (j = lo; j < hi; ++j) {
+            const uint32_t slot = s->order[b0 + j];
+            if (hm & (1u << j)) {
+                if (fovpt__leaf_take(tv[j], slot, tmax, best) && any) return 1;
+            } else if ((dm & (1u << j)) && prims[slot].type != FOVPT__TRI) {
+                /* another shape: its own test, over (tmin, tmax] when a tie may count */
+                float tm = *tmax, t;
+                if (*best != FOVPT_PRIM_NONE && tm < FLT_MAX) tm = fovpt__next_up(tm);
+                t = fovpt__isect(&prims[slot], r, tmin, tm);
+                if (t < tm && fovpt__leaf_take(t, slot, tmax, best) && any) return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 /* Closest hit over the bounded primitives and the planes: returns the slot (and lowers *tmax
    to its t) or FOVPT_PRIM_NONE; any: returns the first hit found instead (occlusion); brute:
    a loop over every bounded primitive instead of the BVH. BVH traversal: the root's box (the
@@ -3306,13 +3502,13 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
-#if FOVPT__SSE
-        const __m128 vox = _mm_set1_ps(r->o[0]), voy = _mm_set1_ps(r->o[1]),
-            voz = _mm_set1_ps(r->o[2]);
-        const __m128 vix = _mm_set1_ps(r->inv[0]), viy = _mm_set1_ps(r->inv[1]),
-            viz = _mm_set1_ps(r->inv[2]);
-        const __m128 vtmin = _mm_set1_ps(tmin), vgrow = _mm_set1_ps(FOVPT__BOX_GROW),
-            vgk = _mm_set1_ps(gk);
+#if FOVPT__SIMD
+        const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
+            voz = FOVPT__V_SET1(r->o[2]);
+        const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
+            viz = FOVPT__V_SET1(r->inv[2]);
+        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
+            vgk = FOVPT__V_SET1(gk);
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
             iz = r->inv[2];
@@ -3321,34 +3517,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    for (i = first; i < end; ++i) {
-                        /* Moller-Trumbore on the leaf-ordered copy: the same operations on the
-                           same floats as fovpt__isect, so the same hits as brute force */
-                        const float *v0 = s->leaf_tris + 9u * (size_t)i, *e1 = v0 + 3, *e2 = v0 + 6;
-                        float pv[3], sv[3], q[3], det, ad, sg, u, v;
-                        fov__cross(r->d, e2, pv);
-                        det = fov__dot(e1, pv);
-                        if (!(fov__absf(det) > 1e-30f)) {
-                            /* parallel, degenerate, or not a triangle (stored as zeros) */
-                            const fovpt__prim *p = &prims[s->order[i]];
-                            if (p->type == FOVPT__TRI) continue;
-                            t = fovpt__isect(p, r, tmin, *tmax);
-                            if (!(t < *tmax)) continue;
-                        } else {
-                            sg = det < 0.0f ? -1.0f : 1.0f;
-                            ad = det * sg;
-                            fovpt__sub3(sv, r->o, v0);
-                            u = fov__dot(sv, pv) * sg;
-                            if (!(u >= 0.0f && u <= ad)) continue;
-                            fov__cross(sv, e1, q);
-                            v = fov__dot(r->d, q) * sg;
-                            if (!(v >= 0.0f && u + v <= ad)) continue;
-                            t = fov__dot(e2, q) / det;
-                            if (!(t > tmin && t < *tmax)) continue;
-                        }
-                        *tmax = t; best = s->order[i];
-                        if (any) return best;
-                    }
+                    if (fovpt__leaf(s, r, first, end, tmin, tmax, &best, any)) return best;
                 } else {
                     /* the four children's slab tests (fovpt__box_hit's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
@@ -3358,17 +3527,17 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     float tv[4];
                     uint32_t hm, nh = 0, hc[4], j;
                     float ht[4];
-#if FOVPT__SSE
-                    __m128 t0 = vtmin, u0 = _mm_set1_ps(*tmax);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nx]), vox), vix), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fx]), vox), vix), u0);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[ny]), voy), viy), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fy]), voy), viy), u0);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nz]), voz), viz), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fz]), voz), viz), u0);
-                    hm = (uint32_t)_mm_movemask_ps(
-                        _mm_cmple_ps(t0, _mm_add_ps(_mm_mul_ps(u0, vgrow), vgk)));
-                    _mm_storeu_ps(tv, t0);
+#if FOVPT__SIMD
+                    fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
+                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nx]), vox), vix), t0);
+                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fx]), vox), vix), u0);
+                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[ny]), voy), viy), t0);
+                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fy]), voy), viy), u0);
+                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nz]), voz), viz), t0);
+                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fz]), voz), viz), u0);
+                    hm = FOVPT__M_BITS(FOVPT__V_LE(
+                        t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk)));
+                    FOVPT__V_ST(tv, t0);
 #else
                     hm = 0;
                     for (j = 0; j < 4; ++j) {
