@@ -1869,6 +1869,9 @@ FOV__PRIV fov_result fov__eye_plan(const fov_eye *e, const fov_ecc_model *m, fov
                                 (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
 #define FOVPT__SIMD 1
 #include <xmmintrin.h>
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
 typedef __m128 fovpt__v4;
 typedef __m128 fovpt__m4;
 #define FOVPT__V_SET1(x) _mm_set1_ps(x)
@@ -2524,18 +2527,32 @@ typedef struct fovpt__node {
     uint32_t n;     /* leaf: primitive count (>= 1); inner: 0 */
 } fovpt__node;
 
-/* The traversal's BVH: the binary tree collapsed to up to 4 children per node (each node
-   opens its largest inner children until it has 4). b[row][child], rows as in
-   fovpt__node.b (lo x, y, z, hi x, y, z), so a ray's near and far rows are b[nb[k]] and
-   b[fb[k]], the four children side by side; empty slots have an empty box (lo FLT_MAX, hi
-   -FLT_MAX), which every ray misses. child: a node4 index, or FOVPT__LEAF4 | first << 5 |
-   count for a leaf (count <= 16). 128 bytes. */
+/* The traversal's BVH: the binary tree collapsed to up to FOVPT__W (FOVPT_BVH_WIDTH: 4, or
+   8 when compiled for AVX2) children per node (each node opens its largest inner children
+   until it has W). b[row][child], rows as in fovpt__node.b (lo x, y, z, hi x, y, z), so a
+   ray's near and far rows are b[nb[k]] and b[fb[k]], the W children side by side; empty
+   slots have an empty box (lo FLT_MAX, hi -FLT_MAX), which every ray misses. child: a node
+   index, or FOVPT__LEAF4 | first << 5 | count for a leaf (count <= 16). 128 bytes (W = 4) or
+   256 (W = 8). */
+#ifndef FOVPT_BVH_WIDTH
+#if FOVPT__SIMD == 1 && defined(__AVX2__)
+#define FOVPT_BVH_WIDTH 8
+#else
+#define FOVPT_BVH_WIDTH 4
+#endif
+#endif
+#if FOVPT_BVH_WIDTH != 4 && FOVPT_BVH_WIDTH != 8
+#error "fovpt: FOVPT_BVH_WIDTH must be 4 or 8"
+#endif
+#define FOVPT__W ((uint32_t)FOVPT_BVH_WIDTH)
 typedef struct fovpt__node4 {
-    float b[6][4];
-    uint32_t child[4];
-    uint32_t pad[4];
+    float b[6][FOVPT_BVH_WIDTH];
+    uint32_t child[FOVPT_BVH_WIDTH];
+    uint32_t pad[FOVPT_BVH_WIDTH];
 } fovpt__node4;
 #define FOVPT__LEAF4 0x80000000u
+/* traversal stack: at most W - 1 entries pushed per node on the path, plus the root */
+#define FOVPT__STACK ((FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 2u)
 
 typedef struct fovpt__layout {
     size_t prims, nodes, nodes4, order, lights, cdf, area, pbox, total;
@@ -2822,27 +2839,27 @@ typedef struct fovpt__bin {
 FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4)
 {
     typedef struct { uint32_t bin, slot; } work;
-    work stack[3u * FOVPT_MAX_BVH_DEPTH + 4u];
-    uint32_t sp = 0, used = 1, c[4], m, j, k;
+    work stack[(FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u];
+    uint32_t sp = 0, used = 1, c[FOVPT_BVH_WIDTH], m, j, k;
     stack[sp].bin = 0; stack[sp].slot = 0; ++sp;
     while (sp > 0) {
         work w = stack[--sp];
         fovpt__node4 *q = &n4[w.slot];
         if (nodes[w.bin].n) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
         else { c[0] = nodes[w.bin].a; c[1] = nodes[w.bin].a + 1u; m = 2; }
-        while (m < 4) { /* open the inner child of largest area */
-            uint32_t best = 4;
+        while (m < FOVPT__W) { /* open the inner child of largest area */
+            uint32_t best = FOVPT__W;
             float ba = -1.0f;
             for (j = 0; j < m; ++j) {
                 float a = fovpt__half_area(nodes[c[j]].b, nodes[c[j]].b + 3);
                 if (!nodes[c[j]].n && a > ba) { ba = a; best = j; }
             }
-            if (best == 4) break;
+            if (best == FOVPT__W) break;
             k = c[best];
             c[best] = nodes[k].a;
             c[m++] = nodes[k].a + 1u;
         }
-        for (j = 0; j < 4; ++j) {
+        for (j = 0; j < FOVPT__W; ++j) {
             if (j >= m) {
                 for (k = 0; k < 3; ++k) { q->b[k][j] = FLT_MAX; q->b[3 + k][j] = -FLT_MAX; }
                 q->child[j] = FOVPT__LEAF4; /* an empty leaf, never reached */
@@ -2852,13 +2869,13 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
             if (nodes[c[j]].n) {
                 q->child[j] = FOVPT__LEAF4 | (nodes[c[j]].a << 5) | nodes[c[j]].n;
             } else {
-                FOV_ASSERT(sp < 3u * FOVPT_MAX_BVH_DEPTH + 4u);
+                FOV_ASSERT(sp < (FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u);
                 q->child[j] = used;
                 stack[sp].bin = c[j]; stack[sp].slot = used; ++sp;
                 ++used;
             }
         }
-        for (k = 0; k < 4; ++k) q->pad[k] = 0u;
+        for (k = 0; k < FOVPT__W; ++k) q->pad[k] = 0u;
     }
     return used;
 }
@@ -3497,8 +3514,8 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     if (s->nodes && !brute) {
         const fovpt__node *nodes = (const fovpt__node *)s->nodes;
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
-        uint32_t stack[3u * FOVPT_MAX_BVH_DEPTH + 2u], sp = 0, ref = 0;
-        float stack_t[3u * FOVPT_MAX_BVH_DEPTH + 2u], tn;
+        uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
+        float stack_t[FOVPT__STACK], tn;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
@@ -3509,6 +3526,13 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             viz = FOVPT__V_SET1(r->inv[2]);
         const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
             vgk = FOVPT__V_SET1(gk);
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+        const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
+            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
+            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
+        (void)vox; (void)voy; (void)voz; (void)vix; (void)viy; (void)viz; (void)vtmin;
+        (void)vgrow; (void)vgk;
+#endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
             iz = r->inv[2];
@@ -3524,23 +3548,38 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                        nearest first: the nearest is visited, the others pushed farthest
                        first with their entry distances */
                     const fovpt__node4 *nd = &n4[ref];
-                    float tv[4];
-                    uint32_t hm, nh = 0, hc[4], j;
-                    float ht[4];
-#if FOVPT__SIMD
-                    fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
-                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nx]), vox), vix), t0);
-                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fx]), vox), vix), u0);
-                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[ny]), voy), viy), t0);
-                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fy]), voy), viy), u0);
-                    t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nz]), voz), viz), t0);
-                    u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fz]), voz), viz), u0);
-                    hm = FOVPT__M_BITS(FOVPT__V_LE(
-                        t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk)));
-                    FOVPT__V_ST(tv, t0);
+                    float tv[FOVPT_BVH_WIDTH];
+                    uint32_t hm, nh = 0, hc[FOVPT_BVH_WIDTH], j;
+                    float ht[FOVPT_BVH_WIDTH];
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+                    __m256 t0 = _mm256_set1_ps(tmin), u0 = _mm256_set1_ps(*tmax);
+                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[nx]), wox), wix), t0);
+                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fx]), wox), wix), u0);
+                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[ny]), woy), wiy), t0);
+                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fy]), woy), wiy), u0);
+                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[nz]), woz), wiz), t0);
+                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fz]), woz), wiz), u0);
+                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(
+                        t0, _mm256_add_ps(_mm256_mul_ps(u0, _mm256_set1_ps(FOVPT__BOX_GROW)),
+                                          _mm256_set1_ps(gk)), _CMP_LE_OQ));
+                    _mm256_storeu_ps(tv, t0);
+#elif FOVPT__SIMD
+                    hm = 0;
+                    for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
+                        fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
+                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nx] + j), vox), vix), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fx] + j), vox), vix), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[ny] + j), voy), viy), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fy] + j), voy), viy), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nz] + j), voz), viz), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fz] + j), voz), viz), u0);
+                        hm |= FOVPT__M_BITS(FOVPT__V_LE(
+                            t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk))) << j;
+                        FOVPT__V_ST(tv + j, t0);
+                    }
 #else
                     hm = 0;
-                    for (j = 0; j < 4; ++j) {
+                    for (j = 0; j < FOVPT__W; ++j) {
                         const float tm = *tmax;
                         float t0 = tmin, u0 = tm, a, c;
                         a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix;
@@ -3553,15 +3592,30 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
 #endif
-                    nh = (hm & 1u) + ((hm >> 1) & 1u) + ((hm >> 2) & 1u) + (hm >> 3);
+                    /* nibble tables indexed by 4 bits of the mask: the number of hit
+                       children, the lowest and the highest hit child */
+#define FOVPT__NCNT(m) ((uint32_t)(0x4332322132212110ull >> (4u * (m))) & 15u)
+#define FOVPT__NLO(m) ((uint32_t)(0x0102010301020100ull >> (4u * (m))) & 3u)
+#define FOVPT__NHI(m) ((uint32_t)(0x3333333322221100ull >> (4u * (m))) & 3u)
+#if FOVPT_BVH_WIDTH == 4
+                    nh = FOVPT__NCNT(hm);
                     if (nh == 1u) { /* the common cases first: one or two children hit */
-                        ref = nd->child[(hm & 1u) ? 0 : (hm & 2u) ? 1 : (hm & 4u) ? 2 : 3];
+                        ref = nd->child[FOVPT__NLO(hm)];
                         continue;
                     }
                     if (nh == 2u) {
-                        const uint32_t j0 = (hm & 1u) ? 0u : (hm & 2u) ? 1u : 2u,
-                            j1 = (hm & 8u) ? 3u : (hm & 4u) ? 2u : 1u;
-                        FOV_ASSERT(sp < 3u * FOVPT_MAX_BVH_DEPTH + 2u);
+                        const uint32_t j0 = FOVPT__NLO(hm), j1 = FOVPT__NHI(hm);
+#else
+                    nh = FOVPT__NCNT(hm & 15u) + FOVPT__NCNT(hm >> 4);
+                    if (nh == 1u) { /* the common cases first: one or two children hit */
+                        ref = nd->child[(hm & 15u) ? FOVPT__NLO(hm & 15u) : 4u + FOVPT__NLO(hm >> 4)];
+                        continue;
+                    }
+                    if (nh == 2u) {
+                        const uint32_t j0 = (hm & 15u) ? FOVPT__NLO(hm & 15u) : 4u + FOVPT__NLO(hm >> 4),
+                            j1 = (hm >> 4) ? 4u + FOVPT__NHI(hm >> 4) : FOVPT__NHI(hm);
+#endif
+                        FOV_ASSERT(sp < FOVPT__STACK);
                         if (tv[j1] < tv[j0]) {
                             stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0]; ref = nd->child[j1];
                         } else {
@@ -3569,8 +3623,11 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         }
                         continue;
                     }
+#undef FOVPT__NCNT
+#undef FOVPT__NLO
+#undef FOVPT__NHI
                     nh = 0;
-                    for (j = 0; j < 4; ++j) {
+                    for (j = 0; j < FOVPT__W; ++j) {
                         if (hm & (1u << j)) {
                             /* insertion by entry distance, ascending (ties: child order) */
                             uint32_t k = nh++;
@@ -3581,7 +3638,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         }
                     }
                     if (nh > 0) {
-                        FOV_ASSERT(sp + nh <= 3u * FOVPT_MAX_BVH_DEPTH + 2u);
+                        FOV_ASSERT(sp + nh <= FOVPT__STACK);
                         for (j = nh - 1u; j > 0; --j) { stack[sp] = hc[j]; stack_t[sp++] = ht[j]; }
                         ref = hc[0];
                         continue;
