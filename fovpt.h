@@ -42,10 +42,13 @@ QUICK START
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
       boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
-      (Wald 2007) over the bounded primitives, collapsed to 4 children per node for the
-      traversal (each node opens its largest inner children until it has four; the four
-      boxes are tested in one SSE pass on x86, one after another elsewhere); planes and the
-      user hook are tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
+      (Wald 2007) over the bounded primitives, collapsed to 4 children per node (8 when
+      compiled for AVX2; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
+      inner children until it has that many; a node's boxes are tested in one SIMD pass:
+      SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on wasm32 with -msimd128,
+      one after another elsewhere), nearest child first; leaf triangles are stored in SoA
+      blocks of four and tested four at a time the same way; planes and the user hook are
+      tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
       plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
       the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
@@ -272,8 +275,10 @@ CONFIGURATION (define before including the implementation)
    FOVPT_API            override the linkage of every public function
    FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
    FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default and maximum 2^26)
-   FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack 3 entries per level  (default 64)
-   FOVPT_NO_SIMD        no SSE in the BVH traversal on x86 (same results, slower)
+   FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack W - 1 entries per level (default 64)
+   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal (the scalar
+                        twin: same hits, slower)
+   FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
@@ -293,7 +298,9 @@ MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
-   4-wide nodes (128 bytes each, up to n - 1), build data, light table);
+   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
+   build data reused for the leaf triangles (36 bytes per bounded primitive, n rounded up to a
+   multiple of 4), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
@@ -301,9 +308,10 @@ MEMORY
    of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
    caller buffers with an explicit row stride. Stack use per entry point: about 5 KiB at
    most (gcc -O2, x86-64, -fstack-usage: BVH build 2.5 KiB, the work stack of
-   FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, 3 entries of 8 bytes (node,
-   entry distance) per depth level; radiance 2.1 KiB, with the Whitted branch stack of 2 *
-   FOVPT_MAX_WHITTED entries; trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
+   FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, W - 1 entries of 8 bytes
+   (node, entry distance) per depth level (3.6 KiB of entries for FOVPT_BVH_WIDTH 8);
+   radiance 2.1 KiB, with the Whitted branch stack of 2 * FOVPT_MAX_WHITTED entries;
+   trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
@@ -342,16 +350,21 @@ NUMERICS
      FOVPT_RAY_EPS * (1 + max |coordinate|) (default 1e-4): keep scenes of size 1e-2 .. 1e3
      around the origin.
    - BVH = brute force: the box test is conservative, so fovpt_intersect and fovpt_occluded
-     find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests).
+     find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests;
+     the four-lane triangle test performs the same float operations in the same order on
+     every SIMD path, FMA contraction off). The closest hit is canonical: the smallest t,
+     and among equal t the lowest primitive slot (the brute-force loop's order), whatever
+     order the traversal visits the leaves in, so the BVH returns the same primitive too.
      Slabs (Kay-Kajiya) with 1 / d = +inf for a zero direction component; a ray lying in a
      slab's face plane gives 0 * inf = NaN, which the max/min operand order drops (the slab
-     does not constrain it), both on the SSE and the scalar path (FOVPT_NO_SIMD, wasm32,
-     Cortex-M); boxes of zero thickness and rays starting on a face are inside. Each box's
-     exit distance is widened to exit * (1 + 2^-21) (+ 2^-19 |tmin| when tmin < 0) before
-     the comparison (Ize 2013, "Robust BVH Ray Traversal": a slab distance is within
-     gamma(3) of its exact value), and the boxes of triangles, quads and spheres are padded
-     by 2^-21 of their largest coordinate magnitude (the triangle records hold v0 and
-     rounded edges; the float tests accept points a few ulps outside). Checked against
+     does not constrain it), on every SIMD path and the scalar one (FOVPT_NO_SIMD,
+     Cortex-M; the BVH = brute force test runs on each: tests/xtarget); boxes of zero
+     thickness and rays starting on a face are inside. Each box's exit distance is widened
+     to exit * (1 + 2^-21) (+ 2^-19 |tmin| when tmin < 0) before the comparison (Ize 2013,
+     "Robust BVH Ray Traversal": a slab distance is within gamma(3) of its exact value), and
+     the boxes of triangles, quads and spheres are padded by 2^-21 of their largest coordinate
+     magnitude (the triangle records hold v0 and rounded edges; the float tests accept points a
+     few ulps outside). Checked against
      brute force on adversarial scenes (flat axis-aligned quads, rays in faces and along
      axes, grazing rays, zero-thickness boxes, 1e-3 .. 1e5 scales, bvh_min_prims 1 .. 4:
      1.5 million rays, no miss). The only brute-force hits the BVH may skip lie outside
@@ -374,7 +387,8 @@ NUMERICS
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
      <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined, plus
-     <xmmintrin.h> on x86 with SSE (define FOVPT_NO_SIMD to leave it out).
+     <xmmintrin.h> on x86 with SSE (and <immintrin.h> with AVX), <arm_neon.h> on AArch64,
+     <wasm_simd128.h> on wasm32 with -msimd128 (define FOVPT_NO_SIMD to leave them out).
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
      __aeabi_d* routine is referenced (checked by tests/compile).
@@ -1111,7 +1125,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *scene, const fovpt_scene_des
 
 /* Closest hit in (tmin, tmax): 1 and *hit filled, or 0 (also for bad input). dir need not be
    unit length (t is in units of dir; any finite non-zero length). _brute tests every
-   primitive (the reference); the BVH finds the same closest t (NUMERICS). */
+   primitive (the reference); the BVH finds the same closest t and primitive (among equal
+   t the lowest primitive slot, as brute force; NUMERICS). */
 FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3],
                               float tmin, float tmax, fovpt_hit *hit);
 FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3],
@@ -2752,8 +2767,11 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    L->nodes4 = (size_t)sz;   /* at most one per inner binary node (n_bounded - 1), or 1 */
-    sz += (uint64_t)sizeof(fovpt__node4) * (L->n_bounded > 1u ? L->n_bounded - 1u : 1u);
+    /* W-wide nodes: one whose children are all binary leaves (at most leaves / 2 <= n / 2 of
+       them), or one with W children that opened W - 1 of the n - 1 binary inner nodes; or 1 */
+    L->nodes4 = (size_t)sz;
+    sz += (uint64_t)sizeof(fovpt__node4) *
+          ((uint64_t)L->n_bounded / 2u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
     sz += 4u * (uint64_t)L->n_bounded;
     sz = (sz + 15u) & ~(uint64_t)15u;
@@ -3553,12 +3571,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     float ht[FOVPT_BVH_WIDTH];
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
                     __m256 t0 = _mm256_set1_ps(tmin), u0 = _mm256_set1_ps(*tmax);
-                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[nx]), wox), wix), t0);
-                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fx]), wox), wix), u0);
-                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[ny]), woy), wiy), t0);
-                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fy]), woy), wiy), u0);
-                    t0 = _mm256_max_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[nz]), woz), wiz), t0);
-                    u0 = _mm256_min_ps(_mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[fz]), woz), wiz), u0);
+#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wiy), u0);
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wiz), u0);
+#undef FOVPT__SLAB8
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(
                         t0, _mm256_add_ps(_mm256_mul_ps(u0, _mm256_set1_ps(FOVPT__BOX_GROW)),
                                           _mm256_set1_ps(gk)), _CMP_LE_OQ));
@@ -3567,12 +3587,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     hm = 0;
                     for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
                         fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
-                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nx] + j), vox), vix), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fx] + j), vox), vix), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[ny] + j), voy), viy), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fy] + j), voy), viy), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[nz] + j), voz), viz), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[fz] + j), voz), viz), u0);
+#define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, viy), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, viz), u0);
+#undef FOVPT__SLAB4
                         hm |= FOVPT__M_BITS(FOVPT__V_LE(
                             t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk))) << j;
                         FOVPT__V_ST(tv + j, t0);
@@ -3608,11 +3630,13 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
 #else
                     nh = FOVPT__NCNT(hm & 15u) + FOVPT__NCNT(hm >> 4);
                     if (nh == 1u) { /* the common cases first: one or two children hit */
-                        ref = nd->child[(hm & 15u) ? FOVPT__NLO(hm & 15u) : 4u + FOVPT__NLO(hm >> 4)];
+                        ref = nd->child[(hm & 15u) ? FOVPT__NLO(hm & 15u)
+                                                   : 4u + FOVPT__NLO(hm >> 4)];
                         continue;
                     }
                     if (nh == 2u) {
-                        const uint32_t j0 = (hm & 15u) ? FOVPT__NLO(hm & 15u) : 4u + FOVPT__NLO(hm >> 4),
+                        const uint32_t j0 = (hm & 15u) ? FOVPT__NLO(hm & 15u)
+                                                       : 4u + FOVPT__NLO(hm >> 4),
                             j1 = (hm >> 4) ? 4u + FOVPT__NHI(hm >> 4) : FOVPT__NHI(hm);
 #endif
                         FOV_ASSERT(sp < FOVPT__STACK);

@@ -182,7 +182,10 @@ static void psnr_fields(const float *a, const float *ref, const float *ecc, size
    bounce); closest_hit: both sets in one loop (the row kept from before). Closest hit, tnear 0,
    tfar 1e30; best of 5 runs interleaved (fovpt, Embree, tinybvh, fovpt, ...; thread CPU time).
    speedup = Embree's time / this row's time. pt_bvh.csv beside the CSV: build time (best of 3,
-   thread CPU time) and bytes per triangle of each acceleration structure. */
+   thread CPU time) and bytes per triangle of each acceleration structure (fovpt: the whole
+   scene memory of fovpt_scene_size, and in traversal_bytes_per_tri what the traversal reads:
+   nodes, leaf triangles, leaf order; Embree: the device's allocations, vertex and index
+   buffers included; tinybvh: its traversal blocks, nodes and triangles). */
 static uint64_t g_rng = 0x243f6a8885a308d3ull;
 static float rnd01(void)
 {
@@ -464,15 +467,23 @@ static void tp_scene(FILE *csv, FILE *bcsv, int sc, uint32_t W, uint32_t H)
             fprintf(csv, "%s,%s,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,%s,%zu,%u,%.3f,nan,0\n", nm, mname[m], m_n[md],
                     (double)m_n[md] / (best[m][md] * 1e-3), best[m][md], modes[md], m_n[md], W * H, em > 0.0 ? em / best[m][md] : 0.0);
         }
-        if (bcsv)
-            fprintf(bcsv, "%s,%s,%u,%.2f,%.1f,%s\n", nm, mname[m], soup.n, build_ms[m], bpt[m],
-                    m == TP_PT ? (FOVPT__SSE ? "bvh4 sse" : "bvh4 scalar") : m == TP_EM ? "embree3 default" :
+        if (bcsv) {
+            /* fovpt: what the traversal reads (W-wide nodes, leaf triangles, leaf order) beside
+               the whole scene memory; Embree and tinybvh: the same figure as bytes_per_tri */
+            double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) + 144.0 * (double)((tri.num_bounded + 3u) / 4u) +
+                                        4.0 * tri.num_bounded) / (double)soup.n : bpt[m];
+            char lay[64];
+            snprintf(lay, sizeof lay, "bvh%u %s", (unsigned)FOVPT_BVH_WIDTH,
+                     FOVPT__SIMD == 1 ? (FOVPT_BVH_WIDTH == 8 ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");
+            fprintf(bcsv, "%s,%s,%u,%.2f,%.1f,%s,%.1f\n", nm, mname[m], soup.n, build_ms[m], bpt[m],
+                    m == TP_PT ? lay : m == TP_EM ? "embree3 default" :
 #ifdef PT_HAVE_TINYBVH
-                    tbvh_layout()
+                    tbvh_layout(),
 #else
-                    ""
+                    "",
 #endif
-                    );
+                    trav);
+        }
     }
     fflush(csv);
 #ifdef PT_HAVE_EMBREE
@@ -495,7 +506,7 @@ static void throughput_rows(FILE *csv, const char *out_path, uint32_t W, uint32_
     int i;
     snprintf(bpath, sizeof bpath, "%.*spt_bvh.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
     bcsv = fopen(bpath, "w");
-    if (bcsv) fprintf(bcsv, "scene,method,triangles,build_ms,bytes_per_tri,layout\n");
+    if (bcsv) fprintf(bcsv, "scene,method,triangles,build_ms,bytes_per_tri,layout,traversal_bytes_per_tri\n");
     for (i = 0; i < 4; ++i) tp_scene(csv, bcsv, scenes[i], W, H);
     if (bcsv) { fclose(bcsv); printf("wrote %s\n", bpath); }
 }

@@ -15,13 +15,13 @@
 
 #if defined(__AVX2__) && defined(__FMA__)
 typedef tinybvh::BVH8_CPU tbvh_type;
-static const char tbvh_layout_name[] = "BVH8_CPU (AVX2, BuildHQ)";
+static const char tbvh_layout_name[] = "BVH8_CPU AVX2 BuildHQ";
 #elif defined(__AVX__)
 typedef tinybvh::BVH4_CPU tbvh_type;
-static const char tbvh_layout_name[] = "BVH4_CPU (BuildHQ)";
+static const char tbvh_layout_name[] = "BVH4_CPU BuildHQ";
 #else
 typedef tinybvh::BVH tbvh_type;
-static const char tbvh_layout_name[] = "BVH (BuildHQ)";
+static const char tbvh_layout_name[] = "BVH BuildHQ";
 #endif
 
 struct tbvh_handle {

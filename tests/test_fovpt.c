@@ -402,7 +402,8 @@ static void test_bvh_random(void)
                 if (real < 2u && !(ni == 0 && b.s.num_nodes == 1u)) bad++;
             }
             for (k = 0; k < b.s.num_bounded; ++k) if (seen[k] != 1u) bad++;
-            check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= ninner && b.s.num_nodes4 <= ninner,
+            check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= ninner && b.s.num_nodes4 <= ninner &&
+                      b.s.num_nodes4 <= b.s.num_bounded / 2u + b.s.num_bounded / (FOVPT__W - 1u) + 1u, /* fovpt_scene_size's bound */
                   N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children", sc, FOVPT__W, FOVPT__W),
                   "bad %u, visited %u of %u nodes4, binary inner %u", bad, visited, b.s.num_nodes4, ninner);
         }
