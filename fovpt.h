@@ -3395,6 +3395,11 @@ FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float 
     return tn <= tf * FOVPT__BOX_GROW + grow_k;
 }
 
+/* For a 4-bit mask of hit children: their number, the lowest and the highest. */
+static const unsigned char fovpt__mask_cnt[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+static const unsigned char fovpt__mask_lo[16] = { 0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0 };
+static const unsigned char fovpt__mask_hi[16] = { 0, 0, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3 };
+
 /* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
    s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
    operations on the same floats as fovpt__isect, so the same t as brute force; SIMD, or the
@@ -3614,11 +3619,11 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
 #endif
-                    /* nibble tables indexed by 4 bits of the mask: the number of hit
-                       children, the lowest and the highest hit child */
-#define FOVPT__NCNT(m) ((uint32_t)(0x4332322132212110ull >> (4u * (m))) & 15u)
-#define FOVPT__NLO(m) ((uint32_t)(0x0102010301020100ull >> (4u * (m))) & 3u)
-#define FOVPT__NHI(m) ((uint32_t)(0x3333333322221100ull >> (4u * (m))) & 3u)
+                    /* tables indexed by 4 bits of the mask: the number of hit children, the
+                       lowest and the highest hit child */
+#define FOVPT__NCNT(m) ((uint32_t)fovpt__mask_cnt[m])
+#define FOVPT__NLO(m) ((uint32_t)fovpt__mask_lo[m])
+#define FOVPT__NHI(m) ((uint32_t)fovpt__mask_hi[m])
 #if FOVPT_BVH_WIDTH == 4
                     nh = FOVPT__NCNT(hm);
                     if (nh == 1u) { /* the common cases first: one or two children hit */
