@@ -36,7 +36,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-sdf-acuity bench-perceptual bench-gaze clean install \
+        bench-sdf-all bench-lp bench-pt bench-pt-throughput bench-sdf-acuity bench-perceptual bench-gaze clean install \
         web web-serve bench-web bench-web-native web-screenshot
 
 all: examples
@@ -71,6 +71,30 @@ EMBREE  := $(if $(wildcard /usr/include/embree3/rtcore.h),-DPT_HAVE_EMBREE -lemb
 $(BUILD)/bench_pt: bench/bench_pt.c examples/pt_scenes.h examples/fovmetrics.h examples/lp_pt_shade.h fovpt.h fovlp.h
 	@mkdir -p $(BUILD)
 	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -pthread $(EMBREE) -o $@
+
+# tinybvh (optional; a local copy of its tiny_bvh.h, never committed): make bench-pt
+# TINYBVH=/path/to/tiny_bvh.h adds its throughput rows (bench/tinybvh_row.cpp, AVX2 + FMA)
+CXX     ?= c++
+TBVH_BIN := $(if $(TINYBVH),bench_pt_tinybvh,bench_pt)
+$(BUILD)/tinybvh_row.o: bench/tinybvh_row.cpp $(TINYBVH)
+	@mkdir -p $(BUILD)
+	$(CXX) -O2 -mavx2 -mfma -w -DTINYBVH_HEADER='"$(abspath $(TINYBVH))"' -c $< -o $@
+
+$(BUILD)/bench_pt_tinybvh: bench/bench_pt.c examples/pt_scenes.h fovpt.h $(BUILD)/tinybvh_row.o
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. -DPT_HAVE_TINYBVH $< $(BUILD)/tinybvh_row.o -lstdc++ -lm -pthread $(EMBREE) -o $@
+
+# the throughput rows of three fovpt builds (default SSE2, AVX2, FOVPT_NO_SIMD), each beside
+# Embree (and tinybvh with TINYBVH=...) in its own run: build/tp_<build>/pt.csv, pt_bvh.csv
+bench-pt-throughput: $(if $(TINYBVH),$(BUILD)/tinybvh_row.o)
+	@for v in sse2 avx2 nosimd; do \
+	  case $$v in avx2) f="-mavx2 -mfma";; nosimd) f="-DFOVPT_NO_SIMD";; *) f="";; esac; \
+	  mkdir -p $(BUILD)/tp_$$v; \
+	  $(CC) $(STD) $(CFLAGS) -ffp-contract=off $$f -Wall -Wextra -I. bench/bench_pt.c \
+	    $(if $(TINYBVH),-DPT_HAVE_TINYBVH $(BUILD)/tinybvh_row.o -lstdc++) -lm -pthread $(EMBREE) \
+	    -o $(BUILD)/bench_pt_$$v || exit 1; \
+	  echo "== fovpt build $$v"; \
+	  ./$(BUILD)/bench_pt_$$v --throughput --out $(BUILD)/tp_$$v/pt.csv || exit 1; \
+	done
 
 # fovpt_config_acuity: samples per pixel at three displays, error by cause (bench/pt_acuity.c)
 $(BUILD)/pt_acuity: bench/pt_acuity.c examples/pt_scenes.h examples/fovmetrics.h fovpt.h
@@ -149,9 +173,9 @@ bench-sdf-nosimd: $(BUILD)/bench_sdf_nosimd
 bench-sdf-all: bench-sdf
 	$(MAKE) bench-sdf-native bench-sdf-nosimd
 
-bench-pt: $(BUILD)/bench_pt
+bench-pt: $(BUILD)/$(TBVH_BIN)
 	@mkdir -p bench/results
-	nice ./$(BUILD)/bench_pt $(if $(FULL),--full) $(BENCH_ARGS)
+	nice ./$(BUILD)/$(TBVH_BIN) $(if $(FULL),--full) $(BENCH_ARGS)
 
 $(BUILD)/bench_lp: bench/bench_lp.c fovlp.h fovsdf.h examples/lp_sdf_shade.h examples/fovmetrics.h
 	@mkdir -p $(BUILD)

@@ -47,10 +47,13 @@ QUICK START
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
       boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
-      (Wald 2007) over the bounded primitives, collapsed to 4 children per node for the
-      traversal (each node opens its largest inner children until it has four; the four
-      boxes are tested in one SSE pass on x86, one after another elsewhere); planes and the
-      user hook are tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
+      (Wald 2007) over the bounded primitives, collapsed to 4 children per node (8 when
+      compiled for AVX2; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
+      inner children until it has that many; a node's boxes are tested in one SIMD pass:
+      SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on wasm32 with -msimd128,
+      one after another elsewhere), nearest child first; leaf triangles are stored in SoA
+      blocks of four and tested four at a time the same way; planes and the user hook are
+      tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
       plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
       the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
@@ -324,8 +327,10 @@ CONFIGURATION (define before including the implementation)
    FOVPT_API            override the linkage of every public function
    FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
    FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default and maximum 2^26)
-   FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack 3 entries per level  (default 64)
-   FOVPT_NO_SIMD        no SSE in the BVH traversal on x86 (same results, slower)
+   FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack W - 1 entries per level (default 64)
+   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal (the scalar
+                        twin: same hits, slower)
+   FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
@@ -346,7 +351,9 @@ MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
-   4-wide nodes (128 bytes each, up to n - 1), build data, light table);
+   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
+   build data reused for the leaf triangles (36 bytes per bounded primitive, n rounded up to a
+   multiple of 4), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
@@ -354,9 +361,10 @@ MEMORY
    of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
    caller buffers with an explicit row stride. Stack use per entry point: about 5 KiB at
    most (gcc -O2, x86-64, -fstack-usage: BVH build 2.5 KiB, the work stack of
-   FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, 3 entries of 8 bytes (node,
-   entry distance) per depth level; radiance 2.1 KiB, with the Whitted branch stack of 2 *
-   FOVPT_MAX_WHITTED entries; trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
+   FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, W - 1 entries of 8 bytes
+   (node, entry distance) per depth level (3.6 KiB of entries for FOVPT_BVH_WIDTH 8);
+   radiance 2.1 KiB, with the Whitted branch stack of 2 * FOVPT_MAX_WHITTED entries;
+   trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
    The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
    (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
 
@@ -400,16 +408,21 @@ NUMERICS
      FOVPT_RAY_EPS * (1 + max |coordinate|) (default 1e-4): keep scenes of size 1e-2 .. 1e3
      around the origin.
    - BVH = brute force: the box test is conservative, so fovpt_intersect and fovpt_occluded
-     find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests).
+     find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests;
+     the four-lane triangle test performs the same float operations in the same order on
+     every SIMD path, FMA contraction off). The closest hit is canonical: the smallest t,
+     and among equal t the lowest primitive slot (the brute-force loop's order), whatever
+     order the traversal visits the leaves in, so the BVH returns the same primitive too.
      Slabs (Kay-Kajiya) with 1 / d = +inf for a zero direction component; a ray lying in a
      slab's face plane gives 0 * inf = NaN, which the max/min operand order drops (the slab
-     does not constrain it), both on the SSE and the scalar path (FOVPT_NO_SIMD, wasm32,
-     Cortex-M); boxes of zero thickness and rays starting on a face are inside. Each box's
-     exit distance is widened to exit * (1 + 2^-21) (+ 2^-19 |tmin| when tmin < 0) before
-     the comparison (Ize 2013, "Robust BVH Ray Traversal": a slab distance is within
-     gamma(3) of its exact value), and the boxes of triangles, quads and spheres are padded
-     by 2^-21 of their largest coordinate magnitude (the triangle records hold v0 and
-     rounded edges; the float tests accept points a few ulps outside). Checked against
+     does not constrain it), on every SIMD path and the scalar one (FOVPT_NO_SIMD,
+     Cortex-M; the BVH = brute force test runs on each: tests/xtarget); boxes of zero
+     thickness and rays starting on a face are inside. Each box's exit distance is widened
+     to exit * (1 + 2^-21) (+ 2^-19 |tmin| when tmin < 0) before the comparison (Ize 2013,
+     "Robust BVH Ray Traversal": a slab distance is within gamma(3) of its exact value), and
+     the boxes of triangles, quads and spheres are padded by 2^-21 of their largest coordinate
+     magnitude (the triangle records hold v0 and rounded edges; the float tests accept points a
+     few ulps outside). Checked against
      brute force on adversarial scenes (flat axis-aligned quads, rays in faces and along
      axes, grazing rays, zero-thickness boxes, 1e-3 .. 1e5 scales, bvh_min_prims 1 .. 4:
      1.5 million rays, no miss). The only brute-force hits the BVH may skip lie outside
@@ -432,7 +445,8 @@ NUMERICS
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
      <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined, plus
-     <xmmintrin.h> on x86 with SSE (define FOVPT_NO_SIMD to leave it out).
+     <xmmintrin.h> on x86 with SSE (and <immintrin.h> with AVX), <arm_neon.h> on AArch64,
+     <wasm_simd128.h> on wasm32 with -msimd128 (define FOVPT_NO_SIMD to leave them out).
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
      __aeabi_d* routine is referenced (checked by tests/compile).
@@ -972,7 +986,8 @@ typedef struct fovpt_scene {
     const void *prims;         /* internal primitive records */
     const void *nodes;         /* BVH nodes (NULL: no BVH) */
     const uint32_t *order;     /* primitive order of the BVH leaves */
-    const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise) */
+    const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise), in
+                                  SoA blocks of 4 slots: float[9][4] per block */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
@@ -1285,7 +1300,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *scene, const fovpt_scene_des
 
 /* Closest hit in (tmin, tmax): 1 and *hit filled, or 0 (also for bad input). dir need not be
    unit length (t is in units of dir; any finite non-zero length). _brute tests every
-   primitive (the reference); the BVH finds the same closest t (NUMERICS). */
+   primitive (the reference); the BVH finds the same closest t and primitive (among equal
+   t the lowest primitive slot, as brute force; NUMERICS). */
 FOVPT_API int fovpt_intersect(const fovpt_scene *s, const float org[3], const float dir[3],
                               float tmin, float tmax, fovpt_hit *hit);
 FOVPT_API int fovpt_intersect_brute(const fovpt_scene *s, const float org[3],
@@ -2519,15 +2535,93 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #define FOVPT__PRIV FOV__PRIV
 #define FOVPT__FAIL(lg, r, msg) FOV__FAIL(lg, "fovpt", r, msg)
 
-/* SSE: the 4-wide BVH tests a node's four boxes in one pass (FOVPT_NO_SIMD: scalar only;
-   both give the same results) */
+/* SIMD: the 4-wide BVH tests a node's four boxes in one pass and a leaf's triangles four at
+   a time (SoA blocks): SSE on x86 (FOVPT__SIMD 1), NEON on AArch64 (2), SIMD128 on wasm32
+   built with -msimd128 (3); FOVPT_NO_SIMD or any other target: the scalar twin, the same
+   arithmetic one lane at a time (0). Every path gives the same hits (the same float
+   operations in the same order, no FMA contraction: the comparisons are exact). */
 #if !defined(FOVPT_NO_SIMD) && (defined(__SSE__) || defined(_M_X64) || \
                                 (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
-#define FOVPT__SSE 1
+#define FOVPT__SIMD 1
 #include <xmmintrin.h>
-#else
-#define FOVPT__SSE 0
+#if defined(__AVX__)
+#include <immintrin.h>
 #endif
+typedef __m128 fovpt__v4;
+typedef __m128 fovpt__m4;
+#define FOVPT__V_SET1(x) _mm_set1_ps(x)
+#define FOVPT__V_LD(p) _mm_loadu_ps(p)
+#define FOVPT__V_ST(p, a) _mm_storeu_ps(p, a)
+#define FOVPT__V_ADD(a, b) _mm_add_ps(a, b)
+#define FOVPT__V_SUB(a, b) _mm_sub_ps(a, b)
+#define FOVPT__V_MUL(a, b) _mm_mul_ps(a, b)
+#define FOVPT__V_DIV(a, b) _mm_div_ps(a, b)
+#define FOVPT__V_MAXT(a, t) _mm_max_ps(a, t) /* a > t ? a : t (NaN a: t) */
+#define FOVPT__V_MINT(a, t) _mm_min_ps(a, t) /* a < t ? a : t (NaN a: t) */
+#define FOVPT__V_LE(a, b) _mm_cmple_ps(a, b)
+#define FOVPT__V_LT(a, b) _mm_cmplt_ps(a, b)
+#define FOVPT__V_GE(a, b) _mm_cmpge_ps(a, b)
+#define FOVPT__V_GT(a, b) _mm_cmpgt_ps(a, b)
+#define FOVPT__M_AND(a, b) _mm_and_ps(a, b)
+#define FOVPT__V_SIGN(a) _mm_and_ps(a, _mm_set1_ps(-0.0f))
+#define FOVPT__V_ABS(a) _mm_andnot_ps(_mm_set1_ps(-0.0f), a)
+#define FOVPT__V_XOR(a, m) _mm_xor_ps(a, m)
+#define FOVPT__M_BITS(m) ((uint32_t)_mm_movemask_ps(m))
+#elif !defined(FOVPT_NO_SIMD) && defined(__aarch64__) && (defined(__ARM_NEON) || defined(_M_ARM64))
+#define FOVPT__SIMD 2
+#include <arm_neon.h>
+typedef float32x4_t fovpt__v4;
+typedef uint32x4_t fovpt__m4;
+#define FOVPT__V_SET1(x) vdupq_n_f32(x)
+#define FOVPT__V_LD(p) vld1q_f32(p)
+#define FOVPT__V_ST(p, a) vst1q_f32(p, a)
+#define FOVPT__V_ADD(a, b) vaddq_f32(a, b)
+#define FOVPT__V_SUB(a, b) vsubq_f32(a, b)
+#define FOVPT__V_MUL(a, b) vmulq_f32(a, b)
+#define FOVPT__V_DIV(a, b) vdivq_f32(a, b)
+#define FOVPT__V_MAXT(a, t) vbslq_f32(vcgtq_f32(a, t), a, t)
+#define FOVPT__V_MINT(a, t) vbslq_f32(vcltq_f32(a, t), a, t)
+#define FOVPT__V_LE(a, b) vcleq_f32(a, b)
+#define FOVPT__V_LT(a, b) vcltq_f32(a, b)
+#define FOVPT__V_GE(a, b) vcgeq_f32(a, b)
+#define FOVPT__V_GT(a, b) vcgtq_f32(a, b)
+#define FOVPT__M_AND(a, b) vandq_u32(a, b)
+#define FOVPT__V_SIGN(a) vandq_u32(vreinterpretq_u32_f32(a), vdupq_n_u32(0x80000000u))
+#define FOVPT__V_ABS(a) vabsq_f32(a)
+#define FOVPT__V_XOR(a, m) vreinterpretq_f32_u32(veorq_u32(vreinterpretq_u32_f32(a), m))
+FOV__PRIV uint32_t fovpt__neon_bits(uint32x4_t m)
+{
+    static const uint32_t w[4] = { 1u, 2u, 4u, 8u };
+    return vaddvq_u32(vandq_u32(m, vld1q_u32(w)));
+}
+#define FOVPT__M_BITS(m) fovpt__neon_bits(m)
+#elif !defined(FOVPT_NO_SIMD) && defined(__wasm_simd128__)
+#define FOVPT__SIMD 3
+#include <wasm_simd128.h>
+typedef v128_t fovpt__v4;
+typedef v128_t fovpt__m4;
+#define FOVPT__V_SET1(x) wasm_f32x4_splat(x)
+#define FOVPT__V_LD(p) wasm_v128_load(p)
+#define FOVPT__V_ST(p, a) wasm_v128_store(p, a)
+#define FOVPT__V_ADD(a, b) wasm_f32x4_add(a, b)
+#define FOVPT__V_SUB(a, b) wasm_f32x4_sub(a, b)
+#define FOVPT__V_MUL(a, b) wasm_f32x4_mul(a, b)
+#define FOVPT__V_DIV(a, b) wasm_f32x4_div(a, b)
+#define FOVPT__V_MAXT(a, t) wasm_f32x4_pmax(t, a) /* t < a ? a : t */
+#define FOVPT__V_MINT(a, t) wasm_f32x4_pmin(t, a) /* a < t ? a : t */
+#define FOVPT__V_LE(a, b) wasm_f32x4_le(a, b)
+#define FOVPT__V_LT(a, b) wasm_f32x4_lt(a, b)
+#define FOVPT__V_GE(a, b) wasm_f32x4_ge(a, b)
+#define FOVPT__V_GT(a, b) wasm_f32x4_gt(a, b)
+#define FOVPT__M_AND(a, b) wasm_v128_and(a, b)
+#define FOVPT__V_SIGN(a) wasm_v128_and(a, wasm_i32x4_splat((int32_t)0x80000000u))
+#define FOVPT__V_ABS(a) wasm_f32x4_abs(a)
+#define FOVPT__V_XOR(a, m) wasm_v128_xor(a, m)
+#define FOVPT__M_BITS(m) ((uint32_t)wasm_i32x4_bitmask(m))
+#else
+#define FOVPT__SIMD 0
+#endif
+#define FOVPT__SSE (FOVPT__SIMD == 1)
 
 
 #ifndef FOVPT_MAX_DIM
@@ -3227,18 +3321,32 @@ typedef struct fovpt__node {
     uint32_t n;     /* leaf: primitive count (>= 1); inner: 0 */
 } fovpt__node;
 
-/* The traversal's BVH: the binary tree collapsed to up to 4 children per node (each node
-   opens its largest inner children until it has 4). b[row][child], rows as in
-   fovpt__node.b (lo x, y, z, hi x, y, z), so a ray's near and far rows are b[nb[k]] and
-   b[fb[k]], the four children side by side; empty slots have an empty box (lo FLT_MAX, hi
-   -FLT_MAX), which every ray misses. child: a node4 index, or FOVPT__LEAF4 | first << 5 |
-   count for a leaf (count <= 16). 128 bytes. */
+/* The traversal's BVH: the binary tree collapsed to up to FOVPT__W (FOVPT_BVH_WIDTH: 4, or
+   8 when compiled for AVX2) children per node (each node opens its largest inner children
+   until it has W). b[row][child], rows as in fovpt__node.b (lo x, y, z, hi x, y, z), so a
+   ray's near and far rows are b[nb[k]] and b[fb[k]], the W children side by side; empty
+   slots have an empty box (lo FLT_MAX, hi -FLT_MAX), which every ray misses. child: a node
+   index, or FOVPT__LEAF4 | first << 5 | count for a leaf (count <= 16). 128 bytes (W = 4) or
+   256 (W = 8). */
+#ifndef FOVPT_BVH_WIDTH
+#if FOVPT__SIMD == 1 && defined(__AVX2__)
+#define FOVPT_BVH_WIDTH 8
+#else
+#define FOVPT_BVH_WIDTH 4
+#endif
+#endif
+#if FOVPT_BVH_WIDTH != 4 && FOVPT_BVH_WIDTH != 8
+#error "fovpt: FOVPT_BVH_WIDTH must be 4 or 8"
+#endif
+#define FOVPT__W ((uint32_t)FOVPT_BVH_WIDTH)
 typedef struct fovpt__node4 {
-    float b[6][4];
-    uint32_t child[4];
-    uint32_t pad[4];
+    float b[6][FOVPT_BVH_WIDTH];
+    uint32_t child[FOVPT_BVH_WIDTH];
+    uint32_t pad[FOVPT_BVH_WIDTH];
 } fovpt__node4;
 #define FOVPT__LEAF4 0x80000000u
+/* traversal stack: at most W - 1 entries pushed per node on the path, plus the root */
+#define FOVPT__STACK ((FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 2u)
 
 typedef struct fovpt__layout {
     size_t prims, nodes, nodes4, order, lights, cdf, area, pbox, total;
@@ -3438,8 +3546,11 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    L->nodes4 = (size_t)sz;   /* at most one per inner binary node (n_bounded - 1), or 1 */
-    sz += (uint64_t)sizeof(fovpt__node4) * (L->n_bounded > 1u ? L->n_bounded - 1u : 1u);
+    /* W-wide nodes: one whose children are all binary leaves (at most leaves / 2 <= n / 2 of
+       them), or one with W children that opened W - 1 of the n - 1 binary inner nodes; or 1 */
+    L->nodes4 = (size_t)sz;
+    sz += (uint64_t)sizeof(fovpt__node4) *
+          ((uint64_t)L->n_bounded / 2u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
     sz += 4u * (uint64_t)L->n_bounded;
     sz = (sz + 15u) & ~(uint64_t)15u;
@@ -3453,8 +3564,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz += 4u * n_lights;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid);
-                               after the build: the leaf-ordered triangles (v0, e1, e2) */
-    sz += 36u * (uint64_t)L->n_bounded;
+                               after the build: the leaf-ordered triangles (v0, e1, e2) in
+                               SoA blocks of 4 slots (fovpt_scene.leaf_tris) */
+    sz += 36u * (((uint64_t)L->n_bounded + 3u) & ~(uint64_t)3u); /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -3524,27 +3636,27 @@ typedef struct fovpt__bin {
 FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4)
 {
     typedef struct { uint32_t bin, slot; } work;
-    work stack[3u * FOVPT_MAX_BVH_DEPTH + 4u];
-    uint32_t sp = 0, used = 1, c[4], m, j, k;
+    work stack[(FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u];
+    uint32_t sp = 0, used = 1, c[FOVPT_BVH_WIDTH], m, j, k;
     stack[sp].bin = 0; stack[sp].slot = 0; ++sp;
     while (sp > 0) {
         work w = stack[--sp];
         fovpt__node4 *q = &n4[w.slot];
         if (nodes[w.bin].n) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
         else { c[0] = nodes[w.bin].a; c[1] = nodes[w.bin].a + 1u; m = 2; }
-        while (m < 4) { /* open the inner child of largest area */
-            uint32_t best = 4;
+        while (m < FOVPT__W) { /* open the inner child of largest area */
+            uint32_t best = FOVPT__W;
             float ba = -1.0f;
             for (j = 0; j < m; ++j) {
                 float a = fovpt__half_area(nodes[c[j]].b, nodes[c[j]].b + 3);
                 if (!nodes[c[j]].n && a > ba) { ba = a; best = j; }
             }
-            if (best == 4) break;
+            if (best == FOVPT__W) break;
             k = c[best];
             c[best] = nodes[k].a;
             c[m++] = nodes[k].a + 1u;
         }
-        for (j = 0; j < 4; ++j) {
+        for (j = 0; j < FOVPT__W; ++j) {
             if (j >= m) {
                 for (k = 0; k < 3; ++k) { q->b[k][j] = FLT_MAX; q->b[3 + k][j] = -FLT_MAX; }
                 q->child[j] = FOVPT__LEAF4; /* an empty leaf, never reached */
@@ -3554,13 +3666,13 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
             if (nodes[c[j]].n) {
                 q->child[j] = FOVPT__LEAF4 | (nodes[c[j]].a << 5) | nodes[c[j]].n;
             } else {
-                FOV_ASSERT(sp < 3u * FOVPT_MAX_BVH_DEPTH + 4u);
+                FOV_ASSERT(sp < (FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u);
                 q->child[j] = used;
                 stack[sp].bin = c[j]; stack[sp].slot = used; ++sp;
                 ++used;
             }
         }
-        for (k = 0; k < 4; ++k) q->pad[k] = 0u;
+        for (k = 0; k < FOVPT__W; ++k) q->pad[k] = 0u;
     }
     return used;
 }
@@ -3830,19 +3942,22 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                                  (float *)(void *)(base + L.pbox), d);
             if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
             s->nodes = base + L.nodes;
-            {   /* the build data is spent: reuse it for the triangles in leaf order, so a leaf
-                   reads 36 contiguous bytes per triangle instead of a record through order[] */
+            {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
+                   blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
+                   lanes each), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
-                for (i = 0; i < nb; ++i) {
-                    const fovpt__prim *p = &prims[order[i]];
-                    float *q = lt + 9u * (size_t)i;
-                    if (p->type == FOVPT__TRI) {
+                uint32_t nb4 = (nb + 3u) & ~3u;
+                for (i = 0; i < nb4; ++i) {
+                    float *q = lt + 36u * (size_t)(i >> 2) + (i & 3u);
+                    const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    if (p && p->type == FOVPT__TRI) {
                         for (k = 0; k < 3; ++k) {
-                            q[k] = p->a[k]; q[3 + k] = p->b[k]; q[6 + k] = p->c[k];
+                            q[4u * k] = p->a[k]; q[4u * (3u + k)] = p->b[k];
+                            q[4u * (6u + k)] = p->c[k];
                         }
                     } else {
                         /* e1 = e2 = 0: det = 0, see fovpt__closest */
-                        for (k = 0; k < 9; ++k) q[k] = 0.0f;
+                        for (k = 0; k < 9; ++k) q[4u * k] = 0.0f;
                     }
                 }
                 s->leaf_tris = lt;
@@ -4059,6 +4174,127 @@ FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float 
     return tn <= tf * FOVPT__BOX_GROW + grow_k;
 }
 
+/* For a 4-bit mask of hit children: their number, the lowest and the highest. */
+static const unsigned char fovpt__mask_cnt[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
+static const unsigned char fovpt__mask_lo[16] = { 0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0 };
+static const unsigned char fovpt__mask_hi[16] = { 0, 0, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3 };
+
+/* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
+   s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
+   operations on the same floats as fovpt__isect, so the same t as brute force; SIMD, or the
+   scalar twin lane by lane). Slots that are not triangles (stored as zeros: det = 0) go
+   through fovpt__isect. The closest hit is canonical, as in brute force: the smallest t, and
+   among equal t the lowest primitive slot, whatever order the traversal visits leaves in
+   (a t equal to the closest so far replaces it when its slot is lower; a t equal to the
+   caller's tmax never counts). Returns 1 when any is set and a hit was found. */
+FOVPT__PRIV int fovpt__leaf_take(float t, uint32_t slot, float *tmax, uint32_t *best)
+{
+    if (t < *tmax || (t <= *tmax && *best != FOVPT_PRIM_NONE && slot < *best)) {
+        *tmax = t; *best = slot;
+        return 1;
+    }
+    return 0;
+}
+FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t first,
+                            uint32_t end, float tmin, float *tmax, uint32_t *best, int any)
+{
+    const fovpt__prim *prims = (const fovpt__prim *)s->prims;
+    uint32_t blk, j;
+    for (blk = first >> 2; blk <= (end - 1u) >> 2; ++blk) {
+        const float *q = s->leaf_tris + 36u * (size_t)blk;
+        const uint32_t b0 = blk << 2, lo = first > b0 ? first - b0 : 0u,
+            hi = end - b0 < 4u ? end - b0 : 4u;
+        const uint32_t lanes = (0xFu << lo) & (0xFu >> (4u - hi)) & 0xFu;
+        uint32_t hm, dm;
+        float tv[4];
+#if FOVPT__SIMD
+        {
+            const fovpt__v4 dx = FOVPT__V_SET1(r->d[0]), dy = FOVPT__V_SET1(r->d[1]),
+                dz = FOVPT__V_SET1(r->d[2]);
+            const fovpt__v4 e1x = FOVPT__V_LD(q + 12), e1y = FOVPT__V_LD(q + 16),
+                e1z = FOVPT__V_LD(q + 20), e2x = FOVPT__V_LD(q + 24), e2y = FOVPT__V_LD(q + 28),
+                e2z = FOVPT__V_LD(q + 32);
+            const fovpt__v4 sx = FOVPT__V_SUB(FOVPT__V_SET1(r->o[0]), FOVPT__V_LD(q)),
+                sy = FOVPT__V_SUB(FOVPT__V_SET1(r->o[1]), FOVPT__V_LD(q + 4)),
+                sz = FOVPT__V_SUB(FOVPT__V_SET1(r->o[2]), FOVPT__V_LD(q + 8));
+            const fovpt__v4 pvx = FOVPT__V_SUB(FOVPT__V_MUL(dy, e2z), FOVPT__V_MUL(dz, e2y)),
+                pvy = FOVPT__V_SUB(FOVPT__V_MUL(dz, e2x), FOVPT__V_MUL(dx, e2z)),
+                pvz = FOVPT__V_SUB(FOVPT__V_MUL(dx, e2y), FOVPT__V_MUL(dy, e2x));
+            const fovpt__v4 det = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(e1x, pvx),
+                                                            FOVPT__V_MUL(e1y, pvy)),
+                                               FOVPT__V_MUL(e1z, pvz));
+            const fovpt__v4 ad = FOVPT__V_ABS(det);
+            const fovpt__m4 okd = FOVPT__V_GT(ad, FOVPT__V_SET1(1e-30f));
+            const fovpt__v4 zero = FOVPT__V_SET1(0.0f);
+            fovpt__v4 u, v, t, qx, qy, qz;
+            fovpt__m4 m;
+            u = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(sx, pvx), FOVPT__V_MUL(sy, pvy)),
+                             FOVPT__V_MUL(sz, pvz));
+            u = FOVPT__V_XOR(u, FOVPT__V_SIGN(det)); /* u * sg: the sign flipped where det < 0 */
+            m = FOVPT__M_AND(okd, FOVPT__M_AND(FOVPT__V_GE(u, zero), FOVPT__V_LE(u, ad)));
+            hm = FOVPT__M_BITS(m) & lanes;
+            dm = ~FOVPT__M_BITS(okd) & lanes;
+            if (hm) {
+                qx = FOVPT__V_SUB(FOVPT__V_MUL(sy, e1z), FOVPT__V_MUL(sz, e1y));
+                qy = FOVPT__V_SUB(FOVPT__V_MUL(sz, e1x), FOVPT__V_MUL(sx, e1z));
+                qz = FOVPT__V_SUB(FOVPT__V_MUL(sx, e1y), FOVPT__V_MUL(sy, e1x));
+                v = FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(dx, qx), FOVPT__V_MUL(dy, qy)),
+                                 FOVPT__V_MUL(dz, qz));
+                v = FOVPT__V_XOR(v, FOVPT__V_SIGN(det));
+                t = FOVPT__V_DIV(FOVPT__V_ADD(FOVPT__V_ADD(FOVPT__V_MUL(e2x, qx),
+                                                           FOVPT__V_MUL(e2y, qy)),
+                                              FOVPT__V_MUL(e2z, qz)), det);
+                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GE(v, zero),
+                                                 FOVPT__V_LE(FOVPT__V_ADD(u, v), ad)));
+                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GT(t, FOVPT__V_SET1(tmin)),
+                                                 FOVPT__V_LE(t, FOVPT__V_SET1(*tmax))));
+                hm &= FOVPT__M_BITS(m);
+                FOVPT__V_ST(tv, t);
+            }
+        }
+#else
+        (void)lanes;
+        hm = dm = 0;
+        for (j = lo; j < hi; ++j) {
+            float v0[3], e1[3], e2[3], pv[3], sv[3], qv[3], det, ad, sg, u, v, t;
+            uint32_t k;
+            for (k = 0; k < 3; ++k) {
+                v0[k] = q[4u * k + j]; e1[k] = q[4u * (3u + k) + j]; e2[k] = q[4u * (6u + k) + j];
+            }
+            fov__cross(r->d, e2, pv);
+            det = fov__dot(e1, pv);
+            if (!(fov__absf(det) > 1e-30f)) { dm |= 1u << j; continue; }
+            sg = det < 0.0f ? -1.0f : 1.0f;
+            ad = det * sg;
+            fovpt__sub3(sv, r->o, v0);
+            u = fov__dot(sv, pv) * sg;
+            if (!(u >= 0.0f && u <= ad)) continue;
+            fov__cross(sv, e1, qv);
+            v = fov__dot(r->d, qv) * sg;
+            if (!(v >= 0.0f && u + v <= ad)) continue;
+            t = fov__dot(e2, qv) / det;
+            if (!(t > tmin && t <= *tmax)) continue;
+            tv[j] = t;
+            hm |= 1u << j;
+        }
+#endif
+        if (!(hm | dm)) continue;
+        for (j = lo; j < hi; ++j) {
+            const uint32_t slot = s->order[b0 + j];
+            if (hm & (1u << j)) {
+                if (fovpt__leaf_take(tv[j], slot, tmax, best) && any) return 1;
+            } else if ((dm & (1u << j)) && prims[slot].type != FOVPT__TRI) {
+                /* another shape: its own test, over (tmin, tmax] when a tie may count */
+                float tm = *tmax, t;
+                if (*best != FOVPT_PRIM_NONE && tm < FLT_MAX) tm = fovpt__next_up(tm);
+                t = fovpt__isect(&prims[slot], r, tmin, tm);
+                if (t < tm && fovpt__leaf_take(t, slot, tmax, best) && any) return 1;
+            }
+        }
+    }
+    return 0;
+}
+
 /* Closest hit over the bounded primitives and the planes: returns the slot (and lowers *tmax
    to its t) or FOVPT_PRIM_NONE; any: returns the first hit found instead (occlusion); brute:
    a loop over every bounded primitive instead of the BVH. BVH traversal: the root's box (the
@@ -4080,18 +4316,25 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     if (s->nodes && !brute) {
         const fovpt__node *nodes = (const fovpt__node *)s->nodes;
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
-        uint32_t stack[3u * FOVPT_MAX_BVH_DEPTH + 2u], sp = 0, ref = 0;
-        float stack_t[3u * FOVPT_MAX_BVH_DEPTH + 2u], tn;
+        uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
+        float stack_t[FOVPT__STACK], tn;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
-#if FOVPT__SSE
-        const __m128 vox = _mm_set1_ps(r->o[0]), voy = _mm_set1_ps(r->o[1]),
-            voz = _mm_set1_ps(r->o[2]);
-        const __m128 vix = _mm_set1_ps(r->inv[0]), viy = _mm_set1_ps(r->inv[1]),
-            viz = _mm_set1_ps(r->inv[2]);
-        const __m128 vtmin = _mm_set1_ps(tmin), vgrow = _mm_set1_ps(FOVPT__BOX_GROW),
-            vgk = _mm_set1_ps(gk);
+#if FOVPT__SIMD
+        const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
+            voz = FOVPT__V_SET1(r->o[2]);
+        const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
+            viz = FOVPT__V_SET1(r->inv[2]);
+        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
+            vgk = FOVPT__V_SET1(gk);
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+        const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
+            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
+            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
+        (void)vox; (void)voy; (void)voz; (void)vix; (void)viy; (void)viz; (void)vtmin;
+        (void)vgrow; (void)vgk;
+#endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
             iz = r->inv[2];
@@ -4100,57 +4343,49 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    for (i = first; i < end; ++i) {
-                        /* Moller-Trumbore on the leaf-ordered copy: the same operations on the
-                           same floats as fovpt__isect, so the same hits as brute force */
-                        const float *v0 = s->leaf_tris + 9u * (size_t)i, *e1 = v0 + 3, *e2 = v0 + 6;
-                        float pv[3], sv[3], q[3], det, ad, sg, u, v;
-                        fov__cross(r->d, e2, pv);
-                        det = fov__dot(e1, pv);
-                        if (!(fov__absf(det) > 1e-30f)) {
-                            /* parallel, degenerate, or not a triangle (stored as zeros) */
-                            const fovpt__prim *p = &prims[s->order[i]];
-                            if (p->type == FOVPT__TRI) continue;
-                            t = fovpt__isect(p, r, tmin, *tmax);
-                            if (!(t < *tmax)) continue;
-                        } else {
-                            sg = det < 0.0f ? -1.0f : 1.0f;
-                            ad = det * sg;
-                            fovpt__sub3(sv, r->o, v0);
-                            u = fov__dot(sv, pv) * sg;
-                            if (!(u >= 0.0f && u <= ad)) continue;
-                            fov__cross(sv, e1, q);
-                            v = fov__dot(r->d, q) * sg;
-                            if (!(v >= 0.0f && u + v <= ad)) continue;
-                            t = fov__dot(e2, q) / det;
-                            if (!(t > tmin && t < *tmax)) continue;
-                        }
-                        *tmax = t; best = s->order[i];
-                        if (any) return best;
-                    }
+                    if (fovpt__leaf(s, r, first, end, tmin, tmax, &best, any)) return best;
                 } else {
                     /* the four children's slab tests (fovpt__box_hit's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
                        nearest first: the nearest is visited, the others pushed farthest
                        first with their entry distances */
                     const fovpt__node4 *nd = &n4[ref];
-                    float tv[4];
-                    uint32_t hm, nh = 0, hc[4], j;
-                    float ht[4];
-#if FOVPT__SSE
-                    __m128 t0 = vtmin, u0 = _mm_set1_ps(*tmax);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nx]), vox), vix), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fx]), vox), vix), u0);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[ny]), voy), viy), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fy]), voy), viy), u0);
-                    t0 = _mm_max_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[nz]), voz), viz), t0);
-                    u0 = _mm_min_ps(_mm_mul_ps(_mm_sub_ps(_mm_loadu_ps(nd->b[fz]), voz), viz), u0);
-                    hm = (uint32_t)_mm_movemask_ps(
-                        _mm_cmple_ps(t0, _mm_add_ps(_mm_mul_ps(u0, vgrow), vgk)));
-                    _mm_storeu_ps(tv, t0);
+                    float tv[FOVPT_BVH_WIDTH];
+                    uint32_t hm, nh = 0, hc[FOVPT_BVH_WIDTH], j;
+                    float ht[FOVPT_BVH_WIDTH];
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+                    __m256 t0 = _mm256_set1_ps(tmin), u0 = _mm256_set1_ps(*tmax);
+#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wiy), u0);
+                    t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wiz), u0);
+#undef FOVPT__SLAB8
+                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(
+                        t0, _mm256_add_ps(_mm256_mul_ps(u0, _mm256_set1_ps(FOVPT__BOX_GROW)),
+                                          _mm256_set1_ps(gk)), _CMP_LE_OQ));
+                    _mm256_storeu_ps(tv, t0);
+#elif FOVPT__SIMD
+                    hm = 0;
+                    for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
+                        fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
+#define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, viy), u0);
+                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, viz), u0);
+#undef FOVPT__SLAB4
+                        hm |= FOVPT__M_BITS(FOVPT__V_LE(
+                            t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk))) << j;
+                        FOVPT__V_ST(tv + j, t0);
+                    }
 #else
                     hm = 0;
-                    for (j = 0; j < 4; ++j) {
+                    for (j = 0; j < FOVPT__W; ++j) {
                         const float tm = *tmax;
                         float t0 = tmin, u0 = tm, a, c;
                         a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix;
@@ -4163,15 +4398,32 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
 #endif
-                    nh = (hm & 1u) + ((hm >> 1) & 1u) + ((hm >> 2) & 1u) + (hm >> 3);
+                    /* tables indexed by 4 bits of the mask: the number of hit children, the
+                       lowest and the highest hit child */
+#define FOVPT__NCNT(m) ((uint32_t)fovpt__mask_cnt[m])
+#define FOVPT__NLO(m) ((uint32_t)fovpt__mask_lo[m])
+#define FOVPT__NHI(m) ((uint32_t)fovpt__mask_hi[m])
+#if FOVPT_BVH_WIDTH == 4
+                    nh = FOVPT__NCNT(hm);
                     if (nh == 1u) { /* the common cases first: one or two children hit */
-                        ref = nd->child[(hm & 1u) ? 0 : (hm & 2u) ? 1 : (hm & 4u) ? 2 : 3];
+                        ref = nd->child[FOVPT__NLO(hm)];
                         continue;
                     }
                     if (nh == 2u) {
-                        const uint32_t j0 = (hm & 1u) ? 0u : (hm & 2u) ? 1u : 2u,
-                            j1 = (hm & 8u) ? 3u : (hm & 4u) ? 2u : 1u;
-                        FOV_ASSERT(sp < 3u * FOVPT_MAX_BVH_DEPTH + 2u);
+                        const uint32_t j0 = FOVPT__NLO(hm), j1 = FOVPT__NHI(hm);
+#else
+                    nh = FOVPT__NCNT(hm & 15u) + FOVPT__NCNT(hm >> 4);
+                    if (nh == 1u) { /* the common cases first: one or two children hit */
+                        ref = nd->child[(hm & 15u) ? FOVPT__NLO(hm & 15u)
+                                                   : 4u + FOVPT__NLO(hm >> 4)];
+                        continue;
+                    }
+                    if (nh == 2u) {
+                        const uint32_t j0 = (hm & 15u) ? FOVPT__NLO(hm & 15u)
+                                                       : 4u + FOVPT__NLO(hm >> 4),
+                            j1 = (hm >> 4) ? 4u + FOVPT__NHI(hm >> 4) : FOVPT__NHI(hm);
+#endif
+                        FOV_ASSERT(sp < FOVPT__STACK);
                         if (tv[j1] < tv[j0]) {
                             stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0]; ref = nd->child[j1];
                         } else {
@@ -4179,8 +4431,11 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         }
                         continue;
                     }
+#undef FOVPT__NCNT
+#undef FOVPT__NLO
+#undef FOVPT__NHI
                     nh = 0;
-                    for (j = 0; j < 4; ++j) {
+                    for (j = 0; j < FOVPT__W; ++j) {
                         if (hm & (1u << j)) {
                             /* insertion by entry distance, ascending (ties: child order) */
                             uint32_t k = nh++;
@@ -4191,7 +4446,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         }
                     }
                     if (nh > 0) {
-                        FOV_ASSERT(sp + nh <= 3u * FOVPT_MAX_BVH_DEPTH + 2u);
+                        FOV_ASSERT(sp + nh <= FOVPT__STACK);
                         for (j = nh - 1u; j > 0; --j) { stack[sp] = hc[j]; stack_t[sp++] = ht[j]; }
                         ref = hc[0];
                         continue;

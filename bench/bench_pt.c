@@ -186,43 +186,110 @@ static void psnr_fields(const float *a, const float *ref, const float *ecc, size
     }
 }
 
-/* ---- ray throughput on triangles: fovpt's BVH against Embree (one thread each) ---------- */
+/* ---- ray throughput on triangles: fovpt's BVH against Embree and tinybvh (one thread each) --
+   Per scene, one triangle soup (tp_soup) traced by every method: mesh100k's terrain alone (as
+   before); cubes441, cornell and interior with their quads as 2 triangles, boxes as 12,
+   spheres as 16 x 32 latitude-longitude triangles and cubes441's floor plane as a 200 x 200
+   quad. Rays: every pixel-centre camera ray (mode camera) and one cosine-distributed bounce ray
+   from each camera hit, offset 1e-3 along the normal, from a fixed-seed generator (mode
+   bounce); closest_hit: both sets in one loop (the row kept from before). Closest hit, tnear 0,
+   tfar 1e30; best of 5 runs interleaved (fovpt, Embree, tinybvh, fovpt, ...; thread CPU time).
+   speedup = Embree's time / this row's time. pt_bvh.csv beside the CSV: build time (best of 3,
+   thread CPU time) and bytes per triangle of each acceleration structure (fovpt: the whole
+   scene memory of fovpt_scene_size, and in traversal_bytes_per_tri what the traversal reads:
+   nodes, leaf triangles, leaf order; Embree: the device's allocations, vertex and index
+   buffers included; tinybvh: its traversal blocks, nodes and triangles). */
 static uint64_t g_rng = 0x243f6a8885a308d3ull;
 static float rnd01(void)
 {
     g_rng ^= g_rng << 13; g_rng ^= g_rng >> 7; g_rng ^= g_rng << 17;
     return (float)(g_rng >> 40) * (1.0f / 16777216.0f);
 }
-static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
+#ifdef PT_HAVE_TINYBVH
+const char *tbvh_layout(void);
+void *tbvh_build(const float *tri, uint32_t ntri, size_t *bytes);
+void tbvh_trace(void *h, const float *org, const float *dir, size_t n, float *t_out);
+void tbvh_free(void *h);
+#endif
+
+typedef struct tp_soup { float *v; uint32_t n, cap; } tp_soup;
+static void tp_tri(tp_soup *s, const float *a, const float *b, const float *c)
 {
-    pt_scene S;
-    fovpt_scene tri;
-    fovpt_scene_desc d;
-    size_t bytes = 0, nr = 0, cap, i, agree = 0;
-    float *org, *dir, *t_pt;
-    void *mem;
-    uint32_t x, y, nprim;
-    double best_pt = 1e30, best_em = -1.0;
-    int rep;
-    if (pt_scene_make(&S, PT_SCENE_MESH) != 0) return;
-    S.cam.width = W; S.cam.height = H;
-    d = S.desc;
-    d.shapes = NULL; d.num_shapes = 0;          /* the triangles alone */
-    d.background[0] = d.background[1] = d.background[2] = 0.0f;
-    if (fovpt_scene_size(&d, &bytes) != FOV_OK) return;
-    mem = malloc(bytes + 16u);
-    if (fovpt_scene_build(&tri, &d, mem, bytes) != FOV_OK) return;
-    nprim = tri.num_prims;
-    cap = 2u * (size_t)W * H;
-    org = (float *)malloc(cap * 12u); dir = (float *)malloc(cap * 12u); t_pt = (float *)malloc(cap * 4u);
-    for (y = 0; y < H; ++y)
-        for (x = 0; x < W; ++x) {
-            fovpt_camera_ray(&S.cam, (float)x + 0.5f, (float)y + 0.5f, org + 3 * nr, dir + 3 * nr);
+    if (s->n == s->cap) { s->cap = s->cap ? 2u * s->cap : 1024u; s->v = (float *)realloc(s->v, 36u * s->cap); }
+    memcpy(s->v + 9u * s->n, a, 12); memcpy(s->v + 9u * s->n + 3, b, 12); memcpy(s->v + 9u * s->n + 6, c, 12);
+    s->n++;
+}
+static void tp_quad(tp_soup *s, const float *p, const float *u, const float *v)
+{
+    float a[3], b[3], c[3], d[3];
+    int k;
+    for (k = 0; k < 3; ++k) { a[k] = p[k]; b[k] = p[k] + u[k]; c[k] = p[k] + u[k] + v[k]; d[k] = p[k] + v[k]; }
+    tp_tri(s, a, b, c); tp_tri(s, a, c, d);
+}
+static void tp_soup_make(const pt_scene *S, int sc, tp_soup *out)
+{
+    uint32_t i, k;
+    memset(out, 0, sizeof *out);
+    if (sc == PT_SCENE_MESH) { /* the terrain alone */
+        for (i = 0; i < S->mesh.num_triangles; ++i)
+            tp_tri(out, S->mesh.positions + 3u * S->mesh.indices[3u * i], S->mesh.positions + 3u * S->mesh.indices[3u * i + 1u],
+                   S->mesh.positions + 3u * S->mesh.indices[3u * i + 2u]);
+        return;
+    }
+    for (i = 0; i < S->num_shapes; ++i) {
+        const fovpt_shape *sh = &S->shapes[i];
+        if (sh->type == FOVPT_SHAPE_QUAD) {
+            tp_quad(out, sh->p, sh->u, sh->v);
+        } else if (sh->type == FOVPT_SHAPE_PLANE) { /* the floor y = p.y as a 200 x 200 quad */
+            float p[3], u[3] = { 0.0f, 0.0f, 200.0f }, v[3] = { 200.0f, 0.0f, 0.0f };
+            p[0] = -100.0f; p[1] = sh->p[1]; p[2] = -100.0f;
+            tp_quad(out, p, u, v);
+        } else if (sh->type == FOVPT_SHAPE_BOX) {
+            const float *lo = sh->p, *hi = sh->u;
+            float e[3], p[3], u[3], v[3];
+            for (k = 0; k < 3; ++k) e[k] = hi[k] - lo[k];
+            for (k = 0; k < 3; ++k) { /* two faces per axis */
+                uint32_t k1 = (k + 1u) % 3u, k2 = (k + 2u) % 3u;
+                memset(u, 0, sizeof u); memset(v, 0, sizeof v);
+                u[k1] = e[k1]; v[k2] = e[k2];
+                memcpy(p, lo, 12); tp_quad(out, p, v, u);
+                memcpy(p, lo, 12); p[k] = hi[k]; tp_quad(out, p, u, v);
+            }
+        } else if (sh->type == FOVPT_SHAPE_SPHERE) {
+            const uint32_t nt = 16u, np = 32u;
+            uint32_t a, b;
+            for (a = 0; a < nt; ++a)
+                for (b = 0; b < np; ++b) {
+                    float q[4][3];
+                    uint32_t c;
+                    for (c = 0; c < 4; ++c) {
+                        float th = 3.14159265f * (float)(a + (c >> 1)) / (float)nt, ph = 6.2831853f * (float)(b + ((c ^ (c >> 1)) & 1u)) / (float)np;
+                        q[c][0] = sh->p[0] + sh->r * sinf(th) * cosf(ph);
+                        q[c][1] = sh->p[1] + sh->r * cosf(th);
+                        q[c][2] = sh->p[2] + sh->r * sinf(th) * sinf(ph);
+                    }
+                    if (a > 0) tp_tri(out, q[0], q[1], q[2]);
+                    if (a + 1u < nt) tp_tri(out, q[0], q[2], q[3]);
+                }
+        }
+    }
+}
+
+/* camera rays (n_cam) then bounce rays, from fovpt hits on the soup's scene */
+static size_t tp_rays(const fovpt_scene *tri, const fovpt_camera *cam, float *org, float *dir, size_t *n_cam)
+{
+    size_t nr = 0, i, nc;
+    uint32_t x, y;
+    g_rng = 0x243f6a8885a308d3ull;
+    for (y = 0; y < cam->height; ++y)
+        for (x = 0; x < cam->width; ++x) {
+            fovpt_camera_ray(cam, (float)x + 0.5f, (float)y + 0.5f, org + 3 * nr, dir + 3 * nr);
             nr++;
         }
-    for (i = 0, x = (uint32_t)nr; i < x; ++i) { /* one bounce ray per camera hit */
+    nc = nr;
+    for (i = 0; i < nc; ++i) { /* one bounce ray per camera hit */
         fovpt_hit h;
-        if (fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h)) {
+        if (fovpt_intersect(tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h)) {
             float n[3], t1[3], b1[3], u1 = rnd01(), u2 = rnd01(), r = sqrtf(u1), ph = 6.2831853f * u2, lx, ly, lz;
             float sg = (h.n[0] * dir[3 * i] + h.n[1] * dir[3 * i + 1] + h.n[2] * dir[3 * i + 2]) > 0.0f ? -1.0f : 1.0f;
             int k;
@@ -238,75 +305,223 @@ static void throughput_rows(FILE *csv, uint32_t W, uint32_t H)
             nr++;
         }
     }
-#ifndef PT_HAVE_EMBREE
-    for (rep = 0; rep < 5; ++rep) {
-        double t0 = cpu_ms(), t;
-        for (i = 0; i < nr; ++i) {
-            fovpt_hit h;
-            t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
-        }
-        t = cpu_ms() - t0;
-        if (t < best_pt) best_pt = t;
+    *n_cam = nc;
+    return nr;
+}
+
+#ifdef PT_HAVE_EMBREE
+static ptrdiff_t g_em_bytes;
+static bool em_monitor(void *user, ssize_t bytes, bool post)
+{
+    (void)user; (void)post;
+    g_em_bytes += bytes;
+    return true;
+}
+static void em_trace(RTCScene sc, const float *org, const float *dir, size_t n, float *t_out)
+{
+    struct RTCIntersectContext ictx;
+    size_t i;
+    rtcInitIntersectContext(&ictx);
+    for (i = 0; i < n; ++i) {
+        struct RTCRayHit rh;
+        rh.ray.org_x = org[3 * i]; rh.ray.org_y = org[3 * i + 1]; rh.ray.org_z = org[3 * i + 2];
+        rh.ray.dir_x = dir[3 * i]; rh.ray.dir_y = dir[3 * i + 1]; rh.ray.dir_z = dir[3 * i + 2];
+        rh.ray.tnear = 0.0f; rh.ray.tfar = 1e30f; rh.ray.time = 0.0f; rh.ray.mask = 0xFFFFFFFFu; rh.ray.id = 0; rh.ray.flags = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(sc, &ictx, &rh);
+        t_out[i] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
     }
-#else
+}
+#endif
+static void pt_trace(const fovpt_scene *s, const float *org, const float *dir, size_t n, float *t_out)
+{
+    size_t i;
+    for (i = 0; i < n; ++i) {
+        fovpt_hit h;
+        t_out[i] = fovpt_intersect(s, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
+    }
+}
+static size_t tp_agree(const float *a, const float *b, size_t n)
+{
+    size_t i, ag = 0;
+    for (i = 0; i < n; ++i)
+        if ((a[i] < 0.0f && b[i] < 0.0f) || (a[i] >= 0.0f && b[i] >= 0.0f && fabsf(a[i] - b[i]) <= 1e-4f * a[i])) ag++;
+    return ag;
+}
+
+enum { TP_PT, TP_EM, TP_TB, TP_NM };
+static void tp_scene(FILE *csv, FILE *bcsv, int sc, uint32_t W, uint32_t H)
+{
+    static const char *const mname[TP_NM] = { "fovpt_bvh", "embree", "tinybvh" };
+    static const char *const modes[3] = { "camera", "bounce", "closest_hit" };
+    pt_scene S;
+    tp_soup soup;
+    fovpt_scene tri;
+    fovpt_scene_desc d;
+    fovpt_mesh mesh;
+    size_t bytes = 0, nr, nc, cap, m_off[3], m_n[3], agree[TP_NM];
+    float *org, *dir, *t_m[TP_NM];
+    void *mem = NULL;
+    double best[TP_NM][3], build_ms[TP_NM], bpt[TP_NM];
+    int have[TP_NM] = { 1, 0, 0 }, rep, m, md;
+    const char *nm = pt_scene_names[sc];
+#ifdef PT_HAVE_EMBREE
+    RTCDevice dev = NULL;
+    RTCScene esc = NULL;
+#endif
+#ifdef PT_HAVE_TINYBVH
+    void *tb = NULL;
+#endif
+    if (pt_scene_make(&S, sc) != 0) return;
+    S.cam.width = W; S.cam.height = H;
+    tp_soup_make(&S, sc, &soup);
+    memset(&mesh, 0, sizeof mesh);
+    mesh.positions = soup.v; mesh.num_vertices = 3u * soup.n; mesh.num_triangles = soup.n; mesh.material = 0;
+    fovpt_scene_desc_init(&d);
+    d.meshes = &mesh; d.num_meshes = 1; d.materials = S.mats; d.num_materials = S.num_mats;
+    d.skip_degenerate = 1;
+    if (fovpt_scene_size(&d, &bytes) != FOV_OK) return;
+    mem = malloc(bytes + 16u);
+    build_ms[TP_PT] = 1e30;
+    for (rep = 0; rep < 3; ++rep) {
+        double t0 = cpu_ms();
+        if (fovpt_scene_build(&tri, &d, mem, bytes) != FOV_OK) { fprintf(stderr, "%s: build failed\n", nm); return; }
+        t0 = cpu_ms() - t0;
+        if (t0 < build_ms[TP_PT]) build_ms[TP_PT] = t0;
+    }
+    bpt[TP_PT] = (double)bytes / (double)soup.n;
+    cap = 2u * (size_t)W * H;
+    org = (float *)malloc(cap * 12u); dir = (float *)malloc(cap * 12u);
+    for (m = 0; m < TP_NM; ++m) t_m[m] = (float *)malloc(cap * 4u);
+    nr = tp_rays(&tri, &S.cam, org, dir, &nc);
+    m_off[0] = 0; m_n[0] = nc; m_off[1] = nc; m_n[1] = nr - nc; m_off[2] = 0; m_n[2] = nr;
+#ifdef PT_HAVE_EMBREE
     {
-        RTCDevice dev = rtcNewDevice("threads=1");
-        RTCScene sc = rtcNewScene(dev);
-        RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
-        float *vb = (float *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, S.mesh.num_vertices);
-        unsigned *ib = (unsigned *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, S.mesh.num_triangles);
-        struct RTCIntersectContext ictx;
-        memcpy(vb, S.mesh.positions, 12u * S.mesh.num_vertices);
-        memcpy(ib, S.mesh.indices, 12u * S.mesh.num_triangles);
-        rtcCommitGeometry(g);
-        rtcAttachGeometry(sc, g);
-        rtcReleaseGeometry(g);
-        rtcCommitScene(sc);
-        rtcInitIntersectContext(&ictx);
-        best_em = 1e30;
-        for (rep = 0; rep < 5; ++rep) { /* interleaved, so load from other jobs hits both alike */
-            double t0 = cpu_ms(), t;
-            size_t ag = 0;
-            for (i = 0; i < nr; ++i) {
-                fovpt_hit h;
-                t_pt[i] = fovpt_intersect(&tri, org + 3 * i, dir + 3 * i, 0.0f, 1e30f, &h) ? h.t : -1.0f;
-            }
-            t = cpu_ms() - t0;
-            if (t < best_pt) best_pt = t;
+        RTCGeometry g;
+        double t0;
+        float *vb;
+        unsigned *ib;
+        uint32_t i;
+        build_ms[TP_EM] = 1e30;
+        for (rep = 0; rep < 3; ++rep) {
+            if (esc) { rtcReleaseScene(esc); rtcReleaseDevice(dev); }
+            dev = rtcNewDevice("threads=1");
+            g_em_bytes = 0;
+            rtcSetDeviceMemoryMonitorFunction(dev, em_monitor, NULL);
             t0 = cpu_ms();
-            for (i = 0; i < nr; ++i) {
-                struct RTCRayHit rh;
-                float te;
-                rh.ray.org_x = org[3 * i]; rh.ray.org_y = org[3 * i + 1]; rh.ray.org_z = org[3 * i + 2];
-                rh.ray.dir_x = dir[3 * i]; rh.ray.dir_y = dir[3 * i + 1]; rh.ray.dir_z = dir[3 * i + 2];
-                rh.ray.tnear = 0.0f; rh.ray.tfar = 1e30f; rh.ray.time = 0.0f; rh.ray.mask = 0xFFFFFFFFu; rh.ray.id = 0; rh.ray.flags = 0;
-                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                rtcIntersect1(sc, &ictx, &rh);
-                te = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID ? rh.ray.tfar : -1.0f;
-                if ((te < 0.0f && t_pt[i] < 0.0f) || (te >= 0.0f && t_pt[i] >= 0.0f && fabsf(te - t_pt[i]) <= 1e-4f * te)) ag++;
-            }
-            t = cpu_ms() - t0;
-            if (t < best_em) best_em = t;
-            agree = ag;
+            esc = rtcNewScene(dev);
+            g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_TRIANGLE);
+            vb = (float *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, 3u * soup.n);
+            ib = (unsigned *)rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, soup.n);
+            memcpy(vb, soup.v, 36u * soup.n);
+            for (i = 0; i < 3u * soup.n; ++i) ib[i] = i;
+            rtcCommitGeometry(g);
+            rtcAttachGeometry(esc, g);
+            rtcReleaseGeometry(g);
+            rtcCommitScene(esc);
+            t0 = cpu_ms() - t0;
+            if (t0 < build_ms[TP_EM]) build_ms[TP_EM] = t0;
         }
-        rtcReleaseScene(sc);
-        rtcReleaseDevice(dev);
+        bpt[TP_EM] = (double)g_em_bytes / (double)soup.n; /* everything the device holds, buffers included */
+        have[TP_EM] = 1;
     }
 #endif
-    printf("ray throughput on %u triangles, %zu rays (closest hit, one thread, best of 5 interleaved runs): fovpt %.2f Mrays/s", nprim, nr,
-           (double)nr / (best_pt * 1e3));
-    fprintf(csv, "mesh100k,fovpt_bvh,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,%.3f,nan,0\n", nr, (double)nr / (best_pt * 1e-3),
-            best_pt, nr, W * H, best_em > 0.0 ? best_em / best_pt : 0.0);
-    if (best_em > 0.0) {
-        printf(", Embree %.2f Mrays/s (fovpt/Embree %.2f), hits agree on %.3f %% of the rays\n", (double)nr / (best_em * 1e3),
-               best_em / best_pt, 100.0 * (double)agree / (double)nr);
-        fprintf(csv, "mesh100k,embree,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,closest_hit,%zu,%u,1.000,nan,0\n", nr, (double)nr / (best_em * 1e-3),
-                best_em, nr, W * H);
-    } else {
-        printf(" (Embree: not built in; apt-get install libembree-dev)\n");
+#ifdef PT_HAVE_TINYBVH
+    {
+        size_t tbytes = 0;
+        build_ms[TP_TB] = 1e30;
+        for (rep = 0; rep < 3; ++rep) {
+            double t0;
+            if (tb) tbvh_free(tb);
+            t0 = cpu_ms();
+            tb = tbvh_build(soup.v, soup.n, &tbytes);
+            t0 = cpu_ms() - t0;
+            if (t0 < build_ms[TP_TB]) build_ms[TP_TB] = t0;
+        }
+        bpt[TP_TB] = (double)tbytes / (double)soup.n;
+        have[TP_TB] = tb != NULL;
     }
-    free(org); free(dir); free(t_pt); free(mem);
+#endif
+    for (m = 0; m < TP_NM; ++m) for (md = 0; md < 3; ++md) best[m][md] = 1e30;
+    for (rep = 0; rep < 5; ++rep) /* interleaved, so load from other jobs hits all alike */
+        for (md = 0; md < 3; ++md)
+            for (m = 0; m < TP_NM; ++m) {
+                const float *o = org + 3u * m_off[md], *dr = dir + 3u * m_off[md];
+                float *to = t_m[m] + m_off[md];
+                double t0;
+                if (!have[m]) continue;
+                t0 = cpu_ms();
+                if (m == TP_PT) pt_trace(&tri, o, dr, m_n[md], to);
+#ifdef PT_HAVE_EMBREE
+                if (m == TP_EM) em_trace(esc, o, dr, m_n[md], to);
+#endif
+#ifdef PT_HAVE_TINYBVH
+                if (m == TP_TB) tbvh_trace(tb, o, dr, m_n[md], to);
+#endif
+                t0 = cpu_ms() - t0;
+                if (t0 < best[m][md]) best[m][md] = t0;
+            }
+    for (m = 0; m < TP_NM; ++m) agree[m] = have[m] ? tp_agree(t_m[TP_PT], t_m[m], nr) : 0;
+    printf("%-9s %u triangles, %zu camera + %zu bounce rays (one thread, best of 5 interleaved runs), Mrays/s:\n", nm, soup.n, nc, nr - nc);
+    for (m = 0; m < TP_NM; ++m) {
+        if (!have[m]) {
+            printf("  %-9s not built in (%s)\n", mname[m], m == TP_EM ? "apt-get install libembree-dev" : "make bench-pt TINYBVH=/path/to/tiny_bvh.h");
+            continue;
+        }
+        printf("  %-9s camera %6.2f  bounce %6.2f  all %6.2f", mname[m], (double)m_n[0] / (best[m][0] * 1e3), (double)m_n[1] / (best[m][1] * 1e3),
+               (double)m_n[2] / (best[m][2] * 1e3));
+        if (m != TP_PT)
+            printf("   fovpt/%s camera %.2f bounce %.2f; hits agree with fovpt on %.3f %%", mname[m], best[m][0] / best[TP_PT][0],
+                   best[m][1] / best[TP_PT][1], 100.0 * (double)agree[m] / (double)nr);
+        printf("\n");
+        for (md = 0; md < 3; ++md) {
+            double em = have[TP_EM] ? best[TP_EM][md] : -1.0;
+            if (md == 2 && sc != PT_SCENE_MESH) continue; /* closest_hit: the row kept from before (terrain) */
+            fprintf(csv, "%s,%s,centre,rays_%zu,%.0f,%.2f,nan,nan,nan,nan,nan,%s,%zu,%u,%.3f,nan,0\n", nm, mname[m], m_n[md],
+                    (double)m_n[md] / (best[m][md] * 1e-3), best[m][md], modes[md], m_n[md], W * H, em > 0.0 ? em / best[m][md] : 0.0);
+        }
+        if (bcsv) {
+            /* fovpt: what the traversal reads (W-wide nodes, leaf triangles, leaf order) beside
+               the whole scene memory; Embree and tinybvh: the same figure as bytes_per_tri */
+            double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) + 144.0 * (double)((tri.num_bounded + 3u) / 4u) +
+                                        4.0 * tri.num_bounded) / (double)soup.n : bpt[m];
+            char lay[64];
+            snprintf(lay, sizeof lay, "bvh%u %s", (unsigned)FOVPT_BVH_WIDTH,
+                     FOVPT__SIMD == 1 ? (FOVPT_BVH_WIDTH == 8 ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");
+            fprintf(bcsv, "%s,%s,%u,%.2f,%.1f,%s,%.1f\n", nm, mname[m], soup.n, build_ms[m], bpt[m],
+                    m == TP_PT ? lay : m == TP_EM ? "embree3 default" :
+#ifdef PT_HAVE_TINYBVH
+                    tbvh_layout(),
+#else
+                    "",
+#endif
+                    trav);
+        }
+    }
+    fflush(csv);
+#ifdef PT_HAVE_EMBREE
+    if (esc) { rtcReleaseScene(esc); rtcReleaseDevice(dev); }
+#endif
+#ifdef PT_HAVE_TINYBVH
+    tbvh_free(tb);
+#endif
+    for (m = 0; m < TP_NM; ++m) free(t_m[m]);
+    free(org); free(dir); free(mem); free(soup.v);
     pt_scene_free(&S);
+}
+
+static void throughput_rows(FILE *csv, const char *out_path, uint32_t W, uint32_t H)
+{
+    static const int scenes[4] = { PT_SCENE_MESH, PT_SCENE_CUBES, PT_SCENE_CORNELL, PT_SCENE_INTERIOR };
+    char bpath[1024];
+    const char *sl = strrchr(out_path, '/');
+    FILE *bcsv;
+    int i;
+    snprintf(bpath, sizeof bpath, "%.*spt_bvh.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    bcsv = fopen(bpath, "w");
+    if (bcsv) fprintf(bcsv, "scene,method,triangles,build_ms,bytes_per_tri,layout,traversal_bytes_per_tri\n");
+    for (i = 0; i < 4; ++i) tp_scene(csv, bcsv, scenes[i], W, H);
+    if (bcsv) { fclose(bcsv); printf("wrote %s\n", bpath); }
 }
 
 /* ---- temporal options of SELECTIVE (Kim et al. 2021, steps 2 and 4): flicker, alpha sweep --
@@ -1279,7 +1494,7 @@ int main(int argc, char **argv)
         pt_scene_free(&S);
         free(ref_p); free(ref_w); free(img); free(ecc);
     }
-    if (!quick && !only_lp) throughput_rows(csv, W, H);
+    if (!quick && !only_lp) throughput_rows(csv, out_path, W, H);
     if (!only_tp && !only_lp) {
         char tpath[1024];
         const char *sl = strrchr(out_path, '/');

@@ -3,15 +3,17 @@
 
 usage: python3 bench/pt_tables.py [bench/results/pt.csv]
        python3 bench/pt_tables.py --write [bench/README.md]
-           (rewrites the marked sections default, eqtime, eqrays, throughput, temporal of
-           bench/README.md from the committed CSVs; see bench/readme_sections.py)
+           (rewrites the marked sections default, eqtime, eqrays, throughput, raytypes, bvh,
+           temporal of bench/README.md from the committed CSVs; see bench/readme_sections.py)
 Prints markdown:
   1. default budgets: speed-up over uniform4 and fovea / near-periphery PSNR per method;
   2. equal time: fovea PSNR (f1) of each foveated method given uniform4's time, minus
      uniform4's f1 (dB), with the measured time / target time; and of SELECTIVE / JIN minus
      UNIFORM Whitted at the spp of the same time;
   3. equal ray budget: the same gains against UNIFORM at the method's camera-ray count;
-  4. the closest-hit throughput rows (fovpt against Embree);
+  4. the closest-hit throughput rows (fovpt against Embree); per ray type (camera, bounce)
+     and scene with tinybvh when built in; from pt_bvh.csv beside it: build time and bytes per
+     triangle of each acceleration structure;
   5. from pt_temporal.csv beside it: PSNR and flicker per temporal option of SELECTIVE;
   6. path tracing in log-polar space (the lp_ rows: fovlp.h's positions, fovpt_shade_points):
      fovea (f1) / near-periphery (f4) PSNR gain over uniform4 at uniform4's time, beside the
@@ -51,7 +53,7 @@ def tables(path):
     scenes, gazes = [], []
     for r in rows:
         idx[(r["scene"], r["gaze"], r["method"], r["budget"])] = r
-        if r["mode"] != "closest_hit":
+        if r["mode"] not in ("closest_hit", "camera", "bounce"):  # not the throughput rows
             if r["scene"] not in scenes:
                 scenes.append(r["scene"])
             if r["gaze"] not in gazes:
@@ -149,6 +151,39 @@ def tables(path):
     sec["throughput"] = cur
     cur = []
 
+    # 4b. throughput per ray type and scene (fovpt / Embree / tinybvh in one run)
+    rt = [r for r in rows if r["mode"] in ("camera", "bounce")]
+    if rt:
+        print("| scene | method | camera Mrays/s | bounce Mrays/s | camera: Embree time / time | "
+              "bounce: Embree time / time |")
+        print("|---|---|---:|---:|---:|---:|")
+        keys = []
+        for r in rt:
+            if (r["scene"], r["method"]) not in keys:
+                keys.append((r["scene"], r["method"]))
+        for sc, m in keys:
+            c = [r for r in rt if r["scene"] == sc and r["method"] == m and r["mode"] == "camera"]
+            b = [r for r in rt if r["scene"] == sc and r["method"] == m and r["mode"] == "bounce"]
+            if c and b:
+                print("| %s | %s | %.2f | %.2f | %.3f | %.3f |" % (sc, m, f(c[0]["rays_per_s"]) * 1e-6, f(b[0]["rays_per_s"]) * 1e-6,
+                                                                f(c[0]["speedup"]), f(b[0]["speedup"])))
+    sec["raytypes"] = cur
+    cur = []
+
+    # 4c. acceleration structures (pt_bvh.csv beside it)
+    bpath = os.path.join(os.path.dirname(path), "pt_bvh.csv")
+    if os.path.exists(bpath):
+        with open(bpath, newline="") as fh:
+            brows = list(csv.DictReader(fh))
+        print("| scene | method | layout | triangles | build ms | bytes per triangle | traversal bytes per triangle |")
+        print("|---|---|---|---:|---:|---:|---:|")
+        for r in brows:
+            print("| %s | %s | %s | %s | %.1f | %.0f | %.0f |" % (r["scene"], r["method"], r["layout"], r["triangles"],
+                                                              f(r["build_ms"]), f(r["bytes_per_tri"]),
+                                                              f(r.get("traversal_bytes_per_tri", "nan"))))
+    sec["bvh"] = cur
+    cur = []
+
     # 5. temporal options
     tpath = os.path.join(os.path.dirname(path), "pt_temporal.csv")
     if os.path.exists(tpath):
@@ -211,7 +246,7 @@ def main(argv):
         return 0
     sec = tables(argv[1] if len(argv) > 1 else os.path.join(RESULTS, "pt.csv"))
     first = True
-    for name in ("default", "eqtime", "eqrays", "throughput", "temporal", "lp"):
+    for name in ("default", "eqtime", "eqrays", "throughput", "raytypes", "bvh", "temporal", "lp"):
         if name not in sec:
             continue
         if not first:

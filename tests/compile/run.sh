@@ -43,8 +43,8 @@
 #                   wasm-ld --no-entry --export-all (plus freestanding_rt.c: memset/memcpy);
 #                 arm-none-eabi-gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16
 #                   -mfloat-abi=hard -ffreestanding at -O2 and -O0;
-#                 clang --target=thumbv7em-none-eabihf and --target=riscv32 (rv32imafc,
-#                   ilp32f) at -O2;
+#                 clang --target=thumbv7em-none-eabihf, --target=riscv32 (rv32imafc,
+#                   ilp32f) and --target=aarch64-none-elf (NEON) at -O2;
 #               the object's undefined symbols (nm -u) must contain no software-double
 #               routine (__aeabi_d*, __extendsfdf2, __truncdfsf2, __*df3, ...) and nothing
 #               except memset/memcpy.
@@ -493,6 +493,8 @@ job free_clang "freestanding thumbv7em-none-eabihf (clang -mcpu=cortex-m4 -mfpu=
     thumbv7em-none-eabihf -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 job free_clang "freestanding riscv32 (clang -march=rv32imafc -mabi=ilp32f)" \
     riscv32-unknown-elf -march=rv32imafc -mabi=ilp32f
+job free_clang "freestanding aarch64 (clang --target=aarch64-none-elf: fovpt's NEON traversal)" \
+    aarch64-none-elf
 
 wait
 

@@ -30,7 +30,8 @@
 #                       linker script (mps2_an386.ld), run by
 #                       qemu-system-arm -M mps2-an386 -nographic -semihosting (timeout 300 s)
 #     cortex-m4-libm    the same linked with newlib's hard-float libm (no FOV_NO_LIBM)
-#   The same six builds of render_test_pt.c (public fovpt API only: a Cornell-like box with
+#   The same six builds of render_test_pt.c, plus wasm32-simd128 (wasm32-libm with -msimd128:
+#   fovpt's SIMD128 traversal), (public fovpt API only: a Cornell-like box with
 #   a 128-triangle mesh behind a BVH, UNIFORM path tracing at 2 spp and SELECTIVE with the
 #   Whitted tracer, 64x36; hit/depth from fovpt_intersect of the pixel-centre rays) run as
 #   targets pt-<name>, compared with pt-native at PSNR >= 35 dB (PSNR_MIN_PT) and the same
@@ -45,8 +46,13 @@
 #   outputs) and measures the stack high-water mark on the Cortex-M4: PASS when arena +
 #   stack <= 32768 bytes; its image is compared with the native build of the same program.
 #
+#   bvh-wasm32, bvh-wasm32-simd128, bvh-aarch64-neon: tests/test_fovpt.c's BVH = brute force
+#   sections (-DFOVPT_TEST_BVH_ONLY) built for each SIMD path of fovpt's traversal (scalar,
+#   SIMD128, NEON) and run (node; qemu-aarch64 for the static AArch64 build).
+#
 # Debian packages: gcc clang lld wasi-libc libclang-rt-dev-wasm32 nodejs (>= 20)
-# gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm.
+# gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-aarch64-linux-gnu
+# libc6-dev-arm64-cross qemu-user.
 
 set -u
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -172,10 +178,11 @@ target() {
             fi
             RUN=(timeout 120 "$d/prog")
             ;;
-        wasm32-libm|wasm32-nolibm)
+        wasm32-libm|wasm32-nolibm|wasm32-simd128)
             wasm_build_tools "build $name" || return 0
             local defs=(-lm)
             [ "$base" = wasm32-nolibm ] && defs=(-DFOV_NO_LIBM)
+            [ "$base" = wasm32-simd128 ] && defs=(-lm -msimd128)
             if ! clang --target=wasm32-wasi --sysroot="$WASI_SR" -std=c99 "${COMMON[@]}" \
                 "$src" "${defs[@]}" -o "$d/prog.wasm" > "$d/build.log" 2>&1; then
                 fail "build $name" "$(errsum "$d/build.log")"; return 0
@@ -336,6 +343,45 @@ mem_check() {
     fi
 }
 
+# bvh_check NAME: tests/test_fovpt.c's BVH = brute force sections (-DFOVPT_TEST_BVH_ONLY) on
+# one SIMD path of fovpt's traversal: wasm32 scalar, wasm32 SIMD128 (node), AArch64 NEON
+# (aarch64-linux-gnu-gcc -static, qemu-aarch64); PASS when it ends with "N passed, 0 failed"
+bvh_check() {
+    local name=$1 d="$B/$1" out
+    mkdir -p "$d"
+    local src=(-std=c99 -O2 -ffp-contract=off -Wall -Wextra -DFOVPT_TEST_BVH_ONLY -I. -Itests/common
+               tests/test_fovpt.c)
+    case "$name" in
+        bvh-wasm32|bvh-wasm32-simd128)
+            wasm_build_tools "build $name" || return 0
+            local f=()
+            [ "$name" = bvh-wasm32-simd128 ] && f=(-msimd128)
+            clang --target=wasm32-wasi --sysroot="$WASI_SR" "${src[@]}" "${f[@]}" -lm \
+                -o "$d/prog.wasm" > "$d/build.log" 2>&1 || { fail "build $name" "$(errsum "$d/build.log")"; return 0; }
+            wasm_run_tools "run $name" || return 0
+            RUN=(timeout 300 node "$T/run_wasi.mjs" "$d/prog.wasm")
+            ;;
+        bvh-aarch64-neon)
+            need "build $name" aarch64-linux-gnu-gcc gcc-aarch64-linux-gnu || return 0
+            aarch64-linux-gnu-gcc -static "${src[@]}" -lm -o "$d/prog" > "$d/build.log" 2>&1 ||
+                { fail "build $name" "$(errsum "$d/build.log")"; return 0; }
+            need "run $name" qemu-aarch64 qemu-user || return 0
+            RUN=(timeout 600 qemu-aarch64 "$d/prog") # about 20 s unloaded
+            ;;
+    esac
+    pass "build $name" "ok"
+    local rc
+    "${RUN[@]}" < /dev/null > "$d/out.txt" 2> "$d/run.err"
+    rc=$?
+    out=$(tail -n 1 "$d/out.txt")
+    [ $rc = 124 ] && out="timeout after $(grep -c '^PASS' "$d/out.txt") checks"
+    if [ $rc = 0 ] && echo "$out" | grep -qE '^[0-9]+ passed, 0 failed$'; then
+        pass "run $name: BVH = brute force" "$out"
+    else
+        fail "run $name: BVH = brute force" "$out; $(grep -m 3 '^FAIL' "$d/out.txt" | tr '\n' ' ') (log: $d/)"
+    fi
+}
+
 # the reference and the compare tool first, then the other targets
 job build_compare
 job native_ref
@@ -345,6 +391,10 @@ for tgt in cortex-m4-nolibm cortex-m4-libm wasm32-libm wasm32-nolibm native-noli
     job target "$tgt"
     [ -f fovpt.h ] && job target "pt-$tgt"
 done
+[ -f fovpt.h ] && job target pt-wasm32-simd128
+if [ -f fovpt.h ]; then
+    for tgt in bvh-wasm32 bvh-wasm32-simd128 bvh-aarch64-neon; do job bvh_check "$tgt"; done
+fi
 job mem_check
 wait
 
