@@ -1,4 +1,4 @@
-/* fovpt.h - v0.5.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.6.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -501,6 +501,19 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.6.0 (2026-12-05) BVH: leaf triangles in SoA groups of four tested four at a time; one 4-lane
+                      SIMD layer for SSE, NEON (AArch64) and wasm SIMD128 with a scalar twin
+                      (FOVPT_NO_SIMD); FOVPT_BVH_WIDTH 4 or 8 (8 with AVX2); the closest hit is
+                      canonical (smallest t, then the lowest primitive slot: brute force's rule),
+                      images unchanged; a smaller scene memory reserve (279 bytes per triangle, was
+                      300). Guide buffers (fovpt_guide, fovpt_trace_rows_guide, fovpt_render_guide)
+                      and a foveated denoiser (fovpt_denoise_*: temporal reprojection and an edge-
+                      avoiding a-trous filter after Dammertz et al. 2010 and Schied et al. 2017,
+                      strength and history weight by eccentricity and sample density; caller memory,
+                      row phases). fovpt_shade_points: path or Whitted radiance at arbitrary image
+                      points (fovlp.h's log-polar samples; Koskela et al. 2019). Gaze input from the
+                      shared block of revision 4 (fovpt_gaze_filter_*, fovpt_gaze_margin,
+                      fovpt_config_gaze_margin, fovpt_gaze_fixed).
    0.5.0 (2026-12-05) fovpt_config_acuity sets the samples from the eye model: spp per layer /
                       zone for equal eye-filtered noise (acuity_budget 0, new field) or
                       spread for the least mean noise at a budget (acuity_budget > 0); new
@@ -570,9 +583,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 5
+#define FOVPT_VERSION_MINOR 6
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.5.0"
+#define FOVPT_VERSION_STRING "0.6.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
