@@ -2,6 +2,7 @@
 # examples/web/build.sh OUT - builds the browser demo into OUT (make web: build/web):
 #   OUT/{sdf,lp,pt}.wasm         scalar builds (no -msimd128: MVP instructions only)
 #   OUT/{sdf,lp,pt}.simd.wasm    SIMD128 builds (-msimd128: the headers' __wasm_simd128__ paths)
+#   OUT/gaze.wasm                the page's gaze filter and margin (web_gaze.c)
 #   OUT/index.html, OUT/demo.js  the page (copied) and OUT/sizes.json (module sizes in bytes)
 # clang --target=wasm32 -ffreestanding -nostdlib, no libc and no emscripten: the headers'
 # FOV_NO_LIBM math, examples/web/web_rt.h for memset/memcpy/memmove and the allocator, and
@@ -32,6 +33,7 @@ for m in sdf lp pt; do
     one "$m" "$OUT/$m.wasm" & pids+=($!)
     one "$m" "$OUT/$m.simd.wasm" -msimd128 & pids+=($!)
 done
+one gaze "$OUT/gaze.wasm" & pids+=($!)   # the page's gaze filter (scalar: nothing to vectorise)
 rc=0
 for p in "${pids[@]}"; do wait "$p" || rc=1; done
 [ $rc = 0 ] || { echo "examples/web/build.sh: a module failed to build" >&2; exit 1; }

@@ -9,8 +9,15 @@
 //   setGazeSource(fn)   fn(timeMs) -> {x, y} in [0, 1] of the image (or null: keep the last);
 //                       an eye tracker or a recorded path; null returns to the selector's source
 //   setGazeFilter(fn)   fn({x, y, t}) -> {x, y}, pixels of the rendered image: every gaze sample
-//                       passes through it before the renderer (a place for a gaze filter; the
-//                       default passes it through)
+//                       passes through it before the renderer (the default passes it through)
+//   gazeState()         the simulated eye tracker's last sample: raw and filtered gaze (pixels),
+//                       the margin (degrees), the filter's noise estimate; stepGaze(tMs) pushes
+//                       one sample at time tMs and returns gazeState() (tests/web)
+// The simulated eye tracker (gaze source "sim") goes through the headers' gaze filter and
+// latency margin (GAZE INPUT of fovsdf.h / fovlp.h / fovpt.h) in gaze.wasm (web_gaze.c), which
+// the page itself loads: the filtered gaze drives the renderer (checkbox "filter"), and the
+// margin for the stated accuracy and the latency goes to the workers (checkbox "margin"),
+// whose glue widens the fovea with fovsdf_ / fovlp_ / fovpt_config_gaze_margin.
 //   setOptions(o), renderOnce(o), measure(o), pause(), resume(), restart(), getGaze(), stats(),
 //   crashWorker(k)      used by tests/web (see each function)
 // Query flags: ?simd=0 forces the scalar modules, ?workers=N, ?ignore_gaze=1 makes the glue
@@ -57,12 +64,12 @@ function workerMain() {
         },
         sdf(a) {
             const m = mods.sdf;
-            check(m.sdf_render(a.method, a.gx, a.gy, a.cam, a.y0, a.y1, a.overlay ? 1 : 0, a.frame), 'sdf_render');
+            check(m.sdf_render(a.method, a.gx, a.gy, a.cam, a.y0, a.y1, a.overlay ? 1 : 0, a.frame, a.margin || 0), 'sdf_render');
             return { y0: a.y0, y1: a.y1, rgba: band(m, W, a.y0, a.y1), stats: stats(m) };
         },
         lpShade(a) {   // every worker: begin the frame, shade its share of the sample rows
             const m = mods.lp;
-            check(m.lp_begin(a.gx, a.gy, a.cam), 'lp_begin');
+            check(m.lp_begin(a.gx, a.gy, a.cam, a.margin || 0), 'lp_begin');
             const rows = m.lp_sample_rows_count();
             const r0 = Math.floor(rows * a.k / a.n), r1 = Math.floor(rows * (a.k + 1) / a.n);
             const n = check(m.lp_shade(r0, r1), 'lp_shade');
@@ -89,7 +96,7 @@ function workerMain() {
         },
         pt(a) {
             const m = mods.pt;
-            check(m.pt_render(a.which, a.gx, a.gy, a.cam, a.y0, a.y1, a.overlay ? 1 : 0), 'pt_render');
+            check(m.pt_render(a.which, a.gx, a.gy, a.cam, a.y0, a.y1, a.overlay ? 1 : 0, a.margin || 0), 'pt_render');
             return { y0: a.y0, y1: a.y1, rgba: band(m, W, a.y0, a.y1), stats: stats(m) };
         },
         ptRestart() { check(mods.pt.pt_restart(), 'pt_restart'); return {}; },
@@ -147,7 +154,8 @@ function pageMain() {
     const opt = {
         mode: 'sdf', sdfMethod: 'cone_fov', scene: 0, preset: 2, taa: true, ptMethod: 'layers',
         res: '640x360', scale: 1, workers: Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2)),
-        overlay: false, ref: 'alternate', orbit: false, gazeSource: 'mouse', noiseDeg: 1, latencyMs: 50,
+        overlay: false, ref: 'alternate', orbit: false, gazeSource: 'mouse', noiseDeg: 0.5, latencyMs: 50,
+        gazeFilter: true, gazeMargin: true, accuracyDeg: 0.5, simSeed: 1,
     };
     if (q.get('workers')) opt.workers = Math.max(1, Math.min(16, parseInt(q.get('workers'), 10) || 1));
     if (q.get('res')) opt.res = q.get('res');
@@ -195,18 +203,27 @@ function pageMain() {
     // ---- geometry, gaze ----
     let mouse = { x: 0.5, y: 0.5 }, gaze = { x: 0, y: 0 }, customSource = null, gazeFilter = null;
     const simQueue = [];
+    // gaze.wasm (web_gaze.c): the headers' gaze filter and margin, loaded at start
+    let gazeMod = null, gazeState = null, rngState = 1;
+    const rand = () => {   // mulberry32: the simulated tracker's noise repeats for a seed
+        rngState = (rngState + 0x6D2B79F5) >>> 0;
+        let t = rngState;
+        t = Math.imul(t ^ (t >>> 15), t | 1);
+        t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+        return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+    };
     function pxPerDeg() {
         const fy = (info.fovY || 50) * Math.PI / 180;
         return (H / 2) / Math.tan(fy / 2) * Math.tan(Math.PI / 180);
     }
     function gaussian() {
         let u = 0, v = 0;
-        while (u === 0) u = Math.random();
-        while (v === 0) v = Math.random();
+        while (u === 0) u = rand();
+        while (v === 0) v = rand();
         return Math.sqrt(-2 * Math.log(u)) * Math.cos(2 * Math.PI * v);
     }
     // the simulated eye tracker: the mouse, delayed by latencyMs, plus Gaussian noise of
-    // noiseDeg degrees (standard deviation per axis)
+    // noiseDeg degrees (standard deviation per axis; seeded by simSeed at each configure)
     function simulatedTracker(now) {
         simQueue.push({ t: now, x: mouse.x, y: mouse.y });
         while (simQueue.length > 1 && simQueue[1].t <= now - opt.latencyMs) simQueue.shift();
@@ -222,8 +239,26 @@ function pageMain() {
         if (!g) return;
         let p = { x: Math.min(Math.max(g.x, 0), 1) * W, y: Math.min(Math.max(g.y, 0), 1) * H, t: now };
         if (gazeFilter) p = gazeFilter(p) || p;   // the gaze filter hook
-        gaze = { x: Math.min(Math.max(p.x, 0), W), y: Math.min(Math.max(p.y, 0), H) };
+        const raw = { x: Math.min(Math.max(p.x, 0), W), y: Math.min(Math.max(p.y, 0), H) };
+        gaze = raw;
+        gazeState = null;
+        if (customSource || opt.gazeSource !== 'sim' || !gazeMod) return;
+        // the simulated tracker's sample through the headers' filter (always fed, so that the
+        // margin has its state; "filter" off: the renderer takes the raw sample)
+        const r = gazeMod.gaze_push(now, raw.x, raw.y);
+        if (r < 0) throw new Error(`gaze_push failed: fov_result ${r}`);
+        const c = { x: gazeMod.gaze_x(), y: gazeMod.gaze_y() };
+        const filtered = opt.gazeFilter ? { x: Math.min(Math.max(c.x, 0), W), y: Math.min(Math.max(c.y, 0), H) } : { ...raw };
+        let marginDeg = 0;
+        if (opt.gazeMargin) {
+            marginDeg = gazeMod.gaze_margin(Math.max(0, opt.accuracyDeg || 0), Math.max(0, opt.latencyMs || 0));
+            if (!(marginDeg >= 0)) throw new Error(`gaze_margin failed: fov_result ${marginDeg}`);
+        }
+        gaze = filtered;
+        gazeState = { t: now, raw, filtered, cFiltered: c, marginDeg, filter: !!opt.gazeFilter, margin: !!opt.gazeMargin,
+            noiseDeg: gazeMod.gaze_noise_deg(), saccade: gazeMod.gaze_saccade() === 1, resets: gazeMod.gaze_resets() };
     }
+    const marginNow = () => (gazeState ? gazeState.marginDeg : 0);
     const toMouse = (cx, cy) => {
         const r = canvas.getBoundingClientRect();
         mouse = { x: (cx - r.left) / r.width, y: (cy - r.top) / r.height };
@@ -279,6 +314,10 @@ function pageMain() {
         const args = { mod, w: W, h: H, scene: o.scene, preset: o.preset, taa: o.taa, method: PT_METHOD[o.ptMethod] };
         const res = await Promise.all(workers.map((_, k) => call(k, 'setup', args)));
         info = res[0];
+        rngState = (opt.simSeed >>> 0) || 1;
+        simQueue.length = 0;
+        const gr = gazeMod.gaze_setup(info.fovY || 50, W, H);
+        if (gr < 0) throw new Error(`gaze_setup failed: fov_result ${gr}`);
         configured = { key, mode: mod };
         frameNo = 0;
         timing.fov.reset(); timing.ref.reset();
@@ -296,7 +335,7 @@ function pageMain() {
     async function renderFrame(reference) {
         if (!configured) throw new Error('the demo is not set up (a configuration failed)');
         const mode = configured.mode;
-        const g = { gx: gaze.x, gy: gaze.y, cam: camAngle };
+        const g = { gx: gaze.x, gy: gaze.y, cam: camAngle, margin: reference ? 0 : marginNow() };
         const t0 = performance.now();
         let parts, s = {};
         if (mode === 'sdf') {
@@ -305,6 +344,7 @@ function pageMain() {
                 call(k, 'sdf', { ...g, method, y0, y1, overlay: opt.overlay && !reference, frame: frameNo })));
             s.evalsPx = sum(parts, 0) / (W * H);
             s.traced = sum(parts, 2) / (W * H);
+            if (!reference) s.foveaDeg = parts[0].stats[4];
         } else if (mode === 'lp') {
             if (reference) {
                 parts = await Promise.all(bands(1).map(([y0, y1], k) => call(k, 'lpRef', { cam: camAngle, y0, y1 })));
@@ -317,6 +357,7 @@ function pageMain() {
                 info.discR = fin.discR;
                 s.evalsPx = sum(shares, 0) / (W * H);
                 s.traced = fin.stats[3] / (W * H);
+                s.foveaDeg = fin.stats[4];   // the gaze disc, degrees (0: this preset has none)
             }
         } else {
             parts = await Promise.all(bands(1).map(([y0, y1], k) =>
@@ -325,22 +366,41 @@ function pageMain() {
             s.samplesPx = sum(parts, 0) / (W * H);
             s.traced = sum(parts, 2) / (W * H);
             s.accumulated = parts[0].stats[4];
+            if (!reference) s.foveaDeg = parts[0].stats[6];
         }
         const ms = performance.now() - t0;
         const img = new ImageData(W, H);
         for (const p of parts) img.data.set(p.rgba, 4 * W * p.y0);
         frameNo++;
+        s.marginDeg = reference ? 0 : marginNow();
         return { ms, img, s, gaze: { ...gaze } };
     }
     function draw(img) {
         ctx2d.putImageData(img, 0, 0);
     }
+    let lastFoveaDeg = 0;   // the fovea the last foveated frame was rendered with (margin included)
     function drawOverlay() {
         octx.clearRect(0, 0, W, H);
-        const r = configured && configured.mode === 'lp' ? (info.discR || 0) : (info.foveaDeg || 0) * pxPerDeg();
+        const lp = configured && configured.mode === 'lp';
+        const r = lp ? (info.discR || 0) : (lastFoveaDeg || info.foveaDeg || 0) * pxPerDeg();
         octx.strokeStyle = 'rgba(255,255,255,0.8)';
         octx.lineWidth = 1;
-        if (opt.overlay && r > 0) { octx.beginPath(); octx.arc(gaze.x, gaze.y, r, 0, 2 * Math.PI); octx.stroke(); }
+        if ((opt.overlay || gazeState) && r > 0) { octx.beginPath(); octx.arc(gaze.x, gaze.y, r, 0, 2 * Math.PI); octx.stroke(); }
+        if (gazeState) {
+            // the fovea without the margin (dashed), and the raw sample (a red x)
+            const r0 = lp ? (gazeState.marginDeg > 0 && lastFoveaDeg > 0 ? r * Math.tan((lastFoveaDeg - gazeState.marginDeg) * Math.PI / 180) / Math.tan(lastFoveaDeg * Math.PI / 180) : 0)
+                : (info.foveaDeg || 0) * pxPerDeg();
+            if (gazeState.marginDeg > 0 && r0 > 0) {
+                octx.setLineDash([3, 3]); octx.beginPath(); octx.arc(gaze.x, gaze.y, r0, 0, 2 * Math.PI); octx.stroke(); octx.setLineDash([]);
+            }
+            const q = gazeState.raw;
+            octx.strokeStyle = 'rgba(255,80,80,0.9)';
+            octx.beginPath();
+            octx.moveTo(q.x - 3, q.y - 3); octx.lineTo(q.x + 3, q.y + 3);
+            octx.moveTo(q.x - 3, q.y + 3); octx.lineTo(q.x + 3, q.y - 3);
+            octx.stroke();
+            octx.strokeStyle = 'rgba(255,255,255,0.8)';
+        }
         octx.beginPath();
         octx.moveTo(gaze.x - 5, gaze.y); octx.lineTo(gaze.x + 5, gaze.y);
         octx.moveTo(gaze.x, gaze.y - 5); octx.lineTo(gaze.x, gaze.y + 5);
@@ -363,6 +423,10 @@ function pageMain() {
         $('t-cost').textContent = `${per(timing.fov.s)} (reference ${per(timing.ref.s)})`;
         $('t-traced').textContent = timing.fov.s.traced !== undefined ? `${(100 * timing.fov.s.traced).toFixed(1)} %` : '-';
         $('t-acc').textContent = timing.fov.s.accumulated !== undefined ? `${timing.fov.s.accumulated} frames` : '-';
+        const gs = gazeState;
+        $('t-gaze').textContent = gs ? `raw (${gs.raw.x.toFixed(1)}, ${gs.raw.y.toFixed(1)}), ${gs.filter ? 'filtered' : 'unfiltered'} (${gs.filtered.x.toFixed(1)}, ${gs.filtered.y.toFixed(1)}) px; `
+            + `margin ${gs.margin ? gs.marginDeg.toFixed(2) + ' deg' : 'off'}; fovea ${lastFoveaDeg.toFixed(2)} deg; noise est. ${gs.noiseDeg.toFixed(2)} deg${gs.saccade ? ', saccade' : ''}`
+            : `(${gaze.x.toFixed(1)}, ${gaze.y.toFixed(1)}) px`;
         $('t-build').textContent = `${useSimd ? 'SIMD128' : 'scalar'}${simdSupported ? '' : ' (no SIMD128 in this browser)'}, ${workers.length} worker(s), ${W}x${H}`;
     }
 
@@ -378,6 +442,7 @@ function pageMain() {
             if (opt.ref === 'alternate') { reference = (alternate++ % 2) === 1; }
             const fr = await renderFrame(reference);
             (reference ? timing.ref : timing.fov).add(fr.ms, fr.s);
+            if (!reference && fr.s.foveaDeg !== undefined) lastFoveaDeg = fr.s.foveaDeg;
             if (!reference || opt.ref === 'only') draw(fr.img);
             drawOverlay();
             panel();
@@ -395,7 +460,7 @@ function pageMain() {
         el.addEventListener('change', async () => {
             opt[key] = get();
             syncControls();
-            if (['mode', 'sdfMethod', 'overlay', 'ref', 'orbit', 'gazeSource', 'noiseDeg', 'latencyMs'].includes(key)) {
+            if (['mode', 'sdfMethod', 'overlay', 'ref', 'orbit', 'gazeSource', 'noiseDeg', 'latencyMs', 'gazeFilter', 'gazeMargin', 'accuracyDeg'].includes(key)) {
                 if (key === 'mode') await reconfigure();
                 timing.fov.reset(); timing.ref.reset();
                 return;
@@ -426,6 +491,7 @@ function pageMain() {
     bind('taa', 'taa'); bind('pt-method', 'ptMethod'); bind('res', 'res'); bind('scale', 'scale', num);
     bind('workers', 'workers', int); bind('overlay-toggle', 'overlay'); bind('ref', 'ref'); bind('orbit', 'orbit');
     bind('gaze-source', 'gazeSource'); bind('noise', 'noiseDeg', num); bind('latency', 'latencyMs', num);
+    bind('gaze-filter', 'gazeFilter'); bind('gaze-margin', 'gazeMargin'); bind('accuracy', 'accuracyDeg', num);
     $('restart').addEventListener('click', async () => {
         try {
             await serial(async () => { await ptRestartAll(); timing.fov.reset(); timing.ref.reset(); });
@@ -439,6 +505,10 @@ function pageMain() {
         setGazeSource(fn) { customSource = typeof fn === 'function' ? fn : null; },
         setGazeFilter(fn) { gazeFilter = typeof fn === 'function' ? fn : null; },
         getGaze() { return { ...gaze }; },
+        gazeState() { return gazeState ? JSON.parse(JSON.stringify(gazeState)) : null; },
+        // one gaze sample at time tMs (after the last one's; the tracker's clock), as a frame
+        // would take it; the animation should be paused. Returns gazeState().
+        stepGaze(tMs) { updateGaze(tMs); return api.gazeState(); },
         getMouse() { return { ...mouse }; },
         options() { return { ...opt, width: W, height: H, workersRunning: workers.length }; },
         // set options (the control names of opt) and rebuild; resolves when set up
@@ -447,7 +517,8 @@ function pageMain() {
             for (const [id, key] of [['mode', 'mode'], ['sdf-method', 'sdfMethod'], ['scene', 'scene'], ['preset', 'preset'],
                 ['taa', 'taa'], ['pt-method', 'ptMethod'], ['res', 'res'], ['scale', 'scale'], ['workers', 'workers'],
                 ['overlay-toggle', 'overlay'], ['ref', 'ref'], ['orbit', 'orbit'], ['gaze-source', 'gazeSource'],
-                ['noise', 'noiseDeg'], ['latency', 'latencyMs']]) {
+                ['noise', 'noiseDeg'], ['latency', 'latencyMs'], ['gaze-filter', 'gazeFilter'], ['gaze-margin', 'gazeMargin'],
+                ['accuracy', 'accuracyDeg']]) {
                 const el = $(id);
                 if (el.type === 'checkbox') el.checked = !!opt[key]; else el.value = String(opt[key]);
             }
@@ -468,6 +539,7 @@ function pageMain() {
             await ptRestartAll();
             let fr = null;
             for (let i = 0; i < Math.max(1, o.frames || 1); ++i) fr = await renderFrame(!!o.reference);
+            if (!o.reference && fr.s.foveaDeg !== undefined) lastFoveaDeg = fr.s.foveaDeg;
             draw(fr.img);
             drawOverlay();
             return { ms: fr.ms, s: fr.s, gaze: fr.gaze, width: W, height: H };
@@ -496,6 +568,10 @@ function pageMain() {
                 const kb = (b) => `${(b / 1024).toFixed(0)} KiB`;
                 $('t-sizes').textContent = ['sdf', 'lp', 'pt'].map((m) => `${m} ${kb(sz[m])} / ${kb(sz[m + '.simd'])}`).join(', ') + ' (scalar / SIMD128)';
             } catch (e) { $('t-sizes').textContent = 'sizes.json missing'; }
+            const gurl = new URL('gaze.wasm', import.meta.url);
+            const gres = await fetch(gurl);
+            if (!gres.ok) throw new Error(`cannot load ${gurl.pathname}: HTTP ${gres.status}`);
+            gazeMod = (await WebAssembly.instantiate(await gres.arrayBuffer(), {})).instance.exports;
             await serial(configure);
             api.state = 'ready';
             document.body.dataset.state = 'ready';

@@ -44,11 +44,11 @@ static int frame(int mode, uint32_t w, uint32_t h, int ref, uint32_t k)
     float gx = 0.5f * (float)w, gy = 0.5f * (float)h;
     (void)mode; (void)k;
 #if defined(WEB_MODULE_sdf)
-    return sdf_render(ref ? 4u : (mode == 0 ? 8u : 7u), gx, gy, 0.0f, 0, h, 0, k);
+    return sdf_render(ref ? 4u : (mode == 0 ? 8u : 7u), gx, gy, 0.0f, 0, h, 0, k, 0.0f);
 #elif defined(WEB_MODULE_lp)
     if (ref) return lp_reference(0.0f, 0, h);
     {
-        int n, r = lp_begin(gx, gy, 0.0f);
+        int n, r = lp_begin(gx, gy, 0.0f, 0.0f);
         if (r != 0) return r;
         n = lp_shade(0, lp_sample_rows_count());
         if (n < 0) return n;
@@ -56,7 +56,7 @@ static int frame(int mode, uint32_t w, uint32_t h, int ref, uint32_t k)
         return lp_finish(0);
     }
 #else
-    return pt_render(ref ? 1u : 0u, gx, gy, 0.0f, 0, h, 0);
+    return pt_render(ref ? 1u : 0u, gx, gy, 0.0f, 0, h, 0, 0.0f);
 #endif
 }
 

@@ -15,17 +15,17 @@ const inst = (n) => new WebAssembly.Instance(new WebAssembly.Module(
 const sdf = inst('sdf'), lp = inst('lp'), pt = inst('pt');
 const ok = (r, what) => { if (r < 0) throw new Error(`${what}: fov_result ${r}`); return r; };
 const modes = [
-    ['sdf_cone_fov', 'primitives', (w, h) => sdf.sdf_setup(0, w, h, 0), (w, h, ref, k) => sdf.sdf_render(ref ? 4 : 8, w / 2, h / 2, 0, 0, h, 0, k)],
-    ['sdf_fipr', 'primitives', (w, h) => sdf.sdf_setup(0, w, h, 0), (w, h, ref, k) => sdf.sdf_render(ref ? 4 : 7, w / 2, h / 2, 0, 0, h, 0, k)],
+    ['sdf_cone_fov', 'primitives', (w, h) => sdf.sdf_setup(0, w, h, 0), (w, h, ref, k) => sdf.sdf_render(ref ? 4 : 8, w / 2, h / 2, 0, 0, h, 0, k, 0)],
+    ['sdf_fipr', 'primitives', (w, h) => sdf.sdf_setup(0, w, h, 0), (w, h, ref, k) => sdf.sdf_render(ref ? 4 : 7, w / 2, h / 2, 0, 0, h, 0, k, 0)],
     ['lp_c_fov', 'primitives', (w, h) => lp.lp_setup(0, w, h, 2, 1, 0), (w, h, ref) => {
         if (ref) return lp.lp_reference(0, 0, h);
-        ok(lp.lp_begin(w / 2, h / 2, 0), 'lp_begin');
+        ok(lp.lp_begin(w / 2, h / 2, 0, 0), 'lp_begin');
         const n = ok(lp.lp_shade(0, lp.lp_sample_rows_count()), 'lp_shade');
         ok(lp.lp_scatter(n), 'lp_scatter');
         return lp.lp_finish(0);
     }],
-    ['pt_layers', 'cornell', (w, h) => pt.pt_setup(w, h, 1, 0), (w, h, ref) => pt.pt_render(ref ? 1 : 0, w / 2, h / 2, 0, 0, h, 0)],
-    ['pt_selective', 'cornell', (w, h) => pt.pt_setup(w, h, 3, 0), (w, h, ref) => pt.pt_render(ref ? 1 : 0, w / 2, h / 2, 0, 0, h, 0)],
+    ['pt_layers', 'cornell', (w, h) => pt.pt_setup(w, h, 1, 0), (w, h, ref) => pt.pt_render(ref ? 1 : 0, w / 2, h / 2, 0, 0, h, 0, 0)],
+    ['pt_selective', 'cornell', (w, h) => pt.pt_setup(w, h, 3, 0), (w, h, ref) => pt.pt_render(ref ? 1 : 0, w / 2, h / 2, 0, 0, h, 0, 0)],
 ];
 for (const [name, scene, setup, frame] of modes) {
     for (const [w, h] of [[320, 180], [640, 360]]) {

@@ -31,7 +31,19 @@ static struct {
     fovlp_sample *smp;
     float *tmp_rgb, *tmp_t;
     size_t cap;
+    /* the gaze margin: the config without it, the context's memory (sized for the widest
+       margin, max_margin), the margin the context has (quantised up to LP_MARGIN_STEP) and
+       its gaze disc radius in degrees; has_disc 0: the preset has no disc to widen */
+    fovlp_config base;
+    void *lp_mem;
+    size_t lp_mem_size;
+    float max_margin, margin, disc_deg;
+    uint32_t has_disc;
 } S;
+
+#define LP_MAX_MARGIN 15.0f   /* the gaze filter's default margin cap (max_margin_deg) */
+#define LP_MARGIN_STEP 0.25f  /* a new margin re-initialises the context (TAA restarts) */
+#define LP_RAD_TO_DEG 57.2957795f
 
 WEB_EXPORT(rgba_ptr) uint8_t *rgba_ptr(void);
 uint8_t *rgba_ptr(void) { return S.rgba; }
@@ -70,10 +82,35 @@ int lp_setup(uint32_t scene, uint32_t w, uint32_t h, uint32_t preset, uint32_t t
     cfg.cam_fov_y_deg = S.bi.camera.fov_y_deg;
     cfg.taa.enable = taa ? 1u : 0u;
     if ((r = fovlp_memory_size(&cfg, &bytes)) != FOV_OK) return r;
+    ns = 0;
+    S.base = cfg;
+    S.has_disc = cfg.no_disc ? 0u : 1u;
+    if (S.has_disc) {   /* the widest margin whose disc still fits: memory and slots for it */
+        fovlp_config wide;
+        fovlp_geometry geo;
+        fov_gaze c;
+        float m;
+        size_t b2 = 0;
+        c.x = 0.5f * (float)w; c.y = 0.5f * (float)h;
+        for (m = LP_MAX_MARGIN; m > 0.0f; m -= LP_MARGIN_STEP)
+            if (fovlp_config_gaze_margin(&cfg, m, &wide) == FOV_OK &&
+                fovlp_geometry_get(&wide, c, &geo) == FOV_OK &&
+                fovlp_memory_size(&wide, &b2) == FOV_OK)
+                break;
+        S.max_margin = m > 0.0f ? m : 0.0f;
+        if (S.max_margin > 0.0f) {
+            if (b2 > bytes) bytes = b2;
+            ns = geo.samples;
+        }
+        if ((r = fovlp_config_gaze_margin(&cfg, 0.0f, &wide)) != FOV_OK) return r;
+        S.disc_deg = wide.gaze_angle * LP_RAD_TO_DEG;
+    }
     if (!(mem = web_alloc(bytes ? bytes : 16))) return FOV_ERR_TOO_SMALL;
     if ((r = fovlp_init(&S.lp, &cfg, mem, bytes)) != FOV_OK) return r;
+    S.lp_mem = mem;
+    S.lp_mem_size = bytes;
     npx = (size_t)w * h;
-    ns = S.lp.geo.samples;
+    if (ns < S.lp.geo.samples) ns = S.lp.geo.samples;
     S.cap = ns;
     S.samples = (float *)web_alloc(ns * 3 * sizeof(float));
     S.sdepth = (float *)web_alloc(ns * sizeof(float));
@@ -100,16 +137,39 @@ int lp_setup(uint32_t scene, uint32_t w, uint32_t h, uint32_t preset, uint32_t t
     return FOV_OK;
 }
 
-/* the frame's gaze and camera, on every worker (fovsdf_init + fovlp_begin_frame) */
-WEB_EXPORT(lp_begin) int lp_begin(float gx, float gy, float cam_angle);
-int lp_begin(float gx, float gy, float cam_angle)
+/* the frame's gaze, camera and gaze margin, on every worker (fovsdf_init + fovlp_begin_frame).
+   margin_deg (>= 0; web_gaze.c) widens the gaze disc through fovlp_config_gaze_margin,
+   rounded up to LP_MARGIN_STEP and capped at the widest that fits (lp_setup); a preset
+   without a disc (Fov, K Fov) has nothing to widen and ignores it. A new margin
+   re-initialises the context (TAA history restarts, as on a gaze jump). */
+WEB_EXPORT(lp_begin) int lp_begin(float gx, float gy, float cam_angle, float margin_deg);
+int lp_begin(float gx, float gy, float cam_angle, float margin_deg)
 {
     fovsdf_config scfg = fovsdf_config_default();
     fovsdf_camera cam;
     fovlp_camera lcam;
     fov_gaze gaze;
     fov_result r;
+    float mq;
     if (!S.rgba) return FOV_ERR_NULL;
+    if (!(margin_deg >= 0.0f && margin_deg <= 90.0f)) return FOV_ERR_INVALID_ARG;
+    mq = 0.0f;
+    if (S.has_disc) {
+        while (mq < margin_deg && mq < S.max_margin) mq += LP_MARGIN_STEP;
+        if (mq > S.max_margin) mq = S.max_margin;
+    }
+    if (mq < S.margin || mq > S.margin) {
+        fovlp_config c = S.base;
+        size_t need = 0;
+        if (mq > 0.0f && (r = fovlp_config_gaze_margin(&S.base, mq, &c)) != FOV_OK) return r;
+        if ((r = fovlp_memory_size(&c, &need)) != FOV_OK) return r;
+        if (need > S.lp_mem_size) return FOV_ERR_TOO_SMALL;
+        if ((r = fovlp_init(&S.lp, &c, S.lp_mem, S.lp_mem_size)) != FOV_OK) return r;
+        if (S.lp.geo.samples > S.cap) return FOV_ERR_TOO_SMALL;
+        if ((r = fovlp_config_gaze_margin(&S.base, mq, &c)) != FOV_OK) return r;
+        S.margin = mq;
+        S.disc_deg = c.gaze_angle * LP_RAD_TO_DEG;
+    }
     cam = S.bi.camera;
     if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     gaze.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
@@ -167,7 +227,8 @@ int lp_scatter(uint32_t n)
 
 /* reconstruction, TAA (when on) and sRGB of the whole frame into rgba; overlay 1 tints the
    gaze disc (the pixels shaded at full resolution). web_stats[2]: pixels shaded inside the
-   disc; [3]: samples shaded in the frame (fovlp_count_samples). */
+   disc; [3]: samples shaded in the frame (fovlp_count_samples); [4] the gaze disc's radius
+   (gaze_angle of the config with the margin), degrees (0: no disc). */
 WEB_EXPORT(lp_finish) int lp_finish(uint32_t overlay);
 int lp_finish(uint32_t overlay)
 {
@@ -200,6 +261,7 @@ int lp_finish(uint32_t overlay)
     if ((r = fovlp_count_samples(&S.lp, &cnt)) != FOV_OK) return r;
     web_stats[2] = (double)disc;
     web_stats[3] = (double)cnt.shaded;
+    web_stats[4] = (double)S.disc_deg;
     return FOV_OK;
 }
 

@@ -22,6 +22,7 @@
 #define PT_MAX_SHAPES 24
 #define PT_HALO_LAYERS 16u  /* > 3 lattice steps of the coarsest layer (stride 4) */
 #define PT_HALO_SEL 4u
+#define PT_MAX_MARGIN 15.0f  /* the gaze filter's default margin cap (max_margin_deg) */
 
 typedef struct pt_view_state {
     fovpt_ctx ctx;
@@ -39,6 +40,11 @@ static struct {
     float base_pos[3];
     uint32_t w, h, ignore_gaze, method;
     float fovea_deg;         /* stride-1 layer's radius (LAYERS) or e_f (SELECTIVE), resolved */
+    float margin_deg;        /* the gaze margin the foveated view's context has */
+    float fovea_now;         /* fovea_deg of that context's config (with the margin) */
+    fovpt_config cfg;        /* the foveated view's config without the margin */
+    void *mem0;              /* its memory (sized for any margin up to PT_MAX_MARGIN) */
+    size_t mem0_size;
     pt_view_state v[2];      /* 0 foveated, 1 reference */
     uint8_t *rgb8, *rgba, *tint;
 } S;
@@ -107,12 +113,30 @@ static fov_result pt_view_init(pt_view_state *v, const fovpt_config *cfg)
     void *mem;
     fov_result r;
     fov_gaze g;
+    fovpt_config wide;
+    size_t b2 = 0;
     g.x = 0.5f * (float)S.w; g.y = 0.5f * (float)S.h;
     if ((r = fovpt_memory_size(cfg, &S.cam, &bytes)) != FOV_OK) return r;
+    /* room for the widest margin too (pt_render re-initialises with the margin's config) */
+    if ((r = fovpt_config_gaze_margin(cfg, PT_MAX_MARGIN, &wide)) != FOV_OK) return r;
+    if ((r = fovpt_memory_size(&wide, &S.cam, &b2)) != FOV_OK) return r;
+    if (b2 > bytes) bytes = b2;
     if (!(mem = web_alloc(bytes ? bytes : 16))) return FOV_ERR_TOO_SMALL;
+    if (v == &S.v[0]) { S.cfg = *cfg; S.mem0 = mem; S.mem0_size = bytes; S.margin_deg = 0.0f; }
     v->frame = 0;
     v->last[3] = 0.0f;
     return fovpt_init(&v->ctx, cfg, &S.scene, &S.cam, g, mem, bytes);
+}
+
+/* the fovea radius of a config, resolved: the stride-1 layer's (LAYERS) or e_f (SELECTIVE) */
+static fov_result pt_fovea_of(const fovpt_config *cfg, float *deg)
+{
+    fovpt_config res;
+    fov_result r;
+    if ((r = fovpt_config_resolve(cfg, &res)) != FOV_OK) return r;
+    *deg = res.method == FOVPT_METHOD_LAYERS ? res.layers.layer[res.layers.count - 1u].radius_deg
+                                             : res.selective.e_deg[0];
+    return FOV_OK;
 }
 
 /* w x h; method 1 LAYERS or 3 SELECTIVE; ignore_gaze as in web_sdf.c */
@@ -146,12 +170,8 @@ int pt_setup(uint32_t w, uint32_t h, uint32_t method, uint32_t ignore_gaze)
         ref.mode = FOVPT_MODE_WHITTED;
         ref.spp = 16;
     }
-    {
-        fovpt_config res;
-        if ((r = fovpt_config_resolve(&cfg, &res)) != FOV_OK) return r;
-        S.fovea_deg = method == FOVPT_METHOD_LAYERS ? res.layers.layer[res.layers.count - 1u].radius_deg
-                                                    : res.selective.e_deg[0];
-    }
+    if ((r = pt_fovea_of(&cfg, &S.fovea_deg)) != FOV_OK) return r;
+    S.fovea_now = S.fovea_deg;
     if ((r = pt_view_init(&S.v[0], &cfg)) != FOV_OK) return r;
     if ((r = pt_view_init(&S.v[1], &ref)) != FOV_OK) return r;
     npx = (size_t)w * h;
@@ -186,11 +206,15 @@ int pt_restart(void)
    camera orbited by cam_angle. overlay 1 tints the layers (LAYERS) by the finest layer that
    traces each pixel's lattice point. web_stats: [0] samples, [1] rays, [2] pixels whose own
    samples were traced (layer stride 1 or UNIFORM; SELECTIVE: every pixel's presample), [3]
-   pixels, [4] frames accumulated (after this one), [5] extra samples (SELECTIVE). */
+   pixels, [4] frames accumulated (after this one), [5] extra samples (SELECTIVE), [6] the
+   fovea radius rendered with (as pt_fovea_deg, of the config with the margin), degrees. margin_deg (>= 0,
+   at most PT_MAX_MARGIN; the foveated view only): the gaze margin (web_gaze.c), added to the
+   layers' radii / selective's e_deg by fovpt_config_gaze_margin; a new margin re-initialises
+   the foveated context (its accumulation restarts, as on a gaze move). */
 WEB_EXPORT(pt_render) int pt_render(uint32_t which, float gx, float gy, float cam_angle,
-                                    uint32_t y0, uint32_t y1, uint32_t overlay);
+                                    uint32_t y0, uint32_t y1, uint32_t overlay, float margin_deg);
 int pt_render(uint32_t which, float gx, float gy, float cam_angle, uint32_t y0, uint32_t y1,
-              uint32_t overlay)
+              uint32_t overlay, float margin_deg)
 {
     pt_view_state *v;
     fovpt_camera cam;
@@ -202,7 +226,24 @@ int pt_render(uint32_t which, float gx, float gy, float cam_angle, uint32_t y0, 
     double traced = 0.0;
     if (!S.rgba) return FOV_ERR_NULL;
     if (which > 1u || y0 > y1 || y1 > S.h) return FOV_ERR_INVALID_ARG;
+    if (!(margin_deg >= 0.0f && margin_deg <= PT_MAX_MARGIN)) return FOV_ERR_INVALID_ARG;
     v = &S.v[which];
+    if (which == 0 && (margin_deg < S.margin_deg || margin_deg > S.margin_deg)) {
+        fovpt_config c = S.cfg;
+        fov_gaze g0;
+        size_t need = 0;
+        g0.x = 0.5f * (float)S.w; g0.y = 0.5f * (float)S.h;
+        if (margin_deg > 0.0f && (r = fovpt_config_gaze_margin(&S.cfg, margin_deg, &c)) != FOV_OK)
+            return r;
+        if ((r = fovpt_memory_size(&c, &S.cam, &need)) != FOV_OK) return r;
+        if ((r = pt_fovea_of(&c, &S.fovea_now)) != FOV_OK) return r;
+        if (need > S.mem0_size) return FOV_ERR_TOO_SMALL;
+        if ((r = fovpt_init(&v->ctx, &c, &S.scene, &S.cam, g0, S.mem0, S.mem0_size)) != FOV_OK)
+            return r;
+        S.margin_deg = margin_deg;
+        v->frame = 0;
+        v->last[3] = 0.0f;
+    }
     cam = S.cam;
     if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     g.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
@@ -263,5 +304,6 @@ int pt_render(uint32_t which, float gx, float gy, float cam_angle, uint32_t y0, 
     web_stats[4] = (double)v->frame;
     web_stats[5] = (double)(st_band.extra_samples[0] + st_band.extra_samples[1] +
                             st_band.extra_samples[2] + st_band.extra_samples[3]);
+    web_stats[6] = which == 0 ? (double)S.fovea_now : 0.0;
     return FOV_OK;
 }

@@ -2,6 +2,7 @@
    rendered band by band with fovsdf_render_rows, foveated (CONE_FOV or FIPR) or at full
    resolution (CONE, the reference), into an RGBA8 image the page draws.
    Exports: sdf_setup, sdf_render, rgba_ptr, stats_ptr, sdf_fov_y, sdf_fovea_deg.
+   The gaze margin (GAZE INPUT) comes with each frame (sdf_render's margin_deg).
    Not part of the library; the headers are used through their public API only. */
 #ifndef WEB_NATIVE_LIBM /* native_bench.c may use libm instead */
 #define FOV_NO_LIBM
@@ -58,14 +59,17 @@ float sdf_fovea_deg(void) { return fovsdf_acuity_default().fovea_deg; }
 
 /* Rows [y0, y1) of one frame: method 8 CONE_FOV, 7 FIPR (foveated) or 4 CONE (reference), gaze
    (gx, gy) in pixels, the camera orbited by cam_angle radians; overlay 1 tints the pixels that
-   traced their own rays (mask 1) and the quarter level (mask 3). web_stats: [0] distance
-   evaluations, [1] primary rays, [2] pixels that traced their own rays, [3] pixels. */
+   traced their own rays (mask 1) and the quarter level (mask 3); margin_deg (>= 0) the gaze
+   margin (web_gaze.c), added to the fovea by fovsdf_config_gaze_margin. web_stats: [0] distance
+   evaluations, [1] primary rays, [2] pixels that traced their own rays, [3] pixels, [4] the
+   fovea radius rendered with (acuity.fovea_deg of the config with the margin), degrees. */
 WEB_EXPORT(sdf_render) int sdf_render(uint32_t method, float gx, float gy, float cam_angle,
-                                      uint32_t y0, uint32_t y1, uint32_t overlay, uint32_t frame);
+                                      uint32_t y0, uint32_t y1, uint32_t overlay, uint32_t frame,
+                                      float margin_deg);
 int sdf_render(uint32_t method, float gx, float gy, float cam_angle, uint32_t y0, uint32_t y1,
-               uint32_t overlay, uint32_t frame)
+               uint32_t overlay, uint32_t frame, float margin_deg)
 {
-    fovsdf_config cfg = fovsdf_config_default();
+    fovsdf_config cfg = fovsdf_config_default(), wide;
     fovsdf_camera cam;
     fovsdf_ctx ctx;
     fovsdf_output out;
@@ -77,6 +81,8 @@ int sdf_render(uint32_t method, float gx, float gy, float cam_angle, uint32_t y0
     if (y0 > y1 || y1 > S.h) return FOV_ERR_INVALID_ARG;
     cfg.method = method;
     cfg.frame = frame;
+    if ((r = fovsdf_config_gaze_margin(&cfg, margin_deg, &wide)) != FOV_OK) return r;
+    if (margin_deg > 0.0f) cfg = wide;   /* margin 0: the config as before, unresolved */
     cam = S.bi.camera;
     if (web_orbit(S.base_pos, cam.target, cam_angle, cam.pos) != 0) return FOV_ERR_INVALID_ARG;
     gaze.x = S.ignore_gaze ? 0.5f * (float)S.w : gx;
@@ -99,5 +105,6 @@ int sdf_render(uint32_t method, float gx, float gy, float cam_angle, uint32_t y0
     web_stats[1] = (double)st.rays;
     web_stats[2] = (double)traced;
     web_stats[3] = (double)((size_t)(y1 - y0) * S.w);
+    web_stats[4] = (double)wide.acuity.fovea_deg;
     return FOV_OK;
 }

@@ -29,6 +29,14 @@
 //                off and on, 3 frames)
 //   gaze hooks   fovDemo.setGazeSource and setGazeFilter drive the gaze; the simulated eye
 //                tracker with 0 deg noise and 0 ms latency gives the mouse
+//   gaze margin glue  the glue (in node) rejects a NaN, infinite or negative gaze margin;
+//                gaze.wasm rejects a NaN sample and restarts its filter on a timestamp out of order
+//   gaze filter  the simulated eye tracker (seeded noise 0.5 deg, a still mouse, 120 samples at
+//                120 Hz through fovDemo.stepGaze): the headers' filter (gaze.wasm) at least halves
+//                the RMS error of the gaze rendered with; the same seed gives the same samples
+//   gaze filter off  the gaze rendered with is then the raw sample (the filter still runs)
+//   gaze margin  sdf, lp C Fov, pt layers: the fovea radius the glue reports with the margin on
+//                exceeds the one with it off by at least the margin
 //   overlapping changes  setOptions and renderOnce called at once (as quick changes in the page
 //                do) run one after the other without errors; the animation resumes after them
 //   camera angle the glue (in node) rejects a NaN or infinite camera angle with an error code
@@ -120,8 +128,8 @@ if (!BENCH && !args.includes('--shot-only')) {
     const [sdf, lp, pt] = [await mod('sdf'), await mod('lp'), await mod('pt')];
     const setup = [sdf.sdf_setup(0, 32, 32, 0), lp.lp_setup(0, 32, 32, 2, 1, 0), pt.pt_setup(32, 32, 1, 0)];
     const calls = {
-        sdf: (a) => sdf.sdf_render(8, 16, 16, a, 0, 32, 0, 0), 'lp begin': (a) => lp.lp_begin(16, 16, a),
-        'lp reference': (a) => lp.lp_reference(a, 0, 32), pt: (a) => pt.pt_render(0, 16, 16, a, 0, 32, 0),
+        sdf: (a) => sdf.sdf_render(8, 16, 16, a, 0, 32, 0, 0, 0), 'lp begin': (a) => lp.lp_begin(16, 16, a, 0),
+        'lp reference': (a) => lp.lp_reference(a, 0, 32), pt: (a) => pt.pt_render(0, 16, 16, a, 0, 32, 0, 0),
     };
     const bad = [];
     for (const [name, f] of Object.entries(calls)) {
@@ -130,6 +138,24 @@ if (!BENCH && !args.includes('--shot-only')) {
     }
     if (setup.every((r) => r === 0) && bad.length === 0) pass('camera angle', 'NaN / inf rejected, 1e30 and -3e38 render (sdf, lp, pt glue)');
     else fail('camera angle', `setup ${setup.join(' ')}; ${bad.join(', ')}`);
+    // the gaze margin from JS: NaN, infinite or negative rejected with an error code by the
+    // glue, 0 and 2 degrees render; gaze.wasm: a NaN sample is an error, a timestamp out of
+    // order restarts the filter (counted) and the sample is taken
+    const mc = {
+        sdf: (m) => sdf.sdf_render(8, 16, 16, 0, 0, 32, 0, 0, m), lp: (m) => lp.lp_begin(16, 16, 0, m),
+        pt: (m) => pt.pt_render(0, 16, 16, 0, 0, 32, 0, m),
+    };
+    const mbad = [];
+    for (const [name, f] of Object.entries(mc)) {
+        for (const m of [NaN, Infinity, -1]) if (!(f(m) < 0)) mbad.push(`${name}(margin ${m}) not rejected`);
+        for (const m of [2, 0]) { const r = f(m); if (r < 0) mbad.push(`${name}(margin ${m}) = ${r}`); }
+    }
+    const gz = await mod('gaze');
+    const gs = [gz.gaze_setup(50, 32, 32), gz.gaze_push(100, 10, 12), gz.gaze_push(90, 11, 12), gz.gaze_push(95, NaN, 1)];
+    if (!(gs[0] === 0 && gs[1] === 0 && gs[2] === 0 && gs[3] < 0 && gz.gaze_resets() === 1 && Math.abs(gz.gaze_x() - 11) < 1e-3))
+        mbad.push(`gaze.wasm: setup/push/out of order/NaN = ${gs.join(' ')}, resets ${gz.gaze_resets()}, x ${gz.gaze_x()}`);
+    if (mbad.length === 0) pass('gaze margin glue', 'margin NaN / inf / -1 rejected, 0 and 2 deg render (sdf, lp, pt); gaze.wasm: NaN rejected, out of order restarts');
+    else fail('gaze margin glue', mbad.join(', '));
 }
 
 // ---- static server --------------------------------------------------------------------------
@@ -375,6 +401,55 @@ try {
             near(hk.sim, hk.mouse.x * hk.w, hk.mouse.y * hk.h))
             pass('gaze hooks', 'setGazeSource, setGazeFilter and the simulated tracker (0 deg, 0 ms) drive the gaze');
         else fail('gaze hooks', JSON.stringify(hk));
+        // the simulated eye tracker through the headers' gaze filter (gaze.wasm): a still mouse,
+        // seeded noise of 0.5 deg, samples at 120 Hz (fovDemo.stepGaze, animation paused).
+        // The filtered gaze's RMS error against the mouse over samples 30..119 is at most half
+        // the raw samples'; the same seed gives the same raw samples; filter off: the gaze
+        // rendered with is the raw sample. Then per mode, the fovea / gaze disc / stride-1 layer
+        // radius the glue reports (from its header's *_config_gaze_margin) with the margin on is
+        // larger than with it off, by at least the margin (lp rounds it up to 0.25 deg).
+        await moveMouse(page, 0.4, 0.45);
+        const gf = await ev(page, async (BASE) => {
+            const d = window.fovDemo, out = { modes: {} };
+            const sim = { gazeSource: 'sim', noiseDeg: 0.5, latencyMs: 0, accuracyDeg: 0.5, simSeed: 7, gazeFilter: true, gazeMargin: true };
+            await d.setOptions({ mode: 'sdf', sdfMethod: 'cone_fov', workers: 1, res: '320x180', scale: 0.5, ...sim });
+            await d.pause();
+            const o = d.options(), m = d.getMouse(), tx = m.x * o.width, ty = m.y * o.height;
+            const run = () => {
+                const t0 = performance.now() + 1000, st = [];
+                for (let i = 0; i < 120; ++i) st.push({ s: d.stepGaze(t0 + i * 1000 / 120), g: d.getGaze() });
+                return st;
+            };
+            const rms = (st, k) => Math.sqrt(st.slice(30).reduce((a, e) => a + (e.s[k].x - tx) ** 2 + (e.s[k].y - ty) ** 2, 0) / (st.length - 30));
+            const a = run();
+            out.raw = rms(a, 'raw'); out.filt = rms(a, 'filtered');
+            out.rendered = a.every((e) => e.g.x === e.s.filtered.x && e.g.y === e.s.filtered.y);
+            await d.setOptions({ simSeed: 7 });
+            const b = run();
+            out.same = a.every((e, i) => e.s.raw.x === b[i].s.raw.x && e.s.raw.y === b[i].s.raw.y);
+            await d.setOptions({ gazeFilter: false });
+            const c = run();
+            out.offEq = c.every((e) => e.s.filtered.x === e.s.raw.x && e.s.filtered.y === e.s.raw.y && e.g.x === e.s.raw.x && e.g.y === e.s.raw.y);
+            out.offFiltDiffers = c.some((e) => e.s.cFiltered.x !== e.s.raw.x);
+            for (const [name, mo] of [['sdf', { mode: 'sdf' }], ['lp', { mode: 'lp', preset: 2, taa: false }], ['pt', { mode: 'pt', ptMethod: 'layers' }]]) {
+                await d.setOptions({ ...mo, gazeFilter: true, gazeMargin: true });
+                const on = await d.renderOnce({});
+                await d.setOptions({ gazeMargin: false });
+                const off = await d.renderOnce({});
+                out.modes[name] = { on: on.s.foveaDeg, off: off.s.foveaDeg, margin: on.s.marginDeg, marginOff: off.s.marginDeg };
+            }
+            await d.setOptions({ ...BASE, gazeFilter: true, gazeMargin: true });
+            out.error = document.getElementById('error').hidden ? '' : document.getElementById('error').textContent;
+            return out;
+        }, BASE_OPT);
+        const fm = Object.entries(gf.modes).map(([k, v]) => `${k} ${v.off.toFixed(2)} -> ${v.on.toFixed(2)} deg (margin ${v.margin.toFixed(2)})`).join(', ');
+        if (gf.filt * 2 <= gf.raw && gf.rendered && gf.same) pass('gaze filter', `still mouse, 0.5 deg seeded noise, 120 Hz: RMS raw ${gf.raw.toFixed(2)} px, filtered ${gf.filt.toFixed(2)} px (${(gf.raw / gf.filt).toFixed(1)}x), the filtered gaze drives the renderer, same seed same samples`);
+        else fail('gaze filter', JSON.stringify(gf));
+        if (gf.offEq && gf.offFiltDiffers) pass('gaze filter off', 'the gaze (and gazeState.filtered) is the raw sample while the C filter runs on');
+        else fail('gaze filter off', JSON.stringify(gf));
+        if (!gf.error && Object.values(gf.modes).every((v) => v.margin > 0 && v.marginOff === 0 && v.on > v.off && v.on >= v.off + v.margin - 1e-3))
+            pass('gaze margin', fm);
+        else fail('gaze margin', JSON.stringify(gf));
         // reconfigures that overlap (as two quick changes in the page do) run one after the
         // other: none fails, the last one's options hold, and renderOnce leaves the animation
         // running when it was running
