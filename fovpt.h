@@ -1259,7 +1259,14 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    disjoint rows on as many threads as you like, but each phase must have finished on every
    row before any row of the next phase starts (a pass reads neighbours up to 2^(i+1) rows
    away). The buffers given to fovpt_denoise_frame must stay unchanged until the frame's
-   resolve is done. Results do not depend on the row split.
+   resolve is done. Results do not depend on the row split. Each row remembers the last phase
+   it finished: a row call is rejected (FOV_ERR_INVALID_ARG) when one of its rows has not
+   finished the previous phase (temporal before pass 0, pass i - 1 before pass i, the last
+   pass before the resolve) or already ran a later one; rows outside the call's range are not
+   checked (they may be running on other threads; the barrier is the caller's). A failed
+   fovpt_denoise_frame leaves the denoiser without a frame (row calls fail until the next
+   good one; the history is kept). A frame whose temporal phase did not run on every row is
+   not used as history. fovpt_denoise_init clears the memory (no frame, no history).
    Temporal: each pixel's first hit (pinhole + depth * the unit ray through the pixel centre;
    depth 0: the direction, at infinity) is projected into the previous frame's camera and the
    history read bilinearly from the 4 pixels around it, each tap kept only when its stored
@@ -5849,6 +5856,7 @@ FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_c
         FOVPT__FAIL(&cfg->logger, FOV_ERR_TOO_SMALL,
                     "denoise_init: bytes below fovpt_denoise_size");
     FOV_MEMSET(dn, 0, sizeof *dn);
+    FOV_MEMSET(mem, 0, need); /* history, buffers and row phases start defined (zero) */
     (void)fovpt_denoise_resolve(cfg, &dn->cfg);
     px = (size_t)dn->cfg.width * dn->cfg.height;
     p = (float *)mem;
@@ -5882,17 +5890,38 @@ FOVPT__PRIV const float *fovpt__gin(const float *p, uint32_t stride, uint32_t ch
     return p + (size_t)y * (stride ? stride : ch * W) + (size_t)ch * x;
 }
 
+/* Row y's phase mark (the 8th packed float of its first pixel): 0 after fovpt_denoise_frame,
+   1 after the temporal phase, 2 + i after a-trous pass i. Each row call reads and writes only
+   the marks of its own rows (no race between threads on disjoint rows). */
+FOVPT__PRIV float *fovpt__dn_rowmark(const fovpt_denoise *dn, uint32_t y)
+{
+    return dn->pack + 8u * (size_t)y * dn->cfg.width + 7u;
+}
+
+/* 1 when every row of [y0, y1) has finished phase ph - 1 (or already phase ph) */
+FOVPT__PRIV int fovpt__dn_phase_ok(const fovpt_denoise *dn, uint32_t y0, uint32_t y1, float ph)
+{
+    uint32_t y;
+    for (y = y0; y < y1; ++y) {
+        float m = *fovpt__dn_rowmark(dn, y);
+        if (!(m == ph - 1.0f || m == ph)) return 0;
+    }
+    return 1;
+}
+
 FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
                                          fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
                                          const fovpt_guide *g)
 {
     const fov_logger *lg;
     fovpt_view v;
+    fov_ecc_model ecc;
     fov_result e;
-    uint32_t W, H;
+    uint32_t W, H, y, done;
     if (!dn) return FOV_ERR_NULL;
     lg = &dn->cfg.logger;
     if (!dn->mem) FOVPT__FAIL(lg, FOV_ERR_NULL, "denoise_frame: not initialised (denoise_init)");
+    dn->in_frame = 0; /* a failed frame leaves no frame to run the phases on */
     if (!cam || !rgb || !g)
         FOVPT__FAIL(lg, FOV_ERR_NULL, "denoise_frame: cam, rgb and g are required");
     if (!g->depth || !g->normal)
@@ -5910,13 +5939,21 @@ FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *
         FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "denoise_frame: gaze NaN or infinite");
     e = fovpt__camera_setup(cam, v.right, v.up, v.fwd, v.tan4, v.pos);
     if (e != FOV_OK) FOVPT__FAIL(lg, e, "denoise_frame: invalid camera (see fov_camera)");
-    e = fovpt__ecc_of(&dn->cfg.display, cam, v.tan4, gaze, &dn->ecc);
+    e = fovpt__ecc_of(&dn->cfg.display, cam, v.tan4, gaze, &ecc);
     if (e != FOV_OK) FOVPT__FAIL(lg, e, "denoise_frame: invalid cfg.display (see fov_display)");
+    /* committed from here on; the previous frame is history only if its temporal phase ran
+       on every row (else its history slot holds an older or never-written frame) */
+    for (done = 1u, y = 0; y < H; ++y) {
+        float *m = fovpt__dn_rowmark(dn, y);
+        if (!(*m >= 1.0f)) done = 0u;
+        *m = 0.0f;
+    }
     if (dn->frames > 0u) {
         dn->cur ^= 1u;
         dn->prev_view = dn->view;
-        dn->has_prev = !dn->cfg.no_temporal;
+        dn->has_prev = !dn->cfg.no_temporal && done;
     }
+    dn->ecc = ecc;
     dn->view = v;
     dn->frames++;
     dn->in = rgb;
@@ -5975,6 +6012,9 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
     if (y0 > y1 || y1 > H)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_temporal_rows: needs y0 <= y1 <= height");
+    if (!fovpt__dn_phase_ok(dn, y0, y1, 1.0f))
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_temporal_rows: a row already ran a later phase of this frame");
     g = &dn->guide;
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
@@ -6031,11 +6071,14 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                                         ((size_t)qy * W + (size_t)qx);
                                 if (hit) {
                                     if (!(q[8] > 0.0f) || !(fov__absf(q[8] - dist) <= tol) ||
-                                        fov__dot(q + 9, nrm) < dn->cfg.normal_cos)
+                                        !(fov__dot(q + 9, nrm) >= dn->cfg.normal_cos))
                                         continue;
-                                } else if (q[8] > 0.0f) {
+                                } else if (!(q[8] == 0.0f)) {
                                     continue;
                                 }
+                                for (k = 0; k < 7; ++k)
+                                    if (!fov__finite(q[k])) break;
+                                if (k < 7) continue; /* never a non-finite history */
                                 for (k = 0; k < 8; ++k) hs[k] += w * q[k];
                                 hw += w;
                             }
@@ -6094,6 +6137,7 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
             }
             b[0] = o[0]; b[1] = o[1]; b[2] = o[2]; b[3] = o[6];
         }
+    for (y = y0; y < y1; ++y) *fovpt__dn_rowmark(dn, y) = 1.0f;
     return FOV_OK;
 }
 
@@ -6132,6 +6176,10 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     if (y0 > y1 || y1 > H)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: needs y0 <= y1 <= height");
+    if (!fovpt__dn_phase_ok(dn, y0, y1, 2.0f + (float)pass))
+        FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "denoise_atrous_rows: a row has not finished the previous phase (temporal "
+                    "or pass - 1) or already ran a later pass");
     alb = dn->guide.albedo != NULL;
     pk = dn->pack;
     src = dn->buf[pass & 1u];
@@ -6211,6 +6259,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
             for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
             o[3] = wv / (ws * ws);
         }
+    for (y = y0; y < y1; ++y) *fovpt__dn_rowmark(dn, y) = 2.0f + (float)pass;
     return FOV_OK;
 }
 
@@ -6231,6 +6280,11 @@ FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_
     if (fovpt__gstride_bad(out->rgb_stride, 3u, W) || fovpt__gstride_bad(out->rgb8_stride, 3u, W))
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
+    for (y = y0; y < y1; ++y)
+        if (!(*fovpt__dn_rowmark(dn, y) == 1.0f + (float)dn->passes))
+            FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
+                        "denoise_resolve_rows: a row has not finished the temporal phase and "
+                        "every a-trous pass");
     src = dn->buf[dn->passes & 1u];
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
