@@ -583,6 +583,44 @@ static void t_same_image(void)
     free(sm);
 }
 
+/* var with accumulate: the variance of the accumulated mean (second call's sample variance /
+   4 accumulated samples, about half the first call's / 2) */
+static void t_var_accum(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 20.0f, 15.0f };
+    void *sm = NULL, *mem;
+    size_t b = 0, i;
+    double v0 = 0.0, v1 = 0.0;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    if (!box_scene(&s, &sm, &m)) return;
+    box_cam(&cam, 40, 30);
+    img_alloc(&a, 40, 30);
+    c.method = FOVPT_METHOD_UNIFORM; c.spp = 2; c.accumulate = 1;
+    fovpt_memory_size(&c, &cam, &b);
+    mem = malloc(b + 16u);
+    ok = fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; i < 40u * 30u; ++i) v0 += (double)a.var[i];
+    ok = ok && fovpt_render_guide(&ctx, 1, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; i < 40u * 30u; ++i) v1 += (double)a.var[i];
+    check(ok && a.spp[0] == 4.0f && v0 > 0.0 && v1 / v0 > 0.35 && v1 / v0 < 0.65, "guide_var_accumulate",
+          "ok %d spp %g, mean var %g -> %g (ratio %.3f, want ~0.5)", ok, (double)a.spp[0], v0 / 1200.0, v1 / 1200.0, v1 / v0);
+    free(mem); free(sm);
+    img_free(&a);
+}
+
 /* a synthetic frame: left third sky (depth 0), the rest a wall at depth 2 facing the camera,
    noisy colours from a hash of (x, y, f) */
 static void synth_frame(img *a, uint32_t f)
@@ -707,5 +745,6 @@ int main(void)
     t_errors();
     t_same_image();
     t_robust();
+    t_var_accum();
     return fovcheck_summary();
 }
