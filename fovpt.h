@@ -1245,7 +1245,9 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
              >= 2 samples / the number of samples the pixel's value is the mean of (n; with
              accumulate the running total); -1 where unknown (fewer than 2 own samples)
    Which samples: UNIFORM and the pixels a stride-1 layer or zone traces: the pixel's own
-   samples (the guides are their means). Pixels filled by a coarser layer or zone (and
+   samples (the guides are their means; where two stride-1 layers trace a pixel, in their
+   blend band, those of the layer with the larger weight in the resolve's blend, the inner
+   one where vb >= 1/2). Pixels filled by a coarser layer or zone (and
    every pixel of SELECTIVE and JIN): one extra ray through the pixel centre, first hit only
    (counted in stats.camera_rays and rays; no shading), var -1.
    The denoiser (fovpt_denoise_*). Temporal accumulation with reprojection, then an
@@ -5606,6 +5608,29 @@ FOVPT__PRIV float fovpt__density(const fovpt_ctx *ctx, float e)
     return D;
 }
 
+/* LAYERS, ZONES: the stride-1 layer whose samples give pixel (x, y)'s guides when more than
+   one traces it (their blend band): the largest weight in the resolve's blend (layer n's
+   weight: vb_n, or 1 for the full-weight layer, times (1 - vb_m) of every layer m > n; 0
+   below the full-weight layer), ties to the later layer */
+FOVPT__PRIV uint32_t fovpt__gwin(const fovpt_ctx *ctx, uint32_t x, uint32_t y, float e)
+{
+    const fovpt_layers_cfg *L = &ctx->lay;
+    uint32_t n, m, top = 0, win = 0;
+    float best = -1.0f;
+    for (n = L->count - 1u; n > 0; --n)
+        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+    for (n = 0; n < L->count; ++n) {
+        float w;
+        if (L->layer[n].stride != 1u || x < ctx->layer_ox[n] || y < ctx->layer_oy[n] ||
+            e > ctx->layer_trace_deg[n] || e < ctx->layer_inner_deg[n])
+            continue;
+        w = n < top ? 0.0f : n == top ? 1.0f : fovpt__vb(L, n, e);
+        for (m = n + 1u; m < L->count; ++m) w *= 1.0f - fovpt__vb(L, m, e);
+        if (w >= best) { best = w; win = n; }
+    }
+    return win;
+}
+
 FOVPT__PRIV int fovpt__gstride_bad(uint32_t stride, uint32_t ch, uint32_t W)
 {
     return stride != 0u && stride < ch * W;
@@ -5678,7 +5703,8 @@ FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint
                         FOV_MEMSET(&G, 0, sizeof G);
                         fovpt__pixel_g(ctx, frame, px, py, spp, s0, sum, &G, &st);
                         fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
-                        fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), acc[3]);
+                        if (fovpt__gwin(ctx, px, py, ep) == n) /* one layer's guides */
+                            fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), acc[3]);
                     } else {
                         fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
                                      ctx->cfg.spp, ctx->lay.clamp_white, sum, &st);

@@ -621,6 +621,51 @@ static void t_var_accum(void)
     img_free(&a);
 }
 
+/* two stride-1 layers overlapping in their blend band: the guides come from the layer with
+   the larger resolve weight (inner where vb > 1/2: 4 spp, var >= 0; outer: 1 spp, var -1) */
+static void t_two_stride1(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 80.0f, 60.0f };
+    void *sm = NULL, *mem;
+    size_t b = 0;
+    uint32_t x, y, in_n = 0, in_bad = 0, out_n = 0, out_bad = 0;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    if (!box_scene(&s, &sm, &m)) return;
+    box_cam(&cam, 160, 120);
+    img_alloc(&a, 160, 120);
+    c.method = FOVPT_METHOD_LAYERS; c.spp = 1;
+    c.layers.count = 2; c.layers.blend_deg = 6.0f;
+    c.layers.layer[0].stride = 1; c.layers.layer[0].spp = 1; c.layers.layer[0].radius_deg = 0.0f;
+    c.layers.layer[1].stride = 1; c.layers.layer[1].spp = 4; c.layers.layer[1].radius_deg = 10.0f;
+    ok = fovpt_memory_size(&c, &cam, &b) == FOV_OK;
+    mem = malloc(b + 16u);
+    ok = ok && fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (y = 0; ok && y < 120; ++y)
+        for (x = 0; x < 160; ++x) {
+            float e = fovpt_ecc_deg(&ctx.ecc, (float)x + 0.5f, (float)y + 0.5f), v = a.var[y * 160u + x];
+            if (e > 7.3f && e < 9.7f) { in_n++; in_bad += !(v >= 0.0f); }
+            if (e > 10.3f && e < 12.7f && e <= ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
+        }
+    check(ok && in_n > 20u && out_n > 20u && in_bad == 0u && out_bad == 0u, "guide_two_stride1_layers_larger_weight",
+          "ok %d: inner half of the band %u px (%u without var), outer half %u px (%u with var; trace %g deg)", ok, in_n, in_bad,
+          out_n, out_bad, ok ? (double)ctx.layer_trace_deg[1] : 0.0);
+    free(mem); free(sm);
+    img_free(&a);
+}
+
 /* a synthetic frame: left third sky (depth 0), the rest a wall at depth 2 facing the camera,
    noisy colours from a hash of (x, y, f) */
 static void synth_frame(img *a, uint32_t f)
@@ -746,5 +791,6 @@ int main(void)
     t_same_image();
     t_robust();
     t_var_accum();
+    t_two_stride1();
     return fovcheck_summary();
 }
