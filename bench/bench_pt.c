@@ -1047,6 +1047,7 @@ static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float 
     fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
     float *noisy = (float *)malloc(np * 12u), *gb = (float *)malloc(np * 32u);
     double t0, t1, t;
+    fov_result e;
     memset(st, 0, sizeof *st);
     dc.width = S->cam.width; dc.height = S->cam.height;
     if (fovpt_memory_size(cfg, &S->cam, &n) != FOV_OK || fovpt_denoise_size(&dc, &dnb) != FOV_OK) return -1.0;
@@ -1061,12 +1062,16 @@ static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float 
     fovpt_output_init(&out);
     out.rgb = noisy;
     t0 = cpu_ms();
-    fovpt_render_guide(&ctx, 0, &out, &gd, st);
+    e = fovpt_render_guide(&ctx, 0, &out, &gd, st);
     t1 = cpu_ms();
-    fovpt_denoise_frame(&dn, &S->cam, g, noisy, 0, &gd);
+    if (e == FOV_OK) e = fovpt_denoise_frame(&dn, &S->cam, g, noisy, 0, &gd);
     out.rgb = rgb;
-    fovpt_denoise_run(&dn, &out);
+    if (e == FOV_OK) e = fovpt_denoise_run(&dn, &out);
     t = cpu_ms() - t0;
+    if (e != FOV_OK) { /* a bug, not a figure: stop rather than write a row of garbage */
+        fprintf(stderr, "bench_pt --denoise: render_guide / denoiser failed: %s\n", fovpt_result_string(e));
+        exit(1);
+    }
     g_dn_ms = cpu_ms() - t1;
     free(gd.var); free(noisy); free(gb); free(mem); free(dmem);
     return t;
@@ -1200,8 +1205,10 @@ static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int mo
     fovpt_denoise_size(&dc, &dnb);
     mem = malloc(n + 16u);
     dmem = malloc(dnb);
-    fovpt_init(&ctx, c, &S->scene, &S->cam, g, mem, n);
-    fovpt_denoise_init(&dn, &dc, dmem, dnb);
+    if (fovpt_init(&ctx, c, &S->scene, &S->cam, g, mem, n) != FOV_OK || fovpt_denoise_init(&dn, &dc, dmem, dnb) != FOV_OK) {
+        fprintf(stderr, "bench_pt --denoise (flicker): fovpt_init / fovpt_denoise_init failed\n");
+        exit(1);
+    }
     fovpt_guide_init(&gd);
     gd.albedo = gb; gd.normal = gb + 3u * np; gd.depth = gb + 6u * np; gd.spp = gb + 7u * np; gd.var = gb + 8u * np;
     prev = S->cam;
@@ -1211,10 +1218,14 @@ static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int mo
         fovpt_output_init(&out);
         out.rgb = dn_on ? noisy : cur;
         if (dn_on) {
-            fovpt_render_guide(&ctx, f, &out, &gd, NULL);
-            fovpt_denoise_frame(&dn, &cam, g, noisy, 0, &gd);
+            fov_result e = fovpt_render_guide(&ctx, f, &out, &gd, NULL);
+            if (e == FOV_OK) e = fovpt_denoise_frame(&dn, &cam, g, noisy, 0, &gd);
             out.rgb = cur;
-            fovpt_denoise_run(&dn, &out);
+            if (e == FOV_OK) e = fovpt_denoise_run(&dn, &out);
+            if (e != FOV_OK) {
+                fprintf(stderr, "bench_pt --denoise (flicker): render_guide / denoiser failed: %s\n", fovpt_result_string(e));
+                exit(1);
+            }
         } else {
             fovpt_render(&ctx, f, &out, NULL);
         }

@@ -121,11 +121,13 @@ int main(int argc, char **argv)
     for (f = 0; f < FRAMES; ++f) {                      /* a still camera: the history adds up */
         fovpt_output_init(&out);
         out.rgb = noisy;
-        fovpt_render_guide(&ctx, f, &out, &guide, &stats);   /* or trace/resolve rows on threads */
+        /* or fovpt_trace_rows_guide / resolve rows on threads */
+        if ((r = fovpt_render_guide(&ctx, f, &out, &guide, &stats)) != FOV_OK) { fprintf(stderr, "%s\n", fovpt_result_string(r)); return 1; }
         if ((r = fovpt_denoise_frame(&dn, &cam, gaze, noisy, 0, &guide)) != FOV_OK) { fprintf(stderr, "%s\n", fovpt_result_string(r)); return 1; }
         fovpt_output_init(&out);
         out.rgb8 = pixels;
-        fovpt_denoise_run(&dn, &out);                   /* or temporal, a-trous, resolve by rows */
+        /* or fovpt_denoise_temporal_rows, _atrous_rows, _resolve_rows by rows */
+        if ((r = fovpt_denoise_run(&dn, &out)) != FOV_OK) { fprintf(stderr, "%s\n", fovpt_result_string(r)); return 1; }
     }
     for (n = 0; n < ctx.lay.count; ++n)
         fprintf(stderr, "layer %u: %llu target pixels, %llu samples\n", n, (unsigned long long)stats.layer_targets[n],

@@ -230,7 +230,7 @@ static void t_furnace(void)
         ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
         for (i = 0; i < n; ++i)
             for (k = 0; k < 3; ++k) {
-                double vi = a.rgb[3 * i + (size_t)k], vo = out[3 * i + (size_t)k];
+                double vi = (double)a.rgb[3 * i + (size_t)k], vo = (double)out[3 * i + (size_t)k];
                 mi += vi; mo += vo;
                 ei += (vi - 1.0) * (vi - 1.0); eo += (vo - 1.0) * (vo - 1.0);
             }
@@ -583,6 +583,203 @@ static void t_same_image(void)
     free(sm);
 }
 
+/* var with accumulate: the variance of the accumulated mean (second call's sample variance /
+   4 accumulated samples, about half the first call's / 2) */
+static void t_var_accum(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 20.0f, 15.0f };
+    void *sm = NULL, *mem;
+    size_t b = 0, i;
+    double v0 = 0.0, v1 = 0.0;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    if (!box_scene(&s, &sm, &m)) return;
+    box_cam(&cam, 40, 30);
+    img_alloc(&a, 40, 30);
+    c.method = FOVPT_METHOD_UNIFORM; c.spp = 2; c.accumulate = 1;
+    fovpt_memory_size(&c, &cam, &b);
+    mem = malloc(b + 16u);
+    ok = fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; i < 40u * 30u; ++i) v0 += (double)a.var[i];
+    ok = ok && fovpt_render_guide(&ctx, 1, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; i < 40u * 30u; ++i) v1 += (double)a.var[i];
+    check(ok && a.spp[0] == 4.0f && v0 > 0.0 && v1 / v0 > 0.35 && v1 / v0 < 0.65, "guide_var_accumulate",
+          "ok %d spp %g, mean var %g -> %g (ratio %.3f, want ~0.5)", ok, (double)a.spp[0], v0 / 1200.0, v1 / 1200.0, v1 / v0);
+    free(mem); free(sm);
+    img_free(&a);
+}
+
+/* two stride-1 layers overlapping in their blend band: the guides come from the layer with
+   the larger resolve weight (inner where vb > 1/2: 4 spp, var >= 0; outer: 1 spp, var -1) */
+static void t_two_stride1(void)
+{
+    fovpt_material m;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 80.0f, 60.0f };
+    void *sm = NULL, *mem;
+    size_t b = 0;
+    uint32_t x, y, in_n = 0, in_bad = 0, out_n = 0, out_bad = 0;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
+    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
+    if (!box_scene(&s, &sm, &m)) return;
+    box_cam(&cam, 160, 120);
+    img_alloc(&a, 160, 120);
+    c.method = FOVPT_METHOD_LAYERS; c.spp = 1;
+    c.layers.count = 2; c.layers.blend_deg = 6.0f;
+    c.layers.layer[0].stride = 1; c.layers.layer[0].spp = 1; c.layers.layer[0].radius_deg = 0.0f;
+    c.layers.layer[1].stride = 1; c.layers.layer[1].spp = 4; c.layers.layer[1].radius_deg = 10.0f;
+    ok = fovpt_memory_size(&c, &cam, &b) == FOV_OK;
+    mem = malloc(b + 16u);
+    ok = ok && fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (y = 0; ok && y < 120; ++y)
+        for (x = 0; x < 160; ++x) {
+            float e = fovpt_ecc_deg(&ctx.ecc, (float)x + 0.5f, (float)y + 0.5f), v = a.var[y * 160u + x];
+            if (e > 7.3f && e < 9.7f) { in_n++; in_bad += !(v >= 0.0f); }
+            if (e > 10.3f && e < 12.7f && e <= ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
+        }
+    check(ok && in_n > 20u && out_n > 20u && in_bad == 0u && out_bad == 0u, "guide_two_stride1_layers_larger_weight",
+          "ok %d: inner half of the band %u px (%u without var), outer half %u px (%u with var; trace %g deg)", ok, in_n, in_bad,
+          out_n, out_bad, ok ? (double)ctx.layer_trace_deg[1] : 0.0);
+    free(mem); free(sm);
+    img_free(&a);
+}
+
+/* a synthetic frame: left third sky (depth 0), the rest a wall at depth 2 facing the camera,
+   noisy colours from a hash of (x, y, f) */
+static void synth_frame(img *a, uint32_t f)
+{
+    uint32_t x, y, k;
+    for (y = 0; y < a->h; ++y)
+        for (x = 0; x < a->w; ++x) {
+            size_t i = (size_t)y * a->w + x;
+            uint32_t h = (x * 73856093u) ^ (y * 19349663u) ^ ((f + 1u) * 83492791u);
+            for (k = 0; k < 3; ++k) {
+                h = h * 1664525u + 1013904223u;
+                a->rgb[3 * i + k] = 0.5f + (float)(h >> 8) * (1.0f / 16777216.0f);
+                a->alb[3 * i + k] = 0.5f;
+            }
+            a->dep[i] = x < a->w / 3u ? 0.0f : 2.0f;
+            a->nrm[3 * i] = 0.0f; a->nrm[3 * i + 1] = 0.0f; a->nrm[3 * i + 2] = 1.0f;
+            a->spp[i] = 2.0f;
+            a->var[i] = -1.0f;
+        }
+}
+
+/* runs every phase with row ranges of `rows` rows */
+static int dn_split(fovpt_denoise *dn, uint32_t rows, float *out)
+{
+    uint32_t y, i, H = dn->cfg.height;
+    fovpt_output o;
+    fovpt_output_init(&o); o.rgb = out;
+    for (y = 0; y < H; y += rows)
+        if (fovpt_denoise_temporal_rows(dn, y, y + rows < H ? y + rows : H) != FOV_OK) return 0;
+    for (i = 0; i < fovpt_denoise_passes(dn); ++i)
+        for (y = 0; y < H; y += rows)
+            if (fovpt_denoise_atrous_rows(dn, i, y, y + rows < H ? y + rows : H) != FOV_OK) return 0;
+    for (y = 0; y < H; y += rows)
+        if (fovpt_denoise_resolve_rows(dn, y, y + rows < H ? y + rows : H, &o) != FOV_OK) return 0;
+    return 1;
+}
+
+/* never-written memory, phases out of order, a failed frame, the row split */
+static void t_robust(void)
+{
+    const uint32_t W = 32, H = 24;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fovpt_denoise dn;
+    fovpt_camera cam;
+    fovpt_output o;
+    fov_gaze g = { 16.0f, 12.0f }, gnan;
+    img a, b;
+    size_t bytes = 0, i, bad;
+    void *mem;
+    float *out = (float *)malloc((size_t)W * H * 12u), *ref = (float *)malloc((size_t)W * H * 12u);
+    uint32_t split, f;
+    int ok;
+    gnan.x = (float)nan(""); gnan.y = 12.0f;
+    box_cam(&cam, W, H);
+    img_alloc(&a, W, H); img_alloc(&b, W, H);
+    synth_frame(&a, 0); synth_frame(&b, 1);
+    dc.width = W; dc.height = H;
+    fovpt_denoise_size(&dc, &bytes);
+    mem = malloc(bytes);
+    fovpt_output_init(&o); o.rgb = out;
+    /* 1. memory full of 0xFF (NaN floats), two frames without a phase between, then run */
+    memset(mem, 0xFF, bytes);
+    ok = fovpt_denoise_init(&dn, &dc, mem, bytes) == FOV_OK &&
+         fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+         fovpt_denoise_frame(&dn, &cam, g, b.rgb, 0, &b.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (bad = 0, i = 0; i < 3u * W * H; ++i) bad += !(out[i] >= 0.0f && out[i] < 2.0f);
+    check(ok && bad == 0, "dn_ff_memory_finite", "ok %d, %zu values not finite in [0, 2)", ok, bad);
+    /* the same, one frame run in between: frame 2 takes frame 1 as history (finite, in range) */
+    memset(mem, 0xFF, bytes);
+    ok = fovpt_denoise_init(&dn, &dc, mem, bytes) == FOV_OK &&
+         fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK &&
+         fovpt_denoise_frame(&dn, &cam, g, b.rgb, 0, &b.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    for (bad = 0, i = 0; i < 3u * W * H; ++i) bad += !(out[i] >= 0.0f && out[i] < 2.0f);
+    check(ok && bad == 0 && dn.has_prev, "dn_ff_memory_history", "ok %d has_prev %u, %zu bad values", ok, dn.has_prev, bad);
+    /* 4. phases out of order */
+    ok = fovpt_denoise_init(&dn, &dc, mem, bytes) == FOV_OK && fovpt_denoise_passes(&dn) >= 2u &&
+         fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK;
+    check(ok && fovpt_denoise_resolve_rows(&dn, 0, H, &o) == FOV_ERR_INVALID_ARG, "dn_order_resolve_first",
+          "resolve right after frame accepted");
+    check(fovpt_denoise_atrous_rows(&dn, 0, 0, H) == FOV_ERR_INVALID_ARG, "dn_order_atrous_first",
+          "a-trous before temporal accepted");
+    check(fovpt_denoise_temporal_rows(&dn, 0, 10) == FOV_OK &&
+          fovpt_denoise_atrous_rows(&dn, 0, 0, H) == FOV_ERR_INVALID_ARG, "dn_order_partial_temporal",
+          "a-trous on rows whose temporal phase did not run accepted");
+    check(fovpt_denoise_temporal_rows(&dn, 10, H) == FOV_OK && fovpt_denoise_atrous_rows(&dn, 1, 0, H) == FOV_ERR_INVALID_ARG,
+          "dn_order_skip_pass", "pass 1 before pass 0 accepted");
+    check(fovpt_denoise_atrous_rows(&dn, 0, 0, H) == FOV_OK && fovpt_denoise_resolve_rows(&dn, 0, H, &o) == FOV_ERR_INVALID_ARG &&
+          fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_ERR_INVALID_ARG, "dn_order_resolve_early",
+          "resolve before the last pass or temporal after a pass accepted");
+    for (i = 1, ok = 1; i < fovpt_denoise_passes(&dn); ++i) ok = ok && fovpt_denoise_atrous_rows(&dn, (uint32_t)i, 0, H) == FOV_OK;
+    check(ok && fovpt_denoise_resolve_rows(&dn, 0, H, &o) == FOV_OK && fovpt_denoise_resolve_rows(&dn, 0, H, &o) == FOV_OK,
+          "dn_order_complete", "the phases in order rejected");
+    /* 5. a failed frame leaves no frame: every row call fails until the next good frame */
+    check(fovpt_denoise_frame(&dn, &cam, gnan, b.rgb, 0, &b.g) == FOV_ERR_NOT_FINITE &&
+          fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_ERR_INVALID_ARG && fovpt_denoise_atrous_rows(&dn, 0, 0, H) == FOV_ERR_INVALID_ARG &&
+          fovpt_denoise_resolve_rows(&dn, 0, H, &o) == FOV_ERR_INVALID_ARG && fovpt_denoise_run(&dn, &o) == FOV_ERR_INVALID_ARG,
+          "dn_failed_frame_rows_fail", "row calls after a failed frame accepted");
+    check(fovpt_denoise_frame(&dn, &cam, g, b.rgb, 0, &b.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK && dn.has_prev,
+          "dn_failed_frame_recovers", "the next good frame failed or lost the history");
+    /* 9. row split: rows of 1, 3 and all give bit-identical output (two frames, history on) */
+    for (split = 0; split < 3; ++split) {
+        uint32_t rows = split == 0 ? H : split == 1 ? 1u : 3u;
+        ok = fovpt_denoise_init(&dn, &dc, mem, bytes) == FOV_OK;
+        for (f = 0; f < 2; ++f)
+            ok = ok && fovpt_denoise_frame(&dn, &cam, g, f ? b.rgb : a.rgb, 0, f ? &b.g : &a.g) == FOV_OK &&
+                 dn_split(&dn, rows, split ? out : ref);
+        if (split)
+            check(ok && memcmp(out, ref, (size_t)W * H * 12u) == 0, N("dn_row_split_identical_%u", rows),
+                  "rows of %u differ from the whole image (ok %d)", rows, ok);
+    }
+    free(mem); free(out); free(ref);
+    img_free(&a); img_free(&b);
+}
+
 int main(void)
 {
     t_constant();
@@ -592,5 +789,8 @@ int main(void)
     t_foveation();
     t_errors();
     t_same_image();
+    t_robust();
+    t_var_accum();
+    t_two_stride1();
     return fovcheck_summary();
 }
