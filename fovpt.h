@@ -835,7 +835,10 @@ typedef struct fov_eye_plan {
    Error checks leave the filter unchanged: a timestamp not after the previous one
    (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
    the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
-   sample (FOV_ERR_NOT_FINITE), an angle beyond +-90 degrees (FOV_ERR_INVALID_ARG). A blink
+   sample (FOV_ERR_NOT_FINITE), an angle of +-90 degrees or beyond (FOV_ERR_INVALID_ARG; a
+   pixel far enough off the axis rounds to 90 degrees and is rejected by _push_px and
+   _gaze_to_deg as well; _push_px changes the filter and *out only when the whole call,
+   the conversion back to pixels included, succeeds). A blink
    shorter than max_dt_ms needs nothing: push no samples while the tracker reports none.
 
    The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
@@ -2341,8 +2344,9 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
                         "samples)");
         return FOV_ERR_NOT_FINITE;
     }
-    if (!(fov__absf(x) <= 90.0f && fov__absf(y) <= 90.0f)) {
-        *bad = FOV__MSG("gaze_filter_push: sample beyond +-90 degrees");
+    if (!(fov__absf(x) < 90.0f && fov__absf(y) < 90.0f)) {
+        *bad = FOV__MSG("gaze_filter_push: sample at or beyond +-90 degrees (must be in "
+                        "(-90, 90))");
         return FOV_ERR_INVALID_ARG;
     }
     if (f->samples > 0u) {
@@ -2500,7 +2504,10 @@ FOV__PRIV int fov__gaze_to_deg(const fov_ecc_model *m, float x, float y, float d
     if (!fov__finite(dx) || !fov__finite(dy) || !(m->f_px > 0.0f)) return 0;
     d[0] = FOV__ATAN2(dx, m->f_px) / FOV__DEG;
     d[1] = FOV__ATAN2(dy, FOV__SQRT(dx * dx + m->f_px * m->f_px)) / FOV__DEG;
-    return fov__finite(d[0]) && fov__finite(d[1]);
+    /* a pixel far enough out rounds to exactly 90 degrees, which fov__gaze_from_deg (and the
+       filter) cannot take: the open interval (-90, 90) only */
+    return fov__finite(d[0]) && fov__finite(d[1]) && fov__absf(d[0]) < 90.0f &&
+           fov__absf(d[1]) < 90.0f;
 }
 FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float *x, float *y)
 {
@@ -2510,6 +2517,42 @@ FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float
     *x = m->cx + m->f_px * FOV__TAN(h);
     *y = m->cy + m->f_px * FOV__TAN(v) / ch;
     return fov__finite(*x) && fov__finite(*y);
+}
+/* A pixel sample: converted, pushed into a copy of the filter and the filtered gaze turned
+   back into pixels; the filter (and *out) change only when all three succeed. */
+FOV__PRIV fov_result fov__gaze_push_px(fov_gaze_filter *f, const fov_ecc_model *m, uint64_t t_us,
+                                       fov_gaze raw, fov_gaze *out, const char **bad)
+{
+    fov_gaze_filter s;
+    fov_gaze g;
+    float d[2];
+    fov_result r;
+    *bad = FOV__MSG("");
+    if (!fov__finite(raw.x) || !fov__finite(raw.y)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample NaN or infinite (skip the tracker's "
+                        "invalid samples)");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample at or beyond 90 degrees off the axis, or "
+                        "the eccentricity model is not initialised");
+        return FOV_ERR_INVALID_ARG;
+    }
+    s = *f;
+    r = fov__gaze_push(&s, t_us, d[0], d[1], bad);
+    if (r != FOV_OK) return r;
+    g.x = g.y = 0.0f;
+    if (out) {
+        d[0] = s.x_deg; d[1] = s.y_deg;
+        if (!fov__gaze_from_deg(m, d, &g.x, &g.y)) {
+            *bad = FOV__MSG("gaze_filter_push_px: the filtered gaze has no pixel (beyond 90 "
+                            "degrees)");
+            return FOV_ERR_INVALID_ARG;
+        }
+    }
+    *f = s;
+    if (out) *out = g;
+    return FOV_OK;
 }
 
 /* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
@@ -2766,16 +2809,9 @@ FOVPT_API fov_result fovpt_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us, f
 FOVPT_API fov_result fovpt_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
                                                uint64_t t_us, fov_gaze raw, fov_gaze *out)
 {
-    float d[2];
-    fov_result r;
+    const char *bad;
     if (!f || !m) return FOV_ERR_NULL;
-    if (!fov__finite(raw.x) || !fov__finite(raw.y)) return FOV_ERR_NOT_FINITE;
-    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) return FOV_ERR_INVALID_ARG;
-    r = fovpt_gaze_filter_push(f, t_us, d[0], d[1]);
-    if (r != FOV_OK || !out) return r;
-    d[0] = f->x_deg; d[1] = f->y_deg;
-    if (!fov__gaze_from_deg(m, d, &out->x, &out->y)) return FOV_ERR_INVALID_ARG;
-    return FOV_OK;
+    return fov__gaze_push_px(f, m, t_us, raw, out, &bad);
 }
 FOVPT_API fov_result fovpt_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2])
 {

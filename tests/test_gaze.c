@@ -279,6 +279,53 @@ static void test_pixels(void)
     check(fovpt_gaze_fixed(NULL, 0, 720, &g) == FOV_ERR_INVALID_ARG, "fixed_gaze_zero_size", "-");
 }
 
+/* review item: a pixel push that fails leaves the filter as it was, in every header. A pixel
+   at x = 1e12 is atan2(1e12, f) = pi/2 in float, i.e. exactly 90 degrees, which no pixel can
+   come back from: it is rejected before the filter sees it. */
+static void test_px_error_state(void)
+{
+    fov_ecc_model em;
+    fov_display d;
+    fov_gaze g, far_px, o;
+    fov_gaze_filter a, b, c, a0, b0, c0;
+    float deg[2];
+    fov_result r1, r2, r3;
+    uint32_t i;
+    memset(&d, 0, sizeof d);
+    d.fov_y_deg = 90.0f;
+    g.x = 640.0f; g.y = 360.0f;
+    fovsdf_ecc_init(&em, &d, 60.0f, 1280, 720, g);
+    fovsdf_gaze_filter_init(&a, NULL);
+    fovlp_gaze_filter_init(&b, NULL);
+    fovpt_gaze_filter_init(&c, NULL);
+    for (i = 0; i < 10; ++i) {
+        fovsdf_gaze_filter_push_px(&a, &em, 1000u + i * DT_US, g, &o);
+        fovlp_gaze_filter_push_px(&b, &em, 1000u + i * DT_US, g, &o);
+        fovpt_gaze_filter_push_px(&c, &em, 1000u + i * DT_US, g, &o);
+    }
+    a0 = a; b0 = b; c0 = c;
+    far_px.x = 1e12f; far_px.y = 360.0f;
+    o.x = o.y = -7.0f;
+    r1 = fovsdf_gaze_filter_push_px(&a, &em, 1000u + 10u * DT_US, far_px, &o);
+    r2 = fovlp_gaze_filter_push_px(&b, &em, 1000u + 10u * DT_US, far_px, &o);
+    r3 = fovpt_gaze_filter_push_px(&c, &em, 1000u + 10u * DT_US, far_px, &o);
+    check(r1 == FOV_ERR_INVALID_ARG && r2 == FOV_ERR_INVALID_ARG && r3 == FOV_ERR_INVALID_ARG,
+          "px_far_rejected", "%d %d %d", (int)r1, (int)r2, (int)r3);
+    check(same(&a, &a0) && same(&b, &b0) && same(&c, &c0), "px_far_state_unchanged", "-");
+    check(o.x >= -7.0f && o.x <= -7.0f && o.y >= -7.0f && o.y <= -7.0f, "px_far_out_untouched",
+          "%g %g", (double)o.x, (double)o.y);
+    check(fovsdf_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG &&
+          fovlp_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG &&
+          fovpt_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG, "to_deg_90_rejected", "-");
+    /* and a sample of exactly 90 degrees is rejected by the degree push too (no pixel maps
+       there, so the filtered gaze could not be turned back into pixels) */
+    r1 = fovsdf_gaze_filter_push(&a, 1000u + 10u * DT_US, 90.0f, 0.0f);
+    check(r1 == FOV_ERR_INVALID_ARG && same(&a, &a0), "push_90_rejected", "%d", (int)r1);
+    /* a good sample after the rejected ones is taken */
+    r1 = fovsdf_gaze_filter_push_px(&a, &em, 1000u + 10u * DT_US, g, &o);
+    check(r1 == FOV_OK && a.samples == a0.samples + 1u, "px_after_error_ok", "%d", (int)r1);
+}
+
 /* each header's config_gaze_margin */
 static void test_apply(void)
 {
@@ -376,6 +423,7 @@ int main(void)
     test_errors();
     test_margin();
     test_pixels();
+    test_px_error_state();
     test_apply();
     test_trace();
     return fovcheck_summary();
