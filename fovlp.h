@@ -49,7 +49,8 @@ QUICK START (the library never renders: you shade the positions it hands out)
    No eye tracker: fixed foveation, the gaze at the display's axis point and a larger disc
       fovlp_gaze_fixed(&cfg.display, 1920, 1080, &gaze);                 // the screen centre
       fovlp_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg);  // disc + 15 deg
-   With one: filter its samples and grow the disc by the latency margin (GAZE INPUT).
+   With one: filter its samples and grow the disc by the latency margin (GAZE INPUT): init
+   with the largest margin, then per frame fovlp_set_gaze_margin (keeps the TAA history).
    A head-mounted display's eye (off-axis): cfg.taa.frustum = its tangents and
    fovlp_camera_display(&cam, &cfg.display).
 
@@ -893,6 +894,8 @@ typedef struct fovlp_ctx {
     uint32_t moving;        /* 1 when cam differs from prev_cam */
     float jit_u, jit_v;     /* sample offset inside a texel / pixel this frame (0.5: centre) */
     float L_diag;           /* log(diagonal), the fixed normaliser of the sizes */
+    float disc_angle;       /* the gaze disc used, radians: cfg.gaze_angle (which sizes the
+                               buffers) after fovlp_init, smaller after fovlp_set_gaze_margin */
     float *rho;             /* lp_w radii of the columns' samples (this frame) */
     float *cs, *sn;         /* lp_h cos/sin of the rows' sample angles (this frame) */
     void *mem;
@@ -1007,7 +1010,9 @@ FOVLP_API fov_result fovlp_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovlp_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovlp_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
-      fovlp_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+      fovlp_set_gaze_margin(&ctx, &base_cfg, m);           // then fovlp_begin_frame, render
+   where ctx was initialised once with fovlp_config_gaze_margin(&base_cfg, gf.cfg.max_margin_deg,
+   &cfg) (the room for the largest margin; a per-frame fovlp_init would reset the TAA history).
    _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
    FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
    _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
@@ -1041,13 +1046,27 @@ FOVLP_API fov_result fovlp_gaze_fixed(const fov_display *display, uint32_t width
 FOVLP_API fov_result fovlp_camera_display(const fov_camera *cam, fov_display *out);
 /* The margin applied: *out = base resolved (fovlp_config_resolve) with the gaze disc's
    gaze_angle (radians) grown by margin_deg (>= 0) degrees. The disc's size sets the context's
-   memory: fovlp_init with *out (a context sized for the largest margin you allow takes any
-   smaller one). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0),
+   sizes: fovlp_init with *out for the largest margin you allow, then per frame
+   fovlp_set_gaze_margin (a per-frame fovlp_init resets the TAA history). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0),
    FOV_ERR_UNSUPPORTED (no_disc = 1: there is no full-quality disc to widen), FOV_ERR_LIMIT
    (gaze_angle reaching 1.5 radians), or the base's resolve error; *out written only on
    success. */
 FOVLP_API fov_result fovlp_config_gaze_margin(const fovlp_config *base, float margin_deg,
                                               fovlp_config *out);
+/* The margin applied per frame to a context, keeping its TAA history: the gaze disc becomes
+   base's gaze_angle (resolved) grown by margin_deg rounded up to a multiple of 0.25 degrees
+   (a wobbling margin does not move the LP samples every frame), from the next
+   fovlp_begin_frame on. The context's sizes (LP buffer, disc buffer, sample slots, memory)
+   never change: they are those of the config fovlp_init took, so init with
+   fovlp_config_gaze_margin(&base, largest margin, &cfg) (FOV_GAZE_FIXED_MARGIN_DEG or the
+   filter's max_margin_deg); the LP columns then start at the smaller disc's edge (u_G, w_C of
+   fovlp_geometry follow it). A margin beyond that room is clamped to the context's disc (a
+   FOV_LOG_WARN through cfg.logger; ctx->disc_angle says what is used) and returns FOV_OK.
+   FOV_ERR_NULL, FOV_ERR_INVALID_ARG (ctx not initialised, margin < 0, base.gaze_angle above
+   the context's), FOV_ERR_NOT_FINITE, FOV_ERR_UNSUPPORTED (no_disc), base's resolve error;
+   the context is unchanged on error. */
+FOVLP_API fov_result fovlp_set_gaze_margin(fovlp_ctx *ctx, const fovlp_config *base,
+                                           float margin_deg);
 
 /* Context: memory size query, init, and per frame begin_frame. cam may be NULL (no
    reprojection: TAA treats the camera as still). Resets the history on a gaze jump. */
@@ -2129,6 +2148,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #endif
 
 #define FOVLP__TWO_PI 6.28318530717959f
+#define FOVLP__GAZE_STEP_DEG 0.25f /* fovlp_set_gaze_margin rounds the margin up to this */
 #define FOVLP__LOG2 0.693147181f
 #define FOVLP__MAX_PHASES 256u
 
@@ -2484,8 +2504,8 @@ FOVLP__PRIV float fovlp__far_corner(const fovlp_config *c, fov_gaze g)
 
 /* Sizes (fixed for a config) and the gaze-dependent part. c must be resolved with valid
    width/height; ecc must be initialised for gaze (gives f_px). */
-FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, float f_px,
-                                       fovlp_geometry *g)
+FOVLP__PRIV fov_result fovlp__geometry2(const fovlp_config *c, fov_gaze gaze, float f_px,
+                                        float disc_angle, fovlp_geometry *g)
 {
     const fov_logger *lg = &c->logger;
     float W = (float)c->width, H = (float)c->height;
@@ -2535,6 +2555,11 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
     }
     g->disc_side = S;
+    /* the disc actually used (fovlp_set_gaze_margin): at most the sized one, same buffers */
+    if (disc_angle >= 0.0f && disc_angle < c->gaze_angle && r_g > 0.0f) {
+        r_g = disc_angle > 0.0f ? f_px * FOV__TAN(disc_angle) : 0.0f;
+        xm = c->edge == FOVLP_EDGE_THESIS ? r_g + 1.0f : r_g;
+    }
     g->disc_cols = S < c->width ? S : c->width;
     g->disc_rows = S < c->height ? S : c->height;
     lp = (size_t)g->lp_w * (size_t)g->lp_h;
@@ -2574,8 +2599,17 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     return FOV_OK;
 }
 
-FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovlp_config *c,
-                                    fov_ecc_model *ecc, fov_gaze *gz, fovlp_geometry *g)
+FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, float f_px,
+                                       fovlp_geometry *g)
+{
+    return fovlp__geometry2(c, gaze, f_px, -1.0f, g);
+}
+
+/* disc_angle: the disc used (<= the config's gaze_angle, which sizes the buffers); < 0: the
+   config's */
+FOVLP__PRIV fov_result fovlp__setup2(const fovlp_config *cfg, fov_gaze gaze, float disc_angle,
+                                     fovlp_config *c, fov_ecc_model *ecc, fov_gaze *gz,
+                                     fovlp_geometry *g)
 {
     fov_result r;
     int clamped;
@@ -2591,7 +2625,12 @@ FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovl
     r = fovlp_ecc_init(ecc, &c->display, fovlp__view_fov(c), c->width, c->height, *gz);
     if (r != FOV_OK)
         FOVLP__FAIL(&c->logger, r, "gaze or config.display: the eye direction overflows");
-    return fovlp__geometry(c, *gz, ecc->f_px, g);
+    return fovlp__geometry2(c, *gz, ecc->f_px, disc_angle, g);
+}
+FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovlp_config *c,
+                                    fov_ecc_model *ecc, fov_gaze *gz, fovlp_geometry *g)
+{
+    return fovlp__setup2(cfg, gaze, -1.0f, c, ecc, gz, g);
 }
 
 FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, fovlp_geometry *out)
@@ -2894,6 +2933,55 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
     ctx->mem = mem;
     ctx->mem_size = mem_size;
     ctx->jit_u = ctx->jit_v = 0.5f;
+    ctx->disc_angle = c.gaze_angle;
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_set_gaze_margin(fovlp_ctx *ctx, const fovlp_config *base,
+                                           float margin_deg)
+{
+    fovlp_config b, c;
+    fov_ecc_model e;
+    fov_gaze gz;
+    fovlp_geometry g;
+    fov_result r;
+    float q, a;
+    if (!ctx || !base) return FOV_ERR_NULL;
+    if (!ctx->rho || !ctx->cs || !ctx->sn) return FOV_ERR_INVALID_ARG; /* not initialised */
+    if (!fov__finite(margin_deg))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE,
+                    "set_gaze_margin: margin NaN or infinite");
+    if (margin_deg < 0.0f)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: margin must be >= 0");
+    r = fovlp_config_resolve(base, &b);
+    if (r != FOV_OK) return r;
+    if (b.no_disc || ctx->cfg.no_disc)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_UNSUPPORTED,
+                    "set_gaze_margin: no_disc = 1, no full-quality disc to widen");
+    if (b.gaze_angle > ctx->cfg.gaze_angle)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: base.gaze_angle above the context's (init with "
+                    "fovlp_config_gaze_margin(base, largest margin))");
+    /* up to the next FOVLP__GAZE_STEP_DEG: a margin that wobbles does not move the
+       LP samples every frame */
+    q = FOV__FLOOR(margin_deg / FOVLP__GAZE_STEP_DEG);
+    if (q * FOVLP__GAZE_STEP_DEG < margin_deg) q += 1.0f;
+    a = b.gaze_angle + q * FOVLP__GAZE_STEP_DEG * FOV__DEG;
+    if (!(a <= ctx->cfg.gaze_angle)) {
+        a = ctx->cfg.gaze_angle;
+        if (ctx->cfg.logger.func)
+            ctx->cfg.logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK,
+                                 FOV__MSG("set_gaze_margin: margin above the context's room: "
+                                          "clamped to its disc"),
+                                 (uint32_t)__LINE__, ctx->cfg.logger.user);
+    }
+    /* the geometry at the current gaze must exist (it does: a smaller disc than the sized one) */
+    {
+        fov_result r2 = fovlp__setup2(&ctx->cfg, ctx->gaze, a, &c, &e, &gz, &g);
+        if (r2 != FOV_OK) return r2;
+    }
+    ctx->disc_angle = a; /* the next begin_frame uses it; the sizes and the history stay */
     return FOV_OK;
 }
 
@@ -3014,7 +3102,7 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
             FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE,
                         "begin_frame: cam.tan_half_y <= 0 or fwd, right or up not unit");
     }
-    r = fovlp__setup(&ctx->cfg, gaze, &c, &e, &gz, &g);
+    r = fovlp__setup2(&ctx->cfg, gaze, ctx->disc_angle, &c, &e, &gz, &g);
     if (r != FOV_OK) return r;
     if (g.lp_w != ctx->geo.lp_w || g.lp_h != ctx->geo.lp_h || g.samples != ctx->geo.samples)
         FOVLP__FAIL(&c.logger, FOV_ERR_DEGENERATE,

@@ -442,6 +442,89 @@ static void test_disc_converges(void)
     env_free(&e);
 }
 
+/* review item: the per-frame latency margin (fovlp_set_gaze_margin) keeps the TAA history; a
+   per-frame fovlp_init with fovlp_config_gaze_margin (the old recipe) loses it every frame */
+static void test_gaze_margin_keeps_history(void)
+{
+    fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H), room, b;
+    taa_env e;
+    fovlp_ctx saved;
+    fov_gaze gz = { 150.0f, 90.0f };
+    fovlp_geometry g0;
+    uint32_t k, valid = 0, age_gz;
+    int sizes_same = 1, r_ok = 1, rc_ok = 1;
+    float m;
+    c.taa.enable = 1;
+    check(fovlp_config_gaze_margin(&c, 15.0f, &room) == FOV_OK, "margin: room config", "-");
+    env_init(&e, &room);
+    g0 = e.ctx.geo;
+    fovlp_config_resolve(&c, &b);
+    for (k = 0; k < 12; ++k) {
+        float q, want;
+        m = 0.6f + 0.9f * (float)(k % 5); /* 0.6 .. 4.2 degrees, changing every frame */
+        if (fovlp_set_gaze_margin(&e.ctx, &c, m) != FOV_OK) rc_ok = 0;
+        frame(&e, gz, NULL, shade_pattern, NULL, NULL);
+        if (k > 0 && e.ctx.history_valid) valid++;
+        if (e.ctx.geo.lp_w != g0.lp_w || e.ctx.geo.lp_h != g0.lp_h ||
+            e.ctx.geo.samples != g0.samples)
+            sizes_same = 0;
+        /* worked out: the disc of base + m rounded up to 0.25 degrees, f tan(angle) */
+        q = ceilf(m / 0.25f) * 0.25f;
+        want = e.ctx.geo.f_px * tanf(b.gaze_angle + q * 0.017453292f);
+        if (!(fabsf(e.ctx.geo.r_g - want) <= 1e-3f * want)) r_ok = 0;
+    }
+    age_gz = e.age[e.ping][(uint32_t)gz.y * W + (uint32_t)gz.x];
+    check(rc_ok && valid == 11u && e.ctx.frame == 12u,
+          "margin: fovlp_set_gaze_margin every frame keeps the TAA history",
+          "rc %d valid %u frame %u", rc_ok, valid, e.ctx.frame);
+    check(age_gz >= 10u, "margin: the gaze pixel's history age grows", "age %u", age_gz);
+    check(sizes_same, "margin: the context's sizes never change", "-");
+    check(r_ok, "margin: disc = base + margin rounded up to 0.25 degrees", "r_g %g",
+          (double)e.ctx.geo.r_g);
+    /* beyond the room: clamped to the context's disc, FOV_OK */
+    check(fovlp_set_gaze_margin(&e.ctx, &c, 40.0f) == FOV_OK &&
+          e.ctx.disc_angle >= room.gaze_angle && e.ctx.disc_angle <= room.gaze_angle,
+          "margin: beyond the room clamped to it", "%g", (double)e.ctx.disc_angle);
+    /* errors leave the context as it was */
+    saved = e.ctx;
+    check(fovlp_set_gaze_margin(&e.ctx, &c, -1.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: negative rejected, ctx unchanged",
+          "-");
+    check(fovlp_set_gaze_margin(&e.ctx, &c, (float)NAN) == FOV_ERR_NOT_FINITE &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: NaN rejected, ctx unchanged", "-");
+    check(fovlp_set_gaze_margin(&e.ctx, &room, 0.0f) == FOV_OK, "margin: base = room ok", "-");
+    b = c; b.gaze_angle = room.gaze_angle + 0.01f;
+    saved = e.ctx;
+    check(fovlp_set_gaze_margin(&e.ctx, &b, 0.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: base above the room rejected",
+          "-");
+    b = c; b.no_disc = 1;
+    check(fovlp_set_gaze_margin(&e.ctx, &b, 1.0f) == FOV_ERR_UNSUPPORTED,
+          "margin: no_disc unsupported", "-");
+    /* control: the old recipe (fovlp_init with a new config each frame) never has history */
+    {
+        fovlp_config cf;
+        fovlp_config_gaze_margin(&c, 0.6f, &cf);
+        {
+            size_t bytes = 0;
+            void *mem2;
+            fovlp_ctx c2;
+            fovlp_memory_size(&cf, &bytes);
+            mem2 = malloc(bytes);
+            valid = 0;
+            for (k = 0; k < 4; ++k) {
+                fovlp_init(&c2, &cf, mem2, bytes);
+                fovlp_begin_frame(&c2, gz, NULL);
+                if (c2.history_valid) valid++;
+            }
+            check(valid == 0u, "margin: control, a per-frame fovlp_init has no history", "%u",
+                  valid);
+            free(mem2);
+        }
+    }
+    env_free(&e);
+}
+
 int main(void)
 {
     printf("# fovlp.h TAA tests (%s)\n", MODE);
@@ -450,5 +533,6 @@ int main(void)
     test_moving();
     test_age();
     test_bad_samples();
+    test_gaze_margin_keeps_history();
     return fovcheck_summary();
 }
