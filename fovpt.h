@@ -33,7 +33,8 @@ QUICK START
    No eye tracker: fixed foveation, the gaze at the display's axis point and larger foveae
       fovpt_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
       fovpt_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // radii + 15 deg
-   With one: filter its samples and grow the radii by the latency margin (GAZE INPUT).
+   With one: filter its samples and grow the radii by the latency margin per frame with
+   fovpt_set_gaze_margin (keeps the accumulation; GAZE INPUT).
 
    Stereo, per-eye gaze: one context per eye (Axblad 2020, Sec. 3.2.1, and Kim et al. 2021,
    Fig. 4, render the eyes independently).
@@ -1390,7 +1391,9 @@ FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovpt_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovpt_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
-      fovpt_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+      fovpt_set_gaze_margin(&ctx, &base_cfg, m);          // then fovpt_render as usual
+   (fovpt_init once with base_cfg; a per-frame fovpt_init with fovpt_config_gaze_margin's
+   config would reset the accumulation and the temporal ring every frame).
    _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
    FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
    _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
@@ -1430,6 +1433,16 @@ FOVPT_API fov_result fovpt_camera_display(const fov_camera *cam, fov_display *ou
    written only on success. */
 FOVPT_API fov_result fovpt_config_gaze_margin(const fovpt_config *base, float margin_deg,
                                               fovpt_config *out);
+/* The margin applied per frame to a context, keeping its accumulation (UNIFORM, the LAYERS
+   and ZONES lattices) and its temporal ring (SELECTIVE, JIN): ctx->cfg becomes
+   fovpt_config_gaze_margin(base, margin_deg) and the layers' trace radii follow, from the next
+   render on; nothing is reset (a per-frame fovpt_init would reset all of it). base must differ
+   from the context's config only in the radii the margin grows (the same method, layer
+   strides and temporal slots: the memory layout): else FOV_ERR_INVALID_ARG, use fovpt_init.
+   FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0), FOV_ERR_LIMIT, base's
+   resolve error; the context is unchanged on error. */
+FOVPT_API fov_result fovpt_set_gaze_margin(fovpt_ctx *ctx, const fovpt_config *base,
+                                           float margin_deg);
 
 /* Context: working memory for a config and camera, then init (validates everything). */
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
@@ -5759,6 +5772,46 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
         }
     }
     return fovpt_reset(ctx);
+}
+
+FOVPT_API fov_result fovpt_set_gaze_margin(fovpt_ctx *ctx, const fovpt_config *base,
+                                           float margin_deg)
+{
+    fovpt_config c;
+    fovpt_layers_cfg lay;
+    fov_result e;
+    size_t need_old, need_new;
+    uint32_t n;
+    if (!ctx || !base) return FOV_ERR_NULL;
+    e = fovpt_config_gaze_margin(base, margin_deg, &c);
+    if (e != FOV_OK) return e;
+    fovpt__lay(&c, &lay);
+    if (fovpt__ctx_bytes(&ctx->cfg, &ctx->cam, &need_old) != FOV_OK ||
+        fovpt__ctx_bytes(&c, &ctx->cam, &need_new) != FOV_OK || need_old != need_new ||
+        c.method != ctx->cfg.method || lay.count != ctx->lay.count ||
+        fovpt__hist_slots(&c) != ctx->hist_slots)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: base differs from the context's config beyond the radii "
+                    "(method, layers, temporal slots): use fovpt_init");
+    for (n = 0; n < lay.count; ++n)
+        if (lay.layer[n].stride != ctx->lay.layer[n].stride)
+            FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                        "set_gaze_margin: a layer stride differs from the context's: use "
+                        "fovpt_init");
+    {
+        fovpt_config c0 = ctx->cfg;
+        fovpt_layers_cfg l0 = ctx->lay;
+        fov_ecc_model e0 = ctx->ecc;
+        ctx->cfg = c;
+        ctx->lay = lay;
+        e = fovpt__ctx_view(ctx);
+        if (e != FOV_OK) {
+            ctx->cfg = c0; ctx->lay = l0; ctx->ecc = e0;
+            fovpt__ctx_view(ctx); /* the old view again (it succeeded before) */
+            FOVPT__FAIL(&ctx->cfg.logger, e, "set_gaze_margin: the view fails (unchanged)");
+        }
+    }
+    return FOV_OK;
 }
 
 FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)

@@ -30,7 +30,8 @@ QUICK START
    No eye tracker: fixed foveation, the gaze at the display's axis point and a larger fovea
       fovsdf_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
       fovsdf_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // fovea + 15 deg
-   With one: filter its samples and grow the fovea by the latency margin (GAZE INPUT).
+   With one: filter its samples and grow the fovea by the latency margin per frame, then
+   fovsdf_init as every frame (GAZE INPUT; keep counting cfg.frame).
    A head-mounted display: per eye tan_left .. tan_top, eye_offset and its own gaze (see
    fovsdf_camera, examples/sdf_stereo.c: both eyes side by side).
 
@@ -1630,7 +1631,12 @@ FOVSDF_API fov_result fovsdf_eye_plan(const fov_eye *eye, const fov_ecc_model *m
       fovsdf_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovsdf_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
-      fovsdf_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+      fovsdf_config_gaze_margin(&base_cfg, m, &cfg);  cfg.frame = frame;    // every frame:
+      fovsdf_init(&ctx, &cfg, &scene, &cam, gaze, mem, bytes);           // then render with cfg
+   fovsdf keeps no state between frames in its context (fovsdf_init is the per-frame call
+   anyway: camera and gaze): FIPR / CONE_FOV's refresh state is cfg.frame (keep counting it
+   across the re-inits) and the previous frame in your output buffers, so a per-frame
+   margin loses nothing.
    _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
    FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
    _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
