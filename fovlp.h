@@ -51,8 +51,8 @@ QUICK START (the library never renders: you shade the positions it hands out)
       fovlp_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg);  // disc + 15 deg
    With one: filter its samples and grow the disc by the latency margin (GAZE INPUT): init
    with the largest margin, then per frame fovlp_set_gaze_margin (keeps the TAA history).
-   A head-mounted display's eye (off-axis): cfg.taa.frustum = its tangents and
-   fovlp_camera_display(&cam, &cfg.display).
+   A head-mounted display's eye (off-axis): fovlp_camera_from keeps its tangents for the
+   reprojection; fovlp_camera_display(&cam, &cfg.display) for the eccentricity.
 
 THE PIPELINE (in the order the data flows; Andersson & Hansson 2020, "Performance
 Optimizations for Foveated Real-Time Raytracing", LU-CS-EX 2020-64, = "the thesis"; it builds
@@ -814,7 +814,9 @@ typedef struct fovlp_taa_config {
                                screen point (x, y) to fwd + (-tl + (tl + tr) x / W) right +
                                (tt - (tt + tb) y / H) up (fovlp_camera's tan_half_y unused).
                                Finite, left + right and bottom + top > 1e-6, each <= 1e6.
-                               All 0: symmetric, from tan_half_y                   0: 0 */
+                               All 0: the camera's own tan4 (fovlp_camera_from), else
+                               symmetric from tan_half_y; set: must equal a non-zero
+                               cam.tan4 (begin_frame: FOV_ERR_INVALID_ARG)          0: 0 */
 } fovlp_taa_config;
 
 /* A zero-filled config means "all defaults" (listed per field) apart from width and height,
@@ -876,6 +878,10 @@ typedef struct fovlp_camera {
     float pos[3];
     float right[3], up[3], fwd[3];
     float tan_half_y;       /* tan(vertical field of view / 2), > 0 */
+    float tan4[4];          /* an off-axis frustum's tan_left, tan_right, tan_bottom, tan_top
+                               (fovlp_camera_from copies them; then the reprojection uses them
+                               and tan_half_y is unused); all 0: symmetric. Zero them when
+                               you fill the struct by hand (begin_frame rejects bad ones) */
 } fovlp_camera;
 
 /* The per-frame context (transparent, like fovsdf_ctx). fovlp_init fills it; fovlp_begin_frame
@@ -1077,9 +1083,10 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
 /* The TAA camera of a fov_camera (the one you render with): pos = the pinhole pos +
    eye_offset * right, the frame of fov_camera, tan_half_y = tan(fov_y_deg / 2) (fov_y_deg 0:
    60). The size is not used (the TAA uses the fovlp image's). An off-axis camera (non-zero
-   tan_left .. tan_top) gives tan_half_y = (tan_bottom + tan_top) / 2: set config.taa.frustum
-   to its four tangents (the reprojection) and config.display with fovlp_camera_display (the
-   eccentricity). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside
+   tan_left .. tan_top) gives tan_half_y = (tan_bottom + tan_top) / 2 and its tangents in
+   tan4, which the reprojection uses (config.taa.frustum may stay 0; when set it must equal
+   them: fovlp_begin_frame returns FOV_ERR_INVALID_ARG otherwise); set config.display with
+   fovlp_camera_display (the eccentricity). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside
    (0, 180), tangents as fovsdf_init rejects them, a pinhole beyond float) or
    FOV_ERR_DEGENERATE (target == pos, up parallel to the view).
    out is written only on success. */
@@ -3037,7 +3044,22 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
 FOVLP__PRIV int fovlp__cam_ok(const fovlp_camera *c)
 {
     return fov__finite3(c->pos) && fov__finite3(c->right) && fov__finite3(c->up) &&
-           fov__finite3(c->fwd) && fov__finite(c->tan_half_y);
+           fov__finite3(c->fwd) && fov__finite(c->tan_half_y) && fov__finite(c->tan4[0]) &&
+           fov__finite(c->tan4[1]) && fov__finite(c->tan4[2]) && fov__finite(c->tan4[3]);
+}
+FOVLP__PRIV int fovlp__off4(const float t[4])
+{
+    return !fov__is0(t[0]) || !fov__is0(t[1]) || !fov__is0(t[2]) || !fov__is0(t[3]);
+}
+/* the tangents the reprojection uses for camera cam: its own (fovlp_camera_from of an
+   off-axis fov_camera), else config.taa.frustum; 0 when symmetric */
+FOVLP__PRIV int fovlp__cam_tan(const fovlp_camera *cam, const fovlp_config *c, float t[4])
+{
+    const float *s = fovlp__off4(cam->tan4) ? cam->tan4
+                     : fovlp__off4(c->taa.frustum) ? c->taa.frustum : NULL;
+    if (!s) return 0;
+    t[0] = s[0]; t[1] = s[1]; t[2] = s[2]; t[3] = s[3];
+    return 1;
 }
 FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
 {
@@ -3046,6 +3068,8 @@ FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
         if (fovlp__neq(a->pos[i], b->pos[i]) || fovlp__neq(a->right[i], b->right[i]) ||
             fovlp__neq(a->up[i], b->up[i]) || fovlp__neq(a->fwd[i], b->fwd[i]))
             return 1;
+    for (i = 0; i < 4; ++i)
+        if (fovlp__neq(a->tan4[i], b->tan4[i])) return 1;
     return fovlp__neq(a->tan_half_y, b->tan_half_y);
 }
 
@@ -3079,6 +3103,10 @@ FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out)
     }
     out->tan_half_y = off ? 0.5f * (cam->tan_bottom + cam->tan_top)
                           : FOV__TAN(0.5f * fov * FOV__DEG);
+    out->tan4[0] = off ? cam->tan_left : 0.0f;
+    out->tan4[1] = off ? cam->tan_right : 0.0f;
+    out->tan4[2] = off ? cam->tan_bottom : 0.0f;
+    out->tan4[3] = off ? cam->tan_top : 0.0f;
     return FOV_OK;
 }
 
@@ -3101,6 +3129,20 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
             fov__len(cam->up) < 0.5f)
             FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE,
                         "begin_frame: cam.tan_half_y <= 0 or fwd, right or up not unit");
+        if (fovlp__off4(cam->tan4)) {
+            const float *t = cam->tan4, *ft = ctx->cfg.taa.frustum;
+            if (!(t[0] + t[1] > 1e-6f) || !(t[2] + t[3] > 1e-6f) || t[0] > 1e6f ||
+                t[1] > 1e6f || t[2] > 1e6f || t[3] > 1e6f)
+                FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                            "begin_frame: cam.tan4 (off-axis tangents): left + right and "
+                            "bottom + top must exceed 1e-6, each <= 1e6 (zero them for a "
+                            "symmetric camera)");
+            if (fovlp__off4(ft) && (fovlp__neq(t[0], ft[0]) || fovlp__neq(t[1], ft[1]) ||
+                                    fovlp__neq(t[2], ft[2]) || fovlp__neq(t[3], ft[3])))
+                FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                            "begin_frame: cam.tan4 differs from config.taa.frustum (the "
+                            "camera's frustum is not the one the config describes)");
+        }
     }
     r = fovlp__setup2(&ctx->cfg, gaze, ctx->disc_angle, &c, &e, &gz, &g);
     if (r != FOV_OK) return r;
@@ -3964,7 +4006,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     const fovlp_config *c;
     uint32_t W, H, x, y, reproject;
     float diag, asp, per;
-    int offc;
+    int offc, offp;
+    float fta[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, ftp[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     if (!ctx) return FOV_ERR_NULL;
     c = &ctx->cfg;
     if (!io) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa_rows: io is NULL");
@@ -3994,8 +4037,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     per = c->taa.periphery * diag;
     asp = (float)W / (float)H;
-    offc = !fov__is0(c->taa.frustum[0]) || !fov__is0(c->taa.frustum[1]) ||
-           !fov__is0(c->taa.frustum[2]) || !fov__is0(c->taa.frustum[3]);
+    offc = fovlp__cam_tan(&ctx->cam, c, fta);
+    offp = fovlp__cam_tan(&ctx->prev_cam, c, ftp);
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
@@ -4015,7 +4058,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (reproject) {
                 /* world point of this pixel, then its place in the previous frame */
                 const fovlp_camera *a = &ctx->cam, *p = &ctx->prev_cam;
-                const float *ft = c->taa.frustum;
+                const float *ft = fta;
                 float sxn = (hx / (float)W * 2.0f - 1.0f) * a->tan_half_y * asp;
                 float syn = (hy / (float)H * 2.0f - 1.0f) * a->tan_half_y;
                 float d[3], wp[3], rel[3], z;
@@ -4037,10 +4080,10 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     float py = fov__dot(rel, p->up) / (z * p->tan_half_y);
                     hx = (px + 1.0f) * 0.5f * (float)W;
                     hy = (1.0f - py) * 0.5f * (float)H;
-                    if (offc) {
+                    if (offp) {
                         float qx = fov__dot(rel, p->right) / z, qy = fov__dot(rel, p->up) / z;
-                        hx = (qx + ft[0]) / (ft[0] + ft[1]) * (float)W;
-                        hy = (ft[3] - qy) / (ft[2] + ft[3]) * (float)H;
+                        hx = (qx + ftp[0]) / (ftp[0] + ftp[1]) * (float)W;
+                        hy = (ftp[3] - qy) / (ftp[2] + ftp[3]) * (float)H;
                     }
                     if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
                         reject = 1;

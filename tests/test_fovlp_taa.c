@@ -525,6 +525,109 @@ static void test_gaze_margin_keeps_history(void)
     env_free(&e);
 }
 
+/* review item: an off-axis camera (fovlp_camera_from of a fov_camera with tangents) is
+   reprojected with its own tangents when config.taa.frustum is left 0: the same output bit
+   for bit as with config.taa.frustum set, and not the symmetric reprojection's; a camera
+   whose tangents differ from config.taa.frustum is rejected by begin_frame */
+typedef struct offcam { fovlp_camera c; } offcam;
+static void shade_off(float x, float y, float rgb[3], float *depth, void *user)
+{
+    const fovlp_camera *c = &((const offcam *)user)->c;
+    float sx = -c->tan4[0] + (c->tan4[0] + c->tan4[1]) * (x / (float)W);
+    float sy = -c->tan4[3] + (c->tan4[2] + c->tan4[3]) * (y / (float)H);
+    float d[3], l, t, px, py;
+    int i;
+    for (i = 0; i < 3; ++i) d[i] = c->fwd[i] + sx * c->right[i] - sy * c->up[i];
+    l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (i = 0; i < 3; ++i) d[i] /= l;
+    t = (10.0f - c->pos[2]) / d[2]; /* the plane z = 10 */
+    px = c->pos[0] + t * d[0]; py = c->pos[1] + t * d[1];
+    rgb[0] = rgb[1] = rgb[2] = 0.5f + 0.4f * sinf(1.1f * px) * cosf(0.9f * py);
+    if (depth) *depth = t;
+}
+static void run_off(const fovlp_config *c, int sym, float *out, uint32_t *rejected,
+                    double *err_out)
+{
+    taa_env e;
+    fov_camera fc;
+    offcam oc;
+    fov_gaze gz = { 170.0f, 80.0f };
+    fovlp_taa_stats st;
+    int f;
+    env_init(&e, c);
+    memset(&fc, 0, sizeof fc);
+    fc.target[2] = 1.0f; fc.up[1] = 1.0f; fc.width = W; fc.height = H;
+    fc.tan_left = 1.2f; fc.tan_right = 0.8f; fc.tan_bottom = 0.6f; fc.tan_top = 0.525f;
+    fovlp_taa_stats_init(&st);
+    for (f = 0; f < 6; ++f) {
+        fovlp_camera lc;
+        fc.pos[2] = 0.4f * (float)f; fc.target[2] = fc.pos[2] + 1.0f; /* towards the plane */
+        fovlp_camera_from(&fc, &lc);
+        oc.c = lc; /* the scene is shaded through the true (off-axis) camera */
+        if (sym) memset(lc.tan4, 0, sizeof lc.tan4); /* what the reprojection used to get */
+        frame(&e, gz, &lc, shade_off, &oc, f == 5 ? &st : NULL);
+    }
+    memcpy(out, e.hist[e.ping], sizeof(float) * W * H * 3);
+    *rejected = (uint32_t)st.rejected;
+    { /* mean error against the true image of the last camera at the pixel centres */
+        double err = 0.0;
+        uint32_t i;
+        for (i = 0; i < W * H; ++i) {
+            float t[3];
+            shade_off((float)(i % W) + 0.5f, (float)(i / W) + 0.5f, t, NULL, &oc);
+            err += fabs((double)out[3 * i] - (double)t[0]);
+        }
+        *err_out = err / (double)(W * H);
+    }
+    env_free(&e);
+}
+static void test_off_axis_camera(void)
+{
+    fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H), cf;
+    float *a = (float *)malloc(sizeof(float) * W * H * 3), *b = (float *)malloc(sizeof(float) * W * H * 3);
+    float *s = (float *)malloc(sizeof(float) * W * H * 3);
+    uint32_t ra, rb, rs;
+    double ea, eb, es;
+    c.taa.enable = 1;
+    cf = c;
+    cf.taa.frustum[0] = 1.2f; cf.taa.frustum[1] = 0.8f; cf.taa.frustum[2] = 0.6f;
+    cf.taa.frustum[3] = 0.525f;
+    run_off(&c, 0, a, &ra, &ea);  /* frustum left 0: the camera's tangents */
+    run_off(&cf, 0, b, &rb, &eb); /* frustum set */
+    run_off(&c, 1, s, &rs, &es);  /* the symmetric reprojection (tangents dropped) */
+    check(memcmp(a, b, sizeof(float) * W * H * 3) == 0 && ra == rb,
+          "off-axis camera: its own tangents = config.taa.frustum, bit for bit",
+          "rejected %u vs %u", ra, rb);
+    fovcheck_info("off-axis TAA: mean error own tangents %.4f, symmetric %.4f (rejected %u, %u)",
+                  ea, es, ra, rs);
+    check(memcmp(a, s, sizeof(float) * W * H * 3) != 0 && es > 1.5 * ea,
+          "off-axis camera: the symmetric reprojection differs and is further from the truth",
+          "error %g (own) vs %g (symmetric)", ea, es);
+    {
+        taa_env e;
+        fov_camera fc;
+        fovlp_camera lc;
+        fov_gaze gz = { 170.0f, 80.0f };
+        fovlp_config cm = cf;
+        cm.taa.frustum[0] = 1.0f; /* another frustum than the camera's */
+        env_init(&e, &cm);
+        memset(&fc, 0, sizeof fc);
+        fc.target[2] = 1.0f; fc.up[1] = 1.0f; fc.width = W; fc.height = H;
+        fc.tan_left = 1.2f; fc.tan_right = 0.8f; fc.tan_bottom = 0.6f; fc.tan_top = 0.525f;
+        fovlp_camera_from(&fc, &lc);
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_INVALID_ARG,
+              "off-axis camera: tangents != config.taa.frustum rejected", "-");
+        lc.tan4[0] = -5.0f;
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_INVALID_ARG,
+              "off-axis camera: bad tan4 rejected", "-");
+        lc.tan4[0] = (float)NAN;
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_NOT_FINITE,
+              "off-axis camera: NaN tan4 rejected", "-");
+        env_free(&e);
+    }
+    free(a); free(b); free(s);
+}
+
 int main(void)
 {
     printf("# fovlp.h TAA tests (%s)\n", MODE);
@@ -534,5 +637,6 @@ int main(void)
     test_age();
     test_bad_samples();
     test_gaze_margin_keeps_history();
+    test_off_axis_camera();
     return fovcheck_summary();
 }
