@@ -410,7 +410,9 @@ ERRORS AND LOGGING
    outside (0, 180) degrees, a camera looking along its up vector, a zero step budget) is
    rejected with an error code before any work is done (an off-axis camera with
    tan_left + tan_right or tan_bottom + tan_top <= 1e-6, or a tangent above 1e6, with
-   FOV_ERR_INVALID_ARG); nothing asserts on data.
+   FOV_ERR_INVALID_ARG; one whose (tan_left + tan_right) / (tan_bottom + tan_top) is not
+   width / height within 1e-3, i.e. non-square pixels, with FOV_ERR_UNSUPPORTED, the same in
+   fovlp.h and fovpt.h); nothing asserts on data.
    Messages are on by default (no FOV_DEBUG needed): set cfg.logger and every failure calls it
    once, with the code and a message naming the field and the rule, e.g.
    "config.spp must be 1, 4 or 16 (0: 1)", "init: scene.num_lights above FOVSDF_MAX_LIGHTS",
@@ -970,8 +972,10 @@ typedef struct fov_eye_plan {
    Mathematical Biosciences 1975), smooth pursuit stays below about 30 to 50 deg/s, and a
    tracker noise of 0.5 degrees RMS over a 20 ms window gives about 35 deg/s RMS of speed.
    Error checks leave the filter unchanged: a timestamp not after the previous one
-   (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
-   the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
+   (FOV_ERR_INVALID_ARG: out of order or a zero step; a tracker clock that went back, e.g.
+   after a restart, needs _gaze_filter_reset too, or every later sample is rejected until the
+   clock passes the old one), a step above max_dt_ms (FOV_ERR_LIMIT: the tracker lost the
+   eye; call _gaze_filter_reset, then push again), a NaN or infinite
    sample (FOV_ERR_NOT_FINITE), an angle of +-90 degrees or beyond (FOV_ERR_INVALID_ARG; a
    pixel far enough off the axis rounds to 90 degrees and is rejected by _push_px and
    _gaze_to_deg as well; _push_px changes the filter and *out only when the whole call,
@@ -991,21 +995,31 @@ typedef struct fov_eye_plan {
    far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
    a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
    2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
-   fovea lands with it. The margin grows with the latency and with the output's speed.
+   fovea lands with it. The margin grows with the latency and with the output's speed,
+   except across a saccade onset: once the window speed passes saccade_deg_s the margin drops
+   to accuracy_deg + 2.5 noise_deg, so there it falls as the speed rises (monotone in the
+   speed only among non-saccade states, and in the latency always).
    bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
-                            [0, 10]; FOV_GAZE_BETA_NONE for 0                    0: 0.1 */
+                            (0, 10]; FOV_GAZE_BETA_NONE for none (a beta of 0)   0: 0.3 */
     float d_cutoff_hz;   /* cutoff of the velocity estimate, Hz, (0, 100]            0: 1 */
     float saccade_deg_s; /* saccade onset speed, deg/s, [20, 2000] (landing at half) 0: 100 */
     float window_ms;     /* the saccade detector's speed window, ms, [1, 100]        0: 20 */
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
+    fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
+                            _push, _push_px, _gaze_margin on the filter) calls it once with
+                            FOV_LOG_ERROR, the code and the message, as the configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
-#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window */
+#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
+   needs window_ms x rate + 1 of them, so 32 cover the default 20 ms up to a tracker rate of
+   1.55 kHz; above it the window speed is taken over the oldest kept sample (31 sample steps,
+   a shorter span: the noise is divided by less and the detector fires more easily). Trackers
+   above about 1.5 kHz: lower the rate you push at (decimate) or shorten window_ms knowingly. */
 /* Fixed foveation for users without an eye tracker: the gaze at the display's axis point
    (the lens centre of an HMD, the screen centre of a monitor: _gaze_fixed) and the foveae
    grown by this many degrees (_config_gaze_margin): most natural saccades are 15 degrees or
@@ -2558,7 +2572,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
     else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
-        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] or FOV_GAZE_BETA_NONE");
+        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] (0: 0.3) or "
+                        "FOV_GAZE_BETA_NONE (no speed adaptation)");
     else if (!(c.d_cutoff_hz > 0.0f && c.d_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: d_cutoff_hz must be in (0, 100] (0: 1)");
     else if (!(c.saccade_deg_s >= 20.0f && c.saccade_deg_s <= 2000.0f))
@@ -2820,9 +2835,18 @@ FOV__PRIV fov_result fov__gaze_push_px(fov_gaze_filter *f, const fov_ecc_model *
     return FOV_OK;
 }
 
+/* An off-axis frustum's tangents against the image: (l + r) / (b + t) = w / h within 1e-3
+   relative (square pixels: the headers use one scale for both axes); 0 when not. */
+FOV__PRIV int fov__tan_aspect_ok(float tl, float tr, float tb, float tt, uint32_t w, uint32_t h)
+{
+    float a = (tl + tr) * (float)h, b = (tb + tt) * (float)w;
+    return fov__absf(a - b) <= 1e-3f * b;
+}
+
 /* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
    point of tangent 0); the camera's tangents, or the symmetric ones of fov_y_deg (0: 60).
-   FOV_ERR_* for bad fields. */
+   FOV_ERR_* for bad fields; FOV_ERR_UNSUPPORTED for tangents whose ratio is not the image's
+   aspect (fov__tan_aspect_ok). */
 FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 {
     float tl, tr, tb, tt, f, fy;
@@ -2844,6 +2868,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
     if (!(tl + tr > 1e-6f) || !(tb + tt > 1e-6f) || tl > 1e6f || tr > 1e6f || tb > 1e6f ||
         tt > 1e6f)
         return FOV_ERR_INVALID_ARG;
+    if (!fov__tan_aspect_ok(tl, tr, tb, tt, cam->width, cam->height)) return FOV_ERR_UNSUPPORTED;
     f = (float)cam->height / (tt + tb);
     d->fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, f) / FOV__DEG;
     d->axis_dx = tl * f - 0.5f * (float)cam->width;
@@ -3349,9 +3374,14 @@ FOVSDF_API fov_result fovsdf_gaze_filter_init(fov_gaze_filter *f, const fov_gaze
     fov_gaze_filter_config c;
     const char *bad;
     fov_result r;
-    if (!f) return FOV_ERR_NULL;
+    if (!f) {
+        if (cfg)
+            return fov__err(&cfg->logger, "fovsdf", FOV_ERR_NULL,
+                            FOV__MSG("gaze_filter_init: f is NULL"), (uint32_t)__LINE__);
+        return FOV_ERR_NULL;
+    }
     r = fov__gaze_cfg(cfg, &c, &bad);
-    if (r != FOV_OK) return r;
+    if (r != FOV_OK) return cfg ? fov__err(&cfg->logger, "fovsdf", r, bad, (uint32_t)__LINE__) : r;
     FOV_MEMSET(f, 0, sizeof *f);
     f->cfg = c;
     return FOV_OK;
@@ -3364,15 +3394,22 @@ FOVSDF_API fov_result fovsdf_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us,
                                               float y_deg)
 {
     const char *bad;
+    fov_result r;
     if (!f) return FOV_ERR_NULL;
-    return fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    r = fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovsdf", r, bad, (uint32_t)__LINE__);
 }
 FOVSDF_API fov_result fovsdf_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
                                                  uint64_t t_us, fov_gaze raw, fov_gaze *out)
 {
     const char *bad;
-    if (!f || !m) return FOV_ERR_NULL;
-    return fov__gaze_push_px(f, m, t_us, raw, out, &bad);
+    fov_result r;
+    if (!f) return FOV_ERR_NULL;
+    if (!m)
+        return fov__err(&f->cfg.logger, "fovsdf", FOV_ERR_NULL,
+                        FOV__MSG("gaze_filter_push_px: m is NULL"), (uint32_t)__LINE__);
+    r = fov__gaze_push_px(f, m, t_us, raw, out, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovsdf", r, bad, (uint32_t)__LINE__);
 }
 FOVSDF_API fov_result fovsdf_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2])
 {
@@ -3392,7 +3429,13 @@ FOVSDF_API fov_result fovsdf_gaze_from_deg(const fov_ecc_model *m, const float d
 FOVSDF_API fov_result fovsdf_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
                                          float latency_ms, float *margin_deg)
 {
-    return fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    fov_result r = fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    if (r == FOV_OK || !f) return r;
+    return fov__err(&f->cfg.logger, "fovsdf", r,
+                    margin_deg ? FOV__MSG("gaze_margin: accuracy_deg must be in [0, 90] and "
+                                          "latency_ms in [0, 1e6], finite (*margin_deg: the cap)")
+                               : FOV__MSG("gaze_margin: margin_deg is NULL"),
+                    (uint32_t)__LINE__);
 }
 FOVSDF_API fov_result fovsdf_gaze_fixed(const fov_display *display, uint32_t width,
                                         uint32_t height, fov_gaze *out)
@@ -7251,6 +7294,11 @@ FOVSDF_API fov_result fovsdf_init(fovsdf_ctx *ctx, const fovsdf_config *cfg,
             FOVSDF__FAIL(lg, FOV_ERR_INVALID_ARG,
                          "init: cam.tan_*: left + right and bottom + top must exceed 1e-6, each "
                          "at most 1e6");
+        if (!fov__tan_aspect_ok(cam->tan_left, cam->tan_right, cam->tan_bottom, cam->tan_top,
+                                cam->width, cam->height))
+            FOVSDF__FAIL(lg, FOV_ERR_UNSUPPORTED,
+                         "init: cam.tan_*: (tan_left + tan_right) / (tan_bottom + tan_top) must "
+                         "be width / height within 1e-3 (non-square pixels are not supported)");
     }
     fov = fov__is0(cam->fov_y_deg) ? 60.0f : cam->fov_y_deg;
     if (!(fov > 0.0f && fov < 180.0f))

@@ -609,8 +609,9 @@ static void test_off_axis_camera(void)
         fovlp_camera lc;
         fov_gaze gz = { 170.0f, 80.0f };
         fovlp_config cm = cf;
-        cm.taa.frustum[0] = 1.0f; /* another frustum than the camera's */
+        cm.taa.frustum[0] = 1.0f; cm.taa.frustum[1] = 1.0f; /* another frustum, same aspect */
         env_init(&e, &cm);
+        check(e.ctx.rho != NULL, "off-axis camera: context with another frustum", "-");
         memset(&fc, 0, sizeof fc);
         fc.target[2] = 1.0f; fc.up[1] = 1.0f; fc.width = W; fc.height = H;
         fc.tan_left = 1.2f; fc.tan_right = 0.8f; fc.tan_bottom = 0.6f; fc.tan_top = 0.525f;

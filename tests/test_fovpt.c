@@ -217,7 +217,10 @@ static void test_eyes(void)
         fovpt_camera_init(&c, 1u + (uint32_t)(urand() * 1500.0), 1u + (uint32_t)(urand() * 1500.0));
         for (k = 0; k < 3; ++k) { c.pos[k] = frand(-5.0f, 5.0f); c.target[k] = frand(-5.0f, 5.0f); c.up[k] = frand(-1.0f, 1.0f); }
         c.fov_y_deg = frand(5.0f, 150.0f);
-        if (i % 2) { c.tan_left = frand(0.1f, 2.0f); c.tan_right = frand(0.1f, 2.0f); c.tan_bottom = frand(0.1f, 2.0f); c.tan_top = frand(0.1f, 2.0f); }
+        if (i % 2) { /* off-axis, the ratio of the tangents the image aspect (square pixels) */
+            c.tan_left = frand(0.1f, 2.0f); c.tan_bottom = frand(0.1f, 2.0f); c.tan_top = frand(0.1f, 2.0f);
+            c.tan_right = (c.tan_bottom + c.tan_top) * (float)c.width / (float)c.height - c.tan_left;
+        }
         if (fovpt_camera_ray(&c, 0.5f, 0.5f, o, dir) != FOV_OK) continue;
         /* a point in front: along the ray through a random image point, at a random depth */
         fovpt_camera_ray(&c, frand(-0.5f, 1.5f) * (float)c.width, frand(-0.5f, 1.5f) * (float)c.height, o, dir);

@@ -326,6 +326,81 @@ static void test_px_error_state(void)
     check(r1 == FOV_OK && a.samples == a0.samples + 1u, "px_after_error_ok", "%d", (int)r1);
 }
 
+/* review item: the filter logs every rejected call once, with the code (the logger lives in
+   fov_gaze_filter_config, as in the three headers' configs) */
+typedef struct logrec { int calls; int32_t code; int level; char msg[200]; char tag[16]; } logrec;
+static void log_fn(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line,
+                   void *user)
+{
+    logrec *l = (logrec *)user;
+    (void)line;
+    l->calls++;
+    l->code = code;
+    l->level = (int)level;
+    snprintf(l->msg, sizeof l->msg, "%s", msg ? msg : "");
+    snprintf(l->tag, sizeof l->tag, "%s", tag ? tag : "");
+}
+static void test_logger(void)
+{
+    fov_gaze_filter_config c = fovsdf_gaze_filter_config_default();
+    fov_gaze_filter f, g;
+    fov_ecc_model em;
+    fov_display d;
+    fov_gaze px, o;
+    logrec lr;
+    float m;
+    uint32_t i;
+    memset(&lr, 0, sizeof lr);
+    memset(&d, 0, sizeof d);
+    d.fov_y_deg = 90.0f;
+    px.x = 640.0f; px.y = 360.0f;
+    fovsdf_ecc_init(&em, &d, 60.0f, 1280, 720, px);
+    c.logger.func = log_fn;
+    c.logger.user = &lr;
+    c.beta = -0.5f;
+    check(fovlp_gaze_filter_init(&f, &c) == FOV_ERR_INVALID_ARG && lr.calls == 1 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG && lr.level == (int)FOV_LOG_ERROR &&
+          strcmp(lr.tag, "fovlp") == 0, "log_init_bad_beta", "calls %d code %d tag %s",
+          lr.calls, (int)lr.code, lr.tag);
+#ifndef FOV_NO_ERROR_STRINGS
+    check(strstr(lr.msg, "beta") && strstr(lr.msg, "(0: 0.3)"), "log_beta_message_default",
+          "\"%s\"", lr.msg);
+#endif
+    c.beta = 0.0f;
+    check(fovsdf_gaze_filter_init(&f, &c) == FOV_OK && lr.calls == 1, "log_init_ok_silent", "%d",
+          lr.calls);
+    for (i = 0; i < 5; ++i) fovsdf_gaze_filter_push(&f, 1000u + i * DT_US, 1.0f, 2.0f);
+    check(lr.calls == 1, "log_push_ok_silent", "%d", lr.calls);
+    g = f;
+    check(fovsdf_gaze_filter_push(&f, 1000u, 1.0f, 2.0f) == FOV_ERR_INVALID_ARG && lr.calls == 2 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG && same(&f, &g), "log_push_out_of_order",
+          "calls %d code %d", lr.calls, (int)lr.code);
+#ifndef FOV_NO_ERROR_STRINGS
+    check(strstr(lr.msg, "timestamp") != NULL, "log_push_message", "\"%s\"", lr.msg);
+#endif
+    check(fovpt_gaze_filter_push(&f, 9000000u, (float)NAN, 0.0f) == FOV_ERR_NOT_FINITE &&
+          lr.calls == 3 && lr.code == (int32_t)FOV_ERR_NOT_FINITE && strcmp(lr.tag, "fovpt") == 0,
+          "log_push_nan", "calls %d code %d", lr.calls, (int)lr.code);
+    check(fovsdf_gaze_filter_push(&f, 1000u + 4u * DT_US + 600000u, 1.0f, 2.0f) == FOV_ERR_LIMIT &&
+          lr.calls == 4 && lr.code == (int32_t)FOV_ERR_LIMIT, "log_push_gap", "calls %d",
+          lr.calls);
+    px.x = 1e12f;
+    check(fovlp_gaze_filter_push_px(&f, &em, 1000u + 5u * DT_US, px, &o) == FOV_ERR_INVALID_ARG &&
+          lr.calls == 5 && lr.code == (int32_t)FOV_ERR_INVALID_ARG, "log_push_px_far",
+          "calls %d", lr.calls);
+    check(fovsdf_gaze_filter_push_px(&f, NULL, 1000u + 5u * DT_US, px, &o) == FOV_ERR_NULL &&
+          lr.calls == 6 && lr.code == (int32_t)FOV_ERR_NULL, "log_push_px_null_m", "calls %d",
+          lr.calls);
+    check(fovpt_gaze_margin(&f, -1.0f, 50.0f, &m) == FOV_ERR_INVALID_ARG && lr.calls == 7 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG, "log_margin_bad_accuracy", "calls %d",
+          lr.calls);
+    check(fovsdf_gaze_margin(&f, 0.5f, (float)INFINITY, &m) == FOV_ERR_NOT_FINITE &&
+          lr.calls == 8 && lr.code == (int32_t)FOV_ERR_NOT_FINITE, "log_margin_inf_latency",
+          "calls %d", lr.calls);
+    check(fovsdf_gaze_margin(&f, 0.5f, 50.0f, &m) == FOV_OK && lr.calls == 8, "log_margin_ok",
+          "%d", lr.calls);
+}
+
 /* each header's config_gaze_margin */
 static void test_apply(void)
 {
@@ -424,6 +499,7 @@ int main(void)
     test_margin();
     test_pixels();
     test_px_error_state();
+    test_logger();
     test_apply();
     test_trace();
     return fovcheck_summary();
