@@ -49,9 +49,10 @@ QUICK START (the library never renders: you shade the positions it hands out)
    No eye tracker: fixed foveation, the gaze at the display's axis point and a larger disc
       fovlp_gaze_fixed(&cfg.display, 1920, 1080, &gaze);                 // the screen centre
       fovlp_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg);  // disc + 15 deg
-   With one: filter its samples and grow the disc by the latency margin (GAZE INPUT).
-   A head-mounted display's eye (off-axis): cfg.taa.frustum = its tangents and
-   fovlp_camera_display(&cam, &cfg.display).
+   With one: filter its samples and grow the disc by the latency margin (GAZE INPUT): init
+   with the largest margin, then per frame fovlp_set_gaze_margin (keeps the TAA history).
+   A head-mounted display's eye (off-axis): fovlp_camera_from keeps its tangents for the
+   reprojection; fovlp_camera_display(&cam, &cfg.display) for the eccentricity.
 
 THE PIPELINE (in the order the data flows; Andersson & Hansson 2020, "Performance
 Optimizations for Foveated Real-Time Raytracing", LU-CS-EX 2020-64, = "the thesis"; it builds
@@ -655,9 +656,14 @@ typedef struct fov_eye_plan {
    Mathematical Biosciences 1975), smooth pursuit stays below about 30 to 50 deg/s, and a
    tracker noise of 0.5 degrees RMS over a 20 ms window gives about 35 deg/s RMS of speed.
    Error checks leave the filter unchanged: a timestamp not after the previous one
-   (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
-   the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
-   sample (FOV_ERR_NOT_FINITE), an angle beyond +-90 degrees (FOV_ERR_INVALID_ARG). A blink
+   (FOV_ERR_INVALID_ARG: out of order or a zero step; a tracker clock that went back, e.g.
+   after a restart, needs _gaze_filter_reset too, or every later sample is rejected until the
+   clock passes the old one), a step above max_dt_ms (FOV_ERR_LIMIT: the tracker lost the
+   eye; call _gaze_filter_reset, then push again), a NaN or infinite
+   sample (FOV_ERR_NOT_FINITE), an angle of +-90 degrees or beyond (FOV_ERR_INVALID_ARG; a
+   pixel far enough off the axis rounds to 90 degrees and is rejected by _push_px and
+   _gaze_to_deg as well; _push_px changes the filter and *out only when the whole call,
+   the conversion back to pixels included, succeeds). A blink
    shorter than max_dt_ms needs nothing: push no samples while the tracker reports none.
 
    The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
@@ -673,21 +679,31 @@ typedef struct fov_eye_plan {
    far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
    a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
    2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
-   fovea lands with it. The margin grows with the latency and with the output's speed.
+   fovea lands with it. The margin grows with the latency and with the output's speed,
+   except across a saccade onset: once the window speed passes saccade_deg_s the margin drops
+   to accuracy_deg + 2.5 noise_deg, so there it falls as the speed rises (monotone in the
+   speed only among non-saccade states, and in the latency always).
    bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
-                            [0, 10]; FOV_GAZE_BETA_NONE for 0                    0: 0.1 */
+                            (0, 10]; FOV_GAZE_BETA_NONE for none (a beta of 0)   0: 0.3 */
     float d_cutoff_hz;   /* cutoff of the velocity estimate, Hz, (0, 100]            0: 1 */
     float saccade_deg_s; /* saccade onset speed, deg/s, [20, 2000] (landing at half) 0: 100 */
     float window_ms;     /* the saccade detector's speed window, ms, [1, 100]        0: 20 */
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
+    fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
+                            _push, _push_px, _gaze_margin on the filter) calls it once with
+                            FOV_LOG_ERROR, the code and the message, as the configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
-#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window */
+#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
+   needs window_ms x rate + 1 of them, so 32 cover the default 20 ms up to a tracker rate of
+   1.55 kHz; above it the window speed is taken over the oldest kept sample (31 sample steps,
+   a shorter span: the noise is divided by less and the detector fires more easily). Trackers
+   above about 1.5 kHz: lower the rate you push at (decimate) or shorten window_ms knowingly. */
 /* Fixed foveation for users without an eye tracker: the gaze at the display's axis point
    (the lens centre of an HMD, the screen centre of a monitor: _gaze_fixed) and the foveae
    grown by this many degrees (_config_gaze_margin): most natural saccades are 15 degrees or
@@ -810,7 +826,9 @@ typedef struct fovlp_taa_config {
                                screen point (x, y) to fwd + (-tl + (tl + tr) x / W) right +
                                (tt - (tt + tb) y / H) up (fovlp_camera's tan_half_y unused).
                                Finite, left + right and bottom + top > 1e-6, each <= 1e6.
-                               All 0: symmetric, from tan_half_y                   0: 0 */
+                               All 0: the camera's own tan4 (fovlp_camera_from), else
+                               symmetric from tan_half_y; set: must equal a non-zero
+                               cam.tan4 (begin_frame: FOV_ERR_INVALID_ARG)          0: 0 */
 } fovlp_taa_config;
 
 /* A zero-filled config means "all defaults" (listed per field) apart from width and height,
@@ -872,6 +890,10 @@ typedef struct fovlp_camera {
     float pos[3];
     float right[3], up[3], fwd[3];
     float tan_half_y;       /* tan(vertical field of view / 2), > 0 */
+    float tan4[4];          /* an off-axis frustum's tan_left, tan_right, tan_bottom, tan_top
+                               (fovlp_camera_from copies them; then the reprojection uses them
+                               and tan_half_y is unused); all 0: symmetric. Zero them when
+                               you fill the struct by hand (begin_frame rejects bad ones) */
 } fovlp_camera;
 
 /* The per-frame context (transparent, like fovsdf_ctx). fovlp_init fills it; fovlp_begin_frame
@@ -890,6 +912,8 @@ typedef struct fovlp_ctx {
     uint32_t moving;        /* 1 when cam differs from prev_cam */
     float jit_u, jit_v;     /* sample offset inside a texel / pixel this frame (0.5: centre) */
     float L_diag;           /* log(diagonal), the fixed normaliser of the sizes */
+    float disc_angle;       /* the gaze disc used, radians: cfg.gaze_angle (which sizes the
+                               buffers) after fovlp_init, smaller after fovlp_set_gaze_margin */
     float *rho;             /* lp_w radii of the columns' samples (this frame) */
     float *cs, *sn;         /* lp_h cos/sin of the rows' sample angles (this frame) */
     void *mem;
@@ -1004,7 +1028,9 @@ FOVLP_API fov_result fovlp_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovlp_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovlp_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
-      fovlp_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+      fovlp_set_gaze_margin(&ctx, &base_cfg, m);           // then fovlp_begin_frame, render
+   where ctx was initialised once with fovlp_config_gaze_margin(&base_cfg, gf.cfg.max_margin_deg,
+   &cfg) (the room for the largest margin; a per-frame fovlp_init would reset the TAA history).
    _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
    FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
    _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
@@ -1038,13 +1064,28 @@ FOVLP_API fov_result fovlp_gaze_fixed(const fov_display *display, uint32_t width
 FOVLP_API fov_result fovlp_camera_display(const fov_camera *cam, fov_display *out);
 /* The margin applied: *out = base resolved (fovlp_config_resolve) with the gaze disc's
    gaze_angle (radians) grown by margin_deg (>= 0) degrees. The disc's size sets the context's
-   memory: fovlp_init with *out (a context sized for the largest margin you allow takes any
-   smaller one). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0),
+   sizes: fovlp_init with *out for the largest margin you allow, then per frame
+   fovlp_set_gaze_margin (a per-frame fovlp_init resets the TAA history). FOV_ERR_NULL,
+   FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0),
    FOV_ERR_UNSUPPORTED (no_disc = 1: there is no full-quality disc to widen), FOV_ERR_LIMIT
    (gaze_angle reaching 1.5 radians), or the base's resolve error; *out written only on
    success. */
 FOVLP_API fov_result fovlp_config_gaze_margin(const fovlp_config *base, float margin_deg,
                                               fovlp_config *out);
+/* The margin applied per frame to a context, keeping its TAA history: the gaze disc becomes
+   base's gaze_angle (resolved) grown by margin_deg rounded up to a multiple of 0.25 degrees
+   (a wobbling margin does not move the LP samples every frame), from the next
+   fovlp_begin_frame on. The context's sizes (LP buffer, disc buffer, sample slots, memory)
+   never change: they are those of the config fovlp_init took, so init with
+   fovlp_config_gaze_margin(&base, largest margin, &cfg) (FOV_GAZE_FIXED_MARGIN_DEG or the
+   filter's max_margin_deg); the LP columns then start at the smaller disc's edge (u_G, w_C of
+   fovlp_geometry follow it). A margin beyond that room is clamped to the context's disc (a
+   FOV_LOG_WARN through cfg.logger; ctx->disc_angle says what is used) and returns FOV_OK.
+   FOV_ERR_NULL, FOV_ERR_INVALID_ARG (ctx not initialised, margin < 0, base.gaze_angle above
+   the context's), FOV_ERR_NOT_FINITE, FOV_ERR_UNSUPPORTED (no_disc), base's resolve error;
+   the context is unchanged on error. */
+FOVLP_API fov_result fovlp_set_gaze_margin(fovlp_ctx *ctx, const fovlp_config *base,
+                                           float margin_deg);
 
 /* Context: memory size query, init, and per frame begin_frame. cam may be NULL (no
    reprojection: TAA treats the camera as still). Resets the history on a gaze jump. */
@@ -1055,9 +1096,13 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
 /* The TAA camera of a fov_camera (the one you render with): pos = the pinhole pos +
    eye_offset * right, the frame of fov_camera, tan_half_y = tan(fov_y_deg / 2) (fov_y_deg 0:
    60). The size is not used (the TAA uses the fovlp image's). An off-axis camera (non-zero
-   tan_left .. tan_top) gives tan_half_y = (tan_bottom + tan_top) / 2: set config.taa.frustum
-   to its four tangents (the reprojection) and config.display with fovlp_camera_display (the
-   eccentricity). FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (field of view outside
+   tan_left .. tan_top) gives tan_half_y = (tan_bottom + tan_top) / 2 and its tangents in
+   tan4, which the reprojection uses (config.taa.frustum may stay 0; when set it must equal
+   them: fovlp_begin_frame returns FOV_ERR_INVALID_ARG otherwise, and FOV_ERR_UNSUPPORTED
+   when their ratio is not the fovlp image's aspect within 1e-3: non-square pixels, as in
+   every header); set config.display with
+   fovlp_camera_display (the eccentricity). FOV_ERR_NULL, FOV_ERR_NOT_FINITE,
+   FOV_ERR_INVALID_ARG (field of view outside
    (0, 180), tangents as fovsdf_init rejects them, a pinhole beyond float) or
    FOV_ERR_DEGENERATE (target == pos, up parallel to the view).
    out is written only on success. */
@@ -1816,7 +1861,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
     else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
-        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] or FOV_GAZE_BETA_NONE");
+        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] (0: 0.3) or "
+                        "FOV_GAZE_BETA_NONE (no speed adaptation)");
     else if (!(c.d_cutoff_hz > 0.0f && c.d_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: d_cutoff_hz must be in (0, 100] (0: 1)");
     else if (!(c.saccade_deg_s >= 20.0f && c.saccade_deg_s <= 2000.0f))
@@ -1867,8 +1913,9 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
                         "samples)");
         return FOV_ERR_NOT_FINITE;
     }
-    if (!(fov__absf(x) <= 90.0f && fov__absf(y) <= 90.0f)) {
-        *bad = FOV__MSG("gaze_filter_push: sample beyond +-90 degrees");
+    if (!(fov__absf(x) < 90.0f && fov__absf(y) < 90.0f)) {
+        *bad = FOV__MSG("gaze_filter_push: sample at or beyond +-90 degrees (must be in "
+                        "(-90, 90))");
         return FOV_ERR_INVALID_ARG;
     }
     if (f->samples > 0u) {
@@ -2026,7 +2073,10 @@ FOV__PRIV int fov__gaze_to_deg(const fov_ecc_model *m, float x, float y, float d
     if (!fov__finite(dx) || !fov__finite(dy) || !(m->f_px > 0.0f)) return 0;
     d[0] = FOV__ATAN2(dx, m->f_px) / FOV__DEG;
     d[1] = FOV__ATAN2(dy, FOV__SQRT(dx * dx + m->f_px * m->f_px)) / FOV__DEG;
-    return fov__finite(d[0]) && fov__finite(d[1]);
+    /* a pixel far enough out rounds to exactly 90 degrees, which fov__gaze_from_deg (and the
+       filter) cannot take: the open interval (-90, 90) only */
+    return fov__finite(d[0]) && fov__finite(d[1]) && fov__absf(d[0]) < 90.0f &&
+           fov__absf(d[1]) < 90.0f;
 }
 FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float *x, float *y)
 {
@@ -2037,10 +2087,55 @@ FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float
     *y = m->cy + m->f_px * FOV__TAN(v) / ch;
     return fov__finite(*x) && fov__finite(*y);
 }
+/* A pixel sample: converted, pushed into a copy of the filter and the filtered gaze turned
+   back into pixels; the filter (and *out) change only when all three succeed. */
+FOV__PRIV fov_result fov__gaze_push_px(fov_gaze_filter *f, const fov_ecc_model *m, uint64_t t_us,
+                                       fov_gaze raw, fov_gaze *out, const char **bad)
+{
+    fov_gaze_filter s;
+    fov_gaze g;
+    float d[2];
+    fov_result r;
+    *bad = FOV__MSG("");
+    if (!fov__finite(raw.x) || !fov__finite(raw.y)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample NaN or infinite (skip the tracker's "
+                        "invalid samples)");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample at or beyond 90 degrees off the axis, or "
+                        "the eccentricity model is not initialised");
+        return FOV_ERR_INVALID_ARG;
+    }
+    s = *f;
+    r = fov__gaze_push(&s, t_us, d[0], d[1], bad);
+    if (r != FOV_OK) return r;
+    g.x = g.y = 0.0f;
+    if (out) {
+        d[0] = s.x_deg; d[1] = s.y_deg;
+        if (!fov__gaze_from_deg(m, d, &g.x, &g.y)) {
+            *bad = FOV__MSG("gaze_filter_push_px: the filtered gaze has no pixel (beyond 90 "
+                            "degrees)");
+            return FOV_ERR_INVALID_ARG;
+        }
+    }
+    *f = s;
+    if (out) *out = g;
+    return FOV_OK;
+}
+
+/* An off-axis frustum's tangents against the image: (l + r) / (b + t) = w / h within 1e-3
+   relative (square pixels: the headers use one scale for both axes); 0 when not. */
+FOV__PRIV int fov__tan_aspect_ok(float tl, float tr, float tb, float tt, uint32_t w, uint32_t h)
+{
+    float a = (tl + tr) * (float)h, b = (tb + tt) * (float)w;
+    return fov__absf(a - b) <= 1e-3f * b;
+}
 
 /* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
    point of tangent 0); the camera's tangents, or the symmetric ones of fov_y_deg (0: 60).
-   FOV_ERR_* for bad fields. */
+   FOV_ERR_* for bad fields; FOV_ERR_UNSUPPORTED for tangents whose ratio is not the image's
+   aspect (fov__tan_aspect_ok). */
 FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 {
     float tl, tr, tb, tt, f, fy;
@@ -2062,6 +2157,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
     if (!(tl + tr > 1e-6f) || !(tb + tt > 1e-6f) || tl > 1e6f || tr > 1e6f || tb > 1e6f ||
         tt > 1e6f)
         return FOV_ERR_INVALID_ARG;
+    if (!fov__tan_aspect_ok(tl, tr, tb, tt, cam->width, cam->height)) return FOV_ERR_UNSUPPORTED;
     f = (float)cam->height / (tt + tb);
     d->fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, f) / FOV__DEG;
     d->axis_dx = tl * f - 0.5f * (float)cam->width;
@@ -2086,6 +2182,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #endif
 
 #define FOVLP__TWO_PI 6.28318530717959f
+#define FOVLP__GAZE_STEP_DEG 0.25f /* fovlp_set_gaze_margin rounds the margin up to this */
 #define FOVLP__LOG2 0.693147181f
 #define FOVLP__MAX_PHASES 256u
 
@@ -2240,6 +2337,11 @@ FOVLP__PRIV fov_result fovlp__resolve(const fovlp_config *in, fovlp_config *out)
                     t[1] > 1e6f || t[2] > 1e6f || t[3] > 1e6f))
             FOVLP__FAIL(lg, FOV_ERR_INVALID_ARG, "config.taa.frustum: left + right and bottom + "
                         "top must exceed 1e-6, each at most 1e6");
+        if (any && c.width > 0 && c.height > 0 &&
+            !fov__tan_aspect_ok(t[0], t[1], t[2], t[3], c.width, c.height))
+            FOVLP__FAIL(lg, FOV_ERR_UNSUPPORTED,
+                        "config.taa.frustum: (left + right) / (bottom + top) must be width / "
+                        "height within 1e-3 (non-square pixels are not supported)");
     }
     if (fov__is0(c.taa.periphery)) c.taa.periphery = 1.0f / 3.0f;
     *out = c;
@@ -2324,9 +2426,14 @@ FOVLP_API fov_result fovlp_gaze_filter_init(fov_gaze_filter *f, const fov_gaze_f
     fov_gaze_filter_config c;
     const char *bad;
     fov_result r;
-    if (!f) return FOV_ERR_NULL;
+    if (!f) {
+        if (cfg)
+            return fov__err(&cfg->logger, "fovlp", FOV_ERR_NULL,
+                            FOV__MSG("gaze_filter_init: f is NULL"), (uint32_t)__LINE__);
+        return FOV_ERR_NULL;
+    }
     r = fov__gaze_cfg(cfg, &c, &bad);
-    if (r != FOV_OK) return r;
+    if (r != FOV_OK) return cfg ? fov__err(&cfg->logger, "fovlp", r, bad, (uint32_t)__LINE__) : r;
     FOV_MEMSET(f, 0, sizeof *f);
     f->cfg = c;
     return FOV_OK;
@@ -2339,22 +2446,22 @@ FOVLP_API fov_result fovlp_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us, f
                                             float y_deg)
 {
     const char *bad;
+    fov_result r;
     if (!f) return FOV_ERR_NULL;
-    return fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    r = fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovlp", r, bad, (uint32_t)__LINE__);
 }
 FOVLP_API fov_result fovlp_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
                                                uint64_t t_us, fov_gaze raw, fov_gaze *out)
 {
-    float d[2];
+    const char *bad;
     fov_result r;
-    if (!f || !m) return FOV_ERR_NULL;
-    if (!fov__finite(raw.x) || !fov__finite(raw.y)) return FOV_ERR_NOT_FINITE;
-    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) return FOV_ERR_INVALID_ARG;
-    r = fovlp_gaze_filter_push(f, t_us, d[0], d[1]);
-    if (r != FOV_OK || !out) return r;
-    d[0] = f->x_deg; d[1] = f->y_deg;
-    if (!fov__gaze_from_deg(m, d, &out->x, &out->y)) return FOV_ERR_INVALID_ARG;
-    return FOV_OK;
+    if (!f) return FOV_ERR_NULL;
+    if (!m)
+        return fov__err(&f->cfg.logger, "fovlp", FOV_ERR_NULL,
+                        FOV__MSG("gaze_filter_push_px: m is NULL"), (uint32_t)__LINE__);
+    r = fov__gaze_push_px(f, m, t_us, raw, out, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovlp", r, bad, (uint32_t)__LINE__);
 }
 FOVLP_API fov_result fovlp_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2])
 {
@@ -2374,7 +2481,13 @@ FOVLP_API fov_result fovlp_gaze_from_deg(const fov_ecc_model *m, const float deg
 FOVLP_API fov_result fovlp_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
                                        float latency_ms, float *margin_deg)
 {
-    return fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    fov_result r = fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    if (r == FOV_OK || !f) return r;
+    return fov__err(&f->cfg.logger, "fovlp", r,
+                    margin_deg ? FOV__MSG("gaze_margin: accuracy_deg must be in [0, 90] and "
+                                          "latency_ms in [0, 1e6], finite (*margin_deg: the cap)")
+                               : FOV__MSG("gaze_margin: margin_deg is NULL"),
+                    (uint32_t)__LINE__);
 }
 FOVLP_API fov_result fovlp_gaze_fixed(const fov_display *display, uint32_t width,
                                       uint32_t height, fov_gaze *out)
@@ -2448,8 +2561,8 @@ FOVLP__PRIV float fovlp__far_corner(const fovlp_config *c, fov_gaze g)
 
 /* Sizes (fixed for a config) and the gaze-dependent part. c must be resolved with valid
    width/height; ecc must be initialised for gaze (gives f_px). */
-FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, float f_px,
-                                       fovlp_geometry *g)
+FOVLP__PRIV fov_result fovlp__geometry2(const fovlp_config *c, fov_gaze gaze, float f_px,
+                                        float disc_angle, fovlp_geometry *g)
 {
     const fov_logger *lg = &c->logger;
     float W = (float)c->width, H = (float)c->height;
@@ -2499,6 +2612,11 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
         S = s >= m ? (uint32_t)m : fovlp__ceil_u(s, FOVLP_MAX_DIM);
     }
     g->disc_side = S;
+    /* the disc actually used (fovlp_set_gaze_margin): at most the sized one, same buffers */
+    if (disc_angle >= 0.0f && disc_angle < c->gaze_angle && r_g > 0.0f) {
+        r_g = disc_angle > 0.0f ? f_px * FOV__TAN(disc_angle) : 0.0f;
+        xm = c->edge == FOVLP_EDGE_THESIS ? r_g + 1.0f : r_g;
+    }
     g->disc_cols = S < c->width ? S : c->width;
     g->disc_rows = S < c->height ? S : c->height;
     lp = (size_t)g->lp_w * (size_t)g->lp_h;
@@ -2538,8 +2656,17 @@ FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, flo
     return FOV_OK;
 }
 
-FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovlp_config *c,
-                                    fov_ecc_model *ecc, fov_gaze *gz, fovlp_geometry *g)
+FOVLP__PRIV fov_result fovlp__geometry(const fovlp_config *c, fov_gaze gaze, float f_px,
+                                       fovlp_geometry *g)
+{
+    return fovlp__geometry2(c, gaze, f_px, -1.0f, g);
+}
+
+/* disc_angle: the disc used (<= the config's gaze_angle, which sizes the buffers); < 0: the
+   config's */
+FOVLP__PRIV fov_result fovlp__setup2(const fovlp_config *cfg, fov_gaze gaze, float disc_angle,
+                                     fovlp_config *c, fov_ecc_model *ecc, fov_gaze *gz,
+                                     fovlp_geometry *g)
 {
     fov_result r;
     int clamped;
@@ -2555,7 +2682,12 @@ FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovl
     r = fovlp_ecc_init(ecc, &c->display, fovlp__view_fov(c), c->width, c->height, *gz);
     if (r != FOV_OK)
         FOVLP__FAIL(&c->logger, r, "gaze or config.display: the eye direction overflows");
-    return fovlp__geometry(c, *gz, ecc->f_px, g);
+    return fovlp__geometry2(c, *gz, ecc->f_px, disc_angle, g);
+}
+FOVLP__PRIV fov_result fovlp__setup(const fovlp_config *cfg, fov_gaze gaze, fovlp_config *c,
+                                    fov_ecc_model *ecc, fov_gaze *gz, fovlp_geometry *g)
+{
+    return fovlp__setup2(cfg, gaze, -1.0f, c, ecc, gz, g);
 }
 
 FOVLP_API fov_result fovlp_geometry_get(const fovlp_config *cfg, fov_gaze gaze, fovlp_geometry *out)
@@ -2858,6 +2990,55 @@ FOVLP_API fov_result fovlp_init(fovlp_ctx *ctx, const fovlp_config *cfg, void *m
     ctx->mem = mem;
     ctx->mem_size = mem_size;
     ctx->jit_u = ctx->jit_v = 0.5f;
+    ctx->disc_angle = c.gaze_angle;
+    return FOV_OK;
+}
+
+FOVLP_API fov_result fovlp_set_gaze_margin(fovlp_ctx *ctx, const fovlp_config *base,
+                                           float margin_deg)
+{
+    fovlp_config b, c;
+    fov_ecc_model e;
+    fov_gaze gz;
+    fovlp_geometry g;
+    fov_result r;
+    float q, a;
+    if (!ctx || !base) return FOV_ERR_NULL;
+    if (!ctx->rho || !ctx->cs || !ctx->sn) return FOV_ERR_INVALID_ARG; /* not initialised */
+    if (!fov__finite(margin_deg))
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_NOT_FINITE,
+                    "set_gaze_margin: margin NaN or infinite");
+    if (margin_deg < 0.0f)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: margin must be >= 0");
+    r = fovlp_config_resolve(base, &b);
+    if (r != FOV_OK) return r;
+    if (b.no_disc || ctx->cfg.no_disc)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_UNSUPPORTED,
+                    "set_gaze_margin: no_disc = 1, no full-quality disc to widen");
+    if (b.gaze_angle > ctx->cfg.gaze_angle)
+        FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: base.gaze_angle above the context's (init with "
+                    "fovlp_config_gaze_margin(base, largest margin))");
+    /* up to the next FOVLP__GAZE_STEP_DEG: a margin that wobbles does not move the
+       LP samples every frame */
+    q = FOV__FLOOR(margin_deg / FOVLP__GAZE_STEP_DEG);
+    if (q * FOVLP__GAZE_STEP_DEG < margin_deg) q += 1.0f;
+    a = b.gaze_angle + q * FOVLP__GAZE_STEP_DEG * FOV__DEG;
+    if (!(a <= ctx->cfg.gaze_angle)) {
+        a = ctx->cfg.gaze_angle;
+        if (ctx->cfg.logger.func)
+            ctx->cfg.logger.func("fovlp", FOV_LOG_WARN, (int32_t)FOV_OK,
+                                 FOV__MSG("set_gaze_margin: margin above the context's room: "
+                                          "clamped to its disc"),
+                                 (uint32_t)__LINE__, ctx->cfg.logger.user);
+    }
+    /* the geometry at the current gaze must exist (it does: a smaller disc than the sized one) */
+    {
+        fov_result r2 = fovlp__setup2(&ctx->cfg, ctx->gaze, a, &c, &e, &gz, &g);
+        if (r2 != FOV_OK) return r2;
+    }
+    ctx->disc_angle = a; /* the next begin_frame uses it; the sizes and the history stay */
     return FOV_OK;
 }
 
@@ -2913,7 +3094,22 @@ FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float
 FOVLP__PRIV int fovlp__cam_ok(const fovlp_camera *c)
 {
     return fov__finite3(c->pos) && fov__finite3(c->right) && fov__finite3(c->up) &&
-           fov__finite3(c->fwd) && fov__finite(c->tan_half_y);
+           fov__finite3(c->fwd) && fov__finite(c->tan_half_y) && fov__finite(c->tan4[0]) &&
+           fov__finite(c->tan4[1]) && fov__finite(c->tan4[2]) && fov__finite(c->tan4[3]);
+}
+FOVLP__PRIV int fovlp__off4(const float t[4])
+{
+    return !fov__is0(t[0]) || !fov__is0(t[1]) || !fov__is0(t[2]) || !fov__is0(t[3]);
+}
+/* the tangents the reprojection uses for camera cam: its own (fovlp_camera_from of an
+   off-axis fov_camera), else config.taa.frustum; 0 when symmetric */
+FOVLP__PRIV int fovlp__cam_tan(const fovlp_camera *cam, const fovlp_config *c, float t[4])
+{
+    const float *s = fovlp__off4(cam->tan4) ? cam->tan4
+                     : fovlp__off4(c->taa.frustum) ? c->taa.frustum : NULL;
+    if (!s) return 0;
+    t[0] = s[0]; t[1] = s[1]; t[2] = s[2]; t[3] = s[3];
+    return 1;
 }
 FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
 {
@@ -2922,6 +3118,8 @@ FOVLP__PRIV int fovlp__cam_differs(const fovlp_camera *a, const fovlp_camera *b)
         if (fovlp__neq(a->pos[i], b->pos[i]) || fovlp__neq(a->right[i], b->right[i]) ||
             fovlp__neq(a->up[i], b->up[i]) || fovlp__neq(a->fwd[i], b->fwd[i]))
             return 1;
+    for (i = 0; i < 4; ++i)
+        if (fovlp__neq(a->tan4[i], b->tan4[i])) return 1;
     return fovlp__neq(a->tan_half_y, b->tan_half_y);
 }
 
@@ -2955,6 +3153,10 @@ FOVLP_API fov_result fovlp_camera_from(const fov_camera *cam, fovlp_camera *out)
     }
     out->tan_half_y = off ? 0.5f * (cam->tan_bottom + cam->tan_top)
                           : FOV__TAN(0.5f * fov * FOV__DEG);
+    out->tan4[0] = off ? cam->tan_left : 0.0f;
+    out->tan4[1] = off ? cam->tan_right : 0.0f;
+    out->tan4[2] = off ? cam->tan_bottom : 0.0f;
+    out->tan4[3] = off ? cam->tan_top : 0.0f;
     return FOV_OK;
 }
 
@@ -2977,8 +3179,26 @@ FOVLP_API fov_result fovlp_begin_frame(fovlp_ctx *ctx, fov_gaze gaze, const fovl
             fov__len(cam->up) < 0.5f)
             FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_DEGENERATE,
                         "begin_frame: cam.tan_half_y <= 0 or fwd, right or up not unit");
+        if (fovlp__off4(cam->tan4)) {
+            const float *t = cam->tan4, *ft = ctx->cfg.taa.frustum;
+            if (!(t[0] + t[1] > 1e-6f) || !(t[2] + t[3] > 1e-6f) || t[0] > 1e6f ||
+                t[1] > 1e6f || t[2] > 1e6f || t[3] > 1e6f)
+                FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                            "begin_frame: cam.tan4 (off-axis tangents): left + right and "
+                            "bottom + top must exceed 1e-6, each <= 1e6 (zero them for a "
+                            "symmetric camera)");
+            if (fovlp__off4(ft) && (fovlp__neq(t[0], ft[0]) || fovlp__neq(t[1], ft[1]) ||
+                                    fovlp__neq(t[2], ft[2]) || fovlp__neq(t[3], ft[3])))
+                FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                            "begin_frame: cam.tan4 differs from config.taa.frustum (the "
+                            "camera's frustum is not the one the config describes)");
+            if (!fov__tan_aspect_ok(t[0], t[1], t[2], t[3], ctx->cfg.width, ctx->cfg.height))
+                FOVLP__FAIL(&ctx->cfg.logger, FOV_ERR_UNSUPPORTED,
+                            "begin_frame: cam.tan4: (left + right) / (bottom + top) must be "
+                            "width / height within 1e-3 (non-square pixels are not supported)");
+        }
     }
-    r = fovlp__setup(&ctx->cfg, gaze, &c, &e, &gz, &g);
+    r = fovlp__setup2(&ctx->cfg, gaze, ctx->disc_angle, &c, &e, &gz, &g);
     if (r != FOV_OK) return r;
     if (g.lp_w != ctx->geo.lp_w || g.lp_h != ctx->geo.lp_h || g.samples != ctx->geo.samples)
         FOVLP__FAIL(&c.logger, FOV_ERR_DEGENERATE,
@@ -3840,7 +4060,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     const fovlp_config *c;
     uint32_t W, H, x, y, reproject;
     float diag, asp, per;
-    int offc;
+    int offc, offp;
+    float fta[4] = { 0.0f, 0.0f, 0.0f, 0.0f }, ftp[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
     if (!ctx) return FOV_ERR_NULL;
     c = &ctx->cfg;
     if (!io) FOVLP__FAIL(&c->logger, FOV_ERR_NULL, "taa_rows: io is NULL");
@@ -3870,8 +4091,8 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
     diag = FOV__SQRT((float)W * (float)W + (float)H * (float)H);
     per = c->taa.periphery * diag;
     asp = (float)W / (float)H;
-    offc = !fov__is0(c->taa.frustum[0]) || !fov__is0(c->taa.frustum[1]) ||
-           !fov__is0(c->taa.frustum[2]) || !fov__is0(c->taa.frustum[3]);
+    offc = fovlp__cam_tan(&ctx->cam, c, fta);
+    offp = fovlp__cam_tan(&ctx->prev_cam, c, ftp);
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
@@ -3891,7 +4112,7 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
             if (reproject) {
                 /* world point of this pixel, then its place in the previous frame */
                 const fovlp_camera *a = &ctx->cam, *p = &ctx->prev_cam;
-                const float *ft = c->taa.frustum;
+                const float *ft = fta;
                 float sxn = (hx / (float)W * 2.0f - 1.0f) * a->tan_half_y * asp;
                 float syn = (hy / (float)H * 2.0f - 1.0f) * a->tan_half_y;
                 float d[3], wp[3], rel[3], z;
@@ -3913,10 +4134,10 @@ FOVLP_API fov_result fovlp_taa_rows(const fovlp_ctx *ctx, const fovlp_taa_io *io
                     float py = fov__dot(rel, p->up) / (z * p->tan_half_y);
                     hx = (px + 1.0f) * 0.5f * (float)W;
                     hy = (1.0f - py) * 0.5f * (float)H;
-                    if (offc) {
+                    if (offp) {
                         float qx = fov__dot(rel, p->right) / z, qy = fov__dot(rel, p->up) / z;
-                        hx = (qx + ft[0]) / (ft[0] + ft[1]) * (float)W;
-                        hy = (ft[3] - qy) / (ft[2] + ft[3]) * (float)H;
+                        hx = (qx + ftp[0]) / (ftp[0] + ftp[1]) * (float)W;
+                        hy = (ftp[3] - qy) / (ftp[2] + ftp[3]) * (float)H;
                     }
                     if (!(hx >= 0.0f && hx < (float)W && hy >= 0.0f && hy < (float)H)) {
                         reject = 1;

@@ -33,7 +33,8 @@ QUICK START
    No eye tracker: fixed foveation, the gaze at the display's axis point and larger foveae
       fovpt_gaze_fixed(&cfg.display, 320, 240, &gaze);                 // the screen centre
       fovpt_config_gaze_margin(&base, FOV_GAZE_FIXED_MARGIN_DEG, &cfg); // radii + 15 deg
-   With one: filter its samples and grow the radii by the latency margin (GAZE INPUT).
+   With one: filter its samples and grow the radii by the latency margin per frame with
+   fovpt_set_gaze_margin (keeps the accumulation; GAZE INPUT).
 
    Stereo, per-eye gaze: one context per eye (Axblad 2020, Sec. 3.2.1, and Kim et al. 2021,
    Fig. 4, render the eyes independently).
@@ -833,9 +834,14 @@ typedef struct fov_eye_plan {
    Mathematical Biosciences 1975), smooth pursuit stays below about 30 to 50 deg/s, and a
    tracker noise of 0.5 degrees RMS over a 20 ms window gives about 35 deg/s RMS of speed.
    Error checks leave the filter unchanged: a timestamp not after the previous one
-   (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
-   the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
-   sample (FOV_ERR_NOT_FINITE), an angle beyond +-90 degrees (FOV_ERR_INVALID_ARG). A blink
+   (FOV_ERR_INVALID_ARG: out of order or a zero step; a tracker clock that went back, e.g.
+   after a restart, needs _gaze_filter_reset too, or every later sample is rejected until the
+   clock passes the old one), a step above max_dt_ms (FOV_ERR_LIMIT: the tracker lost the
+   eye; call _gaze_filter_reset, then push again), a NaN or infinite
+   sample (FOV_ERR_NOT_FINITE), an angle of +-90 degrees or beyond (FOV_ERR_INVALID_ARG; a
+   pixel far enough off the axis rounds to 90 degrees and is rejected by _push_px and
+   _gaze_to_deg as well; _push_px changes the filter and *out only when the whole call,
+   the conversion back to pixels included, succeeds). A blink
    shorter than max_dt_ms needs nothing: push no samples while the tracker reports none.
 
    The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
@@ -851,21 +857,31 @@ typedef struct fov_eye_plan {
    far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
    a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
    2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
-   fovea lands with it. The margin grows with the latency and with the output's speed.
+   fovea lands with it. The margin grows with the latency and with the output's speed,
+   except across a saccade onset: once the window speed passes saccade_deg_s the margin drops
+   to accuracy_deg + 2.5 noise_deg, so there it falls as the speed rises (monotone in the
+   speed only among non-saccade states, and in the latency always).
    bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
-                            [0, 10]; FOV_GAZE_BETA_NONE for 0                    0: 0.1 */
+                            (0, 10]; FOV_GAZE_BETA_NONE for none (a beta of 0)   0: 0.3 */
     float d_cutoff_hz;   /* cutoff of the velocity estimate, Hz, (0, 100]            0: 1 */
     float saccade_deg_s; /* saccade onset speed, deg/s, [20, 2000] (landing at half) 0: 100 */
     float window_ms;     /* the saccade detector's speed window, ms, [1, 100]        0: 20 */
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
+    fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
+                            _push, _push_px, _gaze_margin on the filter) calls it once with
+                            FOV_LOG_ERROR, the code and the message, as the configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
-#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window */
+#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
+   needs window_ms x rate + 1 of them, so 32 cover the default 20 ms up to a tracker rate of
+   1.55 kHz; above it the window speed is taken over the oldest kept sample (31 sample steps,
+   a shorter span: the noise is divided by less and the detector fires more easily). Trackers
+   above about 1.5 kHz: lower the rate you push at (decimate) or shorten window_ms knowingly. */
 /* Fixed foveation for users without an eye tracker: the gaze at the display's axis point
    (the lens centre of an HMD, the screen centre of a monitor: _gaze_fixed) and the foveae
    grown by this many degrees (_config_gaze_margin): most natural saccades are 15 degrees or
@@ -1387,7 +1403,9 @@ FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovpt_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovpt_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
-      fovpt_config_gaze_margin(&base_cfg, m, &cfg);                     // then render with cfg
+      fovpt_set_gaze_margin(&ctx, &base_cfg, m);          // then fovpt_render as usual
+   (fovpt_init once with base_cfg; a per-frame fovpt_init with fovpt_config_gaze_margin's
+   config would reset the accumulation and the temporal ring every frame).
    _gaze_filter_config_default: the defaults filled in. _gaze_filter_init: FOV_ERR_NULL, or
    FOV_ERR_NOT_FINITE / FOV_ERR_INVALID_ARG for a bad config field (f left as it was).
    _gaze_filter_reset: forget every sample (after tracking was lost), keep the config.
@@ -1427,6 +1445,16 @@ FOVPT_API fov_result fovpt_camera_display(const fov_camera *cam, fov_display *ou
    written only on success. */
 FOVPT_API fov_result fovpt_config_gaze_margin(const fovpt_config *base, float margin_deg,
                                               fovpt_config *out);
+/* The margin applied per frame to a context, keeping its accumulation (UNIFORM, the LAYERS
+   and ZONES lattices) and its temporal ring (SELECTIVE, JIN): ctx->cfg becomes
+   fovpt_config_gaze_margin(base, margin_deg) and the layers' trace radii follow, from the next
+   render on; nothing is reset (a per-frame fovpt_init would reset all of it). base must differ
+   from the context's config only in the radii the margin grows (the same method, layer
+   strides and temporal slots: the memory layout): else FOV_ERR_INVALID_ARG, use fovpt_init.
+   FOV_ERR_NULL, FOV_ERR_NOT_FINITE, FOV_ERR_INVALID_ARG (margin < 0), FOV_ERR_LIMIT, base's
+   resolve error; the context is unchanged on error. */
+FOVPT_API fov_result fovpt_set_gaze_margin(fovpt_ctx *ctx, const fovpt_config *base,
+                                           float margin_deg);
 
 /* Context: working memory for a config and camera, then init (validates everything). */
 FOVPT_API fov_result fovpt_memory_size(const fovpt_config *cfg, const fovpt_camera *cam,
@@ -2303,7 +2331,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
     else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
-        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] or FOV_GAZE_BETA_NONE");
+        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] (0: 0.3) or "
+                        "FOV_GAZE_BETA_NONE (no speed adaptation)");
     else if (!(c.d_cutoff_hz > 0.0f && c.d_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: d_cutoff_hz must be in (0, 100] (0: 1)");
     else if (!(c.saccade_deg_s >= 20.0f && c.saccade_deg_s <= 2000.0f))
@@ -2354,8 +2383,9 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
                         "samples)");
         return FOV_ERR_NOT_FINITE;
     }
-    if (!(fov__absf(x) <= 90.0f && fov__absf(y) <= 90.0f)) {
-        *bad = FOV__MSG("gaze_filter_push: sample beyond +-90 degrees");
+    if (!(fov__absf(x) < 90.0f && fov__absf(y) < 90.0f)) {
+        *bad = FOV__MSG("gaze_filter_push: sample at or beyond +-90 degrees (must be in "
+                        "(-90, 90))");
         return FOV_ERR_INVALID_ARG;
     }
     if (f->samples > 0u) {
@@ -2513,7 +2543,10 @@ FOV__PRIV int fov__gaze_to_deg(const fov_ecc_model *m, float x, float y, float d
     if (!fov__finite(dx) || !fov__finite(dy) || !(m->f_px > 0.0f)) return 0;
     d[0] = FOV__ATAN2(dx, m->f_px) / FOV__DEG;
     d[1] = FOV__ATAN2(dy, FOV__SQRT(dx * dx + m->f_px * m->f_px)) / FOV__DEG;
-    return fov__finite(d[0]) && fov__finite(d[1]);
+    /* a pixel far enough out rounds to exactly 90 degrees, which fov__gaze_from_deg (and the
+       filter) cannot take: the open interval (-90, 90) only */
+    return fov__finite(d[0]) && fov__finite(d[1]) && fov__absf(d[0]) < 90.0f &&
+           fov__absf(d[1]) < 90.0f;
 }
 FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float *x, float *y)
 {
@@ -2524,10 +2557,55 @@ FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float
     *y = m->cy + m->f_px * FOV__TAN(v) / ch;
     return fov__finite(*x) && fov__finite(*y);
 }
+/* A pixel sample: converted, pushed into a copy of the filter and the filtered gaze turned
+   back into pixels; the filter (and *out) change only when all three succeed. */
+FOV__PRIV fov_result fov__gaze_push_px(fov_gaze_filter *f, const fov_ecc_model *m, uint64_t t_us,
+                                       fov_gaze raw, fov_gaze *out, const char **bad)
+{
+    fov_gaze_filter s;
+    fov_gaze g;
+    float d[2];
+    fov_result r;
+    *bad = FOV__MSG("");
+    if (!fov__finite(raw.x) || !fov__finite(raw.y)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample NaN or infinite (skip the tracker's "
+                        "invalid samples)");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample at or beyond 90 degrees off the axis, or "
+                        "the eccentricity model is not initialised");
+        return FOV_ERR_INVALID_ARG;
+    }
+    s = *f;
+    r = fov__gaze_push(&s, t_us, d[0], d[1], bad);
+    if (r != FOV_OK) return r;
+    g.x = g.y = 0.0f;
+    if (out) {
+        d[0] = s.x_deg; d[1] = s.y_deg;
+        if (!fov__gaze_from_deg(m, d, &g.x, &g.y)) {
+            *bad = FOV__MSG("gaze_filter_push_px: the filtered gaze has no pixel (beyond 90 "
+                            "degrees)");
+            return FOV_ERR_INVALID_ARG;
+        }
+    }
+    *f = s;
+    if (out) *out = g;
+    return FOV_OK;
+}
+
+/* An off-axis frustum's tangents against the image: (l + r) / (b + t) = w / h within 1e-3
+   relative (square pixels: the headers use one scale for both axes); 0 when not. */
+FOV__PRIV int fov__tan_aspect_ok(float tl, float tr, float tb, float tt, uint32_t w, uint32_t h)
+{
+    float a = (tl + tr) * (float)h, b = (tb + tt) * (float)w;
+    return fov__absf(a - b) <= 1e-3f * b;
+}
 
 /* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
    point of tangent 0); the camera's tangents, or the symmetric ones of fov_y_deg (0: 60).
-   FOV_ERR_* for bad fields. */
+   FOV_ERR_* for bad fields; FOV_ERR_UNSUPPORTED for tangents whose ratio is not the image's
+   aspect (fov__tan_aspect_ok). */
 FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 {
     float tl, tr, tb, tt, f, fy;
@@ -2549,6 +2627,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
     if (!(tl + tr > 1e-6f) || !(tb + tt > 1e-6f) || tl > 1e6f || tr > 1e6f || tb > 1e6f ||
         tt > 1e6f)
         return FOV_ERR_INVALID_ARG;
+    if (!fov__tan_aspect_ok(tl, tr, tb, tt, cam->width, cam->height)) return FOV_ERR_UNSUPPORTED;
     f = (float)cam->height / (tt + tb);
     d->fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, f) / FOV__DEG;
     d->axis_dx = tl * f - 0.5f * (float)cam->width;
@@ -2758,9 +2837,14 @@ FOVPT_API fov_result fovpt_gaze_filter_init(fov_gaze_filter *f, const fov_gaze_f
     fov_gaze_filter_config c;
     const char *bad;
     fov_result r;
-    if (!f) return FOV_ERR_NULL;
+    if (!f) {
+        if (cfg)
+            return fov__err(&cfg->logger, "fovpt", FOV_ERR_NULL,
+                            FOV__MSG("gaze_filter_init: f is NULL"), (uint32_t)__LINE__);
+        return FOV_ERR_NULL;
+    }
     r = fov__gaze_cfg(cfg, &c, &bad);
-    if (r != FOV_OK) return r;
+    if (r != FOV_OK) return cfg ? fov__err(&cfg->logger, "fovpt", r, bad, (uint32_t)__LINE__) : r;
     FOV_MEMSET(f, 0, sizeof *f);
     f->cfg = c;
     return FOV_OK;
@@ -2773,22 +2857,22 @@ FOVPT_API fov_result fovpt_gaze_filter_push(fov_gaze_filter *f, uint64_t t_us, f
                                             float y_deg)
 {
     const char *bad;
+    fov_result r;
     if (!f) return FOV_ERR_NULL;
-    return fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    r = fov__gaze_push(f, t_us, x_deg, y_deg, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovpt", r, bad, (uint32_t)__LINE__);
 }
 FOVPT_API fov_result fovpt_gaze_filter_push_px(fov_gaze_filter *f, const fov_ecc_model *m,
                                                uint64_t t_us, fov_gaze raw, fov_gaze *out)
 {
-    float d[2];
+    const char *bad;
     fov_result r;
-    if (!f || !m) return FOV_ERR_NULL;
-    if (!fov__finite(raw.x) || !fov__finite(raw.y)) return FOV_ERR_NOT_FINITE;
-    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) return FOV_ERR_INVALID_ARG;
-    r = fovpt_gaze_filter_push(f, t_us, d[0], d[1]);
-    if (r != FOV_OK || !out) return r;
-    d[0] = f->x_deg; d[1] = f->y_deg;
-    if (!fov__gaze_from_deg(m, d, &out->x, &out->y)) return FOV_ERR_INVALID_ARG;
-    return FOV_OK;
+    if (!f) return FOV_ERR_NULL;
+    if (!m)
+        return fov__err(&f->cfg.logger, "fovpt", FOV_ERR_NULL,
+                        FOV__MSG("gaze_filter_push_px: m is NULL"), (uint32_t)__LINE__);
+    r = fov__gaze_push_px(f, m, t_us, raw, out, &bad);
+    return r == FOV_OK ? r : fov__err(&f->cfg.logger, "fovpt", r, bad, (uint32_t)__LINE__);
 }
 FOVPT_API fov_result fovpt_gaze_to_deg(const fov_ecc_model *m, fov_gaze px, float deg[2])
 {
@@ -2808,7 +2892,13 @@ FOVPT_API fov_result fovpt_gaze_from_deg(const fov_ecc_model *m, const float deg
 FOVPT_API fov_result fovpt_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
                                        float latency_ms, float *margin_deg)
 {
-    return fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    fov_result r = fov__gaze_margin(f, accuracy_deg, latency_ms, margin_deg);
+    if (r == FOV_OK || !f) return r;
+    return fov__err(&f->cfg.logger, "fovpt", r,
+                    margin_deg ? FOV__MSG("gaze_margin: accuracy_deg must be in [0, 90] and "
+                                          "latency_ms in [0, 1e6], finite (*margin_deg: the cap)")
+                               : FOV__MSG("gaze_margin: margin_deg is NULL"),
+                    (uint32_t)__LINE__);
 }
 FOVPT_API fov_result fovpt_gaze_fixed(const fov_display *display, uint32_t width,
                                       uint32_t height, fov_gaze *out)
@@ -3186,6 +3276,9 @@ FOVPT__PRIV fov_result fovpt__camera_setup(const fovpt_camera *cam, float r[3], 
             !(cam->tan_bottom + cam->tan_top > 1e-6f) || cam->tan_left > 1e6f ||
             cam->tan_right > 1e6f || cam->tan_top > 1e6f || cam->tan_bottom > 1e6f)
             return FOV_ERR_INVALID_ARG;
+        if (!fov__tan_aspect_ok(cam->tan_left, cam->tan_right, cam->tan_bottom, cam->tan_top,
+                                cam->width, cam->height))
+            return FOV_ERR_UNSUPPORTED;
         tan4[0] = -cam->tan_left; tan4[1] = cam->tan_right;
         tan4[2] = cam->tan_top; tan4[3] = -cam->tan_bottom;
     } else {
@@ -5275,6 +5368,9 @@ FOVPT__PRIV fov_result fovpt__cam_fail(const fov_logger *lg, fov_result e, const
     const char *m = FOV__MSG(": cam.width or height 0, fov_y_deg not in (0, 180) or bad tan_*");
     if (e == FOV_ERR_LIMIT) m = FOV__MSG(": cam.width or height above FOVPT_MAX_DIM");
     if (e == FOV_ERR_NOT_FINITE) m = FOV__MSG(": a cam field NaN or infinite");
+    if (e == FOV_ERR_UNSUPPORTED)
+        m = FOV__MSG(": cam.tan_*: (tan_left + tan_right) / (tan_bottom + tan_top) must be "
+                     "width / height within 1e-3 (non-square pixels are not supported)");
     if (e == FOV_ERR_DEGENERATE) m = FOV__MSG(": cam.target == pos, or up zero or along the view");
     return fov__err3(lg, "fovpt", e, who, m, "", line);
 }
@@ -5736,6 +5832,46 @@ FOVPT_API fov_result fovpt_init(fovpt_ctx *ctx, const fovpt_config *cfg, const f
         }
     }
     return fovpt_reset(ctx);
+}
+
+FOVPT_API fov_result fovpt_set_gaze_margin(fovpt_ctx *ctx, const fovpt_config *base,
+                                           float margin_deg)
+{
+    fovpt_config c;
+    fovpt_layers_cfg lay;
+    fov_result e;
+    size_t need_old, need_new;
+    uint32_t n;
+    if (!ctx || !base) return FOV_ERR_NULL;
+    e = fovpt_config_gaze_margin(base, margin_deg, &c);
+    if (e != FOV_OK) return e;
+    fovpt__lay(&c, &lay);
+    if (fovpt__ctx_bytes(&ctx->cfg, &ctx->cam, &need_old) != FOV_OK ||
+        fovpt__ctx_bytes(&c, &ctx->cam, &need_new) != FOV_OK || need_old != need_new ||
+        c.method != ctx->cfg.method || lay.count != ctx->lay.count ||
+        fovpt__hist_slots(&c) != ctx->hist_slots)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "set_gaze_margin: base differs from the context's config beyond the radii "
+                    "(method, layers, temporal slots): use fovpt_init");
+    for (n = 0; n < lay.count; ++n)
+        if (lay.layer[n].stride != ctx->lay.layer[n].stride)
+            FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                        "set_gaze_margin: a layer stride differs from the context's: use "
+                        "fovpt_init");
+    {
+        fovpt_config c0 = ctx->cfg;
+        fovpt_layers_cfg l0 = ctx->lay;
+        fov_ecc_model e0 = ctx->ecc;
+        ctx->cfg = c;
+        ctx->lay = lay;
+        e = fovpt__ctx_view(ctx);
+        if (e != FOV_OK) {
+            ctx->cfg = c0; ctx->lay = l0; ctx->ecc = e0;
+            fovpt__ctx_view(ctx); /* the old view again (it succeeded before) */
+            FOVPT__FAIL(&ctx->cfg.logger, e, "set_gaze_margin: the view fails (unchanged)");
+        }
+    }
+    return FOV_OK;
 }
 
 FOVPT_API fov_result fovpt_reset(fovpt_ctx *ctx)

@@ -81,7 +81,7 @@ int main(int argc, char **argv)
         cam.eye_offset = eye == 0 ? -0.032f : 0.032f;     /* ipd 64 mm in metres */
         cam.tan_left = eye == 0 ? 1.0f : 0.8f;             /* each eye sees more outwards */
         cam.tan_right = eye == 0 ? 0.8f : 1.0f;
-        cam.tan_bottom = 1.0f; cam.tan_top = 1.0f;
+        cam.tan_bottom = 0.99f; cam.tan_top = 0.99f;        /* 1.8 / 1.98 = 160 / 176 */
         g = gaze_of(&cam, fixate);
         r = fovsdf_init(&ctx, &cfg, &scene, &cam, g, NULL, 0);
         if (r != FOV_OK) {

@@ -1364,9 +1364,15 @@ static void case_pt_fuzz(void)
         cam.pos[0] = frand(-1, 1); cam.pos[1] = frand(0, 2); cam.pos[2] = -5.0f;
         cam.fov_y_deg = frand(1.0f, 179.0f);
         if (it % 5 == 1) {   /* asymmetric frustum, off-axis, some extreme */
-            cam.tan_left = frand(-0.5f, 2.0f); cam.tan_right = frand(0.6f, 2.0f);
+            cam.tan_left = frand(-0.5f, 2.0f);
             cam.tan_top = frand(-0.5f, 2.0f); cam.tan_bottom = frand(0.6f, 2.0f);
-            if (it % 25 == 1) { cam.tan_left = 1e5f; cam.tan_right = 1e5f; }
+            /* square pixels: (left + right) / (bottom + top) = W / H (else UNSUPPORTED) */
+            cam.tan_right = (cam.tan_bottom + cam.tan_top) * (float)W / (float)H - cam.tan_left;
+            if (it % 25 == 1) {
+                float big = 1e5f;
+                cam.tan_left = cam.tan_right = W >= H ? big : big * (float)W / (float)H;
+                cam.tan_top = cam.tan_bottom = W >= H ? big * (float)H / (float)W : big;
+            }
         }
         cfg.method = (uint32_t)(urand() * 5.0);
         cfg.mode = it % 7 == 3 ? 1u : 0u;

@@ -468,13 +468,80 @@ static void test_off_axis_errors(void)
     cam.tan_left = 0.5f;
     cam.tan_right = 0.7f;
     cam.tan_bottom = 0.5f;
-    cam.tan_top = 0.6f;
+    cam.tan_top = 0.7f; /* (0.5 + 0.7) / (0.5 + 0.7): the 16 x 16 image's aspect */
     e = sdf_ctx(&ctx, &cam, &b, &lg);
     check(e == FOV_OK && r.calls == 0 && ctx.off_axis == 1u, "off_axis_sdf_accepted", "%s",
           fovsdf_result_string(e));
     e = fovlp_camera_from(&cam, &lc);
-    check(e == FOV_OK && fabsf(lc.tan_half_y - 0.55f) < 1e-6f, "off_axis_lp_camera_from",
+    check(e == FOV_OK && fabsf(lc.tan_half_y - 0.6f) < 1e-6f, "off_axis_lp_camera_from",
           "%s %g", fovlp_result_string(e), (double)lc.tan_half_y);
+    /* review item: tangents whose ratio is not the image's aspect (non-square pixels) are
+       FOV_ERR_UNSUPPORTED with a message in every header; within 1e-3 they are accepted */
+    {
+        fovpt_config pc = fovpt_config_default();
+        fovlp_config lcfg = fovlp_config_preset(FOVLP_PRESET_C_FOV, 16, 16), lo;
+        fovlp_ctx lctx;
+        fov_display dsp;
+        fov_gaze g = { 8.0f, 8.0f };
+        size_t nb = 0;
+        void *lmem;
+        rec r2;
+        fov_logger lg2;
+        memset(&r2, 0, sizeof r2);
+        lg2.func = rec_log;
+        lg2.user = &r2;
+        cam.tan_top = 0.6f; /* (0.5 + 0.7) / (0.5 + 0.6) = 1.09, the image 1 */
+        e = sdf_ctx(&ctx, &cam, &b, &lg2);
+        check(e == FOV_ERR_UNSUPPORTED && r2.calls == 1 &&
+              r2.code == (int32_t)FOV_ERR_UNSUPPORTED, "off_axis_aspect_sdf_unsupported",
+              "%s, %d calls", fovsdf_result_string(e), r2.calls);
+#ifndef FOV_NO_ERROR_STRINGS
+        check(strstr(r2.msg, "width / height") != NULL, "off_axis_aspect_sdf_message", "\"%s\"",
+              r2.msg);
+#endif
+        pc.logger = lg2;
+        r2.calls = 0;
+        e = fovpt_memory_size(&pc, &cam, &nb);
+        check(e == FOV_ERR_UNSUPPORTED && r2.calls == 1, "off_axis_aspect_pt_unsupported",
+              "%s, %d calls", fovpt_result_string(e), r2.calls);
+#ifndef FOV_NO_ERROR_STRINGS
+        check(strstr(r2.msg, "width / height") != NULL, "off_axis_aspect_pt_message", "\"%s\"",
+              r2.msg);
+#endif
+        check(fovsdf_camera_display(&cam, &dsp) == FOV_ERR_UNSUPPORTED &&
+              fovlp_camera_display(&cam, &dsp) == FOV_ERR_UNSUPPORTED &&
+              fovpt_camera_display(&cam, &dsp) == FOV_ERR_UNSUPPORTED,
+              "off_axis_aspect_camera_display_unsupported", "-");
+        lcfg.taa.frustum[0] = 0.5f; lcfg.taa.frustum[1] = 0.7f;
+        lcfg.taa.frustum[2] = 0.5f; lcfg.taa.frustum[3] = 0.6f;
+        lcfg.logger = lg2;
+        r2.calls = 0;
+        e = fovlp_config_resolve(&lcfg, &lo);
+        check(e == FOV_ERR_UNSUPPORTED && r2.calls == 1, "off_axis_aspect_lp_frustum_unsupported",
+              "%s", fovlp_result_string(e));
+#ifndef FOV_NO_ERROR_STRINGS
+        check(strstr(r2.msg, "width / height") != NULL, "off_axis_aspect_lp_message", "\"%s\"",
+              r2.msg);
+#endif
+        /* fovlp_camera_from keeps them (the fovlp image may differ from the camera's); the
+           context checks them against its image */
+        memset(lcfg.taa.frustum, 0, sizeof lcfg.taa.frustum);
+        fovlp_memory_size(&lcfg, &nb);
+        lmem = malloc(nb);
+        check(fovlp_init(&lctx, &lcfg, lmem, nb) == FOV_OK &&
+                  fovlp_camera_from(&cam, &lc) == FOV_OK &&
+                  fovlp_begin_frame(&lctx, g, &lc) == FOV_ERR_UNSUPPORTED,
+              "off_axis_aspect_lp_begin_frame_unsupported", "-");
+        cam.tan_top = 0.7f * (1.0f + 5e-4f); /* within 1e-3: accepted */
+        check(sdf_ctx(&ctx, &cam, &b, NULL) == FOV_OK &&
+                  fovpt_memory_size(&pc, &cam, &nb) == FOV_OK &&
+                  fovlp_camera_display(&cam, &dsp) == FOV_OK &&
+                  fovlp_camera_from(&cam, &lc) == FOV_OK &&
+                  fovlp_begin_frame(&lctx, g, &lc) == FOV_OK,
+              "off_axis_aspect_within_1e-3_accepted", "-");
+        cam.tan_top = 0.7f;
+        free(lmem);
+    }
     cam.tan_left = -0.7f; /* left + right <= 0 */
     e = sdf_ctx(&ctx, &cam, &b, &lg);
     check(e == FOV_ERR_INVALID_ARG && r.calls == 1 && r.code == (int32_t)FOV_ERR_INVALID_ARG,

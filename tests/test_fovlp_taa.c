@@ -442,6 +442,193 @@ static void test_disc_converges(void)
     env_free(&e);
 }
 
+/* review item: the per-frame latency margin (fovlp_set_gaze_margin) keeps the TAA history; a
+   per-frame fovlp_init with fovlp_config_gaze_margin (the old recipe) loses it every frame */
+static void test_gaze_margin_keeps_history(void)
+{
+    fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H), room, b;
+    taa_env e;
+    fovlp_ctx saved;
+    fov_gaze gz = { 150.0f, 90.0f };
+    fovlp_geometry g0;
+    uint32_t k, valid = 0, age_gz;
+    int sizes_same = 1, r_ok = 1, rc_ok = 1;
+    float m;
+    c.taa.enable = 1;
+    check(fovlp_config_gaze_margin(&c, 15.0f, &room) == FOV_OK, "margin: room config", "-");
+    env_init(&e, &room);
+    g0 = e.ctx.geo;
+    fovlp_config_resolve(&c, &b);
+    for (k = 0; k < 12; ++k) {
+        float q, want;
+        m = 0.6f + 0.9f * (float)(k % 5); /* 0.6 .. 4.2 degrees, changing every frame */
+        if (fovlp_set_gaze_margin(&e.ctx, &c, m) != FOV_OK) rc_ok = 0;
+        frame(&e, gz, NULL, shade_pattern, NULL, NULL);
+        if (k > 0 && e.ctx.history_valid) valid++;
+        if (e.ctx.geo.lp_w != g0.lp_w || e.ctx.geo.lp_h != g0.lp_h ||
+            e.ctx.geo.samples != g0.samples)
+            sizes_same = 0;
+        /* worked out: the disc of base + m rounded up to 0.25 degrees, f tan(angle) */
+        q = ceilf(m / 0.25f) * 0.25f;
+        want = e.ctx.geo.f_px * tanf(b.gaze_angle + q * 0.017453292f);
+        if (!(fabsf(e.ctx.geo.r_g - want) <= 1e-3f * want)) r_ok = 0;
+    }
+    age_gz = e.age[e.ping][(uint32_t)gz.y * W + (uint32_t)gz.x];
+    check(rc_ok && valid == 11u && e.ctx.frame == 12u,
+          "margin: fovlp_set_gaze_margin every frame keeps the TAA history",
+          "rc %d valid %u frame %u", rc_ok, valid, e.ctx.frame);
+    check(age_gz >= 10u, "margin: the gaze pixel's history age grows", "age %u", age_gz);
+    check(sizes_same, "margin: the context's sizes never change", "-");
+    check(r_ok, "margin: disc = base + margin rounded up to 0.25 degrees", "r_g %g",
+          (double)e.ctx.geo.r_g);
+    /* beyond the room: clamped to the context's disc, FOV_OK */
+    check(fovlp_set_gaze_margin(&e.ctx, &c, 40.0f) == FOV_OK &&
+          e.ctx.disc_angle >= room.gaze_angle && e.ctx.disc_angle <= room.gaze_angle,
+          "margin: beyond the room clamped to it", "%g", (double)e.ctx.disc_angle);
+    /* errors leave the context as it was */
+    saved = e.ctx;
+    check(fovlp_set_gaze_margin(&e.ctx, &c, -1.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: negative rejected, ctx unchanged",
+          "-");
+    check(fovlp_set_gaze_margin(&e.ctx, &c, (float)NAN) == FOV_ERR_NOT_FINITE &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: NaN rejected, ctx unchanged", "-");
+    check(fovlp_set_gaze_margin(&e.ctx, &room, 0.0f) == FOV_OK, "margin: base = room ok", "-");
+    b = c; b.gaze_angle = room.gaze_angle + 0.01f;
+    saved = e.ctx;
+    check(fovlp_set_gaze_margin(&e.ctx, &b, 0.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &e.ctx, sizeof saved) == 0, "margin: base above the room rejected",
+          "-");
+    b = c; b.no_disc = 1;
+    check(fovlp_set_gaze_margin(&e.ctx, &b, 1.0f) == FOV_ERR_UNSUPPORTED,
+          "margin: no_disc unsupported", "-");
+    /* control: the old recipe (fovlp_init with a new config each frame) never has history */
+    {
+        fovlp_config cf;
+        fovlp_config_gaze_margin(&c, 0.6f, &cf);
+        {
+            size_t bytes = 0;
+            void *mem2;
+            fovlp_ctx c2;
+            fovlp_memory_size(&cf, &bytes);
+            mem2 = malloc(bytes);
+            valid = 0;
+            for (k = 0; k < 4; ++k) {
+                fovlp_init(&c2, &cf, mem2, bytes);
+                fovlp_begin_frame(&c2, gz, NULL);
+                if (c2.history_valid) valid++;
+            }
+            check(valid == 0u, "margin: control, a per-frame fovlp_init has no history", "%u",
+                  valid);
+            free(mem2);
+        }
+    }
+    env_free(&e);
+}
+
+/* review item: an off-axis camera (fovlp_camera_from of a fov_camera with tangents) is
+   reprojected with its own tangents when config.taa.frustum is left 0: the same output bit
+   for bit as with config.taa.frustum set, and not the symmetric reprojection's; a camera
+   whose tangents differ from config.taa.frustum is rejected by begin_frame */
+typedef struct offcam { fovlp_camera c; } offcam;
+static void shade_off(float x, float y, float rgb[3], float *depth, void *user)
+{
+    const fovlp_camera *c = &((const offcam *)user)->c;
+    float sx = -c->tan4[0] + (c->tan4[0] + c->tan4[1]) * (x / (float)W);
+    float sy = -c->tan4[3] + (c->tan4[2] + c->tan4[3]) * (y / (float)H);
+    float d[3], l, t, px, py;
+    int i;
+    for (i = 0; i < 3; ++i) d[i] = c->fwd[i] + sx * c->right[i] - sy * c->up[i];
+    l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (i = 0; i < 3; ++i) d[i] /= l;
+    t = (10.0f - c->pos[2]) / d[2]; /* the plane z = 10 */
+    px = c->pos[0] + t * d[0]; py = c->pos[1] + t * d[1];
+    rgb[0] = rgb[1] = rgb[2] = 0.5f + 0.4f * sinf(1.1f * px) * cosf(0.9f * py);
+    if (depth) *depth = t;
+}
+static void run_off(const fovlp_config *c, int sym, float *out, uint32_t *rejected,
+                    double *err_out)
+{
+    taa_env e;
+    fov_camera fc;
+    offcam oc;
+    fov_gaze gz = { 170.0f, 80.0f };
+    fovlp_taa_stats st;
+    int f;
+    env_init(&e, c);
+    memset(&fc, 0, sizeof fc);
+    fc.target[2] = 1.0f; fc.up[1] = 1.0f; fc.width = W; fc.height = H;
+    fc.tan_left = 1.2f; fc.tan_right = 0.8f; fc.tan_bottom = 0.6f; fc.tan_top = 0.525f;
+    fovlp_taa_stats_init(&st);
+    for (f = 0; f < 6; ++f) {
+        fovlp_camera lc;
+        fc.pos[2] = 0.4f * (float)f; fc.target[2] = fc.pos[2] + 1.0f; /* towards the plane */
+        fovlp_camera_from(&fc, &lc);
+        oc.c = lc; /* the scene is shaded through the true (off-axis) camera */
+        if (sym) memset(lc.tan4, 0, sizeof lc.tan4); /* what the reprojection used to get */
+        frame(&e, gz, &lc, shade_off, &oc, f == 5 ? &st : NULL);
+    }
+    memcpy(out, e.hist[e.ping], sizeof(float) * W * H * 3);
+    *rejected = (uint32_t)st.rejected;
+    { /* mean error against the true image of the last camera at the pixel centres */
+        double err = 0.0;
+        uint32_t i;
+        for (i = 0; i < W * H; ++i) {
+            float t[3];
+            shade_off((float)(i % W) + 0.5f, (float)(i / W) + 0.5f, t, NULL, &oc);
+            err += fabs((double)out[3 * i] - (double)t[0]);
+        }
+        *err_out = err / (double)(W * H);
+    }
+    env_free(&e);
+}
+static void test_off_axis_camera(void)
+{
+    fovlp_config c = fovlp_config_preset(FOVLP_PRESET_C_FOV, W, H), cf;
+    float *a = (float *)malloc(sizeof(float) * W * H * 3), *b = (float *)malloc(sizeof(float) * W * H * 3);
+    float *s = (float *)malloc(sizeof(float) * W * H * 3);
+    uint32_t ra, rb, rs;
+    double ea, eb, es;
+    c.taa.enable = 1;
+    cf = c;
+    cf.taa.frustum[0] = 1.2f; cf.taa.frustum[1] = 0.8f; cf.taa.frustum[2] = 0.6f;
+    cf.taa.frustum[3] = 0.525f;
+    run_off(&c, 0, a, &ra, &ea);  /* frustum left 0: the camera's tangents */
+    run_off(&cf, 0, b, &rb, &eb); /* frustum set */
+    run_off(&c, 1, s, &rs, &es);  /* the symmetric reprojection (tangents dropped) */
+    check(memcmp(a, b, sizeof(float) * W * H * 3) == 0 && ra == rb,
+          "off-axis camera: its own tangents = config.taa.frustum, bit for bit",
+          "rejected %u vs %u", ra, rb);
+    fovcheck_info("off-axis TAA: mean error own tangents %.4f, symmetric %.4f (rejected %u, %u)",
+                  ea, es, ra, rs);
+    check(memcmp(a, s, sizeof(float) * W * H * 3) != 0 && es > 1.5 * ea,
+          "off-axis camera: the symmetric reprojection differs and is further from the truth",
+          "error %g (own) vs %g (symmetric)", ea, es);
+    {
+        taa_env e;
+        fov_camera fc;
+        fovlp_camera lc;
+        fov_gaze gz = { 170.0f, 80.0f };
+        fovlp_config cm = cf;
+        cm.taa.frustum[0] = 1.0f; cm.taa.frustum[1] = 1.0f; /* another frustum, same aspect */
+        env_init(&e, &cm);
+        check(e.ctx.rho != NULL, "off-axis camera: context with another frustum", "-");
+        memset(&fc, 0, sizeof fc);
+        fc.target[2] = 1.0f; fc.up[1] = 1.0f; fc.width = W; fc.height = H;
+        fc.tan_left = 1.2f; fc.tan_right = 0.8f; fc.tan_bottom = 0.6f; fc.tan_top = 0.525f;
+        fovlp_camera_from(&fc, &lc);
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_INVALID_ARG,
+              "off-axis camera: tangents != config.taa.frustum rejected", "-");
+        lc.tan4[0] = -5.0f;
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_INVALID_ARG,
+              "off-axis camera: bad tan4 rejected", "-");
+        lc.tan4[0] = (float)NAN;
+        check(fovlp_begin_frame(&e.ctx, gz, &lc) == FOV_ERR_NOT_FINITE,
+              "off-axis camera: NaN tan4 rejected", "-");
+        env_free(&e);
+    }
+    free(a); free(b); free(s);
+}
+
 int main(void)
 {
     printf("# fovlp.h TAA tests (%s)\n", MODE);
@@ -450,5 +637,7 @@ int main(void)
     test_moving();
     test_age();
     test_bad_samples();
+    test_gaze_margin_keeps_history();
+    test_off_axis_camera();
     return fovcheck_summary();
 }

@@ -217,7 +217,10 @@ static void test_eyes(void)
         fovpt_camera_init(&c, 1u + (uint32_t)(urand() * 1500.0), 1u + (uint32_t)(urand() * 1500.0));
         for (k = 0; k < 3; ++k) { c.pos[k] = frand(-5.0f, 5.0f); c.target[k] = frand(-5.0f, 5.0f); c.up[k] = frand(-1.0f, 1.0f); }
         c.fov_y_deg = frand(5.0f, 150.0f);
-        if (i % 2) { c.tan_left = frand(0.1f, 2.0f); c.tan_right = frand(0.1f, 2.0f); c.tan_bottom = frand(0.1f, 2.0f); c.tan_top = frand(0.1f, 2.0f); }
+        if (i % 2) { /* off-axis, the ratio of the tangents the image aspect (square pixels) */
+            c.tan_left = frand(0.1f, 2.0f); c.tan_bottom = frand(0.1f, 2.0f); c.tan_top = frand(0.1f, 2.0f);
+            c.tan_right = (c.tan_bottom + c.tan_top) * (float)c.width / (float)c.height - c.tan_left;
+        }
         if (fovpt_camera_ray(&c, 0.5f, 0.5f, o, dir) != FOV_OK) continue;
         /* a point in front: along the ray through a random image point, at a random depth */
         fovpt_camera_ray(&c, frand(-0.5f, 1.5f) * (float)c.width, frand(-0.5f, 1.5f) * (float)c.height, o, dir);
@@ -2063,6 +2066,96 @@ static void test_set_view_atomic(void)
     free(F.b.mem);
 }
 
+/* review item: the per-frame latency margin on a context (fovpt_set_gaze_margin) grows the
+   layer radii and keeps the lattices' accumulation; a per-frame fovpt_init resets it */
+static float max_weight(const fovpt_ctx *ctx)
+{
+    float w = 0.0f;
+    uint32_t n, k;
+    for (n = 0; n < ctx->lay.count; ++n)
+        for (k = 0; k < ctx->layer_nx[n] * ctx->layer_ny[n]; ++k)
+            if (ctx->layer_buf[n][4u * k + 3u] > w) w = ctx->layer_buf[n][4u * k + 3u];
+    return w;
+}
+static void test_set_gaze_margin(void)
+{
+    layers_fixture F;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default(), z, rc;
+    fovpt_ctx ctx, saved;
+    fovpt_output out;
+    size_t cb = 0;
+    void *cmem, *snap;
+    static float img[24 * 16 * 3];
+    fov_gaze g = { 12.0f, 8.0f };
+    float w0, w1, tr0[FOVPT_MAX_LAYERS];
+    fov_result r;
+    uint32_t n;
+    int grew = 1;
+    smooth_scene(&F, 0);
+    fovpt_camera_init(&cam, 24, 16);
+    cam.pos[2] = 0.0f; cam.target[2] = 1.0f;
+    c.method = FOVPT_METHOD_LAYERS;
+    c.accumulate = 1; /* a still view: the lattices add up frames */
+    fovpt_config_resolve(&c, &rc);
+    fovpt_memory_size(&c, &cam, &cb);
+    cmem = amalloc(cb);
+    snap = malloc(cb);
+    r = fovpt_init(&ctx, &c, &F.b.s, &cam, g, cmem, cb);
+    fovpt_output_init(&out);
+    out.rgb = img;
+    if (r == FOV_OK) r = fovpt_render(&ctx, 0, &out, NULL);
+    w0 = max_weight(&ctx);
+    for (n = 0; n < ctx.lay.count; ++n) tr0[n] = ctx.layer_trace_deg[n];
+    memcpy(snap, cmem, cb);
+    r = r == FOV_OK ? fovpt_set_gaze_margin(&ctx, &c, 2.0f) : r;
+    check(r == FOV_OK && memcmp(snap, cmem, cb) == 0,
+          "set_gaze_margin: OK, the lattices' accumulation untouched", "%d", (int)r);
+    for (n = 1; n < ctx.lay.count; ++n)
+        if (!(fabsf(ctx.cfg.layers.layer[n].radius_deg - rc.layers.layer[n].radius_deg - 2.0f) <
+                  1e-4f && ctx.layer_trace_deg[n] >= tr0[n] + 1.999f))
+            grew = 0;
+    check(grew && ctx.lay.count > 1u, "set_gaze_margin: layer radii and trace radii grow by it",
+          "count %u", ctx.lay.count);
+    fovpt_render(&ctx, 1, &out, NULL);
+    {
+        /* the lattice points traced before keep their samples; the grown radii trace more */
+        const float *a = (const float *)snap;
+        uint32_t kept = 1, before = 0, after = 0, k;
+        for (n = 0; n < ctx.lay.count; ++n) {
+            const float *b = ctx.layer_buf[n];
+            const float *a0 = a + (b - (const float *)cmem);
+            for (k = 0; k < ctx.layer_nx[n] * ctx.layer_ny[n]; ++k) {
+                if (a0[4u * k + 3u] > 0.0f) {
+                    before++;
+                    if (!(b[4u * k + 3u] > a0[4u * k + 3u])) kept = 0; /* added to */
+                }
+                if (b[4u * k + 3u] > 0.0f) after++;
+            }
+        }
+        w1 = max_weight(&ctx);
+        check(w0 > 0.0f && w1 >= w0 && kept && before > 0u && after > before,
+              "set_gaze_margin: traced points accumulate over it, the grown radii trace more",
+              "kept %u, points %u -> %u", kept, before, after);
+    }
+    /* errors leave the context as it was */
+    saved = ctx;
+    z = c; z.method = FOVPT_METHOD_ZONES;
+    check(fovpt_set_gaze_margin(&ctx, &z, 1.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &ctx, sizeof ctx) == 0, "set_gaze_margin: another method rejected", "-");
+    check(fovpt_set_gaze_margin(&ctx, &c, -1.0f) == FOV_ERR_INVALID_ARG &&
+          memcmp(&saved, &ctx, sizeof ctx) == 0, "set_gaze_margin: negative rejected", "-");
+    check(fovpt_set_gaze_margin(NULL, &c, 1.0f) == FOV_ERR_NULL, "set_gaze_margin: NULL", "-");
+    /* control: fovpt_init with the grown config (the old per-frame recipe) resets it */
+    fovpt_config_gaze_margin(&c, 2.0f, &z);
+    fovpt_init(&ctx, &z, &F.b.s, &cam, g, cmem, cb);
+    check(max_weight(&ctx) <= 0.0f, "set_gaze_margin: control, fovpt_init resets the lattices",
+          "%g", (double)max_weight(&ctx));
+    free(snap);
+    free(cmem);
+    free(F.b.mem);
+}
+
 /* ==== issue 10: F1 camera rays, F7 BVH box test, BVH = brute force on adversarial scenes === */
 /* the camera ray in double, from the documented model: f = normalize(target - pos), right =
    normalize(f x up), up' = right x f, image-plane offsets sx = tan_l + (tan_r - tan_l) x / w,
@@ -2563,6 +2656,7 @@ int main(void)
     test_layers();
     test_layers_tiny();
     test_set_view_atomic();
+    test_set_gaze_margin();
     test_zones();
     test_selective_rules();
     test_selective_render();

@@ -377,7 +377,7 @@ static void t_fields(void)
         char why[160] = "";
         double f, ppd;
         fovpt_camera_init(&oc, 800, 600);
-        oc.tan_left = 1.2f; oc.tan_right = 0.8f; oc.tan_top = 0.9f; oc.tan_bottom = 1.1f;
+        oc.tan_left = 1.2f; oc.tan_right = 1.4666667f; oc.tan_top = 0.9f; oc.tan_bottom = 1.1f; /* 4:3 */
         f = 600.0 / (0.9 + 1.1);
         ppd = f * 3.14159265358979 / 180.0;
         check(fovpt_config_acuity(&z, &oc, NULL) == FOV_OK && strides_ok(&z, Q0, ppd, why, 160) &&

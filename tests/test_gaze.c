@@ -279,6 +279,128 @@ static void test_pixels(void)
     check(fovpt_gaze_fixed(NULL, 0, 720, &g) == FOV_ERR_INVALID_ARG, "fixed_gaze_zero_size", "-");
 }
 
+/* review item: a pixel push that fails leaves the filter as it was, in every header. A pixel
+   at x = 1e12 is atan2(1e12, f) = pi/2 in float, i.e. exactly 90 degrees, which no pixel can
+   come back from: it is rejected before the filter sees it. */
+static void test_px_error_state(void)
+{
+    fov_ecc_model em;
+    fov_display d;
+    fov_gaze g, far_px, o;
+    fov_gaze_filter a, b, c, a0, b0, c0;
+    float deg[2];
+    fov_result r1, r2, r3;
+    uint32_t i;
+    memset(&d, 0, sizeof d);
+    d.fov_y_deg = 90.0f;
+    g.x = 640.0f; g.y = 360.0f;
+    fovsdf_ecc_init(&em, &d, 60.0f, 1280, 720, g);
+    fovsdf_gaze_filter_init(&a, NULL);
+    fovlp_gaze_filter_init(&b, NULL);
+    fovpt_gaze_filter_init(&c, NULL);
+    for (i = 0; i < 10; ++i) {
+        fovsdf_gaze_filter_push_px(&a, &em, 1000u + i * DT_US, g, &o);
+        fovlp_gaze_filter_push_px(&b, &em, 1000u + i * DT_US, g, &o);
+        fovpt_gaze_filter_push_px(&c, &em, 1000u + i * DT_US, g, &o);
+    }
+    a0 = a; b0 = b; c0 = c;
+    far_px.x = 1e12f; far_px.y = 360.0f;
+    o.x = o.y = -7.0f;
+    r1 = fovsdf_gaze_filter_push_px(&a, &em, 1000u + 10u * DT_US, far_px, &o);
+    r2 = fovlp_gaze_filter_push_px(&b, &em, 1000u + 10u * DT_US, far_px, &o);
+    r3 = fovpt_gaze_filter_push_px(&c, &em, 1000u + 10u * DT_US, far_px, &o);
+    check(r1 == FOV_ERR_INVALID_ARG && r2 == FOV_ERR_INVALID_ARG && r3 == FOV_ERR_INVALID_ARG,
+          "px_far_rejected", "%d %d %d", (int)r1, (int)r2, (int)r3);
+    check(same(&a, &a0) && same(&b, &b0) && same(&c, &c0), "px_far_state_unchanged", "-");
+    check(o.x >= -7.0f && o.x <= -7.0f && o.y >= -7.0f && o.y <= -7.0f, "px_far_out_untouched",
+          "%g %g", (double)o.x, (double)o.y);
+    check(fovsdf_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG &&
+          fovlp_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG &&
+          fovpt_gaze_to_deg(&em, far_px, deg) == FOV_ERR_INVALID_ARG, "to_deg_90_rejected", "-");
+    /* and a sample of exactly 90 degrees is rejected by the degree push too (no pixel maps
+       there, so the filtered gaze could not be turned back into pixels) */
+    r1 = fovsdf_gaze_filter_push(&a, 1000u + 10u * DT_US, 90.0f, 0.0f);
+    check(r1 == FOV_ERR_INVALID_ARG && same(&a, &a0), "push_90_rejected", "%d", (int)r1);
+    /* a good sample after the rejected ones is taken */
+    r1 = fovsdf_gaze_filter_push_px(&a, &em, 1000u + 10u * DT_US, g, &o);
+    check(r1 == FOV_OK && a.samples == a0.samples + 1u, "px_after_error_ok", "%d", (int)r1);
+}
+
+/* review item: the filter logs every rejected call once, with the code (the logger lives in
+   fov_gaze_filter_config, as in the three headers' configs) */
+typedef struct logrec { int calls; int32_t code; int level; char msg[200]; char tag[16]; } logrec;
+static void log_fn(const char *tag, uint32_t level, int32_t code, const char *msg, uint32_t line,
+                   void *user)
+{
+    logrec *l = (logrec *)user;
+    (void)line;
+    l->calls++;
+    l->code = code;
+    l->level = (int)level;
+    snprintf(l->msg, sizeof l->msg, "%s", msg ? msg : "");
+    snprintf(l->tag, sizeof l->tag, "%s", tag ? tag : "");
+}
+static void test_logger(void)
+{
+    fov_gaze_filter_config c = fovsdf_gaze_filter_config_default();
+    fov_gaze_filter f, g;
+    fov_ecc_model em;
+    fov_display d;
+    fov_gaze px, o;
+    logrec lr;
+    float m;
+    uint32_t i;
+    memset(&lr, 0, sizeof lr);
+    memset(&d, 0, sizeof d);
+    d.fov_y_deg = 90.0f;
+    px.x = 640.0f; px.y = 360.0f;
+    fovsdf_ecc_init(&em, &d, 60.0f, 1280, 720, px);
+    c.logger.func = log_fn;
+    c.logger.user = &lr;
+    c.beta = -0.5f;
+    check(fovlp_gaze_filter_init(&f, &c) == FOV_ERR_INVALID_ARG && lr.calls == 1 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG && lr.level == (int)FOV_LOG_ERROR &&
+          strcmp(lr.tag, "fovlp") == 0, "log_init_bad_beta", "calls %d code %d tag %s",
+          lr.calls, (int)lr.code, lr.tag);
+#ifndef FOV_NO_ERROR_STRINGS
+    check(strstr(lr.msg, "beta") && strstr(lr.msg, "(0: 0.3)"), "log_beta_message_default",
+          "\"%s\"", lr.msg);
+#endif
+    c.beta = 0.0f;
+    check(fovsdf_gaze_filter_init(&f, &c) == FOV_OK && lr.calls == 1, "log_init_ok_silent", "%d",
+          lr.calls);
+    for (i = 0; i < 5; ++i) fovsdf_gaze_filter_push(&f, 1000u + i * DT_US, 1.0f, 2.0f);
+    check(lr.calls == 1, "log_push_ok_silent", "%d", lr.calls);
+    g = f;
+    check(fovsdf_gaze_filter_push(&f, 1000u, 1.0f, 2.0f) == FOV_ERR_INVALID_ARG && lr.calls == 2 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG && same(&f, &g), "log_push_out_of_order",
+          "calls %d code %d", lr.calls, (int)lr.code);
+#ifndef FOV_NO_ERROR_STRINGS
+    check(strstr(lr.msg, "timestamp") != NULL, "log_push_message", "\"%s\"", lr.msg);
+#endif
+    check(fovpt_gaze_filter_push(&f, 9000000u, (float)NAN, 0.0f) == FOV_ERR_NOT_FINITE &&
+          lr.calls == 3 && lr.code == (int32_t)FOV_ERR_NOT_FINITE && strcmp(lr.tag, "fovpt") == 0,
+          "log_push_nan", "calls %d code %d", lr.calls, (int)lr.code);
+    check(fovsdf_gaze_filter_push(&f, 1000u + 4u * DT_US + 600000u, 1.0f, 2.0f) == FOV_ERR_LIMIT &&
+          lr.calls == 4 && lr.code == (int32_t)FOV_ERR_LIMIT, "log_push_gap", "calls %d",
+          lr.calls);
+    px.x = 1e12f;
+    check(fovlp_gaze_filter_push_px(&f, &em, 1000u + 5u * DT_US, px, &o) == FOV_ERR_INVALID_ARG &&
+          lr.calls == 5 && lr.code == (int32_t)FOV_ERR_INVALID_ARG, "log_push_px_far",
+          "calls %d", lr.calls);
+    check(fovsdf_gaze_filter_push_px(&f, NULL, 1000u + 5u * DT_US, px, &o) == FOV_ERR_NULL &&
+          lr.calls == 6 && lr.code == (int32_t)FOV_ERR_NULL, "log_push_px_null_m", "calls %d",
+          lr.calls);
+    check(fovpt_gaze_margin(&f, -1.0f, 50.0f, &m) == FOV_ERR_INVALID_ARG && lr.calls == 7 &&
+          lr.code == (int32_t)FOV_ERR_INVALID_ARG, "log_margin_bad_accuracy", "calls %d",
+          lr.calls);
+    check(fovsdf_gaze_margin(&f, 0.5f, (float)INFINITY, &m) == FOV_ERR_NOT_FINITE &&
+          lr.calls == 8 && lr.code == (int32_t)FOV_ERR_NOT_FINITE, "log_margin_inf_latency",
+          "calls %d", lr.calls);
+    check(fovsdf_gaze_margin(&f, 0.5f, 50.0f, &m) == FOV_OK && lr.calls == 8, "log_margin_ok",
+          "%d", lr.calls);
+}
+
 /* each header's config_gaze_margin */
 static void test_apply(void)
 {
@@ -376,6 +498,8 @@ int main(void)
     test_errors();
     test_margin();
     test_pixels();
+    test_px_error_state();
+    test_logger();
     test_apply();
     test_trace();
     return fovcheck_summary();

@@ -236,9 +236,14 @@ typedef struct fov_eye_plan {
    Mathematical Biosciences 1975), smooth pursuit stays below about 30 to 50 deg/s, and a
    tracker noise of 0.5 degrees RMS over a 20 ms window gives about 35 deg/s RMS of speed.
    Error checks leave the filter unchanged: a timestamp not after the previous one
-   (FOV_ERR_INVALID_ARG: out of order or a zero step), a step above max_dt_ms (FOV_ERR_LIMIT:
-   the tracker lost the eye; call _gaze_filter_reset, then push again), a NaN or infinite
-   sample (FOV_ERR_NOT_FINITE), an angle beyond +-90 degrees (FOV_ERR_INVALID_ARG). A blink
+   (FOV_ERR_INVALID_ARG: out of order or a zero step; a tracker clock that went back, e.g.
+   after a restart, needs _gaze_filter_reset too, or every later sample is rejected until the
+   clock passes the old one), a step above max_dt_ms (FOV_ERR_LIMIT: the tracker lost the
+   eye; call _gaze_filter_reset, then push again), a NaN or infinite
+   sample (FOV_ERR_NOT_FINITE), an angle of +-90 degrees or beyond (FOV_ERR_INVALID_ARG; a
+   pixel far enough off the axis rounds to 90 degrees and is rejected by _push_px and
+   _gaze_to_deg as well; _push_px changes the filter and *out only when the whole call,
+   the conversion back to pixels included, succeeds). A blink
    shorter than max_dt_ms needs nothing: push no samples while the tracker reports none.
 
    The margin (_gaze_margin), in degrees, which _config_gaze_margin adds to a config's
@@ -254,21 +259,31 @@ typedef struct fov_eye_plan {
    far the eye moves before the frame shows) and the smoothing's own lag 1 / (2 pi fc) behind
    a moving eye. During a saccade the output is the raw sample and the margin accuracy_deg +
    2.5 noise_deg: the eye sees next to nothing while it jumps (saccadic suppression), and the
-   fovea lands with it. The margin grows with the latency and with the output's speed.
+   fovea lands with it. The margin grows with the latency and with the output's speed,
+   except across a saccade onset: once the window speed passes saccade_deg_s the margin drops
+   to accuracy_deg + 2.5 noise_deg, so there it falls as the speed rises (monotone in the
+   speed only among non-saccade states, and in the latency always).
    bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
-                            [0, 10]; FOV_GAZE_BETA_NONE for 0                    0: 0.1 */
+                            (0, 10]; FOV_GAZE_BETA_NONE for none (a beta of 0)   0: 0.3 */
     float d_cutoff_hz;   /* cutoff of the velocity estimate, Hz, (0, 100]            0: 1 */
     float saccade_deg_s; /* saccade onset speed, deg/s, [20, 2000] (landing at half) 0: 100 */
     float window_ms;     /* the saccade detector's speed window, ms, [1, 100]        0: 20 */
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
+    fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
+                            _push, _push_px, _gaze_margin on the filter) calls it once with
+                            FOV_LOG_ERROR, the code and the message, as the configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
-#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window */
+#define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
+   needs window_ms x rate + 1 of them, so 32 cover the default 20 ms up to a tracker rate of
+   1.55 kHz; above it the window speed is taken over the oldest kept sample (31 sample steps,
+   a shorter span: the noise is divided by less and the detector fires more easily). Trackers
+   above about 1.5 kHz: lower the rate you push at (decimate) or shorten window_ms knowingly. */
 /* Fixed foveation for users without an eye tracker: the gaze at the display's axis point
    (the lens centre of an HMD, the screen centre of a monitor: _gaze_fixed) and the foveae
    grown by this many degrees (_config_gaze_margin): most natural saccades are 15 degrees or
@@ -973,7 +988,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
     else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
-        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] or FOV_GAZE_BETA_NONE");
+        *bad = FOV__MSG("gaze filter config: beta must be in (0, 10] (0: 0.3) or "
+                        "FOV_GAZE_BETA_NONE (no speed adaptation)");
     else if (!(c.d_cutoff_hz > 0.0f && c.d_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: d_cutoff_hz must be in (0, 100] (0: 1)");
     else if (!(c.saccade_deg_s >= 20.0f && c.saccade_deg_s <= 2000.0f))
@@ -1024,8 +1040,9 @@ FOV__PRIV fov_result fov__gaze_push(fov_gaze_filter *f, uint64_t t_us, float x, 
                         "samples)");
         return FOV_ERR_NOT_FINITE;
     }
-    if (!(fov__absf(x) <= 90.0f && fov__absf(y) <= 90.0f)) {
-        *bad = FOV__MSG("gaze_filter_push: sample beyond +-90 degrees");
+    if (!(fov__absf(x) < 90.0f && fov__absf(y) < 90.0f)) {
+        *bad = FOV__MSG("gaze_filter_push: sample at or beyond +-90 degrees (must be in "
+                        "(-90, 90))");
         return FOV_ERR_INVALID_ARG;
     }
     if (f->samples > 0u) {
@@ -1183,7 +1200,10 @@ FOV__PRIV int fov__gaze_to_deg(const fov_ecc_model *m, float x, float y, float d
     if (!fov__finite(dx) || !fov__finite(dy) || !(m->f_px > 0.0f)) return 0;
     d[0] = FOV__ATAN2(dx, m->f_px) / FOV__DEG;
     d[1] = FOV__ATAN2(dy, FOV__SQRT(dx * dx + m->f_px * m->f_px)) / FOV__DEG;
-    return fov__finite(d[0]) && fov__finite(d[1]);
+    /* a pixel far enough out rounds to exactly 90 degrees, which fov__gaze_from_deg (and the
+       filter) cannot take: the open interval (-90, 90) only */
+    return fov__finite(d[0]) && fov__finite(d[1]) && fov__absf(d[0]) < 90.0f &&
+           fov__absf(d[1]) < 90.0f;
 }
 FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float *x, float *y)
 {
@@ -1194,10 +1214,55 @@ FOV__PRIV int fov__gaze_from_deg(const fov_ecc_model *m, const float d[2], float
     *y = m->cy + m->f_px * FOV__TAN(v) / ch;
     return fov__finite(*x) && fov__finite(*y);
 }
+/* A pixel sample: converted, pushed into a copy of the filter and the filtered gaze turned
+   back into pixels; the filter (and *out) change only when all three succeed. */
+FOV__PRIV fov_result fov__gaze_push_px(fov_gaze_filter *f, const fov_ecc_model *m, uint64_t t_us,
+                                       fov_gaze raw, fov_gaze *out, const char **bad)
+{
+    fov_gaze_filter s;
+    fov_gaze g;
+    float d[2];
+    fov_result r;
+    *bad = FOV__MSG("");
+    if (!fov__finite(raw.x) || !fov__finite(raw.y)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample NaN or infinite (skip the tracker's "
+                        "invalid samples)");
+        return FOV_ERR_NOT_FINITE;
+    }
+    if (!fov__gaze_to_deg(m, raw.x, raw.y, d)) {
+        *bad = FOV__MSG("gaze_filter_push_px: sample at or beyond 90 degrees off the axis, or "
+                        "the eccentricity model is not initialised");
+        return FOV_ERR_INVALID_ARG;
+    }
+    s = *f;
+    r = fov__gaze_push(&s, t_us, d[0], d[1], bad);
+    if (r != FOV_OK) return r;
+    g.x = g.y = 0.0f;
+    if (out) {
+        d[0] = s.x_deg; d[1] = s.y_deg;
+        if (!fov__gaze_from_deg(m, d, &g.x, &g.y)) {
+            *bad = FOV__MSG("gaze_filter_push_px: the filtered gaze has no pixel (beyond 90 "
+                            "degrees)");
+            return FOV_ERR_INVALID_ARG;
+        }
+    }
+    *f = s;
+    if (out) *out = g;
+    return FOV_OK;
+}
+
+/* An off-axis frustum's tangents against the image: (l + r) / (b + t) = w / h within 1e-3
+   relative (square pixels: the headers use one scale for both axes); 0 when not. */
+FOV__PRIV int fov__tan_aspect_ok(float tl, float tr, float tb, float tt, uint32_t w, uint32_t h)
+{
+    float a = (tl + tr) * (float)h, b = (tb + tt) * (float)w;
+    return fov__absf(a - b) <= 1e-3f * b;
+}
 
 /* The display of a camera's own frustum (fov_display: f = H / (t + b), the axis at the image
    point of tangent 0); the camera's tangents, or the symmetric ones of fov_y_deg (0: 60).
-   FOV_ERR_* for bad fields. */
+   FOV_ERR_* for bad fields; FOV_ERR_UNSUPPORTED for tangents whose ratio is not the image's
+   aspect (fov__tan_aspect_ok). */
 FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 {
     float tl, tr, tb, tt, f, fy;
@@ -1219,6 +1284,7 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
     if (!(tl + tr > 1e-6f) || !(tb + tt > 1e-6f) || tl > 1e6f || tr > 1e6f || tb > 1e6f ||
         tt > 1e6f)
         return FOV_ERR_INVALID_ARG;
+    if (!fov__tan_aspect_ok(tl, tr, tb, tt, cam->width, cam->height)) return FOV_ERR_UNSUPPORTED;
     f = (float)cam->height / (tt + tb);
     d->fov_y_deg = 2.0f * FOV__ATAN2(0.5f * (float)cam->height, f) / FOV__DEG;
     d->axis_dx = tl * f - 0.5f * (float)cam->width;
