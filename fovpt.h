@@ -6919,6 +6919,9 @@ FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void)
     return c;
 }
 
+/* exact float equality without == (the library builds clean with -Wfloat-equal) */
+FOVPT__PRIV int fovpt__dn_feq(float a, float b) { return a <= b && a >= b; }
+
 FOVPT__PRIV int fovpt__dn_in(float v, float lo, float hi)
 {
     return fov__finite(v) && v > lo && v <= hi;
@@ -7058,7 +7061,7 @@ FOVPT__PRIV int fovpt__dn_phase_ok(const fovpt_denoise *dn, uint32_t y0, uint32_
     uint32_t y;
     for (y = y0; y < y1; ++y) {
         float m = *fovpt__dn_rowmark(dn, y);
-        if (!(m == ph - 1.0f || m == ph)) return 0;
+        if (!(fovpt__dn_feq(m, ph - 1.0f) || fovpt__dn_feq(m, ph))) return 0;
     }
     return 1;
 }
@@ -7227,7 +7230,7 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                                     if (!(q[8] > 0.0f) || !(fov__absf(q[8] - dist) <= tol) ||
                                         !(fov__dot(q + 9, nrm) >= dn->cfg.normal_cos))
                                         continue;
-                                } else if (!(q[8] == 0.0f)) {
+                                } else if (!fov__is0(q[8])) {
                                     continue;
                                 }
                                 for (k = 0; k < 7; ++k)
@@ -7435,7 +7438,7 @@ FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
     for (y = y0; y < y1; ++y)
-        if (!(*fovpt__dn_rowmark(dn, y) == 1.0f + (float)dn->passes))
+        if (!fovpt__dn_feq(*fovpt__dn_rowmark(dn, y), 1.0f + (float)dn->passes))
             FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                         "denoise_resolve_rows: a row has not finished the temporal phase and "
                         "every a-trous pass");
