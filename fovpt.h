@@ -3778,7 +3778,7 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
         for (j = 0; j < FOVPT__W; ++j) {
             if (j >= m) {
                 for (k = 0; k < 3; ++k) { q->b[k][j] = FLT_MAX; q->b[3 + k][j] = -FLT_MAX; }
-                q->child[j] = FOVPT__LEAF4; /* an empty leaf, never reached */
+                q->child[j] = FOVPT__LEAF4; /* an empty leaf (fovpt__leaf returns at once) */
                 continue;
             }
             for (k = 0; k < 6; ++k) q->b[k][j] = nodes[c[j]].b[k];
@@ -4319,6 +4319,9 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t 
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t blk, j;
+    /* an empty child of a 4-wide node (count 0, box inverted) is reached only when the box
+       test is widened to everything (a tmin of -inf after the direction's rescale) */
+    if (first >= end) return 0;
     for (blk = first >> 2; blk <= (end - 1u) >> 2; ++blk) {
         const float *q = s->leaf_tris + 36u * (size_t)blk;
         const uint32_t b0 = blk << 2, lo = first > b0 ? first - b0 : 0u,

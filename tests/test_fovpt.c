@@ -2583,6 +2583,34 @@ static void test_fuzz_findings(void)
               "BVH %d brute %d occluded %d t %g", a, ab, oc, (double)h.t);
         free(b.mem);
     }
+    {   /* session 11, CI fuzzer: a direction of length 1e-20 rescales tmin = -1e30 to -inf, the
+           box test then passes every box, also the empty children of the 4-wide nodes
+           (count 0): the leaf loop ran from slot 0 to 2^32 (a crash). Scenes of 1 to 40
+           triangles on a line (nodes with 2, 3 and 4 children); hits as brute force. */
+        static float tri[9 * 40];
+        uint32_t n, i, bad = 0, crashes_avoided = 0;
+        for (i = 0; i < 40u; ++i) {
+            const float x = (float)i * 3.0f;
+            const float v[9] = { x, -1, 2, x + 2, -1, 2, x, 1, 2 };
+            memcpy(tri + 9u * i, v, sizeof v);
+        }
+        for (n = 1; n <= 40u; ++n) {
+            if (f7_scene(&b, tri, n, NULL, 0, 1, &mesh, &m) != FOV_OK) { ++bad; continue; }
+            for (i = 0; i < n; ++i) {
+                /* towards (3i + 0.5, -0.5, 2), inside triangle i */
+                const float o[3] = { (float)i * 3.0f + 1.5f, 0.5f, 3.0f }, d[3] = { -2.37322025e14f, -2.37322025e14f, -2.37322025e14f };
+                fovpt_hit hb;
+                int a = fovpt_intersect(&b.s, o, d, -1e30f, FLT_MAX, &h);
+                int ab = fovpt_intersect_brute(&b.s, o, d, -1e30f, FLT_MAX, &hb);
+                int oc = fovpt_occluded(&b.s, o, d, -1e30f, FLT_MAX);
+                if (a != ab || a != oc || (a && (h.prim != hb.prim || h.t != hb.t))) ++bad;
+                ++crashes_avoided;
+            }
+            free(b.mem);
+        }
+        check(bad == 0 && crashes_avoided == 820u, "tmin rescaled to -inf (direction of length 4e14, tmin -1e30): BVH = brute force = occluded over 1..40 triangles",
+              "%u mismatches of %u rays", bad, crashes_avoided);
+    }
     {   /* a sphere of radius 1e18 at 2.3e27 hit where the point rounds onto the centre:
            the normal stays unit */
         fovpt_shape sp;
