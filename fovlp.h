@@ -1185,6 +1185,19 @@ FOVLP_API fov_result fovlp_srgb8_rows(const fovlp_ctx *ctx, const float *rgb, ui
 FOVLP_API fov_result fovlp_jitter(const fovlp_config *cfg, uint32_t phase, float *ou,
                                   float *ov);
 
+/* The documented limits (see the configuration macros above), defined here so that a
+   translation unit with the declarations alone can use them; give them the same value in
+   every translation unit. */
+#ifndef FOVLP_MAX_DIM
+#define FOVLP_MAX_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_LP_DIM
+#define FOVLP_MAX_LP_DIM 65536u
+#endif
+#ifndef FOVLP_MAX_SAMPLES
+#define FOVLP_MAX_SAMPLES 268435456u
+#endif
+
 #ifdef __cplusplus
 }
 #endif
@@ -2171,15 +2184,6 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #define FOVLP__FAIL(lg, r, msg) FOV__FAIL(lg, "fovlp", r, msg)
 
 
-#ifndef FOVLP_MAX_DIM
-#define FOVLP_MAX_DIM 65536u
-#endif
-#ifndef FOVLP_MAX_LP_DIM
-#define FOVLP_MAX_LP_DIM 65536u
-#endif
-#ifndef FOVLP_MAX_SAMPLES
-#define FOVLP_MAX_SAMPLES 268435456u
-#endif
 
 #define FOVLP__TWO_PI 6.28318530717959f
 #define FOVLP__GAZE_STEP_DEG 0.25f /* fovlp_set_gaze_margin rounds the margin up to this */

@@ -1656,6 +1656,29 @@ FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_
 /* Every phase on the whole image (after fovpt_denoise_frame). */
 FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *out);
 
+/* The documented limits (see the configuration macros above), defined here so that a
+   translation unit with the declarations alone can use them; give them the same value in
+   every translation unit. */
+#ifndef FOVPT_MAX_DIM
+#define FOVPT_MAX_DIM 65536u
+#endif
+#ifndef FOVPT_MAX_PRIMS
+#define FOVPT_MAX_PRIMS (1u << 26)
+#endif
+#if FOVPT_MAX_PRIMS > (1u << 26)
+#error \
+"fovpt: FOVPT_MAX_PRIMS above 2^26 (the 4-wide BVH packs a leaf's first primitive in 26 bits)"
+#endif
+#ifndef FOVPT_MAX_BVH_DEPTH
+#define FOVPT_MAX_BVH_DEPTH 64
+#endif
+#ifndef FOVPT_MAX_BOUNCES
+#define FOVPT_MAX_BOUNCES 1024u
+#endif
+#ifndef FOVPT_MAX_SPP
+#define FOVPT_MAX_SPP 65536u
+#endif
+
 #ifdef __cplusplus
 }
 #endif
@@ -2729,25 +2752,6 @@ typedef v128_t fovpt__m4;
 #define FOVPT__SSE (FOVPT__SIMD == 1)
 
 
-#ifndef FOVPT_MAX_DIM
-#define FOVPT_MAX_DIM 65536u
-#endif
-#ifndef FOVPT_MAX_PRIMS
-#define FOVPT_MAX_PRIMS (1u << 26)
-#endif
-#if FOVPT_MAX_PRIMS > (1u << 26)
-#error \
-"fovpt: FOVPT_MAX_PRIMS above 2^26 (the 4-wide BVH packs a leaf's first primitive in 26 bits)"
-#endif
-#ifndef FOVPT_MAX_BVH_DEPTH
-#define FOVPT_MAX_BVH_DEPTH 64
-#endif
-#ifndef FOVPT_MAX_BOUNCES
-#define FOVPT_MAX_BOUNCES 1024u
-#endif
-#ifndef FOVPT_MAX_SPP
-#define FOVPT_MAX_SPP 65536u
-#endif
 #ifndef FOVPT_MAX_WHITTED /* Whitted depth cap (the branch stack has 2x this many entries) */
 #define FOVPT_MAX_WHITTED 16u
 #endif

@@ -1896,6 +1896,19 @@ FOVSDF_API fov_result fovsdf_trace_ref(const fovsdf_scene *scene, const double r
                                        uint32_t *kind);
 #endif
 
+/* The documented limits (see the configuration macros above), defined here so that a
+   translation unit with the declarations alone can use them; give them the same value in
+   every translation unit. */
+#ifndef FOVSDF_MAX_STEPS
+#define FOVSDF_MAX_STEPS 65536u
+#endif
+#ifndef FOVSDF_MAX_DIM
+#define FOVSDF_MAX_DIM 65536u
+#endif
+#ifndef FOVSDF_MAX_STACK
+#define FOVSDF_MAX_STACK 32
+#endif
+
 #ifdef __cplusplus
 }
 #endif
@@ -2910,15 +2923,6 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #endif
 #define FOVSDF__FAIL(lg, r, msg) FOV__FAIL(lg, "fovsdf", r, msg)
 
-#ifndef FOVSDF_MAX_STEPS
-#define FOVSDF_MAX_STEPS 65536u
-#endif
-#ifndef FOVSDF_MAX_DIM
-#define FOVSDF_MAX_DIM 65536u
-#endif
-#ifndef FOVSDF_MAX_STACK
-#define FOVSDF_MAX_STACK 32
-#endif
 /* Points per batch callback and lanes of the batch evaluator; and rays in flight per render
    call (the wavefront). Both only set speed and stack (see MEMORY), never a value: 32 and 128
    on 64-bit CPUs, 16 and 32 elsewhere (wasm32, 32-bit ARM); FOVSDF_BATCH 1 evaluates a built-in

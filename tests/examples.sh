@@ -9,7 +9,31 @@ ok() { echo "PASS $1"; P=$((P + 1)); }
 bad() { echo "FAIL $1"; F=$((F + 1)); }
 CC=${CC:-gcc}
 W="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror"
-if $CC -std=c99 -O2 $W -I. examples/sdf_basic.c -lm -o build/examples/sdf_basic; then ok "sdf_basic builds with $W"; else bad "sdf_basic build"; fi
+WP="-D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror"
+# every program is compiled first, JOBS at a time; built NAME tells whether NAME compiled
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+pb() {
+    local name=$1 src=$2; shift 2
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
+    ( $CC -std=c99 -O2 "$@" -I. "$src" -lm -pthread -o "build/examples/$name" \
+          >"build/examples/$name.build.log" 2>&1; echo $? >"build/examples/$name.rc" ) &
+}
+built() {
+    if [ "$(cat "build/examples/$1.rc" 2>/dev/null)" = 0 ]; then return 0; fi
+    sed 's/^/    /' "build/examples/$1.build.log" | head -10
+    return 1
+}
+rm -f build/examples/*.rc
+pb sdf_basic examples/sdf_basic.c $W
+pb sdf_scenes examples/sdf_scenes.c $WP
+pb pt_basic examples/pt_basic.c $W
+pb bench_pt bench/bench_pt.c $WP
+pb sdf_stereo examples/sdf_stereo.c $W
+pb pt_stereo examples/pt_stereo.c $W
+pb lp_sdf examples/lp_sdf.c $W
+pb lp_pt examples/lp_pt.c $W
+wait
+if built sdf_basic; then ok "sdf_basic builds with $W"; else bad "sdf_basic build"; fi
 if [ -x build/examples/sdf_basic ] && build/examples/sdf_basic > build/examples/basic.ppm 2>/dev/null \
    && [ "$(head -c 15 build/examples/basic.ppm)" = "$(printf 'P6\n320 240\n255')" ] \
    && [ "$(stat -c %s build/examples/basic.ppm)" -eq $((15 + 320 * 240 * 3)) ]; then
@@ -17,7 +41,7 @@ if [ -x build/examples/sdf_basic ] && build/examples/sdf_basic > build/examples/
 else
     bad "sdf_basic output"
 fi
-if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. examples/sdf_scenes.c -lm -pthread -o build/examples/sdf_scenes; then
+if built sdf_scenes; then
     ok "sdf_scenes builds"
     out=$(build/examples/sdf_scenes --width 160 --height 90 --check --no-images 2>&1)
     echo "$out" | grep -E '^(PASS|FAIL)'
@@ -28,7 +52,7 @@ if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. examples
 else
     bad "sdf_scenes build"
 fi
-if $CC -std=c99 -O2 $W -I. examples/pt_basic.c -lm -o build/examples/pt_basic; then ok "pt_basic builds with $W"; else bad "pt_basic build"; fi
+if built pt_basic; then ok "pt_basic builds with $W"; else bad "pt_basic build"; fi
 if [ -x build/examples/pt_basic ] && build/examples/pt_basic > build/examples/pt_basic.ppm 2>/dev/null \
    && [ "$(head -c 15 build/examples/pt_basic.ppm)" = "$(printf 'P6\n640 360\n255')" ] \
    && [ "$(stat -c %s build/examples/pt_basic.ppm)" -eq $((15 + 640 * 360 * 3)) ]; then
@@ -36,7 +60,7 @@ if [ -x build/examples/pt_basic ] && build/examples/pt_basic > build/examples/pt
 else
     bad "pt_basic output"
 fi
-if $CC -std=c99 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -I. bench/bench_pt.c -lm -pthread -o build/examples/bench_pt; then
+if built bench_pt; then
     ok "bench_pt builds"
 else
     bad "bench_pt build"
@@ -45,7 +69,7 @@ fi
 # halves differ (each eye its own frustum, offset and gaze) and neither is blank
 for ex in "sdf_stereo 320 176" "pt_stereo 256 144"; do
     set -- $ex
-    if $CC -std=c99 -O2 $W -I. examples/$1.c -lm -o build/examples/$1; then ok "$1 builds with $W"; else bad "$1 build"; continue; fi
+    if built "$1"; then ok "$1 builds with $W"; else bad "$1 build"; continue; fi
     hdr=$(printf 'P6
 %s %s
 255' "$2" "$3")
@@ -65,7 +89,7 @@ PY
     fi
 done
 # fovlp + fovsdf: frames written, and frame 0 matches a full-resolution render in the gaze disc
-if $CC -std=c99 -O2 $W -I. examples/lp_sdf.c -lm -o build/examples/lp_sdf; then
+if built lp_sdf; then
     ok "lp_sdf builds with $W"
     rm -rf build/examples/lp; mkdir -p build/examples/lp
     for taa in "" "--no-taa"; do
@@ -82,7 +106,7 @@ else
     bad "lp_sdf build"
 fi
 # fovlp + fovpt: path tracing at the log-polar positions, TAA over frames, a PPM of the last
-if $CC -std=c99 -O2 $W -I. examples/lp_pt.c -lm -o build/examples/lp_pt; then
+if built lp_pt; then
     ok "lp_pt builds with $W"
     rm -f build/examples/lp_pt.ppm
     if out=$(build/examples/lp_pt --width 160 --height 120 --frames 3 --out build/examples/lp_pt.ppm 2>&1) \

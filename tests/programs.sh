@@ -14,10 +14,33 @@ bad() { echo "FAIL $1"; F=$((F + 1)); }
 CC=${CC:-gcc}
 STD="-std=c99 -D_POSIX_C_SOURCE=200809L -O0 -Wall -Wextra -Werror"
 
-# NAME SOURCE FLAGS...
+JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
+# the builds run JOBS at a time: build NAME DIR SOURCE FLAGS... compiles in DIR in the
+# background and leaves the exit status in DIR/NAME.rc
+build() {
+    local name=$1 dir=$2 src=$3; shift 3
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
+    ( cd "$dir" && $CC $STD "$src" -o "$name" "$@" -lm -pthread >"$name.build.log" 2>&1
+      echo $? >"$name.rc" ) &
+}
+R=$(pwd)
+for f in examples/*.c; do build "$(basename "$f" .c)" "$B" "$R/$f" -I"$R"; done
+for f in bench/*.c; do build "$(basename "$f" .c)" "$B" "$R/$f" -I"$R" -I"$R/bench"; done
+build heads_hashes "$B" "$R/tests/heads_hashes.c" -I"$R"
+build gen_images "$B" "$R/tests/flip_reference/gen_images.c" -I"$R/tests/common"
+build compare "$B" "$R/tests/xtarget/compare.c"
+# the examples copied out alone: the example with the fov headers and examples/*.h
+for f in examples/*.c; do
+    name=$(basename "$f" .c) d=$B/alone_$(basename "$f" .c)
+    mkdir -p "$d"; cp fov*.h examples/*.h "$f" "$d/"
+    build "$name" "$d" "$name.c"
+done
+wait
+
+# NAME: the program built above
 program() {
-    local name=$1 src=$2 out err rc; shift 2
-    if ! $CC $STD "$src" -o "$B/$name" "$@" -lm -pthread >"$B/$name.build.log" 2>&1; then
+    local name=$1 out err rc
+    if [ "$(cat "$B/$name.rc" 2>/dev/null)" != 0 ]; then
         bad "$name builds: $(head -3 "$B/$name.build.log" | tr '\n' ' ')"; return
     fi
     for h in --help -h; do
@@ -37,20 +60,19 @@ program() {
     fi
 }
 
-for f in examples/*.c; do program "$(basename "$f" .c)" "$f" -I.; done
-for f in bench/*.c; do program "$(basename "$f" .c)" "$f" -I. -Ibench; done
-program heads_hashes tests/heads_hashes.c -I.
-program gen_images tests/flip_reference/gen_images.c -Itests/common
-program compare tests/xtarget/compare.c
+for f in examples/*.c; do program "$(basename "$f" .c)"; done
+for f in bench/*.c; do program "$(basename "$f" .c)"; done
+program heads_hashes
+program gen_images
+program compare
 
 # the examples copied out alone
 for f in examples/*.c; do
     name=$(basename "$f" .c) d=$B/alone_$(basename "$f" .c)
-    mkdir -p "$d"; cp fov*.h examples/*.h "$f" "$d/"
-    if (cd "$d" && $CC $STD "$name.c" -o "$name" -lm -pthread >build.log 2>&1); then
+    if [ "$(cat "$d/$name.rc" 2>/dev/null)" = 0 ]; then
         ok "$name builds alone from the fov headers and examples/*.h"
     else
-        bad "$name does not build alone: $(head -3 "$d/build.log" | tr '\n' ' ')"
+        bad "$name does not build alone: $(head -3 "$d/$name.build.log" | tr '\n' ' ')"
     fi
 done
 echo "$P passed, $F failed"

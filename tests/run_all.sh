@@ -33,7 +33,7 @@ T0=$(date +%s)
 
 # selected NAME: true without T, or when NAME contains one of T's comma-separated patterns
 T=${T:-}
-SEL_LISTING= SEL_LAST_BUILD= SEL_BUILDS= SEL_ALL=()
+SEL_LISTING= SEL_LAST_BUILD= SEL_LAST_IMPL= SEL_BUILDS= SEL_ALL=()
 selected() {
     local pat
     [ -z "$T" ] && return 0
@@ -50,8 +50,10 @@ run_section() {
     local log=build/logs/$name.log t1 rc summary p f
     if [ -n "$SEL_LISTING" ]; then
         SEL_ALL+=("$name")
-        if selected "$name" && [ -n "$SEL_LAST_BUILD" ]; then SEL_BUILDS+=" $SEL_LAST_BUILD "; fi
-        SEL_LAST_BUILD=
+        if selected "$name" && [ -n "$SEL_LAST_BUILD" ]; then
+            SEL_BUILDS+=" $SEL_LAST_BUILD $SEL_LAST_IMPL "
+        fi
+        SEL_LAST_BUILD= SEL_LAST_IMPL=
         return 0
     fi
     selected "$name" || return 0
@@ -77,10 +79,22 @@ run_section() {
 # build_test NAME SOURCE FLAGS...: compile a test program; a compile failure is a failure.
 # The listing pass records every build; they are then compiled JOBS at a time (default: the
 # number of CPUs) before the first section runs, and build_test reads each one's exit status.
-SEL_CMDS=()
+SEL_CMDS=() SEL_CMDS_LATE=()
 build_test() {
     local name=$1 src=$2 rc; shift 2
-    if [ -n "$SEL_LISTING" ]; then SEL_LAST_BUILD=$name; SEL_CMDS+=("$name $src $*"); return 0; fi
+    if [ -n "$SEL_LISTING" ]; then
+        SEL_LAST_BUILD=$name
+        if [[ " $* " == *" -DFOV_TEST_LINK_IMPL "* ]]; then
+            # linked with an implementation archive (impl_archive): compiled after them
+            SEL_LAST_IMPL="$* "; SEL_LAST_IMPL=${SEL_LAST_IMPL##* build/tests/libfovimpl_}
+            SEL_LAST_IMPL=${SEL_LAST_IMPL%%.a *}
+            SEL_LAST_IMPL="fov_impl_sdf_$SEL_LAST_IMPL.o fov_impl_lp_$SEL_LAST_IMPL.o fov_impl_pt_$SEL_LAST_IMPL.o"
+            SEL_CMDS_LATE+=("$name $src $*")
+        else
+            SEL_CMDS+=("$name $src $*")
+        fi
+        return 0
+    fi
     if [ -n "$T" ] && [[ $SEL_BUILDS != *" $name "* ]]; then return 1; fi
     if [ -f "build/logs/build_$name.rc" ]; then
         rc=$(cat "build/logs/build_$name.rc")
@@ -108,31 +122,58 @@ JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror -ffp-contract=off"
 SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
+# The implementations of the three headers, compiled once per flavour (tests/common/
+# fov_impl_<h>.c; -c): the test programs that three_builds marks "link" are compiled with
+# -DFOV_TEST_LINK_IMPL (their file then holds only the declarations) and linked with the
+# flavour's archive build/tests/libfovimpl_<flavour>.a, made from these objects after the
+# first round of compiles (see the end of this file).
+IMPL_FLAGS_o2="-std=c99 -O2 $WARN -I. -Itests/common"
+IMPL_FLAGS_nolibm="-std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common"
+IMPL_FLAGS_san="-std=c99 $SAN -I. -Itests/common"
+impl_builds() {
+    local fl h v
+    for fl in o2 nolibm san; do
+        v=IMPL_FLAGS_$fl
+        for h in sdf lp pt; do
+            build_test "fov_impl_${h}_$fl.o" "tests/common/fov_impl_$h.c" -c ${!v}
+        done
+    done
+}
+
 suite() {
 # --- unit tests ---------------------------------------------------------------------------
-# three builds of each library test program: libm, FOV_NO_LIBM, sanitizers
+impl_builds
+# three builds of each library test program: libm, FOV_NO_LIBM, sanitizers. With a third
+# argument "link" the program links the implementations compiled once (impl_builds) instead
+# of compiling them itself: for programs that use only the public API with the default
+# configuration (the same code, compiled with the same flags, in another translation unit).
 three_builds() {
-    local name=$1 src=$2
-    if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common -lm; then
+    local name=$1 src=$2 lo= ln= ls=
+    if [ "${3:-}" = link ]; then
+        lo="-DFOV_TEST_LINK_IMPL build/tests/libfovimpl_o2.a"
+        ln="-DFOV_TEST_LINK_IMPL build/tests/libfovimpl_nolibm.a"
+        ls="-DFOV_TEST_LINK_IMPL build/tests/libfovimpl_san.a"
+    fi
+    if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common $lo -lm; then
         run_section "$name" "build/tests/test_$name"
     fi
-    if build_test "test_${name}_nolibm" "$src" -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common -lm; then
+    if build_test "test_${name}_nolibm" "$src" -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common $ln -lm; then
         run_section "${name}_nolibm" "build/tests/test_${name}_nolibm"
     fi
-    if build_test "test_${name}_san" "$src" -std=c99 $SAN -I. -Itests/common -lm; then
+    if build_test "test_${name}_san" "$src" -std=c99 $SAN -I. -Itests/common $ls -lm; then
         run_section "${name}_sanitizers" "build/tests/test_${name}_san"
     fi
 }
 three_builds unit_fovsdf tests/test_fovsdf.c
 three_builds scene_fovsdf tests/test_fovsdf_scene.c
 three_builds accel_fovsdf tests/test_fovsdf_accel.c
-three_builds contract_fovsdf tests/test_fovsdf_contract.c
+three_builds contract_fovsdf tests/test_fovsdf_contract.c link
 three_builds heads_fovsdf tests/test_fovsdf_heads.c
 three_builds props_fovsdf tests/test_fovsdf_props.c
 three_builds batch_fovsdf tests/test_fovsdf_batch.c
-three_builds wave_fovsdf tests/test_fovsdf_wave.c
+three_builds wave_fovsdf tests/test_fovsdf_wave.c link
 three_builds prune_fovsdf tests/test_fovsdf_prune.c
-three_builds acuity_fovsdf tests/test_fovsdf_acuity.c
+three_builds acuity_fovsdf tests/test_fovsdf_acuity.c link
 run_section wave_variants bash tests/wave_variants.sh
 three_builds naive_sdf tests/test_sdf_naive.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
@@ -140,38 +181,38 @@ if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG
     run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
 three_builds unit_fovpt tests/test_fovpt.c
-three_builds acuity_fovpt tests/test_fovpt_acuity.c
-three_builds points_fovpt tests/test_fovpt_points.c
-three_builds denoise_fovpt tests/test_fovpt_denoise.c
+three_builds acuity_fovpt tests/test_fovpt_acuity.c link
+three_builds points_fovpt tests/test_fovpt_points.c link
+three_builds denoise_fovpt tests/test_fovpt_denoise.c link
 # the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
 if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -I. -Itests/common -lm; then
     run_section unit_fovpt_nosimd build/tests/test_fovpt_nosimd
 fi
 # fovlp.h
 three_builds unit_fovlp tests/test_fovlp.c
-three_builds taa_fovlp tests/test_fovlp_taa.c
-three_builds numerics_fovlp tests/test_fovlp_numerics.c
-three_builds srgb8_fovlp tests/test_fovlp_srgb8.c
-three_builds acuity_fovlp tests/test_fovlp_acuity.c
+three_builds taa_fovlp tests/test_fovlp_taa.c link
+three_builds numerics_fovlp tests/test_fovlp_numerics.c link
+three_builds srgb8_fovlp tests/test_fovlp_srgb8.c link
+three_builds acuity_fovlp tests/test_fovlp_acuity.c link
 # all three headers through their public API as a hostile user (each case in a child process
 # under an alarm: a hang or a crash fails that case)
-three_builds api_stress tests/test_api_stress.c
+three_builds api_stress tests/test_api_stress.c link
 # each header's VERSION_STRING against its MAJOR/MINOR/PATCH macros and its first line
 three_builds versions tests/test_versions.c
 # the counters of the three headers: init functions, and counts that add up across calls
-three_builds stats tests/test_stats.c
+three_builds stats tests/test_stats.c link
 # line length budgets of the headers, and every FOV*__ macro tested by #if defined
 run_section style bash tests/style.sh
 # fov_camera: one type, the same defaults and handedness in the three headers, rays agree
 three_builds camera tests/test_camera.c
 # fov_eye: the shared eye model against Guenter et al. 2012, densities, plans, bad input
-three_builds eye tests/test_eye.c
+three_builds eye tests/test_eye.c link
 # fov_gaze_filter: One Euro filter with saccade reset, the latency margin, fixed foveation,
 # the gaze trace generator
-three_builds gaze tests/test_gaze.c
+three_builds gaze tests/test_gaze.c link
 # errors name the field and the rule, once per failure, in the default build (and with
 # FOV_NO_ERROR_STRINGS: the codes still logged, every message "")
-three_builds errors tests/test_errors.c
+three_builds errors tests/test_errors.c link
 if build_test test_errors_nostrings tests/test_errors.c -std=c99 -O2 $WARN -DFOV_NO_ERROR_STRINGS \
         -I. -Itests/common -lm; then
     run_section errors_nostrings build/tests/test_errors_nostrings
@@ -232,17 +273,32 @@ if [ -n "$T" ]; then
     fi
     echo "T=$T: $n of ${#SEL_ALL[@]} sections"
 fi
-# the test programs, JOBS compiles at a time (flags hold no quoted spaces: word splitting is safe)
-rm -f build/logs/build_*.rc
+# the test programs, JOBS compiles at a time (flags hold no quoted spaces: word splitting is
+# safe): first the implementations and the programs that compile their own, then the
+# implementation archives, then the programs linked with them
+rm -f build/logs/build_*.rc build/tests/libfovimpl_*.a
 nb=0
-for c in "${SEL_CMDS[@]}"; do
-    read -ra args <<<"$c"
-    if [ -n "$T" ] && [[ $SEL_BUILDS != *" ${args[0]} "* ]]; then continue; fi
-    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
-    prebuild_one "${args[@]}" &
-    nb=$((nb + 1))
+prebuild_all() {
+    local c args
+    for c in "$@"; do
+        read -ra args <<<"$c"
+        if [ -n "$T" ] && [[ $SEL_BUILDS != *" ${args[0]} "* ]]; then continue; fi
+        while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
+        prebuild_one "${args[@]}" &
+        nb=$((nb + 1))
+    done
+    wait
+}
+prebuild_all "${SEL_CMDS[@]}"
+for fl in o2 nolibm san; do
+    objs=()
+    for h in sdf lp pt; do
+        [ -f "build/logs/build_fov_impl_${h}_$fl.o.rc" ] && [ "$(cat "build/logs/build_fov_impl_${h}_$fl.o.rc")" = 0 ] &&
+            objs+=("build/tests/fov_impl_${h}_$fl.o")
+    done
+    [ ${#objs[@]} -eq 3 ] && ar rcs "build/tests/libfovimpl_$fl.a" "${objs[@]}"
 done
-wait
+prebuild_all "${SEL_CMDS_LATE[@]}"
 echo "built $nb test programs in $(( $(date +%s) - T0 )) s ($JOBS at a time)"
 suite
 

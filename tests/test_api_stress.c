@@ -13,7 +13,11 @@
  * Output: "PASS name" / "FAIL name: detail" per check, then "N passed, N failed".
  */
 #define _POSIX_C_SOURCE 200809L
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOV_IMPL
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"

@@ -11,9 +11,13 @@
 #ifdef FOV_DEBUG
 #error "test_errors checks the default build: compile it without FOV_DEBUG"
 #endif
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
 #define FOVLP_IMPLEMENTATION
 #define FOVPT_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"

@@ -6,7 +6,11 @@
    given by pixel pitch and distance, monotonicity in ppd and in the quality knob, a display
    coarser than the eye out to E that gets no reduction inside E, bad input, and the same
    answers from the three headers. Prints "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOV_IMPL
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"

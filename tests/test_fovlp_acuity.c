@@ -29,7 +29,11 @@
      config, a display coarser than the eye everywhere) rejected with its code, logged once,
      *cfg untouched.
    Prints one line per check and "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVLP_IMPLEMENTATION
+#endif
 #include "fovlp.h"
 
 #include <float.h>

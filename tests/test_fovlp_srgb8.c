@@ -9,7 +9,11 @@
    NaNs); fovlp_srgb8_rows with 3 and 4 channels, strides, row splits, untouched bytes
    outside the rows, and every rejected argument (with a logged message).
    Prints one line per check and "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVLP_IMPLEMENTATION
+#endif
 #include "fovlp.h"
 #include "fovcheck.h"
 

@@ -5,7 +5,11 @@
    moving, neighbourhood clamp. Built three ways by tests/run_all.sh.
    "The thesis": K. Andersson, T. Hansson, "Performance Optimizations for Foveated Real-Time
    Raytracing", master's thesis, Lund University, LU-CS-EX 2020-64, 2020. */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVLP_IMPLEMENTATION
+#endif
 #include "fovlp.h"
 
 #include <math.h>

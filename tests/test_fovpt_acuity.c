@@ -16,7 +16,11 @@
  * the code under test. Kim et al. 2021 (Y. Kim, Y. Ko, I. Ihm, "Selective Foveated Ray Tracing
  * for Head-Mounted Displays", ISMAR 2021) give the selective borders 3.3, 5.5, 12.1, 30, 45.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVPT_IMPLEMENTATION
+#endif
 #include "fovpt.h"
 #include "fovcheck.h"
 

@@ -13,9 +13,15 @@
  * sample order) and its depth by fovpt_intersect; the constant scenes' expected colour is the
  * emission or background the test sets. Bad input: the codes and the logger's codes.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVPT_IMPLEMENTATION
+#endif
 #include "fovpt.h"
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVLP_IMPLEMENTATION
+#endif
 #include "fovlp.h"
 #include "fovcheck.h"
 #include "examples/pt_scenes.h"

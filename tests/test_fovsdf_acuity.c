@@ -28,7 +28,11 @@
  *      refinement, the cost monotone in each threshold, nearer full resolution, bad values
  *      rejected with code and message.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
 #include "fovcheck.h"
 

@@ -13,7 +13,11 @@
  * values come from double-precision arithmetic here (normalised vectors, analytic plane and
  * sphere distances and hits), never from the library.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
 #include "fovcheck.h"
 

@@ -5,7 +5,11 @@
    FOVSDF_BATCH, FOVSDF_WAVE and FOVSDF_NO_SIMD (built with WAVE_HASH_ONLY: the hashes only).
    A quarter of the scene and method pairs render with config.shadow_fov_deg (cheaper shadow
    rays beyond an eccentricity), whose choice per ray must not depend on the path either. */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
 #include "fovcheck.h"
 

@@ -3,7 +3,11 @@
    and fovpt.h, and the gaze trace generator (bench/gaze_trace.h). Expected values are
    worked out here from the stated rules (a still input, a step, Gaussian noise of known RMS,
    a ramp), never taken from the code under test. Prints "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOV_IMPL
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"

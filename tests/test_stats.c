@@ -11,7 +11,11 @@
    fovsdf: two renders give twice one render (rays = pixels); fovsdf_stats_add sums.
    fovlp: two TAA resolves give pixels = 2 W H. Prints one line per check and
    "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOV_IMPL
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"

@@ -1,0 +1,6 @@
+/* fov_impl_pt.c - fovpt.h's implementation alone, compiled once per build flavour (libm,
+   FOV_NO_LIBM, sanitizers) by tests/run_all.sh and linked into the test programs built with
+   -DFOV_TEST_LINK_IMPL, which then compile only the declarations: the suite compiles each
+   implementation three times instead of three times per test program. */
+#define FOVPT_IMPLEMENTATION
+#include "fovpt.h"
