@@ -57,9 +57,16 @@ run_section() {
         return 0
     fi
     selected "$name" || return 0
+    flush_bg
     t1=$(date +%s)
     "$@" >"$log" 2>&1
     rc=$?
+    report_section "$name" "$rc" $(( $(date +%s) - t1 ))
+}
+
+# report_section NAME STATUS SECONDS: the section's FAIL/SKIP lines and summary from its log
+report_section() {
+    local name=$1 rc=$2 secs=$3 log=build/logs/$1.log summary p f
     summary=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -1)
     if [ -z "$summary" ]; then
         p=0; f=1
@@ -71,9 +78,35 @@ run_section() {
         if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; echo "FAIL [$name] exit status $rc"; fi
         grep -E '^(FAIL|SKIP)' "$log" | sed "s/^/  [$name] /"
     fi
-    echo "[$name] $p passed, $f failed ($(( $(date +%s) - t1 )) s)"
+    echo "[$name] $p passed, $f failed ($secs s)"
     TOTAL_P=$((TOTAL_P + p))
     TOTAL_F=$((TOTAL_F + f))
+}
+
+# run_bg NAME COMMAND...: run_section for a test program that writes no file: it runs in the
+# background, JOBS at a time, and its summary is printed in order by flush_bg, which the next
+# run_section (and the end of the suite) calls first.
+BG_NAMES=()
+run_bg() {
+    local name=$1; shift
+    if [ -n "$SEL_LISTING" ]; then run_section "$name" "$@"; return 0; fi
+    selected "$name" || return 0
+    while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
+    rm -f "build/logs/$name.bg"
+    ( t1=$(date +%s); "$@" >"build/logs/$name.log" 2>&1
+      echo "$? $(( $(date +%s) - t1 ))" >"build/logs/$name.bg" ) &
+    BG_NAMES+=("$name")
+}
+flush_bg() {
+    local name rc secs
+    [ ${#BG_NAMES[@]} -eq 0 ] && return 0
+    wait
+    for name in "${BG_NAMES[@]}"; do
+        rc=1 secs=0
+        [ -f "build/logs/$name.bg" ] && read -r rc secs <"build/logs/$name.bg"
+        report_section "$name" "$rc" "$secs"
+    done
+    BG_NAMES=()
 }
 
 # build_test NAME SOURCE FLAGS...: compile a test program; a compile failure is a failure.
@@ -155,13 +188,13 @@ three_builds() {
         ls="-DFOV_TEST_LINK_IMPL build/tests/libfovimpl_san.a"
     fi
     if build_test "test_$name" "$src" -std=c99 -O2 $WARN -I. -Itests/common $lo -lm; then
-        run_section "$name" "build/tests/test_$name"
+        run_bg "$name" "build/tests/test_$name"
     fi
     if build_test "test_${name}_nolibm" "$src" -std=c99 -O2 $WARN -DFOV_NO_LIBM -I. -Itests/common $ln -lm; then
-        run_section "${name}_nolibm" "build/tests/test_${name}_nolibm"
+        run_bg "${name}_nolibm" "build/tests/test_${name}_nolibm"
     fi
     if build_test "test_${name}_san" "$src" -std=c99 $SAN -I. -Itests/common $ls -lm; then
-        run_section "${name}_sanitizers" "build/tests/test_${name}_san"
+        run_bg "${name}_sanitizers" "build/tests/test_${name}_san"
     fi
 }
 three_builds unit_fovsdf tests/test_fovsdf.c
@@ -178,7 +211,7 @@ run_section wave_variants bash tests/wave_variants.sh
 three_builds naive_sdf tests/test_sdf_naive.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
-    run_section fov_cells_sanitizers build/tests/test_fovsdf_cells
+    run_bg fov_cells_sanitizers build/tests/test_fovsdf_cells
 fi
 three_builds unit_fovpt tests/test_fovpt.c
 three_builds acuity_fovpt tests/test_fovpt_acuity.c link
@@ -186,7 +219,7 @@ three_builds points_fovpt tests/test_fovpt_points.c link
 three_builds denoise_fovpt tests/test_fovpt_denoise.c link
 # the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
 if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -I. -Itests/common -lm; then
-    run_section unit_fovpt_nosimd build/tests/test_fovpt_nosimd
+    run_bg unit_fovpt_nosimd build/tests/test_fovpt_nosimd
 fi
 # fovlp.h
 three_builds unit_fovlp tests/test_fovlp.c
@@ -215,7 +248,7 @@ three_builds gaze tests/test_gaze.c link
 three_builds errors tests/test_errors.c link
 if build_test test_errors_nostrings tests/test_errors.c -std=c99 -O2 $WARN -DFOV_NO_ERROR_STRINGS \
         -I. -Itests/common -lm; then
-    run_section errors_nostrings build/tests/test_errors_nostrings
+    run_bg errors_nostrings build/tests/test_errors_nostrings
 fi
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
 run_section shared bash tests/shared.sh
@@ -302,6 +335,7 @@ prebuild_all "${SEL_CMDS_LATE[@]}"
 echo "built $nb test programs in $(( $(date +%s) - T0 )) s ($JOBS at a time)"
 suite
 
+flush_bg
 echo "suite took $(( $(date +%s) - T0 )) s"
 echo "$TOTAL_P passed, $TOTAL_F failed"
 [ "$TOTAL_F" -eq 0 ]
