@@ -37,7 +37,7 @@ BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
         bench-sdf-all bench-lp bench-pt bench-pt-throughput bench-sdf-acuity bench-perceptual bench-gaze clean install \
-        web web-serve bench-web bench-web-native web-screenshot
+        web web-serve bench-web bench-web-native web-screenshot bench-pt-wasm
 
 all: examples
 
@@ -273,3 +273,20 @@ bench-web-native: web
 	node examples/web/node_bench.mjs $(BUILD)/web simd >> bench/results/web_native.csv
 	node examples/web/node_bench.mjs $(BUILD)/web scalar >> bench/results/web_native.csv
 	cat bench/results/web_native.csv
+
+# fovpt closest-hit Mrays/s on the same rays: native gcc (SSE2 and FOVPT_NO_SIMD, libm) and
+# the browser demo's wasm32 builds (scalar and SIMD128, FOV_NO_LIBM) in node, interleaved
+# (bench/pt_rays.c, bench/pt_rays.mjs; a few seconds)
+WASM_FLAGS := --target=wasm32 -std=c99 -O2 -ffp-contract=off -ffreestanding -nostdlib \
+	-Wall -Wextra -Wshadow -Wdouble-promotion -Werror -Wl,--no-entry -Wl,--strip-all \
+	-Wl,-z,stack-size=1048576
+bench-pt-wasm: WASM_FLAGS += -Wno-unused-function
+bench-pt-wasm: WARN += -Wno-unused-function
+bench-pt-wasm:
+	@mkdir -p $(BUILD)/ptw
+	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE bench/pt_rays.c -lm -o $(BUILD)/ptw/rays_native
+	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE -DFOVPT_NO_SIMD bench/pt_rays.c -lm \
+	    -o $(BUILD)/ptw/rays_native_scalar
+	clang $(WASM_FLAGS) bench/pt_rays.c -o $(BUILD)/ptw/rays.wasm
+	clang $(WASM_FLAGS) -msimd128 bench/pt_rays.c -o $(BUILD)/ptw/rays.simd.wasm
+	nice node bench/pt_rays.mjs $(BUILD)/ptw

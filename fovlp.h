@@ -1268,7 +1268,13 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 #define FOV__POW(x, y) FOV_POWF(x, y)
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
-   ranges the library uses; tests/test_fovsdf.c checks them against libm). */
+   ranges the library uses; tests/test_fovsdf.c checks them against libm). The square root
+   and floor are the target's own instructions where it has them for certain, which need no
+   libm (FOV__SQRT_HW: 1 x86 SSE sqrtss, 2 AArch64 fsqrt, 3 32-bit Arm VFP vsqrt.f32, 4 wasm
+   f32.sqrt): correctly rounded, the value libm's sqrtf gives. Elsewhere (x87-only x86,
+   Cortex-M0/M3, RISC-V, MSVC on Arm...) the software versions below. __builtin_sqrtf is
+   not used outside wasm: gcc keeps a call to sqrtf for negative inputs (errno) unless
+   -fno-math-errno, and a target without the instruction always calls sqrtf. */
 #define FOV__SQRT(x) fov__sqrtf(x)
 #define FOV__FLOOR(x) fov__floorf(x)
 #define FOV__SIN(x) fov__sinf(x)
@@ -1279,13 +1285,30 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 #define FOV__LOG(x) fov__logf(x)
 #define FOV__POW(x, y) fov__powf(x, y)
 
+#if defined(__wasm__) && defined(__clang__)
+#define FOV__SQRT_HW 4
+#elif defined(__SSE__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1)
+#define FOV__SQRT_HW 1
+#include <xmmintrin.h>
+#elif defined(__aarch64__) && defined(__GNUC__)
+#define FOV__SQRT_HW 2
+#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+#define FOV__SQRT_HW 3
+#endif
+
 typedef union fov__bits { float f; uint32_t u; } fov__bits;
 
 FOV__PRIV float fov__sqrtf(float x)
 {
-#if defined(__wasm__) && defined(__clang__)
-    return __builtin_sqrtf(x); /* one f32.sqrt instruction */
-#elif defined(__ARM_FP) && (__ARM_FP & 4) && defined(__GNUC__) && !defined(__aarch64__)
+#if defined(FOV__SQRT_HW) && FOV__SQRT_HW == 4
+    return __builtin_sqrtf(x); /* one f32.sqrt instruction (clang's wasm32 has no errno) */
+#elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 1
+    return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))); /* sqrtss */
+#elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 2
+    float r;
+    __asm__("fsqrt %s0, %s1" : "=w"(r) : "w"(x));
+    return r;
+#elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 3
     float r;
     __asm__("vsqrt.f32 %0, %1" : "=t"(r) : "t"(x));
     return r;

@@ -2787,6 +2787,24 @@ static void test_nolibm_math(void)
         w = dmax(w, fabs((double)fov__sqrtf(x) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_sqrt_rel_1e-6", "max relative error %.3g on [1e-30, 1e30]", w);
+#ifdef FOV__SQRT_HW
+    {   /* the target's square root instruction: libm's correctly rounded value, bit for bit,
+           on every 997th float bit pattern (subnormals, infinities and NaNs included) */
+        uint32_t u, bad = 0, first = 0;
+        for (u = 0; u < 0xFFFFFFFFu - 997u; u += 997u) {
+            float xs, a, b;
+            uint32_t ua, ub;
+            memcpy(&xs, &u, 4);
+            a = fov__sqrtf(xs);
+            b = sqrtf(xs);
+            memcpy(&ua, &a, 4);
+            memcpy(&ub, &b, 4);
+            if (ua != ub && !(isnan(a) && isnan(b))) { if (!bad) first = u; bad++; }
+        }
+        check(bad == 0, "nolibm_sqrt_hw_exact", "%u bit patterns differ from sqrtf (first 0x%08x); FOV__SQRT_HW %d",
+              (unsigned)bad, (unsigned)first, (int)FOV__SQRT_HW);
+    }
+#endif
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         x = (float)(-20.0 + 40.0 * i / 100000.0);
