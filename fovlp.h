@@ -690,9 +690,15 @@ typedef struct fov_eye_plan {
    instead covers the eye's whole travel around the filtered gaze). A least-squares line
    x(t) = p + v t (both axes, t relative to the newest sample) is fitted to the raw samples
    since the last reset or saccade landing, at most predict_ms old and at most
-   FOV_GAZE_HISTORY of them (n samples, times t_i with mean tm and S = sum (t_i - tm)^2; the
-   residual s^2 = sum of both axes' squared residuals / (2 (n - 2)), the noise per axis the
-   tracker's data show, fixational drift and any curvature included). With
+   FOV_GAZE_HISTORY of them, and cut to its newer half while the motion changed within it:
+   the mean of the newest quarter lies off the line through the older samples by more than
+   3.03 times its standard error (the eye stopped or started), or one line per half fits
+   better than one line for all (Chow's test, F(4, 2 (n - 4)) beyond about its 1 % point:
+   a small saccade the speed threshold missed). n samples, times t_i with mean tm and
+   S = sum (t_i - tm)^2; the residual s^2 = sum of both axes' squared residuals /
+   (2 (n - 2)), the noise per axis the tracker's data show (fixational drift and any
+   curvature included: the noise term is measured, not assumed; at least 1e-4 degrees, the
+   float rounding of noiseless input). With
    h = latency_ms / 1000 - tm (seconds from the fitted samples' mean time to the frame):
      pursuit (mode FOV_GAZE_PURSUIT): the fitted speed |v| is above 3.03 times its standard
        error s / sqrt(S) per axis (a still eye exceeds it in 1 % of fits: chi-square, two
@@ -707,8 +713,9 @@ typedef struct fov_eye_plan {
                     sqrt(S)) h
        (a speed too small to extrapolate still widens the margin by the travel it gives).
      settling (FOV_GAZE_SETTLING): fewer than FOV_GAZE_FIT_MIN samples since the reset or
-       landing, or spanning less than FOV_GAZE_FIT_MIN_MS: the filtered gaze and
-       _gaze_margin's margin. Never extrapolated: a fresh landing does not overshoot.
+       landing (or in the cut window), or spanning less than FOV_GAZE_FIT_MIN_MS: the
+       filtered gaze and _gaze_margin's margin. Never extrapolated: a fresh landing does
+       not overshoot (the fit sees only samples after it).
      saccade (FOV_GAZE_SACCADE): the raw sample and _gaze_margin's saccade margin
        (accuracy_deg + 2.5 noise_deg): the fovea lands with the eye.
    The margin is capped at max_margin_deg; the extrapolation is not bounded otherwise (|v| <
@@ -717,7 +724,10 @@ typedef struct fov_eye_plan {
    (32 samples: 160 Hz at the default 200 ms) and extrapolates less often (a noisier
    velocity); decimate to a lower rate to keep the span. Use the centre as the frame's gaze
    (_gaze_from_deg for pixels) and the margin as _config_gaze_margin's / _set_gaze_margin's.
-   The filtered gaze (x_deg, y_deg) and _gaze_margin stay as they were. */
+   The filtered gaze (x_deg, y_deg) and _gaze_margin stay as they were. What the prediction
+   cannot know: a pursuit that starts or stops within the latency (the samples that would
+   show it arrive after the frame); there the error is up to the speed times the latency,
+   outside the margin. bench/README.md gives the measured cost and coverage. */
 #define FOV_GAZE_FIT_MIN 8           /* samples before _gaze_predict fits (else: settling) */
 #define FOV_GAZE_FIT_MIN_MS 40.0f    /* and their span, milliseconds */
 typedef enum fov_gaze_mode {
@@ -2134,6 +2144,9 @@ FOV__PRIV fov_result fov__gaze_margin(const fov_gaze_filter *f, float accuracy_d
 /* The least-squares line through ring samples off .. off + n - 1 counted back from the newest
    (t relative to the newest sample, seconds): the means, S, the velocity and the sum of both
    axes' squared residuals. */
+/* The least residual variance the fit assumes, deg^2 per axis (1e-4 degrees RMS: float
+   rounding of noiseless input is not a change of motion) */
+#define FOV__GAZE_S2_MIN 1e-8f
 typedef struct fov__gaze_line {
     float tm, xm, ym, sxx, vx, vy, ssr;
 } fov__gaze_line;
@@ -2222,17 +2235,20 @@ FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_
         q = a.tm - b.tm;
         ex = a.xm - b.xm - b.vx * q;
         ey = a.ym - b.ym - b.vy * q;
-        vq = b.ssr / (2.0f * (float)(n - m4 - 2u)) *
+        vq = b.ssr / (2.0f * (float)(n - m4 - 2u));
+        vq = (vq > FOV__GAZE_S2_MIN ? vq : FOV__GAZE_S2_MIN) *
              (1.0f / (float)m4 + 1.0f / (float)(n - m4) + (b.sxx > 0.0f ? q * q / b.sxx : 0.0f));
         if (ex * ex + ey * ey > 9.21f * vq) { n /= 2u; continue; }
         fov__gaze_fit(f, 0u, n / 2u, &a);
         fov__gaze_fit(f, n / 2u, n - n / 2u, &b);
-        pooled = a.ssr + b.ssr;
         dof = 2.0f * (float)(n - 4u);
-        if (!((l.ssr - pooled) * dof > (3.32f + 30.0f / dof) * 4.0f * pooled)) break;
+        pooled = (a.ssr + b.ssr) / dof;
+        if (pooled < FOV__GAZE_S2_MIN) pooled = FOV__GAZE_S2_MIN;
+        if (!(l.ssr - a.ssr - b.ssr > (3.32f + 30.0f / dof) * 4.0f * pooled)) break;
         n /= 2u;
     }
     s2 = l.ssr / (2.0f * (float)(n - 2u));
+    if (s2 < FOV__GAZE_S2_MIN) s2 = FOV__GAZE_S2_MIN;
     se2 = s2 / l.sxx; /* the velocity's variance per axis */
     v2 = l.vx * l.vx + l.vy * l.vy;
     h = latency_ms * 1e-3f - l.tm;
