@@ -1092,6 +1092,10 @@ FOVLP_API fov_result fovlp_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovlp_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovlp_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
+      // or latency-compensated (the fovea where the eye is when the frame is seen):
+      //   fov_gaze_prediction pr;  fovlp_gaze_predict(&gf, 0.5f, 50.0f, &pr);
+      //   float d[2] = { pr.x_deg, pr.y_deg };  fovlp_gaze_from_deg(&ecc, d, &gaze);
+      //   m = pr.margin_deg;
       fovlp_set_gaze_margin(&ctx, &base_cfg, m);           // then fovlp_begin_frame, render
    where ctx was initialised once with fovlp_config_gaze_margin(&base_cfg, gf.cfg.max_margin_deg,
    &cfg) (the room for the largest margin; a per-frame fovlp_init would reset the TAA history).
@@ -2270,6 +2274,7 @@ FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_
         /* an extrapolation off the gaze angles' range: the filtered gaze and the cap */
         p.x_deg = f->x_deg; p.y_deg = f->y_deg;
         p.mode = FOV_GAZE_SETTLING; p.horizon_s = 0.0f;
+        p.vx = p.vy = 0.0f; p.n = 0u;
         m = cap;
     }
     p.margin_deg = m < cap ? m : cap; /* NaN: the cap */

@@ -710,6 +710,16 @@ static void test_predict_errors(void)
     r = fovsdf_gaze_predict(&g, 0.5f, 50.0f, &p);
     check(r == FOV_OK && p.mode == FOV_GAZE_SETTLING && p.margin_deg >= 15.0f,
           "predict_no_samples_cap", "%d %g", (int)r, (double)p.margin_deg);
+    /* a pursuit extrapolated past 90 degrees: the filtered gaze and the cap, not an angle the
+       gaze angles cannot hold */
+    fovsdf_gaze_filter_init(&g, NULL);
+    for (i = 0; i < 8; ++i) /* 88 .. 89.75 degrees at 30 deg/s, then 100 ms ahead */
+        fovsdf_gaze_filter_push(&g, i * DT_US, 88.0f + 30.0f * (float)i / 120.0f, 0.0f);
+    r = fovsdf_gaze_predict(&g, 0.5f, 100.0f, &p);
+    check(r == FOV_OK && p.mode == FOV_GAZE_SETTLING && p.margin_deg >= 15.0f &&
+              p.x_deg >= g.x_deg && p.x_deg <= g.x_deg && p.x_deg < 90.0f,
+          "predict_beyond_90_falls_back", "%d mode %d x %g m %g", (int)r, (int)p.mode,
+          (double)p.x_deg, (double)p.margin_deg);
     /* the window's config field */
     c = fovsdf_gaze_filter_config_default();
     check(c.predict_ms >= 200.0f && c.predict_ms <= 200.0f, "predict_ms_default_200", "%g",

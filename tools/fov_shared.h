@@ -1390,6 +1390,7 @@ FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_
         /* an extrapolation off the gaze angles' range: the filtered gaze and the cap */
         p.x_deg = f->x_deg; p.y_deg = f->y_deg;
         p.mode = FOV_GAZE_SETTLING; p.horizon_s = 0.0f;
+        p.vx = p.vy = 0.0f; p.n = 0u;
         m = cap;
     }
     p.margin_deg = m < cap ? m : cap; /* NaN: the cap */
