@@ -11,8 +11,8 @@
 #                bench-pt: fovpt methods per visual field, bench/results/pt.csv;
 #                bench-perceptual: the three headers' savings at equal perceived quality per
 #                          display, bench/results/perceptual.csv; BENCH_ARGS=--quick);
-#                bench-gaze: the gaze filter and latency margin on generated gaze traces,
-#                          bench/results/gaze.csv (under a second);
+#                bench-gaze: the gaze filter, margin and prediction on generated gaze traces,
+#                          bench/results/gaze.csv (about a second);
 #                make bench-sdf FULL=1 / bench-lp FULL=1 / bench-pt FULL=1 run the whole grid;
 #                make bench-sdf-native / bench-sdf-nosimd add rows of a -march=native and a
 #                FOVSDF_NO_SIMD build to sdf.csv, bench-sdf-all runs the three builds

@@ -626,7 +626,7 @@ RECENT REVISION HISTORY
    failure calls it with a code, a specific message and the header's source line. */
 #ifndef FOV_SHARED_DECL_INCLUDED
 #define FOV_SHARED_DECL_INCLUDED 1
-#define FOV_SHARED_REVISION 4 /* the revision of this block; headers that differ must not mix */
+#define FOV_SHARED_REVISION 5 /* the revision of this block; headers that differ must not mix */
 
 #include <stddef.h>
 #include <stdint.h>
@@ -861,7 +861,70 @@ typedef struct fov_eye_plan {
    except across a saccade onset: once the window speed passes saccade_deg_s the margin drops
    to accuracy_deg + 2.5 noise_deg, so there it falls as the speed rises (monotone in the
    speed only among non-saccade states, and in the latency always).
-   bench/README.md (make bench-gaze) gives what it costs and buys on generated traces. */
+   bench/README.md (make bench-gaze) gives what it costs and buys on generated traces.
+
+   Latency compensation (_gaze_predict): where the eye is when the frame is seen, latency_ms
+   after the newest sample's timestamp, and a margin around that point (the margin above
+   instead covers the eye's whole travel around the filtered gaze). A least-squares line
+   x(t) = p + v t (both axes, t relative to the newest sample) is fitted to the raw samples
+   since the last reset or saccade landing, at most predict_ms old and at most
+   FOV_GAZE_HISTORY of them, and cut to its newer half while the motion changed within it:
+   the mean of the newest quarter lies off the line through the older samples by more than
+   3.03 times its standard error (the eye stopped or started), or one line per half fits
+   better than one line for all (Chow's test, F(4, 2 (n - 4)) beyond about its 1 % point:
+   a small saccade the speed threshold missed). n samples, times t_i with mean tm and
+   S = sum (t_i - tm)^2; the residual s^2 = sum of both axes' squared residuals /
+   (2 (n - 2)), the noise per axis the tracker's data show (fixational drift and any
+   curvature included: the noise term is measured, not assumed; at least 1e-4 degrees, the
+   float rounding of noiseless input). With
+   h = latency_ms / 1000 - tm (seconds from the fitted samples' mean time to the frame):
+     pursuit (mode FOV_GAZE_PURSUIT): the fitted speed |v| is above 3.03 times its standard
+       error s / sqrt(S) per axis (a still eye exceeds it in 1 % of fits: chi-square, two
+       degrees of freedom) and below saccade_deg_s: the gaze extrapolated along v,
+           centre = mean + v h,
+           margin = accuracy_deg + 2.5 sqrt(2) s sqrt(1 / n + h^2 / S)
+       (the fit's prediction error: position noise, and velocity uncertainty times the
+       lever h; 2.5 times the 2-D RMS is exceeded in 0.2 % of Gaussian errors).
+     fixation (FOV_GAZE_FIXATION): not moving: no extrapolation, the mean of the fitted
+       samples (a steadier point than the filtered gaze), and
+           margin = accuracy_deg + 2.5 sqrt(2) s sqrt(1 / n) + max(0, |v| - 2 sqrt(2) s /
+                    sqrt(S)) h
+       (a speed too small to extrapolate still widens the margin by the travel it gives).
+     settling (FOV_GAZE_SETTLING): fewer than FOV_GAZE_FIT_MIN samples since the reset or
+       landing (or in the cut window), or spanning less than FOV_GAZE_FIT_MIN_MS: the
+       filtered gaze and _gaze_margin's margin. Never extrapolated: a fresh landing does
+       not overshoot (the fit sees only samples after it).
+     saccade (FOV_GAZE_SACCADE): the raw sample and _gaze_margin's saccade margin
+       (accuracy_deg + 2.5 noise_deg): the fovea lands with the eye.
+   The margin is capped at max_margin_deg; the extrapolation is not bounded otherwise (|v| <
+   saccade_deg_s, the lever at most latency_ms + predict_ms). A tracker above about
+   FOV_GAZE_HISTORY / predict_ms samples per second fits a shorter span than predict_ms
+   (32 samples: 160 Hz at the default 200 ms) and extrapolates less often (a noisier
+   velocity); decimate to a lower rate to keep the span. Use the centre as the frame's gaze
+   (_gaze_from_deg for pixels) and the margin as _config_gaze_margin's / _set_gaze_margin's.
+   The filtered gaze (x_deg, y_deg) and _gaze_margin stay as they were. What the prediction
+   cannot know: a pursuit that starts or stops within the latency (the samples that would
+   show it arrive after the frame); there the error is up to the speed times the latency,
+   outside the margin. bench/README.md gives the measured cost and coverage. */
+#define FOV_GAZE_FIT_MIN 8           /* samples before _gaze_predict fits (else: settling) */
+#define FOV_GAZE_FIT_MIN_MS 40.0f    /* and their span, milliseconds */
+typedef enum fov_gaze_mode {
+    FOV_GAZE_SETTLING = 0, /* too few samples since the reset or landing: the filtered gaze */
+    FOV_GAZE_FIXATION = 1, /* not moving: the fitted mean */
+    FOV_GAZE_PURSUIT = 2,  /* moving: extrapolated by the latency */
+    FOV_GAZE_SACCADE = 3,  /* in a saccade: the raw sample */
+    _FOV_GAZE_MODE_NUM = 4,
+    _FOV_GAZE_MODE_FORCE_U32 = 0x7FFFFFFF
+} fov_gaze_mode;
+/* _gaze_predict's answer: where to centre the fovea for the frame and how much to grow it. */
+typedef struct fov_gaze_prediction {
+    float x_deg, y_deg;  /* the gaze predicted for latency_ms after the newest sample, degrees */
+    float margin_deg;    /* the margin around it, degrees (capped at cfg.max_margin_deg) */
+    float vx, vy;        /* the fitted velocity, deg/s (0 when settling) */
+    float horizon_s;     /* the extrapolation's lever h, seconds (0 unless pursuit) */
+    uint32_t n;          /* samples fitted (0 when settling or in a saccade) */
+    fov_gaze_mode mode;  /* which case above */
+} fov_gaze_prediction;
 typedef struct fov_gaze_filter_config {
     float min_cutoff_hz; /* One Euro f_cmin: the cutoff of a still eye, Hz, (0, 100]   0: 0.5 */
     float beta;          /* One Euro beta: cutoff added per deg/s of speed, Hz s / deg,
@@ -872,6 +935,7 @@ typedef struct fov_gaze_filter_config {
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
+    float predict_ms;    /* _gaze_predict's fit window, ms, [20, 2000]                0: 200 */
     fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
                             _push, _push_px, _gaze_margin on the filter) calls it once with
                             FOV_LOG_ERROR, the code and the message, as the configs do */
@@ -919,7 +983,7 @@ typedef struct fov_gaze_filter {
 #ifdef __cplusplus
 }
 #endif
-#elif FOV_SHARED_REVISION != 4
+#elif FOV_SHARED_REVISION != 5
 #error "fov: fovsdf.h, fovlp.h and fovpt.h of different releases in one translation unit"
 #endif /* FOV_SHARED_DECL_INCLUDED */
 /* ==== FOV_SHARED_END decl ==================================================================== */
@@ -1403,6 +1467,10 @@ FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
       fovpt_gaze_filter_push_px(&gf, &ecc, t_us, raw_px, &gaze);        // or _push in degrees
       // per frame:
       float m;  fovpt_gaze_margin(&gf, 0.5f, 50.0f, &m);     // accuracy 0.5 deg, latency 50 ms
+      // or latency-compensated (the fovea where the eye is when the frame is seen):
+      //   fov_gaze_prediction pr;  fovpt_gaze_predict(&gf, 0.5f, 50.0f, &pr);
+      //   float d[2] = { pr.x_deg, pr.y_deg };  fovpt_gaze_from_deg(&ecc, d, &gaze);
+      //   m = pr.margin_deg;
       fovpt_set_gaze_margin(&ctx, &base_cfg, m);          // then fovpt_render as usual
    (fovpt_init once with base_cfg; a per-frame fovpt_init with fovpt_config_gaze_margin's
    config would reset the accumulation and the temporal ring every frame).
@@ -1416,7 +1484,12 @@ FOVPT_API fov_result fovpt_eye_plan(const fov_eye *eye, const fov_ecc_model *m,
    gaze in pixels in *out (may be NULL). _gaze_to_deg / _gaze_from_deg: pixels to gaze angles
    and back (FOV_ERR_INVALID_ARG beyond +-90 degrees or off the float range).
    _gaze_margin: the margin in degrees for the filter's last state (FOV_ERR_INVALID_ARG for a
-   negative accuracy or latency, *margin_deg then the cap). _gaze_fixed: the gaze at the
+   negative accuracy or latency, *margin_deg then the cap). _gaze_predict: latency compensation, the
+   gaze latency_ms after the newest sample (extrapolated along the fitted velocity during
+   pursuit, not in fixations, never across a saccade or right after its landing) and its
+   margin (see fov_gaze_filter_config); render with out->x_deg, out->y_deg as the gaze
+   (_gaze_from_deg for pixels) and out->margin_deg as the margin; errors as _gaze_margin's
+   (*out then the filtered gaze and the cap); f is only read. _gaze_fixed: the gaze at the
    display's axis point (width / 2 + axis_dx, height / 2 + axis_dy; display may be NULL).
    _camera_display: the fov_display of a camera's own frustum, off-axis or not (fov_y_deg,
    axis_dx, axis_dy as fov_display describes; the eccentricity model every header derives
@@ -1434,6 +1507,8 @@ FOVPT_API fov_result fovpt_gaze_from_deg(const fov_ecc_model *m, const float deg
                                          fov_gaze *px);
 FOVPT_API fov_result fovpt_gaze_margin(const fov_gaze_filter *f, float accuracy_deg,
                                        float latency_ms, float *margin_deg);
+FOVPT_API fov_result fovpt_gaze_predict(const fov_gaze_filter *f, float accuracy_deg,
+                                        float latency_ms, fov_gaze_prediction *out);
 FOVPT_API fov_result fovpt_gaze_fixed(const fov_display *display, uint32_t width,
                                       uint32_t height, fov_gaze *out);
 FOVPT_API fov_result fovpt_camera_display(const fov_camera *cam, fov_display *out);
@@ -2361,7 +2436,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     *bad = FOV__MSG("");
     if (!fov__finite(c.min_cutoff_hz) || !fov__finite(c.beta) || !fov__finite(c.d_cutoff_hz) ||
         !fov__finite(c.saccade_deg_s) || !fov__finite(c.window_ms) ||
-        !fov__finite(c.max_dt_ms) || !fov__finite(c.max_margin_deg)) {
+        !fov__finite(c.max_dt_ms) || !fov__finite(c.max_margin_deg) ||
+        !fov__finite(c.predict_ms)) {
         *bad = FOV__MSG("gaze filter config: a field is NaN or infinite");
         return FOV_ERR_NOT_FINITE;
     }
@@ -2374,6 +2450,7 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
     if (fov__is0(c.window_ms)) c.window_ms = 20.0f;
     if (fov__is0(c.max_dt_ms)) c.max_dt_ms = 500.0f;
     if (fov__is0(c.max_margin_deg)) c.max_margin_deg = 15.0f;
+    if (fov__is0(c.predict_ms)) c.predict_ms = 200.0f;
     if (!(c.min_cutoff_hz > 0.0f && c.min_cutoff_hz <= 100.0f))
         *bad = FOV__MSG("gaze filter config: min_cutoff_hz must be in (0, 100] (0: 0.5)");
     else if (!(c.beta >= 0.0f && c.beta <= 10.0f))
@@ -2389,6 +2466,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
         *bad = FOV__MSG("gaze filter config: max_dt_ms must be in (0, 1e6] (0: 500)");
     else if (!(c.max_margin_deg > 0.0f && c.max_margin_deg <= 90.0f))
         *bad = FOV__MSG("gaze filter config: max_margin_deg must be in (0, 90] (0: 15)");
+    else if (!(c.predict_ms >= 20.0f && c.predict_ms <= 2000.0f))
+        *bad = FOV__MSG("gaze filter config: predict_ms must be in [20, 2000] (0: 200)");
     else {
         *o = c;
         return FOV_OK;
@@ -2579,6 +2658,143 @@ FOV__PRIV fov_result fov__gaze_margin(const fov_gaze_filter *f, float accuracy_d
         fov__gaze_motion(f) * (latency_ms * 1e-3f + 1.0f / (2.0f * FOV__PI * fc));
     if (!(m < cap)) m = cap; /* NaN too */
     *out = m;
+    return FOV_OK;
+}
+
+/* The least-squares line through ring samples off .. off + n - 1 counted back from the newest
+   (t relative to the newest sample, seconds): the means, S, the velocity and the sum of both
+   axes' squared residuals. */
+/* The least residual variance the fit assumes, deg^2 per axis (1e-4 degrees RMS: float
+   rounding of noiseless input is not a change of motion) */
+#define FOV__GAZE_S2_MIN 1e-8f
+typedef struct fov__gaze_line {
+    float tm, xm, ym, sxx, vx, vy, ssr;
+} fov__gaze_line;
+FOV__PRIV void fov__gaze_fit(const fov_gaze_filter *f, uint32_t off, uint32_t n, fov__gaze_line *l)
+{
+    uint64_t t0 = f->hist_t[f->head % FOV_GAZE_HISTORY];
+    float sxy = 0.0f, syy = 0.0f;
+    uint32_t i, k;
+    l->tm = l->xm = l->ym = l->sxx = l->ssr = 0.0f;
+    for (i = off; i < off + n; ++i) {
+        k = (f->head + FOV_GAZE_HISTORY - i) % FOV_GAZE_HISTORY;
+        l->tm -= (float)fov__us32(t0 - f->hist_t[k]) * 1e-6f;
+        l->xm += f->hist_x[k]; l->ym += f->hist_y[k];
+    }
+    l->tm /= (float)n; l->xm /= (float)n; l->ym /= (float)n;
+    for (i = off; i < off + n; ++i) {
+        float dt;
+        k = (f->head + FOV_GAZE_HISTORY - i) % FOV_GAZE_HISTORY;
+        dt = -(float)fov__us32(t0 - f->hist_t[k]) * 1e-6f - l->tm;
+        l->sxx += dt * dt;
+        sxy += dt * (f->hist_x[k] - l->xm);
+        syy += dt * (f->hist_y[k] - l->ym);
+    }
+    l->vx = l->sxx > 0.0f ? sxy / l->sxx : 0.0f;
+    l->vy = l->sxx > 0.0f ? syy / l->sxx : 0.0f;
+    for (i = off; i < off + n; ++i) {
+        float dt, ex, ey;
+        k = (f->head + FOV_GAZE_HISTORY - i) % FOV_GAZE_HISTORY;
+        dt = -(float)fov__us32(t0 - f->hist_t[k]) * 1e-6f - l->tm;
+        ex = f->hist_x[k] - l->xm - l->vx * dt;
+        ey = f->hist_y[k] - l->ym - l->vy * dt;
+        l->ssr += ex * ex + ey * ey;
+    }
+}
+
+/* Latency compensation (see fov_gaze_filter_config): a line fitted to the raw samples since
+   the last reset or landing, shortened while its newest samples leave it, extrapolated by the
+   latency when its speed is significant. Bad input: FOV_ERR_* with *out the filtered gaze
+   and the cap (the safe answer). */
+FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_deg,
+                                       float latency_ms, fov_gaze_prediction *out)
+{
+    fov_gaze_prediction p;
+    fov__gaze_line l;
+    fov_result r;
+    float m, win, s2, se2, v2, h, cap;
+    uint32_t k, n, avail;
+    uint64_t t0;
+    if (!f || !out) return FOV_ERR_NULL;
+    FOV_MEMSET(&p, 0, sizeof p);
+    p.x_deg = f->x_deg; p.y_deg = f->y_deg;
+    p.mode = f->saccade ? FOV_GAZE_SACCADE : FOV_GAZE_SETTLING;
+    r = fov__gaze_margin(f, accuracy_deg, latency_ms, &m);
+    p.margin_deg = m;
+    *out = p;
+    if (r != FOV_OK || f->samples == 0u || f->saccade) return r;
+    cap = f->cfg.max_margin_deg > 0.0f && f->cfg.max_margin_deg <= 90.0f ? f->cfg.max_margin_deg
+                                                                          : 15.0f;
+    win = (f->cfg.predict_ms >= 20.0f && f->cfg.predict_ms <= 2000.0f ? f->cfg.predict_ms
+                                                                       : 200.0f) * 1000.0f;
+    avail = f->count < f->settled ? f->count : f->settled;
+    if (avail > FOV_GAZE_HISTORY) avail = FOV_GAZE_HISTORY;
+    t0 = f->hist_t[f->head % FOV_GAZE_HISTORY];
+    /* the samples in the window */
+    for (n = 0u; n < avail; ++n) {
+        k = (f->head + FOV_GAZE_HISTORY - n) % FOV_GAZE_HISTORY;
+        if (f->hist_t[k] > t0 || (float)fov__us32(t0 - f->hist_t[k]) > win) break;
+    }
+    for (;;) {
+        fov__gaze_line a, b;
+        float pooled, dof, q, ex, ey, vq;
+        uint32_t m4;
+        if (n < FOV_GAZE_FIT_MIN) return FOV_OK;
+        k = (f->head + FOV_GAZE_HISTORY - (n - 1u)) % FOV_GAZE_HISTORY;
+        if ((float)fov__us32(t0 - f->hist_t[k]) < FOV_GAZE_FIT_MIN_MS * 1000.0f) return FOV_OK;
+        fov__gaze_fit(f, 0u, n, &l);
+        if (!(l.sxx > 0.0f)) return FOV_OK;
+        /* a change of motion within the window keeps the newer half: (1) the newest quarter
+           off the line through the older samples (their mean, against its standard error
+           from the older samples' residual, beyond the 1 % of a 2-D Gaussian: the eye stopped
+           or started); (2) Chow's test, one line against one line per half, F(4, 2 (n - 4))
+           beyond about its 1 % point */
+        m4 = n / 4u > 2u ? n / 4u : 2u;
+        fov__gaze_fit(f, m4, n - m4, &b);
+        fov__gaze_fit(f, 0u, m4, &a);
+        q = a.tm - b.tm;
+        ex = a.xm - b.xm - b.vx * q;
+        ey = a.ym - b.ym - b.vy * q;
+        vq = b.ssr / (2.0f * (float)(n - m4 - 2u));
+        vq = (vq > FOV__GAZE_S2_MIN ? vq : FOV__GAZE_S2_MIN) *
+             (1.0f / (float)m4 + 1.0f / (float)(n - m4) + (b.sxx > 0.0f ? q * q / b.sxx : 0.0f));
+        if (ex * ex + ey * ey > 9.21f * vq) { n /= 2u; continue; }
+        fov__gaze_fit(f, 0u, n / 2u, &a);
+        fov__gaze_fit(f, n / 2u, n - n / 2u, &b);
+        dof = 2.0f * (float)(n - 4u);
+        pooled = (a.ssr + b.ssr) / dof;
+        if (pooled < FOV__GAZE_S2_MIN) pooled = FOV__GAZE_S2_MIN;
+        if (!(l.ssr - a.ssr - b.ssr > (3.32f + 30.0f / dof) * 4.0f * pooled)) break;
+        n /= 2u;
+    }
+    s2 = l.ssr / (2.0f * (float)(n - 2u));
+    if (s2 < FOV__GAZE_S2_MIN) s2 = FOV__GAZE_S2_MIN;
+    se2 = s2 / l.sxx; /* the velocity's variance per axis */
+    v2 = l.vx * l.vx + l.vy * l.vy;
+    h = latency_ms * 1e-3f - l.tm;
+    p.vx = l.vx; p.vy = l.vy; p.n = n;
+    if (v2 > 9.21f * se2 && v2 < f->cfg.saccade_deg_s * f->cfg.saccade_deg_s) {
+        p.mode = FOV_GAZE_PURSUIT;
+        p.horizon_s = h;
+        p.x_deg = l.xm + l.vx * h;
+        p.y_deg = l.ym + l.vy * h;
+        m = accuracy_deg + 2.5f * FOV__SQRT(2.0f * s2 * (1.0f / (float)n + h * h / l.sxx));
+    } else {
+        float ve = FOV__SQRT(v2) - 2.0f * FOV__SQRT(2.0f * se2);
+        p.mode = FOV_GAZE_FIXATION;
+        p.x_deg = l.xm; p.y_deg = l.ym;
+        m = accuracy_deg + 2.5f * FOV__SQRT(2.0f * s2 / (float)n) + (ve > 0.0f ? ve * h : 0.0f);
+    }
+    if (!fov__finite(p.x_deg) || !fov__finite(p.y_deg) || !(fov__absf(p.x_deg) < 90.0f) ||
+        !(fov__absf(p.y_deg) < 90.0f)) {
+        /* an extrapolation off the gaze angles' range: the filtered gaze and the cap */
+        p.x_deg = f->x_deg; p.y_deg = f->y_deg;
+        p.mode = FOV_GAZE_SETTLING; p.horizon_s = 0.0f;
+        p.vx = p.vy = 0.0f; p.n = 0u;
+        m = cap;
+    }
+    p.margin_deg = m < cap ? m : cap; /* NaN: the cap */
+    *out = p;
     return FOV_OK;
 }
 
@@ -2925,6 +3141,18 @@ FOVPT_API fov_result fovpt_gaze_margin(const fov_gaze_filter *f, float accuracy_
                     margin_deg ? FOV__MSG("gaze_margin: accuracy_deg must be in [0, 90] and "
                                           "latency_ms in [0, 1e6], finite (*margin_deg: the cap)")
                                : FOV__MSG("gaze_margin: margin_deg is NULL"),
+                    (uint32_t)__LINE__);
+}
+FOVPT_API fov_result fovpt_gaze_predict(const fov_gaze_filter *f, float accuracy_deg,
+                                        float latency_ms, fov_gaze_prediction *out)
+{
+    fov_result r = fov__gaze_predict(f, accuracy_deg, latency_ms, out);
+    if (r == FOV_OK || !f) return r;
+    return fov__err(&f->cfg.logger, "fovpt", r,
+                    out ? FOV__MSG("gaze_predict: accuracy_deg must be in [0, 90] and "
+                                   "latency_ms in [0, 1e6], finite (*out: the filtered gaze "
+                                   "and the cap)")
+                        : FOV__MSG("gaze_predict: out is NULL"),
                     (uint32_t)__LINE__);
 }
 FOVPT_API fov_result fovpt_gaze_fixed(const fov_display *display, uint32_t width,
