@@ -6010,12 +6010,40 @@ FOVPT__PRIV void fovpt__add_stats(fovpt_stats *d, fovpt_stats *s)
     d->reused += s->reused;
 }
 
+/* per-pixel first-hit guide sums (fovpt_trace_rows_guide) */
+FOVPT__PRIV float fovpt__lum(const float c[3])
+{
+    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+}
+
+/* per-pixel guide sums over its samples */
+typedef struct fovpt__gsum {
+    float alb[3], nrm[3], dep, l1, l2;
+    uint32_t n, hits;
+} fovpt__gsum;
+
+FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fovpt__attr *at,
+                                 const float rgb[3])
+{
+    float l = fovpt__lum(rgb);
+    G->n++;
+    G->l1 += l;
+    G->l2 += l * l;
+    if (at->poid == FOVPT_PRIM_NONE || !(at->pt > 0.0f)) return;
+    G->hits++;
+    G->dep += at->pt;
+    fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
+    if (at->pmat < s->num_materials)
+        fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
+}
+
 /* spp samples of pixel (x, y), jittered in the pixel (cell 1) or in the cell x cell pixels
    centred on it (cell > 1); returns their sum in sum[3]. white > 0: the samples in groups of
-   `group`, each group's mean clamped per channel at white (clamp_white). */
+   `group`, each group's mean clamped per channel at white (clamp_white). G (may be NULL):
+   the first-hit guide sums of the samples are added to it. */
 FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y, uint32_t spp,
                               uint32_t sample0, uint32_t cell, uint32_t group, float white,
-                              float sum[3], fovpt_stats *st)
+                              float sum[3], fovpt__gsum *G, fovpt_stats *st)
 {
     uint32_t s, k, W = ctx->cam.width, H = ctx->cam.height, ng = 0;
     float t4[4], gs[3] = { 0.0f, 0.0f, 0.0f };
@@ -6033,7 +6061,13 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
         }
         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
         st->camera_rays++;
-        (void)fovpt_radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st);
+        if (G) { /* the guides' sums too (the same estimator and stream) */
+            fovpt__attr at;
+            (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, &at);
+            fovpt__gsum_add(G, ctx->scene, &at, rgb);
+        } else {
+            (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, NULL);
+        }
         if (!group) { sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2]; continue; }
         gs[0] += rgb[0]; gs[1] += rgb[1]; gs[2] += rgb[2];
         if (++ng == group || s + 1u == spp) { /* a group's mean clamped at white, weight ng */
@@ -6053,84 +6087,6 @@ FOVPT__PRIV void fovpt__store(float *acc, const float sum[3], uint32_t spp, uint
     } else {
         acc[0] = sum[0]; acc[1] = sum[1]; acc[2] = sum[2]; acc[3] = (float)spp;
     }
-}
-
-FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
-                                      fovpt_stats *stats)
-{
-    fovpt_stats st;
-    uint32_t x, y, n, W, H;
-    if (!ctx) return FOV_ERR_NULL;
-    if (!ctx->scene || (!ctx->accum && !ctx->layer_buf[0]))
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "trace_rows: ctx not initialised (fovpt_init)");
-    W = ctx->cam.width; H = ctx->cam.height;
-    if (y0 > y1 || y1 > H)
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG, "trace_rows: needs y0 <= y1 <= height");
-    FOV_MEMSET(&st, 0, sizeof st);
-    if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
-        for (y = y0; y < y1; ++y)
-            for (x = 0; x < W; ++x) {
-                float sum[3];
-                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, 1u, 0u, 0.0f, sum, &st);
-                fovpt__store(ctx->accum + 4u * ((size_t)y * W + x), sum, ctx->cfg.spp,
-                             ctx->cfg.accumulate);
-            }
-    } else if (ctx->pre) {
-        /* SELECTIVE, JIN step 1 (Kim et al. 2021, Fig. 4 A-3): one ray through each pixel centre,
-           colour reference and attributes */
-        float t4[4];
-        t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
-        for (y = y0; y < y1; ++y)
-            for (x = 0; x < W; ++x) {
-                fovpt__pre *P = (fovpt__pre *)ctx->pre + ((size_t)y * W + x);
-                fovpt__attr at;
-                fovpt_rng rng;
-                float dir[3];
-                fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
-                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
-                               (float)y + 0.5f, dir);
-                st.camera_rays++;
-                st.samples++;
-                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, P->col, &st,
-                                      &at);
-                P->poid = at.poid; P->soid = at.soid;
-                fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
-                P->sc = (at.psc > 65535u ? 65535u : at.psc) |
-                        ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
-                P->t = at.pt;
-            }
-    } else {
-        /* LAYERS (Axblad 2020, Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
-        for (n = 0; n < ctx->lay.count; ++n) {
-            uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
-            uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
-            float tr = ctx->layer_trace_deg[n], ti = ctx->layer_inner_deg[n];
-            /* hollow: sample k of a pixel is UNIFORM's stream k in every layer */
-            uint32_t s0 = ctx->lay.hollow ? 0u : n << 16;
-            /* lattice rows whose pixel row lies in [y0, y1) */
-            uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
-            for (l = l0; l < ctx->layer_ny[n]; ++l) {
-                uint32_t py = oy + l * d;
-                if (py >= y1) break;
-                for (k = 0; k < nx; ++k) {
-                    uint32_t px = ox + k * d;
-                    float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
-                    float ep = fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f);
-                    if (ep > tr || ep < ti) {
-                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
-                        continue;
-                    }
-                    fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
-                                 ctx->cfg.spp, d >= 2u ? ctx->lay.clamp_white : 0.0f, sum, &st);
-                    fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
-                    st.layer_targets[n]++;
-                    st.layer_samples[n] += spp;
-                }
-            }
-        }
-    }
-    fovpt__add_stats(stats, &st);
-    return FOV_OK;
 }
 
 /* ---- SELECTIVE and JIN: subpixel inspection and multisampling (Kim et al. 2021, Sec. 4.6) */
@@ -6638,32 +6594,6 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *t, const fovpt_selective_c
 
 
 /* ---- denoising: guide buffers (fovpt_trace_rows_guide) --------------------------------- */
-FOVPT__PRIV float fovpt__lum(const float c[3])
-{
-    return 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
-}
-
-/* per-pixel guide sums over its samples */
-typedef struct fovpt__gsum {
-    float alb[3], nrm[3], dep, l1, l2;
-    uint32_t n, hits;
-} fovpt__gsum;
-
-FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fovpt__attr *at,
-                                 const float rgb[3])
-{
-    float l = fovpt__lum(rgb);
-    G->n++;
-    G->l1 += l;
-    G->l2 += l * l;
-    if (at->poid == FOVPT_PRIM_NONE || !(at->pt > 0.0f)) return;
-    G->hits++;
-    G->dep += at->pt;
-    fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
-    if (at->pmat < s->num_materials)
-        fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
-}
-
 FOVPT__PRIV float *fovpt__gptr(float *p, uint32_t stride, uint32_t ch, uint32_t W, uint32_t x,
                                uint32_t y)
 {
@@ -6700,30 +6630,6 @@ FOVPT__PRIV void fovpt__gwrite(const fovpt_guide *g, uint32_t W, uint32_t x, uin
         }
         *fovpt__gptr(g->var, g->var_stride, 1u, W, x, y) = v;
     }
-}
-
-/* fovpt__pixel for a stride-1 target (jitter in the pixel, no clamp), with the guide sums */
-FOVPT__PRIV void fovpt__pixel_g(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32_t y,
-                                uint32_t spp, uint32_t sample0, float sum[3], fovpt__gsum *G,
-                                fovpt_stats *st)
-{
-    uint32_t s, W = ctx->cam.width, H = ctx->cam.height;
-    float t4[4];
-    t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
-    sum[0] = sum[1] = sum[2] = 0.0f;
-    for (s = 0; s < spp; ++s) {
-        fovpt_rng rng;
-        fovpt__attr at;
-        float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
-        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
-        jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
-        fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
-        st->camera_rays++;
-        (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, &at);
-        sum[0] += rgb[0]; sum[1] += rgb[1]; sum[2] += rgb[2];
-        fovpt__gsum_add(G, ctx->scene, &at, rgb);
-    }
-    st->samples += spp;
 }
 
 /* LAYERS, ZONES: is pixel (x, y) a traced point of a stride-1 layer (traced with its guides)? */
@@ -6787,30 +6693,15 @@ FOVPT_API void fovpt_guide_init(fovpt_guide *g)
     if (g) FOV_MEMSET(g, 0, sizeof *g);
 }
 
-FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
-                                            uint32_t y1, const fovpt_guide *g,
-                                            fovpt_stats *stats)
+/* The sample loop of fovpt_trace_rows and fovpt_trace_rows_guide on rows [y0, y1) (checked
+   by the caller): g NULL, the samples alone; else the same samples and streams plus the
+   guides of the rows (stride-1 points keep their own samples' guides; every other pixel
+   gets the first hit of one more ray through its centre). */
+FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
+                              const fovpt_guide *g, fovpt_stats *st)
 {
-    fovpt_stats st;
-    uint32_t x, y, n, W, H;
+    uint32_t x, y, n, W = ctx->cam.width, H = ctx->cam.height;
     float t4[4];
-    if (!g) return fovpt_trace_rows(ctx, frame, y0, y1, stats);
-    if (!ctx) return FOV_ERR_NULL;
-    if (!ctx->scene || (!ctx->accum && !ctx->layer_buf[0]))
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
-                    "trace_rows_guide: ctx not initialised (fovpt_init)");
-    W = ctx->cam.width; H = ctx->cam.height;
-    if (y0 > y1 || y1 > H)
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
-                    "trace_rows_guide: needs y0 <= y1 <= height");
-    if (fovpt__gstride_bad(g->albedo_stride, 3u, W) ||
-        fovpt__gstride_bad(g->normal_stride, 3u, W) || fovpt__gstride_bad(g->depth_stride, 1u, W) ||
-        fovpt__gstride_bad(g->spp_stride, 1u, W) ||
-        fovpt__gstride_bad(g->var_stride, 1u, W))
-        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
-                    "trace_rows_guide: a guide stride below the packed one (3 * width for "
-                    "albedo and normal, width for depth, spp, var)");
-    FOV_MEMSET(&st, 0, sizeof st);
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     if (ctx->cfg.method == FOVPT_METHOD_UNIFORM) {
         for (y = y0; y < y1; ++y)
@@ -6818,21 +6709,44 @@ FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint
                 float sum[3], *acc = ctx->accum + 4u * ((size_t)y * W + x);
                 fovpt__gsum G;
                 FOV_MEMSET(&G, 0, sizeof G);
-                fovpt__pixel_g(ctx, frame, x, y, ctx->cfg.spp, 0, sum, &G, &st);
+                fovpt__pixel(ctx, frame, x, y, ctx->cfg.spp, 0, 1u, 0u, 0.0f, sum, g ? &G : NULL,
+                             st);
                 fovpt__store(acc, sum, ctx->cfg.spp, ctx->cfg.accumulate);
-                fovpt__gwrite(g, W, x, y, &G, acc[3], acc[3]);
+                if (g) fovpt__gwrite(g, W, x, y, &G, acc[3], acc[3]);
             }
     } else if (ctx->pre) {
-        fov_result e = fovpt_trace_rows(ctx, frame, y0, y1, &st);
-        if (e != FOV_OK) return e;
+        /* SELECTIVE, JIN step 1 (Kim et al. 2021, Fig. 4 A-3): one ray through each pixel centre,
+           colour reference and attributes */
+        for (y = y0; y < y1; ++y)
+            for (x = 0; x < W; ++x) {
+                fovpt__pre *P = (fovpt__pre *)ctx->pre + ((size_t)y * W + x);
+                fovpt__attr at;
+                fovpt_rng rng;
+                float dir[3];
+                fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
+                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
+                               (float)y + 0.5f, dir);
+                st->camera_rays++;
+                st->samples++;
+                (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, P->col, st,
+                                      &at);
+                P->poid = at.poid; P->soid = at.soid;
+                fovpt__copy3(P->pn, at.pn); fovpt__copy3(P->sn, at.sn);
+                P->sc = (at.psc > 65535u ? 65535u : at.psc) |
+                        ((at.ssc > 65535u ? 65535u : at.ssc) << 16);
+                P->t = at.pt;
+            }
     } else {
-        /* the loop of fovpt_trace_rows (same samples); stride-1 points keep their guides */
+        /* LAYERS (Axblad 2020, Fig. 3.6: ray buffer with gaze offset -> path tracing), ZONES */
         for (n = 0; n < ctx->lay.count; ++n) {
             uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
             uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
             float tr = ctx->layer_trace_deg[n], ti = ctx->layer_inner_deg[n];
+            /* hollow: sample k of a pixel is UNIFORM's stream k in every layer */
             uint32_t s0 = ctx->lay.hollow ? 0u : n << 16;
+            /* lattice rows whose pixel row lies in [y0, y1) */
             uint32_t l0 = y0 > oy ? (y0 - oy + d - 1u) / d : 0u;
+            int own = g && d == 1u; /* stride-1 points: their own samples' guides */
             for (l = l0; l < ctx->layer_ny[n]; ++l) {
                 uint32_t py = oy + l * d;
                 if (py >= y1) break;
@@ -6840,56 +6754,88 @@ FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint
                     uint32_t px = ox + k * d;
                     float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
                     float ep = fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f);
+                    fovpt__gsum G;
                     if (ep > tr || ep < ti) {
-                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f;
+                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
                         continue;
                     }
-                    if (d == 1u) {
-                        fovpt__gsum G;
-                        FOV_MEMSET(&G, 0, sizeof G);
-                        fovpt__pixel_g(ctx, frame, px, py, spp, s0, sum, &G, &st);
-                        fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
-                        if (fovpt__gwin(ctx, px, py, ep) == n) /* one layer's guides */
-                            fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), acc[3]);
-                    } else {
-                        fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
-                                     ctx->cfg.spp, ctx->lay.clamp_white, sum, &st);
-                        fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
-                    }
-                    st.layer_targets[n]++;
-                    st.layer_samples[n] += spp;
+                    FOV_MEMSET(&G, 0, sizeof G);
+                    fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
+                                 ctx->cfg.spp, d >= 2u ? ctx->lay.clamp_white : 0.0f, sum,
+                                 own ? &G : NULL, st);
+                    fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
+                    if (own && fovpt__gwin(ctx, px, py, ep) == n) /* one layer's guides */
+                        fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), acc[3]);
+                    st->layer_targets[n]++;
+                    st->layer_samples[n] += spp;
                 }
             }
         }
     }
+    if (!g || ctx->cfg.method == FOVPT_METHOD_UNIFORM) return;
     /* pixels without their own samples: the first hit of the ray through the centre */
-    if (ctx->cfg.method != FOVPT_METHOD_UNIFORM)
-        for (y = y0; y < y1; ++y)
-            for (x = 0; x < W; ++x) {
-                float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), dir[3];
-                fovpt__gsum G;
-                fovpt__attr at;
-                fovpt_hit h;
-                if (!ctx->pre && fovpt__own_pixel(ctx, x, y, e)) continue;
-                FOV_MEMSET(&G, 0, sizeof G);
-                FOV_MEMSET(&at, 0, sizeof at);
-                at.poid = FOVPT_PRIM_NONE;
-                fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
-                               (float)y + 0.5f, dir);
-                st.camera_rays++;
-                if (fovpt__hit(ctx->scene, ctx->origin, dir, 0.0f, FLT_MAX, &h, 0)) {
-                    fovpt__attr_hit(&h, dir, &at.poid, at.pn);
-                    at.pt = h.t;
-                    at.pmat = h.material;
-                }
-                {
-                    float zero[3] = { 0.0f, 0.0f, 0.0f };
-                    fovpt__gsum_add(&G, ctx->scene, &at, zero);
-                }
-                fovpt__gwrite(g, W, x, y, &G, ctx->pre ? 1.0f : fovpt__density(ctx, e), 0.0f);
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), dir[3];
+            float zero[3] = { 0.0f, 0.0f, 0.0f };
+            fovpt__gsum G;
+            fovpt__attr at;
+            fovpt_hit h;
+            if (!ctx->pre && fovpt__own_pixel(ctx, x, y, e)) continue;
+            FOV_MEMSET(&G, 0, sizeof G);
+            FOV_MEMSET(&at, 0, sizeof at);
+            at.poid = FOVPT_PRIM_NONE;
+            fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
+                           (float)y + 0.5f, dir);
+            st->camera_rays++;
+            if (fovpt__hit(ctx->scene, ctx->origin, dir, 0.0f, FLT_MAX, &h, 0)) {
+                fovpt__attr_hit(&h, dir, &at.poid, at.pn);
+                at.pt = h.t;
+                at.pmat = h.material;
             }
+            fovpt__gsum_add(&G, ctx->scene, &at, zero);
+            fovpt__gwrite(g, W, x, y, &G, ctx->pre ? 1.0f : fovpt__density(ctx, e), 0.0f);
+        }
+}
+
+/* fovpt_trace_rows (g NULL) and fovpt_trace_rows_guide: the checks, then fovpt__trace */
+FOVPT__PRIV fov_result fovpt__trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
+                                         const fovpt_guide *g, fovpt_stats *stats)
+{
+    fovpt_stats st;
+    uint32_t W;
+    if (!ctx) return FOV_ERR_NULL;
+    W = ctx->cam.width;
+    if (!ctx->scene || (!ctx->accum && !ctx->layer_buf[0]))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL,
+                    "trace_rows(_guide): ctx not initialised (fovpt_init)");
+    if (y0 > y1 || y1 > ctx->cam.height)
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "trace_rows(_guide): needs y0 <= y1 <= height");
+    if (g && (fovpt__gstride_bad(g->albedo_stride, 3u, W) ||
+              fovpt__gstride_bad(g->normal_stride, 3u, W) ||
+              fovpt__gstride_bad(g->depth_stride, 1u, W) ||
+              fovpt__gstride_bad(g->spp_stride, 1u, W) || fovpt__gstride_bad(g->var_stride, 1u, W)))
+        FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
+                    "trace_rows_guide: a guide stride below the packed one (3 * width for "
+                    "albedo and normal, width for depth, spp, var)");
+    FOV_MEMSET(&st, 0, sizeof st);
+    fovpt__trace(ctx, frame, y0, y1, g, &st);
     fovpt__add_stats(stats, &st);
     return FOV_OK;
+}
+
+FOVPT_API fov_result fovpt_trace_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint32_t y1,
+                                      fovpt_stats *stats)
+{
+    return fovpt__trace_rows(ctx, frame, y0, y1, NULL, stats);
+}
+
+FOVPT_API fov_result fovpt_trace_rows_guide(fovpt_ctx *ctx, uint32_t frame, uint32_t y0,
+                                            uint32_t y1, const fovpt_guide *g,
+                                            fovpt_stats *stats)
+{
+    return fovpt__trace_rows(ctx, frame, y0, y1, g, stats);
 }
 
 FOVPT_API fov_result fovpt_render_guide(fovpt_ctx *ctx, uint32_t frame, const fovpt_output *out,

@@ -806,6 +806,25 @@ static void t_nlog(void)
     check(worst_w <= 1e-4, "nlog_weight_128", "c^128 relative error %g where above e^-10 (want <= 1e-4)", worst_w);
 }
 
+/* one frame of a through a denoiser made for dc (no history); *info (may be NULL): its state
+   after the run (its passes and resolved cfg; the memory is freed) */
+static int dn_once(fovpt_denoise_cfg *dc, img *a, fov_gaze g, float *out, fovpt_denoise *info)
+{
+    fovpt_denoise dn;
+    fovpt_camera cam;
+    fovpt_output o;
+    void *dm = NULL;
+    int ok;
+    fovpt_camera_init(&cam, a->w, a->h);
+    ok = dn_make(&dn, dc, &dm);
+    fovpt_output_init(&o);
+    o.rgb = out;
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, a->rgb, 0, &a->g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    if (info) *info = dn;
+    free(dm);
+    return ok;
+}
+
 /* An independent a-trous in double (the documented filter: B3 5 x 5 or linear 3 x 3 taps,
    Schied et al.'s stops with exp and pow) for one pass over rgb/var (W x H), in place. */
 static void ref_atrous(const img *a, float *rgb, float *var, uint32_t W, uint32_t H, int step, int rad,
@@ -878,12 +897,10 @@ static void t_kernel_ref(void)
     const uint32_t W = 48, H = 36;
     size_t n = (size_t)W * H, i;
     img a;
-    fovpt_camera cam;
     float *out = (float *)malloc(n * 12u), *rr = (float *)malloc(n * 12u), *rv = (float *)malloc(n * 4u);
     uint32_t x, y, s = 4242u;
     int rad;
     img_alloc(&a, W, H);
-    fovpt_camera_init(&cam, W, H);
     for (y = 0; y < H; ++y)
         for (x = 0; x < W; ++x) {
             int k, reg = (x * 3u < W ? 0 : x * 3u < 2u * W ? 1 : 2) + (y > H / 2 ? 3 : 0);
@@ -904,17 +921,13 @@ static void t_kernel_ref(void)
         fovpt_denoise dn;
         fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
         fov_gaze g = { 24.0f, 18.0f };
-        fovpt_output o;
-        void *dm = NULL;
         double worst = 0.0;
         uint32_t p;
         int ok;
         dc.width = W; dc.height = H; dc.no_temporal = 1;
         dc.fovea_step = 65536.0f; dc.skip_noise = 1e-9f; dc.spp_full = 1e30f;
         dc.r_small = rad == 2 ? 65536.0f : 1.0f;
-        ok = dn_make(&dn, &dc, &dm);
-        fovpt_output_init(&o); o.rgb = out;
-        ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+        ok = dn_once(&dc, &a, g, out, &dn);
         memcpy(rr, a.rgb, n * 12u);
         memcpy(rv, a.var, n * 4u);
         for (p = 0; p < dn.passes; ++p) ref_atrous(&a, rr, rv, W, H, 1 << p, rad, &dn.cfg);
@@ -922,7 +935,6 @@ static void t_kernel_ref(void)
             if (fabs((double)out[i] - (double)rr[i]) > worst) worst = fabs((double)out[i] - (double)rr[i]);
         check(ok && worst <= 2e-5, N("atrous_equals_reference_%dx%d", 2 * rad + 1, 2 * rad + 1),
               "worst |library - double reference| %g over %u passes (ok %d)", worst, dn.passes, ok);
-        free(dm);
     }
     free(out); free(rr); free(rv);
     img_free(&a);
@@ -935,18 +947,13 @@ static void t_adaptive(void)
     const uint32_t W = 40, H = 30;
     size_t n = (size_t)W * H, i;
     img a;
-    fovpt_camera cam;
     float *out = (float *)malloc(n * 12u);
     uint32_t s = 99u;
     int mode;
     img_alloc(&a, W, H);
-    fovpt_camera_init(&cam, W, H);
     for (mode = 0; mode < 4; ++mode) {
-        fovpt_denoise dn;
         fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
         fov_gaze g = { 20.0f, 15.0f };
-        fovpt_output o;
-        void *dm = NULL;
         double diff = 0.0;
         int ok, k;
         for (i = 0; i < n; ++i) {
@@ -963,16 +970,13 @@ static void t_adaptive(void)
             a.var[i] = mode == 2 ? 0.0f : mode == 3 ? 1e-4f : 0.003f;
         }
         dc.width = W; dc.height = H; dc.no_temporal = 1; dc.spp_ref = 16.0f;
-        ok = dn_make(&dn, &dc, &dm);
-        fovpt_output_init(&o); o.rgb = out;
-        ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+        ok = dn_once(&dc, &a, g, out, NULL);
         for (i = 0; i < n * 3u; ++i) diff += fabs((double)out[i] - (double)a.rgb[i]);
         diff /= (double)(n * 3u);
         if (mode == 0 || mode == 2)
             check(ok && diff == 0.0, N("adaptive_converged_untouched_%s", mode ? "noise" : "spp"), "mean |out - in| %g (ok %d)", diff, ok);
         else
             check(ok && diff > 0.01, N("adaptive_noisy_filtered_%s", mode == 3 ? "noise" : "spp"), "mean |out - in| %g (ok %d)", diff, ok);
-        free(dm);
     }
     free(out);
     img_free(&a);
