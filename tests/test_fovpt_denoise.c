@@ -469,6 +469,14 @@ static void t_errors(void)
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "levels_cap", "levels above the cap accepted");
     r = dc; r.phi_lum = NAN;
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_NOT_FINITE, "nan_field", "NaN accepted");
+    r = dc; r.skip_noise = -1.0f;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_skip_noise_negative", "skip_noise -1 accepted");
+    r = dc; r.r_small = 0.5f;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_r_small_below_1", "r_small 0.5 accepted");
+    r = dc; r.spp_full = NAN;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_NOT_FINITE, "dn_cfg_spp_full_nan", "spp_full NaN accepted");
+    r = dc; r.spp_full = -2.0f;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_spp_full_negative", "spp_full -2 accepted");
     r = dc; r.alpha_fovea = 0.1f; r.alpha_periphery = 0.5f;
     g_log_count = 0;
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG && g_log_count == 1 && g_log_code == FOV_ERR_INVALID_ARG,
@@ -784,6 +792,200 @@ static void t_robust(void)
     img_free(&a); img_free(&b);
 }
 
+/* the normal stop's -ln c series (folded into the tap's exponential) against logf / powf */
+static void t_nlog(void)
+{
+    double worst = 0.0, worst_w = 0.0;
+    int below = 1, i;
+    for (i = 0; i <= 2500; ++i) {
+        float c = 0.75f + 0.25f * (float)i / 2500.0f;
+        double t = -log((double)c), a = (double)fovpt__dn_nlog(c), w, we;
+        if (a > t + 1e-7) below = 0;
+        if (fabs(a - t) > worst) worst = fabs(a - t);
+        w = exp(-128.0 * a);
+        we = pow((double)c, 128.0);
+        if (we > exp(-10.0) && fabs(w / we - 1.0) > worst_w) worst_w = fabs(w / we - 1.0);
+    }
+    check(worst <= 2.7e-4 && below, "nlog_series_bound", "worst |series + ln c| %g (bound 2.7e-4), never above: %d", worst, below);
+    check(worst_w <= 1e-4, "nlog_weight_128", "c^128 relative error %g where above e^-10 (want <= 1e-4)", worst_w);
+}
+
+/* one frame of a through a denoiser made for dc (no history); *info (may be NULL): its state
+   after the run (its passes and resolved cfg; the memory is freed) */
+static int dn_once(fovpt_denoise_cfg *dc, img *a, fov_gaze g, float *out, fovpt_denoise *info)
+{
+    fovpt_denoise dn;
+    fovpt_camera cam;
+    fovpt_output o;
+    void *dm = NULL;
+    int ok;
+    fovpt_camera_init(&cam, a->w, a->h);
+    ok = dn_make(&dn, dc, &dm);
+    fovpt_output_init(&o);
+    o.rgb = out;
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, a->rgb, 0, &a->g) == FOV_OK && fovpt_denoise_run(&dn, &o) == FOV_OK;
+    if (info) *info = dn;
+    free(dm);
+    return ok;
+}
+
+/* An independent a-trous in double (the documented filter: B3 5 x 5 or linear 3 x 3 taps,
+   Schied et al.'s stops with exp and pow) for one pass over rgb/var (W x H), in place. */
+static void ref_atrous(const img *a, float *rgb, float *var, uint32_t W, uint32_t H, int step, int rad,
+                       const fovpt_denoise_cfg *c)
+{
+    static const double h5[5] = { 0.0625, 0.25, 0.375, 0.25, 0.0625 }, h3[3] = { 0.25, 0.5, 0.25 };
+    const double *hk = rad == 1 ? h3 : h5;
+    size_t n = (size_t)W * H;
+    float *o = (float *)malloc(n * 12u), *ov = (float *)malloc(n * 4u);
+    int x, y, dx, dy, k, w_ = (int)W, h_ = (int)H;
+    for (y = 0; y < h_; ++y)
+        for (x = 0; x < w_; ++x) {
+            size_t i = (size_t)y * W + (size_t)x;
+            double v3 = 0.0, lp, sig, zp = (double)a->dep[i] > 0.0 ? (double)a->dep[i] : 0.0, s0 = 1e30, s1 = 1e30, acc[3] = { 0, 0, 0 }, ws = 0, wv = 0;
+            for (dy = -1; dy <= 1; ++dy)
+                for (dx = -1; dx <= 1; ++dx) {
+                    int qx = x + dx < 0 ? 0 : x + dx >= w_ ? w_ - 1 : x + dx, qy = y + dy < 0 ? 0 : y + dy >= h_ ? h_ - 1 : y + dy;
+                    v3 += h3[dx + 1] * h3[dy + 1] * (double)var[(size_t)qy * W + (size_t)qx];
+                }
+            lp = 0.2126 * (double)rgb[3 * i] + 0.7152 * (double)rgb[3 * i + 1] + 0.0722 * (double)rgb[3 * i + 2];
+            sig = 1.0 / ((double)c->phi_lum * sqrt(v3) + 1e-6);
+            if (x > 0) s0 = fabs(zp - (double)a->dep[i - 1]);
+            if (x + 1 < w_ && fabs(zp - (double)a->dep[i + 1]) < s0) s0 = fabs(zp - (double)a->dep[i + 1]);
+            if (y > 0) s1 = fabs(zp - (double)a->dep[i - W]);
+            if (y + 1 < h_ && fabs(zp - (double)a->dep[i + W]) < s1) s1 = fabs(zp - (double)a->dep[i + W]);
+            if (s0 > 1e29) s0 = 0.0;
+            if (s1 > 1e29) s1 = 0.0;
+            for (dy = -rad; dy <= rad; ++dy)
+                for (dx = -rad; dx <= rad; ++dx) {
+                    int qx = x + dx * step, qy = y + dy * step;
+                    size_t j;
+                    double w, ex, lq, zq, cn, da;
+                    if (qx < 0 || qy < 0 || qx >= w_ || qy >= h_) continue;
+                    j = (size_t)qy * W + (size_t)qx;
+                    w = hk[dx + rad] * hk[dy + rad];
+                    if (dx || dy) {
+                        zq = (double)a->dep[j] > 0.0 ? (double)a->dep[j] : 0.0;
+                        if ((zp > 0.0) != (zq > 0.0)) continue;
+                        lq = 0.2126 * (double)rgb[3 * j] + 0.7152 * (double)rgb[3 * j + 1] + 0.0722 * (double)rgb[3 * j + 2];
+                        ex = fabs(lp - lq) * sig;
+                        if (zp > 0.0) {
+                            ex += fabs(zp - zq) / ((double)c->phi_depth * step * (s0 * abs(dx) + s1 * abs(dy)) + 1e-3 * zp);
+                            cn = (double)a->nrm[3 * i] * (double)a->nrm[3 * j] + (double)a->nrm[3 * i + 1] * (double)a->nrm[3 * j + 1] +
+                                 (double)a->nrm[3 * i + 2] * (double)a->nrm[3 * j + 2];
+                            if (!(cn > 0.0)) continue;
+                            w *= pow(cn, (double)c->phi_normal);
+                        }
+                        for (k = 0; k < 3; ++k) {
+                            da = (double)a->alb[3 * i + (size_t)k] - (double)a->alb[3 * j + (size_t)k];
+                            ex += da * da / ((double)c->phi_albedo * (double)c->phi_albedo);
+                        }
+                        w *= exp(-ex);
+                    }
+                    for (k = 0; k < 3; ++k) acc[k] += w * (double)rgb[3 * j + (size_t)k];
+                    ws += w;
+                    wv += w * w * (double)var[j];
+                }
+            for (k = 0; k < 3; ++k) o[3 * i + (size_t)k] = (float)(acc[k] / ws);
+            ov[i] = (float)(wv / (ws * ws));
+        }
+    memcpy(rgb, o, n * 12u);
+    memcpy(var, ov, n * 4u);
+    free(o); free(ov);
+}
+
+/* the library's a-trous (5 x 5 and the 3 x 3 taps of r_small) equals the reference above on an
+   image with normal, depth, albedo and luminance structure (every pass at every pixel) */
+static void t_kernel_ref(void)
+{
+    const uint32_t W = 48, H = 36;
+    size_t n = (size_t)W * H, i;
+    img a;
+    float *out = (float *)malloc(n * 12u), *rr = (float *)malloc(n * 12u), *rv = (float *)malloc(n * 4u);
+    uint32_t x, y, s = 4242u;
+    int rad;
+    img_alloc(&a, W, H);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            int k, reg = (x * 3u < W ? 0 : x * 3u < 2u * W ? 1 : 2) + (y > H / 2 ? 3 : 0);
+            double tilt = (reg % 3) * 0.5236 * ((y & 8u) ? 1.0 : 0.3); /* 0, ~9..30, ~18..60 degrees */
+            i = (size_t)y * W + x;
+            for (k = 0; k < 3; ++k) {
+                s = s * 1664525u + 1013904223u;
+                a.rgb[3 * i + (size_t)k] = 0.3f + 0.1f * (float)reg + 0.3f * ((float)(s >> 8) / 16777216.0f);
+                a.alb[3 * i + (size_t)k] = reg >= 3 ? 0.5f : 0.45f + 0.02f * (float)k;
+            }
+            a.nrm[3 * i] = (float)sin(tilt); a.nrm[3 * i + 1] = 0.0f; a.nrm[3 * i + 2] = (float)cos(tilt);
+            a.dep[i] = (x > 40u && y < 6u) ? 0.0f : 1.0f + 0.02f * (float)x + (reg == 4 ? 0.5f : 0.0f); /* a miss corner */
+            a.spp[i] = 8.0f; /* a trusted var: the a-trous input is the guide's var */
+            s = s * 1664525u + 1013904223u;
+            a.var[i] = 0.002f + 0.004f * ((float)(s >> 8) / 16777216.0f);
+        }
+    for (rad = 2; rad >= 1; --rad) {
+        fovpt_denoise dn;
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 24.0f, 18.0f };
+        double worst = 0.0;
+        uint32_t p;
+        int ok;
+        dc.width = W; dc.height = H; dc.no_temporal = 1;
+        dc.fovea_step = 65536.0f; dc.skip_noise = 1e-9f; dc.spp_full = 1e30f;
+        dc.r_small = rad == 2 ? 65536.0f : 1.0f;
+        ok = dn_once(&dc, &a, g, out, &dn);
+        memcpy(rr, a.rgb, n * 12u);
+        memcpy(rv, a.var, n * 4u);
+        for (p = 0; p < dn.passes; ++p) ref_atrous(&a, rr, rv, W, H, 1 << p, rad, &dn.cfg);
+        for (i = 0; i < n * 3u; ++i)
+            if (fabs((double)out[i] - (double)rr[i]) > worst) worst = fabs((double)out[i] - (double)rr[i]);
+        check(ok && worst <= 2e-5, N("atrous_equals_reference_%dx%d", 2 * rad + 1, 2 * rad + 1),
+              "worst |library - double reference| %g over %u passes (ok %d)", worst, dn.passes, ok);
+    }
+    free(out); free(rr); free(rv);
+    img_free(&a);
+}
+
+/* the adaptive policy: a converged pixel (spp far above spp_full, or noise below skip_noise
+   display codes) is left as it is; below, the same image is filtered */
+static void t_adaptive(void)
+{
+    const uint32_t W = 40, H = 30;
+    size_t n = (size_t)W * H, i;
+    img a;
+    float *out = (float *)malloc(n * 12u);
+    uint32_t s = 99u;
+    int mode;
+    img_alloc(&a, W, H);
+    for (mode = 0; mode < 4; ++mode) {
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 20.0f, 15.0f };
+        double diff = 0.0;
+        int ok, k;
+        for (i = 0; i < n; ++i) {
+            for (k = 0; k < 3; ++k) {
+                s = s * 1664525u + 1013904223u;
+                a.rgb[3 * i + (size_t)k] = 0.4f + 0.2f * ((float)(s >> 8) / 16777216.0f);
+                a.alb[3 * i + (size_t)k] = 0.5f;
+                a.nrm[3 * i + (size_t)k] = k == 2 ? 1.0f : 0.0f;
+            }
+            a.dep[i] = 1.0f;
+            /* 0: 1024 spp (k = 1/8: widest step 1/2, no pass); 1: 16 spp (every pass);
+               2: var 0 from 8 spp (noise 0 codes: skipped); 3: var 1e-4 (~1.3 codes: filtered) */
+            a.spp[i] = mode == 0 ? 1024.0f : mode == 1 ? 16.0f : 8.0f;
+            a.var[i] = mode == 2 ? 0.0f : mode == 3 ? 1e-4f : 0.003f;
+        }
+        dc.width = W; dc.height = H; dc.no_temporal = 1; dc.spp_ref = 16.0f;
+        ok = dn_once(&dc, &a, g, out, NULL);
+        for (i = 0; i < n * 3u; ++i) diff += fabs((double)out[i] - (double)a.rgb[i]);
+        diff /= (double)(n * 3u);
+        if (mode == 0 || mode == 2)
+            check(ok && diff == 0.0, N("adaptive_converged_untouched_%s", mode ? "noise" : "spp"), "mean |out - in| %g (ok %d)", diff, ok);
+        else
+            check(ok && diff > 0.01, N("adaptive_noisy_filtered_%s", mode == 3 ? "noise" : "spp"), "mean |out - in| %g (ok %d)", diff, ok);
+    }
+    free(out);
+    img_free(&a);
+}
+
 int main(void)
 {
     t_constant();
@@ -796,5 +998,8 @@ int main(void)
     t_robust();
     t_var_accum();
     t_two_stride1();
+    t_nlog();
+    t_kernel_ref();
+    t_adaptive();
     return fovcheck_summary();
 }
