@@ -4279,26 +4279,12 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
     return 1;
 }
 
-/* Slab test (Kay-Kajiya) with the near and far planes picked by the direction's sign, so
-   no swap: the same products as (lo - o) * inv and (hi - o) * inv, only never compared.
-   Conservative: max(a, t) = a > t ? a : t and min(b, t) = b < t ? b : t drop a NaN slab
-   distance (0 * inf: the ray lies in a slab's face plane, parallel to it), and the exit is
-   widened by the rounding margin (FOVPT__BOX_GROW, grow_k = FOVPT__BOX_NEG * max(0, -tmin)).
-   The four-box tests in fovpt__closest do the same arithmetic. */
-FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax,
-                               float grow_k, float *tn_out)
-{
-    const float *b = n->b;
-    float a0 = (b[r->nb[0]] - r->o[0]) * r->inv[0], b0 = (b[r->fb[0]] - r->o[0]) * r->inv[0];
-    float a1 = (b[r->nb[1]] - r->o[1]) * r->inv[1], b1 = (b[r->fb[1]] - r->o[1]) * r->inv[1];
-    float a2 = (b[r->nb[2]] - r->o[2]) * r->inv[2], b2 = (b[r->fb[2]] - r->o[2]) * r->inv[2];
-    float tn = tmin, tf = tmax;
-    tn = a0 > tn ? a0 : tn; tf = b0 < tf ? b0 : tf;
-    tn = a1 > tn ? a1 : tn; tf = b1 < tf ? b1 : tf;
-    tn = a2 > tn ? a2 : tn; tf = b2 < tf ? b2 : tf;
-    *tn_out = tn;
-    return tn <= tf * FOVPT__BOX_GROW + grow_k;
-}
+/* The slab test (Kay-Kajiya) of fovpt__closest, W boxes at once, with the near and far
+   planes picked by the direction's sign, so no swap: the same products as (lo - o) * inv and
+   (hi - o) * inv, only never compared. Conservative: max(a, t) = a > t ? a : t and
+   min(b, t) = b < t ? b : t drop a NaN slab distance (0 * inf: the ray lies in a slab's face
+   plane, parallel to it), and the exit is widened by the rounding margin (FOVPT__BOX_GROW,
+   grow_k = FOVPT__BOX_NEG * max(0, -tmin)). */
 
 /* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
    s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
@@ -4459,10 +4445,9 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     uint32_t best = FOVPT_PRIM_NONE, i;
     float t;
     if (s->nodes && !brute) {
-        const fovpt__node *nodes = (const fovpt__node *)s->nodes;
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
         uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
-        float stack_t[FOVPT__STACK], tn, lim;
+        float stack_t[FOVPT__STACK], lim;
         fovpt__rayv rv;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
@@ -4474,6 +4459,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             viz = FOVPT__V_SET1(r->inv[2]);
         const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
             vgk = FOVPT__V_SET1(gk);
+        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax);
         rv.ox = vox; rv.oy = voy; rv.oz = voz; rv.tmin = vtmin;
         rv.dx = FOVPT__V_SET1(r->d[0]); rv.dy = FOVPT__V_SET1(r->d[1]);
         rv.dz = FOVPT__V_SET1(r->d[2]);
@@ -4481,23 +4467,29 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
             woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
             wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
-        (void)vox; (void)voy; (void)voz; (void)vix; (void)viy; (void)viz; (void)vtmin;
-        (void)vgrow; (void)vgk;
+        __m256 wtmax = _mm256_set1_ps(*tmax);
+        (void)vix; (void)viy; (void)viz; (void)vgrow; (void)vgk; (void)vtmax;
 #endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
             iz = r->inv[2];
         rv.unused = 0;
 #endif
-        if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, gk, &tn)) {
+        {   /* no separate root box test: the root node's children's boxes are its box */
             lim = *tmax * FOVPT__BOX_GROW + gk; /* a pushed entry distance beyond: culled */
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
                     if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, any)) return best;
                     lim = *tmax * FOVPT__BOX_GROW + gk;
+#if FOVPT__SIMD
+                    vtmax = FOVPT__V_SET1(*tmax);
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+                    wtmax = _mm256_set1_ps(*tmax);
+#endif
+#endif
                 } else {
-                    /* the four children's slab tests (fovpt__box_hit's arithmetic, the same
+                    /* the four children's slab tests (the slab test's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
                        nearest first: the nearest is visited, the others pushed farthest
                        first with their entry distances */
@@ -4505,7 +4497,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     float tv[FOVPT_BVH_WIDTH];
                     uint32_t hm, j;
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
-                    __m256 t0 = _mm256_set1_ps(tmin), u0 = _mm256_set1_ps(*tmax);
+                    __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
 #define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
@@ -4521,7 +4513,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
 #elif FOVPT__SIMD
                     hm = 0;
                     for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
-                        fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
+                        fovpt__v4 t0 = vtmin, u0 = vtmax;
 #define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
                         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
