@@ -4428,12 +4428,14 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
 
 /* Closest hit over the bounded primitives and the planes: returns the slot (and lowers *tmax
    to its t) or FOVPT_PRIM_NONE; any: returns the first hit found instead (occlusion); brute:
-   a loop over every bounded primitive instead of the BVH. BVH traversal: the root's box (the
-   binary tree's node 0), then the 4-wide nodes (fovpt__node4): the four children's slab
-   tests at once (SSE, or the same arithmetic per child), then a single hit child is visited
-   directly, of two the nearer (by entry distance) is visited and the other pushed, of three
-   or four the nearest is visited and the others pushed farthest first, each pushed with its
-   entry distance. A pop skips entries that start beyond the closest hit found meanwhile (no
+   a loop over every bounded primitive instead of the BVH. BVH traversal, from the root of
+   the W-wide nodes (fovpt__node4; no separate box test for the whole tree: the root's
+   children's boxes bound it): the W children's slab tests at once (SSE / AVX / NEON /
+   SIMD128, or the same arithmetic per child), then a single hit child is visited directly
+   (the lowest set bit of the hit mask), of two the nearer (by entry distance) is visited and
+   the other pushed, of three or more all are pushed, sorted in place farthest first, and the
+   nearest is popped and visited; every stack entry keeps its entry distance. A pop skips
+   entries that start beyond the closest hit found meanwhile (no
    second box test: tn <= min(box exit, tmax) widened by the rounding margin at the push, so
    tn <= new tmax, widened alike, is the same test). Leaf triangles are intersected inline
    from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
