@@ -4534,46 +4534,34 @@ FOVPT__PRIV float fovpt__dir_scale(const float dir[3], float d[3])
     return sc; /* d = dir / sc: t along dir = t along d * (1 / sc) */
 }
 
-FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
+/* The ray record of a direction that is finite and nonzero (fovpt__ray_init checks it). */
+FOVPT__PRIV void fovpt__ray_set(fovpt__ray *r, const float org[3], const float dir[3])
 {
     uint32_t k;
-    if (!fov__finite3(org) || !fov__finite3(dir) || !(fov__dot(dir, dir) > 0.0f)) return 0;
     for (k = 0; k < 3; ++k) {
-        float d = dir[k];
+        const float d = dir[k];
+        const float inv = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf(); /* subnormal: +-inf */
+        const uint32_t neg = inv < 0.0f ? 3u : 0u;
         r->o[k] = org[k];
         r->d[k] = d;
-        r->inv[k] = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf(); /* subnormal d: +-inf too */
-        r->nb[k] = r->inv[k] < 0.0f ? 3u + k : k;
-        r->fb[k] = r->inv[k] < 0.0f ? k : 3u + k;
+        r->inv[k] = inv;
+        r->nb[k] = k + neg;
+        r->fb[k] = k + 3u - neg;
     }
+}
+FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
+{
+    if (!fov__finite3(org) || !fov__finite3(dir) || !(fov__dot(dir, dir) > 0.0f)) return 0;
+    fovpt__ray_set(r, org, dir);
     return 1;
 }
 
-/* Slab test (Kay-Kajiya) with the near and far planes picked by the direction's sign, so
-   no swap: the same products as (lo - o) * inv and (hi - o) * inv, only never compared.
-   Conservative: max(a, t) = a > t ? a : t and min(b, t) = b < t ? b : t drop a NaN slab
-   distance (0 * inf: the ray lies in a slab's face plane, parallel to it), and the exit is
-   widened by the rounding margin (FOVPT__BOX_GROW, grow_k = FOVPT__BOX_NEG * max(0, -tmin)).
-   The four-box tests in fovpt__closest do the same arithmetic. */
-FOVPT__PRIV int fovpt__box_hit(const fovpt__node *n, const fovpt__ray *r, float tmin, float tmax,
-                               float grow_k, float *tn_out)
-{
-    const float *b = n->b;
-    float a0 = (b[r->nb[0]] - r->o[0]) * r->inv[0], b0 = (b[r->fb[0]] - r->o[0]) * r->inv[0];
-    float a1 = (b[r->nb[1]] - r->o[1]) * r->inv[1], b1 = (b[r->fb[1]] - r->o[1]) * r->inv[1];
-    float a2 = (b[r->nb[2]] - r->o[2]) * r->inv[2], b2 = (b[r->fb[2]] - r->o[2]) * r->inv[2];
-    float tn = tmin, tf = tmax;
-    tn = a0 > tn ? a0 : tn; tf = b0 < tf ? b0 : tf;
-    tn = a1 > tn ? a1 : tn; tf = b1 < tf ? b1 : tf;
-    tn = a2 > tn ? a2 : tn; tf = b2 < tf ? b2 : tf;
-    *tn_out = tn;
-    return tn <= tf * FOVPT__BOX_GROW + grow_k;
-}
-
-/* For a 4-bit mask of hit children: their number, the lowest and the highest. */
-static const unsigned char fovpt__mask_cnt[16] = { 0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4 };
-static const unsigned char fovpt__mask_lo[16] = { 0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0 };
-static const unsigned char fovpt__mask_hi[16] = { 0, 0, 1, 1, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3 };
+/* The slab test (Kay-Kajiya) of fovpt__closest, W boxes at once, with the near and far
+   planes picked by the direction's sign, so no swap: the same products as (lo - o) * inv and
+   (hi - o) * inv, only never compared. Conservative: max(a, t) = a > t ? a : t and
+   min(b, t) = b < t ? b : t drop a NaN slab distance (0 * inf: the ray lies in a slab's face
+   plane, parallel to it), and the exit is widened by the rounding margin (FOVPT__BOX_GROW,
+   grow_k = FOVPT__BOX_NEG * max(0, -tmin)). */
 
 /* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
    s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
@@ -4591,31 +4579,52 @@ FOVPT__PRIV int fovpt__leaf_take(float t, uint32_t slot, float *tmax, uint32_t *
     }
     return 0;
 }
-FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t first,
-                            uint32_t end, float tmin, float *tmax, uint32_t *best, int any)
+/* The lowest set bit of a nonzero x. */
+FOVPT__PRIV uint32_t fovpt__ctz(uint32_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return (uint32_t)__builtin_ctz(x);
+#else
+    uint32_t n = 0;
+    while (!(x & 1u)) { x >>= 1; ++n; }
+    return n;
+#endif
+}
+/* A ray's per-traversal constants for the leaf tests: origin, direction and tmin broadcast
+   to the four lanes once per ray (the scalar twin reads them from fovpt__ray). */
+typedef struct fovpt__rayv {
+#if FOVPT__SIMD
+    fovpt__v4 ox, oy, oz, dx, dy, dz, tmin;
+#else
+    int unused;
+#endif
+} fovpt__rayv;
+FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fovpt__rayv *rv,
+                            uint32_t first, uint32_t end, float tmin, float *tmax,
+                            uint32_t *best, int any)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
-    uint32_t blk, j;
+    uint32_t blk, blk1;
     /* an empty child of a 4-wide node (count 0, box inverted) is reached only when the box
        test is widened to everything (a tmin of -inf after the direction's rescale) */
     if (first >= end) return 0;
-    for (blk = first >> 2; blk <= (end - 1u) >> 2; ++blk) {
+    blk1 = (end - 1u) >> 2;
+    for (blk = first >> 2; blk <= blk1; ++blk) {
         const float *q = s->leaf_tris + 36u * (size_t)blk;
-        const uint32_t b0 = blk << 2, lo = first > b0 ? first - b0 : 0u,
-            hi = end - b0 < 4u ? end - b0 : 4u;
-        const uint32_t lanes = (0xFu << lo) & (0xFu >> (4u - hi)) & 0xFu;
-        uint32_t hm, dm;
+        const uint32_t b0 = blk << 2;
+        const uint32_t lo = first > b0 ? first - b0 : 0u, hi = end - b0 < 4u ? end - b0 : 4u;
+        const uint32_t lanes = (15u << lo) & (15u >> (4u - hi)) & 15u;
+        uint32_t hm, dm, j;
         float tv[4];
 #if FOVPT__SIMD
         {
-            const fovpt__v4 dx = FOVPT__V_SET1(r->d[0]), dy = FOVPT__V_SET1(r->d[1]),
-                dz = FOVPT__V_SET1(r->d[2]);
+            const fovpt__v4 dx = rv->dx, dy = rv->dy, dz = rv->dz;
             const fovpt__v4 e1x = FOVPT__V_LD(q + 12), e1y = FOVPT__V_LD(q + 16),
                 e1z = FOVPT__V_LD(q + 20), e2x = FOVPT__V_LD(q + 24), e2y = FOVPT__V_LD(q + 28),
                 e2z = FOVPT__V_LD(q + 32);
-            const fovpt__v4 sx = FOVPT__V_SUB(FOVPT__V_SET1(r->o[0]), FOVPT__V_LD(q)),
-                sy = FOVPT__V_SUB(FOVPT__V_SET1(r->o[1]), FOVPT__V_LD(q + 4)),
-                sz = FOVPT__V_SUB(FOVPT__V_SET1(r->o[2]), FOVPT__V_LD(q + 8));
+            const fovpt__v4 sx = FOVPT__V_SUB(rv->ox, FOVPT__V_LD(q)),
+                sy = FOVPT__V_SUB(rv->oy, FOVPT__V_LD(q + 4)),
+                sz = FOVPT__V_SUB(rv->oz, FOVPT__V_LD(q + 8));
             const fovpt__v4 pvx = FOVPT__V_SUB(FOVPT__V_MUL(dy, e2z), FOVPT__V_MUL(dz, e2y)),
                 pvy = FOVPT__V_SUB(FOVPT__V_MUL(dz, e2x), FOVPT__V_MUL(dx, e2z)),
                 pvz = FOVPT__V_SUB(FOVPT__V_MUL(dx, e2y), FOVPT__V_MUL(dy, e2x));
@@ -4645,18 +4654,19 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t 
                                               FOVPT__V_MUL(e2z, qz)), det);
                 m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GE(v, zero),
                                                  FOVPT__V_LE(FOVPT__V_ADD(u, v), ad)));
-                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GT(t, FOVPT__V_SET1(tmin)),
+                m = FOVPT__M_AND(m, FOVPT__M_AND(FOVPT__V_GT(t, rv->tmin),
                                                  FOVPT__V_LE(t, FOVPT__V_SET1(*tmax))));
                 hm &= FOVPT__M_BITS(m);
                 FOVPT__V_ST(tv, t);
             }
         }
 #else
-        (void)lanes;
+        (void)rv;
         hm = dm = 0;
-        for (j = lo; j < hi; ++j) {
+        for (j = 0; j < 4u; ++j) {
             float v0[3], e1[3], e2[3], pv[3], sv[3], qv[3], det, ad, sg, u, v, t;
             uint32_t k;
+            if (!(lanes & (1u << j))) continue;
             for (k = 0; k < 3; ++k) {
                 v0[k] = q[4u * k + j]; e1[k] = q[4u * (3u + k) + j]; e2[k] = q[4u * (6u + k) + j];
             }
@@ -4677,12 +4687,11 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t 
             hm |= 1u << j;
         }
 #endif
-        if (!(hm | dm)) continue;
-        for (j = lo; j < hi; ++j) {
-            const uint32_t slot = s->order[b0 + j];
+        for (dm |= hm; dm; dm &= dm - 1u) { /* the lanes hit (hm) or left to fovpt__isect */
+            const uint32_t slot = s->order[b0 + (j = fovpt__ctz(dm))];
             if (hm & (1u << j)) {
                 if (fovpt__leaf_take(tv[j], slot, tmax, best) && any) return 1;
-            } else if ((dm & (1u << j)) && prims[slot].type != FOVPT__TRI) {
+            } else if (prims[slot].type != FOVPT__TRI) {
                 /* another shape: its own test, over (tmin, tmax] when a tie may count */
                 float tm = *tmax, t;
                 if (*best != FOVPT_PRIM_NONE && tm < FLT_MAX) tm = fovpt__next_up(tm);
@@ -4696,12 +4705,14 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, uint32_t 
 
 /* Closest hit over the bounded primitives and the planes: returns the slot (and lowers *tmax
    to its t) or FOVPT_PRIM_NONE; any: returns the first hit found instead (occlusion); brute:
-   a loop over every bounded primitive instead of the BVH. BVH traversal: the root's box (the
-   binary tree's node 0), then the 4-wide nodes (fovpt__node4): the four children's slab
-   tests at once (SSE, or the same arithmetic per child), then a single hit child is visited
-   directly, of two the nearer (by entry distance) is visited and the other pushed, of three
-   or four the nearest is visited and the others pushed farthest first, each pushed with its
-   entry distance. A pop skips entries that start beyond the closest hit found meanwhile (no
+   a loop over every bounded primitive instead of the BVH. BVH traversal, from the root of
+   the W-wide nodes (fovpt__node4; no separate box test for the whole tree: the root's
+   children's boxes bound it): the W children's slab tests at once (SSE / AVX / NEON /
+   SIMD128, or the same arithmetic per child), then a single hit child is visited directly
+   (the lowest set bit of the hit mask), of two the nearer (by entry distance) is visited and
+   the other pushed, of three or more all are pushed, sorted in place farthest first, and the
+   nearest is popped and visited; every stack entry keeps its entry distance. A pop skips
+   entries that start beyond the closest hit found meanwhile (no
    second box test: tn <= min(box exit, tmax) widened by the rounding margin at the push, so
    tn <= new tmax, widened alike, is the same test). Leaf triangles are intersected inline
    from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
@@ -4713,10 +4724,10 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     uint32_t best = FOVPT_PRIM_NONE, i;
     float t;
     if (s->nodes && !brute) {
-        const fovpt__node *nodes = (const fovpt__node *)s->nodes;
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
         uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
-        float stack_t[FOVPT__STACK], tn;
+        float stack_t[FOVPT__STACK], lim;
+        fovpt__rayv rv;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
@@ -4727,33 +4738,45 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             viz = FOVPT__V_SET1(r->inv[2]);
         const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
             vgk = FOVPT__V_SET1(gk);
+        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax);
+        rv.ox = vox; rv.oy = voy; rv.oz = voz; rv.tmin = vtmin;
+        rv.dx = FOVPT__V_SET1(r->d[0]); rv.dy = FOVPT__V_SET1(r->d[1]);
+        rv.dz = FOVPT__V_SET1(r->d[2]);
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
             woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
             wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
-        (void)vox; (void)voy; (void)voz; (void)vix; (void)viy; (void)viz; (void)vtmin;
-        (void)vgrow; (void)vgk;
+        __m256 wtmax = _mm256_set1_ps(*tmax);
+        (void)vix; (void)viy; (void)viz; (void)vgrow; (void)vgk; (void)vtmax;
 #endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
             iz = r->inv[2];
+        rv.unused = 0;
 #endif
-        if (fovpt__box_hit(&nodes[0], r, tmin, *tmax, gk, &tn)) {
+        {   /* no separate root box test: the root node's children's boxes are its box */
+            lim = *tmax * FOVPT__BOX_GROW + gk; /* a pushed entry distance beyond: culled */
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    if (fovpt__leaf(s, r, first, end, tmin, tmax, &best, any)) return best;
+                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, any)) return best;
+                    lim = *tmax * FOVPT__BOX_GROW + gk;
+#if FOVPT__SIMD
+                    vtmax = FOVPT__V_SET1(*tmax);
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+                    wtmax = _mm256_set1_ps(*tmax);
+#endif
+#endif
                 } else {
-                    /* the four children's slab tests (fovpt__box_hit's arithmetic, the same
+                    /* the four children's slab tests (the slab test's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
                        nearest first: the nearest is visited, the others pushed farthest
                        first with their entry distances */
                     const fovpt__node4 *nd = &n4[ref];
                     float tv[FOVPT_BVH_WIDTH];
-                    uint32_t hm, nh = 0, hc[FOVPT_BVH_WIDTH], j;
-                    float ht[FOVPT_BVH_WIDTH];
+                    uint32_t hm, j;
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
-                    __m256 t0 = _mm256_set1_ps(tmin), u0 = _mm256_set1_ps(*tmax);
+                    __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
 #define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
@@ -4769,7 +4792,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
 #elif FOVPT__SIMD
                     hm = 0;
                     for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
-                        fovpt__v4 t0 = vtmin, u0 = FOVPT__V_SET1(*tmax);
+                        fovpt__v4 t0 = vtmin, u0 = vtmax;
 #define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
                         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
@@ -4797,57 +4820,41 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
                     }
 #endif
-                    /* tables indexed by 4 bits of the mask: the number of hit children, the
-                       lowest and the highest hit child */
-#define FOVPT__NCNT(m) ((uint32_t)fovpt__mask_cnt[m])
-#define FOVPT__NLO(m) ((uint32_t)fovpt__mask_lo[m])
-#define FOVPT__NHI(m) ((uint32_t)fovpt__mask_hi[m])
-#if FOVPT_BVH_WIDTH == 4
-                    nh = FOVPT__NCNT(hm);
-                    if (nh == 1u) { /* the common cases first: one or two children hit */
-                        ref = nd->child[FOVPT__NLO(hm)];
-                        continue;
-                    }
-                    if (nh == 2u) {
-                        const uint32_t j0 = FOVPT__NLO(hm), j1 = FOVPT__NHI(hm);
-#else
-                    nh = FOVPT__NCNT(hm & 15u) + FOVPT__NCNT(hm >> 4);
-                    if (nh == 1u) { /* the common cases first: one or two children hit */
-                        ref = nd->child[(hm & 15u) ? FOVPT__NLO(hm & 15u)
-                                                   : 4u + FOVPT__NLO(hm >> 4)];
-                        continue;
-                    }
-                    if (nh == 2u) {
-                        const uint32_t j0 = (hm & 15u) ? FOVPT__NLO(hm & 15u)
-                                                       : 4u + FOVPT__NLO(hm >> 4),
-                            j1 = (hm >> 4) ? 4u + FOVPT__NHI(hm >> 4) : FOVPT__NHI(hm);
-#endif
-                        FOV_ASSERT(sp < FOVPT__STACK);
-                        if (tv[j1] < tv[j0]) {
-                            stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0]; ref = nd->child[j1];
-                        } else {
-                            stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1]; ref = nd->child[j0];
+                    if (hm) {
+                        uint32_t j0 = fovpt__ctz(hm), j1, base;
+                        hm &= hm - 1u;
+                        if (!hm) { /* the common cases first: one or two children hit */
+                            ref = nd->child[j0];
+                            continue;
                         }
-                        continue;
-                    }
-#undef FOVPT__NCNT
-#undef FOVPT__NLO
-#undef FOVPT__NHI
-                    nh = 0;
-                    for (j = 0; j < FOVPT__W; ++j) {
-                        if (hm & (1u << j)) {
-                            /* insertion by entry distance, ascending (ties: child order) */
-                            uint32_t k = nh++;
-                            while (k > 0 && ht[k - 1u] > tv[j]) {
-                                ht[k] = ht[k - 1u]; hc[k] = hc[k - 1u]; --k;
+                        j1 = fovpt__ctz(hm);
+                        hm &= hm - 1u;
+                        FOV_ASSERT(sp + FOVPT__W <= FOVPT__STACK);
+                        if (!hm) {
+                            if (tv[j1] < tv[j0]) { j = j0; j0 = j1; j1 = j; }
+                            stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1];
+                            ref = nd->child[j0];
+                            continue;
+                        }
+                        /* three or more: all pushed, sorted farthest first (insertion by
+                           entry distance), the nearest popped and visited */
+                        base = sp;
+                        stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0];
+                        stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1];
+                        for (; hm; hm &= hm - 1u) {
+                            j = fovpt__ctz(hm);
+                            stack[sp] = nd->child[j]; stack_t[sp++] = tv[j];
+                        }
+                        for (j = base + 1u; j < sp; ++j) {
+                            const float tk = stack_t[j];
+                            const uint32_t ck = stack[j];
+                            uint32_t k = j;
+                            while (k > base && stack_t[k - 1u] < tk) {
+                                stack_t[k] = stack_t[k - 1u]; stack[k] = stack[k - 1u]; --k;
                             }
-                            ht[k] = tv[j]; hc[k] = nd->child[j];
+                            stack_t[k] = tk; stack[k] = ck;
                         }
-                    }
-                    if (nh > 0) {
-                        FOV_ASSERT(sp + nh <= FOVPT__STACK);
-                        for (j = nh - 1u; j > 0; --j) { stack[sp] = hc[j]; stack_t[sp++] = ht[j]; }
-                        ref = hc[0];
+                        ref = stack[--sp];
                         continue;
                     }
                 }
@@ -4855,7 +4862,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                 for (;;) {
                     if (sp == 0) { ref = FOVPT_PRIM_NONE; break; }
                     --sp;
-                    if (stack_t[sp] <= *tmax * FOVPT__BOX_GROW + gk) { ref = stack[sp]; break; }
+                    if (stack_t[sp] <= lim) { ref = stack[sp]; break; }
                 }
                 if (ref == FOVPT_PRIM_NONE) break;
             }
@@ -4884,7 +4891,9 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     h->prim = FOVPT_PRIM_NONE;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
-        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        /* largest component in [2^-32, 2^32]: dot(dir, dir) >= 2^-64 > 0 when finite */
+        if (!fov__finite3(org) || !fov__finite3(dir)) return 0;
+        fovpt__ray_set(&r, org, dir);
         slot = fovpt__closest(s, &r, tmin, &t, brute, 0);
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
@@ -4966,7 +4975,8 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     if (!s || !org || !dir || !s->prims) return 0;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
-        if (!fovpt__ray_init(&r, org, dir)) return 0;
+        if (!fov__finite3(org) || !fov__finite3(dir)) return 0; /* as in fovpt__hit */
+        fovpt__ray_set(&r, org, dir);
         if (fovpt__closest(s, &r, tmin, &t, 0, 1) != FOVPT_PRIM_NONE) return 1;
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);
