@@ -1654,7 +1654,7 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    (1/4, 1/2, 1/4) instead of the 5 x 5 B3 ones (a third of the work; measured cubes441
    320 x 240 LAYERS: periphery -0.55 dB, fovea unchanged).
    Adaptive cost: where the frame's samples already suffice the filter stays away. A pixel
-   with more than spp_full samples gets fewer passes (k < 1; above 4 fovea_step^2 spp_full
+   with more than spp_full samples gets fewer passes (k < 1; above fovea_step^2 spp_full
    none: measured on cubes441 at 64 fovea spp, 5 passes lose 0.8 dB to the noisy input, one
    gains 1.7), and a pixel whose input noise (the temporal phase's variance, as 8-bit sRGB
    codes with the slope min(12.92, 0.5 / sqrt(l))) is below skip_noise gets none: it costs
