@@ -1,4 +1,4 @@
-/* fovpt.h - v0.6.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.7.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -502,6 +502,15 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.7.0 (2026-12-05) BVH traversal: hit children by the lowest set bit of the hit mask, three
+                      or more sorted on the stack, no separate root box test, per-ray broadcasts out
+                      of the leaves (6-18 % fewer instructions per ray, same hits); an empty
+                      child of a wide node is never entered (a tmin rescaled to -inf reached
+                      it: a fuzzer finding).
+                      Denoiser about 3x cheaper: 3x3 taps where the pixel is coarse (r_small), fewer
+                      passes above spp_full samples, none where the noise is below skip_noise (new
+                      fields). One trace loop with an optional guide sink. fovpt_gaze_predict
+                      (shared block revision 5); the FOVPT_MAX_* limits in the declarations.
    0.6.0 (2026-12-05) BVH: leaf triangles in SoA groups of four tested four at a time; one 4-lane
                       SIMD layer for SSE, NEON (AArch64) and wasm SIMD128 with a scalar twin
                       (FOVPT_NO_SIMD); FOVPT_BVH_WIDTH 4 or 8 (8 with AVX2); the closest hit is
@@ -584,9 +593,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 6
+#define FOVPT_VERSION_MINOR 7
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.6.0"
+#define FOVPT_VERSION_STRING "0.7.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8

@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.9.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.10.0 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -635,6 +635,10 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.10.0 (2026-12-05) fovsdf_gaze_predict: the fovea led by the latency in pursuit (shared block
+                      revision 5); FOV_NO_LIBM takes the CPU's exact square root where it has one
+                      (SSE, Arm, wasm), also in the batch evaluator: as many instructions as with
+                      libm (was 1.6x); FOVSDF_MAX_* in the declarations.
    0.9.0 (2026-12-05) gaze input from the shared block of revision 4: fovsdf_gaze_filter_* (One Euro
                       filter with saccade restart), fovsdf_gaze_margin and fovsdf_config_gaze_margin
                       (a latency-safe fovea), fovsdf_gaze_fixed and FOV_GAZE_FIXED_MARGIN_DEG for
@@ -738,9 +742,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVSDF_VERSION_MAJOR 0
-#define FOVSDF_VERSION_MINOR 9
+#define FOVSDF_VERSION_MINOR 10
 #define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.9.0"
+#define FOVSDF_VERSION_STRING "0.10.0"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
