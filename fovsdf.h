@@ -590,7 +590,8 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
 
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
-     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined;
+     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined (plus the
+     compiler's <xmmintrin.h> on x86 with SSE, for the square root instruction);
      otherwise it also includes <math.h> and <assert.h>.
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
