@@ -505,8 +505,8 @@ RECENT REVISION HISTORY
    0.7.0 (2026-12-05) BVH traversal: hit children by the lowest set bit of the hit mask, three
                       or more sorted on the stack, no separate root box test, per-ray broadcasts out
                       of the leaves (6-18 % fewer instructions per ray, same hits); an empty
-                      child of a wide node is never entered (a tmin rescaled to -inf reached
-                      it: a fuzzer finding).
+                      child of a wide node returns at once (a tmin rescaled to -inf reached it
+                      and read past the leaves: a fuzzer finding).
                       Denoiser about 3x cheaper: 3x3 taps where the pixel is coarse (r_small), fewer
                       passes above spp_full samples, none where the noise is below skip_noise (new
                       fields). One trace loop with an optional guide sink. fovpt_gaze_predict
@@ -908,8 +908,9 @@ typedef struct fov_eye_plan {
    The margin is capped at max_margin_deg; the extrapolation is not bounded otherwise (|v| <
    saccade_deg_s, the lever at most latency_ms + predict_ms). A tracker above about
    FOV_GAZE_HISTORY / predict_ms samples per second fits a shorter span than predict_ms
-   (32 samples: 160 Hz at the default 200 ms) and extrapolates less often (a noisier
-   velocity); decimate to a lower rate to keep the span. Use the centre as the frame's gaze
+   (32 samples: 160 Hz at the default 200 ms), a noisier velocity; above about 775 Hz the
+   32 samples span less than FOV_GAZE_FIT_MIN_MS and it never extrapolates: decimate the
+   samples to a lower rate (every k-th) to keep the span. Use the centre as the frame's gaze
    (_gaze_from_deg for pixels) and the margin as _config_gaze_margin's / _set_gaze_margin's.
    The filtered gaze (x_deg, y_deg) and _gaze_margin stay as they were. What the prediction
    cannot know: a pursuit that starts or stops within the latency (the samples that would
@@ -929,7 +930,7 @@ typedef enum fov_gaze_mode {
 typedef struct fov_gaze_prediction {
     float x_deg, y_deg;  /* the gaze predicted for latency_ms after the newest sample, degrees */
     float margin_deg;    /* the margin around it, degrees (capped at cfg.max_margin_deg) */
-    float vx, vy;        /* the fitted velocity, deg/s (0 when settling) */
+    float vx, vy;        /* the fitted velocity, deg/s (0 when settling or in a saccade) */
     float horizon_s;     /* the extrapolation's lever h, seconds (0 unless pursuit) */
     uint32_t n;          /* samples fitted (0 when settling or in a saccade) */
     fov_gaze_mode mode;  /* which case above */
@@ -944,10 +945,11 @@ typedef struct fov_gaze_filter_config {
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
-    float predict_ms;    /* _gaze_predict's fit window, ms, [20, 2000]                0: 200 */
+    float predict_ms;    /* _gaze_predict's fit window, ms, [40, 2000]                0: 200 */
     fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
-                            _push, _push_px, _gaze_margin on the filter) calls it once with
-                            FOV_LOG_ERROR, the code and the message, as the configs do */
+                            _push, _push_px, _gaze_margin and _gaze_predict on the filter)
+                            calls it once with FOV_LOG_ERROR, the code and the message, as the
+                            configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
 #define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
@@ -1659,20 +1661,23 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    pass i filters the pixel only while 2^i <= fovea_step * r * k (else the pixel is passed
    through), k = min(1, sqrt(spp_full / spp)), and the history weight is 1 - alpha,
    alpha(p) = max(alpha_periphery, alpha_fovea / r): the fovea keeps the fewest passes and
-   the shortest history. Pixels with r >= r_small take the 3 x 3 linear B-spline taps
-   (1/4, 1/2, 1/4) instead of the 5 x 5 B3 ones (a third of the work; measured cubes441
+   the shortest history. Pixels whose reach r k >= r_small take the 3 x 3 linear B-spline
+   taps (1/4, 1/2, 1/4) instead of the 5 x 5 B3 ones (a third of the work; measured cubes441
    320 x 240 LAYERS: periphery -0.55 dB, fovea unchanged).
    Adaptive cost: where the frame's samples already suffice the filter stays away. A pixel
-   with more than spp_full samples gets fewer passes (k < 1; above fovea_step^2 spp_full
+   with more than spp_full samples gets fewer passes (k < 1; above (fovea_step r)^2 spp_full
    none: measured on cubes441 at 64 fovea spp, 5 passes lose 0.8 dB to the noisy input, one
    gains 1.7), and a pixel whose input noise (the temporal phase's variance, as 8-bit sRGB
-   codes with the slope min(12.92, 0.5 / sqrt(l))) is below skip_noise gets none: it costs
-   one compare per pass. A guide var from at least 8 samples is trusted alone (the spatial
-   estimate, which counts shading as noise, is mixed in only below).
+   codes with the slope min(12.92, 0.5 / sqrt(l))) is below skip_noise gets none when that
+   variance rests on at least 8 samples (the spp guide times the history frames; fewer may
+   all have missed the light): it costs one compare per pass. A guide var from at least 8
+   samples is trusted alone (the spatial estimate, which counts shading as noise, is mixed in
+   only below).
    Weights: one exponential per tap (fovpt__exp_neg) for the depth, albedo, luminance and
-   normal stops; c^phi_normal = exp(-phi_normal (-ln c)) with -ln c from a 4-term series for
-   c >= 3/4 (relative weight error below 1e-4 where the weight is above e^-10); c < 3/4 with
-   phi_normal >= 105 drops the tap (weight below e^-30), else c^phi_normal exactly.
+   normal stops; with phi_normal >= 128 (the default), c^phi_normal = exp(-phi_normal (-ln c))
+   with -ln c from a 4-term series for c >= 3/4 (relative weight error below 1e-4 where the
+   weight is above e^-10); c < 3/4 with phi_normal >= 104.3 drops the tap (weight below
+   e^-30); else c^phi_normal exactly.
    Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
    filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
 #ifndef FOVPT_DN_MAX_LEVELS
@@ -1703,13 +1708,14 @@ typedef struct fovpt_denoise_cfg {
     float depth_tol;          /* relative depth tolerance of reprojection, (0, 1]  0: 0.02 */
     float normal_cos;         /* least normal dot of reprojection, [-1, 1)          0: 0.9 */
     float skip_noise;         /* a pass leaves a pixel as it is where its noise is below
-                                 this many 8-bit display codes, [0, 255]; 1e-9: never 0: 0.5 */
+                                 this many 8-bit display codes (a variance from >= 8
+                                 samples), (0, 255]; 1e-9: only where it is 0     0: 0.5 */
     float spp_full;           /* samples per pixel (the spp guide) up to which a pixel gets
                                  every pass of its coarseness; above, the widest step shrinks
                                  by sqrt(spp_full / spp): a converged fovea is left as it is,
                                  (0, 1e30]                                            0: 16 */
-    float r_small;            /* coarseness from which the passes take 3 x 3 taps instead
-                                 of 5 x 5, [1, 65536]; 65536: never                  0: 2 */
+    float r_small;            /* reach r k from which the passes take 3 x 3 taps instead
+                                 of 5 x 5, [1, 65536]                                0: 2 */
     fov_display display;      /* eccentricity (fov_display); all zero: the camera's frustum */
     fov_eye eye;              /* the eye model (fov_eye), zero fields: the defaults */
     fov_logger logger;
@@ -1855,9 +1861,11 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
    ranges the library uses; tests/test_fovsdf.c checks them against libm). The square root
-   and floor are the target's own instructions where it has them for certain, which need no
-   libm (FOV__SQRT_HW: 1 x86 SSE sqrtss, 2 AArch64 fsqrt, 3 32-bit Arm VFP vsqrt.f32, 4 wasm
-   f32.sqrt): correctly rounded, the value libm's sqrtf gives. Elsewhere (x87-only x86,
+   is the target's own instruction where it has one for certain, which needs no libm
+   (FOV__SQRT_HW: 1 x86 SSE sqrtss (inline assembly with gcc and clang, so a freestanding
+   build includes no intrinsics header, which may pull in <stdlib.h>; <xmmintrin.h> with
+   MSVC), 2 AArch64 fsqrt, 3 32-bit Arm VFP vsqrt.f32, 4 wasm f32.sqrt): correctly rounded,
+   the value libm's sqrtf gives, -0 for -0. Elsewhere (x87-only x86,
    Cortex-M0/M3, RISC-V, MSVC on Arm...) the software versions below. __builtin_sqrtf is
    not used outside wasm: gcc keeps a call to sqrtf for negative inputs (errno) unless
    -fno-math-errno, and a target without the instruction always calls sqrtf. */
@@ -1873,7 +1881,9 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 
 #if defined(__wasm__) && defined(__clang__)
 #define FOV__SQRT_HW 4
-#elif defined(__SSE__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1)
+#elif defined(__SSE__) && defined(__GNUC__)
+#define FOV__SQRT_HW 1
+#elif defined(_MSC_VER) && (defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
 #define FOV__SQRT_HW 1
 #include <xmmintrin.h>
 #elif defined(__aarch64__) && defined(__GNUC__)
@@ -1888,6 +1898,10 @@ FOV__PRIV float fov__sqrtf(float x)
 {
 #if defined(FOV__SQRT_HW) && FOV__SQRT_HW == 4
     return __builtin_sqrtf(x); /* one f32.sqrt instruction (clang's wasm32 has no errno) */
+#elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 1 && defined(__GNUC__)
+    float r;
+    __asm__("sqrtss {%1, %0|%0, %1}" : "=x"(r) : "x"(x)); /* AT&T | Intel syntax */
+    return r;
 #elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 1
     return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))); /* sqrtss */
 #elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 2
@@ -1901,7 +1915,7 @@ FOV__PRIV float fov__sqrtf(float x)
 #else
     fov__bits b;
     float y;
-    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fov__is0(x) ? x : (x - x) / (x - x); /* +-0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -2497,8 +2511,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
         *bad = FOV__MSG("gaze filter config: max_dt_ms must be in (0, 1e6] (0: 500)");
     else if (!(c.max_margin_deg > 0.0f && c.max_margin_deg <= 90.0f))
         *bad = FOV__MSG("gaze filter config: max_margin_deg must be in (0, 90] (0: 15)");
-    else if (!(c.predict_ms >= 20.0f && c.predict_ms <= 2000.0f))
-        *bad = FOV__MSG("gaze filter config: predict_ms must be in [20, 2000] (0: 200)");
+    else if (!(c.predict_ms >= FOV_GAZE_FIT_MIN_MS && c.predict_ms <= 2000.0f))
+        *bad = FOV__MSG("gaze filter config: predict_ms must be in [40, 2000] (0: 200)");
     else {
         *o = c;
         return FOV_OK;
@@ -2756,8 +2770,8 @@ FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_
     if (r != FOV_OK || f->samples == 0u || f->saccade) return r;
     cap = f->cfg.max_margin_deg > 0.0f && f->cfg.max_margin_deg <= 90.0f ? f->cfg.max_margin_deg
                                                                           : 15.0f;
-    win = (f->cfg.predict_ms >= 20.0f && f->cfg.predict_ms <= 2000.0f ? f->cfg.predict_ms
-                                                                       : 200.0f) * 1000.0f;
+    win = f->cfg.predict_ms >= FOV_GAZE_FIT_MIN_MS && f->cfg.predict_ms <= 2000.0f
+              ? f->cfg.predict_ms * 1000.0f : 200000.0f;
     avail = f->count < f->settled ? f->count : f->settled;
     if (avail > FOV_GAZE_HISTORY) avail = FOV_GAZE_HISTORY;
     t0 = f->hist_t[f->head % FOV_GAZE_HISTORY];
@@ -4777,10 +4791,11 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
 #endif
 #endif
                 } else {
-                    /* the four children's slab tests (the slab test's arithmetic, the same
+                    /* the W children's slab tests (the slab test's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
-                       nearest first: the nearest is visited, the others pushed farthest
-                       first with their entry distances */
+                       nearest first: one is visited; of two the nearer is visited and the
+                       other pushed; three or more are all pushed with their entry
+                       distances, sorted farthest first, and the nearest popped */
                     const fovpt__node4 *nd = &n4[ref];
                     float tv[FOVPT_BVH_WIDTH];
                     uint32_t hm, j;
@@ -7555,8 +7570,11 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                 o[6] = o[6] < 0.0f ? s1 : 0.5f * (o[6] + s1);
             }
             /* input noise below skip_noise display codes (the sRGB slope taken as
-               min(12.92, 0.5 / sqrt(l)), the gamma-2 curve's): no pass filters the pixel */
-            if (fov__maxf(o[6], 0.0f) * fov__minf(166.9264f, 0.25f / fov__maxf(o[3], 1e-30f)) *
+               min(12.92, 0.5 / sqrt(l)), the gamma-2 curve's), estimated from at least
+               FOVPT__DN_VAR_SPP samples (the guide's spp, at least 1, times the history
+               frames): no pass filters the pixel */
+            if (fov__maxf(var_own, 1.0f) * n >= FOVPT__DN_VAR_SPP &&
+                fov__maxf(o[6], 0.0f) * fov__minf(166.9264f, 0.25f / fov__maxf(o[3], 1e-30f)) *
                     65025.0f < dn->cfg.skip_noise * dn->cfg.skip_noise)
                 dn->coarse[i] = 0.0f;
             o[7] = 0.0f;
@@ -7623,7 +7641,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
     static const float h3[3] = { 0.25f, 0.5f, 0.25f };
     uint32_t x, y, k, W, H, ipn;
-    int step, alb, nfar;
+    int step, alb, nfar, nser;
     const float *src, *pk;
     float *dst, ia2, pn, fstep;
     if (!dn) return FOV_ERR_NULL;
@@ -7650,6 +7668,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
     pn = dn->cfg.phi_normal;
     nfar = pn * 0.287682072f >= 30.0f; /* c < 3/4: c^phi_normal below e^-30, the tap dropped */
+    nser = pn >= 128.0f; /* the series' relative error below 1e-4 (smaller pn: exact power) */
     ipn = 0;
     if (pn <= 4096.0f && fov__is0(pn - FOV__FLOOR(pn))) ipn = (uint32_t)pn;
     for (y = y0; y < y1; ++y) {
@@ -7707,10 +7726,10 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
                         if (hitp) {
                             float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
                             ex += fov__absf(zp - gq[0]) * idz[ady][dx < 0 ? -dx : dx];
-                            if (c >= 0.75f) {
+                            if (nser && c >= 0.75f) {
                                 ex += pn * fovpt__dn_nlog(c);
                             } else {
-                                if (nfar || !(c > 0.0f)) continue;
+                                if ((nfar && c < 0.75f) || !(c > 0.0f)) continue;
                                 w *= ipn ? fovpt__dn_ipow(c, ipn) : FOV__POW(c, pn);
                             }
                         }

@@ -1042,8 +1042,9 @@ typedef struct fov_eye_plan {
    The margin is capped at max_margin_deg; the extrapolation is not bounded otherwise (|v| <
    saccade_deg_s, the lever at most latency_ms + predict_ms). A tracker above about
    FOV_GAZE_HISTORY / predict_ms samples per second fits a shorter span than predict_ms
-   (32 samples: 160 Hz at the default 200 ms) and extrapolates less often (a noisier
-   velocity); decimate to a lower rate to keep the span. Use the centre as the frame's gaze
+   (32 samples: 160 Hz at the default 200 ms), a noisier velocity; above about 775 Hz the
+   32 samples span less than FOV_GAZE_FIT_MIN_MS and it never extrapolates: decimate the
+   samples to a lower rate (every k-th) to keep the span. Use the centre as the frame's gaze
    (_gaze_from_deg for pixels) and the margin as _config_gaze_margin's / _set_gaze_margin's.
    The filtered gaze (x_deg, y_deg) and _gaze_margin stay as they were. What the prediction
    cannot know: a pursuit that starts or stops within the latency (the samples that would
@@ -1063,7 +1064,7 @@ typedef enum fov_gaze_mode {
 typedef struct fov_gaze_prediction {
     float x_deg, y_deg;  /* the gaze predicted for latency_ms after the newest sample, degrees */
     float margin_deg;    /* the margin around it, degrees (capped at cfg.max_margin_deg) */
-    float vx, vy;        /* the fitted velocity, deg/s (0 when settling) */
+    float vx, vy;        /* the fitted velocity, deg/s (0 when settling or in a saccade) */
     float horizon_s;     /* the extrapolation's lever h, seconds (0 unless pursuit) */
     uint32_t n;          /* samples fitted (0 when settling or in a saccade) */
     fov_gaze_mode mode;  /* which case above */
@@ -1078,10 +1079,11 @@ typedef struct fov_gaze_filter_config {
     float max_dt_ms;     /* a larger step between samples is FOV_ERR_LIMIT, (0, 1e6]  0: 500 */
     float max_margin_deg; /* the margin's cap (and the margin during a saccade), (0, 90]
                                                                                   0: 15 */
-    float predict_ms;    /* _gaze_predict's fit window, ms, [20, 2000]                0: 200 */
+    float predict_ms;    /* _gaze_predict's fit window, ms, [40, 2000]                0: 200 */
     fov_logger logger;   /* optional: every rejected call (_gaze_filter_init with this config,
-                            _push, _push_px, _gaze_margin on the filter) calls it once with
-                            FOV_LOG_ERROR, the code and the message, as the configs do */
+                            _push, _push_px, _gaze_margin and _gaze_predict on the filter)
+                            calls it once with FOV_LOG_ERROR, the code and the message, as the
+                            configs do */
 } fov_gaze_filter_config;
 #define FOV_GAZE_BETA_NONE (-1.0f) /* beta: no speed adaptation (a plain low-pass) */
 #define FOV_GAZE_HISTORY 32        /* raw samples kept for the saccade window: window_ms
@@ -2060,9 +2062,11 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 #else
 /* FOV_NO_LIBM: small float approximations (relative error about 1e-6 or better on the
    ranges the library uses; tests/test_fovsdf.c checks them against libm). The square root
-   and floor are the target's own instructions where it has them for certain, which need no
-   libm (FOV__SQRT_HW: 1 x86 SSE sqrtss, 2 AArch64 fsqrt, 3 32-bit Arm VFP vsqrt.f32, 4 wasm
-   f32.sqrt): correctly rounded, the value libm's sqrtf gives. Elsewhere (x87-only x86,
+   is the target's own instruction where it has one for certain, which needs no libm
+   (FOV__SQRT_HW: 1 x86 SSE sqrtss (inline assembly with gcc and clang, so a freestanding
+   build includes no intrinsics header, which may pull in <stdlib.h>; <xmmintrin.h> with
+   MSVC), 2 AArch64 fsqrt, 3 32-bit Arm VFP vsqrt.f32, 4 wasm f32.sqrt): correctly rounded,
+   the value libm's sqrtf gives, -0 for -0. Elsewhere (x87-only x86,
    Cortex-M0/M3, RISC-V, MSVC on Arm...) the software versions below. __builtin_sqrtf is
    not used outside wasm: gcc keeps a call to sqrtf for negative inputs (errno) unless
    -fno-math-errno, and a target without the instruction always calls sqrtf. */
@@ -2078,7 +2082,9 @@ FOV__PRIV int fov__isnan(float x) { return !(x <= 0.0f) && !(x > 0.0f); }
 
 #if defined(__wasm__) && defined(__clang__)
 #define FOV__SQRT_HW 4
-#elif defined(__SSE__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1)
+#elif defined(__SSE__) && defined(__GNUC__)
+#define FOV__SQRT_HW 1
+#elif defined(_MSC_VER) && (defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
 #define FOV__SQRT_HW 1
 #include <xmmintrin.h>
 #elif defined(__aarch64__) && defined(__GNUC__)
@@ -2093,6 +2099,10 @@ FOV__PRIV float fov__sqrtf(float x)
 {
 #if defined(FOV__SQRT_HW) && FOV__SQRT_HW == 4
     return __builtin_sqrtf(x); /* one f32.sqrt instruction (clang's wasm32 has no errno) */
+#elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 1 && defined(__GNUC__)
+    float r;
+    __asm__("sqrtss {%1, %0|%0, %1}" : "=x"(r) : "x"(x)); /* AT&T | Intel syntax */
+    return r;
 #elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 1
     return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x))); /* sqrtss */
 #elif defined(FOV__SQRT_HW) && FOV__SQRT_HW == 2
@@ -2106,7 +2116,7 @@ FOV__PRIV float fov__sqrtf(float x)
 #else
     fov__bits b;
     float y;
-    if (!(x > 0.0f)) return fov__is0(x) ? 0.0f : (x - x) / (x - x); /* 0, or NaN for x < 0 */
+    if (!(x > 0.0f)) return fov__is0(x) ? x : (x - x) / (x - x); /* +-0, or NaN for x < 0 */
     if (x > FLT_MAX) return x;
     b.f = x;
     b.u = 0x5f3759dfu - (b.u >> 1); /* 1/sqrt(x) estimate, then Newton */
@@ -2702,8 +2712,8 @@ FOV__PRIV fov_result fov__gaze_cfg(const fov_gaze_filter_config *in, fov_gaze_fi
         *bad = FOV__MSG("gaze filter config: max_dt_ms must be in (0, 1e6] (0: 500)");
     else if (!(c.max_margin_deg > 0.0f && c.max_margin_deg <= 90.0f))
         *bad = FOV__MSG("gaze filter config: max_margin_deg must be in (0, 90] (0: 15)");
-    else if (!(c.predict_ms >= 20.0f && c.predict_ms <= 2000.0f))
-        *bad = FOV__MSG("gaze filter config: predict_ms must be in [20, 2000] (0: 200)");
+    else if (!(c.predict_ms >= FOV_GAZE_FIT_MIN_MS && c.predict_ms <= 2000.0f))
+        *bad = FOV__MSG("gaze filter config: predict_ms must be in [40, 2000] (0: 200)");
     else {
         *o = c;
         return FOV_OK;
@@ -2961,8 +2971,8 @@ FOV__PRIV fov_result fov__gaze_predict(const fov_gaze_filter *f, float accuracy_
     if (r != FOV_OK || f->samples == 0u || f->saccade) return r;
     cap = f->cfg.max_margin_deg > 0.0f && f->cfg.max_margin_deg <= 90.0f ? f->cfg.max_margin_deg
                                                                           : 15.0f;
-    win = (f->cfg.predict_ms >= 20.0f && f->cfg.predict_ms <= 2000.0f ? f->cfg.predict_ms
-                                                                       : 200.0f) * 1000.0f;
+    win = f->cfg.predict_ms >= FOV_GAZE_FIT_MIN_MS && f->cfg.predict_ms <= 2000.0f
+              ? f->cfg.predict_ms * 1000.0f : 200000.0f;
     avail = f->count < f->settled ? f->count : f->settled;
     if (avail > FOV_GAZE_HISTORY) avail = FOV_GAZE_HISTORY;
     t0 = f->hist_t[f->head % FOV_GAZE_HISTORY];
@@ -3199,10 +3209,12 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
    (compilers keep sqrtf scalar while errno may be set), for libm's sqrtf and for FOV_NO_LIBM
    where fov__sqrtf is the target's instruction (FOV__SQRT_HW: both correctly rounded, so the
    vector square root gives their values); a math hook or FOV_NO_LIBM's software square root
-   runs lane by lane. FOVSDF_NO_SIMD: no intrinsics. */
+   runs lane by lane, and so does a freestanding x86 build with FOV_NO_LIBM (gcc's intrinsics
+   headers include <stdlib.h>). FOVSDF_NO_SIMD: no intrinsics. */
 #define FOVSDF__L ((((FOVSDF_BATCH) + 7) / 8) * 8)
 #if !defined(FOVSDF_NO_SIMD) && !defined(FOV__HOOKED_MATH) && \
-    (!defined(FOV_NO_LIBM) || defined(FOV__SQRT_HW))
+    (!defined(FOV_NO_LIBM) || (defined(FOV__SQRT_HW) && \
+                               (FOV__SQRT_HW != 1 || !defined(__GNUC__) || __STDC_HOSTED__)))
 #if defined(__AVX__)
 #include <immintrin.h>
 #define FOVSDF__SQRT_AVX 1

@@ -733,6 +733,15 @@ static void test_predict_errors(void)
     r = fovsdf_gaze_filter_init(&f, &c);
     check(r == FOV_ERR_INVALID_ARG && !memcmp(&f, &g, sizeof f), "predict_ms_too_small", "%d",
           (int)r);
+    c.predict_ms = 39.0f; /* a window shorter than FOV_GAZE_FIT_MIN_MS (40 ms) could never fit */
+    r = fovsdf_gaze_filter_init(&f, &c);
+    check(r == FOV_ERR_INVALID_ARG && !memcmp(&f, &g, sizeof f), "predict_ms_below_fit_span", "%d",
+          (int)r);
+    c.predict_ms = 40.0f;
+    r = fovpt_gaze_filter_init(&f, &c);
+    check(r == FOV_OK && f.cfg.predict_ms >= 40.0f && f.cfg.predict_ms <= 40.0f, "predict_ms_40_accepted",
+          "%d", (int)r);
+    f = g;
     c.predict_ms = nan;
     r = fovlp_gaze_filter_init(&f, &c);
     check(r == FOV_ERR_NOT_FINITE && !memcmp(&f, &g, sizeof f), "predict_ms_nan", "%d", (int)r);
