@@ -276,7 +276,7 @@ bench-web-native: web
 
 # fovpt closest-hit Mrays/s on the same rays: native gcc (SSE2 and FOVPT_NO_SIMD, libm) and
 # the browser demo's wasm32 builds (scalar and SIMD128, FOV_NO_LIBM) in node, interleaved
-# (bench/pt_rays.c, bench/pt_rays.mjs; a few seconds)
+# (bench/wasm/pt_rays.c, bench/wasm/pt_rays.mjs; a few seconds)
 WASM_FLAGS := --target=wasm32 -std=c99 -O2 -ffp-contract=off -ffreestanding -nostdlib \
 	-Wall -Wextra -Wshadow -Wdouble-promotion -Werror -Wl,--no-entry -Wl,--strip-all \
 	-Wl,-z,stack-size=1048576
@@ -284,9 +284,9 @@ bench-pt-wasm: WASM_FLAGS += -Wno-unused-function
 bench-pt-wasm: WARN += -Wno-unused-function
 bench-pt-wasm:
 	@mkdir -p $(BUILD)/ptw
-	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE bench/pt_rays.c -lm -o $(BUILD)/ptw/rays_native
-	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE -DFOVPT_NO_SIMD bench/pt_rays.c -lm \
+	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE bench/wasm/pt_rays.c -lm -o $(BUILD)/ptw/rays_native
+	$(CC) $(STD) -O2 -ffp-contract=off $(WARN) -DWEB_NATIVE -DFOVPT_NO_SIMD bench/wasm/pt_rays.c -lm \
 	    -o $(BUILD)/ptw/rays_native_scalar
-	clang $(WASM_FLAGS) bench/pt_rays.c -o $(BUILD)/ptw/rays.wasm
-	clang $(WASM_FLAGS) -msimd128 bench/pt_rays.c -o $(BUILD)/ptw/rays.simd.wasm
-	nice node bench/pt_rays.mjs $(BUILD)/ptw
+	clang $(WASM_FLAGS) bench/wasm/pt_rays.c -o $(BUILD)/ptw/rays.wasm
+	clang $(WASM_FLAGS) -msimd128 bench/wasm/pt_rays.c -o $(BUILD)/ptw/rays.simd.wasm
+	nice node bench/wasm/pt_rays.mjs $(BUILD)/ptw

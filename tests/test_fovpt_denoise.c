@@ -17,11 +17,7 @@
  * (the running mean for the first frames); a camera moved by exactly one pixel over a
  * fronto-parallel plane reads its history one pixel over.
  */
-/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
-   (tests/common/fov_impl_*.c) instead of compiling them in this file */
-#ifndef FOV_TEST_LINK_IMPL
-#define FOVPT_IMPLEMENTATION
-#endif
+#define FOVPT_IMPLEMENTATION /* the implementation here: a check calls fovpt__dn_nlog */
 #include "fovpt.h"
 #include "fovcheck.h"
 

@@ -1,6 +1,6 @@
 // pt_rays.mjs - fovpt closest-hit Mrays/s natively and in WebAssembly on the same rays, in one
 // run (make bench-pt-wasm builds the programs into build/ptw/ and runs this):
-//   node bench/pt_rays.mjs [DIR=build/ptw] [ROUNDS=5] [W=320] [H=240]
+//   node bench/wasm/pt_rays.mjs [DIR=build/ptw] [ROUNDS=5] [W=320] [H=240]
 // Rounds interleave the builds: native SSE2 (DIR/rays_native, one traversal pass after a
 // warm-up, one process per round), native scalar (rays_native_scalar, FOVPT_NO_SIMD),
 // wasm SIMD128 (rays.simd.wasm) and wasm scalar (rays.wasm) in node (V8, one thread, warmed

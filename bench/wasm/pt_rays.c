@@ -1,5 +1,5 @@
 /* pt_rays.c - fovpt closest-hit throughput on the same rays natively and in WebAssembly
-   (make bench-pt-wasm; bench/pt_rays.mjs runs the builds interleaved and prints the table).
+   (make bench-pt-wasm; bench/wasm/pt_rays.mjs runs the builds interleaved and prints the table).
    One source, built three ways into build/ptw/:
      rays_native, rays_native_scalar  gcc -O2 (SSE2 traversal; -DFOVPT_NO_SIMD), libm; the
                                       program prints "camera_ms bounce_ms checksums" for one
@@ -24,9 +24,9 @@
 #define FOV_NO_LIBM
 #endif
 #define FOV_ASSERT(c) ((void)0)
-#include "../examples/web/web_rt.h"
+#include "../../examples/web/web_rt.h"
 #define FOVPT_IMPLEMENTATION
-#include "../fovpt.h"
+#include "../../fovpt.h"
 
 #define RAYS_N 224u
 
