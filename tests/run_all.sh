@@ -153,7 +153,8 @@ prebuild_one() {
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
 WARN="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror -ffp-contract=off"
-SAN="-O1 -g -ffp-contract=off -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
+# -g1: line tables (the sanitizers' backtraces keep file:line), a quarter less compile time than -g
+SAN="-O1 -g1 -ffp-contract=off -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer"
 
 # The implementations of the three headers, compiled once per flavour (tests/common/
 # fov_impl_<h>.c; -c): the test programs that three_builds marks "link" are compiled with
