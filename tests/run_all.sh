@@ -30,6 +30,12 @@ CC=${CC:-gcc}
 TOTAL_P=0
 TOTAL_F=0
 T0=$(date +%s)
+# cpu_s FILE: CPU_S = the CPU seconds (user + system) of the finished children of this shell
+# (`times` runs in this shell: in a $(...) subshell it would count the subshell's children)
+cpu_s() {
+    times >"$1"
+    CPU_S=$(awk 'NR == 2 { s = 0; for (i = 1; i <= 2; i++) { split($i, a, /[ms]/); s += a[1] * 60 + a[2] } printf "%.0f", s }' "$1")
+}
 
 # selected NAME: true without T, or when NAME contains one of T's comma-separated patterns
 T=${T:-}
@@ -59,14 +65,17 @@ run_section() {
     selected "$name" || return 0
     flush_bg
     t1=$(date +%s)
+    cpu_s build/logs/times; c1=$CPU_S
     "$@" >"$log" 2>&1
     rc=$?
-    report_section "$name" "$rc" $(( $(date +%s) - t1 ))
+    cpu_s build/logs/times
+    report_section "$name" "$rc" $(( $(date +%s) - t1 )) $(( CPU_S - c1 ))
 }
 
-# report_section NAME STATUS SECONDS: the section's FAIL/SKIP lines and summary from its log
+# report_section NAME STATUS SECONDS CPU_SECONDS: the section's FAIL/SKIP lines and summary
+# from its log
 report_section() {
-    local name=$1 rc=$2 secs=$3 log=build/logs/$1.log summary p f
+    local name=$1 rc=$2 secs=$3 cpu=$4 log=build/logs/$1.log summary p f
     summary=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -1)
     if [ -z "$summary" ]; then
         p=0; f=1
@@ -78,7 +87,7 @@ report_section() {
         if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; echo "FAIL [$name] exit status $rc"; fi
         grep -E '^(FAIL|SKIP)' "$log" | sed "s/^/  [$name] /"
     fi
-    echo "[$name] $p passed, $f failed ($secs s)"
+    echo "[$name] $p passed, $f failed ($secs s, CPU $cpu s)"
     TOTAL_P=$((TOTAL_P + p))
     TOTAL_F=$((TOTAL_F + f))
 }
@@ -94,17 +103,18 @@ run_bg() {
     while [ "$(jobs -rp | wc -l)" -ge "$JOBS" ]; do wait -n 2>/dev/null || true; done
     rm -f "build/logs/$name.bg"
     ( t1=$(date +%s); "$@" >"build/logs/$name.log" 2>&1
-      echo "$? $(( $(date +%s) - t1 ))" >"build/logs/$name.bg" ) &
+      rc=$?; cpu_s "build/logs/$name.times"
+      echo "$rc $(( $(date +%s) - t1 )) $CPU_S" >"build/logs/$name.bg" ) &
     BG_NAMES+=("$name")
 }
 flush_bg() {
-    local name rc secs
+    local name rc secs cpu
     [ ${#BG_NAMES[@]} -eq 0 ] && return 0
     wait
     for name in "${BG_NAMES[@]}"; do
-        rc=1 secs=0
-        [ -f "build/logs/$name.bg" ] && read -r rc secs <"build/logs/$name.bg"
-        report_section "$name" "$rc" "$secs"
+        rc=1 secs=0 cpu=0
+        [ -f "build/logs/$name.bg" ] && read -r rc secs cpu <"build/logs/$name.bg"
+        report_section "$name" "$rc" "$secs" "$cpu"
     done
     BG_NAMES=()
 }
@@ -323,7 +333,12 @@ prebuild_all() {
     done
     wait
 }
-prebuild_all "${SEL_CMDS[@]}"
+# the sanitizer builds first: they take 2-3 times as long, and a long compile started last
+# would leave the other CPUs idle at the end of the round
+SEL_SORTED=()
+for c in "${SEL_CMDS[@]}"; do [[ $c == *-fsanitize=* ]] && SEL_SORTED+=("$c"); done
+for c in "${SEL_CMDS[@]}"; do [[ $c == *-fsanitize=* ]] || SEL_SORTED+=("$c"); done
+prebuild_all "${SEL_SORTED[@]}"
 for fl in o2 nolibm san; do
     objs=()
     for h in sdf lp pt; do
@@ -333,10 +348,12 @@ for fl in o2 nolibm san; do
     [ ${#objs[@]} -eq 3 ] && ar rcs "build/tests/libfovimpl_$fl.a" "${objs[@]}"
 done
 prebuild_all "${SEL_CMDS_LATE[@]}"
-echo "built $nb test programs in $(( $(date +%s) - T0 )) s ($JOBS at a time)"
+cpu_s build/logs/times
+echo "built $nb test programs in $(( $(date +%s) - T0 )) s, CPU $CPU_S s ($JOBS at a time)"
 suite
 
 flush_bg
-echo "suite took $(( $(date +%s) - T0 )) s"
+cpu_s build/logs/times
+echo "suite took $(( $(date +%s) - T0 )) s, CPU $CPU_S s ($JOBS jobs at a time)"
 echo "$TOTAL_P passed, $TOTAL_F failed"
 [ "$TOTAL_F" -eq 0 ]

@@ -10,30 +10,37 @@
 #
 # What is checked, for every library header present at the top level (fovsdf.h, fovlp.h,
 # fovpt.h; macros use the upper-case prefix: FOVSDF_IMPLEMENTATION, FOVSDF_STATIC, ...):
-#   matrix      gcc, clang (C99, C11) and g++, clang++ (C++98, C++11) at -O0 and -O2 compile
+#   matrix      gcc, clang (C99, C11) and g++, clang++ (C++98, C++11) at -O0 compile
 #               tests/compile/<hdr>.c / <hdr>.cc (the implementation plus a small program;
 #               a generated TU that only instantiates the implementation when those files
 #               do not exist yet) with
 #                 -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion -Werror
 #                 -ffp-contract=off   (C adds -Wstrict-prototypes -Wmissing-prototypes)
-#               -c only, except one cell per compiler which is linked and run.
-#   style20     the STYLE.md rule-20 extras: C99 with -Wsign-conversion -Wcast-qual
-#               -Wfloat-equal added, and C++17 (-c).
+#               -c only; plus one -O2 cell per compiler (gcc C99, clang C11, g++ C++98,
+#               clang++ C++11), linked and run: the warnings that need the optimiser's flow
+#               analysis (-Wmaybe-uninitialized, -Warray-bounds, ...) do not depend on the
+#               language standard, the standard's checks do not depend on -O.
+#   style20     the STYLE.md rule-20 extras (front-end warnings, -O0): C99 with
+#               -Wsign-conversion -Wcast-qual -Wfloat-equal added, and C++17 (-c).
 #   options     every documented switch compiled alone and all together with gcc, clang and
 #               g++ (FOV_NO_LIBM, FOV_NO_ERROR_STRINGS, FOVxx_STATIC, FOV_DLL, NDEBUG, and
-#               FOVSDF_DOUBLE for fovsdf.h): alone at -O1 (the flow-analysis warnings such
-#               as -Wmaybe-uninitialized run from -O1; half the compile time of -O2), all
-#               together at -O2, linked and run.
+#               FOVSDF_DOUBLE for fovsdf.h): alone at -O1 when the switch changes code paths
+#               (the flow-analysis warnings such as -Wmaybe-uninitialized run from -O1; half
+#               the compile time of -O2), at -O0 when it changes only linkage, attributes or
+#               strings (STATIC, DLL, NO_ERROR_STRINGS: front-end warnings such as
+#               -Wunused-function); all together at -O2, linked and run.
 #   nolibm      a FOV_NO_LIBM hosted build references no libm function (nm -u) and links
 #               without -lm and runs.
 #   decl_then_impl  declarations first, then FOV_IMPL, in one TU (decl_then_impl.c), linked
 #               with a declarations-only TU that calls the API (decl_only_main.c); C/C,
-#               C++/C++ and the two mixed-language pairs (checks the extern "C" blocks).
+#               C++/C++ and the two mixed-language pairs (checks the extern "C" blocks; -O0:
+#               linkage does not depend on -O, and each TU holds all three implementations).
 #   impl_twice  each header included twice with its implementation macro (once-guard).
 #   all_three_one_tu  all present headers, FOV_IMPL, included twice in reverse orders, as C
 #               and C++, linked and run.
 #   two_static_copies  two TUs each with a FOVxx_STATIC copy (two_static_copies_{a,b}.c)
-#               linked into one program that runs; nm shows no global fovxx_ symbol.
+#               linked into one program that runs; nm shows no global fovxx_ symbol (-O0:
+#               no function is inlined away before nm looks).
 #   hooks_stub  every FOV_* hook (FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F
 #               FOV_EXPF FOV_LOGF FOV_POWF FOV_MEMSET FOV_MEMCPY FOV_ASSERT) defined to the
 #               user's functions (object-like and function-like macros): compiles, the object
@@ -225,12 +232,12 @@ decl_then_impl() {
     [ "$li" = c ] && si="c99" || si="c++98"
     [ "$lm" = c ] && sm="c99" || sm="c++98"
     # shellcheck disable=SC2046
-    if ! "$cci" $(langflags "$li" "$si") -O2 "${HAVE[@]}" -I. -I"$T" -c "$T/decl_then_impl.c" \
+    if ! "$cci" $(langflags "$li" "$si") -O0 "${HAVE[@]}" -I. -I"$T" -c "$T/decl_then_impl.c" \
         -o "$d/impl.o" > "$d/impl.log" 2>&1; then
         fail "$name" "decl_then_impl.c: $(errsum "$d/impl.log")"; return 0
     fi
     # shellcheck disable=SC2046
-    if ! "$ccm" $(langflags "$lm" "$sm") -O2 "${HAVE[@]}" -I. -I"$T" -c "$T/decl_only_main.c" \
+    if ! "$ccm" $(langflags "$lm" "$sm") -O0 "${HAVE[@]}" -I. -I"$T" -c "$T/decl_only_main.c" \
         -o "$d/main.o" > "$d/main.log" 2>&1; then
         fail "$name" "decl_only_main.c: $(errsum "$d/main.log")"; return 0
     fi
@@ -258,7 +265,7 @@ two_static() {
         [ "$x" = main ] && [ "$lang" = c++ ] && cx=${cc%++}
         [ "$cx" = g ] && cx=gcc
         # shellcheck disable=SC2046
-        if ! "$cx" $(langflags "$l" "$s") -O2 "${HAVE[@]}" -I. -I"$T" -c "$T/two_static_copies_$x.c" \
+        if ! "$cx" $(langflags "$l" "$s") -O0 "${HAVE[@]}" -I. -I"$T" -c "$T/two_static_copies_$x.c" \
             -o "$d/$x.o" > "$d/$x.log" 2>&1; then
             fail "$name" "two_static_copies_$x.c: $(errsum "$d/$x.log")"; return 0
         fi
@@ -417,36 +424,32 @@ for h in "${HEADERS[@]}"; do
     P=$(printf '%s' "$h" | tr '[:lower:]' '[:upper:]')
     src=$(tu_c "$h")
     srcxx=$(tu_cc "$h")
-    # the matrix; the linked cells: gcc c99 -O2, clang c11 -O2, g++ c++98 -O2, clang++ c++11 -O2
+    # the matrix: every compiler and standard at -O0 (the language checks), and one -O2 cell
+    # per compiler (the flow-analysis warnings, which do not depend on the standard), linked
+    # and run: gcc c99, clang c11, g++ c++98, clang++ c++11
     for cc in gcc clang; do
         for std in c99 c11; do
-            for opt in -O0 -O2; do
-                link=0
-                { [ "$cc/$std/$opt" = gcc/c99/-O2 ] || [ "$cc/$std/$opt" = clang/c11/-O2 ]; } && link=1
-                n="matrix $cc -std=$std $opt $(basename "$src")"
-                [ $link = 1 ] && n="$n (linked, run)"
-                job cell "$n" "$cc" c "$std" "$opt" "$src" "$link"
-            done
+            job cell "matrix $cc -std=$std -O0 $(basename "$src")" "$cc" c "$std" -O0 "$src" 0
         done
+        std=c99
+        [ "$cc" = clang ] && std=c11
+        job cell "matrix $cc -std=$std -O2 $(basename "$src") (linked, run)" "$cc" c "$std" -O2 "$src" 1
     done
     for cc in g++ clang++; do
         for std in c++98 c++11; do
-            for opt in -O0 -O2; do
-                link=0
-                { [ "$cc/$std/$opt" = g++/c++98/-O2 ] || [ "$cc/$std/$opt" = clang++/c++11/-O2 ]; } && link=1
-                n="matrix $cc -std=$std $opt $(basename "$srcxx")"
-                [ $link = 1 ] && n="$n (linked, run)"
-                job cell "$n" "$cc" c++ "$std" "$opt" "$srcxx" "$link"
-            done
+            job cell "matrix $cc -std=$std -O0 $(basename "$srcxx")" "$cc" c++ "$std" -O0 "$srcxx" 0
         done
+        std=c++98
+        [ "$cc" = clang++ ] && std=c++11
+        job cell "matrix $cc -std=$std -O2 $(basename "$srcxx") (linked, run)" "$cc" c++ "$std" -O2 "$srcxx" 1
     done
-    # STYLE.md rule 20 extras
+    # STYLE.md rule 20 extras (front-end warnings: -O0)
     for cc in gcc clang; do
         # shellcheck disable=SC2086
-        job cell "style20 $cc -std=c99 -O2 $STYLE20 $(basename "$src")" "$cc" c c99 -O2 "$src" 0 $STYLE20
+        job cell "style20 $cc -std=c99 -O0 $STYLE20 $(basename "$src")" "$cc" c c99 -O0 "$src" 0 $STYLE20
     done
     for cc in g++ clang++; do
-        job cell "style20 $cc -std=c++17 -O2 $(basename "$srcxx")" "$cc" c++ c++17 -O2 "$srcxx" 0
+        job cell "style20 $cc -std=c++17 -O0 $(basename "$srcxx")" "$cc" c++ c++17 -O0 "$srcxx" 0
     done
     # documented options, alone and together
     opts="FOV_NO_LIBM FOV_NO_ERROR_STRINGS ${P}_STATIC FOV_DLL NDEBUG"
@@ -457,7 +460,11 @@ for h in "${HEADERS[@]}"; do
         lang="c"; std="c99"; s=$src
         [ "$cc" = g++ ] && { lang=c++; std=c++11; s=$srcxx; }
         for o in $opts; do
-            job cell "options $cc -std=$std -O1 -D$o $(basename "$s")" "$cc" "$lang" "$std" -O1 "$s" 0 "-D$o"
+            # the switches that change only names, linkage or strings: -O0 (their warnings
+            # come from the front end); those that change code paths: -O1
+            ol=-O1
+            case $o in *_STATIC|FOV_DLL|FOV_NO_ERROR_STRINGS) ol=-O0 ;; esac
+            job cell "options $cc -std=$std $ol -D$o $(basename "$s")" "$cc" "$lang" "$std" "$ol" "$s" 0 "-D$o"
         done
         job cell "options $cc -std=$std -O2 all of: $opts" "$cc" "$lang" "$std" -O2 "$s" 1 "${all[@]}"
     done

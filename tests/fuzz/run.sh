@@ -26,6 +26,8 @@
 #                  prefix of them when FUZZ_SECONDS runs out first, so a faster machine does not
 #                  explore inputs a slower one never checked
 #   FUZZ_FLAGS     extra libFuzzer flags (e.g. "-jobs=2 -workers=2", "-only_ascii=1")
+#   FUZZ_JOBS      builds, replays and fuzz targets run this many at a time (default: the
+#                  number of CPUs); the results are printed in the targets' order
 #   CC             the compiler of the replay builds (default gcc); FUZZ_CC the libFuzzer
 #                  compiler (default clang)
 #   CI=true        a missing clang/libFuzzer is a FAIL, not a SKIP
@@ -35,13 +37,13 @@
 #
 # replay: two builds per target, each run on every file of corpus/<t>/ and regress/<t>/
 #   (tests/fuzz/replay.c: one child process per input, 20 s alarm):
-#     build/fuzz/replay_<t>         $CC -O1 -g -fsanitize=address,undefined
+#     build/fuzz/replay_<t>         $CC -O1 -g1 -fsanitize=address,undefined
 #                                   (+ float-cast-overflow) -fno-sanitize-recover=all
 #     build/fuzz/replay_<t>_nolibm  $CC -O2 -DFOV_NO_LIBM (the built-in math approximations)
 #   Each input of each build is one check; a build that fails to compile is one failure.
 #   tests/fuzz/pending/<t>/ (regression inputs whose fix is not merged yet) is not replayed:
 #   bash tests/fuzz/run.sh repro <t> tests/fuzz/pending/<t>/* shows their state.
-# fuzz: build/fuzz/fuzz_<t> = clang -O1 -g -fsanitize=fuzzer,address,undefined
+# fuzz: build/fuzz/fuzz_<t> = clang -O1 -g1 -fsanitize=fuzzer,address,undefined
 #   -fno-sanitize-recover=all, run as
 #     build/fuzz/fuzz_<t> -max_total_time=$FUZZ_SECONDS -max_len=$FUZZ_MAX_LEN
 #        -timeout=$FUZZ_TIMEOUT -print_final_stats=1 -artifact_prefix=build/fuzz/crashes/<t>/
@@ -73,6 +75,7 @@ FUZZ_SECONDS=${FUZZ_SECONDS:-60}
 FUZZ_MAX_LEN=${FUZZ_MAX_LEN:-4096}
 FUZZ_TIMEOUT=${FUZZ_TIMEOUT:-10}
 FUZZ_FLAGS=${FUZZ_FLAGS:-}
+FUZZ_JOBS=${FUZZ_JOBS:-$(nproc 2>/dev/null || echo 2)}
 NPASS=0
 NFAIL=0
 
@@ -81,7 +84,7 @@ pass() { say "PASS $*"; NPASS=$((NPASS + 1)); }
 fail() { say "FAIL $*"; NFAIL=$((NFAIL + 1)); }
 finish() { say "$NPASS passed, $NFAIL failed"; [ "$NFAIL" -eq 0 ]; exit $?; }
 
-COMMON=(-std=c99 -D_POSIX_C_SOURCE=200809L -g -Wall -Wextra -Wno-unused-function -I. -Itests/common -I"$F")
+COMMON=(-std=c99 -D_POSIX_C_SOURCE=200809L -g1 -Wall -Wextra -Wno-unused-function -I. -Itests/common -I"$F")
 SAN_GCC=(-O1 -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all -fno-omit-frame-pointer)
 SAN_FUZZ=(-O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
 
@@ -134,12 +137,17 @@ build_ok() {
     return 1
 }
 
-# replay_dirs BIN LABEL DIR...: one check per input (replay.c's PASS/FAIL lines)
-replay_dirs() {
-    local bin=$1 label=$2 log s p f
+# replay_run BIN LABEL DIR...: runs the replay build on the inputs (replay.c: one check per
+# input), into build/fuzz/logs/replay_LABEL.log
+replay_run() {
+    local bin=$1 label=$2
     shift 2
+    "$bin" "$@" >"$B/logs/replay_$label.log" 2>&1
+}
+# replay_report LABEL: its PASS/FAIL lines and counts from the log of replay_run
+replay_report() {
+    local label=$1 log s p f
     log="$B/logs/replay_$label.log"
-    "$bin" "$@" >"$log" 2>&1
     s=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -1)
     if [ -z "$s" ]; then
         fail "replay $label: no summary (log: $log)"
@@ -157,24 +165,35 @@ replay_dirs() {
     say "replay $label: $p passed, $f failed"
 }
 
+# do_replay: all replay builds FUZZ_JOBS at a time, then all replays FUZZ_JOBS at a time, then
+# the reports in order
 do_replay() {
-    local t dirs
+    local t dirs labels=() l
+    for t in "${TARGETS[@]}"; do
+        mapfile -t dirs < <(inputs "$t")
+        [ "${#dirs[@]}" -eq 0 ] && continue
+        while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n 2>/dev/null || true; done
+        build_start "$t" "$B/replay_$t" "$CC" "${SAN_GCC[@]}" "$F/replay.c"
+        while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n 2>/dev/null || true; done
+        build_start "$t" "$B/replay_${t}_nolibm" "$CC" -O2 -DFOV_NO_LIBM "$F/replay.c"
+    done
+    wait
     for t in "${TARGETS[@]}"; do
         mapfile -t dirs < <(inputs "$t")
         if [ "${#dirs[@]}" -eq 0 ]; then
             fail "replay $t: no tests/fuzz/corpus/$t/ (commit a seed corpus)"
             continue
         fi
-        build_start "$t" "$B/replay_$t" "$CC" "${SAN_GCC[@]}" "$F/replay.c"
-        build_start "$t" "$B/replay_${t}_nolibm" "$CC" -O2 -DFOV_NO_LIBM "$F/replay.c"
-        wait
-        if build_ok "$B/replay_$t"; then
-            replay_dirs "$B/replay_$t" "$t" "${dirs[@]}"
-        fi
-        if build_ok "$B/replay_${t}_nolibm"; then
-            replay_dirs "$B/replay_${t}_nolibm" "${t}_nolibm" "${dirs[@]}"
-        fi
+        for l in "$t" "${t}_nolibm"; do
+            build_ok "$B/replay_$l" || continue
+            while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n 2>/dev/null || true; done
+            rm -f "$B/logs/replay_$l.log"
+            replay_run "$B/replay_$l" "$l" "${dirs[@]}" &
+            labels+=("$l")
+        done
     done
+    wait
+    for l in "${labels[@]}"; do replay_report "$l"; done
 }
 
 # is libFuzzer usable? (clang present and -fsanitize=fuzzer links)
@@ -189,7 +208,7 @@ stat_of() { grep -E "^stat::$2:" "$1" | tail -1 | sed -E 's/.*: *//'; }
 status_field() { grep -E '^#[0-9]+' "$1" | grep -E " $2: " | tail -1 | sed -E "s/.* $2: ([^ ]+).*/\\1/"; }
 
 do_fuzz() {
-    local t dirs log rc execs eps cov ft corp crash summary limit why
+    local t FUZZED=()
     if ! have_libfuzzer; then
         if [ "$IS_CI" = 1 ]; then
             fail "fuzz: $FUZZ_CC with libFuzzer not usable (CI=true: a missing toolchain is a failure; apt-get install clang libclang-rt-14-dev; log: $B/logs/probe.log)"
@@ -207,42 +226,63 @@ do_fuzz() {
         fi
         wait
     done
+    # fuzz two targets at a time (each libFuzzer run is one process on one CPU), then report
+    # in order
     for t in "${TARGETS[@]}"; do
         build_ok "$B/fuzz_$t" || continue
-        mkdir -p "$B/corpus/$t" "$B/crashes/$t"
-        mapfile -t dirs < <(inputs "$t")
-        log="$B/logs/fuzz_$t.log"
-        # FUZZ_SECONDS=0: run the inputs once (libFuzzer's -max_total_time=0 means no limit)
-        if [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then limit=(-max_total_time="$FUZZ_SECONDS"); else limit=(-runs=0); fi
-        # FUZZ_SEED: libFuzzer's -seed (make test fixes it, so that a commit's fuzz section
-        # explores the same inputs in every run up to the time limit)
-        if [ -n "${FUZZ_SEED:-}" ]; then limit+=(-seed="$FUZZ_SEED"); fi
-        if [ "${FUZZ_RUNS:-0}" -gt 0 ] 2>/dev/null && [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then
-            limit+=(-runs="$FUZZ_RUNS")
-        fi
-        # shellcheck disable=SC2086
-        "$B/fuzz_$t" "${limit[@]}" -max_len="$FUZZ_MAX_LEN" \
-            -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 -artifact_prefix="$B/crashes/$t/" \
-            $FUZZ_FLAGS "$B/corpus/$t" "${dirs[@]}" >"$log" 2>&1
-        rc=$?
-        execs=$(stat_of "$log" number_of_executed_units)
-        eps=$(stat_of "$log" average_exec_per_sec)
-        cov=$(status_field "$log" cov)
-        ft=$(status_field "$log" ft)
-        corp=$(status_field "$log" corp)
-        crash=$(grep -E "^(Test unit written to|artifact_prefix=)" "$log" | grep -oE "$B/crashes/$t/[^ ]+" | tail -1)
-        summary="executions ${execs:-?}, exec/s ${eps:-?}, cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?}"
-        if [ "$rc" -eq 0 ] && [ -z "$crash" ]; then
-            pass "fuzz $t: $([ "${limit[0]}" = -runs=0 ] && echo "inputs run once" || echo "${FUZZ_SECONDS} s"), $summary, crashes 0"
-        else
-            why=$(grep -m 1 -E '^==[0-9]+==ERROR|FUZZ CONTRACT|runtime error|ALARM|Timeout|out-of-memory' "$log" | cut -c1-300)
-            if [ -n "$crash" ]; then
-                fail "fuzz $t: $summary, crashes 1: $why; input saved: $crash; reproduce: bash tests/fuzz/run.sh repro $t $crash (or $B/fuzz_$t $crash); log: $log"
-            else
-                fail "fuzz $t: $summary: exit status $rc, no input saved: $why; log: $log"
-            fi
-        fi
+        while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n 2>/dev/null || true; done
+        fuzz_one "$t" &
+        FUZZED+=("$t")
     done
+    wait
+    for t in "${FUZZED[@]}"; do fuzz_report "$t"; done
+}
+
+# fuzz_one TARGET: the libFuzzer run; its exit status goes to the log's .rc file
+fuzz_one() {
+    local t=$1 dirs log limit
+    mkdir -p "$B/corpus/$t" "$B/crashes/$t"
+    mapfile -t dirs < <(inputs "$t")
+    log="$B/logs/fuzz_$t.log"
+    # FUZZ_SECONDS=0: run the inputs once (libFuzzer's -max_total_time=0 means no limit)
+    if [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then limit=(-max_total_time="$FUZZ_SECONDS"); else limit=(-runs=0); fi
+    # FUZZ_SEED: libFuzzer's -seed (make test fixes it, so that a commit's fuzz section
+    # explores the same inputs in every run up to the time limit)
+    if [ -n "${FUZZ_SEED:-}" ]; then limit+=(-seed="$FUZZ_SEED"); fi
+    if [ "${FUZZ_RUNS:-0}" -gt 0 ] 2>/dev/null && [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then
+        limit+=(-runs="$FUZZ_RUNS")
+    fi
+    # shellcheck disable=SC2086
+    "$B/fuzz_$t" "${limit[@]}" -max_len="$FUZZ_MAX_LEN" \
+        -timeout="$FUZZ_TIMEOUT" -print_final_stats=1 -artifact_prefix="$B/crashes/$t/" \
+        $FUZZ_FLAGS "$B/corpus/$t" "${dirs[@]}" >"$log" 2>&1
+    echo $? >"$log.rc"
+}
+
+# fuzz_report TARGET: PASS or FAIL from the log of fuzz_one
+fuzz_report() {
+    local t=$1 log rc execs eps cov ft corp crash summary why how
+    log="$B/logs/fuzz_$t.log"
+    rc=$(cat "$log.rc" 2>/dev/null || echo 1)
+    how="${FUZZ_SECONDS} s"
+    [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null || how="inputs run once"
+    execs=$(stat_of "$log" number_of_executed_units)
+    eps=$(stat_of "$log" average_exec_per_sec)
+    cov=$(status_field "$log" cov)
+    ft=$(status_field "$log" ft)
+    corp=$(status_field "$log" corp)
+    crash=$(grep -E "^(Test unit written to|artifact_prefix=)" "$log" | grep -oE "$B/crashes/$t/[^ ]+" | tail -1)
+    summary="executions ${execs:-?}, exec/s ${eps:-?}, cov ${cov:-?}, ft ${ft:-?}, corpus ${corp:-?}"
+    if [ "$rc" -eq 0 ] && [ -z "$crash" ]; then
+        pass "fuzz $t: $how, $summary, crashes 0"
+    else
+        why=$(grep -m 1 -E '^==[0-9]+==ERROR|FUZZ CONTRACT|runtime error|ALARM|Timeout|out-of-memory' "$log" | cut -c1-300)
+        if [ -n "$crash" ]; then
+            fail "fuzz $t: $summary, crashes 1: $why; input saved: $crash; reproduce: bash tests/fuzz/run.sh repro $t $crash (or $B/fuzz_$t $crash); log: $log"
+        else
+            fail "fuzz $t: $summary: exit status $rc, no input saved: $why; log: $log"
+        fi
+    fi
 }
 
 do_repro() {
