@@ -344,7 +344,9 @@ NUMERICS
 
 PLATFORM NOTES
    - Freestanding: with FOV_NO_LIBM (or all math hooks) and FOV_ASSERT defined the
-     implementation includes only <stddef.h>, <stdint.h>, <float.h> and <limits.h>.
+     implementation includes only <stddef.h>, <stdint.h>, <float.h> and <limits.h> (plus
+     <xmmintrin.h> with MSVC on x86, for the square root instruction; gcc and clang get it
+     by inline assembly).
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
      object file references no __aeabi_d* routine (checked by tests/compile/run.sh).

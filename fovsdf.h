@@ -585,14 +585,17 @@ NUMERICS (the float envelope; tests/test_fovsdf_scene.c and _contract.c establis
      and within 4 ulp of the exact functions (sin and cos: 2^-32 absolute where the result is
      below 2^-10; pow: for |y| <= 16 and a normal result).
    - Floating-point contraction: the tests build with -ffp-contract=off; results across
-     targets agree within the tolerances stated in tests/xtarget (measured: identical images
-     on x86-64, wasm32 and Cortex-M4 with libm; 56 dB PSNR for FOV_NO_LIBM on x86-64).
+     targets agree within the tolerances stated in tests/xtarget (measured: the same images
+     of its two scenes on x86-64, wasm32 and Cortex-M4, with libm and with FOV_NO_LIBM).
 
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
-     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined (plus the
-     compiler's <xmmintrin.h> on x86 with SSE, for the square root instruction);
-     otherwise it also includes <math.h> and <assert.h>.
+     <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined (plus
+     <xmmintrin.h> with MSVC on x86, for the square root instruction; gcc and clang get it
+     by inline assembly); otherwise it also includes <math.h> and <assert.h>. The batch
+     square root adds a compiler SIMD header: <emmintrin.h> (<immintrin.h> with AVX) on x86
+     except in a freestanding FOV_NO_LIBM build, <wasm_simd128.h> with -msimd128,
+     <arm_neon.h> on AArch64; FOVSDF_NO_SIMD removes them.
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; the
      library's object file references no __aeabi_d* routine (checked by the tests).
