@@ -17,7 +17,7 @@
 #     errors_nostrings,
 #     style shared refs, unit_metrics
 #     unit_metrics_sanitizers flip_reference
-#   fuzz_replay fuzz; examples readme programs; compile_matrix cross_targets cmake_consumers;
+#   examples readme programs; fuzz_replay fuzz; compile_matrix cross_targets cmake_consumers;
 #   web
 # e.g. T=fovsdf (the fovsdf unit tests), T=fuzz, T=compile, T=examples,programs, T=_nolibm.
 # The suite block below runs twice: once to list the sections and test programs (run_section
@@ -92,9 +92,11 @@ report_section() {
     TOTAL_F=$((TOTAL_F + f))
 }
 
-# run_bg NAME COMMAND...: run_section for a test program that writes no file: it runs in the
-# background, JOBS at a time, and its summary is printed in order by flush_bg, which the next
-# run_section (and the end of the suite) calls first.
+# run_bg NAME COMMAND...: run_section for a test program or script that writes no file
+# outside its own directory (or a mktemp one): it runs in the background, JOBS at a time, and
+# its summary is printed in order by flush_bg, which the next run_section (and the end of the
+# suite) calls first. So the unit tests and the light sections up to fuzz_replay share one
+# pool, with one wait at its end, and no CPU idles at a wait between them.
 BG_NAMES=()
 run_bg() {
     local name=$1; shift
@@ -218,7 +220,7 @@ three_builds batch_fovsdf tests/test_fovsdf_batch.c
 three_builds wave_fovsdf tests/test_fovsdf_wave.c link
 three_builds prune_fovsdf tests/test_fovsdf_prune.c
 three_builds acuity_fovsdf tests/test_fovsdf_acuity.c link
-run_section wave_variants bash tests/wave_variants.sh
+run_bg wave_variants bash tests/wave_variants.sh
 three_builds naive_sdf tests/test_sdf_naive.c
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
@@ -246,7 +248,7 @@ three_builds versions tests/test_versions.c
 # the counters of the three headers: init functions, and counts that add up across calls
 three_builds stats tests/test_stats.c link
 # line length budgets of the headers, and every FOV*__ macro tested by #if defined
-run_section style bash tests/style.sh
+run_bg style bash tests/style.sh
 # fov_camera: one type, the same defaults and handedness in the three headers, rays agree
 three_builds camera tests/test_camera.c
 # fov_eye: the shared eye model against Guenter et al. 2012, densities, plans, bad input
@@ -262,19 +264,26 @@ if build_test test_errors_nostrings tests/test_errors.c -std=c99 -O2 $WARN -DFOV
     run_bg errors_nostrings build/tests/test_errors_nostrings
 fi
 # the shared regions (tools/fov_shared.h) byte-identical in the three headers
-run_section shared bash tests/shared.sh
+run_bg shared bash tests/shared.sh
 # no tracked file cites the internal background documents; each header has REFERENCES
-run_section refs bash tests/refs.sh
+run_bg refs bash tests/refs.sh
 if build_test test_metrics tests/test_metrics.c -std=c99 -O2 $WARN -Itests/common -lm; then
-    run_section unit_metrics build/tests/test_metrics
+    run_bg unit_metrics build/tests/test_metrics
 fi
 if build_test test_metrics_san tests/test_metrics.c -std=c99 $SAN -Itests/common -lm; then
-    run_section unit_metrics_sanitizers build/tests/test_metrics_san
+    run_bg unit_metrics_sanitizers build/tests/test_metrics_san
 fi
 if build_test test_flip_reference tests/test_flip_reference.c -std=c99 -O2 $WARN -Itests/common -lm; then
-    run_section flip_reference build/tests/test_flip_reference tests/flip_reference
+    run_bg flip_reference build/tests/test_flip_reference tests/flip_reference
 fi
 
+# --- examples: they build warning-free and the demo's tracers agree with the ground truth --
+run_bg examples bash tests/examples.sh
+# the README: at most 250 lines, quick starts up front, its programs build and run, links
+run_bg readme bash tests/readme.sh
+# every program: --help / -h exit 0 with a usage text, an unknown option exits 2; the examples
+# build copied out alone (the fov headers and examples/*.h)
+run_bg programs bash tests/programs.sh
 # --- fuzz harnesses (tests/fuzz/fuzz_*.c): the committed corpus and regression inputs
 # replayed without libFuzzer (gcc ASan+UBSan and -O2 FOV_NO_LIBM), then a bounded libFuzzer
 # run of each target (FUZZ_SECONDS, default 20 here, libFuzzer seed FUZZ_SEED, default 1 here,
@@ -285,13 +294,6 @@ run_section fuzz_replay bash tests/fuzz/run.sh replay
 FUZZ_SEED=${FUZZ_SEED:-1} FUZZ_SECONDS=${FUZZ_SECONDS:-20} FUZZ_RUNS=${FUZZ_RUNS:-100000} \
     run_section fuzz bash tests/fuzz/run.sh fuzz
 
-# --- examples: they build warning-free and the demo's tracers agree with the ground truth --
-run_section examples bash tests/examples.sh
-# the README: at most 250 lines, quick starts up front, its programs build and run, links
-run_section readme bash tests/readme.sh
-# every program: --help / -h exit 0 with a usage text, an unknown option exits 2; the examples
-# build copied out alone (the fov headers and examples/*.h)
-run_section programs bash tests/programs.sh
 
 # --- compile matrix, freestanding builds, other targets -----------------------------------
 run_section compile_matrix bash tests/compile/run.sh
