@@ -791,7 +791,7 @@ static void t_robust(void)
 /* the normal stop's -ln c series (folded into the tap's exponential) against logf / powf */
 static void t_nlog(void)
 {
-    double worst = 0.0, worst_w = 0.0;
+    double worst = 0.0, worst_w = 0.0, worst_a32 = 0.0;
     int below = 1, i;
     for (i = 0; i <= 2500; ++i) {
         float c = 0.75f + 0.25f * (float)i / 2500.0f;
@@ -801,9 +801,13 @@ static void t_nlog(void)
         w = exp(-128.0 * a);
         we = pow((double)c, 128.0);
         if (we > exp(-10.0) && fabs(w / we - 1.0) > worst_w) worst_w = fabs(w / we - 1.0);
+        w = exp(-32.0 * a); /* the default phi_normal: the weight's absolute error */
+        we = pow((double)c, 32.0);
+        if (fabs(w - we) > worst_a32) worst_a32 = fabs(w - we);
     }
     check(worst <= 2.7e-4 && below, "nlog_series_bound", "worst |series + ln c| %g (bound 2.7e-4), never above: %d", worst, below);
     check(worst_w <= 1e-4, "nlog_weight_128", "c^128 relative error %g where above e^-10 (want <= 1e-4)", worst_w);
+    check(worst_a32 <= 4e-6, "nlog_weight_32", "c^32 absolute error %g on [0.75, 1] (want <= 4e-6)", worst_a32);
 }
 
 /* one frame of a through a denoiser made for dc (no history); *info (may be NULL): its state
