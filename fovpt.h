@@ -1675,8 +1675,9 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    only below).
    Weights: one exponential per tap (fovpt__exp_neg) for the depth, albedo, luminance and
    normal stops; with phi_normal >= 32, c^phi_normal = exp(-phi_normal (-ln c)) with -ln c
-   from a 4-term series for c >= 3/4 (phi_normal 32, the default: weight error below 3.2e-6
-   of the centre tap's; 128: relative error below 1e-4 where the weight is above e^-10);
+   from a 4-term series for c >= 3/4 (absolute weight error below 3.2e-6 of the centre
+   tap's for every phi_normal >= 32, the default; from 128 also a relative error below 1e-4
+   where the weight is above e^-10);
    c < 3/4 with phi_normal >= 104.3 drops the tap (weight below e^-30); else c^phi_normal
    exactly (by squaring for an integer phi_normal).
    phi_normal 32 (0.7.0: 128): a faceted or bumpy surface whose normals turn a few degrees
@@ -7677,7 +7678,7 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
     ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
     pn = dn->cfg.phi_normal;
     nfar = pn * 0.287682072f >= 30.0f; /* c < 3/4: c^phi_normal below e^-30, the tap dropped */
-    nser = pn >= 32.0f; /* the series (weight error below 4e-6; smaller pn: exact power) */
+    nser = pn >= 32.0f; /* the series (weight error below 3.2e-6; smaller pn: exact power) */
     ipn = 0;
     if (pn <= 4096.0f && fov__is0(pn - FOV__FLOOR(pn))) ipn = (uint32_t)pn;
     for (y = y0; y < y1; ++y) {

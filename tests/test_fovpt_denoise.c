@@ -807,7 +807,7 @@ static void t_nlog(void)
     }
     check(worst <= 2.7e-4 && below, "nlog_series_bound", "worst |series + ln c| %g (bound 2.7e-4), never above: %d", worst, below);
     check(worst_w <= 1e-4, "nlog_weight_128", "c^128 relative error %g where above e^-10 (want <= 1e-4)", worst_w);
-    check(worst_a32 <= 4e-6, "nlog_weight_32", "c^32 absolute error %g on [0.75, 1] (want <= 4e-6)", worst_a32);
+    check(worst_a32 <= 3.2e-6, "nlog_weight_32", "c^32 absolute error %g on [0.75, 1] (want <= 3.2e-6, the documented bound)", worst_a32);
 }
 
 /* one frame of a through a denoiser made for dc (no history); *info (may be NULL): its state
@@ -921,7 +921,7 @@ static void t_kernel_ref(void)
             s = s * 1664525u + 1013904223u;
             a.var[i] = 0.002f + 0.004f * ((float)(s >> 8) / 16777216.0f);
         }
-    for (rad = 4; rad >= 1; --rad) { /* 4, 3: phi_normal 128 (the series), 2, 1: the default */
+    for (rad = 4; rad >= 1; --rad) { /* 4, 3: phi_normal 128, 2, 1: the default 32 (both take the series) */
         fovpt_denoise dn;
         fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
         fov_gaze g = { 24.0f, 18.0f };
@@ -995,7 +995,14 @@ static void t_adaptive(void)
    the bound needs phi_normal below ~100); a noise-free 45 degree crease between radiance 0.3
    and 0.7 with a loose luminance stop (var 0.0075: 0.4 is 0.58 phi_lum sigmas) stays an edge:
    the columns beside it within 0.002 of their side's value on average (phi_normal 16:
-   0.0004, 8: 0.006, 4: 0.024) */
+   0.0004, 8: 0.006, 4: 0.024); so does a 30 degree crease, whose normal weight falls in the
+   series' range (c = 0.866): cos 30 degrees ^ 32 = 0.0101, and in the 5 x 5 kernel the two
+   columns across the crease carry 5/16 of the 1-D weight against 11/16 on the pixel's side,
+   so even with a luminance weight of 1 the column beside it moves at most
+   0.4 * 0.0101 * 5/16 / (11/16 + 0.0101 * 5/16) = 0.0018 towards the other side. The
+   smoothing has a floor that does not depend on the code: the unweighted 5 x 5 kernel leaves
+   sqrt(sum w^2) = 0.273 of white noise's std, no weighting goes below it (0.25 with the
+   estimate's scatter). */
 static void t_faceted(void)
 {
     const uint32_t W = 48, H = 36;
@@ -1005,7 +1012,7 @@ static void t_faceted(void)
     uint32_t x, y, s = 7u;
     int mode;
     img_alloc(&a, W, H);
-    for (mode = 0; mode < 2; ++mode) {
+    for (mode = 0; mode < 3; ++mode) {
         fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
         fov_gaze g = { 24.0f, 18.0f };
         double si = 0.0, so = 0.0, worst = 0.0, col[2] = { 0.0, 0.0 };
@@ -1013,7 +1020,7 @@ static void t_faceted(void)
         int ok, k;
         for (y = 0; y < H; ++y)
             for (x = 0; x < W; ++x) {
-                double t = x >= W / 2 ? 0.7854 : 0.0, u = 0.0;
+                double t = x >= W / 2 ? (mode == 2 ? 0.5236 : 0.7854) : 0.0, u = 0.0;
                 float v = mode == 0 ? 0.5f : (x >= W / 2 ? 0.7f : 0.3f);
                 i = (size_t)y * W + x;
                 s = s * 1664525u + 1013904223u;
@@ -1047,10 +1054,10 @@ static void t_faceted(void)
             }
         worst = fabs(col[0] - 0.3) > fabs(col[1] - 0.7) ? fabs(col[0] - 0.3) : fabs(col[1] - 0.7);
         if (mode == 0)
-            check(ok && so <= 0.36 * 0.36 * si, "dn_default_faceted_smoothed",
-                  "output noise std / input %g (want <= 0.36; ok %d)", sqrt(so / si), ok);
+            check(ok && so <= 0.36 * 0.36 * si && so >= 0.25 * 0.25 * si, "dn_default_faceted_smoothed",
+                  "output noise std / input %g (want in [0.25, 0.36]; ok %d)", sqrt(so / si), ok);
         else
-            check(ok && worst <= 0.002, "dn_default_crease45_kept",
+            check(ok && worst <= 0.002, mode == 1 ? "dn_default_crease45_kept" : "dn_default_crease30_kept",
                   "|mean of a column beside the crease - its side's value| %g (want <= 0.002; ok %d)", worst, ok);
     }
     free(out);
