@@ -1,4 +1,4 @@
-/* fovlp.h - v0.7.0 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
+/* fovlp.h - v0.7.1 - kernel log-polar foveation with a gaze disc and temporal anti-aliasing
                       - MIT or public domain (see end of file)
 
    Do this:
@@ -370,6 +370,7 @@ REFERENCES (cited by author and year, with the section, equation or table of tha
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.7.1 (2026-12-05) Documentation: PLATFORM NOTES name xmmintrin (MSVC only).
    0.7.0 (2026-12-05) fovlp_gaze_predict: the fovea led by the latency in pursuit (shared block
                       revision 5); FOV_NO_LIBM takes the CPU's exact square root where it has one
                       (SSE, Arm, wasm: as many instructions as with libm); FOVLP_MAX_* in the
@@ -429,8 +430,8 @@ RECENT REVISION HISTORY
 
 #define FOVLP_VERSION_MAJOR 0
 #define FOVLP_VERSION_MINOR 7
-#define FOVLP_VERSION_PATCH 0
-#define FOVLP_VERSION_STRING "0.7.0"
+#define FOVLP_VERSION_PATCH 1
+#define FOVLP_VERSION_STRING "0.7.1"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a

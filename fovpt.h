@@ -1,4 +1,4 @@
-/* fovpt.h - v0.7.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.8.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -502,6 +502,10 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.8.0 (2026-12-05) Denoiser: phi_normal 32 by default (was 128): faceted and bumpy surfaces
+                      are filtered as one surface, creases of 30 degrees or more stay edges; the
+                      fast -ln c series serves every phi_normal >= 32 (absolute weight error
+                      below 3.2e-6).
    0.7.0 (2026-12-05) BVH traversal: hit children by the lowest set bit of the hit mask, three
                       or more sorted on the stack, no separate root box test, per-ray broadcasts out
                       of the leaves (6-18 % fewer instructions per ray, same hits); an empty
@@ -593,9 +597,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 7
+#define FOVPT_VERSION_MINOR 8
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.7.0"
+#define FOVPT_VERSION_STRING "0.8.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8

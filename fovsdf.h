@@ -1,4 +1,4 @@
-/* fovsdf.h - v0.10.0 - sphere tracing of signed distance functions, built for foveation
+/* fovsdf.h - v0.10.1 - sphere tracing of signed distance functions, built for foveation
                        - MIT or public domain (see end of file)
 
    Do this:
@@ -639,6 +639,9 @@ work; "the thesis" is Polychronakis 2025 throughout this file)
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.10.1 (2026-12-05) Documentation: PLATFORM NOTES name the headers each build includes
+                      (xmmintrin only with MSVC); NUMERICS states the cross-target figures of
+                      the current tests (the same images with FOV_NO_LIBM).
    0.10.0 (2026-12-05) fovsdf_gaze_predict: the fovea led by the latency in pursuit (shared block
                       revision 5); FOV_NO_LIBM takes the CPU's exact square root where it has one
                       (SSE, Arm, wasm), also in the batch evaluator: as many instructions as with
@@ -747,8 +750,8 @@ RECENT REVISION HISTORY
 
 #define FOVSDF_VERSION_MAJOR 0
 #define FOVSDF_VERSION_MINOR 10
-#define FOVSDF_VERSION_PATCH 0
-#define FOVSDF_VERSION_STRING "0.10.0"
+#define FOVSDF_VERSION_PATCH 1
+#define FOVSDF_VERSION_STRING "0.10.1"
 
 /* ==== FOV_SHARED_BEGIN decl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit. Do not edit it in a
