@@ -25,6 +25,7 @@
 typedef struct T {
     int pass, fail;
     char tmpdir[512];
+    char tag[64]; /* the program's name: two builds of this test may run at once */
 } T;
 
 static void check(T *t, int ok, const char *name, const char *fmt, ...)
@@ -59,7 +60,7 @@ static float rnd(unsigned int *s)
 
 static void tmppath(const T *t, char *buf, size_t sz, const char *name)
 {
-    snprintf(buf, sz, "%s/fov_test_metrics_%s", t->tmpdir, name);
+    snprintf(buf, sz, "%s/fov_test_metrics_%s_%s", t->tmpdir, t->tag, name);
 }
 
 static int write_bytes(const char *path, const void *data, size_t n)
@@ -1085,9 +1086,12 @@ int main(int argc, char **argv)
 {
     T t;
     const char *tmp = getenv("TMPDIR");
-    (void)argc; (void)argv;
+    const char *base = argc > 0 && argv[0] ? argv[0] : "test_metrics", *c;
     memset(&t, 0, sizeof t);
     snprintf(t.tmpdir, sizeof t.tmpdir, "%s", (tmp && tmp[0]) ? tmp : "/tmp");
+    for (c = base; *c; ++c)
+        if (*c == '/' || *c == '\\') base = c + 1;
+    snprintf(t.tag, sizeof t.tag, "%s", base);
     test_alloc(&t);
     test_srgb(&t);
     test_u8(&t);

@@ -26,9 +26,9 @@
 #               g++ (FOV_NO_LIBM, FOV_NO_ERROR_STRINGS, FOVxx_STATIC, FOV_DLL, NDEBUG, and
 #               FOVSDF_DOUBLE for fovsdf.h): alone at -O1 when the switch changes code paths
 #               (the flow-analysis warnings such as -Wmaybe-uninitialized run from -O1; half
-#               the compile time of -O2), at -O0 when it changes only linkage, attributes or
-#               strings (STATIC, DLL, NO_ERROR_STRINGS: front-end warnings such as
-#               -Wunused-function); all together at -O2, linked and run.
+#               the compile time of -O2), at -O0 when it changes only linkage or attributes
+#               (STATIC, DLL: front-end warnings such as -Wunused-function; STATIC is also
+#               optimised in two_static_copies gcc); all together at -O2, linked and run.
 #   nolibm      a FOV_NO_LIBM hosted build references no libm function (nm -u) and links
 #               without -lm and runs.
 #   decl_then_impl  declarations first, then FOV_IMPL, in one TU (decl_then_impl.c), linked
@@ -39,8 +39,9 @@
 #   all_three_one_tu  all present headers, FOV_IMPL, included twice in reverse orders, as C
 #               and C++, linked and run.
 #   two_static_copies  two TUs each with a FOVxx_STATIC copy (two_static_copies_{a,b}.c)
-#               linked into one program that runs; nm shows no global fovxx_ symbol (-O0:
-#               no function is inlined away before nm looks).
+#               linked into one program that runs; nm shows no global fovxx_ symbol (gcc at -O2:
+#               the STATIC copies optimised with libm and assertions; clang and g++ at -O0,
+#               for their front-end warnings and linkage).
 #   hooks_stub  every FOV_* hook (FOV_SQRTF FOV_FLOORF FOV_SINF FOV_COSF FOV_TANF FOV_ATAN2F
 #               FOV_EXPF FOV_LOGF FOV_POWF FOV_MEMSET FOV_MEMCPY FOV_ASSERT) defined to the
 #               user's functions (object-like and function-like macros): compiles, the object
@@ -253,7 +254,7 @@ decl_then_impl() {
 
 # two_static NAME CC LANG STD
 two_static() {
-    local name=$1 cc=$2 lang=$3 std=$4
+    local name=$1 cc=$2 lang=$3 std=$4 opt=$5
     needc "$name" "$cc" || return 0
     needc "$name" nm || return 0
     local d x msg glob
@@ -265,7 +266,7 @@ two_static() {
         [ "$x" = main ] && [ "$lang" = c++ ] && cx=${cc%++}
         [ "$cx" = g ] && cx=gcc
         # shellcheck disable=SC2046
-        if ! "$cx" $(langflags "$l" "$s") -O0 "${HAVE[@]}" -I. -I"$T" -c "$T/two_static_copies_$x.c" \
+        if ! "$cx" $(langflags "$l" "$s") "$opt" "${HAVE[@]}" -I. -I"$T" -c "$T/two_static_copies_$x.c" \
             -o "$d/$x.o" > "$d/$x.log" 2>&1; then
             fail "$name" "two_static_copies_$x.c: $(errsum "$d/$x.log")"; return 0
         fi
@@ -460,10 +461,11 @@ for h in "${HEADERS[@]}"; do
         lang="c"; std="c99"; s=$src
         [ "$cc" = g++ ] && { lang=c++; std=c++11; s=$srcxx; }
         for o in $opts; do
-            # the switches that change only names, linkage or strings: -O0 (their warnings
-            # come from the front end); those that change code paths: -O1
+            # the switches that change only linkage or attributes: -O0 (their warnings come
+            # from the front end); those that change code (NO_ERROR_STRINGS compiles the
+            # message building out): -O1
             ol=-O1
-            case $o in *_STATIC|FOV_DLL|FOV_NO_ERROR_STRINGS) ol=-O0 ;; esac
+            case $o in *_STATIC|FOV_DLL) ol=-O0 ;; esac
             job cell "options $cc -std=$std $ol -D$o $(basename "$s")" "$cc" "$lang" "$std" "$ol" "$s" 0 "-D$o"
         done
         job cell "options $cc -std=$std -O2 all of: $opts" "$cc" "$lang" "$std" -O2 "$s" 1 "${all[@]}"
@@ -486,9 +488,9 @@ job cell "all_three_one_tu clang -std=c11 (linked, run)" clang c c11 -O0 "$T/all
 job cell "all_three_one_tu g++ -std=c++98 (linked, run)" g++ c++ c++98 -O0 "$T/all_three_one_tu.c" 1
 job cell "all_three_one_tu clang++ -std=c++11 (linked, run)" clang++ c++ c++11 -O2 "$T/all_three_one_tu.c" 1
 
-job two_static "two_static_copies gcc -std=c99 (a + b + main linked, run)" gcc c c99
-job two_static "two_static_copies clang -std=c11 (a + b + main linked, run)" clang c c11
-job two_static "two_static_copies g++ -std=c++11 (a + b as C++, main as C)" g++ c++ c++11
+job two_static "two_static_copies gcc -std=c99 -O2 (a + b + main linked, run)" gcc c c99 -O2
+job two_static "two_static_copies clang -std=c11 -O0 (a + b + main linked, run)" clang c c11 -O0
+job two_static "two_static_copies g++ -std=c++11 -O0 (a + b as C++, main as C)" g++ c++ c++11 -O0
 
 job hooks "hooks_stub gcc -std=c99 (object-like hook macros)" gcc c c99
 job hooks "hooks_stub clang -std=c11 (function-like hook macros)" clang c c11 -DHOOKS_FUNCTION_LIKE

@@ -26,8 +26,9 @@
 #                  prefix of them when FUZZ_SECONDS runs out first, so a faster machine does not
 #                  explore inputs a slower one never checked
 #   FUZZ_FLAGS     extra libFuzzer flags (e.g. "-jobs=2 -workers=2", "-only_ascii=1")
-#   FUZZ_JOBS      builds, replays and fuzz targets run this many at a time (default: the
-#                  number of CPUs); the results are printed in the targets' order
+#   FUZZ_JOBS      replay builds, replays and fuzz targets run this many at a time (default:
+#                  the number of CPUs; the libFuzzer builds two at a time); the results are
+#                  printed in the targets' order. FUZZ_FLAGS="-jobs=N" multiplies it.
 #   CC             the compiler of the replay builds (default gcc); FUZZ_CC the libFuzzer
 #                  compiler (default clang)
 #   CI=true        a missing clang/libFuzzer is a FAIL, not a SKIP
@@ -217,7 +218,7 @@ do_fuzz() {
         fi
         return
     fi
-    # build two at a time, then fuzz one after the other
+    # build two at a time, then fuzz FUZZ_JOBS at a time
     local i
     for ((i = 0; i < ${#TARGETS[@]}; i += 2)); do
         build_start "${TARGETS[i]}" "$B/fuzz_${TARGETS[i]}" "$FUZZ_CC" "${SAN_FUZZ[@]}"
@@ -226,8 +227,8 @@ do_fuzz() {
         fi
         wait
     done
-    # fuzz two targets at a time (each libFuzzer run is one process on one CPU), then report
-    # in order
+    # fuzz FUZZ_JOBS targets at a time (each libFuzzer run is one process on one CPU), then
+    # report in order
     for t in "${TARGETS[@]}"; do
         build_ok "$B/fuzz_$t" || continue
         while [ "$(jobs -rp | wc -l)" -ge "$FUZZ_JOBS" ]; do wait -n 2>/dev/null || true; done
@@ -244,6 +245,7 @@ fuzz_one() {
     mkdir -p "$B/corpus/$t" "$B/crashes/$t"
     mapfile -t dirs < <(inputs "$t")
     log="$B/logs/fuzz_$t.log"
+    rm -f "$log.rc"
     # FUZZ_SECONDS=0: run the inputs once (libFuzzer's -max_total_time=0 means no limit)
     if [ "$FUZZ_SECONDS" -gt 0 ] 2>/dev/null; then limit=(-max_total_time="$FUZZ_SECONDS"); else limit=(-runs=0); fi
     # FUZZ_SEED: libFuzzer's -seed (make test fixes it, so that a commit's fuzz section
