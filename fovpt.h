@@ -4416,13 +4416,17 @@ typedef struct fovpt__ray {
                               lo (k) and hi (3 + k), swapped where the direction is negative */
 } fovpt__ray;
 
-/* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): a box's exit
-   distance u is widened to u * FOVPT__BOX_GROW + k, k = FOVPT__BOX_NEG * |tmin| for a
-   negative tmin (0 otherwise), before it is compared with the entry distance. Each slab
-   distance (plane - o) * (1 / d) is within gamma(3) = 3 eps / (1 - 3 eps) of its exact
-   value (eps = 2^-24); 1 + 2^-21 > (1 + gamma(3)) / (1 - gamma(3)) with the rounding of the
-   product, so a ray that meets the exact box (faces included) is never culled. The
-   additive k covers exits behind the origin (u < 0), reachable only with tmin < 0. */
+/* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): the far
+   planes' distances are (plane - o) * fl(inv * FOVPT__BOX_GROW), the bound tmax enters as
+   fl(tmax * FOVPT__BOX_GROW), and k = FOVPT__BOX_NEG * |tmin| is added to the exit for a
+   negative tmin (0 otherwise), before it is compared with the entry distance. A near
+   distance (plane - o) * inv is at most (1 + eps)^3 times its exact value (eps = 2^-24: the
+   difference, the reciprocal, the product), a far one at least (1 - eps)^4 GROW times
+   (one rounding more: inv * GROW); GROW = 1 + 2^-21 = 1 + 8 eps > (1 + eps)^3 / (1 - eps)^4,
+   so a ray that meets the exact box (faces included) is never culled, and the widening
+   costs no operation per node (it was u * GROW + k on every exit). The additive k covers
+   exits behind the origin (u < 0, the widening then shrinks |u|'s margin), reachable only
+   with tmin < 0. */
 #define FOVPT__BOX_GROW 1.000000476837158203125f /* 1 + 2^-21 */
 #define FOVPT__BOX_NEG 1.9073486328125e-06f      /* 2^-19 = 4 (GROW - 1) */
 FOVPT__PRIV float fovpt__inf(void)
@@ -4596,8 +4600,8 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
    planes picked by the direction's sign, so no swap: the same products as (lo - o) * inv and
    (hi - o) * inv, only never compared. Conservative: max(a, t) = a > t ? a : t and
    min(b, t) = b < t ? b : t drop a NaN slab distance (0 * inf: the ray lies in a slab's face
-   plane, parallel to it), and the exit is widened by the rounding margin (FOVPT__BOX_GROW,
-   grow_k = FOVPT__BOX_NEG * max(0, -tmin)). */
+   plane, parallel to it), and the exit is widened by the rounding margin (far planes times
+   inv * FOVPT__BOX_GROW, tmax * FOVPT__BOX_GROW, + FOVPT__BOX_NEG * max(0, -tmin)). */
 
 /* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
    s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
@@ -4768,26 +4772,31 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
 #if FOVPT__SIMD
+        const float ifx = r->inv[0] * FOVPT__BOX_GROW, ify = r->inv[1] * FOVPT__BOX_GROW,
+            ifz = r->inv[2] * FOVPT__BOX_GROW;
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
             voz = FOVPT__V_SET1(r->o[2]);
         const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
             viz = FOVPT__V_SET1(r->inv[2]);
-        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
-            vgk = FOVPT__V_SET1(gk);
-        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax);
+        const fovpt__v4 vfx = FOVPT__V_SET1(ifx), vfy = FOVPT__V_SET1(ify),
+            vfz = FOVPT__V_SET1(ifz);
+        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgk = FOVPT__V_SET1(gk);
+        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
         rv.ox = vox; rv.oy = voy; rv.oz = voz; rv.tmin = vtmin;
         rv.dx = FOVPT__V_SET1(r->d[0]); rv.dy = FOVPT__V_SET1(r->d[1]);
         rv.dz = FOVPT__V_SET1(r->d[2]);
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
             woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
-            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
-        __m256 wtmax = _mm256_set1_ps(*tmax);
-        (void)vix; (void)viy; (void)viz; (void)vgrow; (void)vgk; (void)vtmax;
+            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
+            wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
+        __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
+        (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
 #endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
-            iz = r->inv[2];
+            iz = r->inv[2], ifx = ix * FOVPT__BOX_GROW, ify = iy * FOVPT__BOX_GROW,
+            ifz = iz * FOVPT__BOX_GROW;
         rv.unused = 0;
 #endif
         {   /* no separate root box test: the root node's children's boxes are its box */
@@ -4798,9 +4807,9 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, any)) return best;
                     lim = *tmax * FOVPT__BOX_GROW + gk;
 #if FOVPT__SIMD
-                    vtmax = FOVPT__V_SET1(*tmax);
+                    vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
-                    wtmax = _mm256_set1_ps(*tmax);
+                    wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
 #endif
 #endif
                 } else {
@@ -4816,15 +4825,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
 #define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wfx), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wiy), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wfy), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wiz), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(
-                        t0, _mm256_add_ps(_mm256_mul_ps(u0, _mm256_set1_ps(FOVPT__BOX_GROW)),
-                                          _mm256_set1_ps(gk)), _CMP_LE_OQ));
+                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
+                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
                     hm = 0;
@@ -4832,29 +4840,29 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         fovpt__v4 t0 = vtmin, u0 = vtmax;
 #define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx), u0);
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, viy), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy), u0);
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, viz), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz), u0);
 #undef FOVPT__SLAB4
-                        hm |= FOVPT__M_BITS(FOVPT__V_LE(
-                            t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk))) << j;
+                        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);
+                        hm |= FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;
                         FOVPT__V_ST(tv + j, t0);
                     }
 #else
                     hm = 0;
                     for (j = 0; j < FOVPT__W; ++j) {
-                        const float tm = *tmax;
+                        const float tm = *tmax * FOVPT__BOX_GROW;
                         float t0 = tmin, u0 = tm, a, c;
-                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix;
+                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ifx;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * iy;
+                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * ify;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * iz;
+                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * ifz;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
                         tv[j] = t0;
-                        if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
+                        if (t0 <= u0 + gk) hm |= 1u << j;
                     }
 #endif
                     if (hm) {
