@@ -353,7 +353,7 @@ MEMORY
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
    traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
-   build data reused for the leaf triangles (36 bytes per bounded primitive, n rounded up to a
+   build data reused for the leaf triangles (60 bytes per bounded primitive, n rounded up to a
    multiple of 4), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
@@ -1095,7 +1095,9 @@ typedef struct fovpt_scene {
     const void *nodes;         /* BVH nodes (NULL: no BVH) */
     const uint32_t *order;     /* primitive order of the BVH leaves */
     const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise), in
-                                  SoA blocks of 4 slots: float[9][4] per block */
+                                  SoA blocks of 4 slots: float[12][4] per block (v0, e1, e2,
+                                  normal), then the 4 slots' primitive slot, id and material
+                                  (uint32_t[3][4]) */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
@@ -3777,6 +3779,12 @@ typedef struct fovpt__node4 {
     uint32_t pad[FOVPT_BVH_WIDTH];
 } fovpt__node4;
 #define FOVPT__LEAF4 0x80000000u
+/* A block of 4 leaf slots in fovpt_scene.leaf_tris: 48 floats (v0, e1, e2 and the unit
+   normal as 12 rows of 4 lanes), then 3 rows of 4 uint32_t: the slots' primitive slot (index
+   into the primitive records, as the leaf order), id and material, so a hit found in the
+   block is reported without reading the primitive record (a cache miss per ray on a large
+   mesh). 240 bytes. */
+#define FOVPT__LBLK 60u
 /* traversal stack: at most W - 1 entries pushed per node on the path, plus the root */
 #define FOVPT__STACK ((FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 2u)
 
@@ -3997,8 +4005,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid);
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
-                               SoA blocks of 4 slots (fovpt_scene.leaf_tris) */
-    sz += 36u * (((uint64_t)L->n_bounded + 3u) & ~(uint64_t)3u); /* whole blocks of 4 */
+                               SoA blocks of 4 slots (fovpt_scene.leaf_tris), 60 bytes
+                               per slot (FOVPT__LBLK floats per block of 4) */
+    sz += 12u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -4376,20 +4385,25 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes = base + L.nodes;
             {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
                    blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
-                   lanes each), so a leaf tests 4 triangles per pass */
+                   lanes each, the normal's 3 rows, then the rows slot, id, material:
+                   FOVPT__LBLK), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
                 uint32_t nb4 = (nb + 3u) & ~3u;
                 for (i = 0; i < nb4; ++i) {
-                    float *q = lt + 36u * (size_t)(i >> 2) + (i & 3u);
+                    float *q = lt + FOVPT__LBLK * (size_t)(i >> 2) + (i & 3u);
+                    uint32_t *qi = (uint32_t *)(void *)(q + 48);
                     const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    qi[0] = p ? order[i] : 0u;
+                    qi[4] = p ? p->id : 0u;
+                    qi[8] = p ? p->material : 0u;
                     if (p && p->type == FOVPT__TRI) {
                         for (k = 0; k < 3; ++k) {
                             q[4u * k] = p->a[k]; q[4u * (3u + k)] = p->b[k];
-                            q[4u * (6u + k)] = p->c[k];
+                            q[4u * (6u + k)] = p->c[k]; q[4u * (9u + k)] = p->n[k];
                         }
                     } else {
                         /* e1 = e2 = 0: det = 0, see fovpt__closest */
-                        for (k = 0; k < 9; ++k) q[4u * k] = 0.0f;
+                        for (k = 0; k < 12; ++k) q[4u * k] = 0.0f;
                     }
                 }
                 s->leaf_tris = lt;
@@ -4641,7 +4655,7 @@ typedef struct fovpt__rayv {
 } fovpt__rayv;
 FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fovpt__rayv *rv,
                             uint32_t first, uint32_t end, float tmin, float *tmax,
-                            uint32_t *best, int any)
+                            uint32_t *best, uint32_t *pos, int any)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t blk, blk1;
@@ -4650,7 +4664,7 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
     if (first >= end) return 0;
     blk1 = (end - 1u) >> 2;
     for (blk = first >> 2; blk <= blk1; ++blk) {
-        const float *q = s->leaf_tris + 36u * (size_t)blk;
+        const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)blk;
         const uint32_t b0 = blk << 2;
         const uint32_t lo = first > b0 ? first - b0 : 0u, hi = end - b0 < 4u ? end - b0 : 4u;
         const uint32_t lanes = (15u << lo) & (15u >> (4u - hi)) & 15u;
@@ -4728,15 +4742,21 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
         }
 #endif
         for (dm |= hm; dm; dm &= dm - 1u) { /* the lanes hit (hm) or left to fovpt__isect */
-            const uint32_t slot = s->order[b0 + (j = fovpt__ctz(dm))];
+            const uint32_t slot = ((const uint32_t *)(const void *)(q + 48))[j = fovpt__ctz(dm)];
             if (hm & (1u << j)) {
-                if (fovpt__leaf_take(tv[j], slot, tmax, best) && any) return 1;
+                if (fovpt__leaf_take(tv[j], slot, tmax, best)) {
+                    if (any) return 1;
+                    *pos = b0 + j; /* the hit record from this block (fovpt__hit) */
+                }
             } else if (prims[slot].type != FOVPT__TRI) {
                 /* another shape: its own test, over (tmin, tmax] when a tie may count */
                 float tm = *tmax, t;
                 if (*best != FOVPT_PRIM_NONE && tm < FLT_MAX) tm = fovpt__next_up(tm);
                 t = fovpt__isect(&prims[slot], r, tmin, tm);
-                if (t < tm && fovpt__leaf_take(t, slot, tmax, best) && any) return 1;
+                if (t < tm && fovpt__leaf_take(t, slot, tmax, best)) {
+                    if (any) return 1;
+                    *pos = FOVPT_PRIM_NONE;
+                }
             }
         }
     }
@@ -4758,11 +4778,12 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
    from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
    (unbounded) are tested after the bounded primitives. */
 FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin,
-                                    float *tmax, int brute, int any)
+                                    float *tmax, int brute, int any, uint32_t *pos)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t best = FOVPT_PRIM_NONE, i;
     float t;
+    *pos = FOVPT_PRIM_NONE;
     if (s->nodes && !brute) {
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
         uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
@@ -4804,7 +4825,8 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, any)) return best;
+                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, pos, any))
+                        return best;
                     lim = *tmax * FOVPT__BOX_GROW + gk;
 #if FOVPT__SIMD
                     vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
@@ -4920,7 +4942,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     }
     for (i = s->num_bounded; i < s->num_prims; ++i) {
         t = fovpt__isect(&prims[i], r, tmin, *tmax);
-        if (t < *tmax) { *tmax = t; best = i; if (any) return best; }
+        if (t < *tmax) { *tmax = t; best = i; *pos = FOVPT_PRIM_NONE; if (any) return best; }
     }
     return best;
 }
@@ -4930,7 +4952,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
 {
     fovpt__ray r;
     float t = tmax, un[3];
-    uint32_t slot, umat = 0;
+    uint32_t slot, pos, umat = 0;
     int user = 0;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
@@ -4939,12 +4961,12 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         /* largest component in [2^-32, 2^32]: dot(dir, dir) >= 2^-64 > 0 when finite */
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0;
         fovpt__ray_set(&r, org, dir);
-        slot = fovpt__closest(s, &r, tmin, &t, brute, 0);
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, &pos);
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
-        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0);
+        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0, &pos);
         if (slot != FOVPT_PRIM_NONE && !fovpt__unscale_t(ts, sc, tmin, tmax, &t)) {
             slot = FOVPT_PRIM_NONE; /* no float strictly inside (tmin, tmax) */
             t = tmax;
@@ -4968,6 +4990,15 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         h->material = umat;
         h->slot = FOVPT_PRIM_USER;
         return 1;
+    } else if (pos != FOVPT_PRIM_NONE) {
+        /* a triangle found in a leaf block: id, material and normal from the block, which
+           the traversal has just read */
+        const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)(pos >> 2) + (pos & 3u);
+        const uint32_t *qi = (const uint32_t *)(const void *)(q + 48);
+        h->prim = qi[4];
+        h->material = qi[8];
+        h->slot = slot;
+        fovpt__set3(h->n, q[36], q[40], q[44]);
     } else {
         const fovpt__prim *p = (const fovpt__prim *)s->prims + slot;
         h->prim = p->id;
@@ -5016,20 +5047,21 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
                              float tmin, float tmax)
 {
     fovpt__ray r;
+    uint32_t pos;
     float t = tmax;
     if (!s || !org || !dir || !s->prims) return 0;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0; /* as in fovpt__hit */
         fovpt__ray_set(&r, org, dir);
-        if (fovpt__closest(s, &r, tmin, &t, 0, 1) != FOVPT_PRIM_NONE) return 1;
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1, &pos) != FOVPT_PRIM_NONE) return 1;
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         t = tmax * sc;
         /* any hit inside the scaled interval is one inside (tmin, tmax), t rounded onto the
            nearest float inside as fovpt_intersect reports it (fovpt__unscale_t) */
-        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1) != FOVPT_PRIM_NONE) {
+        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1, &pos) != FOVPT_PRIM_NONE) {
             float tt;
             if (fovpt__unscale_t(t, sc, tmin, tmax, &tt)) return 1;
         }
