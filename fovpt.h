@@ -4007,7 +4007,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
                                SoA blocks of 4 slots (fovpt_scene.leaf_tris), 60 bytes
                                per slot (FOVPT__LBLK floats per block of 4) */
-    sz += 12u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
+    sz += 4u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
