@@ -353,7 +353,7 @@ MEMORY
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
    traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
-   build data reused for the leaf triangles (36 bytes per bounded primitive, n rounded up to a
+   build data reused for the leaf triangles (60 bytes per bounded primitive, n rounded up to a
    multiple of 4), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
@@ -1095,7 +1095,9 @@ typedef struct fovpt_scene {
     const void *nodes;         /* BVH nodes (NULL: no BVH) */
     const uint32_t *order;     /* primitive order of the BVH leaves */
     const float *leaf_tris;    /* per leaf slot: v0, e1, e2 of a triangle (zeros otherwise), in
-                                  SoA blocks of 4 slots: float[9][4] per block */
+                                  SoA blocks of 4 slots: float[12][4] per block (v0, e1, e2,
+                                  normal), then the 4 slots' primitive slot, id and material
+                                  (uint32_t[3][4]) */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
@@ -3777,6 +3779,12 @@ typedef struct fovpt__node4 {
     uint32_t pad[FOVPT_BVH_WIDTH];
 } fovpt__node4;
 #define FOVPT__LEAF4 0x80000000u
+/* A block of 4 leaf slots in fovpt_scene.leaf_tris: 48 floats (v0, e1, e2 and the unit
+   normal as 12 rows of 4 lanes), then 3 rows of 4 uint32_t: the slots' primitive slot (index
+   into the primitive records, as the leaf order), id and material, so a hit found in the
+   block is reported without reading the primitive record (a cache miss per ray on a large
+   mesh). 240 bytes. */
+#define FOVPT__LBLK 60u
 /* traversal stack: at most W - 1 entries pushed per node on the path, plus the root */
 #define FOVPT__STACK ((FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 2u)
 
@@ -3997,8 +4005,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid);
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
-                               SoA blocks of 4 slots (fovpt_scene.leaf_tris) */
-    sz += 36u * (((uint64_t)L->n_bounded + 3u) & ~(uint64_t)3u); /* whole blocks of 4 */
+                               SoA blocks of 4 slots (fovpt_scene.leaf_tris), 60 bytes
+                               per slot (FOVPT__LBLK floats per block of 4) */
+    sz += 4u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -4376,20 +4385,25 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes = base + L.nodes;
             {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
                    blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
-                   lanes each), so a leaf tests 4 triangles per pass */
+                   lanes each, the normal's 3 rows, then the rows slot, id, material:
+                   FOVPT__LBLK), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
                 uint32_t nb4 = (nb + 3u) & ~3u;
                 for (i = 0; i < nb4; ++i) {
-                    float *q = lt + 36u * (size_t)(i >> 2) + (i & 3u);
+                    float *q = lt + FOVPT__LBLK * (size_t)(i >> 2) + (i & 3u);
+                    uint32_t *qi = (uint32_t *)(void *)(q + 48);
                     const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    qi[0] = p ? order[i] : 0u;
+                    qi[4] = p ? p->id : 0u;
+                    qi[8] = p ? p->material : 0u;
                     if (p && p->type == FOVPT__TRI) {
                         for (k = 0; k < 3; ++k) {
                             q[4u * k] = p->a[k]; q[4u * (3u + k)] = p->b[k];
-                            q[4u * (6u + k)] = p->c[k];
+                            q[4u * (6u + k)] = p->c[k]; q[4u * (9u + k)] = p->n[k];
                         }
                     } else {
                         /* e1 = e2 = 0: det = 0, see fovpt__closest */
-                        for (k = 0; k < 9; ++k) q[4u * k] = 0.0f;
+                        for (k = 0; k < 12; ++k) q[4u * k] = 0.0f;
                     }
                 }
                 s->leaf_tris = lt;
@@ -4416,13 +4430,17 @@ typedef struct fovpt__ray {
                               lo (k) and hi (3 + k), swapped where the direction is negative */
 } fovpt__ray;
 
-/* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): a box's exit
-   distance u is widened to u * FOVPT__BOX_GROW + k, k = FOVPT__BOX_NEG * |tmin| for a
-   negative tmin (0 otherwise), before it is compared with the entry distance. Each slab
-   distance (plane - o) * (1 / d) is within gamma(3) = 3 eps / (1 - 3 eps) of its exact
-   value (eps = 2^-24); 1 + 2^-21 > (1 + gamma(3)) / (1 - gamma(3)) with the rounding of the
-   product, so a ray that meets the exact box (faces included) is never culled. The
-   additive k covers exits behind the origin (u < 0), reachable only with tmin < 0. */
+/* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): the far
+   planes' distances are (plane - o) * fl(inv * FOVPT__BOX_GROW), the bound tmax enters as
+   fl(tmax * FOVPT__BOX_GROW), and k = FOVPT__BOX_NEG * |tmin| is added to the exit for a
+   negative tmin (0 otherwise), before it is compared with the entry distance. A near
+   distance (plane - o) * inv is at most (1 + eps)^3 times its exact value (eps = 2^-24: the
+   difference, the reciprocal, the product), a far one at least (1 - eps)^4 GROW times
+   (one rounding more: inv * GROW); GROW = 1 + 2^-21 = 1 + 8 eps > (1 + eps)^3 / (1 - eps)^4,
+   so a ray that meets the exact box (faces included) is never culled, and the widening
+   costs no operation per node (it was u * GROW + k on every exit). The additive k covers
+   exits behind the origin (u < 0, the widening then shrinks |u|'s margin), reachable only
+   with tmin < 0. */
 #define FOVPT__BOX_GROW 1.000000476837158203125f /* 1 + 2^-21 */
 #define FOVPT__BOX_NEG 1.9073486328125e-06f      /* 2^-19 = 4 (GROW - 1) */
 FOVPT__PRIV float fovpt__inf(void)
@@ -4596,8 +4614,8 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
    planes picked by the direction's sign, so no swap: the same products as (lo - o) * inv and
    (hi - o) * inv, only never compared. Conservative: max(a, t) = a > t ? a : t and
    min(b, t) = b < t ? b : t drop a NaN slab distance (0 * inf: the ray lies in a slab's face
-   plane, parallel to it), and the exit is widened by the rounding margin (FOVPT__BOX_GROW,
-   grow_k = FOVPT__BOX_NEG * max(0, -tmin)). */
+   plane, parallel to it), and the exit is widened by the rounding margin (far planes times
+   inv * FOVPT__BOX_GROW, tmax * FOVPT__BOX_GROW, + FOVPT__BOX_NEG * max(0, -tmin)). */
 
 /* A BVH leaf: slots [first, end) of the leaf order, tested in the SoA blocks of
    s->leaf_tris four lanes at a time (Moller-Trumbore with the division deferred, the same
@@ -4637,7 +4655,7 @@ typedef struct fovpt__rayv {
 } fovpt__rayv;
 FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fovpt__rayv *rv,
                             uint32_t first, uint32_t end, float tmin, float *tmax,
-                            uint32_t *best, int any)
+                            uint32_t *best, uint32_t *pos, int any)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t blk, blk1;
@@ -4646,7 +4664,7 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
     if (first >= end) return 0;
     blk1 = (end - 1u) >> 2;
     for (blk = first >> 2; blk <= blk1; ++blk) {
-        const float *q = s->leaf_tris + 36u * (size_t)blk;
+        const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)blk;
         const uint32_t b0 = blk << 2;
         const uint32_t lo = first > b0 ? first - b0 : 0u, hi = end - b0 < 4u ? end - b0 : 4u;
         const uint32_t lanes = (15u << lo) & (15u >> (4u - hi)) & 15u;
@@ -4724,15 +4742,21 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
         }
 #endif
         for (dm |= hm; dm; dm &= dm - 1u) { /* the lanes hit (hm) or left to fovpt__isect */
-            const uint32_t slot = s->order[b0 + (j = fovpt__ctz(dm))];
+            const uint32_t slot = ((const uint32_t *)(const void *)(q + 48))[j = fovpt__ctz(dm)];
             if (hm & (1u << j)) {
-                if (fovpt__leaf_take(tv[j], slot, tmax, best) && any) return 1;
+                if (fovpt__leaf_take(tv[j], slot, tmax, best)) {
+                    if (any) return 1;
+                    *pos = b0 + j; /* the hit record from this block (fovpt__hit) */
+                }
             } else if (prims[slot].type != FOVPT__TRI) {
                 /* another shape: its own test, over (tmin, tmax] when a tie may count */
                 float tm = *tmax, t;
                 if (*best != FOVPT_PRIM_NONE && tm < FLT_MAX) tm = fovpt__next_up(tm);
                 t = fovpt__isect(&prims[slot], r, tmin, tm);
-                if (t < tm && fovpt__leaf_take(t, slot, tmax, best) && any) return 1;
+                if (t < tm && fovpt__leaf_take(t, slot, tmax, best)) {
+                    if (any) return 1;
+                    *pos = FOVPT_PRIM_NONE;
+                }
             }
         }
     }
@@ -4754,11 +4778,12 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
    from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
    (unbounded) are tested after the bounded primitives. */
 FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin,
-                                    float *tmax, int brute, int any)
+                                    float *tmax, int brute, int any, uint32_t *pos)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
     uint32_t best = FOVPT_PRIM_NONE, i;
     float t;
+    *pos = FOVPT_PRIM_NONE;
     if (s->nodes && !brute) {
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
         uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
@@ -4768,26 +4793,31 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
             fz = r->fb[2];
 #if FOVPT__SIMD
+        const float ifx = r->inv[0] * FOVPT__BOX_GROW, ify = r->inv[1] * FOVPT__BOX_GROW,
+            ifz = r->inv[2] * FOVPT__BOX_GROW;
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
             voz = FOVPT__V_SET1(r->o[2]);
         const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
             viz = FOVPT__V_SET1(r->inv[2]);
-        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgrow = FOVPT__V_SET1(FOVPT__BOX_GROW),
-            vgk = FOVPT__V_SET1(gk);
-        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax);
+        const fovpt__v4 vfx = FOVPT__V_SET1(ifx), vfy = FOVPT__V_SET1(ify),
+            vfz = FOVPT__V_SET1(ifz);
+        const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgk = FOVPT__V_SET1(gk);
+        fovpt__v4 vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
         rv.ox = vox; rv.oy = voy; rv.oz = voz; rv.tmin = vtmin;
         rv.dx = FOVPT__V_SET1(r->d[0]); rv.dy = FOVPT__V_SET1(r->d[1]);
         rv.dz = FOVPT__V_SET1(r->d[2]);
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
             woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
-            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]);
-        __m256 wtmax = _mm256_set1_ps(*tmax);
-        (void)vix; (void)viy; (void)viz; (void)vgrow; (void)vgk; (void)vtmax;
+            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
+            wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
+        __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
+        (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
 #endif
 #else
         const float ox = r->o[0], oy = r->o[1], oz = r->o[2], ix = r->inv[0], iy = r->inv[1],
-            iz = r->inv[2];
+            iz = r->inv[2], ifx = ix * FOVPT__BOX_GROW, ify = iy * FOVPT__BOX_GROW,
+            ifz = iz * FOVPT__BOX_GROW;
         rv.unused = 0;
 #endif
         {   /* no separate root box test: the root node's children's boxes are its box */
@@ -4795,12 +4825,13 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
                     const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, any)) return best;
+                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, pos, any))
+                        return best;
                     lim = *tmax * FOVPT__BOX_GROW + gk;
 #if FOVPT__SIMD
-                    vtmax = FOVPT__V_SET1(*tmax);
+                    vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
-                    wtmax = _mm256_set1_ps(*tmax);
+                    wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
 #endif
 #endif
                 } else {
@@ -4816,15 +4847,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
 #define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wix), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wfx), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wiy), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fy, woy, wfy), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
-                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wiz), u0);
+                    u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(
-                        t0, _mm256_add_ps(_mm256_mul_ps(u0, _mm256_set1_ps(FOVPT__BOX_GROW)),
-                                          _mm256_set1_ps(gk)), _CMP_LE_OQ));
+                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
+                    hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
                     hm = 0;
@@ -4832,29 +4862,29 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                         fovpt__v4 t0 = vtmin, u0 = vtmax;
 #define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vix), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx), u0);
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, viy), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy), u0);
                         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, viz), u0);
+                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz), u0);
 #undef FOVPT__SLAB4
-                        hm |= FOVPT__M_BITS(FOVPT__V_LE(
-                            t0, FOVPT__V_ADD(FOVPT__V_MUL(u0, vgrow), vgk))) << j;
+                        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);
+                        hm |= FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;
                         FOVPT__V_ST(tv + j, t0);
                     }
 #else
                     hm = 0;
                     for (j = 0; j < FOVPT__W; ++j) {
-                        const float tm = *tmax;
+                        const float tm = *tmax * FOVPT__BOX_GROW;
                         float t0 = tmin, u0 = tm, a, c;
-                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ix;
+                        a = (nd->b[nx][j] - ox) * ix; c = (nd->b[fx][j] - ox) * ifx;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * iy;
+                        a = (nd->b[ny][j] - oy) * iy; c = (nd->b[fy][j] - oy) * ify;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
-                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * iz;
+                        a = (nd->b[nz][j] - oz) * iz; c = (nd->b[fz][j] - oz) * ifz;
                         t0 = a > t0 ? a : t0; u0 = c < u0 ? c : u0;
                         tv[j] = t0;
-                        if (t0 <= u0 * FOVPT__BOX_GROW + gk) hm |= 1u << j;
+                        if (t0 <= u0 + gk) hm |= 1u << j;
                     }
 #endif
                     if (hm) {
@@ -4912,7 +4942,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     }
     for (i = s->num_bounded; i < s->num_prims; ++i) {
         t = fovpt__isect(&prims[i], r, tmin, *tmax);
-        if (t < *tmax) { *tmax = t; best = i; if (any) return best; }
+        if (t < *tmax) { *tmax = t; best = i; *pos = FOVPT_PRIM_NONE; if (any) return best; }
     }
     return best;
 }
@@ -4922,7 +4952,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
 {
     fovpt__ray r;
     float t = tmax, un[3];
-    uint32_t slot, umat = 0;
+    uint32_t slot, pos, umat = 0;
     int user = 0;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
@@ -4931,12 +4961,12 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         /* largest component in [2^-32, 2^32]: dot(dir, dir) >= 2^-64 > 0 when finite */
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0;
         fovpt__ray_set(&r, org, dir);
-        slot = fovpt__closest(s, &r, tmin, &t, brute, 0);
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, &pos);
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
-        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0);
+        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute, 0, &pos);
         if (slot != FOVPT_PRIM_NONE && !fovpt__unscale_t(ts, sc, tmin, tmax, &t)) {
             slot = FOVPT_PRIM_NONE; /* no float strictly inside (tmin, tmax) */
             t = tmax;
@@ -4960,6 +4990,15 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         h->material = umat;
         h->slot = FOVPT_PRIM_USER;
         return 1;
+    } else if (pos != FOVPT_PRIM_NONE) {
+        /* a triangle found in a leaf block: id, material and normal from the block, which
+           the traversal has just read */
+        const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)(pos >> 2) + (pos & 3u);
+        const uint32_t *qi = (const uint32_t *)(const void *)(q + 48);
+        h->prim = qi[4];
+        h->material = qi[8];
+        h->slot = slot;
+        fovpt__set3(h->n, q[36], q[40], q[44]);
     } else {
         const fovpt__prim *p = (const fovpt__prim *)s->prims + slot;
         h->prim = p->id;
@@ -5008,20 +5047,21 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
                              float tmin, float tmax)
 {
     fovpt__ray r;
+    uint32_t pos;
     float t = tmax;
     if (!s || !org || !dir || !s->prims) return 0;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
     if (!fovpt__dir_odd(dir)) {
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0; /* as in fovpt__hit */
         fovpt__ray_set(&r, org, dir);
-        if (fovpt__closest(s, &r, tmin, &t, 0, 1) != FOVPT_PRIM_NONE) return 1;
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1, &pos) != FOVPT_PRIM_NONE) return 1;
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         t = tmax * sc;
         /* any hit inside the scaled interval is one inside (tmin, tmax), t rounded onto the
            nearest float inside as fovpt_intersect reports it (fovpt__unscale_t) */
-        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1) != FOVPT_PRIM_NONE) {
+        if (fovpt__closest(s, &r, tmin * sc, &t, 0, 1, &pos) != FOVPT_PRIM_NONE) {
             float tt;
             if (fovpt__unscale_t(t, sc, tmin, tmax, &tt)) return 1;
         }

@@ -197,8 +197,8 @@ static void psnr_fields(const float *a, const float *ref, const float *ecc, size
    speedup = Embree's time / this row's time. pt_bvh.csv beside the CSV: build time (best of 3,
    thread CPU time) and bytes per triangle of each acceleration structure (fovpt: the whole
    scene memory of fovpt_scene_size, and in traversal_bytes_per_tri what the traversal reads:
-   nodes, leaf triangles, leaf order; Embree: the device's allocations, vertex and index
-   buffers included; tinybvh: its traversal blocks, nodes and triangles). */
+   nodes, leaf blocks (triangles, slot, id, material); Embree: the device's allocations,
+   vertex and index buffers included; tinybvh: its traversal blocks, nodes and triangles). */
 static uint64_t g_rng = 0x243f6a8885a308d3ull;
 static float rnd01(void)
 {
@@ -481,10 +481,11 @@ static void tp_scene(FILE *csv, FILE *bcsv, int sc, uint32_t W, uint32_t H)
                     (double)m_n[md] / (best[m][md] * 1e-3), best[m][md], modes[md], m_n[md], W * H, em > 0.0 ? em / best[m][md] : 0.0);
         }
         if (bcsv) {
-            /* fovpt: what the traversal reads (W-wide nodes, leaf triangles, leaf order) beside
-               the whole scene memory; Embree and tinybvh: the same figure as bytes_per_tri */
-            double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) + 144.0 * (double)((tri.num_bounded + 3u) / 4u) +
-                                        4.0 * tri.num_bounded) / (double)soup.n : bpt[m];
+            /* fovpt: what the traversal reads (W-wide nodes, leaf blocks: triangles with their
+               slot, id and material) beside the whole scene memory; Embree and tinybvh: the
+               same figure as bytes_per_tri */
+            double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) +
+                                        4.0 * FOVPT__LBLK * (double)((tri.num_bounded + 3u) / 4u)) / (double)soup.n : bpt[m];
             char lay[64];
             snprintf(lay, sizeof lay, "bvh%u %s", (unsigned)FOVPT_BVH_WIDTH,
                      FOVPT__SIMD == 1 ? (FOVPT_BVH_WIDTH == 8 ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");
