@@ -2458,6 +2458,74 @@ static void test_bvh_adversarial(void)
    pair) must hit one of them. The test is Moller-Trumbore with the edges of each triangle
    from its own v0, so the shared edge is evaluated differently from the two sides; the
    leaks are counted and printed. */
+/* Rays with a direction component below FLT_MIN in magnitude but not 0 (1/d overflows, or
+   its product with the box test's margin does): the BVH must still find every hit the brute-
+   force loop finds (NUMERICS). A tilted triangle strip whose x extent is 2^-100, origins a few
+   ulps around 2^-121, the tiny component on x, both signs, tmin -2000 and 0 (a reviewer's
+   construction: main lost every hit for |d| <= 2^-128, the folded margin also for the next
+   floats above). */
+static void test_tiny_dir(void)
+{
+    static const uint32_t bits[5] = { 0x00200001u, 0x00200000u, 0x00100000u, 0x00000001u, 0x007fffffu };
+    float pos[9 * 8], e = 7.888609052210118e-31f; /* 2^-100 */
+    float tri[9] = { 0.0f, -1000.0f, -1000.0f, 0.0f, 1000.0f, -1000.0f, 0.0f, 0.0f, 1000.0f };
+    fovpt_mesh m;
+    fovpt_material mat;
+    fovpt_scene_desc d;
+    fovpt_scene s;
+    size_t sz = 0;
+    void *mem;
+    uint32_t i, b, lost = 0, occl = 0, tried = 0, hits = 0;
+    tri[6] = -e;
+    for (i = 0; i < 8; ++i) {
+        memcpy(pos + 9 * i, tri, sizeof tri);
+        pos[9 * i + 1] += 3000.0f * (float)i; pos[9 * i + 4] += 3000.0f * (float)i; pos[9 * i + 7] += 3000.0f * (float)i;
+    }
+    memset(&m, 0, sizeof m);
+    m.positions = pos; m.num_vertices = 24; m.num_triangles = 8;
+    fovpt_material_init(&mat);
+    fovpt_scene_desc_init(&d);
+    d.meshes = &m; d.num_meshes = 1; d.materials = &mat; d.num_materials = 1;
+    if (!check(fovpt_scene_size(&d, &sz) == FOV_OK, "tiny-direction scene: size", "error")) return;
+    mem = malloc(sz);
+    if (!check(mem && fovpt_scene_build(&s, &d, mem, sz) == FOV_OK, "tiny-direction scene builds", "error")) {
+        free(mem);
+        return;
+    }
+    for (b = 0; b < 5; ++b) {
+        uint32_t sg, k;
+        float dx;
+        memcpy(&dx, &bits[b], sizeof dx);
+        for (sg = 0; sg < 4; ++sg) { /* +dir with tmin -2000, -dir with tmin 0, and the mirror images */
+            float o0 = 1.0f, sx = (sg & 1u) ? -1.0f : 1.0f, tmin = (sg & 2u) ? 0.0f : -2000.0f;
+            for (k = 0; k < 121; ++k) o0 *= 0.5f;
+            for (k = 1; k < 400; k += 3) {
+                fovpt_hit h1, h2;
+                float org[3], dir[3];
+                uint32_t u;
+                int a, c, oc;
+                memcpy(&u, &o0, sizeof u); u += k; memcpy(&org[0], &u, sizeof u);
+                org[0] *= sx; org[1] = 0.0f; org[2] = 0.0f;
+                dir[0] = (sg & 2u) ? -sx * dx : sx * dx; dir[1] = 0.0f; dir[2] = (sg & 2u) ? -1.0f : 1.0f;
+                a = fovpt_intersect(&s, org, dir, tmin, 2000.0f, &h1);
+                c = fovpt_intersect_brute(&s, org, dir, tmin, 2000.0f, &h2);
+                oc = fovpt_occluded(&s, org, dir, tmin, 2000.0f);
+                tried++;
+                hits += (uint32_t)(c != 0);
+                if (c && (!a || h1.t != h2.t)) lost++;
+                if (oc != c) occl++;
+            }
+        }
+    }
+    check(hits > tried / 4u, "tiny-direction rays: the brute-force loop hits (the test has hits to lose)", "%u of %u",
+          hits, tried);
+    check(lost == 0, "tiny-direction rays (|d_x| < FLT_MIN, not 0): BVH hit = brute-force hit", "%u of %u lost", lost,
+          hits);
+    check(occl == 0, "tiny-direction rays: fovpt_occluded agrees with the brute-force hit", "%u of %u differ", occl,
+          tried);
+    free(mem);
+}
+
 static void test_watertight(void)
 {
     uint32_t n = 0, leak_flat = 0, leak_fold = 0, nflat = 0, nfold = 0, i, k;
@@ -2661,6 +2729,7 @@ int main(void)
     test_any_length();
     test_bvh_adversarial();
     test_watertight();
+    test_tiny_dir();
     return fovcheck_summary();
 #endif
     test_version();
@@ -2691,5 +2760,6 @@ int main(void)
     test_temporal();
     test_bvh_adversarial();
     test_watertight();
+    test_tiny_dir();
     return fovcheck_summary();
 }
