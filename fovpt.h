@@ -328,19 +328,22 @@ SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
    the Laine-Karras 2011 hash and then scrambles the point, keyed by (seed, pixel, frame).
    The groups follow the path's order of use: the pixel position (dimensions 0, 1: a 2-D
    Sobol pair), then triples, each a 1-D dimension (the light or BSDF lobe choice) and a 2-D
-   pair (the point on the light, the BSDF direction), for the light and BSDF samples of the
-   first four bounces (FOVPT__SOBOL_DIMS, 26 dimensions); later numbers (Russian roulette,
-   deeper bounces) are the random stream's. So samples 0 .. 2^m - 1 of a pixel put exactly
-   one point into each of the 2^m elementary intervals of every pair, and one into each
-   1/2^m of every 1-D dimension (tested); every number stays uniform in [0, 1), so the
-   estimate stays unbiased and its mean is RANDOM's. Each frame (and seed) scrambles anew:
-   frames are independent, like RANDOM's. A pixel's samples must be its indices 0, 1, ...
-   (the methods number them so); a lone sample (index 0 only) is as random as RANDOM's.
-   Measured (UNIFORM, 160 x 120, 4 seeds, MSE of the clamped image against 2048 spp,
-   bench/README.md "Samplers"): the same samples give the terrain +3.2 dB at 4 spp and
-   +6.1 dB at 16, the 441 cubes +2.5 / +3.5 dB (edges and light samples are 2-D
-   integrands), the Cornell box +0.3 dB (its error is indirect light, past the strata).
-   Cost: a few integer hashes per number, against hundreds of instructions per ray.
+   pair (the point on the light, the BSDF direction): the light and BSDF samples of the
+   first four bounces (26 dimensions; Russian roulette, from bounce rr_start, shifts the
+   triples after it, which stay uniform but lose their pairing). Numbers past the 26th are
+   the random stream's. So samples 0 .. 2^m - 1 of a pixel put exactly one point into each
+   of the 2^m elementary intervals of every pair, and one into each 1/2^m of every 1-D
+   dimension (tested, also for the blocks n 2^16 + k that LAYERS' layer n uses); every
+   number stays uniform in [0, 1), so the estimate stays unbiased and its mean is RANDOM's.
+   Each frame (and seed) scrambles anew: frames are independent, like RANDOM's. A pixel's
+   samples must be its indices 0, 1, ... (the methods number them so); a lone sample (index
+   0 only) is as random as RANDOM's.
+   Measured (`make bench-pt-sampler`, bench/results/pt_sampler.csv: 160 x 120, 4 seeds, MSE of
+   the clamped image against 2048 RANDOM spp), the same samples, SOBOL over RANDOM: UNIFORM
+   at 16 spp the terrain +6.2 dB, the mirrors +5 dB, the 441 cubes +3.6 dB, the Cornell box
+   and the interior within +-0.3 dB (their error is multi-bounce indirect light, past the
+   strata); 4 spp: +3.2, +2.6 (terrain, cubes). Cost: about 9 % more instructions per frame
+   (callgrind, Cornell box UNIFORM 8 spp: the hashes of the 26 numbers of a path).
    The default stays RANDOM in this version so that the published figures stay
    reproducible; set cfg.sampler = FOVPT_SAMPLER_SOBOL for the lower noise.
 
@@ -1391,6 +1394,7 @@ typedef struct fovpt_stats {
 typedef struct fovpt_rng {
     uint32_t key, ctr;
     uint32_t scramble, index, sobol; /* sobol 1: (scramble, index) drive the first dimensions */
+    uint32_t group, gkey, gidx;      /* the current group's key and shuffled index (a cache) */
 } fovpt_rng;
 
 /* ==== functions =========================================================================== */
@@ -5107,6 +5111,8 @@ FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint3
     r->key = k;
     r->ctr = 0;
     r->scramble = r->index = r->sobol = 0;
+    r->group = 0xFFFFFFFFu;
+    r->gkey = r->gidx = 0;
 }
 FOVPT_API void fovpt_rng_init_sobol(fovpt_rng *r, uint32_t seed, uint32_t pixel,
                                     uint32_t sample, uint32_t frame)
@@ -5120,34 +5126,56 @@ FOVPT_API void fovpt_rng_init_sobol(fovpt_rng *r, uint32_t seed, uint32_t pixel,
     r->index = sample;
     r->sobol = 1;
 }
-/* Sobol's first two dimensions (Sobol 1967) of index i as 32-bit fractions (bit 31 = 1/2):
-   dimension 0 is the bit reversal of i (van der Corput); dimension 1 has the direction
-   numbers v_1 = 1/2, v_(k+1) = v_k xor v_k / 2. */
 #define FOVPT__SOBOL_DIMS 26u /* the pixel pair and 8 triples: 4 bounces' light and BSDF */
+#if defined(__clang__) && defined(__has_builtin)
+#if __has_builtin(__builtin_bitreverse32)
+#define FOVPT__BITREV 2 /* one instruction where the target has it (rbit on ARM) */
+#endif
+#endif
+#if !defined(FOVPT__BITREV) && (defined(__GNUC__) || defined(__clang__))
+#define FOVPT__BITREV 1 /* byte swap, then the bits of each byte */
+#endif
+#ifndef FOVPT__BITREV
+#define FOVPT__BITREV 0
+#endif
+/* The bits of x in reverse order (the same value on every path; the nets test checks it). */
 FOVPT__PRIV uint32_t fovpt__rev32(uint32_t x)
 {
-    x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+#if FOVPT__BITREV == 2
+    return __builtin_bitreverse32(x);
+#else
+#if FOVPT__BITREV == 1
+    x = __builtin_bswap32(x);
+#else
     x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
-    return (x >> 16) | (x << 16);
+    x = (x >> 16) | (x << 16);
+#endif
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+#endif
 }
-FOVPT__PRIV uint32_t fovpt__sobol1(uint32_t i)
+/* The hash of Laine and Karras 2011 with the constants of Burley 2020: on a bit-reversed
+   fraction (bit 0 = the 1/2 digit) a nested uniform scramble (Owen 1995): output bit j
+   depends only on input bits 0..j, so every elementary interval maps onto one. */
+FOVPT__PRIV uint32_t fovpt__lk(uint32_t x, uint32_t seed)
 {
-    uint32_t v = 0x80000000u, r = 0;
-    for (; i; i >>= 1, v ^= v >> 1)
-        if (i & 1u) r ^= v;
-    return r;
-}
-/* A nested uniform (Owen 1995) scramble of the 32-bit fraction x, keyed by seed: the hash
-   of Laine and Karras 2011 on the bit-reversed value, as Burley 2020 gives it. Digit k of the
-   result depends only on digits 1..k of x, so every elementary interval maps onto one. */
-FOVPT__PRIV uint32_t fovpt__owen(uint32_t x, uint32_t seed)
-{
-    x = fovpt__rev32(x);
     x += seed;
     x ^= x * 0x6c50b47cu; x ^= x * 0xb82f1e52u; x ^= x * 0xc7afe638u; x ^= x * 0x8d22f6e6u;
-    return fovpt__rev32(x);
+    return x;
+}
+/* Sobol's dimension 1 (Sobol 1967) of index i, bit-reversed (bit j = the 2^-(j+1) digit):
+   its generator is Pascal's triangle mod 2, so digit j is the xor of the index bits k that
+   contain j (k & j = j, Lucas' theorem), a superset transform in five steps. Dimension 0
+   (van der Corput), bit-reversed, is i itself. */
+FOVPT__PRIV uint32_t fovpt__sobol1r(uint32_t i)
+{
+    i ^= (i >> 1) & 0x55555555u;
+    i ^= (i >> 2) & 0x33333333u;
+    i ^= (i >> 4) & 0x0f0f0f0fu;
+    i ^= (i >> 8) & 0x00ff00ffu;
+    i ^= (i >> 16) & 0x0000ffffu;
+    return i;
 }
 FOVPT_API float fovpt_rng_next(fovpt_rng *r)
 {
@@ -5156,14 +5184,23 @@ FOVPT_API float fovpt_rng_next(fovpt_rng *r)
     c = r->ctr++;
     if (r->sobol == 1u && c < FOVPT__SOBOL_DIMS) {
         /* SAMPLERS: dimensions 0, 1 one pair, then triples (a 1-D dimension, a pair): each
-           group shuffles the sample index by its own scramble (Burley 2020), so the groups
-           are independent of each other while each is stratified over the samples */
-        uint32_t g = c < 2u ? 0u : 1u + (c - 2u) / 3u;
-        uint32_t j = c < 2u ? c + 1u : (c - 2u) % 3u;  /* 0: 1-D; 1, 2: the pair's x, y */
-        uint32_t gs = fovpt__mix(r->scramble + 0x68bc21ebu * (g + 1u));
-        uint32_t i = fovpt__owen(r->index, gs);
-        x = j == 2u ? fovpt__sobol1(i) : fovpt__rev32(i);
-        x = fovpt__owen(x, fovpt__mix(gs ^ (0x02e5be93u * (j + 1u))));
+           group shuffles the sample index by its own nested uniform scramble (Burley 2020),
+           so the groups are independent of each other while each is stratified over the
+           samples; the index, bit-reversed, scrambled and reversed back, keeps a prefix of
+           2^m indices' low m bits a permutation */
+        /* dimension c's group (0: the pixel pair) and role (0: 1-D; 1, 2: a pair's x, y) */
+        static const unsigned char grp[FOVPT__SOBOL_DIMS] = { 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3,
+            4, 4, 4, 5, 5, 5, 6, 6, 6, 7, 7, 7, 8, 8, 8 };
+        static const unsigned char role[FOVPT__SOBOL_DIMS] = { 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2,
+            0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2, 0, 1, 2 };
+        uint32_t g = grp[c], j = role[c];
+        if (g != r->group) {
+            r->group = g;
+            r->gkey = fovpt__mix(r->scramble + 0x68bc21ebu * (g + 1u));
+            r->gidx = fovpt__rev32(fovpt__lk(fovpt__rev32(r->index), r->gkey));
+        }
+        x = j == 2u ? fovpt__sobol1r(r->gidx) : r->gidx;
+        x = fovpt__rev32(fovpt__lk(x, fovpt__mix(r->gkey ^ (0x02e5be93u * (j + 1u)))));
         return (float)(x >> 8) * (1.0f / 16777216.0f);
     }
     x = fovpt__mix(fovpt__mix(r->key + 0x9e3779b9u * c) ^ r->key);
