@@ -342,8 +342,8 @@ SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
    the clamped image against 2048 RANDOM spp), the same samples, SOBOL over RANDOM: UNIFORM
    at 16 spp the terrain +6.2 dB, the mirrors +5 dB, the 441 cubes +3.6 dB, the Cornell box
    and the interior within +-0.3 dB (their error is multi-bounce indirect light, past the
-   strata); 4 spp: +3.2, +2.6 (terrain, cubes). Cost: about 9 % more instructions per frame
-   (callgrind, Cornell box UNIFORM 8 spp: the hashes of the 26 numbers of a path).
+   strata); 4 spp: +3.2, +2.6, +3.8 (terrain, cubes, mirrors). Cost: 9-14 % more
+   instructions per frame (callgrind, UNIFORM 8 spp: the hashes of a path's 26 numbers).
    The default stays RANDOM in this version so that the published figures stay
    reproducible; set cfg.sampler = FOVPT_SAMPLER_SOBOL for the lower noise.
 
