@@ -1490,17 +1490,17 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *re
                                     const float org[3], const float dir[3], fovpt_rng *rng,
                                     float rgb[3], fovpt_stats *stats);
 
-/* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar
-   samples; see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1])
-   (stride in floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each
-   (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame)
-   (fovpt_rng_init, or fovpt_rng_init_sobol with resolved->sampler SOBOL), its ray through
-   the point (jitter 0) or through a point uniform in the jitter x jitter pixels centred on
-   it (the stream's first two numbers; jitter 1 at pixel centres is UNIFORM's box filter, bit
-   for bit), fovpt_radiance's estimator; rgb gets the plain mean (3 floats per point; clamp_white is not read), t (may be NULL) the first-hit distance along
-   sample 0's unit camera ray (FLT_MAX: a miss). Everything is checked before any work
-   (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG incl. a jitter square corner's ray overflowing,
-   _LIMIT, the camera's errors). stats is added to. */
+/* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar samples;
+   see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1]) (stride in
+   floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each (0: resolved->spp),
+   sample k of point i on the stream (resolved->seed, first + i, k, frame) (fovpt_rng_init, or
+   fovpt_rng_init_sobol with resolved->sampler SOBOL), its ray through the point (jitter 0) or
+   through a point uniform in the jitter x jitter pixels centred on it (the stream's first two
+   numbers; jitter 1 at pixel centres is UNIFORM's box filter, bit for bit), fovpt_radiance's
+   estimator; rgb gets the plain mean (3 floats per point; clamp_white is not read), t (may be NULL)
+   the first-hit distance along sample 0's unit camera ray (FLT_MAX: a miss). Everything is checked
+   before any work (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG incl. a jitter square corner's ray
+   overflowing, _LIMIT, the camera's errors). stats is added to. */
 FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *scene, const fovpt_config *resolved,
                                         const fovpt_camera *cam, uint32_t n, const float *xy,
                                         uint32_t stride, uint32_t first, uint32_t frame,
