@@ -125,12 +125,15 @@ static void test_stratified(void)
     }
     /* the groups pair their points independently (each shuffles the index): dims of two
        groups over 256 samples fill a 16 x 16 grid like independent points (162 cells on
-       average, std 7); the same index in both groups would fill 16 */
+       average, std 7); the same index in both groups would fill 16. A triple's 1-D dimension
+       is a group of its own: with the pair beside it (2-3, 2-4, 5-6, 23-24: the light pick
+       and the point on the light, the lobe pick and the direction) as well */
     {
-        static const uint32_t dp[4][2] = { { 0, 3 }, { 0, 2 }, { 3, 6 }, { 4, 7 } };
+        static const uint32_t dp[8][2] = { { 0, 3 }, { 0, 2 }, { 3, 6 }, { 4, 7 }, { 2, 3 }, { 2, 4 },
+                                           { 5, 6 }, { 23, 24 } };
         uint32_t q, k, worst = 256;
         draw(9u, 4242u, 1u, 256, 1, g_v);
-        for (q = 0; q < 4; ++q) {
+        for (q = 0; q < 8; ++q) {
             unsigned char cell[256];
             uint32_t occ = 0;
             memset(cell, 0, sizeof cell);
@@ -140,7 +143,8 @@ static void test_stratified(void)
             }
             if (occ < worst) worst = occ;
         }
-        check(worst > 120, "sobol: two groups' dims fill a 16x16 grid like independent points (> 120 of 256 cells)",
+        check(worst > 120, "sobol: two groups' dims (incl. a triple's 1-D and its pair) fill a 16x16 grid like "
+              "independent points (> 120 of 256 cells)",
               "fewest %u cells", worst);
     }
     /* the random stream is not stratified: the same counts fail for it (the test can fail) */
