@@ -325,25 +325,31 @@ SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
    numbers. FOVPT_SAMPLER_SOBOL stratifies the samples of a pixel: sample k takes the first
    dimensions of a scrambled Sobol sequence (Sobol 1967) at index k, as Burley 2020 builds
    it: each group of dimensions shuffles k by its own nested uniform (Owen 1995) scramble of
-   the Laine-Karras 2011 hash and then scrambles the point, keyed by (seed, pixel, frame).
-   The groups follow the path's order of use: the pixel position (dimensions 0, 1: a 2-D
-   Sobol pair), then triples, each a 1-D dimension (the light or BSDF lobe choice) and a 2-D
-   pair (the point on the light, the BSDF direction): the light and BSDF samples of the
-   first four bounces (26 dimensions; Russian roulette, from bounce rr_start, shifts the
-   triples after it, which stay uniform but lose their pairing). Numbers past the 26th are
-   the random stream's. So samples 0 .. 2^m - 1 of a pixel put exactly one point into each
-   of the 2^m elementary intervals of every pair, and one into each 1/2^m of every 1-D
-   dimension (tested, also for the blocks n 2^16 + k that LAYERS' layer n uses); every
-   number stays uniform in [0, 1), so the estimate stays unbiased and its mean is RANDOM's.
-   Each frame (and seed) scrambles anew: frames are independent, like RANDOM's. A pixel's
-   samples must be its indices 0, 1, ... (the methods number them so); a lone sample (index
-   0 only) is as random as RANDOM's.
+   the Laine-Karras 2011 hash and then scrambles the point (two rounds of the hash, keyed by
+   seed, pixel, frame and group). The groups follow the path's order of use: the pixel
+   position (dimensions 0, 1: a 2-D Sobol pair), then triples, each a 1-D group (the light or
+   BSDF lobe pick) and a 2-D pair (the point on the light, the BSDF direction): the light and
+   BSDF samples of the first four bounces (26 dimensions; Russian roulette, from bounce
+   rr_start, shifts the triples after it, which stay uniform but lose their pairing).
+   Numbers past the 26th are the random stream's. So samples 0 .. 2^m - 1 of a pixel put
+   exactly one point into each of the 2^m elementary intervals of every pair, and one into
+   each 1/2^m of every 1-D group, while two groups (a pick and its pair included) pair their
+   points like independent ones (tested); every number stays uniform in [0, 1), so the
+   estimate stays unbiased and its mean is RANDOM's. Each frame (and seed) scrambles anew:
+   frames are independent, like RANDOM's. The methods number a pixel's samples from 0
+   (LAYERS' layer n from n 2^16, SELECTIVE's and JIN's subpixel q from (q + 1) 2^12: blocks
+   that stratify the same way); a lone sample (index 0 only) is as random as RANDOM's. A
+   camera ray without jitter (fovpt_shade_points with jitter 0, the SELECTIVE and JIN
+   presample through the pixel centre) draws the pixel pair and drops it, so the path's
+   dimensions keep their places (RANDOM's streams are unchanged by this).
    Measured (`make bench-pt-sampler`, bench/results/pt_sampler.csv: 160 x 120, 4 seeds, MSE of
    the clamped image against 2048 RANDOM spp), the same samples, SOBOL over RANDOM: UNIFORM
-   at 16 spp the terrain +6.2 dB, the mirrors +5 dB, the 441 cubes +3.6 dB, the Cornell box
-   and the interior within +-0.3 dB (their error is multi-bounce indirect light, past the
-   strata); 4 spp: +3.2, +2.6, +3.8 (terrain, cubes, mirrors). Cost: 9-14 % more
-   instructions per frame (callgrind, UNIFORM 8 spp: the hashes of a path's 26 numbers).
+   at 16 spp the terrain +6 dB, the mirrors +5 dB, the 441 cubes +3.6 dB; at 4 spp +2.6 to
+   +3.8 dB in these three; the Cornell box within +-0.2 dB (its clamped error is the
+   fireflies of its mirror and Phong spheres: RANDOM's PSNR falls from 4 to 16 spp) and the
+   interior +0.1 to +1.2 dB. Cost: 12-20 % more instructions per frame (callgrind, UNIFORM
+   8 spp: the hashes of a path's 26 numbers); at equal time the terrain, mirrors and cubes
+   gain, the Cornell box and the interior lose a little.
    The default stays RANDOM in this version so that the published figures stay
    reproducible; set cfg.sampler = FOVPT_SAMPLER_SOBOL for the lower noise.
 
