@@ -344,8 +344,8 @@ SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
    dimensions keep their places (RANDOM's streams are unchanged by this).
    Measured (`make bench-pt-sampler`, bench/results/pt_sampler.csv: 160 x 120, 4 seeds, MSE of
    the clamped image against 2048 RANDOM spp), the same samples, SOBOL over RANDOM: UNIFORM
-   at 16 spp the terrain +6 dB, the mirrors +5 dB, the 441 cubes +3.6 dB; at 4 spp +2.6 to
-   +3.8 dB in these three; the Cornell box within +-0.2 dB (its clamped error is the
+   at 16 spp the terrain +6.4 dB, the mirrors +5.2 dB, the 441 cubes +3.8 dB; at 4 spp +2.6
+   to +3.8 dB in these three; the Cornell box -0.2 to +0.5 dB (its clamped error is the
    fireflies of its mirror and Phong spheres: RANDOM's PSNR falls from 4 to 16 spp) and the
    interior +0.1 to +1.2 dB. Cost: 12-20 % more instructions per frame (callgrind, UNIFORM
    8 spp: the hashes of a path's 26 numbers); at equal time the terrain, mirrors and cubes
