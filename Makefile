@@ -36,7 +36,7 @@ WARN    := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion
 BUILD   := build
 
 .PHONY: all demo test fuzz examples gallery bench bench-sdf bench-sdf-native bench-sdf-nosimd \
-        bench-sdf-all bench-lp bench-pt bench-pt-throughput bench-sdf-acuity bench-perceptual bench-gaze clean install \
+        bench-sdf-all bench-lp bench-pt bench-pt-throughput bench-pt-sampler bench-sdf-acuity bench-perceptual bench-gaze clean install \
         web web-serve bench-web bench-web-native web-screenshot bench-pt-wasm
 
 all: examples
@@ -95,6 +95,14 @@ bench-pt-throughput: $(if $(TINYBVH),$(BUILD)/tinybvh_row.o)
 	  echo "== fovpt build $$v"; \
 	  ./$(BUILD)/bench_pt_$$v --throughput --out $(BUILD)/tp_$$v/pt.csv || exit 1; \
 	done
+
+# fovpt's samplers side by side: RANDOM and SOBOL, error against 2048 spp, frame times
+$(BUILD)/pt_sampler: bench/pt_sampler.c examples/pt_scenes.h fovpt.h
+	@mkdir -p $(BUILD)
+	$(CC) $(STD) $(CFLAGS) -Wall -Wextra -I. $< -lm -o $@
+
+bench-pt-sampler: $(BUILD)/pt_sampler
+	./$(BUILD)/pt_sampler --out bench/results/pt_sampler.csv
 
 # fovpt_config_acuity: samples per pixel at three displays, error by cause (bench/pt_acuity.c)
 $(BUILD)/pt_acuity: bench/pt_acuity.c examples/pt_scenes.h examples/fovmetrics.h fovpt.h

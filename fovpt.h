@@ -58,7 +58,8 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
       the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
-      counter-based integer hash, no state outside the stream).
+      counter-based integer hash, no state outside the stream); with cfg.sampler SOBOL the
+      pixel's samples are stratified (SAMPLERS).
    3. Radiance (fovpt_radiance): Kajiya's rendering equation (Kajiya 1986; Axblad 2020, Eq.
       2.1) estimated by an iterative path tracer: BSDF sampling (Lambert, the two-lobe Phong
       of Axblad 2020, Sec. 3.2.2, mirror, dielectric with Fresnel), next-event estimation
@@ -292,6 +293,7 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    (xy[i stride], xy[i stride + 1]) in the camera's image (pixels, continuous, centres at
    +0.5; off-image points work as in fovpt_camera_ray). Its sample k (k < spp) is exactly
       fovpt_rng_init(&rng, cfg->seed, first + i, k, frame);     // stream (first + i) mod 2^32
+                                       // (fovpt_rng_init_sobol with cfg->sampler SOBOL)
       if (jitter > 0) { x += (fovpt_rng_next(&rng) - 0.5f) * jitter;    // in this order
                         y += (fovpt_rng_next(&rng) - 0.5f) * jitter; }
       fovpt_camera_ray(cam, x, y, org, dir);
@@ -317,6 +319,39 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    sample's ray can): FOV_ERR_INVALID_ARG; spp above FOVPT_MAX_SPP or 3 n floats beyond
    SIZE_MAX: FOV_ERR_LIMIT);
    on an error nothing is written. stats: samples and camera_rays n spp, plus the paths' rays.
+
+SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
+   FOVPT_SAMPLER_RANDOM (the default) gives every (pixel, sample, frame) its own independent
+   numbers. FOVPT_SAMPLER_SOBOL stratifies the samples of a pixel: sample k takes the first
+   dimensions of a scrambled Sobol sequence (Sobol 1967) at index k, as Burley 2020 builds
+   it: each group of dimensions shuffles k by its own nested uniform (Owen 1995) scramble of
+   the Laine-Karras 2011 hash and then scrambles the point (two rounds of the hash, keyed by
+   seed, pixel, frame and group). The groups follow the path's order of use: the pixel
+   position (dimensions 0, 1: a 2-D Sobol pair), then triples, each a 1-D group (the light or
+   BSDF lobe pick) and a 2-D pair (the point on the light, the BSDF direction): the light and
+   BSDF samples of the first four bounces (26 dimensions; Russian roulette, from bounce
+   rr_start, shifts the triples after it, which stay uniform but lose their pairing).
+   Numbers past the 26th are the random stream's. So samples 0 .. 2^m - 1 of a pixel put
+   exactly one point into each of the 2^m elementary intervals of every pair, and one into
+   each 1/2^m of every 1-D group, while two groups (a pick and its pair included) pair their
+   points like independent ones (tested); every number stays uniform in [0, 1), so the
+   estimate stays unbiased and its mean is RANDOM's. Each frame (and seed) scrambles anew:
+   frames are independent, like RANDOM's. The methods number a pixel's samples from 0
+   (LAYERS' layer n from n 2^16, SELECTIVE's and JIN's subpixel q from (q + 1) 2^12: blocks
+   that stratify the same way); a lone sample (index 0 only) is as random as RANDOM's. A
+   camera ray without jitter (fovpt_shade_points with jitter 0, the SELECTIVE and JIN
+   presample through the pixel centre) draws the pixel pair and drops it, so the path's
+   dimensions keep their places (RANDOM's streams are unchanged by this).
+   Measured (`make bench-pt-sampler`, bench/results/pt_sampler.csv: 160 x 120, 4 seeds, MSE of
+   the clamped image against 2048 RANDOM spp), the same samples, SOBOL over RANDOM: UNIFORM
+   at 16 spp the terrain +6.4 dB, the mirrors +5.2 dB, the 441 cubes +3.8 dB; at 4 spp +2.6
+   to +3.8 dB in these three; the Cornell box -0.2 to +0.5 dB (its clamped error is the
+   fireflies of its mirror and Phong spheres: RANDOM's PSNR falls from 4 to 16 spp) and the
+   interior +0.1 to +1.2 dB. Cost: 12-20 % more instructions per frame (callgrind, UNIFORM
+   8 spp: the hashes of a path's 26 numbers); at equal time the terrain, mirrors and cubes
+   gain, the Cornell box and the interior lose a little.
+   The default stays RANDOM in this version so that the published figures stay
+   reproducible; set cfg.sampler = FOVPT_SAMPLER_SOBOL for the lower noise.
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -498,6 +533,16 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Meng et al. 2018 X. Meng, R. Du, M. Zwicker, A. Varshney, "Kernel Foveated Rendering",
                     Proceedings of the ACM on Computer Graphics and Interactive Techniques
                     1(1), article 5, 2018. (the kernel log-polar mapping of fovlp.h)
+   Sobol 1967       I. M. Sobol', "On the distribution of points in a cube and the approximate
+                    evaluation of integrals", USSR Computational Mathematics and Mathematical
+                    Physics 7(4), 1967. (SAMPLERS)
+   Owen 1995        A. B. Owen, "Randomly Permuted (t,m,s)-Nets and (t,s)-Sequences", Monte
+                    Carlo and Quasi-Monte Carlo Methods in Scientific Computing, Lecture Notes
+                    in Statistics 106, Springer, 1995. (nested uniform scrambling)
+   Laine & Karras 2011  S. Laine, T. Karras, "Stratified Sampling for Stochastic
+                    Transparency", Computer Graphics Forum 30(4) (EGSR), 2011. (the hash)
+   Burley 2020      B. Burley, "Practical Hash-based Owen Scrambling", Journal of Computer
+                    Graphics Techniques 9(4), 2020. (shuffled, scrambled Sobol; its constants)
    Duff et al. 2017 T. Duff, J. Burgess, P. Christensen, C. Hery, A. Kensler, M. Liani,
                     R. Villemin, "Building an Orthonormal Basis, Revisited", Journal of
                     Computer Graphics Techniques 6(1), 2017.
@@ -1152,6 +1197,13 @@ typedef enum fovpt_mode {
     _FOVPT_MODE_FORCE_U32 = 0x7FFFFFFF
 } fovpt_mode;
 
+typedef enum fovpt_sampler {    /* SAMPLERS */
+    FOVPT_SAMPLER_RANDOM = 0,   /* independent numbers per (pixel, sample, frame) */
+    FOVPT_SAMPLER_SOBOL = 1,    /* a pixel's samples stratified: scrambled Sobol (Burley 2020) */
+    _FOVPT_SAMPLER_NUM,
+    _FOVPT_SAMPLER_FORCE_U32 = 0x7FFFFFFF
+} fovpt_sampler;
+
 #define FOVPT_RR_OFF 0xFFFFFFFFu
 
 /* Layers of Axblad 2020. layer[0] is the background layer, the highest index the innermost
@@ -1258,6 +1310,7 @@ typedef struct fovpt_config {
     uint32_t no_nee;        /* 1: no next-event estimation (BSDF sampling only) */
     uint32_t seed;          /* random stream seed (any value) */
     uint32_t accumulate;    /* 1: trace_rows adds to the running mean (progressive) */
+    uint32_t sampler;       /* fovpt_sampler (SAMPLERS)                          0: random */
     float acuity_budget;    /* read by fovpt_config_acuity only (ACUITY-DRIVEN CONFIGURATION,
                                samples): 0: each layer's / zone's spp the fewest that keep its
                                eye-filtered noise at UNIFORM's at spp; > 0: the total samples
@@ -1346,9 +1399,14 @@ typedef struct fovpt_stats {
     uint64_t reused;          /* temporal reuse: pixels copied from the previous frame */
 } fovpt_stats;
 
-/* A random stream: counter-based, deterministic per (seed, pixel, sample, frame). */
+/* A random stream: counter-based, deterministic per (seed, pixel, sample, frame); with
+   fovpt_rng_init_sobol its first dimensions are a scrambled Sobol sequence over the samples
+   (SAMPLERS). Fill it with fovpt_rng_init or fovpt_rng_init_sobol only. */
 typedef struct fovpt_rng {
     uint32_t key, ctr;
+    uint32_t scramble, index, sobol; /* sobol 1: (scramble, index) drive the first dimensions;
+                                        index is kept bit-reversed */
+    uint32_t group, gkey, gidx;      /* the current group's key and shuffled index (a cache) */
 } fovpt_rng;
 
 /* ==== functions =========================================================================== */
@@ -1424,6 +1482,8 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
 
 FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint32_t sample,
                               uint32_t frame);
+FOVPT_API void fovpt_rng_init_sobol(fovpt_rng *r, uint32_t seed, uint32_t pixel,
+                                    uint32_t sample, uint32_t frame);      /* SAMPLERS */
 FOVPT_API float fovpt_rng_next(fovpt_rng *r);              /* uniform in [0, 1) */
 
 /* BSDF of a material at a surface with unit normal n (either side), unit wo (towards the
@@ -1442,17 +1502,17 @@ FOVPT_API fov_result fovpt_radiance(const fovpt_scene *s, const fovpt_config *re
                                     const float org[3], const float dir[3], fovpt_rng *rng,
                                     float rgb[3], fovpt_stats *stats);
 
-/* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar
-   samples; see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1])
-   (stride in floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each
-   (0: resolved->spp), sample k of point i on the stream (resolved->seed, first + i, k, frame),
-   its ray through the point (jitter 0) or through a point uniform in the jitter x jitter
-   pixels centred on it (the stream's first two numbers; jitter 1 at pixel centres is
-   UNIFORM's box filter, bit for bit), fovpt_radiance's estimator; rgb gets the plain mean (3
-   floats per point; clamp_white is not read), t (may be NULL) the first-hit distance along
-   sample 0's unit camera ray (FLT_MAX: a miss). Everything is checked before any work
-   (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG incl. a jitter square corner's ray overflowing,
-   _LIMIT, the camera's errors). stats is added to. */
+/* Path tracing at arbitrary image points, for a sampler outside fovpt (fovlp.h's log-polar samples;
+   see SHADING IMAGE POINTS): n points, point i at (xy[i stride], xy[i stride + 1]) (stride in
+   floats, 0: 2; fovlp_sample arrays: &samples[0].x, stride 3), spp samples each (0: resolved->spp),
+   sample k of point i on the stream (resolved->seed, first + i, k, frame) (fovpt_rng_init, or
+   fovpt_rng_init_sobol with resolved->sampler SOBOL), its ray through the point (jitter 0) or
+   through a point uniform in the jitter x jitter pixels centred on it (the stream's first two
+   numbers; jitter 1 at pixel centres is UNIFORM's box filter, bit for bit), fovpt_radiance's
+   estimator; rgb gets the plain mean (3 floats per point; clamp_white is not read), t (may be NULL)
+   the first-hit distance along sample 0's unit camera ray (FLT_MAX: a miss). Everything is checked
+   before any work (FOV_ERR_NULL, _NOT_FINITE, _INVALID_ARG incl. a jitter square corner's ray
+   overflowing, _LIMIT, the camera's errors). stats is added to. */
 FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *scene, const fovpt_config *resolved,
                                         const fovpt_camera *cam, uint32_t n, const float *xy,
                                         uint32_t stride, uint32_t first, uint32_t frame,
@@ -3341,6 +3401,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     if (c.rr_start == 0) c.rr_start = 3;
     if (c.no_nee > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.no_nee must be 0 or 1");
     if (c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.accumulate must be 0 or 1");
+    if (c.sampler >= (uint32_t)_FOVPT_SAMPLER_NUM)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.sampler: unknown (see fovpt_sampler)");
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
@@ -5109,13 +5171,120 @@ FOVPT_API void fovpt_rng_init(fovpt_rng *r, uint32_t seed, uint32_t pixel, uint3
     k = fovpt__mix(k ^ (0xc2b2ae35u * (frame + 1u)));
     r->key = k;
     r->ctr = 0;
+    r->scramble = r->index = r->sobol = 0;
+    r->group = 0xFFFFFFFFu;
+    r->gkey = r->gidx = 0;
+}
+#define FOVPT__SOBOL_DIMS 26u /* the pixel pair and 8 triples: 4 bounces' light and BSDF */
+#ifndef FOVPT__BITREV /* tests define it 0 to run the portable path */
+#if defined(__clang__) && defined(__has_builtin)
+#if __has_builtin(__builtin_bitreverse32)
+#define FOVPT__BITREV 2 /* one instruction where the target has it (rbit on ARM) */
+#endif
+#endif
+#if !defined(FOVPT__BITREV) && (defined(__GNUC__) || defined(__clang__))
+#define FOVPT__BITREV 1 /* byte swap, then the bits of each byte */
+#endif
+#ifndef FOVPT__BITREV
+#define FOVPT__BITREV 0
+#endif
+#endif
+/* The bits of x in reverse order (the same value on every path: test_fovpt.c compares it with
+   a loop, the FOVPT_NO_SIMD build with FOVPT__BITREV 0). */
+FOVPT__PRIV uint32_t fovpt__rev32(uint32_t x)
+{
+#if FOVPT__BITREV == 2
+    return __builtin_bitreverse32(x);
+#else
+#if FOVPT__BITREV == 1
+    x = __builtin_bswap32(x);
+#else
+    x = ((x >> 8) & 0x00ff00ffu) | ((x & 0x00ff00ffu) << 8);
+    x = (x >> 16) | (x << 16);
+#endif
+    x = ((x >> 4) & 0x0f0f0f0fu) | ((x & 0x0f0f0f0fu) << 4);
+    x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+    return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+#endif
+}
+/* The hash of Laine and Karras 2011 with the constants of Burley 2020: on a bit-reversed
+   fraction (bit 0 = the 1/2 digit) a nested uniform scramble (Owen 1995): output bit j
+   depends only on input bits 0..j, so every elementary interval maps onto one. */
+FOVPT__PRIV uint32_t fovpt__lk(uint32_t x, uint32_t seed)
+{
+    x += seed;
+    x ^= x * 0x6c50b47cu; x ^= x * 0xb82f1e52u; x ^= x * 0xc7afe638u; x ^= x * 0x8d22f6e6u;
+    return x;
+}
+/* Sobol's dimension 1 (Sobol 1967) of index i, bit-reversed (bit j = the 2^-(j+1) digit):
+   its generator is Pascal's triangle mod 2, so digit j is the xor of the index bits k that
+   contain j (k & j = j, Lucas' theorem), a superset transform in five steps. Dimension 0
+   (van der Corput), bit-reversed, is i itself. */
+FOVPT__PRIV uint32_t fovpt__sobol1r(uint32_t i)
+{
+    i ^= (i >> 1) & 0x55555555u;
+    i ^= (i >> 2) & 0x33333333u;
+    i ^= (i >> 4) & 0x0f0f0f0fu;
+    i ^= (i >> 8) & 0x00ff00ffu;
+    i ^= (i >> 16) & 0x0000ffffu;
+    return i;
+}
+FOVPT_API void fovpt_rng_init_sobol(fovpt_rng *r, uint32_t seed, uint32_t pixel,
+                                    uint32_t sample, uint32_t frame)
+{
+    uint32_t k;
+    if (!r) return;
+    fovpt_rng_init(r, seed, pixel, sample, frame);
+    k = fovpt__mix(seed ^ 0x3c6ef372u); /* the stream of (seed, pixel, frame), not the sample */
+    k = fovpt__mix(k ^ pixel);
+    r->scramble = fovpt__mix(k ^ (0xc2b2ae35u * (frame + 1u)));
+    r->index = fovpt__rev32(sample);
+    r->sobol = 1;
 }
 FOVPT_API float fovpt_rng_next(fovpt_rng *r)
 {
-    uint32_t x;
+    uint32_t x, c;
     if (!r) return 0.0f;
-    x = fovpt__mix(fovpt__mix(r->key + 0x9e3779b9u * (r->ctr++)) ^ r->key);
+    c = r->ctr++;
+    if (r->sobol == 1u && c < FOVPT__SOBOL_DIMS) {
+        /* SAMPLERS: dimensions 0, 1 one pair, then triples (a 1-D dimension, a pair): each
+           group (a pair, or a 1-D dimension alone) shuffles the sample index by its own
+           nested uniform scramble (Burley 2020),
+           so the groups are independent of each other while each is stratified over the
+           samples; the index, bit-reversed, scrambled and reversed back, keeps a prefix of
+           2^m indices' low m bits a permutation */
+        /* dimension c's group (0: the pixel pair; triple t: the 1-D 1 + 2t, the pair 2 + 2t)
+           and role (1: Sobol's dimension 0, the 1-D's or a pair's x; 2: dimension 1, y) */
+        static const unsigned char grp[FOVPT__SOBOL_DIMS] = { 0, 0, 1, 2, 2, 3, 4, 4, 5, 6, 6,
+            7, 8, 8, 9, 10, 10, 11, 12, 12, 13, 14, 14, 15, 16, 16 };
+        static const unsigned char role[FOVPT__SOBOL_DIMS] = { 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2,
+            1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2, 1, 1, 2 };
+        uint32_t g = grp[c], j = role[c];
+        if (g != r->group) {
+            r->group = g;
+            r->gkey = fovpt__mix(r->scramble + 0x68bc21ebu * (g + 1u));
+            r->gidx = fovpt__rev32(fovpt__lk(r->index, r->gkey));
+        }
+        x = j == 2u ? fovpt__sobol1r(r->gidx) : r->gidx; /* bit-reversed */
+        {   /* two rounds: one leaves the low digits' histogram measurably uneven (a chi-square
+               over 32 bins at p ~ 1e-6 in the test's streams); a composition of nested
+               uniform scrambles is one */
+            uint32_t sd = fovpt__mix(r->gkey ^ (0x02e5be93u * (j + 1u)));
+            x = fovpt__rev32(fovpt__lk(fovpt__lk(x, sd), fovpt__mix(sd)));
+        }
+        return (float)(x >> 8) * (1.0f / 16777216.0f);
+    }
+    x = fovpt__mix(fovpt__mix(r->key + 0x9e3779b9u * c) ^ r->key);
     return (float)(x >> 8) * (1.0f / 16777216.0f);
+}
+/* The stream of a sample under the config's sampler. */
+FOVPT__PRIV void fovpt__rng_start(fovpt_rng *r, const fovpt_config *c, uint32_t pixel,
+                                  uint32_t sample, uint32_t frame)
+{
+    if (c->sampler == (uint32_t)FOVPT_SAMPLER_SOBOL)
+        fovpt_rng_init_sobol(r, c->seed, pixel, sample, frame);
+    else
+        fovpt_rng_init(r, c->seed, pixel, sample, frame);
 }
 
 /* ---- BSDFs -------------------------------------------------------------------------------- */
@@ -5601,6 +5770,9 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
     if (c->mode >= (uint32_t)_FOVPT_MODE_NUM)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "shade_points: c.mode unknown (see fovpt_mode)");
+    if (c->sampler >= (uint32_t)_FOVPT_SAMPLER_NUM)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "shade_points: c.sampler unknown (see fovpt_sampler)");
     if (c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
@@ -5650,11 +5822,13 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
             fovpt__attr at;
             float c3[3];
             at.pt = -1.0f;
-            fovpt_rng_init(&rng, c->seed, first + i, k, frame);
+            fovpt__rng_start(&rng, c, first + i, k, frame);
             if (jitter > 0.0f) { /* a box filter of jitter pixels (UNIFORM's at 1) */
                 float jx = fovpt_rng_next(&rng), jy = fovpt_rng_next(&rng);
                 (void)fovpt__primary(r, u, f, t4, W, H, x + (jx - 0.5f) * jitter,
                                      y + (jy - 0.5f) * jitter, d);
+            } else if (rng.sobol) { /* SAMPLERS: the pixel pair drawn and dropped */
+                (void)fovpt_rng_next(&rng); (void)fovpt_rng_next(&rng);
             }
             (void)fovpt__radiance(s, c, o, d, &rng, c3, &st, (k == 0u && t) ? &at : NULL);
             if (k == 0u && t) t[i] = at.pt >= 0.0f ? at.pt : FLT_MAX;
@@ -6409,7 +6583,7 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
     for (s = 0; s < spp; ++s) {
         fovpt_rng rng;
         float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
-        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, sample0 + s, frame);
+        fovpt__rng_start(&rng, &ctx->cfg, y * W + x, sample0 + s, frame);
         jx = fovpt_rng_next(&rng); jy = fovpt_rng_next(&rng);
         if (cell > 1u) { /* the box of the lattice cell: a prefilter against aliasing */
             jx = 0.5f + (jx - 0.5f) * (float)cell;
@@ -6587,7 +6761,9 @@ FOVPT_API fov_result fovpt_refine_rows(fovpt_ctx *ctx, uint32_t frame, uint32_t 
                     for (s2 = 0; s2 < nsd; ++s2) { /* stratified jittered samples in the subpixel */
                         fovpt_rng rng;
                         float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, u, v;
-                        fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 1u + q * 4096u + s2, frame);
+                        /* SOBOL: blocks aligned to 2^12 (SAMPLERS); RANDOM as before */
+                        fovpt__rng_start(&rng, &ctx->cfg, y * W + x, ctx->cfg.sampler ?
+                                         ((q + 1u) << 12) + s2 : 1u + q * 4096u + s2, frame);
                         u = ((float)(s2 % mx) + fovpt_rng_next(&rng)) / (float)mx;
                         v = ((float)(s2 / mx) + fovpt_rng_next(&rng)) / (float)my;
                         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H,
@@ -7079,7 +7255,8 @@ FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint3
                 fovpt__attr at;
                 fovpt_rng rng;
                 float dir[3];
-                fovpt_rng_init(&rng, ctx->cfg.seed, y * W + x, 0, frame);
+                fovpt__rng_start(&rng, &ctx->cfg, y * W + x, 0, frame);
+                if (rng.sobol) { (void)fovpt_rng_next(&rng); (void)fovpt_rng_next(&rng); }
                 fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + 0.5f,
                                (float)y + 0.5f, dir);
                 st->camera_rays++;

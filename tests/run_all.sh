@@ -230,8 +230,9 @@ three_builds unit_fovpt tests/test_fovpt.c
 three_builds acuity_fovpt tests/test_fovpt_acuity.c link
 three_builds points_fovpt tests/test_fovpt_points.c link
 three_builds denoise_fovpt tests/test_fovpt_denoise.c
+three_builds sampler_fovpt tests/test_fovpt_sampler.c link
 # the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
-if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -I. -Itests/common -lm; then
+if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -DFOVPT__BITREV=0 -I. -Itests/common -lm; then
     run_bg unit_fovpt_nosimd build/tests/test_fovpt_nosimd
 fi
 # fovlp.h

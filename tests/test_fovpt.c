@@ -2526,6 +2526,23 @@ static void test_tiny_dir(void)
     free(mem);
 }
 
+/* fovpt__rev32 (the SOBOL sampler's bit reversal) against a loop over the bits; the
+   FOVPT_NO_SIMD build defines FOVPT__BITREV 0, so the portable path is checked there and the
+   compiler's builtin path in the others (tests/xtarget: wasm32, AArch64) */
+static void test_rev32(void)
+{
+    uint32_t i, x = 0x12345678u, bad = 0;
+    for (i = 0; i < 200000u; ++i) {
+        uint32_t r = 0, b;
+        x = x * 1664525u + 1013904223u;
+        for (b = 0; b < 32u; ++b) r |= ((x >> b) & 1u) << (31u - b);
+        bad += fovpt__rev32(x) != r;
+    }
+    bad += fovpt__rev32(0u) != 0u || fovpt__rev32(1u) != 0x80000000u || fovpt__rev32(0xffffffffu) != 0xffffffffu;
+    check(bad == 0, N("fovpt__rev32 = a bit loop on 200k values (FOVPT__BITREV %d)", (int)FOVPT__BITREV), "%u differ",
+          bad);
+}
+
 static void test_watertight(void)
 {
     uint32_t n = 0, leak_flat = 0, leak_fold = 0, nflat = 0, nfold = 0, i, k;
@@ -2730,6 +2747,7 @@ int main(void)
     test_bvh_adversarial();
     test_watertight();
     test_tiny_dir();
+    test_rev32();
     return fovcheck_summary();
 #endif
     test_version();
@@ -2761,5 +2779,6 @@ int main(void)
     test_bvh_adversarial();
     test_watertight();
     test_tiny_dir();
+    test_rev32();
     return fovcheck_summary();
 }

@@ -32,7 +32,7 @@
 #     cortex-m4-libm    the same linked with newlib's hard-float libm (no FOV_NO_LIBM)
 #   The same six builds of render_test_pt.c, plus wasm32-simd128 (wasm32-libm with -msimd128:
 #   fovpt's SIMD128 traversal), (public fovpt API only: a Cornell-like box with
-#   a 128-triangle mesh behind a BVH, UNIFORM path tracing at 2 spp and SELECTIVE with the
+#   a 128-triangle mesh behind a BVH, UNIFORM path tracing at 2 spp (the SOBOL sampler) and SELECTIVE with the
 #   Whitted tracer, 64x36; hit/depth from fovpt_intersect of the pixel-centre rays) run as
 #   targets pt-<name>, compared with pt-native at PSNR >= 35 dB (PSNR_MIN_PT) and the same
 #   hit-mask bound.
