@@ -4,6 +4,8 @@
 # usage text naming its options to stdout and exit 0, an unknown option prints the usage to
 # stderr and exits 2. And every example builds copied out of the repository alone: the example
 # with the fov headers and examples/*.h in one empty directory, nothing else on the include path.
+# The examples are compiled once, copied out alone (the same files and flags as in the
+# repository): their --help / -h / unknown-option checks run on those binaries.
 set -u
 cd "$(dirname "$0")/.."
 B=build/programs
@@ -24,7 +26,6 @@ build() {
       echo $? >"$name.rc" ) &
 }
 R=$(pwd)
-for f in examples/*.c; do build "$(basename "$f" .c)" "$B" "$R/$f" -I"$R"; done
 for f in bench/*.c; do build "$(basename "$f" .c)" "$B" "$R/$f" -I"$R" -I"$R/bench"; done
 build heads_hashes "$B" "$R/tests/heads_hashes.c" -I"$R"
 build gen_images "$B" "$R/tests/flip_reference/gen_images.c" -I"$R/tests/common"
@@ -37,30 +38,30 @@ for f in examples/*.c; do
 done
 wait
 
-# NAME: the program built above
+# NAME [DIR]: the program built above (in DIR, default $B)
 program() {
-    local name=$1 out err rc
-    if [ "$(cat "$B/$name.rc" 2>/dev/null)" != 0 ]; then
-        bad "$name builds: $(head -3 "$B/$name.build.log" | tr '\n' ' ')"; return
+    local name=$1 dir=${2:-$B} out err rc
+    if [ "$(cat "$dir/$name.rc" 2>/dev/null)" != 0 ]; then
+        bad "$name builds: $(head -3 "$dir/$name.build.log" | tr '\n' ' ')"; return
     fi
     for h in --help -h; do
-        out=$("$B/$name" $h 2>"$B/$name.err"); rc=$?
+        out=$("$dir/$name" $h 2>"$dir/$name.err"); rc=$?
         if [ "$rc" -eq 0 ] && echo "$out" | grep -q '^usage: ' && [ "$(echo "$out" | wc -l)" -ge 2 ] \
-           && [ ! -s "$B/$name.err" ]; then
+           && [ ! -s "$dir/$name.err" ]; then
             ok "$name $h: exit 0, $(echo "$out" | wc -l) lines of usage on stdout"
         else
             bad "$name $h: exit $rc, stdout '$(echo "$out" | head -2 | tr '\n' ' ')'"
         fi
     done
-    out=$("$B/$name" --no-such-option 2>"$B/$name.err"); rc=$?
-    if [ "$rc" -eq 2 ] && grep -q '^usage: ' "$B/$name.err" && [ -z "$out" ]; then
+    out=$("$dir/$name" --no-such-option 2>"$dir/$name.err"); rc=$?
+    if [ "$rc" -eq 2 ] && grep -q '^usage: ' "$dir/$name.err" && [ -z "$out" ]; then
         ok "$name --no-such-option: exit 2, usage on stderr"
     else
-        bad "$name --no-such-option: exit $rc, stderr '$(head -2 "$B/$name.err" | tr '\n' ' ')'"
+        bad "$name --no-such-option: exit $rc, stderr '$(head -2 "$dir/$name.err" | tr '\n' ' ')'"
     fi
 }
 
-for f in examples/*.c; do program "$(basename "$f" .c)"; done
+for f in examples/*.c; do program "$(basename "$f" .c)" "$B/alone_$(basename "$f" .c)"; done
 for f in bench/*.c; do program "$(basename "$f" .c)"; done
 program heads_hashes
 program gen_images

@@ -191,8 +191,12 @@ suite() {
 impl_builds
 # three builds of each library test program: libm, FOV_NO_LIBM, sanitizers. With a third
 # argument "link" the program links the implementations compiled once (impl_builds) instead
-# of compiling them itself: for programs that use only the public API with the default
-# configuration (the same code, compiled with the same flags, in another translation unit).
+# of compiling them itself: for programs that use the default configuration (the same code,
+# compiled with the same flags, in another translation unit) through the public API and the
+# test hook's wrappers of private functions (tests/common/fov_priv_{sdf,lp}.h, exported by the
+# archives). Not linked: programs that configure the implementation (test_fovsdf_accel.c:
+# FOVSDF_CONE_SLACK 0; test_fovsdf_scene.c: FOVSDF_DOUBLE...), use private types
+# (test_fovsdf_heads.c, _prune.c: fovsdf__marcher) or test the headers' own text (versions).
 three_builds() {
     local name=$1 src=$2 lo= ln= ls=
     if [ "${3:-}" = link ]; then
@@ -210,18 +214,18 @@ three_builds() {
         run_bg "${name}_sanitizers" "build/tests/test_${name}_san"
     fi
 }
-three_builds unit_fovsdf tests/test_fovsdf.c
+three_builds unit_fovsdf tests/test_fovsdf.c link
 three_builds scene_fovsdf tests/test_fovsdf_scene.c
 three_builds accel_fovsdf tests/test_fovsdf_accel.c
 three_builds contract_fovsdf tests/test_fovsdf_contract.c link
 three_builds heads_fovsdf tests/test_fovsdf_heads.c
-three_builds props_fovsdf tests/test_fovsdf_props.c
-three_builds batch_fovsdf tests/test_fovsdf_batch.c
+three_builds props_fovsdf tests/test_fovsdf_props.c link
+three_builds batch_fovsdf tests/test_fovsdf_batch.c link
 three_builds wave_fovsdf tests/test_fovsdf_wave.c link
 three_builds prune_fovsdf tests/test_fovsdf_prune.c
 three_builds acuity_fovsdf tests/test_fovsdf_acuity.c link
 run_bg wave_variants bash tests/wave_variants.sh
-three_builds naive_sdf tests/test_sdf_naive.c
+three_builds naive_sdf tests/test_sdf_naive.c link
 # FIPR / CONE_FOV with a lowered FOVSDF_FOV_CELLS, under ASan with NDEBUG (no assertions)
 if build_test test_fovsdf_cells tests/test_fovsdf_cells.c -std=c99 $SAN -DNDEBUG -DFOVSDF_FOV_CELLS=100 -I. -Itests/common -lm; then
     run_bg fov_cells_sanitizers build/tests/test_fovsdf_cells
@@ -236,7 +240,7 @@ if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO
     run_bg unit_fovpt_nosimd build/tests/test_fovpt_nosimd
 fi
 # fovlp.h
-three_builds unit_fovlp tests/test_fovlp.c
+three_builds unit_fovlp tests/test_fovlp.c link
 three_builds taa_fovlp tests/test_fovlp_taa.c link
 three_builds numerics_fovlp tests/test_fovlp_numerics.c link
 three_builds srgb8_fovlp tests/test_fovlp_srgb8.c link
@@ -251,7 +255,7 @@ three_builds stats tests/test_stats.c link
 # line length budgets of the headers, and every FOV*__ macro tested by #if defined
 run_bg style bash tests/style.sh
 # fov_camera: one type, the same defaults and handedness in the three headers, rays agree
-three_builds camera tests/test_camera.c
+three_builds camera tests/test_camera.c link
 # fov_eye: the shared eye model against Guenter et al. 2012, densities, plans, bad input
 three_builds eye tests/test_eye.c link
 # fov_gaze_filter: One Euro filter with saccade reset, the latency margin, fixed foveation,

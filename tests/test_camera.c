@@ -4,12 +4,21 @@
    the pinhole geometry, not from the library), fovsdf's and fovpt's rays for the same camera
    and image point, fovlp_camera_from against the fovsdf context it must equal, eye_offset in
    fovpt, and the fields a header does not support. Prints "N passed, N failed". */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementations compiled once per build
+   (tests/common/fov_impl_*.c) instead of compiling them in this file; the shared camera
+   defaults (fov__camera_init) are called through the test hook's wrapper
+   (tests/common/fov_priv_sdf.h), which is compiled in this file when it holds the
+   implementation */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOV_IMPL
+#endif
 #include "fovsdf.h"
 #include "fovlp.h"
 #include "fovpt.h"
+#include "fov_priv_sdf.h"
 #include "fovcheck.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -704,7 +713,7 @@ static void lp_taa_run(const float frustum[4], float *out, fovlp_taa_stats *st)
         age[i] = 5;
     }
     for (f = 0; f < 2; ++f) {
-        fov__camera_init(&c, W, H);
+        fovtest_camera_init(&c, W, H);
         c.pos[2] = 5.0f - 0.5f * (float)f; /* a dolly towards the plane z = 0 */
         fovlp_camera_from(&c, &lc);
         fovlp_begin_frame(&ctx, g, &lc);

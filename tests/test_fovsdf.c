@@ -30,10 +30,18 @@
  * "The thesis": A. Polychronakis, "Implicit and Foveated Techniques for Real-Time Computer
  * Graphics Rendering", doctoral dissertation, Technical University of Crete, 2025.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementation compiled once per build
+   (tests/common/fov_impl_sdf.c) instead of compiling it in this file; the private functions
+   tested here are called through the test hook's wrappers (tests/common/fov_priv_sdf.h,
+   fovtest_*), which are compiled in this file when it holds the implementation */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
+#include "fov_priv_sdf.h"
 #include "fovcheck.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -2662,31 +2670,31 @@ static void test_prim_kernels(void)
     /* every 29th float in [0, 8192): sin (the terrain's and the mandelbulb's) and cos */
     for (u = 0; u < 0x46000000u; u += 29u) {
         memcpy(&x, &u, 4);
-        ksc_acc(&e1, (double)fovsdf__ksin(x), sin((double)x), x);
-        ksc_acc(&e1, (double)fovsdf__ksin(-x), sin(-(double)x), -x);
-        ksc_acc(&e2, (double)fovsdf__kcos(x), cos((double)x), x);
-        ksc_acc(&e2, (double)fovsdf__kcos(-x), cos(-(double)x), -x);
+        ksc_acc(&e1, (double)fovtest_sdf_ksin(x), sin((double)x), x);
+        ksc_acc(&e1, (double)fovtest_sdf_ksin(-x), sin(-(double)x), -x);
+        ksc_acc(&e2, (double)fovtest_sdf_kcos(x), cos((double)x), x);
+        ksc_acc(&e2, (double)fovtest_sdf_kcos(-x), cos(-(double)x), -x);
     }
     ksc_check(&e1, "kernel_sin_below_8192");
     ksc_check(&e2, "kernel_cos_below_8192");
     /* [8192, 1e6): the wide reduction; every float there with a stride */
     for (u = 0x46000000u; u < 0x49742400u; u += 17u) {
         memcpy(&x, &u, 4);
-        fovsdf__ksincos_w(x, &s, &c);
+        fovtest_sdf_ksincos_w(x, &s, &c);
         ksc_acc(&e3, (double)s, sin((double)x), x);
         ksc_acc(&e3, (double)c, cos((double)x), x);
-        ksc_acc(&e3, (double)fovsdf__ksin1(-x), sin(-(double)x), -x);
+        ksc_acc(&e3, (double)fovtest_sdf_ksin1(-x), sin(-(double)x), -x);
     }
     ksc_check(&e3, "kernel_sincos_wide_8192_to_1e6");
     /* 1e6 to FLT_MAX: Payne-Hanek (fovsdf__ksin1), the 1e30 cutoff included */
     for (u = 0x49742400u; u < 0x7f800000u; u += 2039u) {
         memcpy(&x, &u, 4);
-        ksc_acc(&e4, (double)fovsdf__ksin1(x), sin((double)x), x);
-        ksc_acc(&e4, (double)fovsdf__ksin1(-x), sin(-(double)x), -x);
+        ksc_acc(&e4, (double)fovtest_sdf_ksin1(x), sin((double)x), x);
+        ksc_acc(&e4, (double)fovtest_sdf_ksin1(-x), sin(-(double)x), -x);
     }
     for (n = 0; n < 100000u; ++n) { /* near 1e30 */
         x = 1e30f * (1.0f + (float)n * 1e-7f);
-        ksc_acc(&e4, (double)fovsdf__ksin1(x), sin((double)x), x);
+        ksc_acc(&e4, (double)fovtest_sdf_ksin1(x), sin((double)x), x);
     }
     ksc_check(&e4, "kernel_sin_beyond_1e6");
     /* the terrain's arguments: 12 octaves of rotation and 2.03 scaling from random points */
@@ -2698,8 +2706,8 @@ static void test_prim_kernels(void)
         for (o = 0; o < 12; ++o) {
             float nx;
             if (!(fabsf(fx) < 1e30f && fabsf(fz) < 1e30f)) break;
-            ksc_acc(&e5, (double)fovsdf__ksin1(fx), sin((double)fx), fx);
-            ksc_acc(&e5, (double)fovsdf__ksin1(fz), sin((double)fz), fz);
+            ksc_acc(&e5, (double)fovtest_sdf_ksin1(fx), sin((double)fx), fx);
+            ksc_acc(&e5, (double)fovtest_sdf_ksin1(fz), sin((double)fz), fz);
             nx = (0.8f * fx - 0.6f * fz) * 2.03f;
             fz = (0.6f * fx + 0.8f * fz) * 2.03f;
             fx = nx;
@@ -2708,16 +2716,16 @@ static void test_prim_kernels(void)
     ksc_check(&e5, "kernel_sin_terrain_octaves");
     {   /* inf and NaN: NaN, no trap */
         float inf = FLT_MAX * (xs[0] + 2.0f), nan = inf - inf;
-        s = fovsdf__ksin(inf);
-        c = fovsdf__kcos(nan);
-        check(s != s && c != c && fovsdf__ksin(-inf) != fovsdf__ksin(-inf) &&
-                  fovsdf__ksin1(nan) != fovsdf__ksin1(nan) && fovsdf__ksin1(inf) != fovsdf__ksin1(inf),
+        s = fovtest_sdf_ksin(inf);
+        c = fovtest_sdf_kcos(nan);
+        check(s != s && c != c && fovtest_sdf_ksin(-inf) != fovtest_sdf_ksin(-inf) &&
+                  fovtest_sdf_ksin1(nan) != fovtest_sdf_ksin1(nan) && fovtest_sdf_ksin1(inf) != fovtest_sdf_ksin1(inf),
               "kernel_sin_inf_nan_is_nan", "sin(inf) %g cos(inf) %g", (double)s, (double)c);
-        check(fovsdf__katan2(nan, 1.0f) != fovsdf__katan2(nan, 1.0f) &&
-                  fovsdf__klog(nan) != fovsdf__klog(nan) && fovsdf__klog(-1.0f) != fovsdf__klog(-1.0f) &&
-                  fovsdf__klog(inf) == inf && fovsdf__klog(0.0f) == -inf && fovsdf__klog(-0.0f) == -inf,
-              "kernel_atan2_log_special", "log(inf) %g log(0) %g", (double)fovsdf__klog(inf),
-              (double)fovsdf__klog(0.0f));
+        check(fovtest_sdf_katan2(nan, 1.0f) != fovtest_sdf_katan2(nan, 1.0f) &&
+                  fovtest_sdf_klog(nan) != fovtest_sdf_klog(nan) && fovtest_sdf_klog(-1.0f) != fovtest_sdf_klog(-1.0f) &&
+                  fovtest_sdf_klog(inf) == inf && fovtest_sdf_klog(0.0f) == -inf && fovtest_sdf_klog(-0.0f) == -inf,
+              "kernel_atan2_log_special", "log(inf) %g log(0) %g", (double)fovtest_sdf_klog(inf),
+              (double)fovtest_sdf_klog(0.0f));
         {   /* atan2's zeros and infinities as C99's atan2 */
             static const float v[] = { 0.0f, -0.0f, 1.0f, -1.0f, 3e38f, -3e38f, 1e-40f, -1e-40f };
             uint32_t i, j, bad = 0;
@@ -2727,7 +2735,7 @@ static void test_prim_kernels(void)
             for (i = 0; i < 10; ++i)
                 for (j = 0; j < 10; ++j) {
                     double want = atan2((double)vv[i], (double)vv[j]);
-                    float got = fovsdf__katan2(vv[i], vv[j]);
+                    float got = fovtest_sdf_katan2(vv[i], vv[j]);
                     uint32_t gb, wb;
                     float wf = (float)want;
                     memcpy(&gb, &got, 4); memcpy(&wb, &wf, 4);
@@ -2746,7 +2754,7 @@ static void test_prim_kernels(void)
         if (n % 4 == 1) yy *= 1e-6f;
         if (n % 4 == 2) xx *= 1e-6f;
         want = atan2((double)yy, (double)xx);
-        if (want != 0.0) w = dmax(w, fabs((double)fovsdf__katan2(yy, xx) - want) / kulp(want));
+        if (want != 0.0) w = dmax(w, fabs((double)fovtest_sdf_katan2(yy, xx) - want) / kulp(want));
     }
     check(w <= 3.0, "kernel_atan2_3ulp", "%.2f ulp", w);
     /* log: every 127th positive float, subnormals included */
@@ -2755,7 +2763,7 @@ static void test_prim_kernels(void)
         double want;
         memcpy(&x, &u, 4);
         want = log((double)x);
-        if (want != 0.0) w = dmax(w, fabs((double)fovsdf__klog(x) - want) / kulp(want));
+        if (want != 0.0) w = dmax(w, fabs((double)fovtest_sdf_klog(x) - want) / kulp(want));
     }
     check(w <= 1.0, "kernel_log_1ulp", "%.2f ulp", w);
     /* pow: x in [1e-20, 1e4], y in [-16, 16] (the mandelbulb's power - 1 is in [1, 15]) */
@@ -2767,7 +2775,7 @@ static void test_prim_kernels(void)
         if (n % 3 == 0) py = 1.0f + (float)(n % 15u) + (float)(n % 7u) * 0.125f;
         want = pow((double)px, (double)py);
         if (want < 1.17549435e-38 || want > 3.4e38) continue;
-        w = dmax(w, fabs((double)fovsdf__kpow(px, py) - want) / kulp(want));
+        w = dmax(w, fabs((double)fovtest_sdf_kpow(px, py) - want) / kulp(want));
     }
     check(w <= 3.0, "kernel_pow_3ulp", "%.2f ulp", w);
 }
@@ -2784,32 +2792,32 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)pow(10.0, -30.0 + 60.0 * i / 100000.0);
         rf = sqrt((double)x);
-        w = dmax(w, fabs((double)fov__sqrtf(x) - rf) / rf);
+        w = dmax(w, fabs((double)fovtest_sqrtf(x) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_sqrt_rel_1e-6", "max relative error %.3g on [1e-30, 1e30]", w);
-#ifdef FOV__SQRT_HW
-    {   /* the target's square root instruction: libm's correctly rounded value, bit for bit,
-           on every 997th float bit pattern (subnormals, infinities and NaNs included) */
+    if (fovtest_sqrt_hw() != 0) {
+        /* FOV__SQRT_HW, the target's square root instruction: libm's correctly rounded value,
+           bit for bit, on every 997th float bit pattern (subnormals, infinities and NaNs
+           included) */
         uint32_t u, bad = 0, first = 0;
         for (u = 0; u < 0xFFFFFFFFu - 997u; u += 997u) {
             float xs, a, b;
             uint32_t ua, ub;
             memcpy(&xs, &u, 4);
-            a = fov__sqrtf(xs);
+            a = fovtest_sqrtf(xs);
             b = sqrtf(xs);
             memcpy(&ua, &a, 4);
             memcpy(&ub, &b, 4);
             if (ua != ub && !(isnan(a) && isnan(b))) { if (!bad) first = u; bad++; }
         }
         check(bad == 0, "nolibm_sqrt_hw_exact", "%u bit patterns differ from sqrtf (first 0x%08x); FOV__SQRT_HW %d",
-              (unsigned)bad, (unsigned)first, (int)FOV__SQRT_HW);
+              (unsigned)bad, (unsigned)first, fovtest_sqrt_hw());
     }
-#endif
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         x = (float)(-20.0 + 40.0 * i / 100000.0);
-        w = dmax(w, fabs((double)fov__sinf(x) - sin((double)x)));
-        w = dmax(w, fabs((double)fov__cosf(x) - cos((double)x)));
+        w = dmax(w, fabs((double)fovtest_sinf(x) - sin((double)x)));
+        w = dmax(w, fabs((double)fovtest_cosf(x) - cos((double)x)));
     }
     check(w <= 1e-6, "nolibm_sin_cos_abs_1e-6", "max absolute error %.3g on [-20, 20]", w);
     w = 0.0;
@@ -2817,14 +2825,14 @@ static void test_nolibm_math(void)
         double t;
         x = (float)(1.55 * i / 100000.0);
         t = tan((double)x);
-        w = dmax(w, fabs((double)(fov__sinf(x) / fov__cosf(x)) - t) / t);
+        w = dmax(w, fabs((double)(fovtest_sinf(x) / fovtest_cosf(x)) - t) / t);
     }
     check(w <= 1e-6, "nolibm_tan_rel_1e-6", "max relative error %.3g on (0, 1.55]", w);
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         double a = 2.0 * 3.14159265358979323846 * i / 100000.0;
         float yy = (float)(sin(a) * (1 + i % 7)), xx = (float)(cos(a) * (1 + i % 7));
-        w = dmax(w, fabs((double)fov__atan2f(yy, xx) - atan2((double)yy, (double)xx)));
+        w = dmax(w, fabs((double)fovtest_atan2f(yy, xx) - atan2((double)yy, (double)xx)));
     }
     check(w <= 1e-6, "nolibm_atan2_abs_1e-6", "max absolute error %.3g rad over the circle", w);
     w = 0.0;
@@ -2832,7 +2840,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)(-80.0 + 160.0 * i / 100000.0);
         rf = exp((double)x);
-        w = dmax(w, fabs((double)fov__expf(x) - rf) / rf);
+        w = dmax(w, fabs((double)fovtest_expf(x) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_exp_rel_1e-6", "max relative error %.3g on [-80, 80]", w);
     w = 0.0;
@@ -2840,7 +2848,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)pow(10.0, -30.0 + 60.0 * i / 100000.0);
         rf = log((double)x);
-        w = dmax(w, fabs((double)fov__logf(x) - rf) / dmax(1.0, fabs(rf)));
+        w = dmax(w, fabs((double)fovtest_logf(x) - rf) / dmax(1.0, fabs(rf)));
     }
     check(w <= 1e-6, "nolibm_log_1e-6", "max error / max(1, |log x|) %.3g on [1e-30, 1e30]", w);
     w = 0.0;
@@ -2848,7 +2856,7 @@ static void test_nolibm_math(void)
         double rf;
         x = (float)(0.003 + 0.997 * i / 100000.0);
         rf = pow((double)x, (double)(1.0f / 2.4f));
-        w = dmax(w, fabs((double)fov__powf(x, 1.0f / 2.4f) - rf) / rf);
+        w = dmax(w, fabs((double)fovtest_powf(x, 1.0f / 2.4f) - rf) / rf);
     }
     check(w <= 1e-6, "nolibm_pow_srgb_rel_1e-6", "max relative error %.3g for x^(1/2.4), x in [0.003, 1]", w);
     w = 0.0;
@@ -2857,24 +2865,24 @@ static void test_nolibm_math(void)
         float yy = (float)(1 + i % 8);
         x = (float)(0.3 + 1.7 * i / 100000.0);
         rf = pow((double)x, (double)yy);
-        w = dmax(w, fabs((double)fov__powf(x, yy) - rf) / rf);
+        w = dmax(w, fabs((double)fovtest_powf(x, yy) - rf) / rf);
     }
     /* exp(y log x) in float: the rounding of y log x alone costs |y log x| * 6e-8 */
     check(w <= 2e-6, "nolibm_pow_power_rel_2e-6", "max relative error %.3g for x^y, x in [0.3, 2], y in 1..8", w);
     w = 0.0;
     for (i = 0; i <= 100000; ++i) {
         x = (float)(-1e7 + 2e7 * i / 100000.0) + 0.37f;
-        w = dmax(w, fabs((double)fov__floorf(x) - floor((double)x)));
-        w = dmax(w, fabs((double)fov__floorf(-0.5f * x) - floor(-0.5 * (double)x)));
+        w = dmax(w, fabs((double)fovtest_floorf(x) - floor((double)x)));
+        w = dmax(w, fabs((double)fovtest_floorf(-0.5f * x) - floor(-0.5 * (double)x)));
     }
     check(w == 0.0, "nolibm_floor_exact", "max error %.3g", w);
-    check(fov__sqrtf(0.0f) == 0.0f && fov__sqrtf(-1.0f) != fov__sqrtf(-1.0f) && fov__expf(-200.0f) == 0.0f &&
-              !fin(fov__expf(100.0f)) && fov__logf(0.0f) < -3e38f && fov__logf(-1.0f) != fov__logf(-1.0f) &&
-              fov__floorf(-0.5f) == -1.0f && fov__atan2f(0.0f, 0.0f) == 0.0f && fov__powf(2.0f, 0.0f) == 1.0f,
+    check(fovtest_sqrtf(0.0f) == 0.0f && fovtest_sqrtf(-1.0f) != fovtest_sqrtf(-1.0f) && fovtest_expf(-200.0f) == 0.0f &&
+              !fin(fovtest_expf(100.0f)) && fovtest_logf(0.0f) < -3e38f && fovtest_logf(-1.0f) != fovtest_logf(-1.0f) &&
+              fovtest_floorf(-0.5f) == -1.0f && fovtest_atan2f(0.0f, 0.0f) == 0.0f && fovtest_powf(2.0f, 0.0f) == 1.0f,
           "nolibm_special_values", "sqrt(0) %g sqrt(-1) %g exp(-200) %g exp(100) %g log(0) %g log(-1) %g floor(-0.5) %g",
-          (double)fov__sqrtf(0.0f), (double)fov__sqrtf(-1.0f), (double)fov__expf(-200.0f),
-          (double)fov__expf(100.0f), (double)fov__logf(0.0f), (double)fov__logf(-1.0f),
-          (double)fov__floorf(-0.5f));
+          (double)fovtest_sqrtf(0.0f), (double)fovtest_sqrtf(-1.0f), (double)fovtest_expf(-200.0f),
+          (double)fovtest_expf(100.0f), (double)fovtest_logf(0.0f), (double)fovtest_logf(-1.0f),
+          (double)fovtest_floorf(-0.5f));
 }
 #endif
 
@@ -3152,8 +3160,8 @@ static void test_shadow_fov_ecc(void)
                 float ro[3], rd[3], px = (float)x + 0.25f, py = (float)y + 0.75f;
                 float e = fovsdf_ecc_deg(&ctx.ecc, px, py);
                 int far;
-                fovsdf__ray(&ctx, px, py, ro, rd);
-                far = fovsdf__shadow_far(&ctx, rd);
+                fovtest_sdf_ray(&ctx, px, py, ro, rd);
+                far = fovtest_sdf_shadow_far(&ctx, rd);
                 if (fabsf(e - degs[k]) < 0.05f) continue; /* rounding at the boundary */
                 if (far != (e > degs[k])) ++bad;
                 if (far) ++nfar; else ++nnear;
@@ -3165,7 +3173,7 @@ static void test_shadow_fov_ecc(void)
     fovsdf_init(&ctx, &cfg, &sc, &cam, gaze_at(101.0f, 30.0f), NULL, 0);
     {
         float rd[3] = { 0.0f, 0.0f, -1.0f };
-        check(fovsdf__shadow_far(&ctx, rd) == 0, "shadow_fov_off_never_far", "-");
+        check(fovtest_sdf_shadow_far(&ctx, rd) == 0, "shadow_fov_off_never_far", "-");
     }
 }
 

@@ -20,8 +20,15 @@
    Regression tests: the secant jump through a thin shell (item 1), hits beyond t_max (F3),
    non-finite and overestimating callbacks (F5), wide fields of view and extreme aspect
    ratios (item 5), the cone guarantee far from the origin (item 4). */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementation compiled once per build
+   (tests/common/fov_impl_sdf.c) instead of compiling it in this file; the private functions
+   tested here are called through the test hook's wrappers (tests/common/fov_priv_sdf.h),
+   which are compiled in this file when it holds the implementation */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
+#include "fov_priv_sdf.h"
 #include "fovcheck.h"
 #include "fovstress.h"
 
@@ -104,7 +111,7 @@ static void props_scene(const fs_scene *sc, uint32_t eps_mode, uint32_t spp, uin
                 sref *q = &ref[((size_t)y * W + x) * spp + s];
                 float ox, oy;
                 double cz;
-                fovsdf__sample_offset(spp, s, &ox, &oy);
+                fovtest_sdf_sample_offset(spp, s, &ox, &oy);
                 (void)fovsdf_camera_ray(&ctx, (float)x + 0.5f + ox, (float)y + 0.5f + oy, q->ro, q->rd);
                 cz = (double)q->rd[0] * (double)ctx.fwd[0] + (double)q->rd[1] * (double)ctx.fwd[1] + (double)q->rd[2] * (double)ctx.fwd[2];
                 q->r = fs_reference(sc, q->ro, q->rd, (double)ctx.t_max, eps_mode == FOVSDF_EPS_CONE ? 0.0 : (double)ctx.cfg.eps,

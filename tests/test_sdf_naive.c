@@ -38,19 +38,27 @@
  * 500 near a surface. Changing any parameter of a naive scene (e.g. the primitives' sphere
  * radius 0.5 -> 0.5001) makes its exact check fail.
  */
+/* FOV_TEST_LINK_IMPL: tests/run_all.sh links the implementation compiled once per build
+   (tests/common/fov_impl_sdf.c) instead of compiling it in this file; the private functions
+   tested here are called through the test hook's wrappers (tests/common/fov_priv_sdf.h),
+   which are compiled in this file when it holds the implementation */
+#ifndef FOV_TEST_LINK_IMPL
 #define FOVSDF_IMPLEMENTATION
+#endif
 #include "fovsdf.h"
+#include "fov_priv_sdf.h"
 #include "fovcheck.h"
+#include <float.h>
 
 /* sin, cos, atan2, pow and log appear only in the mandelbulb and the terrain, which use the
    library's own float kernels in every build: the naive scenes call them too */
-#define NAIVE_SQRTF(x) FOV__SQRT(x)
-#define NAIVE_FLOORF(x) FOV__FLOOR(x)
-#define NAIVE_SINF(x) fovsdf__ksin1(x)
-#define NAIVE_COSF(x) fovsdf__kcos(x)
-#define NAIVE_ATAN2F(y, x) fovsdf__katan2(y, x)
-#define NAIVE_POWF(x, y) fovsdf__kpow(x, y)
-#define NAIVE_LOGF(x) fovsdf__klog(x)
+#define NAIVE_SQRTF(x) fovtest_sqrt(x)
+#define NAIVE_FLOORF(x) fovtest_floor(x)
+#define NAIVE_SINF(x) fovtest_sdf_ksin1(x)
+#define NAIVE_COSF(x) fovtest_sdf_kcos(x)
+#define NAIVE_ATAN2F(y, x) fovtest_sdf_katan2(y, x)
+#define NAIVE_POWF(x, y) fovtest_sdf_kpow(x, y)
+#define NAIVE_LOGF(x) fovtest_sdf_klog(x)
 #include "../bench/sdf_naive.h"
 
 #include <stdlib.h>
@@ -64,7 +72,7 @@
 static float tol_of(const float p[3], float d)
 {
     float a = d < 0.0f ? -d : d;
-    return 8.0f * FLT_EPSILON * (a + fov__len(p) + 1.0f);
+    return 8.0f * FLT_EPSILON * (a + fovtest_len(p) + 1.0f);
 }
 
 static uint32_t rng_next(uint32_t *s)
@@ -100,17 +108,17 @@ static void point(acc_t *a, naive_fn fn, const fovsdf_program *prog, const float
     db = eval_prog(prog, p, 1e-4f, &mb);
     tol = tol_of(p, dn);
     a->n++;
-    r = fov__absf(dn - dx) / tol;
+    r = fovtest_absf(dn - dx) / tol;
     if (!(r <= 1.0f)) a->bad_exact++;
     if (!(r <= a->worst_exact)) {
         a->worst_exact = r;
         a->wp[0] = p[0]; a->wp[1] = p[1]; a->wp[2] = p[2]; a->wd_naive = dn; a->wd_prog = dx;
     }
-    if (de && !(fov__absf(dn) < NEAR)) {
+    if (de && !(fovtest_absf(dn) < NEAR)) {
         /* distance estimators: a bound is no lower bound of them (see the header) */
     } else if (mb >= 0) {
         a->n_mat++;
-        r = fov__absf(dn - db) / tol;
+        r = fovtest_absf(dn - db) / tol;
         if (!(r <= 1.0f)) a->bad_bound++;
         if (r > a->worst_bound) a->worst_bound = r;
     } else {
@@ -118,7 +126,7 @@ static void point(acc_t *a, naive_fn fn, const fovsdf_program *prog, const float
         if (!(r <= 1.0f)) a->bad_lower++;
         if (r > a->worst_lower) a->worst_lower = r;
     }
-    if (fov__absf(dn) < NEAR) {
+    if (fovtest_absf(dn) < NEAR) {
         a->n_near++;
         if (mn != mb || mn != mx) {
             if (a->bad_mat == 0) {
@@ -189,7 +197,7 @@ int main(void)
                 c[k] = bi.camera.target[k];
                 v[k] = bi.camera.pos[k] - bi.camera.target[k];
             }
-            r = 1.5f * fov__len(v);
+            r = 1.5f * fovtest_len(v);
         }
         for (i = 0; i < NRAND; ++i) {
             float p[3];
