@@ -7803,39 +7803,59 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     size_t i = (size_t)y * W + x;
     const float *src = P->src, *pk = P->pk;
     float *o = P->dst + 4u * i;
-    fovpt__dnl L[4];
     __m128 hv[5], idz[3][3], lp, sig, zp, hitp, n1, n2, n3, a0, a1, a2, r, g, bl, v;
     __m128 acc0, acc1, acc2, ws, wv, q0, q1, q2, q3, zero = _mm_setzero_ps();
     __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
-    int dx, dy, dy0, dy1, step = P->step, on = 0, any_hit = 0;
-    for (l = 0; l < 4; ++l) {
-        fovpt__dn_lane(dn, P, x + l, y, &L[l]);
-        on |= L[l].on << l;
-        any_hit |= L[l].hitp;
-    }
+    __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
+    float t[4];
+    int dx, dy, dy0, dy1, step = P->step, on, any_hit;
+    /* fovpt__dn_lane's terms, 4 lanes at once */
+    on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
+                                       _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
     if (!on) {
         for (l = 0; l < 16u; ++l) o[l] = src[4u * i + l];
         return;
     }
-    for (dx = 0; dx < 5; ++dx) {
-        const float *h0 = L[0].rad == 1 ? h3 : h5, *h1 = L[1].rad == 1 ? h3 : h5;
-        const float *h2 = L[2].rad == 1 ? h3 : h5, *h4 = L[3].rad == 1 ? h3 : h5;
-        hv[dx] = _mm_setr_ps(h0[dx], h1[dx], h2[dx], h4[dx]);
+    rad1 = _mm_cmpge_ps(cr, _mm_set1_ps(dn->cfg.r_small));
+    for (dx = 0; dx < 5; ++dx) hv[dx] = fovpt__dn_sel4(rad1, _mm_set1_ps(h3[dx]), _mm_set1_ps(h5[dx]));
+    { /* the variance's 3 x 3 Gaussian (x - 1 and x + 4 inside the image) */
+        const float *rw[3];
+        __m128 vr[3];
+        rw[0] = src + 4u * (size_t)(y > 0 ? y - 1u : 0u) * W;
+        rw[1] = src + 4u * (size_t)y * W;
+        rw[2] = src + 4u * (size_t)(y + 1u < H ? y + 1u : y) * W;
+        for (b = 0; b < 3; ++b) {
+            float e[6];
+            for (l = 0; l < 6; ++l) e[l] = rw[b][4u * (x + l - 1u) + 3u];
+            vr[b] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.25f), _mm_loadu_ps(e)),
+                                          _mm_mul_ps(_mm_set1_ps(0.5f), _mm_loadu_ps(e + 1))),
+                               _mm_mul_ps(_mm_set1_ps(0.25f), _mm_loadu_ps(e + 2)));
+        }
+        v3 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.25f), vr[0]),
+                                   _mm_mul_ps(_mm_set1_ps(0.5f), vr[1])),
+                        _mm_mul_ps(_mm_set1_ps(0.25f), vr[2]));
+        _mm_storeu_ps(t, _mm_max_ps(v3, zero));
+        for (l = 0; l < 4; ++l) t[l] = FOV__SQRT(t[l]); /* the scalar square root (a hook) */
+        sig = _mm_div_ps(_mm_set1_ps(1.0f),
+                         _mm_add_ps(_mm_mul_ps(_mm_set1_ps(dn->cfg.phi_lum), _mm_loadu_ps(t)),
+                                    _mm_set1_ps(1e-6f)));
     }
-    for (b = 0; b < 3; ++b)
-        for (l = 0; l < 3; ++l)
-            idz[b][l] = _mm_setr_ps(L[0].idz[b][l], L[1].idz[b][l], L[2].idz[b][l],
-                                    L[3].idz[b][l]);
-    lp = _mm_setr_ps(L[0].lp, L[1].lp, L[2].lp, L[3].lp);
-    sig = _mm_setr_ps(L[0].sig, L[1].sig, L[2].sig, L[3].sig);
-    zp = _mm_setr_ps(L[0].zp, L[1].zp, L[2].zp, L[3].zp);
-    hitp = _mm_cmpgt_ps(zp, zero);
+    q0 = _mm_loadu_ps(src + 4u * i);
+    q1 = _mm_loadu_ps(src + 4u * i + 4u);
+    q2 = _mm_loadu_ps(src + 4u * i + 8u);
+    q3 = _mm_loadu_ps(src + 4u * i + 12u);
+    _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+    lp = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.2126f), q0),
+                               _mm_mul_ps(_mm_set1_ps(0.7152f), q1)),
+                    _mm_mul_ps(_mm_set1_ps(0.0722f), q2));
     q0 = _mm_loadu_ps(pk + 8u * i);
     q1 = _mm_loadu_ps(pk + 8u * i + 8u);
     q2 = _mm_loadu_ps(pk + 8u * i + 16u);
     q3 = _mm_loadu_ps(pk + 8u * i + 24u);
     _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
-    n1 = q1; n2 = q2; n3 = q3;
+    zp = q0; n1 = q1; n2 = q2; n3 = q3;
+    hitp = _mm_cmpgt_ps(zp, zero);
+    any_hit = _mm_movemask_ps(hitp);
     a0 = a1 = a2 = zero;
     if (P->alb) {
         q0 = _mm_loadu_ps(pk + 8u * i + 4u);
@@ -7844,6 +7864,35 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
         q3 = _mm_loadu_ps(pk + 8u * i + 28u);
         _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
         a0 = q0; a1 = q1; a2 = q2;
+    }
+    if (any_hit) { /* fovpt__dn_pslope and the depth stop's denominators */
+        __m128 fm = _mm_set1_ps(FLT_MAX), d0, d1, mn, sc = _mm_set1_ps(dn->cfg.phi_depth * P->fstep);
+        float e[6];
+        for (l = 0; l < 6; ++l) e[l] = pk[8u * (i + l - 1u)];
+        d0 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        d1 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e + 2)));
+        mn = _mm_min_ps(d0, d1);
+        sl0 = _mm_and_ps(_mm_cmplt_ps(mn, fm), mn);
+        d0 = d1 = fm;
+        if (y > 0) {
+            for (l = 0; l < 4; ++l) e[l] = pk[8u * (i + l - W)];
+            d0 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        }
+        if (y + 1u < H) {
+            for (l = 0; l < 4; ++l) e[l] = pk[8u * (i + l + W)];
+            d1 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        }
+        mn = _mm_min_ps(d0, d1);
+        sl1 = _mm_and_ps(_mm_cmplt_ps(mn, fm), mn);
+        sl0 = _mm_mul_ps(sl0, sc);
+        sl1 = _mm_mul_ps(sl1, sc);
+        for (b = 0; b < 3; ++b)
+            for (l = 0; l < 3; ++l)
+                idz[b][l] = _mm_div_ps(
+                    _mm_set1_ps(1.0f),
+                    _mm_add_ps(_mm_add_ps(_mm_mul_ps(sl0, _mm_set1_ps((float)l)),
+                                          _mm_mul_ps(sl1, _mm_set1_ps((float)b))),
+                               _mm_mul_ps(_mm_set1_ps(1e-3f), zp)));
     }
     acc0 = acc1 = acc2 = ws = wv = zero;
     dy0 = -fovpt__dn_mini(2, (int)y / step);
@@ -7947,7 +7996,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     _mm_storeu_ps(o + 8, q2);
     _mm_storeu_ps(o + 12, q3);
     for (l = 0; l < 4; ++l)
-        if (!L[l].on)
+        if (!(on >> l & 1))
             for (b = 0; b < 4; ++b) o[4u * l + b] = src[4u * (i + l) + b];
 }
 #endif
