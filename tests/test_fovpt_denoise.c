@@ -17,7 +17,7 @@
  * (the running mean for the first frames); a camera moved by exactly one pixel over a
  * fronto-parallel plane reads its history one pixel over.
  */
-#define FOVPT_IMPLEMENTATION /* the implementation here: a check calls fovpt__dn_nlog */
+#define FOVPT_IMPLEMENTATION /* the implementation here: checks call fovpt__dn_nlog, fovpt__dn_atrous */
 #include "fovpt.h"
 #include "fovcheck.h"
 
@@ -1114,6 +1114,98 @@ static void t_skip_evidence(void)
     img_free(&a);
 }
 
+/* The SSE2 a-trous pass (4 pixels of a row at once, fovpt__dn_px4) against the scalar pass
+   (fovpt__dn_px, the reference): the same float operations in the same order lane by lane,
+   so every output float must be bit-identical (the bound: 0; the builds here do not contract
+   to FMA). Every pass of a 5-level frame, for phi_normal 32 (the -ln c series, c < 3/4 by
+   the integer power), 128 and 200.5 (series, far taps dropped), 8 (integer power alone) and
+   3.5 (powf: the scalar pass alone, trivially equal), with and without the albedo guide, on
+   random images (normals up to 90 degrees apart, misses, spp and var mixed so lanes of a
+   group differ in radius, in being filtered and in hitting) and on the images the other
+   checks use (the kernel reference's regions, the faceted terrain, the sky/wall frame).
+   Elsewhere (no SSE2, FOVPT_NO_SIMD) both calls take the scalar pass. Checked to fail when
+   one lane is wrong: a tap read one pixel over in one lane or at one offset, one lane's
+   kernel weight at one offset times 1.0001, one lane's luminance, series, integer power,
+   albedo or depth slope perturbed, a passed-through lane not copied, the far drop left out. */
+static void simd_img(img *a, int kind, uint32_t seed)
+{
+    uint32_t x, y, k, s = seed, W = a->w, H = a->h;
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            double t, u;
+            s = s * 1664525u + 1013904223u;
+            for (k = 0; k < 3; ++k) {
+                s = s * 1664525u + 1013904223u;
+                a->rgb[3 * i + k] = (kind == 1 ? (x * 3u < W ? 0.3f : 0.6f) : 0.0f) + ((float)(s >> 8) / 16777216.0f) * (kind == 0 ? 2.0f : 0.3f);
+                a->alb[3 * i + k] = kind == 0 ? (float)(s >> 20) / 4096.0f : 0.5f;
+            }
+            s = s * 1664525u + 1013904223u;
+            t = kind == 0 ? 1.5708 * ((double)(s >> 8) / 16777216.0) : kind == 2 ? 0.2094 * ((double)(s >> 8) / 16777216.0 - 0.5) : (x * 3u < 2u * W ? 0.0 : 0.5236);
+            s = s * 1664525u + 1013904223u;
+            u = kind == 0 ? 0.8 * ((double)(s >> 8) / 16777216.0 - 0.5) : kind == 2 ? 0.2094 * ((double)(s >> 8) / 16777216.0 - 0.5) : 0.0;
+            a->nrm[3 * i] = (float)(sin(t) * cos(u)); a->nrm[3 * i + 1] = (float)sin(u);
+            a->nrm[3 * i + 2] = (float)(cos(t) * cos(u));
+            s = s * 1664525u + 1013904223u;
+            if (kind == 0) a->dep[i] = (s >> 28) == 0u ? 0.0f : 1.0f + (float)(s >> 8) / 16777216.0f * ((s & 1u) ? 3.0f : 0.01f);
+            else a->dep[i] = (kind == 1 && x * 3u < W) ? 0.0f : 2.0f + 0.01f * (float)x;
+            s = s * 1664525u + 1013904223u;
+            a->spp[i] = kind == 0 ? (float)(1u + (s >> 27)) : 2.0f;
+            a->var[i] = kind == 0 ? ((s & 3u) ? 0.02f * (float)(s >> 8) / 16777216.0f : -1.0f) : -1.0f;
+        }
+}
+static void t_simd_scalar(void)
+{
+    const uint32_t W = 101, H = 45;
+    static const float pns[5] = { 32.0f, 128.0f, 200.5f, 8.0f, 3.5f };
+    size_t n = (size_t)W * H;
+    img a;
+    float *ref = (float *)malloc(n * 16u);
+    int kind, ip, alb;
+    img_alloc(&a, W, H);
+    for (kind = 0; kind < 3; ++kind)
+        for (ip = 0; ip < 5; ++ip)
+            for (alb = 0; alb < 2; ++alb) {
+                fovpt_denoise dn;
+                fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+                fovpt_camera cam;
+                fov_gaze g = { 30.0f, 20.0f };
+                void *dm = NULL;
+                uint32_t p, nd = 0, passes = 0;
+                double worst = 0.0;
+                size_t i;
+                int ok;
+                simd_img(&a, kind, 1234u + (uint32_t)(kind * 10 + ip));
+                a.g.albedo = alb ? a.alb : NULL;
+                dc.width = W; dc.height = H; dc.phi_normal = pns[ip];
+                if (kind == 0) dc.spp_ref = 8.0f; /* lanes mixed: 3 x 3 and 5 x 5, some passed through */
+                else { dc.fovea_step = 65536.0f; dc.skip_noise = 1e-9f; dc.spp_full = 1e30f; }
+                fovpt_camera_init(&cam, W, H);
+                ok = dn_make(&dn, &dc, &dm);
+                ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                     fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
+                for (p = 0; ok && p < dn.passes; ++p) {
+                    float *dst = dn.buf[(p & 1u) ^ 1u];
+                    fovpt__dn_atrous(&dn, p, 0, H, 0);
+                    memcpy(ref, dst, n * 16u);
+                    fovpt__dn_atrous(&dn, p, 0, H, 1);
+                    for (i = 0; i < n * 4u; ++i) {
+                        double d = fabs((double)dst[i] - (double)ref[i]);
+                        if (!(d <= worst)) worst = d; /* NaN too */
+                        nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
+                    }
+                    passes++;
+                }
+                check(ok && passes == 5u && nd == 0u && worst == 0.0,
+                      N("atrous_simd_equals_scalar_%s_pn%g%s", kind == 0 ? "random" : kind == 1 ? "regions" : "faceted", (double)pns[ip], alb ? "" : "_noalbedo"),
+                      "%u of %u floats differ in bits over %u passes, max |simd - scalar| %g (want 0; ok %d)", nd, (unsigned)(n * 4u) * passes, passes, worst, ok);
+                free(dm);
+            }
+    a.g.albedo = a.alb;
+    free(ref);
+    img_free(&a);
+}
+
 int main(void)
 {
     t_constant();
@@ -1131,5 +1223,6 @@ int main(void)
     t_adaptive();
     t_faceted();
     t_skip_evidence();
+    t_simd_scalar();
     return fovcheck_summary();
 }
