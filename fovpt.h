@@ -7791,13 +7791,12 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
     return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b));
 }
 
-/* the pass at pixels x .. x + 3 of row y (edge 0: all their 5 x 5 taps inside the image
-   columns; 1: taps outside a lane's row weigh +0 in that lane and the pixel's own terms come
-   from fovpt__dn_lane; rows clipped as in fovpt__dn_px): the scalar operations lane by lane,
-   in the same order, so the result is bit-identical to fovpt__dn_px (a tap a lane skips adds
-   +0 there; no FMA contraction: see NUMERICS) */
+/* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
+   columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
+   order, so the result is bit-identical to fovpt__dn_px (no FMA contraction: the library is
+   built without -ffp-contract=fast on x86-64 SSE2; see NUMERICS) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
-                               uint32_t y, int edge)
+                               uint32_t y)
 {
     static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
     static const float h3[5] = { 0.0f, 0.25f, 0.5f, 0.25f, 0.0f };
@@ -7810,7 +7809,6 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
     __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
     float t[4];
-    const float *ql[4];
     int dx, dy, dy0, dy1, step = P->step, on, any_hit;
     /* fovpt__dn_lane's terms, 4 lanes at once */
     on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
@@ -7822,15 +7820,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     rad1 = _mm_cmpge_ps(cr, _mm_set1_ps(dn->cfg.r_small));
     for (dx = 0; dx < 5; ++dx)
         hv[dx] = fovpt__dn_sel4(rad1, _mm_set1_ps(h3[dx]), _mm_set1_ps(h5[dx]));
-    if (edge) { /* the scalar terms (edge pixels repeated, one-sided slopes) */
-        fovpt__dnl L[4];
-        for (l = 0; l < 4; ++l) fovpt__dn_lane(dn, P, x + l, y, &L[l]);
-        sig = _mm_setr_ps(L[0].sig, L[1].sig, L[2].sig, L[3].sig);
-        for (b = 0; b < 3; ++b)
-            for (l = 0; l < 3; ++l)
-                idz[b][l] = _mm_setr_ps(L[0].idz[b][l], L[1].idz[b][l], L[2].idz[b][l],
-                                        L[3].idz[b][l]);
-    } else { /* the variance's 3 x 3 Gaussian (x - 1 and x + 4 inside the image) */
+    { /* the variance's 3 x 3 Gaussian (x - 1 and x + 4 inside the image) */
         const float *rw[3];
         __m128 vr[3];
         rw[0] = src + 4u * (size_t)(y > 0 ? y - 1u : 0u) * W;
@@ -7877,7 +7867,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
         _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
         a0 = q0; a1 = q1; a2 = q2;
     }
-    if (any_hit && !edge) { /* fovpt__dn_pslope and the depth stop's denominators */
+    if (any_hit) { /* fovpt__dn_pslope and the depth stop's denominators */
         __m128 fm = _mm_set1_ps(FLT_MAX), d0, d1, mn;
         __m128 sc = _mm_set1_ps(dn->cfg.phi_depth * P->fstep);
         float e[6];
@@ -7915,39 +7905,20 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
         __m128 hy = hv[dy + 2];
         int ady = dy < 0 ? -dy : dy;
         for (dx = -2; dx <= 2; ++dx) {
-            const float *gl[4];
+            size_t j = row + (size_t)((int)x + dx * step);
+            const float *q = src + 4u * j, *gq = pk + 8u * j;
             __m128 w = _mm_mul_ps(hv[dx + 2], hy), ex, z, c, live, d, e;
-            if (edge) { /* a lane's tap outside its row: read its own pixel, weight +0 */
-                int cm = 0;
-                __m128i bits = _mm_setr_epi32(1, 2, 4, 8);
-                for (l = 0; l < 4; ++l) {
-                    int cx = (int)(x + l) + dx * step, in = cx >= 0 && cx < (int)W;
-                    if (!in) cx = (int)(x + l);
-                    cm |= in << l;
-                    gl[l] = pk + 8u * (row + (size_t)cx);
-                    ql[l] = src + 4u * (row + (size_t)cx);
-                }
-                if (!cm) continue;
-                w = _mm_and_ps(w, _mm_castsi128_ps(_mm_cmpeq_epi32(
-                                      _mm_and_si128(_mm_set1_epi32(cm), bits), bits)));
-            } else {
-                size_t j = row + (size_t)((int)x + dx * step);
-                for (l = 0; l < 4; ++l) {
-                    gl[l] = pk + 8u * (j + l);
-                    ql[l] = src + 4u * (j + l);
-                }
-            }
-            q0 = _mm_loadu_ps(ql[0]);
-            q1 = _mm_loadu_ps(ql[1]);
-            q2 = _mm_loadu_ps(ql[2]);
-            q3 = _mm_loadu_ps(ql[3]);
+            q0 = _mm_loadu_ps(q);
+            q1 = _mm_loadu_ps(q + 4);
+            q2 = _mm_loadu_ps(q + 8);
+            q3 = _mm_loadu_ps(q + 12);
             _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* r, g, b, var of the 4 taps */
             if (dx || dy) {
                 if (!_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
-                r = _mm_loadu_ps(gl[0]);
-                g = _mm_loadu_ps(gl[1]);
-                bl = _mm_loadu_ps(gl[2]);
-                v = _mm_loadu_ps(gl[3]);
+                r = _mm_loadu_ps(gq);
+                g = _mm_loadu_ps(gq + 8);
+                bl = _mm_loadu_ps(gq + 16);
+                v = _mm_loadu_ps(gq + 24);
                 _MM_TRANSPOSE4_PS(r, g, bl, v); /* depth, normal */
                 z = r;
                 live = _mm_xor_ps(hitp, _mm_cmpgt_ps(z, zero)); /* hit differs: dropped */
@@ -7995,10 +7966,10 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                 }
                 if (P->alb) {
                     __m128 e0, e1, e3;
-                    r = _mm_loadu_ps(gl[0] + 4);
-                    g = _mm_loadu_ps(gl[1] + 4);
-                    bl = _mm_loadu_ps(gl[2] + 4);
-                    v = _mm_loadu_ps(gl[3] + 4);
+                    r = _mm_loadu_ps(gq + 4);
+                    g = _mm_loadu_ps(gq + 12);
+                    bl = _mm_loadu_ps(gq + 20);
+                    v = _mm_loadu_ps(gq + 28);
                     _MM_TRANSPOSE4_PS(r, g, bl, v);
                     e0 = _mm_sub_ps(a0, r); e1 = _mm_sub_ps(a1, g); e3 = _mm_sub_ps(a2, bl);
                     e0 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e0, e0), _mm_mul_ps(e1, e1)),
@@ -8054,8 +8025,8 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
     P.ipn = 0;
     if (P.pn <= 4096.0f && fov__is0(P.pn - FOV__FLOOR(P.pn))) P.ipn = (uint32_t)P.pn;
 #if FOVPT__DN_SSE2
-    /* 4 pixels at once where the normal stop needs no powf (an integer phi_normal or one
-       whose far taps are dropped); the last width % 4 pixels of a row one at a time */
+    /* 4 pixels at once where their 5 x 5 taps lie inside the columns and the normal stop
+       needs no powf (an integer phi_normal or one whose far taps are dropped) */
     if (!(P.ipn || P.nfar)) simd = 0;
 #else
     (void)simd;
@@ -8065,7 +8036,8 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
 #if FOVPT__DN_SSE2
         if (simd) {
             uint32_t m = 2u * (uint32_t)P.step;
-            for (; x + 3u < P.W; x += 4u) fovpt__dn_px4(dn, &P, x, y, x < m || x + 3u + m >= P.W);
+            for (; x < m && x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
+            for (; x + 3u + m < P.W; x += 4u) fovpt__dn_px4(dn, &P, x, y);
         }
 #endif
         for (; x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
