@@ -329,8 +329,9 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
    FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default and maximum 2^26)
    FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack W - 1 entries per level (default 64)
-   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal (the scalar
-                        twin: same hits, slower)
+   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal and no SSE2 in
+                        the denoiser's a-trous pass (the scalar twins: same hits, the same
+                        denoised image bit for bit, slower)
    FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
@@ -446,8 +447,9 @@ NUMERICS
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
      <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined, plus
-     <xmmintrin.h> on x86 with SSE (and <immintrin.h> with AVX), <arm_neon.h> on AArch64,
-     <wasm_simd128.h> on wasm32 with -msimd128 (define FOVPT_NO_SIMD to leave them out).
+     <xmmintrin.h> on x86 with SSE (and <emmintrin.h> with SSE2, <immintrin.h> with AVX),
+     <arm_neon.h> on AArch64, <wasm_simd128.h> on wasm32 with -msimd128 (define
+     FOVPT_NO_SIMD to leave them out).
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
      __aeabi_d* routine is referenced (checked by tests/compile).
@@ -1691,6 +1693,18 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    interior 27.6 -> 29.1, mirrors 34.4 -> 34.6, cornell 33.2 -> 33.3, cubes441 29.72 ->
    29.67; periphery mesh100k +1.4 dB, the others within 0.3 dB. Cost (callgrind, one LAYERS
    frame): cubes441 +0.5 %, mesh100k +4 % instructions.
+   SIMD: on x86 with SSE2 the a-trous pass filters 4 pixels of a row at once (the same tap
+   offsets; each lane its own radius, stops and pass-through), where all their 5 x 5 taps
+   lie inside the image columns and the normal stop needs no powf (phi_normal an integer or
+   >= 104.3); the border columns (2 * 2^pass wide), a row's last width % 4 pixels and other
+   phi_normal take the scalar pass. Each lane performs the scalar pass's float operations in
+   its order (a tap the scalar pass skips adds +0), so the image is bit-identical to
+   FOVPT_NO_SIMD's (tests/test_fovpt_denoise.c: atrous_simd_equals_scalar_*; a build that
+   contracts to FMA, e.g. -march=native with gcc's default -ffp-contract=fast, may round
+   differently). Measured (callgrind, one LAYERS KTH-radius frame 320 x 240, instructions
+   per pixel, temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
+   1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved in one
+   program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
    Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
    filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
 #ifndef FOVPT_DN_MAX_LEVELS
