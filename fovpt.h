@@ -7700,6 +7700,7 @@ FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, ui
     float v3, sl[2];
     int a, b;
     L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]);
+    if (!L->on) return; /* passed through: nothing else needed */
     L->zp = P->pk[8u * i];
     L->hitp = L->zp > 0.0f;
     /* the variance's 3 x 3 Gaussian (edge pixels repeated) */
