@@ -364,8 +364,9 @@ CONFIGURATION (define before including the implementation)
    FOVPT_MAX_DIM        hard cap on image width and height                (default 65536)
    FOVPT_MAX_PRIMS      hard cap on primitives (shapes + triangles)       (default and maximum 2^26)
    FOVPT_MAX_BVH_DEPTH  BVH depth cap; traversal stack W - 1 entries per level (default 64)
-   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal (the scalar
-                        twin: same hits, slower)
+   FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal and no SSE2 in
+                        the denoiser's a-trous pass (the scalar twins: same hits, the same
+                        denoised image bit for bit, slower)
    FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
@@ -484,8 +485,9 @@ NUMERICS
 PLATFORM NOTES
    - Freestanding: the implementation includes only <stddef.h>, <stdint.h>, <float.h> and
      <limits.h> when FOV_NO_LIBM (or all math hooks) and FOV_ASSERT are defined, plus
-     <xmmintrin.h> on x86 with SSE (and <immintrin.h> with AVX), <arm_neon.h> on AArch64,
-     <wasm_simd128.h> on wasm32 with -msimd128 (define FOVPT_NO_SIMD to leave them out).
+     <xmmintrin.h> on x86 with SSE (and <emmintrin.h> with SSE2, <immintrin.h> with AVX),
+     <arm_neon.h> on AArch64, <wasm_simd128.h> on wasm32 with -msimd128 (define
+     FOVPT_NO_SIMD to leave them out).
    - wasm32: clang --target=wasm32 -ffreestanding -nostdlib -DFOV_NO_LIBM works as is.
    - Cortex-M4F: arm-none-eabi-gcc -mcpu=cortex-m4 -mfpu=fpv4-sp-d16 -mfloat-abi=hard; no
      __aeabi_d* routine is referenced (checked by tests/compile).
@@ -1756,6 +1758,18 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    interior 27.6 -> 29.1, mirrors 34.4 -> 34.6, cornell 33.2 -> 33.3, cubes441 29.72 ->
    29.67; periphery mesh100k +1.4 dB, the others within 0.3 dB. Cost (callgrind, one LAYERS
    frame): cubes441 +0.5 %, mesh100k +4 % instructions.
+   SIMD: on x86 with SSE2 the a-trous pass filters 4 pixels of a row at once (the same tap
+   offsets; each lane its own radius, stops and pass-through), where all their 5 x 5 taps
+   lie inside the image columns and the normal stop needs no powf (phi_normal an integer or
+   >= 104.3); the border columns (2 * 2^pass wide), a row's last width % 4 pixels and other
+   phi_normal take the scalar pass. Each lane performs the scalar pass's float operations in
+   its order (a tap the scalar pass skips adds +0), so the image is bit-identical to
+   FOVPT_NO_SIMD's (tests/test_fovpt_denoise.c: atrous_simd_equals_scalar_*; a build that
+   contracts to FMA, e.g. -march=native with gcc's default -ffp-contract=fast, may round
+   differently). Measured (callgrind, one LAYERS KTH-radius frame 320 x 240, instructions
+   per pixel, temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
+   1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved in one
+   program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
    Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
    filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
 #ifndef FOVPT_DN_MAX_LEVELS
@@ -3112,6 +3126,14 @@ typedef v128_t fovpt__m4;
 #define FOVPT__SIMD 0
 #endif
 #define FOVPT__SSE (FOVPT__SIMD == 1)
+/* the denoiser's a-trous pass 4 pixels at once: SSE2 (x86-64, or x86 with SSE2) */
+#if FOVPT__SIMD == 1 && (defined(__SSE2__) || defined(_M_X64) || \
+                         (defined(_M_IX86_FP) && _M_IX86_FP >= 2))
+#define FOVPT__DN_SSE2 1
+#include <emmintrin.h>
+#else
+#define FOVPT__DN_SSE2 0
+#endif
 
 
 #ifndef FOVPT_MAX_WHITTED /* Whitted depth cap (the branch stack has 2x this many entries) */
@@ -7880,122 +7902,413 @@ FOVPT__PRIV float fovpt__dn_ipow(float c, uint32_t e)
     return r;
 }
 
-FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
-                                               uint32_t y1)
+/* one a-trous pass's per-pass constants */
+typedef struct fovpt__dnp {
+    const float *src, *pk;
+    float *dst;
+    float ia2, pn, fstep;
+    uint32_t W, H, ipn;
+    int step, alb, nfar, nser;
+} fovpt__dnp;
+
+/* a pixel's own terms of a pass: whether the pass filters it, the luminance stop's scale,
+   the kernel radius and the depth stop's denominators per |offset| */
+typedef struct fovpt__dnl {
+    float lp, sig, zp, idz[3][3];
+    int on, rad, hitp;
+} fovpt__dnl;
+
+FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
+                                uint32_t y, fovpt__dnl *L)
+{
+    uint32_t W = P->W, H = P->H;
+    size_t i = (size_t)y * W + x;
+    const float *src = P->src, *p = src + 4u * i;
+    const float *r0 = src + 4u * (size_t)(y > 0 ? y - 1u : 0u) * W;
+    const float *r1 = src + 4u * (size_t)y * W;
+    const float *r2 = src + 4u * (size_t)(y + 1u < H ? y + 1u : y) * W;
+    uint32_t xm = x > 0 ? x - 1u : 0u, xp = x + 1u < W ? x + 1u : x;
+    float v3, sl[2];
+    int a, b;
+    L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]);
+    if (!L->on) return; /* passed through: nothing else needed */
+    L->zp = P->pk[8u * i];
+    L->hitp = L->zp > 0.0f;
+    /* the variance's 3 x 3 Gaussian (edge pixels repeated) */
+    v3 = 0.25f * (0.25f * r0[4u * xm + 3u] + 0.5f * r0[4u * x + 3u] + 0.25f * r0[4u * xp + 3u]) +
+         0.5f * (0.25f * r1[4u * xm + 3u] + 0.5f * r1[4u * x + 3u] + 0.25f * r1[4u * xp + 3u]) +
+         0.25f * (0.25f * r2[4u * xm + 3u] + 0.5f * r2[4u * x + 3u] + 0.25f * r2[4u * xp + 3u]);
+    v3 = fov__maxf(v3, 0.0f);
+    L->lp = fovpt__lum(p);
+    L->sig = 1.0f / (dn->cfg.phi_lum * FOV__SQRT(v3) + 1e-6f);
+    L->rad = dn->coarse[i] >= dn->cfg.r_small ? 1 : 2;
+    for (b = 0; b < 3; ++b)
+        for (a = 0; a < 3; ++a) L->idz[b][a] = 0.0f;
+    if (L->hitp) {
+        fovpt__dn_pslope(P->pk, W, H, x, y, sl);
+        sl[0] *= dn->cfg.phi_depth * P->fstep; sl[1] *= dn->cfg.phi_depth * P->fstep;
+        for (b = 0; b <= L->rad; ++b)
+            for (a = 0; a <= L->rad; ++a)
+                L->idz[b][a] = 1.0f / (sl[0] * (float)a + sl[1] * (float)b + 1e-3f * L->zp);
+    }
+}
+
+/* the scalar pass at one pixel (the reference of the SIMD path) */
+FOVPT__PRIV void fovpt__dn_px(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
+                              uint32_t y)
 {
     static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
     static const float h3[3] = { 0.25f, 0.5f, 0.25f };
-    uint32_t x, y, k, W, H, ipn;
-    int step, alb, nfar, nser;
-    const float *src, *pk;
-    float *dst, ia2, pn, fstep;
+    uint32_t W = P->W, H = P->H, k;
+    size_t i = (size_t)y * W + x;
+    const float *src = P->src, *pk = P->pk, *p = src + 4u * i, *gp = pk + 8u * i, *hk;
+    float *o = P->dst + 4u * i, ws = 0.0f, wv = 0.0f, acc[3] = { 0.0f, 0.0f, 0.0f };
+    int dx, dy, dx0, dx1, dy0, dy1, rad, step = P->step;
+    fovpt__dnl L;
+    fovpt__dn_lane(dn, P, x, y, &L);
+    if (!L.on) { /* not at this pixel */
+        o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
+        return;
+    }
+    rad = L.rad;
+    hk = rad == 1 ? h3 : h5;
+    /* the taps inside the image */
+    dx0 = -fovpt__dn_mini(rad, (int)x / step);
+    dx1 = fovpt__dn_mini(rad, (int)(W - 1u - x) / step);
+    dy0 = -fovpt__dn_mini(rad, (int)y / step);
+    dy1 = fovpt__dn_mini(rad, (int)(H - 1u - y) / step);
+    for (dy = dy0; dy <= dy1; ++dy) {
+        size_t row = (size_t)((int)y + dy * step) * W;
+        float hy = hk[dy + rad];
+        int ady = dy < 0 ? -dy : dy;
+        for (dx = dx0; dx <= dx1; ++dx) {
+            size_t j = row + (size_t)((int)x + dx * step);
+            const float *q = src + 4u * j, *gq = pk + 8u * j;
+            float w = hk[dx + rad] * hy, ex;
+            if (dx || dy) {
+                if (L.hitp != (gq[0] > 0.0f)) continue;
+                ex = fov__absf(L.lp - fovpt__lum(q)) * L.sig;
+                if (L.hitp) {
+                    float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
+                    ex += fov__absf(L.zp - gq[0]) * L.idz[ady][dx < 0 ? -dx : dx];
+                    if (P->nser && c >= 0.75f) {
+                        ex += P->pn * fovpt__dn_nlog(c);
+                    } else {
+                        if ((P->nfar && c < 0.75f) || !(c > 0.0f)) continue;
+                        w *= P->ipn ? fovpt__dn_ipow(c, P->ipn) : FOV__POW(c, P->pn);
+                    }
+                }
+                if (P->alb) {
+                    float a0 = gp[4] - gq[4], a1 = gp[5] - gq[5], a2 = gp[6] - gq[6];
+                    ex += (a0 * a0 + a1 * a1 + a2 * a2) * P->ia2;
+                }
+                if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
+                w *= fovpt__exp_neg(ex);
+                if (!(w > 1e-13f)) continue;
+            }
+            for (k = 0; k < 3; ++k) acc[k] += w * q[k];
+            ws += w;
+            wv += w * w * fov__maxf(q[3], 0.0f);
+        }
+    }
+    for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
+    o[3] = wv / (ws * ws);
+}
+
+#if FOVPT__DN_SSE2
+/* fovpt__exp_neg on 4 lanes for x in [0, 30) (the same operations: bit-identical there) */
+FOVPT__PRIV __m128 fovpt__dn_exp4(__m128 x)
+{
+    __m128 t = _mm_mul_ps(x, _mm_set1_ps(1.44269504f)), f, p;
+    __m128i i = _mm_cvttps_epi32(t);
+    f = _mm_mul_ps(_mm_sub_ps(t, _mm_cvtepi32_ps(i)), _mm_set1_ps(-0.693147181f));
+    p = _mm_add_ps(_mm_set1_ps(0.00833333333f), _mm_mul_ps(f, _mm_set1_ps(0.00138888889f)));
+    p = _mm_add_ps(_mm_set1_ps(0.0416666667f), _mm_mul_ps(f, p));
+    p = _mm_add_ps(_mm_set1_ps(0.166666667f), _mm_mul_ps(f, p));
+    p = _mm_add_ps(_mm_set1_ps(0.5f), _mm_mul_ps(f, p));
+    p = _mm_add_ps(_mm_set1_ps(1.0f), _mm_mul_ps(f, p));
+    p = _mm_add_ps(_mm_set1_ps(1.0f), _mm_mul_ps(f, p));
+    i = _mm_slli_epi32(_mm_sub_epi32(_mm_set1_epi32(127), i), 23); /* 2^-i */
+    return _mm_mul_ps(p, _mm_castsi128_ps(i));
+}
+
+FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
+{
+    return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b));
+}
+
+/* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
+   columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
+   order, so the result is bit-identical to fovpt__dn_px (no FMA contraction: the library is
+   built without -ffp-contract=fast on x86-64 SSE2; see NUMERICS) */
+FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
+                               uint32_t y)
+{
+    static const float h5[5] = { 0.0625f, 0.25f, 0.375f, 0.25f, 0.0625f };
+    static const float h3[5] = { 0.0f, 0.25f, 0.5f, 0.25f, 0.0f };
+    uint32_t W = P->W, H = P->H, l, b;
+    size_t i = (size_t)y * W + x;
+    const float *src = P->src, *pk = P->pk;
+    float *o = P->dst + 4u * i;
+    __m128 hv[5], idz[3][3], lp, sig, zp, hitp, n1, n2, n3, a0, a1, a2, r, g, bl, v;
+    __m128 acc0, acc1, acc2, ws, wv, q0, q1, q2, q3, zero = _mm_setzero_ps();
+    __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
+    __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
+    float t[4];
+    int dx, dy, dy0, dy1, step = P->step, on, any_hit;
+    /* fovpt__dn_lane's terms, 4 lanes at once */
+    on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
+                                       _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
+    if (!on) {
+        for (l = 0; l < 16u; ++l) o[l] = src[4u * i + l];
+        return;
+    }
+    rad1 = _mm_cmpge_ps(cr, _mm_set1_ps(dn->cfg.r_small));
+    for (dx = 0; dx < 5; ++dx)
+        hv[dx] = fovpt__dn_sel4(rad1, _mm_set1_ps(h3[dx]), _mm_set1_ps(h5[dx]));
+    { /* the variance's 3 x 3 Gaussian (x - 1 and x + 4 inside the image) */
+        const float *rw[3];
+        __m128 vr[3];
+        rw[0] = src + 4u * (size_t)(y > 0 ? y - 1u : 0u) * W;
+        rw[1] = src + 4u * (size_t)y * W;
+        rw[2] = src + 4u * (size_t)(y + 1u < H ? y + 1u : y) * W;
+        for (b = 0; b < 3; ++b) {
+            float e[6];
+            for (l = 0; l < 6; ++l) e[l] = rw[b][4u * (x + l - 1u) + 3u];
+            vr[b] = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.25f), _mm_loadu_ps(e)),
+                                          _mm_mul_ps(_mm_set1_ps(0.5f), _mm_loadu_ps(e + 1))),
+                               _mm_mul_ps(_mm_set1_ps(0.25f), _mm_loadu_ps(e + 2)));
+        }
+        v3 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.25f), vr[0]),
+                                   _mm_mul_ps(_mm_set1_ps(0.5f), vr[1])),
+                        _mm_mul_ps(_mm_set1_ps(0.25f), vr[2]));
+        _mm_storeu_ps(t, _mm_max_ps(v3, zero));
+        for (l = 0; l < 4; ++l) t[l] = FOV__SQRT(t[l]); /* the scalar square root (a hook) */
+        sig = _mm_div_ps(_mm_set1_ps(1.0f),
+                         _mm_add_ps(_mm_mul_ps(_mm_set1_ps(dn->cfg.phi_lum), _mm_loadu_ps(t)),
+                                    _mm_set1_ps(1e-6f)));
+    }
+    q0 = _mm_loadu_ps(src + 4u * i);
+    q1 = _mm_loadu_ps(src + 4u * i + 4u);
+    q2 = _mm_loadu_ps(src + 4u * i + 8u);
+    q3 = _mm_loadu_ps(src + 4u * i + 12u);
+    _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+    lp = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.2126f), q0),
+                               _mm_mul_ps(_mm_set1_ps(0.7152f), q1)),
+                    _mm_mul_ps(_mm_set1_ps(0.0722f), q2));
+    q0 = _mm_loadu_ps(pk + 8u * i);
+    q1 = _mm_loadu_ps(pk + 8u * i + 8u);
+    q2 = _mm_loadu_ps(pk + 8u * i + 16u);
+    q3 = _mm_loadu_ps(pk + 8u * i + 24u);
+    _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+    zp = q0; n1 = q1; n2 = q2; n3 = q3;
+    hitp = _mm_cmpgt_ps(zp, zero);
+    any_hit = _mm_movemask_ps(hitp);
+    a0 = a1 = a2 = zero;
+    if (P->alb) {
+        q0 = _mm_loadu_ps(pk + 8u * i + 4u);
+        q1 = _mm_loadu_ps(pk + 8u * i + 12u);
+        q2 = _mm_loadu_ps(pk + 8u * i + 20u);
+        q3 = _mm_loadu_ps(pk + 8u * i + 28u);
+        _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+        a0 = q0; a1 = q1; a2 = q2;
+    }
+    if (any_hit) { /* fovpt__dn_pslope and the depth stop's denominators */
+        __m128 fm = _mm_set1_ps(FLT_MAX), d0, d1, mn;
+        __m128 sc = _mm_set1_ps(dn->cfg.phi_depth * P->fstep);
+        float e[6];
+        for (l = 0; l < 6; ++l) e[l] = pk[8u * (i + l - 1u)];
+        d0 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        d1 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e + 2)));
+        mn = _mm_min_ps(d0, d1);
+        sl0 = _mm_and_ps(_mm_cmplt_ps(mn, fm), mn);
+        d0 = d1 = fm;
+        if (y > 0) {
+            for (l = 0; l < 4; ++l) e[l] = pk[8u * (i + l - W)];
+            d0 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        }
+        if (y + 1u < H) {
+            for (l = 0; l < 4; ++l) e[l] = pk[8u * (i + l + W)];
+            d1 = _mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(zp, _mm_loadu_ps(e)));
+        }
+        mn = _mm_min_ps(d0, d1);
+        sl1 = _mm_and_ps(_mm_cmplt_ps(mn, fm), mn);
+        sl0 = _mm_mul_ps(sl0, sc);
+        sl1 = _mm_mul_ps(sl1, sc);
+        for (b = 0; b < 3; ++b)
+            for (l = 0; l < 3; ++l)
+                idz[b][l] = _mm_div_ps(
+                    _mm_set1_ps(1.0f),
+                    _mm_add_ps(_mm_add_ps(_mm_mul_ps(sl0, _mm_set1_ps((float)l)),
+                                          _mm_mul_ps(sl1, _mm_set1_ps((float)b))),
+                               _mm_mul_ps(_mm_set1_ps(1e-3f), zp)));
+    }
+    acc0 = acc1 = acc2 = ws = wv = zero;
+    dy0 = -fovpt__dn_mini(2, (int)y / step);
+    dy1 = fovpt__dn_mini(2, (int)(H - 1u - y) / step);
+    for (dy = dy0; dy <= dy1; ++dy) {
+        size_t row = (size_t)((int)y + dy * step) * W;
+        __m128 hy = hv[dy + 2];
+        int ady = dy < 0 ? -dy : dy;
+        for (dx = -2; dx <= 2; ++dx) {
+            size_t j = row + (size_t)((int)x + dx * step);
+            const float *q = src + 4u * j, *gq = pk + 8u * j;
+            __m128 w = _mm_mul_ps(hv[dx + 2], hy), ex, z, c, live, d, e;
+            q0 = _mm_loadu_ps(q);
+            q1 = _mm_loadu_ps(q + 4);
+            q2 = _mm_loadu_ps(q + 8);
+            q3 = _mm_loadu_ps(q + 12);
+            _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* r, g, b, var of the 4 taps */
+            if (dx || dy) {
+                if (!_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
+                r = _mm_loadu_ps(gq);
+                g = _mm_loadu_ps(gq + 8);
+                bl = _mm_loadu_ps(gq + 16);
+                v = _mm_loadu_ps(gq + 24);
+                _MM_TRANSPOSE4_PS(r, g, bl, v); /* depth, normal */
+                z = r;
+                live = _mm_xor_ps(hitp, _mm_cmpgt_ps(z, zero)); /* hit differs: dropped */
+                live = _mm_andnot_ps(live, _mm_cmpgt_ps(w, zero));
+                d = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.2126f), q0),
+                                          _mm_mul_ps(_mm_set1_ps(0.7152f), q1)),
+                               _mm_mul_ps(_mm_set1_ps(0.0722f), q2));
+                ex = _mm_mul_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f), _mm_sub_ps(lp, d)), sig);
+                if (any_hit) {
+                    __m128 exh, pw;
+                    int adx = dx < 0 ? -dx : dx;
+                    c = _mm_add_ps(_mm_add_ps(_mm_mul_ps(n1, g), _mm_mul_ps(n2, bl)),
+                                   _mm_mul_ps(n3, v));
+                    exh = _mm_add_ps(ex, _mm_mul_ps(_mm_andnot_ps(_mm_set1_ps(-0.0f),
+                                                                  _mm_sub_ps(zp, z)),
+                                                    idz[ady][adx]));
+                    pw = hitp; /* the lanes taking the exact power */
+                    if (P->nser) {
+                        __m128 ser = _mm_cmpge_ps(c, c75);
+                        __m128 u = _mm_max_ps(_mm_sub_ps(_mm_set1_ps(1.0f), c), zero), s;
+                        s = _mm_mul_ps(u, _mm_set1_ps(0.25f));
+                        s = _mm_add_ps(_mm_set1_ps(0.333333333f), s);
+                        s = _mm_add_ps(_mm_set1_ps(0.5f), _mm_mul_ps(u, s));
+                        s = _mm_add_ps(_mm_set1_ps(1.0f), _mm_mul_ps(u, s));
+                        s = _mm_mul_ps(u, s);
+                        exh = fovpt__dn_sel4(ser, _mm_add_ps(exh, _mm_mul_ps(pn, s)), exh);
+                        pw = _mm_andnot_ps(ser, pw);
+                    }
+                    if (_mm_movemask_ps(pw)) {
+                        __m128 drop = _mm_cmpngt_ps(c, zero), cc = c, rr = _mm_set1_ps(1.0f);
+                        uint32_t e2 = P->ipn;
+                        if (P->nfar) drop = _mm_or_ps(drop, _mm_cmplt_ps(c, c75));
+                        live = _mm_andnot_ps(_mm_and_ps(pw, drop), live);
+                        if (e2) { /* fovpt__dn_ipow */
+                            while (e2) {
+                                if (e2 & 1u) rr = _mm_mul_ps(rr, cc);
+                                cc = _mm_mul_ps(cc, cc);
+                                e2 >>= 1;
+                            }
+                            w = fovpt__dn_sel4(pw, _mm_mul_ps(w, rr), w);
+                        }
+                        /* else nfar: every power lane was dropped */
+                    }
+                    ex = fovpt__dn_sel4(hitp, exh, ex);
+                }
+                if (P->alb) {
+                    __m128 e0, e1, e3;
+                    r = _mm_loadu_ps(gq + 4);
+                    g = _mm_loadu_ps(gq + 12);
+                    bl = _mm_loadu_ps(gq + 20);
+                    v = _mm_loadu_ps(gq + 28);
+                    _MM_TRANSPOSE4_PS(r, g, bl, v);
+                    e0 = _mm_sub_ps(a0, r); e1 = _mm_sub_ps(a1, g); e3 = _mm_sub_ps(a2, bl);
+                    e0 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(e0, e0), _mm_mul_ps(e1, e1)),
+                                    _mm_mul_ps(e3, e3));
+                    ex = _mm_add_ps(ex, _mm_mul_ps(e0, ia2));
+                }
+                live = _mm_and_ps(live, _mm_cmplt_ps(ex, _mm_set1_ps(30.0f)));
+                if (!_mm_movemask_ps(live)) continue;
+                e = fovpt__dn_exp4(_mm_and_ps(live, ex));
+                w = _mm_mul_ps(w, e);
+                live = _mm_and_ps(live, _mm_cmpgt_ps(w, _mm_set1_ps(1e-13f)));
+                w = _mm_and_ps(live, w);
+            }
+            acc0 = _mm_add_ps(acc0, _mm_mul_ps(w, q0));
+            acc1 = _mm_add_ps(acc1, _mm_mul_ps(w, q1));
+            acc2 = _mm_add_ps(acc2, _mm_mul_ps(w, q2));
+            ws = _mm_add_ps(ws, w);
+            wv = _mm_add_ps(wv, _mm_mul_ps(_mm_mul_ps(w, w), _mm_max_ps(q3, zero)));
+        }
+    }
+    q0 = _mm_div_ps(acc0, ws);
+    q1 = _mm_div_ps(acc1, ws);
+    q2 = _mm_div_ps(acc2, ws);
+    q3 = _mm_div_ps(wv, _mm_mul_ps(ws, ws));
+    _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
+    _mm_storeu_ps(o, q0);
+    _mm_storeu_ps(o + 4, q1);
+    _mm_storeu_ps(o + 8, q2);
+    _mm_storeu_ps(o + 12, q3);
+    for (l = 0; l < 4; ++l)
+        if (!(on >> l & 1))
+            for (b = 0; b < 4; ++b) o[4u * l + b] = src[4u * (i + l) + b];
+}
+#endif
+
+/* the pass over rows [y0, y1); simd 0: the scalar reference alone */
+FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0, uint32_t y1,
+                                  int simd)
+{
+    fovpt__dnp P;
+    uint32_t x, y;
+    P.W = dn->cfg.width; P.H = dn->cfg.height;
+    P.alb = dn->guide.albedo != NULL;
+    P.pk = dn->pack;
+    P.src = dn->buf[pass & 1u];
+    P.dst = dn->buf[(pass & 1u) ^ 1u];
+    P.step = 1 << pass;
+    P.fstep = (float)P.step;
+    P.ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
+    P.pn = dn->cfg.phi_normal;
+    P.nfar = P.pn * 0.287682072f >= 30.0f; /* c < 3/4: c^phi_normal below e^-30, dropped */
+    P.nser = P.pn >= 32.0f; /* the series (weight error below 3.2e-6; smaller pn: exact power) */
+    P.ipn = 0;
+    if (P.pn <= 4096.0f && fov__is0(P.pn - FOV__FLOOR(P.pn))) P.ipn = (uint32_t)P.pn;
+#if FOVPT__DN_SSE2
+    /* 4 pixels at once where their 5 x 5 taps lie inside the columns and the normal stop
+       needs no powf (an integer phi_normal or one whose far taps are dropped) */
+    if (!(P.ipn || P.nfar)) simd = 0;
+#else
+    (void)simd;
+#endif
+    for (y = y0; y < y1; ++y) {
+        x = 0;
+#if FOVPT__DN_SSE2
+        if (simd) {
+            uint32_t m = 2u * (uint32_t)P.step;
+            for (; x < m && x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
+            for (; x + 3u + m < P.W; x += 4u) fovpt__dn_px4(dn, &P, x, y);
+        }
+#endif
+        for (; x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
+    }
+}
+
+FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
+                                               uint32_t y1)
+{
     if (!dn) return FOV_ERR_NULL;
     if (!dn->in_frame)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: call fovpt_denoise_frame first");
-    W = dn->cfg.width; H = dn->cfg.height;
     if (pass >= dn->passes)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: pass must be below fovpt_denoise_passes");
-    if (y0 > y1 || y1 > H)
+    if (y0 > y1 || y1 > dn->cfg.height)
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: needs y0 <= y1 <= height");
     if (!fovpt__dn_phase_ok(dn, y0, y1, 2.0f + (float)pass))
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: a row has not finished the previous phase (temporal "
                     "or pass - 1) or already ran a later pass");
-    alb = dn->guide.albedo != NULL;
-    pk = dn->pack;
-    src = dn->buf[pass & 1u];
-    dst = dn->buf[(pass & 1u) ^ 1u];
-    step = 1 << pass;
-    fstep = (float)step;
-    ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
-    pn = dn->cfg.phi_normal;
-    nfar = pn * 0.287682072f >= 30.0f; /* c < 3/4: c^phi_normal below e^-30, the tap dropped */
-    nser = pn >= 32.0f; /* the series (weight error below 3.2e-6; smaller pn: exact power) */
-    ipn = 0;
-    if (pn <= 4096.0f && fov__is0(pn - FOV__FLOOR(pn))) ipn = (uint32_t)pn;
-    for (y = y0; y < y1; ++y) {
-        const float *r0 = src + 4u * (size_t)(y > 0 ? y - 1u : 0u) * W;
-        const float *r1 = src + 4u * (size_t)y * W;
-        const float *r2 = src + 4u * (size_t)(y + 1u < H ? y + 1u : y) * W;
-        for (x = 0; x < W; ++x) {
-            size_t i = (size_t)y * W + x;
-            const float *p = src + 4u * i, *gp = pk + 8u * i, *hk;
-            float *o = dst + 4u * i;
-            float zp = gp[0], sl[2], lp, v3, sig, ws = 0.0f, wv = 0.0f, idz[3][3];
-            float acc[3] = { 0.0f, 0.0f, 0.0f };
-            int dx, dy, dx0, dx1, dy0, dy1, rad, hitp = zp > 0.0f;
-            uint32_t xm = x > 0 ? x - 1u : 0u, xp = x + 1u < W ? x + 1u : x;
-            if (fstep > dn->cfg.fovea_step * dn->coarse[i]) { /* not at this pixel */
-                o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
-                continue;
-            }
-            /* the variance's 3 x 3 Gaussian (edge pixels repeated) */
-            v3 = 0.25f * (0.25f * r0[4u * xm + 3u] + 0.5f * r0[4u * x + 3u] +
-                          0.25f * r0[4u * xp + 3u]) +
-                 0.5f * (0.25f * r1[4u * xm + 3u] + 0.5f * r1[4u * x + 3u] +
-                         0.25f * r1[4u * xp + 3u]) +
-                 0.25f * (0.25f * r2[4u * xm + 3u] + 0.5f * r2[4u * x + 3u] +
-                          0.25f * r2[4u * xp + 3u]);
-            v3 = fov__maxf(v3, 0.0f);
-            lp = fovpt__lum(p);
-            sig = 1.0f / (dn->cfg.phi_lum * FOV__SQRT(v3) + 1e-6f);
-            rad = dn->coarse[i] >= dn->cfg.r_small ? 1 : 2;
-            hk = rad == 1 ? h3 : h5;
-            /* the taps inside the image */
-            dx0 = -fovpt__dn_mini(rad, (int)x / step);
-            dx1 = fovpt__dn_mini(rad, (int)(W - 1u - x) / step);
-            dy0 = -fovpt__dn_mini(rad, (int)y / step);
-            dy1 = fovpt__dn_mini(rad, (int)(H - 1u - y) / step);
-            if (hitp) { /* the depth stop's denominators per |offset| */
-                int a, b;
-                fovpt__dn_pslope(pk, W, H, x, y, sl);
-                sl[0] *= dn->cfg.phi_depth * fstep; sl[1] *= dn->cfg.phi_depth * fstep;
-                for (b = 0; b <= rad; ++b)
-                    for (a = 0; a <= rad; ++a)
-                        idz[b][a] = 1.0f / (sl[0] * (float)a + sl[1] * (float)b + 1e-3f * zp);
-            }
-            for (dy = dy0; dy <= dy1; ++dy) {
-                size_t row = (size_t)((int)y + dy * step) * W;
-                float hy = hk[dy + rad];
-                int ady = dy < 0 ? -dy : dy;
-                for (dx = dx0; dx <= dx1; ++dx) {
-                    size_t j = row + (size_t)((int)x + dx * step);
-                    const float *q = src + 4u * j, *gq = pk + 8u * j;
-                    float w = hk[dx + rad] * hy, ex;
-                    if (dx || dy) {
-                        if (hitp != (gq[0] > 0.0f)) continue;
-                        ex = fov__absf(lp - fovpt__lum(q)) * sig;
-                        if (hitp) {
-                            float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
-                            ex += fov__absf(zp - gq[0]) * idz[ady][dx < 0 ? -dx : dx];
-                            if (nser && c >= 0.75f) {
-                                ex += pn * fovpt__dn_nlog(c);
-                            } else {
-                                if ((nfar && c < 0.75f) || !(c > 0.0f)) continue;
-                                w *= ipn ? fovpt__dn_ipow(c, ipn) : FOV__POW(c, pn);
-                            }
-                        }
-                        if (alb) {
-                            float a0 = gp[4] - gq[4], a1 = gp[5] - gq[5], a2 = gp[6] - gq[6];
-                            ex += (a0 * a0 + a1 * a1 + a2 * a2) * ia2;
-                        }
-                        if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
-                        w *= fovpt__exp_neg(ex);
-                        if (!(w > 1e-13f)) continue;
-                    }
-                    for (k = 0; k < 3; ++k) acc[k] += w * q[k];
-                    ws += w;
-                    wv += w * w * fov__maxf(q[3], 0.0f);
-                }
-            }
-            for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
-            o[3] = wv / (ws * ws);
-        }
-    }
-    for (y = y0; y < y1; ++y) *fovpt__dn_rowmark(dn, y) = 2.0f + (float)pass;
+    fovpt__dn_atrous(dn, pass, y0, y1, 1);
+    for (; y0 < y1; ++y0) *fovpt__dn_rowmark(dn, y0) = 2.0f + (float)pass;
     return FOV_OK;
 }
 

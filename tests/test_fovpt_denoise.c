@@ -17,7 +17,7 @@
  * (the running mean for the first frames); a camera moved by exactly one pixel over a
  * fronto-parallel plane reads its history one pixel over.
  */
-#define FOVPT_IMPLEMENTATION /* the implementation here: a check calls fovpt__dn_nlog */
+#define FOVPT_IMPLEMENTATION /* the implementation here: checks call fovpt__dn_nlog, fovpt__dn_atrous */
 #include "fovpt.h"
 #include "fovcheck.h"
 
@@ -593,85 +593,85 @@ static void t_same_image(void)
 
 /* var with accumulate: the variance of the accumulated mean (second call's sample variance /
    4 accumulated samples, about half the first call's / 2) */
-static void t_var_accum(void)
-{
-    fovpt_material m;
+/* the box of t_var_accum and t_two_stride1 (walls albedo 0.6 / 0.5 / 0.4, emission 0.3), w x h,
+   rendered with c and its guides into r->a (frame 0); -1: the scene did not build */
+typedef struct box_run {
+    fovpt_material m; /* the scene keeps a pointer to it */
     fovpt_scene s;
     fovpt_camera cam;
-    fovpt_config c = fovpt_config_default();
     fovpt_ctx ctx;
     fovpt_output o;
-    fov_gaze g = { 20.0f, 15.0f };
-    void *sm = NULL, *mem;
-    size_t b = 0, i;
-    double v0 = 0.0, v1 = 0.0;
+    void *sm, *mem;
     img a;
+} box_run;
+static int box_run_start(box_run *r, const fovpt_config *c, uint32_t w, uint32_t h, fov_gaze g)
+{
+    size_t b = 0;
     int ok;
-    fovpt_material_init(&m);
-    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
-    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
-    if (!box_scene(&s, &sm, &m)) return;
-    box_cam(&cam, 40, 30);
-    img_alloc(&a, 40, 30);
+    fovpt_material_init(&r->m);
+    r->m.albedo[0] = 0.6f; r->m.albedo[1] = 0.5f; r->m.albedo[2] = 0.4f;
+    r->m.emission[0] = r->m.emission[1] = r->m.emission[2] = 0.3f;
+    r->sm = r->mem = NULL;
+    if (!box_scene(&r->s, &r->sm, &r->m)) return -1;
+    box_cam(&r->cam, w, h);
+    img_alloc(&r->a, w, h);
+    ok = fovpt_memory_size(c, &r->cam, &b) == FOV_OK;
+    r->mem = malloc(b + 16u);
+    ok = ok && fovpt_init(&r->ctx, c, &r->s, &r->cam, g, r->mem, b) == FOV_OK;
+    fovpt_output_init(&r->o);
+    r->o.rgb = r->a.rgb;
+    return ok && fovpt_render_guide(&r->ctx, 0, &r->o, &r->a.g, NULL) == FOV_OK;
+}
+static void box_run_end(box_run *r)
+{
+    free(r->mem); free(r->sm);
+    img_free(&r->a);
+}
+
+static void t_var_accum(void)
+{
+    fovpt_config c = fovpt_config_default();
+    fov_gaze g = { 20.0f, 15.0f };
+    box_run r;
+    size_t i;
+    double v0 = 0.0, v1 = 0.0;
+    int ok;
     c.method = FOVPT_METHOD_UNIFORM; c.spp = 2; c.accumulate = 1;
-    fovpt_memory_size(&c, &cam, &b);
-    mem = malloc(b + 16u);
-    ok = fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
-    fovpt_output_init(&o);
-    o.rgb = a.rgb;
-    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
-    for (i = 0; i < 40u * 30u; ++i) v0 += (double)a.var[i];
-    ok = ok && fovpt_render_guide(&ctx, 1, &o, &a.g, NULL) == FOV_OK;
-    for (i = 0; i < 40u * 30u; ++i) v1 += (double)a.var[i];
-    check(ok && a.spp[0] == 4.0f && v0 > 0.0 && v1 / v0 > 0.35 && v1 / v0 < 0.65, "guide_var_accumulate",
-          "ok %d spp %g, mean var %g -> %g (ratio %.3f, want ~0.5)", ok, (double)a.spp[0], v0 / 1200.0, v1 / 1200.0, v1 / v0);
-    free(mem); free(sm);
-    img_free(&a);
+    ok = box_run_start(&r, &c, 40, 30, g);
+    if (ok < 0) return;
+    for (i = 0; i < 40u * 30u; ++i) v0 += (double)r.a.var[i];
+    ok = ok && fovpt_render_guide(&r.ctx, 1, &r.o, &r.a.g, NULL) == FOV_OK;
+    for (i = 0; i < 40u * 30u; ++i) v1 += (double)r.a.var[i];
+    check(ok && r.a.spp[0] == 4.0f && v0 > 0.0 && v1 / v0 > 0.35 && v1 / v0 < 0.65, "guide_var_accumulate",
+          "ok %d spp %g, mean var %g -> %g (ratio %.3f, want ~0.5)", ok, (double)r.a.spp[0], v0 / 1200.0, v1 / 1200.0, v1 / v0);
+    box_run_end(&r);
 }
 
 /* two stride-1 layers overlapping in their blend band: the guides come from the layer with
    the larger resolve weight (inner where vb > 1/2: 4 spp, var >= 0; outer: 1 spp, var -1) */
 static void t_two_stride1(void)
 {
-    fovpt_material m;
-    fovpt_scene s;
-    fovpt_camera cam;
     fovpt_config c = fovpt_config_default();
-    fovpt_ctx ctx;
-    fovpt_output o;
     fov_gaze g = { 80.0f, 60.0f };
-    void *sm = NULL, *mem;
-    size_t b = 0;
+    box_run r;
     uint32_t x, y, in_n = 0, in_bad = 0, out_n = 0, out_bad = 0;
-    img a;
     int ok;
-    fovpt_material_init(&m);
-    m.albedo[0] = 0.6f; m.albedo[1] = 0.5f; m.albedo[2] = 0.4f;
-    m.emission[0] = m.emission[1] = m.emission[2] = 0.3f;
-    if (!box_scene(&s, &sm, &m)) return;
-    box_cam(&cam, 160, 120);
-    img_alloc(&a, 160, 120);
     c.method = FOVPT_METHOD_LAYERS; c.spp = 1;
     c.layers.count = 2; c.layers.blend_deg = 6.0f;
     c.layers.layer[0].stride = 1; c.layers.layer[0].spp = 1; c.layers.layer[0].radius_deg = 0.0f;
     c.layers.layer[1].stride = 1; c.layers.layer[1].spp = 4; c.layers.layer[1].radius_deg = 10.0f;
-    ok = fovpt_memory_size(&c, &cam, &b) == FOV_OK;
-    mem = malloc(b + 16u);
-    ok = ok && fovpt_init(&ctx, &c, &s, &cam, g, mem, b) == FOV_OK;
-    fovpt_output_init(&o);
-    o.rgb = a.rgb;
-    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    ok = box_run_start(&r, &c, 160, 120, g);
+    if (ok < 0) return;
     for (y = 0; ok && y < 120; ++y)
         for (x = 0; x < 160; ++x) {
-            float e = fovpt_ecc_deg(&ctx.ecc, (float)x + 0.5f, (float)y + 0.5f), v = a.var[y * 160u + x];
+            float e = fovpt_ecc_deg(&r.ctx.ecc, (float)x + 0.5f, (float)y + 0.5f), v = r.a.var[y * 160u + x];
             if (e > 7.3f && e < 9.7f) { in_n++; in_bad += !(v >= 0.0f); }
-            if (e > 10.3f && e < 12.7f && e <= ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
+            if (e > 10.3f && e < 12.7f && e <= r.ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
         }
     check(ok && in_n > 20u && out_n > 20u && in_bad == 0u && out_bad == 0u, "guide_two_stride1_layers_larger_weight",
           "ok %d: inner half of the band %u px (%u without var), outer half %u px (%u with var; trace %g deg)", ok, in_n, in_bad,
-          out_n, out_bad, ok ? (double)ctx.layer_trace_deg[1] : 0.0);
-    free(mem); free(sm);
-    img_free(&a);
+          out_n, out_bad, ok ? (double)r.ctx.layer_trace_deg[1] : 0.0);
+    box_run_end(&r);
 }
 
 /* a synthetic frame: left third sky (depth 0), the rest a wall at depth 2 facing the camera,
@@ -947,6 +947,22 @@ static void t_kernel_ref(void)
     img_free(&a);
 }
 
+/* the flat guides of t_adaptive and t_skip_evidence: albedo 0.5, normal +z, depth 1, the
+   given spp and var at every pixel */
+static void flat_guides(img *a, float spp, float var)
+{
+    size_t i, k, n = (size_t)a->w * a->h;
+    for (i = 0; i < n; ++i) {
+        for (k = 0; k < 3; ++k) {
+            a->alb[3 * i + k] = 0.5f;
+            a->nrm[3 * i + k] = k == 2 ? 1.0f : 0.0f;
+        }
+        a->dep[i] = 1.0f;
+        a->spp[i] = spp;
+        a->var[i] = var;
+    }
+}
+
 /* the adaptive policy: a converged pixel (spp far above spp_full, or noise below skip_noise
    display codes) is left as it is; below, the same image is filtered */
 static void t_adaptive(void)
@@ -963,19 +979,15 @@ static void t_adaptive(void)
         fov_gaze g = { 20.0f, 15.0f };
         double diff = 0.0;
         int ok, k;
-        for (i = 0; i < n; ++i) {
+        for (i = 0; i < n; ++i)
             for (k = 0; k < 3; ++k) {
                 s = s * 1664525u + 1013904223u;
                 a.rgb[3 * i + (size_t)k] = 0.4f + 0.2f * ((float)(s >> 8) / 16777216.0f);
-                a.alb[3 * i + (size_t)k] = 0.5f;
-                a.nrm[3 * i + (size_t)k] = k == 2 ? 1.0f : 0.0f;
             }
-            a.dep[i] = 1.0f;
-            /* 0: 1024 spp (k = 1/8: widest step 1/2, no pass); 1: 16 spp (every pass);
-               2: var 0 from 8 spp (noise 0 codes: skipped); 3: var 1e-4 (~1.3 codes: filtered) */
-            a.spp[i] = mode == 0 ? 1024.0f : mode == 1 ? 16.0f : 8.0f;
-            a.var[i] = mode == 2 ? 0.0f : mode == 3 ? 1e-4f : 0.003f;
-        }
+        /* 0: 1024 spp (k = 1/8: widest step 1/2, no pass); 1: 16 spp (every pass);
+           2: var 0 from 8 spp (noise 0 codes: skipped); 3: var 1e-4 (~1.3 codes: filtered) */
+        flat_guides(&a, mode == 0 ? 1024.0f : mode == 1 ? 16.0f : 8.0f,
+                    mode == 2 ? 0.0f : mode == 3 ? 1e-4f : 0.003f);
         dc.width = W; dc.height = H; dc.no_temporal = 1; dc.spp_ref = 16.0f;
         ok = dn_once(&dc, &a, g, out, NULL);
         for (i = 0; i < n * 3u; ++i) diff += fabs((double)out[i] - (double)a.rgb[i]);
@@ -1085,15 +1097,10 @@ static void t_skip_evidence(void)
         for (y = 0; y < H; ++y)
             for (x = 0; x < W; ++x) {
                 i = (size_t)y * W + x;
-                for (k = 0; k < 3; ++k) {
+                for (k = 0; k < 3; ++k)
                     a.rgb[3 * i + (size_t)k] = (x % 4u == 0u && y % 4u == 0u) ? 1.0f : 0.0f;
-                    a.alb[3 * i + (size_t)k] = 0.5f;
-                    a.nrm[3 * i + (size_t)k] = k == 2 ? 1.0f : 0.0f;
-                }
-                a.dep[i] = 1.0f;
-                a.spp[i] = spp16 ? 16.0f : 1.0f;
-                a.var[i] = 0.0f;
             }
+        flat_guides(&a, spp16 ? 16.0f : 1.0f, 0.0f);
         dc.width = W; dc.height = H; dc.no_temporal = 1; dc.spp_ref = a.spp[0];
         dc.phi_lum = 1000.0f; /* a weak luminance stop: black pixels blend with lit ones */
         ok = dn_once(&dc, &a, g, out, NULL);
@@ -1114,6 +1121,98 @@ static void t_skip_evidence(void)
     img_free(&a);
 }
 
+/* The SSE2 a-trous pass (4 pixels of a row at once, fovpt__dn_px4) against the scalar pass
+   (fovpt__dn_px, the reference): the same float operations in the same order lane by lane,
+   so every output float must be bit-identical (the bound: 0; the builds here do not contract
+   to FMA). Every pass of a 5-level frame, for phi_normal 32 (the -ln c series, c < 3/4 by
+   the integer power), 128 and 200.5 (series, far taps dropped), 8 (integer power alone) and
+   3.5 (powf: the scalar pass alone, trivially equal), with and without the albedo guide, on
+   random images (normals up to 90 degrees apart, misses, spp and var mixed so lanes of a
+   group differ in radius, in being filtered and in hitting) and on the images the other
+   checks use (the kernel reference's regions, the faceted terrain, the sky/wall frame).
+   Elsewhere (no SSE2, FOVPT_NO_SIMD) both calls take the scalar pass. Checked to fail when
+   one lane is wrong: a tap read one pixel over in one lane or at one offset, one lane's
+   kernel weight at one offset times 1.0001, one lane's luminance, series, integer power,
+   albedo or depth slope perturbed, a passed-through lane not copied, the far drop left out. */
+static void simd_img(img *a, int kind, uint32_t seed)
+{
+    uint32_t x, y, k, s = seed, W = a->w, H = a->h;
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            double t, u;
+            s = s * 1664525u + 1013904223u;
+            for (k = 0; k < 3; ++k) {
+                s = s * 1664525u + 1013904223u;
+                a->rgb[3 * i + k] = (kind == 1 ? (x * 3u < W ? 0.3f : 0.6f) : 0.0f) + ((float)(s >> 8) / 16777216.0f) * (kind == 0 ? 2.0f : 0.3f);
+                a->alb[3 * i + k] = kind == 0 ? (float)(s >> 20) / 4096.0f : 0.5f;
+            }
+            s = s * 1664525u + 1013904223u;
+            t = kind == 0 ? 1.5708 * ((double)(s >> 8) / 16777216.0) : kind == 2 ? 0.2094 * ((double)(s >> 8) / 16777216.0 - 0.5) : (x * 3u < 2u * W ? 0.0 : 0.5236);
+            s = s * 1664525u + 1013904223u;
+            u = kind == 0 ? 0.8 * ((double)(s >> 8) / 16777216.0 - 0.5) : kind == 2 ? 0.2094 * ((double)(s >> 8) / 16777216.0 - 0.5) : 0.0;
+            a->nrm[3 * i] = (float)(sin(t) * cos(u)); a->nrm[3 * i + 1] = (float)sin(u);
+            a->nrm[3 * i + 2] = (float)(cos(t) * cos(u));
+            s = s * 1664525u + 1013904223u;
+            if (kind == 0) a->dep[i] = (s >> 28) == 0u ? 0.0f : 1.0f + (float)(s >> 8) / 16777216.0f * ((s & 1u) ? 3.0f : 0.01f);
+            else a->dep[i] = (kind == 1 && x * 3u < W) ? 0.0f : 2.0f + 0.01f * (float)x;
+            s = s * 1664525u + 1013904223u;
+            a->spp[i] = kind == 0 ? (float)(1u + (s >> 27)) : 2.0f;
+            a->var[i] = kind == 0 ? ((s & 3u) ? 0.02f * (float)(s >> 8) / 16777216.0f : -1.0f) : -1.0f;
+        }
+}
+static void t_simd_scalar(void)
+{
+    const uint32_t W = 101, H = 45;
+    static const float pns[5] = { 32.0f, 128.0f, 200.5f, 8.0f, 3.5f };
+    size_t n = (size_t)W * H;
+    img a;
+    float *ref = (float *)malloc(n * 16u);
+    int kind, ip, alb;
+    img_alloc(&a, W, H);
+    for (kind = 0; kind < 3; ++kind)
+        for (ip = 0; ip < 5; ++ip)
+            for (alb = 0; alb < 2; ++alb) {
+                fovpt_denoise dn;
+                fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+                fovpt_camera cam;
+                fov_gaze g = { 30.0f, 20.0f };
+                void *dm = NULL;
+                uint32_t p, nd = 0, passes = 0;
+                double worst = 0.0;
+                size_t i;
+                int ok;
+                simd_img(&a, kind, 1234u + (uint32_t)(kind * 10 + ip));
+                a.g.albedo = alb ? a.alb : NULL;
+                dc.width = W; dc.height = H; dc.phi_normal = pns[ip];
+                if (kind == 0) dc.spp_ref = 8.0f; /* lanes mixed: 3 x 3 and 5 x 5, some passed through */
+                else { dc.fovea_step = 65536.0f; dc.skip_noise = 1e-9f; dc.spp_full = 1e30f; }
+                fovpt_camera_init(&cam, W, H);
+                ok = dn_make(&dn, &dc, &dm);
+                ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                     fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
+                for (p = 0; ok && p < dn.passes; ++p) {
+                    float *dst = dn.buf[(p & 1u) ^ 1u];
+                    fovpt__dn_atrous(&dn, p, 0, H, 0);
+                    memcpy(ref, dst, n * 16u);
+                    fovpt__dn_atrous(&dn, p, 0, H, 1);
+                    for (i = 0; i < n * 4u; ++i) {
+                        double d = fabs((double)dst[i] - (double)ref[i]);
+                        if (!(d <= worst)) worst = d; /* NaN too */
+                        nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
+                    }
+                    passes++;
+                }
+                check(ok && passes == 5u && nd == 0u && worst == 0.0,
+                      N("atrous_simd_equals_scalar_%s_pn%g%s", kind == 0 ? "random" : kind == 1 ? "regions" : "faceted", (double)pns[ip], alb ? "" : "_noalbedo"),
+                      "%u of %u floats differ in bits over %u passes, max |simd - scalar| %g (want 0; ok %d)", nd, (unsigned)(n * 4u) * passes, passes, worst, ok);
+                free(dm);
+            }
+    a.g.albedo = a.alb;
+    free(ref);
+    img_free(&a);
+}
+
 int main(void)
 {
     t_constant();
@@ -1131,5 +1230,6 @@ int main(void)
     t_adaptive();
     t_faceted();
     t_skip_evidence();
+    t_simd_scalar();
     return fovcheck_summary();
 }
