@@ -1764,10 +1764,13 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    >= 104.3); the border columns (2 * 2^pass wide), a row's last width % 4 pixels and other
    phi_normal take the scalar pass. Each lane performs the scalar pass's float operations in
    its order (a tap the scalar pass skips adds +0), so the image is bit-identical to
-   FOVPT_NO_SIMD's (tests/test_fovpt_denoise.c: atrous_simd_equals_scalar_*; a build that
-   contracts to FMA, e.g. -march=native with gcc's default -ffp-contract=fast, may round
-   differently). Measured (callgrind, one LAYERS KTH-radius frame 320 x 240, instructions
-   per pixel, temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
+   FOVPT_NO_SIMD's (tests/test_fovpt_denoise.c: atrous_simd_equals_scalar_*, widths 13,
+   30, 101, an input that overflows the variance) when the compiler does not contract the
+   scalar a * b + c into FMA: with FMA enabled (-mfma, -march=native) gcc's default
+   -ffp-contract=fast and clang's default contract it, so such a build rounds a few values
+   differently; -ffp-contract=off keeps them equal. Measured (a harness outside the
+   repository: callgrind, one LAYERS KTH-radius frame 320 x 240, instructions per pixel,
+   temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
    1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved in one
    program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
    Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
@@ -3126,8 +3129,9 @@ typedef v128_t fovpt__m4;
 #define FOVPT__SIMD 0
 #endif
 #define FOVPT__SSE (FOVPT__SIMD == 1)
-/* the denoiser's a-trous pass 4 pixels at once: SSE2 (x86-64, or x86 with SSE2) */
-#if FOVPT__SIMD == 1 && (defined(__SSE2__) || defined(_M_X64) || \
+/* the denoiser's a-trous pass 4 pixels at once: SSE2 (x86-64, or x86 with SSE2 float maths:
+   a 32-bit gcc build with -msse2 alone keeps x87 maths for the scalar reference) */
+#if FOVPT__SIMD == 1 && ((defined(__SSE2__) && defined(__SSE2_MATH__)) || defined(_M_X64) || \
                          (defined(_M_IX86_FP) && _M_IX86_FP >= 2))
 #define FOVPT__DN_SSE2 1
 #include <emmintrin.h>
@@ -8039,8 +8043,8 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
 
 /* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
    columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
-   order, so the result is bit-identical to fovpt__dn_px (no FMA contraction: the library is
-   built without -ffp-contract=fast on x86-64 SSE2; see NUMERICS) */
+   order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
+   contract the scalar code into FMA (see the denoiser's block above) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                uint32_t y)
 {
@@ -8229,11 +8233,15 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                 live = _mm_and_ps(live, _mm_cmpgt_ps(w, _mm_set1_ps(1e-13f)));
                 w = _mm_and_ps(live, w);
             }
-            acc0 = _mm_add_ps(acc0, _mm_mul_ps(w, q0));
-            acc1 = _mm_add_ps(acc1, _mm_mul_ps(w, q1));
-            acc2 = _mm_add_ps(acc2, _mm_mul_ps(w, q2));
+            /* a lane whose tap the scalar pass skips adds an exact +0, not +0 times its
+               value (an infinite value would make NaN); the centre tap is every lane's */
+            if (!(dx || dy)) live = _mm_cmpeq_ps(zero, zero);
+            acc0 = _mm_add_ps(acc0, _mm_and_ps(live, _mm_mul_ps(w, q0)));
+            acc1 = _mm_add_ps(acc1, _mm_and_ps(live, _mm_mul_ps(w, q1)));
+            acc2 = _mm_add_ps(acc2, _mm_and_ps(live, _mm_mul_ps(w, q2)));
             ws = _mm_add_ps(ws, w);
-            wv = _mm_add_ps(wv, _mm_mul_ps(_mm_mul_ps(w, w), _mm_max_ps(q3, zero)));
+            wv = _mm_add_ps(wv, _mm_and_ps(live, _mm_mul_ps(_mm_mul_ps(w, w),
+                                                              _mm_max_ps(q3, zero))));
         }
     }
     q0 = _mm_div_ps(acc0, ws);

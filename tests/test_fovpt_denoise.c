@@ -1169,6 +1169,7 @@ static void t_simd_scalar(void)
     img a;
     float *ref = (float *)malloc(n * 16u);
     int kind, ip, alb;
+    if (!check(ref != NULL, "atrous_simd_equals_scalar: memory", "malloc")) return;
     img_alloc(&a, W, H);
     for (kind = 0; kind < 3; ++kind)
         for (ip = 0; ip < 5; ++ip)
@@ -1213,6 +1214,73 @@ static void t_simd_scalar(void)
     img_free(&a);
 }
 
+/* The same comparison at widths that are not multiples of 4 (13, 30: the border columns and
+   a row's last width % 4 pixels) and on an image whose every 7th pixel is 1e20 (the temporal
+   variance overflows to inf: a lane whose tap the scalar pass skips must add nothing, not
+   0 times inf). Bit-identical again, NaNs included (both paths use the same SSE arithmetic). */
+static void t_simd_scalar_edge(void)
+{
+    static const uint32_t ws[2] = { 13u, 30u };
+    static const float pns[2] = { 32.0f, 8.0f };
+    uint32_t iw;
+    int big, ip;
+    for (iw = 0; iw < 2; ++iw)
+        for (big = 0; big < 2; ++big)
+            for (ip = 0; ip < 2; ++ip) {
+                const uint32_t W = ws[iw], H = 11;
+                size_t n = (size_t)W * H, i;
+                img a;
+                float *ref = (float *)malloc(n * 16u);
+                fovpt_denoise dn;
+                fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+                fovpt_camera cam;
+                fov_gaze g = { 6.0f, 5.0f };
+                void *dm = NULL;
+                uint32_t p, nd = 0, passes = 0, nan = 0;
+                int ok = ref != NULL;
+                img_alloc(&a, W, H);
+                simd_img(&a, 0, 77u + iw * 5u + (uint32_t)(big * 2 + ip));
+                if (big)
+                    for (i = 0; i < n; i += 7u) a.rgb[3 * i] = a.rgb[3 * i + 1] = 1e20f;
+                a.g.albedo = a.alb;
+                dc.width = W; dc.height = H; dc.phi_normal = pns[ip]; dc.spp_ref = 8.0f;
+                fovpt_camera_init(&cam, W, H);
+                ok = ok && dn_make(&dn, &dc, &dm);
+                ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                     fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
+                for (p = 0; ok && p < dn.passes; ++p) {
+                    float *dst = dn.buf[(p & 1u) ^ 1u];
+                    fovpt__dn_atrous(&dn, p, 0, H, 0);
+                    memcpy(ref, dst, n * 16u);
+                    fovpt__dn_atrous(&dn, p, 0, H, 1);
+                    for (i = 0; i < n * 4u; ++i) {
+                        nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
+                        nan += dst[i] != dst[i];
+                    }
+                    passes++;
+                }
+                check(ok && passes > 0u && nd == 0u,
+                      N("atrous_simd_equals_scalar_w%u%s_pn%g", W, big ? "_1e20" : "", (double)pns[ip]),
+                      "%u floats differ in bits over %u passes (%u NaN in the SIMD output; ok %d)", nd, passes, nan, ok);
+                if (big) { /* the public run on the same input: a finite image (no NaN, no inf) */
+                    float *o3 = (float *)malloc(n * 3u * sizeof(float));
+                    fovpt_output out;
+                    uint32_t badv = 0;
+                    fovpt_output_init(&out);
+                    out.rgb = o3;
+                    ok = o3 && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                         fovpt_denoise_run(&dn, &out) == FOV_OK;
+                    for (i = 0; ok && i < n * 3u; ++i) badv += !(o3[i] >= 0.0f && o3[i] <= FLT_MAX);
+                    check(ok && badv == 0u, N("denoise_run_1e20_finite_w%u_pn%g", W, (double)pns[ip]),
+                          "%u of %u values NaN, infinite or negative (ok %d)", badv, (unsigned)(n * 3u), ok);
+                    free(o3);
+                }
+                free(dm);
+                free(ref);
+                img_free(&a);
+            }
+}
+
 int main(void)
 {
     t_constant();
@@ -1231,5 +1299,6 @@ int main(void)
     t_faceted();
     t_skip_evidence();
     t_simd_scalar();
+    t_simd_scalar_edge();
     return fovcheck_summary();
 }
