@@ -1,4 +1,4 @@
-/* fovpt.h - v0.8.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.9.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -552,6 +552,18 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.9.0 (2026-12-05) A stratified sampler (SAMPLERS): cfg.sampler = FOVPT_SAMPLER_SOBOL,
+                      fovpt_rng_init_sobol, enum fovpt_sampler; fovpt_config gains `sampler`
+                      after `accumulate` (positional initialisers of the later fields move),
+                      fovpt_rng grows to 32 bytes. Default RANDOM: images unchanged.
+                      BVH: the box test's margin folded into the far planes' reciprocals
+                      (Ize 2013), leaf blocks carry slot, id, material and normal so a hit
+                      does not read the primitive record (scene memory 303 bytes per
+                      triangle, was 279; same hits): terrain 1.10 / 1.20x (SSE2, camera /
+                      bounce), 1.15 / 1.17x (AVX2) side by side. Rays with a direction
+                      component in (0, FLT_MIN) take the brute-force loop (their boxes could
+                      be culled: a hit the BVH lost, 0.8.0 too). Denoiser: an SSE2 a-trous
+                      pass, bit-identical to the scalar one, 1.7-1.85x faster filter.
    0.8.0 (2026-12-05) Denoiser: phi_normal 32 by default (was 128): faceted and bumpy surfaces
                       are filtered as one surface, creases of 30 degrees or more stay edges; the
                       fast -ln c series serves every phi_normal >= 32 (absolute weight error
@@ -647,9 +659,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 8
+#define FOVPT_VERSION_MINOR 9
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.8.0"
+#define FOVPT_VERSION_STRING "0.9.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
