@@ -31,6 +31,16 @@ static double now_ms(void)
 #endif
 }
 
+static void usage(FILE *f, const char *argv0)
+{
+    fprintf(f, "usage: %s [--ref-spp N] [--w W --h H] [--seeds S] [--scene K] [--out FILE]\n"
+               "  --ref-spp N  samples per pixel of the UNIFORM reference (default 2048)\n"
+               "  --w W --h H  image size (default 160 x 120)\n"
+               "  --seeds S    seeds per row (default 4)\n"
+               "  --scene K    one scene only (0 cornell, 1 mesh100k, 2 cubes441, 3 mirrors, 4 interior)\n"
+               "  --out FILE   the CSV (default bench/results/pt_sampler.csv)\n", argv0);
+}
+
 static int render(pt_scene *S, uint32_t method, uint32_t sampler, uint32_t spp, uint32_t seed, float *img,
                   double *ms)
 {
@@ -83,7 +93,8 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--seeds") && i + 1 < argc) seeds = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) { sc0 = (uint32_t)atoi(argv[++i]); sc1 = sc0 + 1; }
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) outp = argv[++i];
-        else { fprintf(stderr, "usage: %s [--ref-spp N] [--w W --h H] [--seeds S] [--scene K] [--out FILE]\n", argv[0]); return 2; }
+        else if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout, argv[0]); return 0; }
+        else { usage(stderr, argv[0]); return 2; }
     }
     if (W < 8 || H < 8 || W > 4096 || H > 4096 || ref_spp < 1 || seeds < 1 || sc1 > PT_SCENE_NUM) {
         fprintf(stderr, "bad arguments\n");
