@@ -1161,6 +1161,29 @@ static void simd_img(img *a, int kind, uint32_t seed)
             a->var[i] = kind == 0 ? ((s & 3u) ? 0.02f * (float)(s >> 8) / 16777216.0f : -1.0f) : -1.0f;
         }
 }
+/* Every a-trous pass of dn's frame, scalar (the reference) then SSE2 into the same buffer:
+   the floats whose bits differ; *passes, the largest |simd - scalar| (NaN counts) and the
+   NaNs of the SSE2 output added up. */
+static uint32_t simd_vs_scalar(fovpt_denoise *dn, float *ref, size_t n, uint32_t H, uint32_t *passes,
+                               double *worst, uint32_t *nan)
+{
+    uint32_t p, nd = 0;
+    size_t i;
+    for (p = 0; p < dn->passes; ++p) {
+        float *dst = dn->buf[(p & 1u) ^ 1u];
+        fovpt__dn_atrous(dn, p, 0, H, 0);
+        memcpy(ref, dst, n * 16u);
+        fovpt__dn_atrous(dn, p, 0, H, 1);
+        for (i = 0; i < n * 4u; ++i) {
+            double d = fabs((double)dst[i] - (double)ref[i]);
+            if (!(d <= *worst)) *worst = d; /* NaN too */
+            nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
+            *nan += dst[i] != dst[i];
+        }
+        ++*passes;
+    }
+    return nd;
+}
 static void t_simd_scalar(void)
 {
     const uint32_t W = 101, H = 45;
@@ -1179,9 +1202,8 @@ static void t_simd_scalar(void)
                 fovpt_camera cam;
                 fov_gaze g = { 30.0f, 20.0f };
                 void *dm = NULL;
-                uint32_t p, nd = 0, passes = 0;
+                uint32_t nd = 0, passes = 0, nnan = 0;
                 double worst = 0.0;
-                size_t i;
                 int ok;
                 simd_img(&a, kind, 1234u + (uint32_t)(kind * 10 + ip));
                 a.g.albedo = alb ? a.alb : NULL;
@@ -1192,18 +1214,7 @@ static void t_simd_scalar(void)
                 ok = dn_make(&dn, &dc, &dm);
                 ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
                      fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
-                for (p = 0; ok && p < dn.passes; ++p) {
-                    float *dst = dn.buf[(p & 1u) ^ 1u];
-                    fovpt__dn_atrous(&dn, p, 0, H, 0);
-                    memcpy(ref, dst, n * 16u);
-                    fovpt__dn_atrous(&dn, p, 0, H, 1);
-                    for (i = 0; i < n * 4u; ++i) {
-                        double d = fabs((double)dst[i] - (double)ref[i]);
-                        if (!(d <= worst)) worst = d; /* NaN too */
-                        nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
-                    }
-                    passes++;
-                }
+                if (ok) nd = simd_vs_scalar(&dn, ref, n, H, &passes, &worst, &nnan);
                 check(ok && passes == 5u && nd == 0u && worst == 0.0,
                       N("atrous_simd_equals_scalar_%s_pn%g%s", kind == 0 ? "random" : kind == 1 ? "regions" : "faceted", (double)pns[ip], alb ? "" : "_noalbedo"),
                       "%u of %u floats differ in bits over %u passes, max |simd - scalar| %g (want 0; ok %d)", nd, (unsigned)(n * 4u) * passes, passes, worst, ok);
@@ -1236,7 +1247,7 @@ static void t_simd_scalar_edge(void)
                 fovpt_camera cam;
                 fov_gaze g = { 6.0f, 5.0f };
                 void *dm = NULL;
-                uint32_t p, nd = 0, passes = 0, nan = 0;
+                uint32_t nd = 0, passes = 0, nan = 0;
                 int ok = ref != NULL;
                 img_alloc(&a, W, H);
                 simd_img(&a, 0, 77u + iw * 5u + (uint32_t)(big * 2 + ip));
@@ -1248,17 +1259,8 @@ static void t_simd_scalar_edge(void)
                 ok = ok && dn_make(&dn, &dc, &dm);
                 ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
                      fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
-                for (p = 0; ok && p < dn.passes; ++p) {
-                    float *dst = dn.buf[(p & 1u) ^ 1u];
-                    fovpt__dn_atrous(&dn, p, 0, H, 0);
-                    memcpy(ref, dst, n * 16u);
-                    fovpt__dn_atrous(&dn, p, 0, H, 1);
-                    for (i = 0; i < n * 4u; ++i) {
-                        nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
-                        nan += dst[i] != dst[i];
-                    }
-                    passes++;
-                }
+                double worst = 0.0;
+                if (ok) nd = simd_vs_scalar(&dn, ref, n, H, &passes, &worst, &nan);
                 check(ok && passes > 0u && nd == 0u,
                       N("atrous_simd_equals_scalar_w%u%s_pn%g", W, big ? "_1e20" : "", (double)pns[ip]),
                       "%u floats differ in bits over %u passes (%u NaN in the SIMD output; ok %d)", nd, passes, nan, ok);

@@ -274,45 +274,35 @@ static void test_render_recipe(void)
         }
     check(bad == 0, "UNIFORM sobol: pixels = mean of camera_ray + radiance on fovpt_rng_init_sobol streams",
           "%u of %u channels differ", bad, 3u * W * H);
-    /* shade_points with the same config: its documented recipe with fovpt_rng_init_sobol */
+    /* shade_points with the same config: its documented recipe with fovpt_rng_init_sobol,
+       jittered over a pixel, and at jitter 0 the ray through the point with the pixel pair
+       drawn and dropped (SAMPLERS) */
     {
         float xy[4] = { 10.5f, 7.5f, 31.25f, 22.75f }, rgb[6];
-        uint32_t i, badp = 0;
-        check(fovpt_shade_points(&S.scene, &ctx.cfg, &S.cam, 2, xy, 2, 100u, frame, 3, 1.0f, rgb, NULL, NULL) == FOV_OK,
-              "shade_points sobol: FOV_OK", "error");
-        for (i = 0; i < 2; ++i) {
-            float sum[3] = { 0.0f, 0.0f, 0.0f }, org[3], dir[3], c3[3];
-            for (k = 0; k < 3; ++k) {
-                fovpt_rng r;
-                float px = xy[2 * i], py = xy[2 * i + 1];
-                fovpt_rng_init_sobol(&r, c.seed, 100u + i, k, frame);
-                px += fovpt_rng_next(&r) - 0.5f;
-                py += fovpt_rng_next(&r) - 0.5f;
-                fovpt_camera_ray(&S.cam, px, py, org, dir);
-                fovpt_radiance(&S.scene, &ctx.cfg, org, dir, &r, c3, NULL);
-                sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+        uint32_t i, jit;
+        for (jit = 0; jit < 2; ++jit) {
+            uint32_t badp = 0;
+            check(fovpt_shade_points(&S.scene, &ctx.cfg, &S.cam, 2, xy, 2, 100u, frame, 3, (float)jit, rgb, NULL,
+                                     NULL) == FOV_OK,
+                  N("shade_points sobol jitter %u: FOV_OK", jit), "error");
+            for (i = 0; i < 2; ++i) {
+                float sum[3] = { 0.0f, 0.0f, 0.0f }, org[3], dir[3], c3[3];
+                for (k = 0; k < 3; ++k) {
+                    fovpt_rng r;
+                    float px = xy[2 * i], py = xy[2 * i + 1], jx, jy;
+                    fovpt_rng_init_sobol(&r, c.seed, 100u + i, k, frame);
+                    jx = fovpt_rng_next(&r); jy = fovpt_rng_next(&r); /* jitter 0: dropped */
+                    if (jit) { px += jx - 0.5f; py += jy - 0.5f; }
+                    fovpt_camera_ray(&S.cam, px, py, org, dir);
+                    fovpt_radiance(&S.scene, &ctx.cfg, org, dir, &r, c3, NULL);
+                    sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+                }
+                for (k = 0; k < 3; ++k)
+                    badp += !(fabsf(rgb[3 * i + k] - sum[k] / 3.0f) <= 1e-5f * (1.0f + sum[k] / 3.0f));
             }
-            for (k = 0; k < 3; ++k) badp += !(fabsf(rgb[3 * i + k] - sum[k] / 3.0f) <= 1e-5f * (1.0f + sum[k] / 3.0f));
+            check(badp == 0, N("shade_points sobol jitter %u: the documented recipe with fovpt_rng_init_sobol%s", jit,
+                               jit ? "" : ", the pixel pair drawn and dropped"), "%u differ", badp);
         }
-        check(badp == 0, "shade_points sobol: the documented recipe with fovpt_rng_init_sobol", "%u differ", badp);
-        /* jitter 0: the ray through the point, the pixel pair drawn and dropped (SAMPLERS) */
-        badp = 0;
-        check(fovpt_shade_points(&S.scene, &ctx.cfg, &S.cam, 2, xy, 2, 100u, frame, 3, 0.0f, rgb, NULL, NULL) == FOV_OK,
-              "shade_points sobol jitter 0: FOV_OK", "error");
-        for (i = 0; i < 2; ++i) {
-            float sum[3] = { 0.0f, 0.0f, 0.0f }, org[3], dir[3], c3[3];
-            for (k = 0; k < 3; ++k) {
-                fovpt_rng r;
-                fovpt_rng_init_sobol(&r, c.seed, 100u + i, k, frame);
-                (void)fovpt_rng_next(&r); (void)fovpt_rng_next(&r);
-                fovpt_camera_ray(&S.cam, xy[2 * i], xy[2 * i + 1], org, dir);
-                fovpt_radiance(&S.scene, &ctx.cfg, org, dir, &r, c3, NULL);
-                sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
-            }
-            for (k = 0; k < 3; ++k) badp += !(fabsf(rgb[3 * i + k] - sum[k] / 3.0f) <= 1e-5f * (1.0f + sum[k] / 3.0f));
-        }
-        check(badp == 0, "shade_points sobol jitter 0: the recipe with the pixel pair drawn and dropped", "%u differ",
-              badp);
     }
     free(mem); free(img); pt_scene_free(&S);
 }
