@@ -370,6 +370,8 @@ CONFIGURATION (define before including the implementation)
    FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
+   FOVPT_MAX_RADIANCE   a sample's radiance is clamped per channel to this, so sums and
+                        squares over FOVPT_MAX_SPP samples stay finite    (default 1e16)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
    FOVPT_ACUITY_GAMMA   fovpt_config_acuity with acuity_budget > 0 minimises the mean of
                         (eye-filtered variance)^gamma                     (default 0.5)
@@ -413,7 +415,9 @@ ERRORS AND LOGGING
    zero normals, quads of zero area (lights or not); indices out of range; a BVH deeper than
    the cap (FOV_ERR_LIMIT); bad layer tables (radii not decreasing with the layer index,
    stride < 1), and every out-of-range config field. Non-finite radiance (from a user hook,
-   say) is replaced by black and counted in fovpt_stats.bad_samples: images never hold NaN.
+   say) is replaced by black and counted in fovpt_stats.bad_samples, and finite radiance is
+   clamped at FOVPT_MAX_RADIANCE (an emission near FLT_MAX summed to infinity before 0.9.1):
+   images never hold NaN or infinity.
    Messages are on by default (no FOV_DEBUG needed). desc.logger (fovpt_scene_size,
    fovpt_scene_build) and cfg.logger (fovpt_config_resolve, fovpt_memory_size, fovpt_init,
    fovpt_radiance and the calls on the context, which keeps a copy) receive each error once:
@@ -1896,6 +1900,9 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
 #endif
 #ifndef FOVPT_MAX_SPP
 #define FOVPT_MAX_SPP 65536u
+#endif
+#ifndef FOVPT_MAX_RADIANCE
+#define FOVPT_MAX_RADIANCE 1e16
 #endif
 
 #ifdef __cplusplus
@@ -5781,6 +5788,9 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (!fov__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
+    } else { /* finite but huge (an emission near FLT_MAX): sums of samples stay finite */
+        uint32_t k;
+        for (k = 0; k < 3; ++k) rgb[k] = fov__minf(rgb[k], (float)FOVPT_MAX_RADIANCE);
     }
     return FOV_OK;
 }

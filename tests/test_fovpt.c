@@ -2717,6 +2717,66 @@ static void test_fuzz_findings(void)
               "%s, hit %d t %g", fovpt_result_string(r), a, (double)h.t);
         free(b.mem);
     }
+    {   /* session 14, fuzzer: an emission near FLT_MAX is finite per sample, but two
+           samples summed to +inf in the image (a lamp of FLT_MAX itself is rejected: its
+           power overflows). Each sample is now clamped per channel at
+           FOVPT_MAX_RADIANCE: every method's image finite, a ray at the lamp returns the cap,
+           and an emission below the cap is returned unchanged. */
+        fovpt_material cm[6];
+        fovpt_shape csh[8];
+        fovpt_scene_desc cd;
+        static const float ems[3] = { 1e38f, 3e37f, 1e15f };
+        uint32_t e, meth, bad = 0, runs = 0, radiance_ok = 0;
+        for (e = 0; e < 3u; ++e) {
+            cornell(cm, csh, &cd, 0);
+            cm[3].emission[0] = cm[3].emission[1] = cm[3].emission[2] = ems[e];
+            cm[3].albedo[0] = cm[3].albedo[1] = cm[3].albedo[2] = 0.0f; /* the lamp reflects nothing */
+            if (build(&b, &cd) != FOV_OK) { ++bad; continue; }
+            {   /* straight up at the lamp (y = 0.999, |x|, |z| < 0.25) */
+                fovpt_config c = fovpt_config_default();
+                fovpt_rng rng;
+                float rgb[3] = { 0, 0, 0 }, want = e < 2u ? (float)FOVPT_MAX_RADIANCE : ems[e];
+                const float o[3] = { 0.0f, 0.0f, 0.0f }, d[3] = { 0.0f, 1.0f, 0.0f };
+                fovpt_rng_init(&rng, 1u, 2u, 0u, 0u);
+                if (fovpt_radiance(&b.s, &c, o, d, &rng, rgb, NULL) == FOV_OK && rgb[0] == want && rgb[1] == want &&
+                    rgb[2] == want)
+                    ++radiance_ok;
+            }
+            for (meth = 0; meth < (uint32_t)_FOVPT_METHOD_NUM; ++meth) {
+                uint32_t mode;
+                for (mode = 0; mode < 2u; ++mode) {
+                    fovpt_config c = fovpt_config_default();
+                    fovpt_camera cam;
+                    fovpt_ctx ctx;
+                    fovpt_output out;
+                    fov_gaze g = { 8.0f, 6.0f };
+                    float img[16 * 12 * 3];
+                    size_t n = 0;
+                    void *mem;
+                    uint32_t i, f;
+                    c.method = meth; c.mode = mode; c.spp = 4; c.accumulate = 1;
+                    fovpt_camera_init(&cam, 16, 12);
+                    cam.pos[2] = -3.0f; cam.target[1] = 0.6f;
+                    if (fovpt_memory_size(&c, &cam, &n) != FOV_OK) { ++bad; continue; }
+                    mem = amalloc(n);
+                    if (fovpt_init(&ctx, &c, &b.s, &cam, g, mem, n) != FOV_OK) { ++bad; free(mem); continue; }
+                    fovpt_output_init(&out);
+                    out.rgb = img;
+                    for (f = 0; f < 3u; ++f) {
+                        if (fovpt_render(&ctx, f, &out, NULL) != FOV_OK) ++bad;
+                        for (i = 0; i < 16u * 12u * 3u; ++i) if (!(img[i] >= 0.0f && img[i] <= FLT_MAX)) ++bad;
+                    }
+                    ++runs;
+                    free(mem);
+                }
+            }
+            free(b.mem);
+        }
+        check(bad == 0 && runs == 3u * 2u * (uint32_t)_FOVPT_METHOD_NUM,
+              "a lamp of emission 1e38 / 3e37 / 1e15: every method, path and Whitted, 3 accumulated frames: finite images",
+              "%u non-finite values or errors in %u runs", bad, runs);
+        check(radiance_ok == 3u, "radiance at the lamp: FOVPT_MAX_RADIANCE for 1e38 and 3e37, 1e15 unchanged", "%u of 3", radiance_ok);
+    }
     {   /* skip_degenerate keeps the documented ids: triangle k reports num_shapes + k */
         static const float tri[18] = { 0, 0, 0, 0, 0, 0, 1, 1, 0, -1, -1, 2, 1, -1, 2, 0, 1, 2 };
         const float o[3] = { 0.0f, 0.0f, 0.0f }, d[3] = { 0.0f, 0.0f, 1.0f };

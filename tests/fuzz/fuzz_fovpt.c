@@ -5,7 +5,7 @@
    geometry, shared edges) plus a few shapes, built into caller memory with canaries after
    every buffer. Then:
    - rays from the bytes (aimed at triangle points, edges and vertices, along axes, in
-     planes, raw): fovpt_intersect / fovpt_occluded against the library's brute force
+     planes, with a component of 2^-100 .. 2^-145, raw): fovpt_intersect / fovpt_occluded against the library's brute force
      (exact: the BVH runs the same per-primitive tests, so its hits are a subset of brute
      force's: a BVH hit implies a brute-force hit no farther away) and against an
      independent double-precision Moller-Trumbore over the input triangles (a hit clearly
@@ -136,11 +136,21 @@ static void fz_rays(fz_in *in, const fovpt_scene *s, const float *pos, uint32_t 
             uint32_t ax = fz_pick(in, 3); /* read in this order (an assignment's operands are unsequenced) */
             d[0] = d[1] = d[2] = 0.0f;
             d[ax] = (fz_u8(in) & 1) ? -1.0f : 1.0f;
-        } else if (mode == 4) { /* in an axis plane, or grazing */
-            uint32_t ax;
+        } else if (mode == 4) { /* in an axis plane, grazing, or a tiny component */
+            uint32_t ax, g;
             for (k = 0; k < 3; ++k) d[k] = fz_unit_range(in, -1.0f, 1.0f);
             ax = fz_pick(in, 3);
-            d[ax] = (fz_u8(in) & 1) ? 0.0f : 1e-7f;
+            g = fz_u8(in);
+            /* 1 in 8: +-2^-100 .. 2^-145, around FLT_MIN (2^-126) and subnormal, whose
+               reciprocal or margin product overflows (the brute-force route, NUMERICS) */
+            if ((g & 7u) == 6u) {
+                d[ax] = ldexpf((g & 128u) ? -1.0f : 1.0f, -100 - 3 * (int)((g >> 3) & 15u));
+                /* and sometimes an origin as close to the plane ax = 0 (where grid and flat
+                   triangles lie): the hit is then at a moderate t */
+                if (fz_u8(in) < 128) o[ax] = ldexpf((fz_u8(in) & 1u) ? -1.0f : 1.0f, -100 - (int)fz_pick(in, 40));
+            } else {
+                d[ax] = (g & 1u) ? 0.0f : 1e-7f;
+            }
         } else {
             for (k = 0; k < 3; ++k) d[k] = fz_float(in, -1.0f, 1.0f);
         }

@@ -6,6 +6,8 @@ F1_camera_ray.bin   1x1 camera, up (3e38, 3e38, 3e38), image point (1e30, 0.5): 
                     non-unit ray before the fix
 F7_axis_face.bin    triangle (-2,-2,0) (1,-2,0) (1,1,0), bvh_min_prims 1, ray from (1,0,1) along
                     -z (lying in the box's max face x = 1): brute force t = 1, the BVH missed
+T14_tiny_direction.bin  a strip 2^-100 thin, rays with a subnormal direction component: the
+                    BVH of 0.8.0 lost the brute-force hits (1/d overflowed)
 F7_box_margin.bin   square [-1,0]^2 at z = -1 (two triangles), ray from (2.558, 1.0000001,
                     1.0000001) along (-1.558, -0.5, -1): brute force t = 2, the BVH missed
 """
@@ -56,6 +58,29 @@ for x in (2.558, 1.0000001, 1.0000001): b += raw_coord(x)
 for x in (-1.558, -0.5, -1.0): b += ffloat_raw(x)
 b += u8(255) + u8(255)
 open(os.path.join(out, 'F7_box_margin.bin'), 'wb').write(b)
+
+# T14: a strip 2^-100 thin beside the origin (two triangles, raw coordinates), rays with a
+# subnormal direction component and a near-parallel course: fovpt 0.8.0's BVH lost these hits
+e = 2.0 ** -100
+b = u8(1) + u8(0) + u8(1) + u8(255)                  # 2 triangles, no shapes, scale 1, no offset
+for t in (((0, -1000, -1000), (0, 1000, -1000), (-e, 0, 1000)),
+          ((0, 2000, -1000), (0, 4000, -1000), (-e, 3000, 1000))):
+    b += u8(0)                                        # mode 0: coordinates as given
+    for v in t:
+        for x in v: b += raw_coord(x)
+for _ in range(3): b += u8(0) + u8(255)
+b += u8(0)                                            # mesh material 0
+b += u8(0) + u8(0) + u8(1) + u8(255)                  # bvh_min_prims 1, leaf default, bins default, skip degenerate
+b += u8(0)                                            # 8 rays
+dx = struct.unpack('<f', struct.pack('<I', 0x00200001))[0]
+o0 = struct.unpack('<f', struct.pack('<I', struct.unpack('<I', struct.pack('<f', 2.0 ** -121))[0] + 1))[0]
+for k in range(8):
+    o = struct.unpack('<f', struct.pack('<I', struct.unpack('<I', struct.pack('<f', o0))[0] + 3 * k))[0]
+    b += u8(5)                                        # mode 5: raw origin and direction
+    for x in (o, 0.0, 0.0): b += raw_coord(x)
+    for x in (dx, 0.0, 1.0): b += ffloat_raw(x)
+    b += u8(0) + ffloat_raw(-2000.0) + u8(0) + ffloat_raw(2000.0)   # tmin -2000, tmax 2000
+open(os.path.join(out, 'T14_tiny_direction.bin'), 'wb').write(b)
 
 # F1: a harmless scene and 8 rays, then the camera
 b = header([((-1, -1, 2), (1, -1, 2), (0, 1, 2))]) + u8(0)
