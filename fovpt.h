@@ -6852,13 +6852,25 @@ FOVPT__PRIV uint8_t fovpt__srgb8(float v)
     return (uint8_t)(e * 255.0f + 0.5f);
 }
 
-FOVPT__PRIV float fovpt__lanczos_w(float x, float a)
+/* The Lanczos kernel L(x) = sinc(x) sinc(x / a) for |x| < a, else 0 (1 at |x| < 1e-6).
+   The 2a weights of one axis at fraction f in [0, 1): w[i] = L(x), x = f + a - 1 - i, from
+   three sines instead of 4a: sin(pi x) = (-1)^(a-1-i) sin(pi f), and sin(pi x / a) by the
+   angle sum from sin and cos of pi f / a and the constants sin, cos(pi k / a). */
+FOVPT__PRIV void fovpt__lanczos_axis(float f, int32_t a, float w[6])
 {
-    float px;
-    if (fov__absf(x) < 1e-6f) return 1.0f;
-    if (fov__absf(x) >= a) return 0.0f;
-    px = FOV__PI * x;
-    return a * FOV__SIN(px) * FOV__SIN(px / a) / (px * px);
+    /* cos, sin of pi k / a for k = a - 1 - i, i = 0 .. 2a - 1 (a = 2: k = 1 .. -2; a = 3: 2 .. -3) */
+    static const float c2[4] = { 0.0f, 1.0f, 0.0f, -1.0f }, s2[4] = { 1.0f, 0.0f, -1.0f, 0.0f };
+    static const float c3[6] = { -0.5f, 0.5f, 1.0f, 0.5f, -0.5f, -1.0f },
+                       s3[6] = { 0.8660254f, 0.8660254f, 0.0f, -0.8660254f, -0.8660254f, 0.0f };
+    const float *ck = a == 2 ? c2 : c3, *sk = a == 2 ? s2 : s3, fa = (float)a;
+    float sp = FOV__SIN(FOV__PI * f), u = FOV__PI * f / fa, su = FOV__SIN(u), cu = FOV__COS(u);
+    int32_t i;
+    for (i = 0; i < 2 * a; ++i) {
+        float x = f + (float)(a - 1 - i), px = FOV__PI * x;
+        if (fov__absf(x) < 1e-6f) { w[i] = 1.0f; continue; }
+        if (fov__absf(x) >= fa) { w[i] = 0.0f; continue; }
+        w[i] = fa * (((a - 1 - i) & 1) ? -sp : sp) * (su * ck[i] + cu * sk[i]) / (px * px);
+    }
 }
 /* ZONES: Lanczos upsampling (Polychronakis 2025, Sec. 4.2) of lattice n at lattice position
    (kx + fx, ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
@@ -6870,10 +6882,8 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
     int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n],
         ny = (int32_t)ctx->layer_ny[n];
     float acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f, wx[6], wy[6];
-    for (i = 0; i < 2 * a; ++i) {
-        wx[i] = fovpt__lanczos_w(fx - (float)(i - a + 1), (float)a);
-        wy[i] = fovpt__lanczos_w(fy - (float)(i - a + 1), (float)a);
-    }
+    fovpt__lanczos_axis(fx, a, wx);
+    fovpt__lanczos_axis(fy, a, wy);
     for (j = 0; j < 2 * a; ++j) {
         int32_t lj = ky - a + 1 + j;
         if (!(wy[j] > 0.0f || wy[j] < 0.0f)) continue;
@@ -6886,8 +6896,9 @@ FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t k
             ki = ki < 0 ? 0 : (ki >= nx ? nx - 1 : ki);
             p = buf + 4u * ((size_t)lj * (size_t)nx + (size_t)ki);
             if (!(p[3] > 0.0f)) continue;
-            acc[0] += w * p[0] / p[3]; acc[1] += w * p[1] / p[3]; acc[2] += w * p[2] / p[3];
             ws += w;
+            w /= p[3];
+            acc[0] += w * p[0]; acc[1] += w * p[1]; acc[2] += w * p[2];
         }
     }
     if (!(ws > 0.05f)) return 0;
@@ -6942,12 +6953,11 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
             const float *a;
             float w = wx[i] * wy[j];
             ki = ki < 0 ? 0 : (ki >= (int32_t)nx ? (int32_t)nx - 1 : ki);
+            if (!(w > 0.0f || w < 0.0f)) continue; /* adds nothing (a lattice-aligned row) */
             a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
-            if (!(a[3] > 0.0f)) {
-                if (w > 0.0f || w < 0.0f) { ok = 0; break; }
-                continue;
-            }
-            acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
+            if (!(a[3] > 0.0f)) { ok = 0; break; }
+            w /= a[3];
+            acc[0] += w * a[0]; acc[1] += w * a[1]; acc[2] += w * a[2];
         }
     }
     if (!ok) { /* a neighbour is not traced: bilinear over the inner 2 x 2 that are */
@@ -6962,8 +6972,9 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
                 lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
                 a = buf + 4u * ((size_t)lj * nx + (size_t)ki);
                 if (!(a[3] > 0.0f) || !(w > 0.0f)) continue;
-                acc[0] += w * a[0] / a[3]; acc[1] += w * a[1] / a[3]; acc[2] += w * a[2] / a[3];
                 ws += w;
+                w /= a[3];
+                acc[0] += w * a[0]; acc[1] += w * a[1]; acc[2] += w * a[2];
             }
         if (!(ws > 0.0f)) return 0;
         acc[0] /= ws; acc[1] /= ws; acc[2] /= ws;
@@ -7012,9 +7023,37 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
     for (k = 0; k < 3; ++k) c[k] = acc[k] / ws;
 }
 
+/* LAYERS resolve: where pixel v lies against eccentricity thresholds without the atan2 of
+   fov__ecc_deg. tan2[i] = tan^2 of threshold i (degrees), or -1 where it is outside
+   (0, 89): that one is always decided exactly. The comparison s^2 < co^2 tan^2 (s = |v x g|,
+   co = v . g, e = atan2(s, co)) decides e < T when it holds with a relative margin of 1e-5
+   (far beyond the float rounding of both sides and of fov__ecc_deg); otherwise 0: undecided,
+   the caller computes e exactly. Returns -1 (e < T), +1 (e > T) or 0. */
+FOVPT__PRIV int fovpt__ecc_side(float s2, float co, float tan2)
+{
+    float r;
+    if (!(tan2 >= 0.0f) || !fov__finite(s2) || !fov__finite(co)) return 0;
+    if (co <= 0.0f) return 1; /* e >= 90 degrees */
+    r = co * co * tan2;
+    if (!fov__finite(r) || !(r >= 1e-30f)) return 0;
+    if (s2 < r * (1.0f - 1e-5f)) return -1;
+    if (s2 > r * (1.0f + 1e-5f)) return 1;
+    return 0;
+}
+FOVPT__PRIV float fovpt__tan2_deg(float t)
+{
+    float tn;
+    if (!(t > 0.0f && t < 89.0f)) return -1.0f;
+    tn = FOV__TAN(t * (FOV__PI / 180.0f));
+    return tn * tn;
+}
+
 FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint32_t y1,
                                         const fovpt_output *out)
 {
+    /* LAYERS: tan^2 of radius_deg of layer 0 and of radius_deg -+ blend_deg / 2 (full weight
+       inside, none outside) of each layer; e exactly only where a comparison is undecided */
+    float t2r0 = -1.0f, t2in[FOVPT_MAX_LAYERS], t2out[FOVPT_MAX_LAYERS];
     uint32_t x, y, k, W;
     if (!ctx) return FOV_ERR_NULL;
     if (!out) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "resolve_rows: out is NULL");
@@ -7029,6 +7068,14 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
         (out->rgb8_stride && out->rgb8_stride < 3u * W))
         FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_INVALID_ARG,
                     "resolve_rows: out.rgb_stride or rgb8_stride below 3 * width");
+    if (!ctx->accum) {
+        const fovpt_layers_cfg *L = &ctx->lay;
+        t2r0 = fovpt__tan2_deg(L->layer[0].radius_deg);
+        for (k = 0; k < L->count && k < FOVPT_MAX_LAYERS; ++k) {
+            t2in[k] = fovpt__tan2_deg(L->layer[k].radius_deg - 0.5f * L->blend_deg);
+            t2out[k] = fovpt__tan2_deg(L->layer[k].radius_deg + 0.5f * L->blend_deg);
+        }
+    }
     for (y = y0; y < y1; ++y) {
         for (x = 0; x < W; ++x) {
             float c[3] = { 0.0f, 0.0f, 0.0f };
@@ -7038,12 +7085,24 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                 if (ctx->hist_slots && ctx->cfg.temporal.smooth) fovpt__smooth(ctx, x, y, c);
             } else {
                 const fovpt_layers_cfg *L = &ctx->lay;
-                float e = fovpt_ecc_deg(&ctx->ecc, (float)x + 0.5f, (float)y + 0.5f), f[3];
+                const fov_ecc_model *em = &ctx->ecc;
+                float f[3], v[3], cr[3], s2, co, e = -1.0f; /* e < 0: not computed yet */
                 uint32_t n, top = 0;
-                if (!(L->layer[0].radius_deg > 0.0f) || e <= L->layer[0].radius_deg) {
+                int side;
+#define FOVPT__E() (e >= 0.0f ? e : (e = fovpt_ecc_deg(em, (float)x + 0.5f, (float)y + 0.5f)))
+                v[0] = (float)x + 0.5f - em->cx; v[1] = (float)y + 0.5f - em->cy; v[2] = em->f_px;
+                fov__cross(v, em->g, cr);
+                s2 = fov__dot(cr, cr);
+                co = fov__dot(v, em->g);
+                side = fovpt__ecc_side(s2, co, t2r0);
+                if (!(L->layer[0].radius_deg > 0.0f) || side < 0 ||
+                    (side == 0 && FOVPT__E() <= L->layer[0].radius_deg)) {
                     /* the innermost layer with full weight: nothing below it is needed */
-                    for (n = L->count - 1u; n > 0; --n)
-                        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+                    for (n = L->count - 1u; n > 0; --n) {
+                        side = fovpt__ecc_side(s2, co, t2in[n]);
+                        if (side > 0) continue;
+                        if (side < 0 || fovpt__vb(L, n, FOVPT__E()) >= 1.0f) { top = n; break; }
+                    }
                     if (!fovpt__layer_value(ctx, top, x, y, c)) {
                         /* not available (untraced neighbours): the next layer outwards that
                            has a value (the background layer covers every pixel) */
@@ -7054,11 +7113,14 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                         if (!got) c[0] = c[1] = c[2] = 0.0f;
                     }
                     for (n = top + 1u; n < L->count; ++n) {
-                        float vb = fovpt__vb(L, n, e);
+                        float vb;
+                        if (fovpt__ecc_side(s2, co, t2out[n]) > 0) continue; /* weight 0 */
+                        vb = fovpt__vb(L, n, FOVPT__E());
                         if (!(vb > 0.0f) || !fovpt__layer_value(ctx, n, x, y, f)) continue;
                         for (k = 0; k < 3; ++k) c[k] = (1.0f - vb) * c[k] + vb * f[k];
                     }
                 }
+#undef FOVPT__E
             }
             if (out->rgb) {
                 float *o =

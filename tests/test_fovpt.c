@@ -2795,6 +2795,80 @@ static void test_fuzz_findings(void)
     }
 }
 
+/* session 14: the resolve's shortcuts against their exact forms. The Lanczos weights of one
+   axis (three sines by the angle sum) against sinc(x) sinc(x / a) in double; the eccentricity
+   side test (no atan2) against fovpt_ecc_deg: a decided side always agrees, and it decides
+   almost every pixel (else the shortcut would do nothing). */
+static void test_resolve_shortcuts(void)
+{
+    static const float fr[9] = { 0.0f, 1e-7f, 0.125f, 0.25f, 1.0f / 3.0f, 0.5f, 0.7f, 0.875f, 0.99999994f };
+    double worst = 0.0;
+    uint32_t a, i, k, decided = 0, tried = 0, wrong = 0;
+    for (a = 2; a <= 3u; ++a)
+        for (k = 0; k < 9u; ++k) {
+            float w[6];
+            fovpt__lanczos_axis(fr[k], (int32_t)a, w);
+            for (i = 0; i < 2u * a; ++i) {
+                double x = (double)fr[k] + (double)a - 1.0 - (double)i, ref, px = 3.14159265358979323846 * x;
+                if (fabs(x) < 1e-6) ref = 1.0;
+                else if (fabs(x) >= (double)a) ref = 0.0;
+                else ref = (double)a * sin(px) * sin(px / (double)a) / (px * px);
+                if (fabs((double)w[i] - ref) > worst) worst = fabs((double)w[i] - ref);
+            }
+        }
+    check(worst < 2e-6, "Lanczos weights of one axis (a = 2, 3; nine fractions) = sinc(x) sinc(x/a) in double", "worst %g", worst);
+    {
+        uint32_t seed = 12345u, g, p, t;
+        for (g = 0; g < 24u; ++g) {
+            fov_ecc_model m;
+            fov_gaze gz;
+            float fov = 20.0f + 7.0f * (float)g;
+            uint32_t Wd = 64u + 37u * g, Hd = 48u + 23u * g;
+            seed = seed * 1664525u + 1013904223u;
+            gz.x = (float)(seed >> 8) / 16777216.0f * 1.6f * (float)Wd - 0.3f * (float)Wd;
+            seed = seed * 1664525u + 1013904223u;
+            gz.y = (float)(seed >> 8) / 16777216.0f * 1.6f * (float)Hd - 0.3f * (float)Hd;
+            if (fovpt_ecc_init(&m, NULL, fov > 170.0f ? 170.0f : fov, Wd, Hd, gz) != FOV_OK) { ++wrong; continue; }
+            for (p = 0; p < 400u; ++p) {
+                float x, y, v[3], cr[3], s2, co, e;
+                seed = seed * 1664525u + 1013904223u;
+                x = (float)((seed >> 8) % Wd) + 0.5f;
+                seed = seed * 1664525u + 1013904223u;
+                y = (float)((seed >> 8) % Hd) + 0.5f;
+                v[0] = x - m.cx; v[1] = y - m.cy; v[2] = m.f_px;
+                fov__cross(v, m.g, cr);
+                s2 = fov__dot(cr, cr);
+                co = fov__dot(v, m.g);
+                e = fovpt_ecc_deg(&m, x, y);
+                for (t = 0; t < 10u; ++t) {
+                    /* thresholds away from e (offsets in degrees: these must be decided), and
+                       within a few float roundings of e (relative: must never be wrong) */
+                    static const float off[6] = { -30.0f, -1.0f, -1e-3f, 1e-3f, 1.0f, 30.0f };
+                    static const int ulps[4] = { -4, -1, 1, 4 };
+                    float T = e;
+                    if (t < 6u) T = e + off[t];
+                    else { /* T a few ulps from e */
+                        int32_t bits;
+                        memcpy(&bits, &T, sizeof bits);
+                        bits += ulps[t - 6u];
+                        memcpy(&T, &bits, sizeof T);
+                    }
+                    int side;
+                    if (!(T > 0.0f && T < 89.0f) || T == e) continue;
+                    side = fovpt__ecc_side(s2, co, fovpt__tan2_deg(T));
+                    if (t < 6u) ++tried;
+                    if (side == 0) continue;
+                    if (t < 6u) ++decided;
+                    if ((side < 0) != (e < T)) ++wrong;
+                }
+            }
+        }
+        check(wrong == 0 && tried > 20000u && decided >= tried - tried / 100u,
+              "resolve's eccentricity side test: agrees with fovpt_ecc_deg whenever it decides, and decides >= 99 % (24 views, off-screen gazes)",
+              "%u wrong, %u of %u decided", wrong, decided, tried);
+    }
+}
+
 int main(void)
 {
 #ifdef FOVPT_TEST_BVH_ONLY
@@ -2814,6 +2888,7 @@ int main(void)
     test_f1_camera_ray();
     test_f7_regressions();
     test_fuzz_findings();
+    test_resolve_shortcuts();
     test_api();
     test_ecc();
     test_eyes();
