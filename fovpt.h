@@ -6983,6 +6983,90 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     return 1;
 }
 
+/* The resolve's per-row cache of lattice columns. Both filters are separable: a pixel's value
+   is sum_i wx[i] col(kx - 1 + i) with col(k) = sum_j wy[j] v(k, ky - 1 + j) (Lanczos: 2a
+   taps, and the weights of the traced taps summed alike), so the stride d pixels between two
+   lattice columns share the columns' vertical sums. Per layer: the row's vertical weights
+   and FOVPT__CC columns (direct-mapped by index); v[3] is the column's weight sum (Lanczos)
+   or 1 / 0 (Catmull-Rom, B-spline: every tap of non-zero weight traced, or not). */
+#define FOVPT__CC 8
+typedef struct fovpt__cc {
+    uint32_t row;                 /* the pixel row the entries belong to; UINT32_MAX: none */
+    int32_t ky;
+    float wy[6];
+    int32_t tag[FOVPT__CC];       /* the column index held, or INT32_MIN */
+    float v[FOVPT__CC][4];
+} fovpt__cc;
+
+/* fovpt__layer_value (fovpt__lanczos_value for ZONES) through the cache cc of layer n: the
+   same filter, summed column by column (equal up to rounding); where a Catmull-Rom or
+   B-spline tap is not traced it returns fovpt__layer_value's answer (its bilinear fallback). */
+FOVPT__PRIV int fovpt__layer_value_cc(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y,
+                                      float c[3], fovpt__cc *cc)
+{
+    const float *buf = ctx->layer_buf[n];
+    uint32_t d = ctx->lay.layer[n].stride, nx = ctx->layer_nx[n], ny = ctx->layer_ny[n], k;
+    int lz = ctx->lanczos && !(ctx->lay.bspline && d >= 2), bs = ctx->lay.bspline && d >= 2;
+    int32_t a = lz ? (int32_t)ctx->lanczos : 2, T = 2 * a, rx, kx, base, i, j;
+    float fx, wx[6], acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f;
+    if (nx == 0 || ny == 0) return 0;
+    if (cc->row != y) { /* a new row: its vertical weights, no column held */
+        int32_t ry = (int32_t)y - (int32_t)ctx->layer_oy[n];
+        float fy;
+        cc->ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
+        fy = (float)(ry - cc->ky * (int32_t)d) / (float)d;
+        if (lz) fovpt__lanczos_axis(fy, a, cc->wy);
+        else if (bs) fovpt__bspline(fy, cc->wy);
+        else fovpt_catmull_rom(fy, cc->wy);
+        for (i = 0; i < FOVPT__CC; ++i) cc->tag[i] = INT32_MIN;
+        cc->row = y;
+    }
+    rx = (int32_t)x - (int32_t)ctx->layer_ox[n];
+    kx = rx >= 0 ? rx / (int32_t)d : -(((-rx) + (int32_t)d - 1) / (int32_t)d);
+    fx = (float)(rx - kx * (int32_t)d) / (float)d;
+    if (lz) fovpt__lanczos_axis(fx, a, wx);
+    else if (bs) fovpt__bspline(fx, wx);
+    else fovpt_catmull_rom(fx, wx);
+    base = kx - a + 1;
+    for (i = 0; i < T; ++i) {
+        int32_t kk = base + i, slot = (int32_t)((uint32_t)kk & (FOVPT__CC - 1u));
+        float *col = cc->v[slot];
+        if (!(wx[i] > 0.0f || wx[i] < 0.0f)) continue;
+        if (cc->tag[slot] != kk) { /* the column's vertical sum */
+            int32_t ki = kk < 0 ? 0 : (kk >= (int32_t)nx ? (int32_t)nx - 1 : kk);
+            int32_t jb = cc->ky - a + 1;
+            col[0] = col[1] = col[2] = col[3] = 0.0f;
+            for (j = 0; j < T; ++j) {
+                int32_t lj = jb + j;
+                const float *p;
+                float w = cc->wy[j];
+                if (!(w > 0.0f || w < 0.0f)) continue;
+                lj = lj < 0 ? 0 : (lj >= (int32_t)ny ? (int32_t)ny - 1 : lj);
+                p = buf + 4u * ((size_t)lj * nx + (size_t)ki);
+                if (!(p[3] > 0.0f)) {
+                    if (lz) continue;
+                    col[3] = -1.0f; /* not traced */
+                    break;
+                }
+                if (lz) col[3] += w;
+                w /= p[3];
+                col[0] += w * p[0]; col[1] += w * p[1]; col[2] += w * p[2];
+            }
+            if (!lz) col[3] = col[3] < 0.0f ? 0.0f : 1.0f;
+            cc->tag[slot] = kk;
+        }
+        if (!lz && !(col[3] > 0.0f)) return fovpt__layer_value(ctx, n, x, y, c);
+        for (k = 0; k < 3; ++k) acc[k] += wx[i] * col[k];
+        ws += wx[i] * col[3];
+    }
+    if (lz) {
+        if (!(ws > 0.05f)) return 0;
+        for (k = 0; k < 3; ++k) acc[k] /= ws;
+    }
+    for (k = 0; k < 3; ++k) c[k] = fov__maxf(acc[k], 0.0f);
+    return 1;
+}
+
 /* Axblad 2020, Eq. 3.18: blend weight of layer n at eccentricity e */
 FOVPT__PRIV float fovpt__vb(const fovpt_layers_cfg *L, uint32_t n, float e)
 {
@@ -7054,6 +7138,7 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
     /* LAYERS: tan^2 of radius_deg of layer 0 and of radius_deg -+ blend_deg / 2 (full weight
        inside, none outside) of each layer; e exactly only where a comparison is undecided */
     float t2r0 = -1.0f, t2in[FOVPT_MAX_LAYERS], t2out[FOVPT_MAX_LAYERS];
+    fovpt__cc cc[FOVPT_MAX_LAYERS];
     uint32_t x, y, k, W;
     if (!ctx) return FOV_ERR_NULL;
     if (!out) FOVPT__FAIL(&ctx->cfg.logger, FOV_ERR_NULL, "resolve_rows: out is NULL");
@@ -7077,6 +7162,7 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
         }
     }
     for (y = y0; y < y1; ++y) {
+        for (k = 0; k < FOVPT_MAX_LAYERS; ++k) cc[k].row = UINT32_MAX;
         for (x = 0; x < W; ++x) {
             float c[3] = { 0.0f, 0.0f, 0.0f };
             if (ctx->accum) { /* UNIFORM, SELECTIVE, JIN */
@@ -7103,20 +7189,20 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
                         if (side > 0) continue;
                         if (side < 0 || fovpt__vb(L, n, FOVPT__E()) >= 1.0f) { top = n; break; }
                     }
-                    if (!fovpt__layer_value(ctx, top, x, y, c)) {
+                    if (!fovpt__layer_value_cc(ctx, top, x, y, c, &cc[top])) {
                         /* not available (untraced neighbours): the next layer outwards that
                            has a value (the background layer covers every pixel) */
                         uint32_t m;
                         int got = 0;
                         for (m = top + 1u; m < L->count && !got; ++m)
-                            got = fovpt__layer_value(ctx, m, x, y, c);
+                            got = fovpt__layer_value_cc(ctx, m, x, y, c, &cc[m]);
                         if (!got) c[0] = c[1] = c[2] = 0.0f;
                     }
                     for (n = top + 1u; n < L->count; ++n) {
                         float vb;
                         if (fovpt__ecc_side(s2, co, t2out[n]) > 0) continue; /* weight 0 */
                         vb = fovpt__vb(L, n, FOVPT__E());
-                        if (!(vb > 0.0f) || !fovpt__layer_value(ctx, n, x, y, f)) continue;
+                        if (!(vb > 0.0f) || !fovpt__layer_value_cc(ctx, n, x, y, f, &cc[n])) continue;
                         for (k = 0; k < 3; ++k) c[k] = (1.0f - vb) * c[k] + vb * f[k];
                     }
                 }
@@ -7385,6 +7471,11 @@ FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint3
             uint32_t d = ctx->lay.layer[n].stride, spp = ctx->lay.layer[n].spp, k, l;
             uint32_t nx = ctx->layer_nx[n], ox = ctx->layer_ox[n], oy = ctx->layer_oy[n];
             float tr = ctx->layer_trace_deg[n], ti = ctx->layer_inner_deg[n];
+            /* the disk test by fovpt__ecc_side (no atan2) where it decides; nothing to test
+               where every eccentricity passes (the background: tr FLT_MAX, no inner edge) */
+            float t2tr = fovpt__tan2_deg(tr), t2ti = fovpt__tan2_deg(ti);
+            int all_in = !(tr < 180.0f) && !(ti > 0.0f);
+            const fov_ecc_model *em = &ctx->ecc;
             /* hollow: sample k of a pixel is UNIFORM's stream k in every layer */
             uint32_t s0 = ctx->lay.hollow ? 0u : n << 16;
             /* lattice rows whose pixel row lies in [y0, y1) */
@@ -7396,12 +7487,30 @@ FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint3
                 for (k = 0; k < nx; ++k) {
                     uint32_t px = ox + k * d;
                     float *acc = ctx->layer_buf[n] + 4u * ((size_t)l * nx + k), sum[3];
-                    float ep = fovpt_ecc_deg(&ctx->ecc, (float)px + 0.5f, (float)py + 0.5f);
+                    float ep = -1.0f; /* < 0: not computed */
                     fovpt__gsum G;
-                    if (ep > tr || ep < ti) {
-                        acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
-                        continue;
+                    if (!all_in) {
+                        float v[3], cr[3], s2, co;
+                        int sa, sb;
+                        v[0] = (float)px + 0.5f - em->cx; v[1] = (float)py + 0.5f - em->cy;
+                        v[2] = em->f_px;
+                        fov__cross(v, em->g, cr);
+                        s2 = fov__dot(cr, cr);
+                        co = fov__dot(v, em->g);
+                        sa = fovpt__ecc_side(s2, co, t2tr);
+                        sb = ti > 0.0f ? fovpt__ecc_side(s2, co, t2ti) : 1;
+                        if (sa == 0 || sb == 0) {
+                            ep = fovpt_ecc_deg(em, (float)px + 0.5f, (float)py + 0.5f);
+                            sa = ep > tr ? 1 : -1;
+                            sb = ep < ti ? -1 : 1;
+                        }
+                        if (sa > 0 || sb < 0) {
+                            acc[0] = acc[1] = acc[2] = acc[3] = 0.0f; /* not traced */
+                            continue;
+                        }
                     }
+                    if (own && ep < 0.0f)
+                        ep = fovpt_ecc_deg(em, (float)px + 0.5f, (float)py + 0.5f);
                     FOV_MEMSET(&G, 0, sizeof G);
                     fovpt__pixel(ctx, frame, px, py, spp, s0, ctx->lay.cell_jitter ? d : 1u,
                                  ctx->cfg.spp, d >= 2u ? ctx->lay.clamp_white : 0.0f, sum,
