@@ -1162,6 +1162,9 @@ typedef struct fovpt_scene {
                                   (uint32_t[3][4]) */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
+    uint32_t num_slots;        /* leaf slots in leaf_tris and order (a multiple of 4, at least
+                                  num_bounded: a leaf of <= 4 starts a new block where it
+                                  would straddle two; unused slots hold FOVPT_PRIM_NONE) */
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
     const float *light_cdf;    /* cumulative selection probability */
     const float *light_area;
@@ -3893,8 +3896,11 @@ typedef struct fovpt__node4 {
 
 typedef struct fovpt__layout {
     size_t prims, nodes, nodes4, order, lights, cdf, area, pbox, total;
-    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max;
+    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max, n_slots;
 } fovpt__layout;
+/* Leaf slots reserved for n bounded primitives: n rounded up to whole blocks of 4, plus
+   FOVPT__SLACK(n) blocks for the padding that keeps leaves of <= 4 inside one block. */
+#define FOVPT__SLACK(n) (((n) + 15u) / 16u)
 
 /* |v| without the squares' under- or overflow (prescaled to a largest component of 1 when
    the squared length would leave [1e-30, 1e30]); +inf only when |v| > FLT_MAX. */
@@ -4081,6 +4087,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->n_tris = (uint32_t)n_tris;
     L->n_lights = (uint32_t)n_lights;
     L->n_nodes_max = L->n_bounded ? 2u * L->n_bounded - 1u : 0u;
+    L->n_slots = 4u * ((L->n_bounded + 3u) / 4u + FOVPT__SLACK(L->n_bounded));
+    if (L->n_slots > (1u << 26)) L->n_slots = 1u << 26; /* a leaf's first slot: 26 bits */
     /* sizes in uint64_t, checked against SIZE_MAX */
     sz = 0;
     L->prims = 0;
@@ -4089,13 +4097,15 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    /* W-wide nodes: one whose children are all binary leaves (at most leaves / 2 <= n / 2 of
-       them), or one with W children that opened W - 1 of the n - 1 binary inner nodes; or 1 */
+    /* W-wide nodes: one with fewer than W children holds a whole binary subtree, whose
+       root has more than 4 primitives (fovpt__combine: smaller subtrees are leaves), so
+       there are at most n / 5 of them; one with W children opened W - 1 of the at most
+       n - 1 binary inner nodes; or the root alone */
     L->nodes4 = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node4) *
-          ((uint64_t)L->n_bounded / 2u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
+          ((uint64_t)L->n_bounded / 5u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
-    sz += 4u * (uint64_t)L->n_bounded;
+    sz += 4u * (uint64_t)L->n_slots;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->lights = (size_t)sz;
     sz += 4u * n_lights;
@@ -4110,7 +4120,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
                                SoA blocks of 4 slots (fovpt_scene.leaf_tris), 60 bytes
                                per slot (FOVPT__LBLK floats per block of 4) */
-    sz += 4u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
+    sz += FOVPT__LBLK * (uint64_t)L->n_slots; /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -4221,6 +4231,57 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
     return used;
 }
 
+/* Leaves sized to the leaf test's blocks: a binary subtree of at most 4 primitives (one
+   block of 4 lanes) becomes one leaf (its primitives are contiguous in order), so every
+   inner node left holds more than 4. Children follow their parent in the node array, so one
+   backward pass sees them first; an inner node's n holds its subtree's count (high bit set)
+   during the pass. The combined subtrees' nodes stay in the array, unreachable. */
+FOVPT__PRIV void fovpt__combine(fovpt__node *nodes, uint32_t used)
+{
+    uint32_t i = used;
+    while (i-- > 0) {
+        fovpt__node *nd = &nodes[i];
+        uint32_t c;
+        if (nd->n) continue;
+        c = (nodes[nd->a].n & ~FOVPT__LEAF4) + (nodes[nd->a + 1u].n & ~FOVPT__LEAF4);
+        if (c <= 4u) { nd->a = nodes[nd->a].a; nd->n = c; } /* both children are leaves */
+        else nd->n = FOVPT__LEAF4 | c;
+    }
+    for (i = 0; i < used; ++i)
+        if (nodes[i].n & FOVPT__LEAF4) nodes[i].n = 0;
+}
+
+/* Assigns the leaves their slots, depth first and left to right (the build's order, src, nb
+   entries, into dst by slot), so that a leaf lies in as few blocks of 4 slots as its count
+   needs: where it would straddle one more, it starts the next block and the slots skipped
+   are padding (FOVPT_PRIM_NONE), while the reserve of nslots slots allows it (otherwise it
+   straddles, which the leaf test handles). Returns the slots used, a multiple of 4. */
+FOVPT__PRIV uint32_t fovpt__leaf_layout(fovpt__node *nodes, const uint32_t *src, uint32_t *dst,
+                                        uint32_t nb, uint32_t nslots)
+{
+    uint32_t stack[FOVPT_MAX_BVH_DEPTH + 2u];
+    uint32_t sp = 0, cur = 0, left = nb, j;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        fovpt__node *nd = &nodes[stack[--sp]];
+        uint32_t n = nd->n, al = (cur + 3u) & ~3u;
+        if (!n) {
+            FOV_ASSERT(sp + 2u <= FOVPT_MAX_BVH_DEPTH + 2u);
+            stack[sp++] = nd->a + 1u;
+            stack[sp++] = nd->a;
+            continue;
+        }
+        if (((cur + n - 1u) >> 2) - (cur >> 2) > (n - 1u) >> 2 && al + left <= nslots)
+            while (cur < al) dst[cur++] = FOVPT_PRIM_NONE;
+        for (j = 0; j < n; ++j) dst[cur + j] = src[nd->a + j];
+        nd->a = cur;
+        cur += n;
+        left -= n;
+    }
+    while (cur & 3u) dst[cur++] = FOVPT_PRIM_NONE;
+    return cur;
+}
+
 /* Binned SAH build (Wald 2007), iterative with an explicit work stack. */
 FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint32_t *order,
                                         float *pb, const fovpt_scene_desc *d)
@@ -4257,7 +4318,7 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         }
         if (w.depth > max_depth) max_depth = w.depth;
         area = fovpt__half_area(nd->b, nd->b + 3);
-        leaf_cost = (float)w.count;
+        leaf_cost = 4.0f * (float)((w.count + 3u) >> 2); /* whole blocks of 4: see below */
         best_cost = FLT_MAX;
         if (w.count > leaf) {
             uint32_t axis;
@@ -4312,7 +4373,11 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         /* SAH: intersection cost 1 per primitive, traversal cost 1.5 (an inner step tests two
            boxes: about 80 instructions against about 50 for a triangle, under callgrind).
            Defaults 16 bins, leaf 2, cost 1.5 against 12, 4, 1.0 before: 3.0 -> 3.4 Mrays/s on
-           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. */
+           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. A leaf
+           costs its whole blocks of 4 (the leaf test's lanes: 5 primitives cost 8), so a leaf
+           just over a block splits where that pays (the children's costs stay per primitive:
+           rounded there, the binned sweep loses its gradient; cubes441: 2.6 -> 2.5 block
+           tests per camera ray, rounded sweep 4.6). */
         if (w.count <= leaf ||
             (w.count <= FOVPT__LEAF_MAX &&
              (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost))) {
@@ -4486,16 +4551,22 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                                  (float *)(void *)(base + L.pbox), d);
             if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
             s->nodes = base + L.nodes;
+            {   /* the build data is spent: a copy of the build's order, then the leaves */
+                uint32_t *tmp = (uint32_t *)(void *)(base + L.pbox);
+                fovpt__combine((fovpt__node *)(void *)(base + L.nodes), s->num_nodes);
+                for (i = 0; i < nb; ++i) tmp[i] = order[i];
+                s->num_slots = fovpt__leaf_layout((fovpt__node *)(void *)(base + L.nodes), tmp,
+                                                  order, nb, L.n_slots);
+            }
             {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
                    blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
                    lanes each, the normal's 3 rows, then the rows slot, id, material:
                    FOVPT__LBLK), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
-                uint32_t nb4 = (nb + 3u) & ~3u;
-                for (i = 0; i < nb4; ++i) {
+                for (i = 0; i < s->num_slots; ++i) {
                     float *q = lt + FOVPT__LBLK * (size_t)(i >> 2) + (i & 3u);
                     uint32_t *qi = (uint32_t *)(void *)(q + 48);
-                    const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    const fovpt__prim *p = order[i] != FOVPT_PRIM_NONE ? &prims[order[i]] : NULL;
                     qi[0] = p ? order[i] : 0u;
                     qi[4] = p ? p->id : 0u;
                     qi[8] = p ? p->material : 0u;

@@ -345,6 +345,12 @@ static void random_scene(fovpt_shape *sh, uint32_t ns, float *pos, uint32_t ntri
     }
 }
 
+/* primitives under binary node i (recursive: the test scenes' trees are shallow) */
+static uint32_t subtree_prims(const fovpt__node *n2, uint32_t i)
+{
+    return n2[i].n ? n2[i].n : subtree_prims(n2, n2[i].a) + subtree_prims(n2, n2[i].a + 1u);
+}
+
 static void test_bvh_random(void)
 {
     int sc;
@@ -369,15 +375,25 @@ static void test_bvh_random(void)
         r = build(&b, &d);
         if (!check(r == FOV_OK && b.s.nodes != NULL, N("random scene %d builds a BVH (%u shapes, %u triangles)", sc, ns, nt),
                    "%s", fovpt_result_string(r))) { free(sh); free(pos); free(b.mem); continue; }
-        {   /* the W-wide tree (FOVPT__W: 4, or 8 for AVX2): every leaf slot in exactly one leaf,
-               every child box inside its parent's, 2..W children per inner node, one node per
-               1..W-1 binary inner nodes */
+        {   /* the W-wide tree (FOVPT__W: 4, or 8 for AVX2): every primitive in exactly one
+               leaf slot, every child box inside its parent's, 2..W children per inner node, one
+               node per 1..W-1 binary inner nodes (those reachable from the root; each holds
+               more than 4 primitives: smaller subtrees are one leaf), a leaf of <= 4 in one
+               block of 4 slots unless the padding reserve is spent */
             static uint32_t seen[4000], stackn[4000];
-            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, k, j;
+            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, strad = 0, k, j;
+            const uint32_t nslots = 4u * ((b.s.num_bounded + 3u) / 4u + (b.s.num_bounded + 15u) / 16u);
             const fovpt__node4 *n4 = (const fovpt__node4 *)b.s.nodes4;
             const fovpt__node *n2 = (const fovpt__node *)b.s.nodes;
             memset(seen, 0, sizeof seen);
-            for (k = 0; k < b.s.num_nodes; ++k) ninner += n2[k].n == 0u;
+            stackn[sp++] = 0;
+            while (sp > 0) {
+                uint32_t ni = stackn[--sp];
+                if (n2[ni].n) continue;
+                ++ninner;
+                if (subtree_prims(n2, ni) <= 4u) bad++;
+                stackn[sp++] = n2[ni].a; stackn[sp++] = n2[ni].a + 1u;
+            }
             stackn[sp++] = 0;
             while (sp > 0 && bad == 0) {
                 uint32_t ni = stackn[--sp], real = 0;
@@ -389,7 +405,9 @@ static void test_bvh_random(void)
                     ++real;
                     if (c & FOVPT__LEAF4) {
                         uint32_t f = (c & ~FOVPT__LEAF4) >> 5, n = c & 31u, t;
-                        for (t = f; t < f + n; ++t) if (t >= b.s.num_bounded || seen[t]++) bad++;
+                        if (n > 16u || ((f + n - 1u) >> 2) - (f >> 2) > (n - 1u) >> 2) strad++;
+                        for (t = f; t < f + n; ++t)
+                            if (t >= b.s.num_slots || b.s.order[t] >= b.s.num_bounded || seen[b.s.order[t]]++) bad++;
                     } else {
                         const fovpt__node4 *cq = &n4[c];
                         uint32_t cj, kk;
@@ -406,9 +424,12 @@ static void test_bvh_random(void)
             }
             for (k = 0; k < b.s.num_bounded; ++k) if (seen[k] != 1u) bad++;
             check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= ninner && b.s.num_nodes4 <= ninner &&
-                      b.s.num_nodes4 <= b.s.num_bounded / 2u + b.s.num_bounded / (FOVPT__W - 1u) + 1u, /* fovpt_scene_size's bound */
-                  N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children", sc, FOVPT__W, FOVPT__W),
-                  "bad %u, visited %u of %u nodes4, binary inner %u", bad, visited, b.s.num_nodes4, ninner);
+                      b.s.num_nodes4 <= b.s.num_bounded / 5u + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
+                      b.s.num_slots % 4u == 0 && b.s.num_slots >= b.s.num_bounded && b.s.num_slots <= nslots &&
+                      (strad == 0 || b.s.num_slots == nslots),
+                  N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children, leaves in blocks", sc, FOVPT__W, FOVPT__W),
+                  "bad %u, visited %u of %u nodes4, binary inner %u, slots %u of %u, straddling %u", bad, visited, b.s.num_nodes4, ninner,
+                  b.s.num_slots, nslots, strad);
         }
         for (i = 0; i < 3000; ++i) {
             float o[3], dd[3];
