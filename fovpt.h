@@ -3901,6 +3901,11 @@ typedef struct fovpt__layout {
 /* Leaf slots reserved for n bounded primitives: n rounded up to whole blocks of 4, plus
    FOVPT__SLACK(n) blocks for the padding that keeps leaves of <= 4 inside one block. */
 #define FOVPT__SLACK(n) (((n) + 15u) / 16u)
+#if FOVPT__SIMD
+#define FOVPT__COMBINE 4u
+#else
+#define FOVPT__COMBINE 1u
+#endif
 
 /* |v| without the squares' under- or overflow (prescaled to a largest component of 1 when
    the squared length would leave [1e-30, 1e30]); +inf only when |v| > FLT_MAX. */
@@ -4098,12 +4103,13 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
     /* W-wide nodes: one with fewer than W children holds a whole binary subtree, whose
-       root has more than 4 primitives (fovpt__combine: smaller subtrees are leaves), so
-       there are at most n / 5 of them; one with W children opened W - 1 of the at most
-       n - 1 binary inner nodes; or the root alone */
+       root has more than FOVPT__COMBINE primitives (fovpt__mark_small: a smaller subtree is
+       opened by its parent or is one leaf child), so there are at most
+       n / (FOVPT__COMBINE + 1) of them besides the root; one with W children
+       opened W - 1 of the at most n - 1 binary inner nodes; or the root alone */
     L->nodes4 = (size_t)sz;
-    sz += (uint64_t)sizeof(fovpt__node4) *
-          ((uint64_t)L->n_bounded / 5u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
+    sz += (uint64_t)sizeof(fovpt__node4) * ((uint64_t)L->n_bounded / (FOVPT__COMBINE + 1u) +
+                                            (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
     sz += 4u * (uint64_t)L->n_slots;
     sz = (sz + 15u) & ~(uint64_t)15u;
@@ -4186,7 +4192,84 @@ typedef struct fovpt__bin {
     uint32_t n;
 } fovpt__bin;
 
-/* Collapses the binary BVH into 4-wide nodes (iterative, explicit stack); returns the count. */
+/* Leaves sized to the leaf test's blocks. A small subtree is one of at most FOVPT__COMBINE
+   primitives (4, one block of 4 lanes; 1 without SIMD, where every triangle is a test of its
+   own and the binary leaves' boxes pay: +4 / +6 % instructions per terrain ray with leaves
+   of 4): its primitives are contiguous in order. Each inner small subtree is marked (n =
+   FOVPT__LEAF4 | count), laid out in one block (fovpt__leaf_layout) and never made a W-wide
+   node of its own (fovpt__collapse4: a node opens it while it has room, else it is one leaf
+   child), so every W-wide node but the root holds more than FOVPT__COMBINE primitives (the
+   node bound of fovpt__plan). Combining sibling leaves outright, even only where the
+   parent's box is no larger than theirs together, tested more leaves (interior: 1.14 ->
+   1.50 per camera ray, +8 % instructions); the marks keep the leaves' own boxes where a node
+   has room for them. Children follow their parent in the node array, so one backward pass
+   sees them first. */
+FOVPT__PRIV void fovpt__mark_small(fovpt__node *nodes, uint32_t used)
+{
+    uint32_t i = used;
+    while (i-- > 0) {
+        fovpt__node *nd = &nodes[i];
+        const fovpt__node *l, *r;
+        uint32_t c;
+        if (nd->n) continue;
+        l = &nodes[nd->a]; r = l + 1;
+        c = (l->n & ~FOVPT__LEAF4) + (r->n & ~FOVPT__LEAF4);
+        if (l->n && r->n && c <= FOVPT__COMBINE) nd->n = FOVPT__LEAF4 | c; /* else large: 0 */
+    }
+}
+/* The first slot of a node's subtree (its leftmost leaf). */
+FOVPT__PRIV uint32_t fovpt__first_slot(const fovpt__node *nodes, uint32_t i)
+{
+    while (nodes[i].n == 0 || (nodes[i].n & FOVPT__LEAF4)) i = nodes[i].a;
+    return nodes[i].a;
+}
+
+/* Assigns the leaves their slots, depth first and left to right (the build's order, src, nb
+   entries, into dst by slot), so that a leaf, or a marked small subtree (fovpt__mark_small) as
+   a whole, lies in as few blocks of 4 slots as its count needs: where it would straddle one
+   more, it starts the next block and the slots skipped are padding (FOVPT_PRIM_NONE), while
+   the reserve of nslots slots allows it (otherwise it straddles, which the leaf test
+   handles). Returns the slots used, a multiple of 4. */
+FOVPT__PRIV uint32_t fovpt__leaf_layout(fovpt__node *nodes, const uint32_t *src, uint32_t *dst,
+                                        uint32_t nb, uint32_t nslots)
+{
+    uint32_t stack[FOVPT_MAX_BVH_DEPTH + 2u], sub[FOVPT__COMBINE + 2u];
+    uint32_t sp = 0, cur = 0, left = nb, j;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const uint32_t ni = stack[--sp];
+        fovpt__node *nd = &nodes[ni];
+        uint32_t n = nd->n & ~FOVPT__LEAF4, al = (cur + 3u) & ~3u, f, ss = 0;
+        if (!nd->n) {
+            FOV_ASSERT(sp + 2u <= FOVPT_MAX_BVH_DEPTH + 2u);
+            stack[sp++] = nd->a + 1u;
+            stack[sp++] = nd->a;
+            continue;
+        }
+        if (((cur + n - 1u) >> 2) - (cur >> 2) > (n - 1u) >> 2 && al + left <= nslots)
+            while (cur < al) dst[cur++] = FOVPT_PRIM_NONE;
+        f = fovpt__first_slot(nodes, ni);
+        for (j = 0; j < n; ++j) dst[cur + j] = src[f + j];
+        sub[ss++] = ni; /* the subtree's leaves keep their offsets from its first slot */
+        while (ss > 0) {
+            fovpt__node *q = &nodes[sub[--ss]];
+            if (q->n & FOVPT__LEAF4) {
+                FOV_ASSERT(ss + 2u <= FOVPT__COMBINE + 2u);
+                sub[ss++] = q->a; sub[ss++] = q->a + 1u;
+            } else {
+                q->a = cur + (q->a - f);
+            }
+        }
+        cur += n;
+        left -= n;
+    }
+    while (cur & 3u) dst[cur++] = FOVPT_PRIM_NONE;
+    return cur;
+}
+
+/* Collapses the binary BVH into W-wide nodes (iterative, explicit stack); returns the count.
+   A node opens its largest inner children (a marked small subtree too) until it has W; a
+   small subtree left unopened is one leaf child (its slots are in one block), not a node. */
 FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4)
 {
     typedef struct { uint32_t bin, slot; } work;
@@ -4196,14 +4279,14 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
     while (sp > 0) {
         work w = stack[--sp];
         fovpt__node4 *q = &n4[w.slot];
-        if (nodes[w.bin].n) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
+        if (nodes[w.bin].n && !(nodes[w.bin].n & FOVPT__LEAF4)) { c[0] = w.bin; m = 1; } /* a leaf root */
         else { c[0] = nodes[w.bin].a; c[1] = nodes[w.bin].a + 1u; m = 2; }
         while (m < FOVPT__W) { /* open the inner child of largest area */
             uint32_t best = FOVPT__W;
             float ba = -1.0f;
             for (j = 0; j < m; ++j) {
                 float a = fovpt__half_area(nodes[c[j]].b, nodes[c[j]].b + 3);
-                if (!nodes[c[j]].n && a > ba) { ba = a; best = j; }
+                if ((!nodes[c[j]].n || (nodes[c[j]].n & FOVPT__LEAF4)) && a > ba) { ba = a; best = j; }
             }
             if (best == FOVPT__W) break;
             k = c[best];
@@ -4217,7 +4300,10 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
                 continue;
             }
             for (k = 0; k < 6; ++k) q->b[k][j] = nodes[c[j]].b[k];
-            if (nodes[c[j]].n) {
+            if (nodes[c[j]].n & FOVPT__LEAF4) { /* a small subtree */
+                q->child[j] = FOVPT__LEAF4 | (fovpt__first_slot(nodes, c[j]) << 5) |
+                              (nodes[c[j]].n & ~FOVPT__LEAF4);
+            } else if (nodes[c[j]].n) {
                 q->child[j] = FOVPT__LEAF4 | (nodes[c[j]].a << 5) | nodes[c[j]].n;
             } else {
                 FOV_ASSERT(sp < (FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u);
@@ -4229,57 +4315,6 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
         for (k = 0; k < FOVPT__W; ++k) q->pad[k] = 0u;
     }
     return used;
-}
-
-/* Leaves sized to the leaf test's blocks: a binary subtree of at most 4 primitives (one
-   block of 4 lanes) becomes one leaf (its primitives are contiguous in order), so every
-   inner node left holds more than 4. Children follow their parent in the node array, so one
-   backward pass sees them first; an inner node's n holds its subtree's count (high bit set)
-   during the pass. The combined subtrees' nodes stay in the array, unreachable. */
-FOVPT__PRIV void fovpt__combine(fovpt__node *nodes, uint32_t used)
-{
-    uint32_t i = used;
-    while (i-- > 0) {
-        fovpt__node *nd = &nodes[i];
-        uint32_t c;
-        if (nd->n) continue;
-        c = (nodes[nd->a].n & ~FOVPT__LEAF4) + (nodes[nd->a + 1u].n & ~FOVPT__LEAF4);
-        if (c <= 4u) { nd->a = nodes[nd->a].a; nd->n = c; } /* both children are leaves */
-        else nd->n = FOVPT__LEAF4 | c;
-    }
-    for (i = 0; i < used; ++i)
-        if (nodes[i].n & FOVPT__LEAF4) nodes[i].n = 0;
-}
-
-/* Assigns the leaves their slots, depth first and left to right (the build's order, src, nb
-   entries, into dst by slot), so that a leaf lies in as few blocks of 4 slots as its count
-   needs: where it would straddle one more, it starts the next block and the slots skipped
-   are padding (FOVPT_PRIM_NONE), while the reserve of nslots slots allows it (otherwise it
-   straddles, which the leaf test handles). Returns the slots used, a multiple of 4. */
-FOVPT__PRIV uint32_t fovpt__leaf_layout(fovpt__node *nodes, const uint32_t *src, uint32_t *dst,
-                                        uint32_t nb, uint32_t nslots)
-{
-    uint32_t stack[FOVPT_MAX_BVH_DEPTH + 2u];
-    uint32_t sp = 0, cur = 0, left = nb, j;
-    stack[sp++] = 0;
-    while (sp > 0) {
-        fovpt__node *nd = &nodes[stack[--sp]];
-        uint32_t n = nd->n, al = (cur + 3u) & ~3u;
-        if (!n) {
-            FOV_ASSERT(sp + 2u <= FOVPT_MAX_BVH_DEPTH + 2u);
-            stack[sp++] = nd->a + 1u;
-            stack[sp++] = nd->a;
-            continue;
-        }
-        if (((cur + n - 1u) >> 2) - (cur >> 2) > (n - 1u) >> 2 && al + left <= nslots)
-            while (cur < al) dst[cur++] = FOVPT_PRIM_NONE;
-        for (j = 0; j < n; ++j) dst[cur + j] = src[nd->a + j];
-        nd->a = cur;
-        cur += n;
-        left -= n;
-    }
-    while (cur & 3u) dst[cur++] = FOVPT_PRIM_NONE;
-    return cur;
 }
 
 /* Binned SAH build (Wald 2007), iterative with an explicit work stack. */
@@ -4318,7 +4353,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         }
         if (w.depth > max_depth) max_depth = w.depth;
         area = fovpt__half_area(nd->b, nd->b + 3);
-        leaf_cost = 4.0f * (float)((w.count + 3u) >> 2); /* whole blocks of 4: see below */
+        /* whole blocks of 4 with SIMD (see below) */
+        leaf_cost = FOVPT__COMBINE > 1u ? 4.0f * (float)((w.count + 3u) >> 2) : (float)w.count;
         best_cost = FLT_MAX;
         if (w.count > leaf) {
             uint32_t axis;
@@ -4373,8 +4409,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         /* SAH: intersection cost 1 per primitive, traversal cost 1.5 (an inner step tests two
            boxes: about 80 instructions against about 50 for a triangle, under callgrind).
            Defaults 16 bins, leaf 2, cost 1.5 against 12, 4, 1.0 before: 3.0 -> 3.4 Mrays/s on
-           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. A leaf
-           costs its whole blocks of 4 (the leaf test's lanes: 5 primitives cost 8), so a leaf
+           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. With
+           SIMD a leaf costs its whole blocks of 4 (the leaf test's lanes: 5 cost 8), so a leaf
            just over a block splits where that pays (the children's costs stay per primitive:
            rounded there, the binned sweep loses its gradient; cubes441: 2.6 -> 2.5 block
            tests per camera ray, rounded sweep 4.6). */
@@ -4553,7 +4589,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes = base + L.nodes;
             {   /* the build data is spent: a copy of the build's order, then the leaves */
                 uint32_t *tmp = (uint32_t *)(void *)(base + L.pbox);
-                fovpt__combine((fovpt__node *)(void *)(base + L.nodes), s->num_nodes);
+                fovpt__mark_small((fovpt__node *)(void *)(base + L.nodes), s->num_nodes);
                 for (i = 0; i < nb; ++i) tmp[i] = order[i];
                 s->num_slots = fovpt__leaf_layout((fovpt__node *)(void *)(base + L.nodes), tmp,
                                                   order, nb, L.n_slots);
@@ -4585,6 +4621,11 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes4 = base + L.nodes4;
             s->num_nodes4 = fovpt__collapse4((const fovpt__node *)s->nodes,
                                              (fovpt__node4 *)(void *)(base + L.nodes4));
+            {   /* the small subtrees' marks (fovpt__mark_small) cleared: inner nodes n = 0 */
+                fovpt__node *n2 = (fovpt__node *)(void *)(base + L.nodes);
+                for (i = 0; i < s->num_nodes; ++i)
+                    if (n2[i].n & FOVPT__LEAF4) n2[i].n = 0;
+            }
         } else {
             for (i = 0; i < nb; ++i) order[i] = i;
             s->nodes = NULL;
