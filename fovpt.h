@@ -50,9 +50,11 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
       (Wald 2007) over the bounded primitives, collapsed to 4 children per node (8 when
       compiled for AVX2; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
-      inner children until it has that many; a node's boxes are tested in one SIMD pass:
-      SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on wasm32 with -msimd128,
-      one after another elsewhere), nearest child first; leaf triangles are stored in SoA
+      inner children until it has that many; with SIMD a subtree of at most 4 primitives,
+      one leaf block, is never a node of its own: opened by its parent, or one leaf child;
+      leaves lie in whole blocks, padded where one would straddle two; a node's boxes are
+      tested in one SIMD pass: SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on
+      wasm32 with -msimd128, one after another elsewhere), nearest child first; leaf triangles are stored in SoA
       blocks of four and tested four at a time the same way; planes and the user hook are
       tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
       plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
@@ -388,9 +390,11 @@ MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
-   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
-   build data reused for the leaf triangles (60 bytes per bounded primitive, n rounded up to a
-   multiple of 4), light table);
+   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/5 + n/(W - 1) + 1,
+   n/2 + n/(W - 1) + 1 with FOVPT_NO_SIMD), build data reused for the leaf triangles (60
+   bytes per leaf slot: n rounded up to a multiple of 4, plus 4 ceil(n/16) slots for the
+   padding that keeps a leaf of up to 4 in one block of 4; at most 2^26 slots), the leaf
+   order (4 bytes per slot), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
@@ -1144,7 +1148,9 @@ typedef struct fovpt_scene_desc {
     uint32_t bvh_min_prims;    /* no BVH below this many bounded primitives       0: 8 */
     uint32_t bvh_bins;         /* SAH bins per axis, 2 .. 32                      0: 16 */
     uint32_t bvh_leaf;         /* primitives per leaf when SAH finds no better    0: 2
-                                  (1 .. 16; larger leaves only when SAH prefers them, up to 16) */
+                                  (1 .. 16; larger leaves only when SAH prefers them, up to 16;
+                                  with SIMD the SAH counts a leaf's whole blocks of 4, and a
+                                  subtree of <= 4 may be one leaf child of the W-wide tree) */
     uint32_t bvh_max_depth;    /* depth cap, 2 .. FOVPT_MAX_BVH_DEPTH; deeper is an error
                                                                        0: FOVPT_MAX_BVH_DEPTH */
     uint32_t skip_degenerate;  /* 1: drop zero-area triangles instead of failing */
@@ -4279,14 +4285,16 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
     while (sp > 0) {
         work w = stack[--sp];
         fovpt__node4 *q = &n4[w.slot];
-        if (nodes[w.bin].n && !(nodes[w.bin].n & FOVPT__LEAF4)) { c[0] = w.bin; m = 1; } /* a leaf root */
+        const uint32_t rn = nodes[w.bin].n;
+        if (rn && !(rn & FOVPT__LEAF4)) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
         else { c[0] = nodes[w.bin].a; c[1] = nodes[w.bin].a + 1u; m = 2; }
         while (m < FOVPT__W) { /* open the inner child of largest area */
             uint32_t best = FOVPT__W;
             float ba = -1.0f;
             for (j = 0; j < m; ++j) {
                 float a = fovpt__half_area(nodes[c[j]].b, nodes[c[j]].b + 3);
-                if ((!nodes[c[j]].n || (nodes[c[j]].n & FOVPT__LEAF4)) && a > ba) { ba = a; best = j; }
+                const uint32_t cn = nodes[c[j]].n; /* inner, or a small subtree */
+                if ((!cn || (cn & FOVPT__LEAF4)) && a > ba) { ba = a; best = j; }
             }
             if (best == FOVPT__W) break;
             k = c[best];
