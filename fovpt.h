@@ -54,11 +54,11 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       one leaf block, is never a node of its own: opened by its parent, or one leaf child;
       leaves lie in whole blocks, padded where one would straddle two; a node's boxes are
       tested in one SIMD pass: SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on
-      wasm32 with -msimd128, one after another elsewhere), nearest child first; leaf triangles are stored in SoA
-      blocks of four and tested four at a time the same way; planes and the user hook are
-      tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
-      plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
-      the brute-force loop finds.
+      wasm32 with -msimd128, one after another elsewhere), nearest child first; leaf
+      triangles are stored in SoA blocks of four and tested four at a time the same way;
+      planes and the user hook are tested apart. Fewer than bvh_min_prims bounded
+      primitives: no BVH, a plain loop. The box test is conservative (NUMERICS): the BVH
+      never misses a hit that the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
       counter-based integer hash, no state outside the stream); with cfg.sampler SOBOL the
       pixel's samples are stratified (SAMPLERS).
