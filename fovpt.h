@@ -50,13 +50,15 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
       (Wald 2007) over the bounded primitives, collapsed to 4 children per node (8 when
       compiled for AVX2; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
-      inner children until it has that many; a node's boxes are tested in one SIMD pass:
-      SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on wasm32 with -msimd128,
-      one after another elsewhere), nearest child first; leaf triangles are stored in SoA
-      blocks of four and tested four at a time the same way; planes and the user hook are
-      tested apart. Fewer than bvh_min_prims bounded primitives: no BVH, a
-      plain loop. The box test is conservative (NUMERICS): the BVH never misses a hit that
-      the brute-force loop finds.
+      inner children until it has that many; with SIMD a subtree of at most 4 primitives,
+      one leaf block, is never a node of its own: opened by its parent, or one leaf child;
+      leaves lie in whole blocks, padded where one would straddle two; a node's boxes are
+      tested in one SIMD pass: SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on
+      wasm32 with -msimd128, one after another elsewhere), nearest child first; leaf
+      triangles are stored in SoA blocks of four and tested four at a time the same way;
+      planes and the user hook are tested apart. Fewer than bvh_min_prims bounded
+      primitives: no BVH, a plain loop. The box test is conservative (NUMERICS): the BVH
+      never misses a hit that the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
       counter-based integer hash, no state outside the stream); with cfg.sampler SOBOL the
       pixel's samples are stratified (SAMPLERS).
@@ -390,9 +392,11 @@ MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
-   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/2 + n/(W - 1) + 1),
-   build data reused for the leaf triangles (60 bytes per bounded primitive, n rounded up to a
-   multiple of 4), light table);
+   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/5 + n/(W - 1) + 1,
+   n/2 + n/(W - 1) + 1 with FOVPT_NO_SIMD), build data reused for the leaf triangles (60
+   bytes per leaf slot: n rounded up to a multiple of 4, plus 4 ceil(n/16) slots for the
+   padding that keeps a leaf of up to 4 in one block of 4; at most 2^26 slots), the leaf
+   order (4 bytes per slot), light table);
    fovpt_scene_build() builds into them.
    fovpt_memory_size() gives the working memory of a context (UNIFORM: 16 bytes per pixel,
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
@@ -1148,7 +1152,9 @@ typedef struct fovpt_scene_desc {
     uint32_t bvh_min_prims;    /* no BVH below this many bounded primitives       0: 8 */
     uint32_t bvh_bins;         /* SAH bins per axis, 2 .. 32                      0: 16 */
     uint32_t bvh_leaf;         /* primitives per leaf when SAH finds no better    0: 2
-                                  (1 .. 16; larger leaves only when SAH prefers them, up to 16) */
+                                  (1 .. 16; larger leaves only when SAH prefers them, up to 16;
+                                  with SIMD the SAH counts a leaf's whole blocks of 4, and a
+                                  subtree of <= 4 may be one leaf child of the W-wide tree) */
     uint32_t bvh_max_depth;    /* depth cap, 2 .. FOVPT_MAX_BVH_DEPTH; deeper is an error
                                                                        0: FOVPT_MAX_BVH_DEPTH */
     uint32_t skip_degenerate;  /* 1: drop zero-area triangles instead of failing */
@@ -1166,6 +1172,9 @@ typedef struct fovpt_scene {
                                   (uint32_t[3][4]) */
     const void *nodes4;        /* the BVH collapsed to 4 children per node (traversal) */
     uint32_t num_nodes4;
+    uint32_t num_slots;        /* leaf slots in leaf_tris and order (a multiple of 4, at least
+                                  num_bounded: a leaf of <= 4 starts a new block where it
+                                  would straddle two; unused slots hold FOVPT_PRIM_NONE) */
     const uint32_t *lights;    /* sampleable emitters (primitive slots) */
     const float *light_cdf;    /* cumulative selection probability */
     const float *light_area;
@@ -3900,8 +3909,16 @@ typedef struct fovpt__node4 {
 
 typedef struct fovpt__layout {
     size_t prims, nodes, nodes4, order, lights, cdf, area, pbox, total;
-    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max;
+    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max, n_slots;
 } fovpt__layout;
+/* Leaf slots reserved for n bounded primitives: n rounded up to whole blocks of 4, plus
+   FOVPT__SLACK(n) blocks for the padding that keeps leaves of <= 4 inside one block. */
+#define FOVPT__SLACK(n) (((n) + 15u) / 16u)
+#if FOVPT__SIMD
+#define FOVPT__COMBINE 4u
+#else
+#define FOVPT__COMBINE 1u
+#endif
 
 /* |v| without the squares' under- or overflow (prescaled to a largest component of 1 when
    the squared length would leave [1e-30, 1e30]); +inf only when |v| > FLT_MAX. */
@@ -4088,6 +4105,8 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->n_tris = (uint32_t)n_tris;
     L->n_lights = (uint32_t)n_lights;
     L->n_nodes_max = L->n_bounded ? 2u * L->n_bounded - 1u : 0u;
+    L->n_slots = 4u * ((L->n_bounded + 3u) / 4u + FOVPT__SLACK(L->n_bounded));
+    if (L->n_slots > (1u << 26)) L->n_slots = 1u << 26; /* a leaf's first slot: 26 bits */
     /* sizes in uint64_t, checked against SIZE_MAX */
     sz = 0;
     L->prims = 0;
@@ -4096,13 +4115,16 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    /* W-wide nodes: one whose children are all binary leaves (at most leaves / 2 <= n / 2 of
-       them), or one with W children that opened W - 1 of the n - 1 binary inner nodes; or 1 */
+    /* W-wide nodes: one with fewer than W children holds a whole binary subtree, whose
+       root has more than FOVPT__COMBINE primitives (fovpt__mark_small: a smaller subtree is
+       opened by its parent or is one leaf child), so there are at most
+       n / (FOVPT__COMBINE + 1) of them besides the root; one with W children
+       opened W - 1 of the at most n - 1 binary inner nodes; or the root alone */
     L->nodes4 = (size_t)sz;
-    sz += (uint64_t)sizeof(fovpt__node4) *
-          ((uint64_t)L->n_bounded / 2u + (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
+    sz += (uint64_t)sizeof(fovpt__node4) * ((uint64_t)L->n_bounded / (FOVPT__COMBINE + 1u) +
+                                            (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
-    sz += 4u * (uint64_t)L->n_bounded;
+    sz += 4u * (uint64_t)L->n_slots;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->lights = (size_t)sz;
     sz += 4u * n_lights;
@@ -4117,7 +4139,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
                                SoA blocks of 4 slots (fovpt_scene.leaf_tris), 60 bytes
                                per slot (FOVPT__LBLK floats per block of 4) */
-    sz += 4u * FOVPT__LBLK * (((uint64_t)L->n_bounded + 3u) / 4u); /* whole blocks of 4 */
+    sz += FOVPT__LBLK * (uint64_t)L->n_slots; /* whole blocks of 4 */
     sz = (sz + 15u) & ~(uint64_t)15u;
     if (sz > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "scene: memory size overflows size_t");
@@ -4183,7 +4205,84 @@ typedef struct fovpt__bin {
     uint32_t n;
 } fovpt__bin;
 
-/* Collapses the binary BVH into 4-wide nodes (iterative, explicit stack); returns the count. */
+/* Leaves sized to the leaf test's blocks. A small subtree is one of at most FOVPT__COMBINE
+   primitives (4, one block of 4 lanes; 1 without SIMD, where every triangle is a test of its
+   own and the binary leaves' boxes pay: +4 / +6 % instructions per terrain ray with leaves
+   of 4): its primitives are contiguous in order. Each inner small subtree is marked (n =
+   FOVPT__LEAF4 | count), laid out in one block (fovpt__leaf_layout) and never made a W-wide
+   node of its own (fovpt__collapse4: a node opens it while it has room, else it is one leaf
+   child), so every W-wide node but the root holds more than FOVPT__COMBINE primitives (the
+   node bound of fovpt__plan). Combining sibling leaves outright, even only where the
+   parent's box is no larger than theirs together, tested more leaves (interior: 1.14 ->
+   1.50 per camera ray, +8 % instructions); the marks keep the leaves' own boxes where a node
+   has room for them. Children follow their parent in the node array, so one backward pass
+   sees them first. */
+FOVPT__PRIV void fovpt__mark_small(fovpt__node *nodes, uint32_t used)
+{
+    uint32_t i = used;
+    while (i-- > 0) {
+        fovpt__node *nd = &nodes[i];
+        const fovpt__node *l, *r;
+        uint32_t c;
+        if (nd->n) continue;
+        l = &nodes[nd->a]; r = l + 1;
+        c = (l->n & ~FOVPT__LEAF4) + (r->n & ~FOVPT__LEAF4);
+        if (l->n && r->n && c <= FOVPT__COMBINE) nd->n = FOVPT__LEAF4 | c; /* else large: 0 */
+    }
+}
+/* The first slot of a node's subtree (its leftmost leaf). */
+FOVPT__PRIV uint32_t fovpt__first_slot(const fovpt__node *nodes, uint32_t i)
+{
+    while (nodes[i].n == 0 || (nodes[i].n & FOVPT__LEAF4)) i = nodes[i].a;
+    return nodes[i].a;
+}
+
+/* Assigns the leaves their slots, depth first and left to right (the build's order, src, nb
+   entries, into dst by slot), so that a leaf, or a marked small subtree (fovpt__mark_small) as
+   a whole, lies in as few blocks of 4 slots as its count needs: where it would straddle one
+   more, it starts the next block and the slots skipped are padding (FOVPT_PRIM_NONE), while
+   the reserve of nslots slots allows it (otherwise it straddles, which the leaf test
+   handles). Returns the slots used, a multiple of 4. */
+FOVPT__PRIV uint32_t fovpt__leaf_layout(fovpt__node *nodes, const uint32_t *src, uint32_t *dst,
+                                        uint32_t nb, uint32_t nslots)
+{
+    uint32_t stack[FOVPT_MAX_BVH_DEPTH + 2u], sub[FOVPT__COMBINE + 2u];
+    uint32_t sp = 0, cur = 0, left = nb, j;
+    stack[sp++] = 0;
+    while (sp > 0) {
+        const uint32_t ni = stack[--sp];
+        fovpt__node *nd = &nodes[ni];
+        uint32_t n = nd->n & ~FOVPT__LEAF4, al = (cur + 3u) & ~3u, f, ss = 0;
+        if (!nd->n) {
+            FOV_ASSERT(sp + 2u <= FOVPT_MAX_BVH_DEPTH + 2u);
+            stack[sp++] = nd->a + 1u;
+            stack[sp++] = nd->a;
+            continue;
+        }
+        if (((cur + n - 1u) >> 2) - (cur >> 2) > (n - 1u) >> 2 && al + left <= nslots)
+            while (cur < al) dst[cur++] = FOVPT_PRIM_NONE;
+        f = fovpt__first_slot(nodes, ni);
+        for (j = 0; j < n; ++j) dst[cur + j] = src[f + j];
+        sub[ss++] = ni; /* the subtree's leaves keep their offsets from its first slot */
+        while (ss > 0) {
+            fovpt__node *q = &nodes[sub[--ss]];
+            if (q->n & FOVPT__LEAF4) {
+                FOV_ASSERT(ss + 2u <= FOVPT__COMBINE + 2u);
+                sub[ss++] = q->a; sub[ss++] = q->a + 1u;
+            } else {
+                q->a = cur + (q->a - f);
+            }
+        }
+        cur += n;
+        left -= n;
+    }
+    while (cur & 3u) dst[cur++] = FOVPT_PRIM_NONE;
+    return cur;
+}
+
+/* Collapses the binary BVH into W-wide nodes (iterative, explicit stack); returns the count.
+   A node opens its largest inner children (a marked small subtree too) until it has W; a
+   small subtree left unopened is one leaf child (its slots are in one block), not a node. */
 FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4)
 {
     typedef struct { uint32_t bin, slot; } work;
@@ -4193,14 +4292,16 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
     while (sp > 0) {
         work w = stack[--sp];
         fovpt__node4 *q = &n4[w.slot];
-        if (nodes[w.bin].n) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
+        const uint32_t rn = nodes[w.bin].n;
+        if (rn && !(rn & FOVPT__LEAF4)) { c[0] = w.bin; m = 1; } /* a root that is a leaf */
         else { c[0] = nodes[w.bin].a; c[1] = nodes[w.bin].a + 1u; m = 2; }
         while (m < FOVPT__W) { /* open the inner child of largest area */
             uint32_t best = FOVPT__W;
             float ba = -1.0f;
             for (j = 0; j < m; ++j) {
                 float a = fovpt__half_area(nodes[c[j]].b, nodes[c[j]].b + 3);
-                if (!nodes[c[j]].n && a > ba) { ba = a; best = j; }
+                const uint32_t cn = nodes[c[j]].n; /* inner, or a small subtree */
+                if ((!cn || (cn & FOVPT__LEAF4)) && a > ba) { ba = a; best = j; }
             }
             if (best == FOVPT__W) break;
             k = c[best];
@@ -4214,7 +4315,10 @@ FOVPT__PRIV uint32_t fovpt__collapse4(const fovpt__node *nodes, fovpt__node4 *n4
                 continue;
             }
             for (k = 0; k < 6; ++k) q->b[k][j] = nodes[c[j]].b[k];
-            if (nodes[c[j]].n) {
+            if (nodes[c[j]].n & FOVPT__LEAF4) { /* a small subtree */
+                q->child[j] = FOVPT__LEAF4 | (fovpt__first_slot(nodes, c[j]) << 5) |
+                              (nodes[c[j]].n & ~FOVPT__LEAF4);
+            } else if (nodes[c[j]].n) {
                 q->child[j] = FOVPT__LEAF4 | (nodes[c[j]].a << 5) | nodes[c[j]].n;
             } else {
                 FOV_ASSERT(sp < (FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 4u);
@@ -4264,7 +4368,8 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         }
         if (w.depth > max_depth) max_depth = w.depth;
         area = fovpt__half_area(nd->b, nd->b + 3);
-        leaf_cost = (float)w.count;
+        /* whole blocks of 4 with SIMD (see below) */
+        leaf_cost = FOVPT__COMBINE > 1u ? 4.0f * (float)((w.count + 3u) >> 2) : (float)w.count;
         best_cost = FLT_MAX;
         if (w.count > leaf) {
             uint32_t axis;
@@ -4319,7 +4424,11 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         /* SAH: intersection cost 1 per primitive, traversal cost 1.5 (an inner step tests two
            boxes: about 80 instructions against about 50 for a triangle, under callgrind).
            Defaults 16 bins, leaf 2, cost 1.5 against 12, 4, 1.0 before: 3.0 -> 3.4 Mrays/s on
-           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. */
+           bench-pt's 100k-triangle terrain, 0.45x -> 0.49x of Embree's single thread. With
+           SIMD a leaf costs its whole blocks of 4 (the leaf test's lanes: 5 cost 8), so a leaf
+           just over a block splits where that pays (the children's costs stay per primitive:
+           rounded there, the binned sweep loses its gradient; cubes441: 2.6 -> 2.5 block
+           tests per camera ray, rounded sweep 4.6). */
         if (w.count <= leaf ||
             (w.count <= FOVPT__LEAF_MAX &&
              (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost))) {
@@ -4493,16 +4602,22 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
                                  (float *)(void *)(base + L.pbox), d);
             if (e != FOV_OK) { FOV_MEMSET(s, 0, sizeof *s); return e; }
             s->nodes = base + L.nodes;
+            {   /* the build data is spent: a copy of the build's order, then the leaves */
+                uint32_t *tmp = (uint32_t *)(void *)(base + L.pbox);
+                fovpt__mark_small((fovpt__node *)(void *)(base + L.nodes), s->num_nodes);
+                for (i = 0; i < nb; ++i) tmp[i] = order[i];
+                s->num_slots = fovpt__leaf_layout((fovpt__node *)(void *)(base + L.nodes), tmp,
+                                                  order, nb, L.n_slots);
+            }
             {   /* the build data is spent: reuse it for the triangles in leaf order, in SoA
                    blocks of 4 slots (block i / 4: 9 rows v0 x y z, e1 x y z, e2 x y z of 4
                    lanes each, the normal's 3 rows, then the rows slot, id, material:
                    FOVPT__LBLK), so a leaf tests 4 triangles per pass */
                 float *lt = (float *)(void *)(base + L.pbox);
-                uint32_t nb4 = (nb + 3u) & ~3u;
-                for (i = 0; i < nb4; ++i) {
+                for (i = 0; i < s->num_slots; ++i) {
                     float *q = lt + FOVPT__LBLK * (size_t)(i >> 2) + (i & 3u);
                     uint32_t *qi = (uint32_t *)(void *)(q + 48);
-                    const fovpt__prim *p = i < nb ? &prims[order[i]] : NULL;
+                    const fovpt__prim *p = order[i] != FOVPT_PRIM_NONE ? &prims[order[i]] : NULL;
                     qi[0] = p ? order[i] : 0u;
                     qi[4] = p ? p->id : 0u;
                     qi[8] = p ? p->material : 0u;
@@ -4521,6 +4636,11 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes4 = base + L.nodes4;
             s->num_nodes4 = fovpt__collapse4((const fovpt__node *)s->nodes,
                                              (fovpt__node4 *)(void *)(base + L.nodes4));
+            {   /* the small subtrees' marks (fovpt__mark_small) cleared: inner nodes n = 0 */
+                fovpt__node *n2 = (fovpt__node *)(void *)(base + L.nodes);
+                for (i = 0; i < s->num_nodes; ++i)
+                    if (n2[i].n & FOVPT__LEAF4) n2[i].n = 0;
+            }
         } else {
             for (i = 0; i < nb; ++i) order[i] = i;
             s->nodes = NULL;

@@ -485,7 +485,7 @@ static void tp_scene(FILE *csv, FILE *bcsv, int sc, uint32_t W, uint32_t H)
                slot, id and material) beside the whole scene memory; Embree and tinybvh: the
                same figure as bytes_per_tri */
             double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) +
-                                        4.0 * FOVPT__LBLK * (double)((tri.num_bounded + 3u) / 4u)) / (double)soup.n : bpt[m];
+                                        FOVPT__LBLK * (double)tri.num_slots) / (double)soup.n : bpt[m];
             char lay[64];
             snprintf(lay, sizeof lay, "bvh%u %s", (unsigned)FOVPT_BVH_WIDTH,
                      FOVPT__SIMD == 1 ? (FOVPT_BVH_WIDTH == 8 ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");

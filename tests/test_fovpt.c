@@ -345,6 +345,22 @@ static void random_scene(fovpt_shape *sh, uint32_t ns, float *pos, uint32_t ntri
     }
 }
 
+/* primitives under W-wide node i (recursive) */
+static uint32_t wide_prims(const fovpt__node4 *n4, uint32_t i)
+{
+    uint32_t j, c = 0;
+    for (j = 0; j < FOVPT__W; ++j) {
+        if (n4[i].b[0][j] > n4[i].b[3][j]) continue;
+        c += n4[i].child[j] & FOVPT__LEAF4 ? n4[i].child[j] & 31u : wide_prims(n4, n4[i].child[j]);
+    }
+    return c;
+}
+/* primitives under binary node i (recursive: the test scenes' trees are shallow) */
+static uint32_t subtree_prims(const fovpt__node *n2, uint32_t i)
+{
+    return n2[i].n ? n2[i].n : subtree_prims(n2, n2[i].a) + subtree_prims(n2, n2[i].a + 1u);
+}
+
 static void test_bvh_random(void)
 {
     int sc;
@@ -369,15 +385,26 @@ static void test_bvh_random(void)
         r = build(&b, &d);
         if (!check(r == FOV_OK && b.s.nodes != NULL, N("random scene %d builds a BVH (%u shapes, %u triangles)", sc, ns, nt),
                    "%s", fovpt_result_string(r))) { free(sh); free(pos); free(b.mem); continue; }
-        {   /* the W-wide tree (FOVPT__W: 4, or 8 for AVX2): every leaf slot in exactly one leaf,
-               every child box inside its parent's, 2..W children per inner node, one node per
-               1..W-1 binary inner nodes */
+        {   /* the W-wide tree (FOVPT__W: 4, or 8 for AVX2): every primitive in exactly one
+               leaf slot, every child box inside its parent's, 2..W children per inner node, one
+               node per 1..W-1 binary inner nodes (reachable from the root; those of more than
+               FOVPT__COMBINE primitives all opened), every node but the root over
+               FOVPT__COMBINE primitives (a smaller subtree is a leaf child), a leaf of <= 4
+               in one block of 4 slots unless the padding reserve is spent */
             static uint32_t seen[4000], stackn[4000];
-            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, k, j;
+            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, nbig = 0, strad = 0, k, j;
+            const uint32_t nslots = 4u * ((b.s.num_bounded + 3u) / 4u + (b.s.num_bounded + 15u) / 16u);
             const fovpt__node4 *n4 = (const fovpt__node4 *)b.s.nodes4;
             const fovpt__node *n2 = (const fovpt__node *)b.s.nodes;
             memset(seen, 0, sizeof seen);
-            for (k = 0; k < b.s.num_nodes; ++k) ninner += n2[k].n == 0u;
+            stackn[sp++] = 0;
+            while (sp > 0) {
+                uint32_t ni = stackn[--sp];
+                if (n2[ni].n) continue;
+                ++ninner;
+                nbig += subtree_prims(n2, ni) > FOVPT__COMBINE;
+                stackn[sp++] = n2[ni].a; stackn[sp++] = n2[ni].a + 1u;
+            }
             stackn[sp++] = 0;
             while (sp > 0 && bad == 0) {
                 uint32_t ni = stackn[--sp], real = 0;
@@ -389,7 +416,9 @@ static void test_bvh_random(void)
                     ++real;
                     if (c & FOVPT__LEAF4) {
                         uint32_t f = (c & ~FOVPT__LEAF4) >> 5, n = c & 31u, t;
-                        for (t = f; t < f + n; ++t) if (t >= b.s.num_bounded || seen[t]++) bad++;
+                        if (n > 16u || ((f + n - 1u) >> 2) - (f >> 2) > (n - 1u) >> 2) strad++;
+                        for (t = f; t < f + n; ++t)
+                            if (t >= b.s.num_slots || b.s.order[t] >= b.s.num_bounded || seen[b.s.order[t]]++) bad++;
                     } else {
                         const fovpt__node4 *cq = &n4[c];
                         uint32_t cj, kk;
@@ -402,13 +431,17 @@ static void test_bvh_random(void)
                         stackn[sp++] = c;
                     }
                 }
-                if (real < 2u && !(ni == 0 && b.s.num_nodes == 1u)) bad++;
+                if (real < 2u && !(ni == 0 && n2[0].n)) bad++;
+                if (ni != 0 && wide_prims(n4, ni) <= FOVPT__COMBINE) bad++; /* a small subtree is a leaf */
             }
             for (k = 0; k < b.s.num_bounded; ++k) if (seen[k] != 1u) bad++;
-            check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= ninner && b.s.num_nodes4 <= ninner &&
-                      b.s.num_nodes4 <= b.s.num_bounded / 2u + b.s.num_bounded / (FOVPT__W - 1u) + 1u, /* fovpt_scene_size's bound */
-                  N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children", sc, FOVPT__W, FOVPT__W),
-                  "bad %u, visited %u of %u nodes4, binary inner %u", bad, visited, b.s.num_nodes4, ninner);
+            check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= nbig && b.s.num_nodes4 <= ninner &&
+                      b.s.num_nodes4 <= b.s.num_bounded / (FOVPT__COMBINE + 1u) + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
+                      b.s.num_slots % 4u == 0 && b.s.num_slots >= b.s.num_bounded && b.s.num_slots <= nslots &&
+                      (strad == 0 || b.s.num_slots == nslots),
+                  N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children, leaves in blocks", sc, FOVPT__W, FOVPT__W),
+                  "bad %u, visited %u of %u nodes4, binary inner %u, slots %u of %u, straddling %u", bad, visited, b.s.num_nodes4, ninner,
+                  b.s.num_slots, nslots, strad);
         }
         for (i = 0; i < 3000; ++i) {
             float o[3], dd[3];
@@ -2334,6 +2367,87 @@ static int adv_spurious(const fovpt_scene *s, const fovpt_hit *h, const float o[
     }
     return 0;
 }
+/* The scene-memory size query against the build's new rules (leaves combined up to one
+   block, padded to whole blocks, the W-wide node bound): 1 .. 70 primitives all identical,
+   on a line, at exponentially growing distances (a caterpillar tree: leaves of 1 beside
+   subtrees) and random; default, 1, 3 and 16 per leaf. Each build into exactly
+   fovpt_scene_size bytes, the 64 bytes after them untouched, the node and slot counts within
+   the documented bounds, hits = brute force. */
+static void test_bvh_size_bound(void)
+{
+    static const uint32_t leafs[4] = { 0u, 1u, 3u, 16u };
+    uint32_t kind, n, li, builds = 0, fails = 0, over = 0, guard = 0, mism = 0, hits = 0, rays = 0;
+    for (kind = 0; kind < 4u; ++kind)
+        for (n = 1; n <= 70u; ++n)
+            for (li = 0; li < 4u; ++li) {
+                float pos[9u * 70u];
+                fovpt_material m;
+                fovpt_mesh mesh;
+                fovpt_scene_desc d;
+                fovpt_scene sc;
+                size_t bytes = 0, j;
+                unsigned char *mem;
+                uint32_t i, k, reserve;
+                for (i = 0; i < n; ++i) {
+                    float c[3], z = 1.0f; /* z: the triangle's size */
+                    if (kind == 0) { c[0] = 0.5f; c[1] = -0.25f; c[2] = 1.0f; }
+                    else if (kind == 1) { c[0] = 0.75f * (float)i; c[1] = 0.0f; c[2] = 2.0f; }
+                    else if (kind == 2) { c[0] = ldexpf(1.0f, (int)(i % 40u)); c[1] = 0.0f; c[2] = 0.0f; z = 0.25f * c[0] + 1.0f; }
+                    else { for (k = 0; k < 3; ++k) c[k] = frand(-3.0f, 3.0f); }
+                    for (k = 0; k < 3; ++k) {
+                        pos[9u * i + k] = c[k] - (k == 1 ? 0.3f * z : 0.0f);
+                        pos[9u * i + 3u + k] = c[k] + (k == 0 ? 0.4f * z : 0.0f);
+                        pos[9u * i + 6u + k] = c[k] + (k == 1 ? 0.3f * z : k == 2 ? 0.2f * z : 0.0f);
+                    }
+                }
+                fovpt_material_init(&m);
+                memset(&mesh, 0, sizeof mesh);
+                mesh.positions = pos; mesh.num_vertices = 3u * n; mesh.num_triangles = n;
+                fovpt_scene_desc_init(&d);
+                d.meshes = &mesh; d.num_meshes = 1; d.materials = &m; d.num_materials = 1;
+                d.bvh_min_prims = 1; d.bvh_leaf = leafs[li];
+                if (fovpt_scene_size(&d, &bytes) != FOV_OK) { fails++; continue; }
+                mem = (unsigned char *)amalloc(bytes + 64u);
+                memset(mem, 0xA5, bytes + 64u);
+                builds++;
+                if (fovpt_scene_build(&sc, &d, mem, bytes) != FOV_OK || !sc.nodes) { fails++; free(mem); continue; }
+                for (j = bytes; j < bytes + 64u; ++j) guard += mem[j] != 0xA5u;
+                reserve = 4u * ((n + 3u) / 4u + (n + 15u) / 16u);
+                if (sc.num_nodes4 > n / (FOVPT__COMBINE + 1u) + n / (FOVPT__W - 1u) + 1u || sc.num_slots > reserve ||
+                    sc.num_slots < n || sc.num_slots % 4u != 0)
+                    over++;
+                {   /* and within the regions fovpt_scene_size laid out */
+                    fovpt__layout L;
+                    if (fovpt__plan(&d, &L) != FOV_OK || L.total != bytes ||
+                        (L.order - L.nodes4) / sizeof(fovpt__node4) < sc.num_nodes4 ||
+                        (L.lights - L.order) / 4u < sc.num_slots || (L.total - L.pbox) / (4u * FOVPT__LBLK) < sc.num_slots / 4u)
+                        over++;
+                }
+                for (i = 0; i < 24u; ++i) {
+                    float o[3], dd[3];
+                    fovpt_hit h1, h2;
+                    int a1, a2;
+                    const float *t = pos + 9u * (i % n);
+                    for (k = 0; k < 3; ++k) {
+                        o[k] = frand(-4.0f, 4.0f) + (kind == 1 ? 0.375f * (float)n : 0.0f);
+                        dd[k] = (t[k] + t[3u + k] + t[6u + k]) / 3.0f - o[k] + frand(-0.1f, 0.1f);
+                    }
+                    a1 = fovpt_intersect(&sc, o, dd, 0.0f, FLT_MAX, &h1);
+                    a2 = fovpt_intersect_brute(&sc, o, dd, 0.0f, FLT_MAX, &h2);
+                    if (a1 != a2 || (a1 && (!(h1.t <= h2.t && h1.t >= h2.t) || h1.prim != h2.prim))) mism++;
+                    hits += (uint32_t)a1;
+                    rays++;
+                }
+                free(mem);
+            }
+    check(fails == 0 && builds == 4u * 70u * 4u && guard == 0 && over == 0,
+          "BVH size query: 1..70 identical / collinear / exponential / random triangles, leaf 0, 1, 3, 16: "
+          "builds fit, nodes and leaf slots within the bounds",
+          "fails %u of %u builds, %u guard bytes written, %u over a bound", fails, builds, guard, over);
+    check(mism == 0 && hits > rays / 4u, "BVH size query scenes: BVH = brute force (t, primitive)",
+          "%u mismatches, %u hits of %u rays", mism, hits, rays);
+}
+
 static void test_bvh_adversarial(void)
 {
     static const float scales[6] = { 1e-3f, 0.1f, 1.0f, 10.0f, 1e3f, 1e5f };
@@ -2934,6 +3048,7 @@ int main(void)
     test_f7_regressions();
     test_scene_bad();
     test_bvh_random();
+    test_bvh_size_bound();
     test_any_length();
     test_bvh_adversarial();
     test_watertight();
@@ -2952,6 +3067,7 @@ int main(void)
     test_eyes();
     test_scene_bad();
     test_bvh_random();
+    test_bvh_size_bound();
     test_user_hook();
     test_any_length();
     test_rng();
