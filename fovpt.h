@@ -48,13 +48,13 @@ QUICK START
 WHAT IT DOES (the pipeline, in the order the data flows)
    1. Scene (fovpt_scene_build): spheres, infinite planes, quads (parallelograms), axis-aligned
       boxes and triangle meshes, validated, copied into caller memory, with a binned-SAH BVH
-      (Wald 2007) over the bounded primitives, collapsed to 4 children per node (8 when
-      compiled for AVX2; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
+      (Wald 2007) over the bounded primitives, collapsed to 8 children per node (4 with
+      FOVPT_NO_SIMD; FOVPT_BVH_WIDTH) for the traversal (each node opens its largest
       inner children until it has that many; with SIMD a subtree of at most 4 primitives,
       one leaf block, is never a node of its own: opened by its parent, or one leaf child;
       leaves lie in whole blocks, padded where one would straddle two; a node's boxes are
-      tested in one SIMD pass: SSE on x86, AVX for 8 children, NEON on AArch64, SIMD128 on
-      wasm32 with -msimd128, one after another elsewhere), nearest child first; leaf
+      tested in SIMD passes of 4 (SSE on x86, NEON on AArch64, SIMD128 on wasm32 with
+      -msimd128) or one of 8 (AVX), one after another elsewhere), nearest child first; leaf
       triangles are stored in SoA blocks of four and tested four at a time the same way;
       planes and the user hook are tested apart. Fewer than bvh_min_prims bounded
       primitives: no BVH, a plain loop. The box test is conservative (NUMERICS): the BVH
@@ -369,7 +369,7 @@ CONFIGURATION (define before including the implementation)
    FOVPT_NO_SIMD        no SSE / AVX / NEON / SIMD128 in the BVH traversal and no SSE2 in
                         the denoiser's a-trous pass (the scalar twins: same hits, the same
                         denoised image bit for bit, slower)
-   FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8 with AVX2, else 4)
+   FOVPT_BVH_WIDTH      children per traversal node, 4 or 8  (default 8; 4 with FOVPT_NO_SIMD)
    FOVPT_MAX_BOUNCES    hard cap on max_depth                             (default 1024)
    FOVPT_MAX_SPP        hard cap on samples per pixel per frame           (default 65536)
    FOVPT_MAX_RADIANCE   a sample's radiance is clamped per channel to this (at most FLT_MAX),
@@ -393,7 +393,7 @@ MEMORY
    The caller owns every byte; blocks must be 8-byte aligned (malloc's and uint64_t arrays
    are). fovpt_scene_size() gives the bytes for a scene description
    (primitives, binary BVH nodes (32 bytes each, up to 2n - 1 for n bounded primitives),
-   traversal nodes (128 bytes each, 256 with FOVPT_BVH_WIDTH 8; up to n/5 + n/(W - 1) + 1,
+   traversal nodes (256 bytes each, 128 with FOVPT_BVH_WIDTH 4; up to n/5 + n/(W - 1) + 1,
    n/2 + n/(W - 1) + 1 with FOVPT_NO_SIMD), build data reused for the leaf triangles (60
    bytes per leaf slot: n rounded up to a multiple of 4, plus 4 ceil(n/16) slots for the
    padding that keeps a leaf of up to 4 in one block of 4; at most 2^26 slots), the leaf
@@ -403,12 +403,13 @@ MEMORY
    the progressive accumulator; LAYERS, ZONES: 16 bytes per lattice point of every layer,
    (W/d + 2)(H/d + 2) each; SELECTIVE, JIN: 68 bytes per pixel, plus 32 per pixel and frame
    of history with temporal options: 2 frames for reuse, n_tpi + 1 for smoothing). Images are
-   caller buffers with an explicit row stride. Stack use per entry point: about 5 KiB at
-   most (gcc -O2, x86-64, -fstack-usage: BVH build 2.5 KiB, the work stack of
-   FOVPT_MAX_BVH_DEPTH entries and 32 bins; traversal 1.9 KiB, W - 1 entries of 8 bytes
-   (node, entry distance) per depth level (3.6 KiB of entries for FOVPT_BVH_WIDTH 8);
-   radiance 2.1 KiB, with the Whitted branch stack of 2 * FOVPT_MAX_WHITTED entries;
-   trace_rows 0.6 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
+   caller buffers with an explicit row stride. Stack use per entry point: about 7 KiB at
+   most with 8-wide nodes, 4.5 KiB with 4 (gcc -O2, x86-64, -fstack-usage, frames along the
+   deepest chain: trace_rows 0.8 KiB, radiance 2.1 KiB with the Whitted branch stack of
+   2 * FOVPT_MAX_WHITTED entries, traversal 4.1 KiB: W - 1 entries of 8 bytes (node, entry
+   distance) per depth level, 3.6 KiB with 8-wide nodes, 1.5 KiB with 4; the BVH build 2.5
+   KiB (the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins), its collapse 3.7 KiB;
+   resolve_rows 2 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
    The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
    (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
 
@@ -565,9 +566,12 @@ RECENT REVISION HISTORY
                       W-wide parent while it has room, else it is one leaf child laid out in
                       one block of 4 lanes (padding slots: fovpt_scene gains num_slots); the
                       SAH prices a leaf in whole blocks. 8-wide nodes hold 6.6 children (3.5
-                      before), scene memory per triangle 280 (SSE2) / 300 (AVX2) bytes (303 /
-                      361); same hits. Terrain 1.06 / 1.05x (SSE2, camera / bounce), 1.14 /
-                      1.17x (AVX2), Cornell box up to 1.41x, side by side. A sample's radiance
+                      before) and are the default with any SIMD (FOVPT_BVH_WIDTH 8: two 4-lane
+                      passes per node without AVX; 4 with FOVPT_NO_SIMD); scene memory about
+                      300 bytes per triangle (303 SSE2, 361 AVX2); same hits. Side by side
+                      against 0.9.0: terrain AVX2 1.14 / 1.17x (camera / bounce), Cornell box
+                      up to 1.41x; SSE2 8-wide against 4-wide 1.08 / 1.11x on the terrain,
+                      1.14-1.27x camera on the small scenes. A sample's radiance
                       is clamped per channel at FOVPT_MAX_RADIANCE (1e16): an emission near
                       FLT_MAX summed to +inf in the image (a fuzzer finding). LAYERS / ZONES:
                       the resolve sums each lattice column once per row, ZONES' Lanczos weights
@@ -1914,7 +1918,7 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
 #endif
 #if FOVPT_MAX_PRIMS > (1u << 26)
 #error \
-"fovpt: FOVPT_MAX_PRIMS above 2^26 (the 4-wide BVH packs a leaf's first primitive in 26 bits)"
+"fovpt: FOVPT_MAX_PRIMS above 2^26 (the wide BVH packs a leaf's first primitive in 26 bits)"
 #endif
 #ifndef FOVPT_MAX_BVH_DEPTH
 #define FOVPT_MAX_BVH_DEPTH 64
@@ -3085,10 +3089,10 @@ FOV__PRIV fov_result fov__camera_display(const fov_camera *cam, fov_display *d)
 #define FOVPT__PRIV FOV__PRIV
 #define FOVPT__FAIL(lg, r, msg) FOV__FAIL(lg, "fovpt", r, msg)
 
-/* SIMD: the 4-wide BVH tests a node's four boxes in one pass and a leaf's triangles four at
-   a time (SoA blocks): SSE on x86 (FOVPT__SIMD 1), NEON on AArch64 (2), SIMD128 on wasm32
-   built with -msimd128 (3); FOVPT_NO_SIMD or any other target: the scalar twin, the same
-   arithmetic one lane at a time (0). Every path gives the same hits (the same float
+/* SIMD: the wide BVH tests a node's boxes four at a time (eight with AVX) and a leaf's
+   triangles four at a time (SoA blocks): SSE on x86 (FOVPT__SIMD 1), NEON on AArch64 (2),
+   SIMD128 on wasm32 built with -msimd128 (3); FOVPT_NO_SIMD or any other target: the scalar
+   twin, the same arithmetic one lane at a time (0). Every path gives the same hits (the same float
    operations in the same order, no FMA contraction: the comparisons are exact). */
 #if !defined(FOVPT_NO_SIMD) && (defined(__SSE__) || defined(_M_X64) || \
                                 (defined(_M_IX86_FP) && _M_IX86_FP >= 1))
@@ -3889,15 +3893,17 @@ typedef struct fovpt__node {
     uint32_t n;     /* leaf: primitive count (>= 1); inner: 0 */
 } fovpt__node;
 
-/* The traversal's BVH: the binary tree collapsed to up to FOVPT__W (FOVPT_BVH_WIDTH: 4, or
-   8 when compiled for AVX2) children per node (each node opens its largest inner children
+/* The traversal's BVH: the binary tree collapsed to up to FOVPT__W (FOVPT_BVH_WIDTH: 8 with
+   SIMD, 4 with FOVPT_NO_SIMD) children per node (each node opens its largest inner children
    until it has W). b[row][child], rows as in fovpt__node.b (lo x, y, z, hi x, y, z), so a
    ray's near and far rows are b[nb[k]] and b[fb[k]], the W children side by side; empty
    slots have an empty box (lo FLT_MAX, hi -FLT_MAX), which every ray misses. child: a node
    index, or FOVPT__LEAF4 | first << 5 | count for a leaf (count <= 16). 128 bytes (W = 4) or
    256 (W = 8). */
 #ifndef FOVPT_BVH_WIDTH
-#if FOVPT__SIMD == 1 && defined(__AVX2__)
+#if FOVPT__SIMD /* 8-wide: fewer, fuller nodes; without AVX two 4-lane passes per node (0.10.0:
+                   SSE2 1.08 / 1.11x on the terrain, 1.14-1.27x on the small scenes, wasm
+                   SIMD128 1.07-1.11x against 4-wide, side by side) */
 #define FOVPT_BVH_WIDTH 8
 #else
 #define FOVPT_BVH_WIDTH 4
