@@ -487,8 +487,14 @@ static void tp_scene(FILE *csv, FILE *bcsv, int sc, uint32_t W, uint32_t H)
             double trav = m == TP_PT ? ((double)tri.num_nodes4 * sizeof(fovpt__node4) +
                                         FOVPT__LBLK * (double)tri.num_slots) / (double)soup.n : bpt[m];
             char lay[64];
+            /* the node test's instructions: one AVX pass of 8 lanes, or SSE passes of 4 */
+#if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+            const int fovpt__avx_walk = 1;
+#else
+            const int fovpt__avx_walk = 0;
+#endif
             snprintf(lay, sizeof lay, "bvh%u %s", (unsigned)FOVPT_BVH_WIDTH,
-                     FOVPT__SIMD == 1 ? (FOVPT_BVH_WIDTH == 8 ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");
+                     FOVPT__SIMD == 1 ? (fovpt__avx_walk ? "avx" : "sse") : FOVPT__SIMD == 2 ? "neon" : FOVPT__SIMD == 3 ? "simd128" : "scalar");
             fprintf(bcsv, "%s,%s,%u,%.2f,%.1f,%s,%.1f\n", nm, mname[m], soup.n, build_ms[m], bpt[m],
                     m == TP_PT ? lay : m == TP_EM ? "embree3 default" :
 #ifdef PT_HAVE_TINYBVH
