@@ -4792,10 +4792,20 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
    a direction whose largest component lies outside [2^-32, 2^32] is scaled by a power of
    two (exact) to one in [2^-16, 2^16); tmin, tmax and the hit t are rescaled alike.
    Returns the factor applied to t (1 for ordinary directions, bit for bit as before). */
-FOVPT__PRIV int fovpt__dir_odd(const float dir[3]) /* largest component outside [2^-32, 2^32] */
+/* One pass over a direction's components (every ray): bit 1 when the largest magnitude lies
+   outside [2^-32, 2^32] or is NaN (the direction is rescaled), bit 2 when a component is not
+   0 but below FLT_MIN in magnitude (fovpt__dir_tiny: the brute-force loop). */
+FOVPT__PRIV int fovpt__dir_class(const float d[3])
 {
-    float m = fov__maxf(fov__absf(dir[0]), fov__maxf(fov__absf(dir[1]), fov__absf(dir[2])));
-    return !(m >= 2.3283064365386963e-10f && m <= 4294967296.0f);
+    uint32_t k, tiny = 0;
+    float m;
+    for (k = 0; k < 3; ++k) {
+        union { float f; uint32_t u; } v;
+        v.f = d[k];
+        tiny |= (uint32_t)((v.u & 0x7fffffffu) - 1u < 0x007fffffu);
+    }
+    m = fov__maxf(fov__absf(d[0]), fov__maxf(fov__absf(d[1]), fov__absf(d[2])));
+    return (!(m >= 2.3283064365386963e-10f && m <= 4294967296.0f) ? 1 : 0) | (tiny ? 2 : 0);
 }
 /* 1 when a direction component is not 0 but below FLT_MIN (2^-126) in magnitude: its
    reciprocal overflows (|d| <= 2^-128) or the box test's margin on it does, so the slab test
@@ -5214,15 +5224,16 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     fovpt__ray r;
     float t = tmax, un[3];
     uint32_t slot, pos, umat = 0;
-    int user = 0;
+    int user = 0, dc;
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
-    if (!fovpt__dir_odd(dir)) {
+    dc = fovpt__dir_class(dir);
+    if (!(dc & 1)) {
         /* largest component in [2^-32, 2^32]: dot(dir, dir) >= 2^-64 > 0 when finite */
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0;
         fovpt__ray_set(&r, org, dir);
-        slot = fovpt__closest(s, &r, tmin, &t, brute || fovpt__dir_tiny(dir), 0, &pos);
+        slot = fovpt__closest(s, &r, tmin, &t, brute || (dc & 2), 0, &pos);
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
@@ -5310,12 +5321,14 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     fovpt__ray r;
     uint32_t pos;
     float t = tmax;
+    int dc;
     if (!s || !org || !dir || !s->prims) return 0;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
-    if (!fovpt__dir_odd(dir)) {
+    dc = fovpt__dir_class(dir);
+    if (!(dc & 1)) {
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0; /* as in fovpt__hit */
         fovpt__ray_set(&r, org, dir);
-        if (fovpt__closest(s, &r, tmin, &t, fovpt__dir_tiny(dir), 1, &pos) != FOVPT_PRIM_NONE)
+        if (fovpt__closest(s, &r, tmin, &t, dc & 2, 1, &pos) != FOVPT_PRIM_NONE)
             return 1;
     } else {
         float ds[3], sc = fovpt__dir_scale(dir, ds);

@@ -2643,6 +2643,43 @@ static void test_tiny_dir(void)
 /* fovpt__rev32 (the SOBOL sampler's bit reversal) against a loop over the bits; the
    FOVPT_NO_SIMD build defines FOVPT__BITREV 0, so the portable path is checked there and the
    compiler's builtin path in the others (tests/xtarget: wasm32, AArch64) */
+/* fovpt__dir_class (one pass per ray) against its two rules, evaluated here in double on
+   every combination of edge values: bit 1 when max |d| is outside [2^-32, 2^32], bit 2 when
+   some component is not 0 but below FLT_MIN in magnitude */
+static void test_dir_class(void)
+{
+    static const uint32_t bits[] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x807fffffu, 0x007fffffu,
+        0x00800000u, 0x80800000u, 0x2f7fffffu, 0x2f800000u, 0x4f800000u, 0x4f800001u, 0x3f800000u,
+        0xbf000000u, 0x7f7fffffu, 0x7f800000u, 0xff800000u, 0x7fc00000u, 0x00400000u };
+    const uint32_t nb = (uint32_t)(sizeof bits / sizeof bits[0]);
+    uint32_t i, j, k, bad = 0, n = 0;
+    for (i = 0; i < nb; ++i)
+        for (j = 0; j < nb; ++j)
+            for (k = 0; k < nb; ++k) {
+                float d[3];
+                double m = 0.0;
+                int want = 0, tiny = 0, nan = 0, c;
+                uint32_t q, b3[3];
+                b3[0] = bits[i]; b3[1] = bits[j]; b3[2] = bits[k];
+                for (q = 0; q < 3; ++q) {
+                    double a;
+                    memcpy(&d[q], &b3[q], sizeof d[q]);
+                    a = fabs((double)d[q]);
+                    if (a != a) nan = 1;
+                    else if (a > m) m = a;
+                    if (a > 0.0 && a < 1.1754943508222875e-38) tiny = 1;
+                }
+                if (m < 2.3283064365386963e-10 || m > 4294967296.0) want |= 1;
+                if (tiny) want |= 2;
+                c = fovpt__dir_class(d);
+                ++n;
+                /* a NaN component: bit 1 is not specified (the caller rejects non-finite
+                   directions next); bit 2 still is */
+                if (nan ? (c & 2) != (want & 2) : c != want) ++bad;
+            }
+    check(bad == 0, "fovpt__dir_class: rescale and tiny-component bits on 18^3 edge-value directions", "%u of %u differ", bad, n);
+}
+
 static void test_rev32(void)
 {
     uint32_t i, x = 0x12345678u, bad = 0;
@@ -3053,6 +3090,7 @@ int main(void)
     test_bvh_adversarial();
     test_watertight();
     test_tiny_dir();
+    test_dir_class();
     test_rev32();
     return fovcheck_summary();
 #endif
@@ -3088,6 +3126,7 @@ int main(void)
     test_bvh_adversarial();
     test_watertight();
     test_tiny_dir();
+    test_dir_class();
     test_rev32();
     return fovcheck_summary();
 }
