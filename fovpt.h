@@ -7264,12 +7264,14 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
 
 /* LAYERS resolve: where pixel v lies against eccentricity thresholds without the atan2 of
    fov__ecc_deg. tan2[i] = tan^2 of threshold i (degrees), or -1 where it is outside
-   [1e-6, 60]: that one is always decided exactly. The comparison s^2 < co^2 tan^2 (s =
+   [2, 60]: that one is always decided exactly. The comparison s^2 < co^2 tan^2 (s =
    |v x g|, co = v . g, e = atan2(s, co)) decides e < T when it holds with a relative margin
    of 1e-5; otherwise 0: undecided, the caller computes e exactly. Returns -1 (e < T), +1
    (e > T) or 0. One ulp of e moves tan^2 e by 4 e eps / sin 2e relative: below 1e-6 up to
-   60 degrees (the margin covers fov__ecc_deg's rounding ten times over), but 1e-5 at 89
-   degrees, where a pixel at e = T was decided outside (a reviewer's case). */
+   60 degrees, but 1e-5 at 89 degrees, where a pixel at e = T was decided outside (a
+   reviewer's case). Below 2 degrees the cross product's rounding (eps / sin e relative)
+   differs between this copy and fov__ecc_deg's where a compiler contracts them into FMA
+   differently (gnu99, -mfma: decisions contradicted at e < 0.2 degrees, a second review). */
 FOVPT__PRIV int fovpt__ecc_side(float s2, float co, float tan2)
 {
     float r;
@@ -7284,7 +7286,7 @@ FOVPT__PRIV int fovpt__ecc_side(float s2, float co, float tan2)
 FOVPT__PRIV float fovpt__tan2_deg(float t)
 {
     float tn;
-    if (!(t >= 1e-6f && t <= 60.0f)) return -1.0f;
+    if (!(t >= 2.0f && t <= 60.0f)) return -1.0f;
     tn = FOV__TAN(t * (FOV__PI / 180.0f));
     return tn * tn;
 }
