@@ -7283,6 +7283,16 @@ FOVPT__PRIV int fovpt__ecc_side(float s2, float co, float tan2)
     if (s2 > r * (1.0f + 1e-5f)) return 1;
     return 0;
 }
+/* s^2 = |v x g|^2 and co = v . g of pixel position (x, y) (fov__ecc_deg's vector), for
+   fovpt__ecc_side */
+FOVPT__PRIV void fovpt__ecc_s2co(const fov_ecc_model *m, float x, float y, float *s2, float *co)
+{
+    float v[3], cr[3];
+    v[0] = x - m->cx; v[1] = y - m->cy; v[2] = m->f_px;
+    fov__cross(v, m->g, cr);
+    *s2 = fov__dot(cr, cr);
+    *co = fov__dot(v, m->g);
+}
 FOVPT__PRIV float fovpt__tan2_deg(float t)
 {
     float tn;
@@ -7331,17 +7341,13 @@ FOVPT_API fov_result fovpt_resolve_rows(const fovpt_ctx *ctx, uint32_t y0, uint3
             } else {
                 const fovpt_layers_cfg *L = &ctx->lay;
                 const fov_ecc_model *em = &ctx->ecc;
-                float f[3], v[3], cr[3], s2, co, e = -1.0f; /* e < 0: not computed yet */
+                float f[3], s2, co, e = -1.0f; /* e < 0: not computed yet */
                 uint32_t n, top = 0;
-                int side;
+                int side = -1; /* layer 0 radius 0 (the default): the whole image */
 #define FOVPT__E() (e >= 0.0f ? e : (e = fovpt_ecc_deg(em, (float)x + 0.5f, (float)y + 0.5f)))
-                v[0] = (float)x + 0.5f - em->cx; v[1] = (float)y + 0.5f - em->cy; v[2] = em->f_px;
-                fov__cross(v, em->g, cr);
-                s2 = fov__dot(cr, cr);
-                co = fov__dot(v, em->g);
-                side = fovpt__ecc_side(s2, co, t2r0);
-                if (!(L->layer[0].radius_deg > 0.0f) || side < 0 ||
-                    (side == 0 && FOVPT__E() <= L->layer[0].radius_deg)) {
+                fovpt__ecc_s2co(em, (float)x + 0.5f, (float)y + 0.5f, &s2, &co);
+                if (L->layer[0].radius_deg > 0.0f) side = fovpt__ecc_side(s2, co, t2r0);
+                if (side < 0 || (side == 0 && FOVPT__E() <= L->layer[0].radius_deg)) {
                     /* the innermost layer with full weight: nothing below it is needed */
                     for (n = L->count - 1u; n > 0; --n) {
                         side = fovpt__ecc_side(s2, co, t2in[n]);
@@ -7650,13 +7656,9 @@ FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint3
                     float ep = -1.0f; /* < 0: not computed */
                     fovpt__gsum G;
                     if (!all_in) {
-                        float v[3], cr[3], s2, co;
+                        float s2, co;
                         int sa, sb;
-                        v[0] = (float)px + 0.5f - em->cx; v[1] = (float)py + 0.5f - em->cy;
-                        v[2] = em->f_px;
-                        fov__cross(v, em->g, cr);
-                        s2 = fov__dot(cr, cr);
-                        co = fov__dot(v, em->g);
+                        fovpt__ecc_s2co(em, (float)px + 0.5f, (float)py + 0.5f, &s2, &co);
                         sa = fovpt__ecc_side(s2, co, t2tr);
                         sb = ti > 0.0f ? fovpt__ecc_side(s2, co, t2ti) : 1;
                         if (sa == 0 || sb == 0) {

@@ -2981,15 +2981,12 @@ static void test_resolve_shortcuts(void)
             gz.y = (float)(seed >> 8) / 16777216.0f * 1.6f * (float)Hd - 0.3f * (float)Hd;
             if (fovpt_ecc_init(&m, NULL, fov, Wd, Hd, gz) != FOV_OK) { ++wrong; continue; }
             for (p = 0; p < 400u; ++p) {
-                float x, y, v[3], cr[3], s2, co, e;
+                float x, y, s2, co, e;
                 seed = seed * 1664525u + 1013904223u;
                 x = (float)((seed >> 8) % Wd) + 0.5f;
                 seed = seed * 1664525u + 1013904223u;
                 y = (float)((seed >> 8) % Hd) + 0.5f;
-                v[0] = x - m.cx; v[1] = y - m.cy; v[2] = m.f_px;
-                fov__cross(v, m.g, cr);
-                s2 = fov__dot(cr, cr);
-                co = fov__dot(v, m.g);
+                fovpt__ecc_s2co(&m, x, y, &s2, &co);
                 e = fovpt_ecc_deg(&m, x, y);
                 for (t = 0; t < 10u; ++t) {
                     /* thresholds away from e (offsets in degrees: these must be decided), and
