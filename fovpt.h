@@ -7027,41 +7027,6 @@ FOVPT__PRIV void fovpt__lanczos_axis(float f, int32_t a, float w[6])
         w[i] = fa * (((a - 1 - i) & 1) ? -sp : sp) * (su * ck[i] + cu * sk[i]) / (px * px);
     }
 }
-/* ZONES: Lanczos upsampling (Polychronakis 2025, Sec. 4.2) of lattice n at lattice position
-   (kx + fx, ky + fy): separable, 2a taps per axis, normalised; lattice points reproduced exactly;
-   untraced taps dropped (weights renormalised); 0 when nothing is traced nearby. */
-FOVPT__PRIV int fovpt__lanczos_value(const fovpt_ctx *ctx, uint32_t n, int32_t kx, int32_t ky,
-                                     float fx, float fy, float c[3])
-{
-    const float *buf = ctx->layer_buf[n];
-    int32_t a = (int32_t)ctx->lanczos, i, j, nx = (int32_t)ctx->layer_nx[n],
-        ny = (int32_t)ctx->layer_ny[n];
-    float acc[3] = { 0.0f, 0.0f, 0.0f }, ws = 0.0f, wx[6], wy[6];
-    fovpt__lanczos_axis(fx, a, wx);
-    fovpt__lanczos_axis(fy, a, wy);
-    for (j = 0; j < 2 * a; ++j) {
-        int32_t lj = ky - a + 1 + j;
-        if (!(wy[j] > 0.0f || wy[j] < 0.0f)) continue;
-        lj = lj < 0 ? 0 : (lj >= ny ? ny - 1 : lj);
-        for (i = 0; i < 2 * a; ++i) {
-            int32_t ki = kx - a + 1 + i;
-            const float *p;
-            float w = wx[i] * wy[j];
-            if (!(w > 0.0f || w < 0.0f)) continue;
-            ki = ki < 0 ? 0 : (ki >= nx ? nx - 1 : ki);
-            p = buf + 4u * ((size_t)lj * (size_t)nx + (size_t)ki);
-            if (!(p[3] > 0.0f)) continue;
-            ws += w;
-            w /= p[3];
-            acc[0] += w * p[0]; acc[1] += w * p[1]; acc[2] += w * p[2];
-        }
-    }
-    if (!(ws > 0.05f)) return 0;
-    c[0] = fov__maxf(acc[0] / ws, 0.0f); c[1] = fov__maxf(acc[1] / ws, 0.0f);
-    c[2] = fov__maxf(acc[2] / ws, 0.0f);
-    return 1;
-}
-
 /* Uniform cubic B-spline weights of v0..v3 at t in [0, 1]: non-negative, sum 1; at t = 0
    (1, 4, 1) / 6 (an approximating, smoothing filter: the variance of independent noise on the
    lattice falls to 0.48 of it in one dimension, averaged over t, against 0.81 for Catmull-Rom). */
@@ -7075,8 +7040,10 @@ FOVPT__PRIV void fovpt__bspline(float t, float w[4])
 }
 
 /* LAYERS: layer n's value at pixel (x, y) by Catmull-Rom over its lattice (Axblad 2020,
-   Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical); 0 when
-   unavailable. */
+   Eq. 3.17, Fig. 3.10: four horizontal interpolations, then one vertical), or the B-spline;
+   0 when unavailable. The resolve sums through the column cache (fovpt__layer_value_cc) and
+   calls this only for its bilinear fallback where a tap is not traced; ZONES' Lanczos taps
+   (Polychronakis 2025, Sec. 4.2) are summed by the cache alone. */
 FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y,
                                    float c[3])
 {
@@ -7091,8 +7058,6 @@ FOVPT__PRIV int fovpt__layer_value(const fovpt_ctx *ctx, uint32_t n, uint32_t x,
     ky = ry >= 0 ? ry / (int32_t)d : -(((-ry) + (int32_t)d - 1) / (int32_t)d);
     fx = (float)(rx - kx * (int32_t)d) / (float)d;
     fy = (float)(ry - ky * (int32_t)d) / (float)d;
-    if (ctx->lanczos && !(ctx->lay.bspline && d >= 2))
-        return fovpt__lanczos_value(ctx, n, kx, ky, fx, fy, c);
     if (ctx->lay.bspline && d >= 2) {
         fovpt__bspline(fx, wx);
         fovpt__bspline(fy, wy);
@@ -7153,9 +7118,12 @@ typedef struct fovpt__cc {
     float v[FOVPT__CC][4];
 } fovpt__cc;
 
-/* fovpt__layer_value (fovpt__lanczos_value for ZONES) through the cache cc of layer n: the
-   same filter, summed column by column (equal up to rounding); where a Catmull-Rom or
-   B-spline tap is not traced it returns fovpt__layer_value's answer (its bilinear fallback). */
+/* Layer n's value at pixel (x, y) through the cache cc: Catmull-Rom or B-spline (LAYERS,
+   fovpt__layer_value's filter, summed column by column: equal up to rounding; where a tap
+   is not traced, fovpt__layer_value's answer, its bilinear fallback), or for ZONES the
+   Lanczos upsampling of Polychronakis 2025, Sec. 4.2: separable, 2a taps per axis,
+   normalised, lattice points reproduced exactly, untraced taps dropped (weights
+   renormalised), 0 when their weights sum to at most 0.05. */
 FOVPT__PRIV int fovpt__layer_value_cc(const fovpt_ctx *ctx, uint32_t n, uint32_t x, uint32_t y,
                                       float c[3], fovpt__cc *cc)
 {
