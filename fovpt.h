@@ -301,8 +301,9 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
       fovpt_camera_ray(cam, x, y, org, dir);
       fovpt_radiance(scene, cfg, org, dir, &rng, c_k, stats);
    and rgb[3 i ..] = (c_0 + ... + c_(spp-1)) / spp, the sum in k order (bit for bit; tested
-   against these calls). The stream is the point's index, not its pixel: two points in one
-   pixel get independent noise; give `first` the index of a batch's first point when you split
+   against these calls; with cfg->robust the ROBUST PIXEL ESTIMATE of c_0 .. c_(spp-1)).
+   The stream is the point's index, not its pixel: two points in one pixel get independent
+   noise; give `first` the index of a batch's first point when you split
    a list over threads or calls, and a new `frame` each frame (the same frame repeats the
    noise). jitter 0: the point is the sample (fovlp's TAA jitter moves the points over
    frames, which anti-aliases); jitter 1 at pixel centres, first = y W + x0 for the pixels
@@ -314,7 +315,7 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    camera ray to the first surface (FLT_MAX when it leaves the scene): the depth fovlp's TAA
    reprojects with. The config's method, foveation tables (layers, zones, with their
    clamp_white), temporal and display fields are not read (mode, max_depth, rr_start,
-   no_nee, seed and logger are); spp 0 takes cfg->spp.
+   no_nee, seed, sampler, robust and logger are); spp 0 takes cfg->spp.
    Every pointer, the config, the camera and every point are checked before any work (NULL:
    FOV_ERR_NULL; a NaN or infinite x, y or jitter: FOV_ERR_NOT_FINITE; a negative jitter, a
    point whose ray or the ray of any of its jitter square's 4 corners overflows (then no
@@ -355,6 +356,37 @@ SAMPLERS (cfg.sampler, fovpt_rng_init_sobol)
    The default stays RANDOM in this version so that the published figures stay
    reproducible; set cfg.sampler = FOVPT_SAMPLER_SOBOL for the lower noise.
 
+ROBUST PIXEL ESTIMATE (cfg.robust)
+   Path tracing noise is heavy-tailed: a rare path that next-event estimation cannot sample
+   (light reaching a diffuse wall through a mirror: a caustic) carries a radiance many times
+   the pixel's, and a pixel that catches one shows a bright speck, most visible where the eye
+   looks, where the foveated methods put their many samples. cfg.robust = k (3 ..
+   FOVPT_ROBUST_MAX) replaces the mean of a pixel's samples in one call by an adaptive median
+   of means after Buisine, Delepoulle and Renaud 2021, "Firefly Removal in Monte Carlo
+   Rendering with Adaptive Median of meaNs". It applies to the spp samples of one call for a
+   UNIFORM pixel, a LAYERS / ZONES lattice point (stride 1, or without clamp_white) and a
+   fovpt_shade_points point, in path mode:
+     - each sample is split into the radiance its camera ray's specular chain reaches
+       (emission and background before the first bounce that is not a mirror or glass one:
+       deterministic along the ray, so a light's or a mirrored light's partly covered edge
+       is coverage, not noise) and the rest;
+     - the rest is summed in g = min(k, spp / FOVPT_ROBUST_MIN_GROUP) groups of consecutive
+       samples (sizes within one); with g >= 3, the groups' mean luminances l_1 <= .. <= l_g
+       (0.2126 R + 0.7152 G + 0.0722 B) give the Gini coefficient G = sum_i (2 i - g - 1) l_i
+       / (g sum_i l_i) (0: all equal; (g - 1) / g: one group holds everything);
+     - the pixel is the chains' mean plus, where G > FOVPT_ROBUST_GINI, the median group's
+       mean of the rest (the mean of the two middle ones for even g), else its plain mean.
+   Biased where a rare path carries much of a pixel's true value: a caustic's own pixels
+   (the Cornell box's ceiling, lit through its mirror sphere, comes out darker at 64 spp)
+   lose it with their specks. Consistent: as spp grows every group mean tends to the pixel's
+   and G to 0 (tested: its squared difference from the plain mean of the same samples falls
+   6x from 64 to 256 spp on that Cornell box). Fewer than 3 groups (spp < 3
+   FOVPT_ROBUST_MIN_GROUP), Whitted mode (deterministic along each ray), SELECTIVE's and
+   JIN's samples and lattice points that group their samples for clamp_white: the plain
+   mean, as with robust 0 (the default: unbiased, every image as before). The guides' var
+   stays the plain samples' variance. Measured: bench/README.md (`bench_pt --robust`, the
+   rows <method>_rb).
+
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
    - keep any global or thread-local state;
@@ -376,6 +408,10 @@ CONFIGURATION (define before including the implementation)
                         so sums and squares over FOVPT_MAX_SPP samples stay finite
                                                                           (default 1e16)
    FOVPT_MAX_LAYERS     entries of the layer table                         (default 8)
+   FOVPT_ROBUST_MAX     cfg.robust's largest group count                  (default 16)
+   FOVPT_ROBUST_MIN_GROUP  samples per group at least (cfg.robust)        (default 8)
+   FOVPT_ROBUST_GINI    the group means' Gini coefficient above which cfg.robust takes the
+                        median group                                      (default 0.25)
    FOVPT_ACUITY_GAMMA   fovpt_config_acuity with acuity_budget > 0 minimises the mean of
                         (eye-filtered variance)^gamma                     (default 0.5)
    FOVPT_ACUITY_CELL_JITTER  cell_jitter fovpt_config_acuity sets, 0 or 1  (default 1)
@@ -1357,6 +1393,8 @@ typedef struct fovpt_config {
     uint32_t seed;          /* random stream seed (any value) */
     uint32_t accumulate;    /* 1: trace_rows adds to the running mean (progressive) */
     uint32_t sampler;       /* fovpt_sampler (SAMPLERS)                          0: random */
+    uint32_t robust;        /* ROBUST PIXEL ESTIMATE: group count k, 3 .. FOVPT_ROBUST_MAX;
+                               0: the plain mean (unbiased)                       0: off */
     float acuity_budget;    /* read by fovpt_config_acuity only (ACUITY-DRIVEN CONFIGURATION,
                                samples): 0: each layer's / zone's spp the fewest that keep its
                                eye-filtered noise at UNIFORM's at spp; > 0: the total samples
@@ -1928,6 +1966,15 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
 #endif
 #ifndef FOVPT_MAX_SPP
 #define FOVPT_MAX_SPP 65536u
+#endif
+#ifndef FOVPT_ROBUST_MAX
+#define FOVPT_ROBUST_MAX 16
+#endif
+#ifndef FOVPT_ROBUST_MIN_GROUP
+#define FOVPT_ROBUST_MIN_GROUP 8
+#endif
+#ifndef FOVPT_ROBUST_GINI
+#define FOVPT_ROBUST_GINI 0.25f
 #endif
 #ifndef FOVPT_MAX_RADIANCE
 #define FOVPT_MAX_RADIANCE 1e16
@@ -3476,6 +3523,11 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
     if (c.accumulate > 1) FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.accumulate must be 0 or 1");
     if (c.sampler >= (uint32_t)_FOVPT_SAMPLER_NUM)
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.sampler: unknown (see fovpt_sampler)");
+    if (c.robust == 1u || c.robust == 2u)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG,
+                    "config.robust must be 0 (off) or 3 .. FOVPT_ROBUST_MAX groups");
+    if (c.robust > (uint32_t)FOVPT_ROBUST_MAX)
+        FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.robust above FOVPT_ROBUST_MAX");
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
@@ -5673,6 +5725,9 @@ typedef struct fovpt__attr {
     uint32_t psc, ssc;      /* shadow rays found occluded at the hit */
     float pt;               /* distance of the primary hit (unit ray), -1: no hit */
     uint32_t pmat;          /* material of the primary hit (guide buffers) */
+    float lc[3];            /* the part of the radiance the camera ray's specular chain
+                               reaches (emission and background before the first bounce
+                               that is not a delta; Whitted: all): ROBUST PIXEL ESTIMATE */
 } fovpt__attr;
 FOVPT__PRIV void fovpt__attr_hit(const fovpt_hit *h, const float d[3], uint32_t *oid, float n[3])
 {
@@ -5687,7 +5742,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
 {
     float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f,
         prev_p[3] = { 0.0f, 0.0f, 0.0f };
-    int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0;
+    int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0, chain = 1;
     uint32_t bounce, k;
     fovpt_hit h;
     fovpt__copy3(o, org);
@@ -5700,6 +5755,8 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         if (bounce) st->bounce_rays++;
         if (!fovpt__hit(s, o, d, 0.0f, FLT_MAX, &h, 0)) {
             for (k = 0; k < 3; ++k) L[k] += beta[k] * s->background[k];
+            if (at && chain)
+                for (k = 0; k < 3; ++k) at->lc[k] += beta[k] * s->background[k];
             break;
         }
         m = &s->materials[h.material];
@@ -5730,6 +5787,8 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                 }
             }
             for (k = 0; k < 3; ++k) L[k] += beta[k] * m->emission[k] * w;
+            if (at && chain)
+                for (k = 0; k < 3; ++k) at->lc[k] += beta[k] * m->emission[k] * w;
         }
         if (bounce >= c->max_depth) break;
         wo[0] = -d[0]; wo[1] = -d[1]; wo[2] = -d[2];
@@ -5768,6 +5827,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         for (k = 0; k < 3; ++k) beta[k] *= wgt[k];
         prev_pdf = pdf;
         prev_delta = !(pdf > 0.0f);
+        if (!prev_delta) chain = 0;
         fovpt__copy3(prev_p, h.p);
         if (!(fovpt__max3(beta) > 0.0f)) break; /* zero throughput (Axblad 2020) */
         if (c->rr_start != FOVPT_RR_OFF && bounce + 1u >= c->rr_start) {
@@ -5937,8 +5997,12 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "radiance: c.max_depth above FOVPT_MAX_WHITTED");
-    if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
-    else fovpt__path(s, c, org, dir, rng, rgb, st, at);
+    if (c->mode == FOVPT_MODE_WHITTED) {
+        fovpt__whitted(s, c, org, dir, rgb, st, at);
+        if (at) fovpt__copy3(at->lc, rgb); /* deterministic along the ray */
+    } else {
+        fovpt__path(s, c, org, dir, rng, rgb, st, at);
+    }
     if (!fov__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
@@ -5946,7 +6010,62 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
         uint32_t k;
         for (k = 0; k < 3; ++k) rgb[k] = fov__minf(rgb[k], (float)FOVPT_MAX_RADIANCE);
     }
+    if (at) { /* the chain's part: within the sample's value (0 where that was dropped) */
+        uint32_t k;
+        for (k = 0; k < 3; ++k) at->lc[k] = fov__clampf(at->lc[k], 0.0f, rgb[k]);
+    }
     return FOV_OK;
+}
+
+/* ROBUST PIXEL ESTIMATE: the group count for spp samples (0: the plain mean), the group of
+   sample s, and the estimate as a sum over the spp samples: the specular chains' sum lc
+   (deterministic along each camera ray: a light's or a mirrored light's anti-aliased edge is
+   coverage, not a firefly) plus, from the groups' sums gs[0 .. g-1] of the rest, the median
+   group's mean times spp where the group means' Gini coefficient is above
+   FOVPT_ROBUST_GINI, else the sum of the groups' sums. fovpt__robust_add splits a sample. */
+FOVPT__PRIV uint32_t fovpt__robust_groups(uint32_t robust, uint32_t spp)
+{
+    uint32_t g = spp / (uint32_t)FOVPT_ROBUST_MIN_GROUP;
+    if (robust < 3u) return 0u;
+    if (g > robust) g = robust;
+    return g >= 3u ? g : 0u;
+}
+FOVPT__PRIV uint32_t fovpt__robust_group_of(uint32_t s, uint32_t g, uint32_t spp)
+{
+    return (uint32_t)(((uint64_t)s * g) / spp);
+}
+FOVPT__PRIV void fovpt__robust_add(float gs[][3], float lc[3], uint32_t g, uint32_t spp,
+                                   uint32_t s, const float rgb[3], const float c[3])
+{
+    float *q = gs[fovpt__robust_group_of(s, g, spp)];
+    uint32_t k;
+    for (k = 0; k < 3; ++k) {
+        lc[k] += c[k];
+        q[k] += fov__maxf(rgb[k] - c[k], 0.0f);
+    }
+}
+FOVPT__PRIV void fovpt__robust_sum(float gs[][3], const float lc[3], uint32_t g, uint32_t spp,
+                                   float sum[3])
+{
+    float l[FOVPT_ROBUST_MAX], n[FOVPT_ROBUST_MAX], tot = 0.0f, gini = 0.0f;
+    uint32_t ord[FOVPT_ROBUST_MAX], i, j, k, a, b;
+    sum[0] = lc[0]; sum[1] = lc[1]; sum[2] = lc[2];
+    for (i = 0; i < g; ++i) {
+        /* group i: the samples s with floor(s g / spp) = i, from ceil(i spp / g) on */
+        n[i] = (float)((((uint64_t)(i + 1u) * spp + g - 1u) / g) -
+                       (((uint64_t)i * spp + g - 1u) / g));
+        for (k = 0; k < 3; ++k) sum[k] += gs[i][k];
+        l[i] = (0.2126f * gs[i][0] + 0.7152f * gs[i][1] + 0.0722f * gs[i][2]) / n[i];
+        tot += l[i];
+        for (j = i; j > 0 && l[ord[j - 1u]] > l[i]; --j) ord[j] = ord[j - 1u];
+        ord[j] = i; /* ord: the groups by luminance, ascending (insertion) */
+    }
+    if (!(tot > 0.0f) || !(tot < FLT_MAX)) return;
+    for (i = 0; i < g; ++i) gini += (float)(2 * (int32_t)i + 1 - (int32_t)g) * l[ord[i]];
+    if (!(gini > FOVPT_ROBUST_GINI * (float)g * tot)) return;
+    a = ord[(g - 1u) / 2u]; b = ord[g / 2u]; /* the median group (a = b for odd g) */
+    for (k = 0; k < 3; ++k)
+        sum[k] = lc[k] + 0.5f * (gs[a][k] / n[a] + gs[b][k] / n[b]) * (float)spp;
 }
 
 /* ---- shading image points (fovpt_shade_points: fovlp's log-polar samples) ------------------ */
@@ -5959,7 +6078,7 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
                                         fovpt_stats *stats)
 {
     float r[3], u[3], f[3], t4[4], o[3], hj;
-    uint32_t i, k, W, H;
+    uint32_t i, k, W, H, rg;
     int bad;
     fovpt_stats st;
     fov_result e;
@@ -5975,6 +6094,9 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
     if (c->sampler >= (uint32_t)_FOVPT_SAMPLER_NUM)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "shade_points: c.sampler unknown (see fovpt_sampler)");
+    if (c->robust == 1u || c->robust == 2u || c->robust > (uint32_t)FOVPT_ROBUST_MAX)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
+                    "shade_points: c.robust must be 0 or 3 .. FOVPT_ROBUST_MAX");
     if (c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
@@ -6015,10 +6137,13 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
                         "shade_points: a point so far off the image that its ray overflows");
     }
     FOV_MEMSET(&st, 0, sizeof st);
+    rg = fovpt__robust_groups(c->robust, spp); /* ROBUST PIXEL ESTIMATE */
     for (i = 0; i < n; ++i) {
-        float d[3], sum[3] = { 0.0f, 0.0f, 0.0f };
+        float d[3], sum[3] = { 0.0f, 0.0f, 0.0f }, rs[FOVPT_ROBUST_MAX][3],
+            rl[3] = { 0.0f, 0.0f, 0.0f };
         float x = xy[(size_t)i * stride], y = xy[(size_t)i * stride + 1u];
         if (!(jitter > 0.0f)) (void)fovpt__primary(r, u, f, t4, W, H, x, y, d);
+        for (k = 0; k < rg; ++k) rs[k][0] = rs[k][1] = rs[k][2] = 0.0f;
         for (k = 0; k < spp; ++k) {
             fovpt_rng rng;
             fovpt__attr at;
@@ -6032,10 +6157,15 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
             } else if (rng.sobol) { /* SAMPLERS: the pixel pair drawn and dropped */
                 (void)fovpt_rng_next(&rng); (void)fovpt_rng_next(&rng);
             }
-            (void)fovpt__radiance(s, c, o, d, &rng, c3, &st, (k == 0u && t) ? &at : NULL);
+            (void)fovpt__radiance(s, c, o, d, &rng, c3, &st, (rg || (k == 0u && t)) ? &at : NULL);
             if (k == 0u && t) t[i] = at.pt >= 0.0f ? at.pt : FLT_MAX;
-            sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+            if (rg) {
+                fovpt__robust_add(rs, rl, rg, spp, k, c3, at.lc);
+            } else {
+                sum[0] += c3[0]; sum[1] += c3[1]; sum[2] += c3[2];
+            }
         }
+        if (rg) fovpt__robust_sum(rs, rl, rg, spp, sum);
         rgb[3u * (size_t)i] = sum[0] / (float)spp;
         rgb[3u * (size_t)i + 1u] = sum[1] / (float)spp;
         rgb[3u * (size_t)i + 2u] = sum[2] / (float)spp;
@@ -6777,11 +6907,15 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
                               uint32_t sample0, uint32_t cell, uint32_t group, float white,
                               float sum[3], fovpt__gsum *G, fovpt_stats *st)
 {
-    uint32_t s, k, W = ctx->cam.width, H = ctx->cam.height, ng = 0;
-    float t4[4], gs[3] = { 0.0f, 0.0f, 0.0f };
+    uint32_t s, k, W = ctx->cam.width, H = ctx->cam.height, ng = 0, rg;
+    float t4[4], gs[3] = { 0.0f, 0.0f, 0.0f }, rs[FOVPT_ROBUST_MAX][3],
+        rl[3] = { 0.0f, 0.0f, 0.0f };
     t4[0] = ctx->tx0; t4[1] = ctx->tx1; t4[2] = ctx->ty0; t4[3] = ctx->ty1;
     sum[0] = sum[1] = sum[2] = 0.0f;
     if (!(white > 0.0f) || group < 1u) group = 0;
+    /* ROBUST PIXEL ESTIMATE: the samples' sums by group (not with clamp_white's groups) */
+    rg = group ? 0u : fovpt__robust_groups(ctx->cfg.robust, spp);
+    for (k = 0; k < rg; ++k) rs[k][0] = rs[k][1] = rs[k][2] = 0.0f;
     for (s = 0; s < spp; ++s) {
         fovpt_rng rng;
         float dir[3], rgb[3] = { 0.0f, 0.0f, 0.0f }, jx, jy;
@@ -6793,10 +6927,14 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
         }
         fovpt__primary(ctx->right, ctx->up, ctx->fwd, t4, W, H, (float)x + jx, (float)y + jy, dir);
         st->camera_rays++;
-        if (G) { /* the guides' sums too (the same estimator and stream) */
+        if (G || rg) { /* the guides' sums too (the same estimator and stream) */
             fovpt__attr at;
             (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, &at);
-            fovpt__gsum_add(G, ctx->scene, &at, rgb);
+            if (G) fovpt__gsum_add(G, ctx->scene, &at, rgb);
+            if (rg) {
+                fovpt__robust_add(rs, rl, rg, spp, s, rgb, at.lc);
+                continue;
+            }
         } else {
             (void)fovpt__radiance(ctx->scene, &ctx->cfg, ctx->origin, dir, &rng, rgb, st, NULL);
         }
@@ -6809,6 +6947,7 @@ FOVPT__PRIV void fovpt__pixel(fovpt_ctx *ctx, uint32_t frame, uint32_t x, uint32
             ng = 0;
         }
     }
+    if (rg) fovpt__robust_sum(rs, rl, rg, spp, sum);
     st->samples += spp;
 }
 

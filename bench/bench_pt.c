@@ -114,6 +114,7 @@ static void *worker(void *a)
 
 /* renders with cfg; threads > 1 only for ground truths (UNIFORM: no refine phase) */
 static int g_dn;
+static uint32_t g_rb;            /* --robust rows: cfg.robust of the timed renders (0: off) */
 static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st);
 static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st, int threads)
 {
@@ -121,7 +122,9 @@ static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rg
     void *mem;
     fovpt_ctx ctx;
     fovpt_output out;
+    fovpt_config cr;
     double t0, t;
+    if (g_rb && threads <= 1) { cr = *cfg; cr.robust = g_rb; cfg = &cr; }
     if (g_dn && threads <= 1) return render_dn(S, cfg, g, rgb, st); /* --denoise rows */
     memset(st, 0, sizeof *st);
     if (fovpt_memory_size(cfg, &S->cam, &n) != FOV_OK) return -1.0;
@@ -1331,6 +1334,101 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
     printf("wrote %s, %s, %s\n", out_path, spath, fpath);
 }
 
+/* --robust: rows <method>_rb (fovpt.h ROBUST PIXEL ESTIMATE, cfg.robust = RB_GROUPS) beside
+   their plain twins of the same run, every scene (or --scene N), gaze at the centre and near a
+   corner: uniform4 and layers, layers_diam at their default budgets; layers, layers_fovea,
+   layers_diam, layers_diam_fovea at eqtime_uniform4 (uniform4's time, plain, in the same run;
+   each its own pilot). FILE (pt.csv's columns) gets the _rb rows; pt_robust.csv beside it
+   (scene, method, gaze, budget, psnr_f1..f4, psnr_all, flip, flip_f1, time_ms, spp_fovea)
+   both. The ground truth is the plain mean (unbiased), as for every row. */
+#define RB_GROUPS 4u
+static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t gt_spp, int threads)
+{
+    char spath[1024];
+    const char *sl = strrchr(out_path, '/');
+    FILE *csv = fopen(out_path, "w"), *side;
+    int sc, gi;
+    snprintf(spath, sizeof spath, "%.*spt_robust.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    side = fopen(spath, "w");
+    if (!csv || !side) { fprintf(stderr, "cannot write %s / %s\n", out_path, spath); return; }
+    fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
+    fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,spp_fovea\n");
+    for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
+        pt_scene S;
+        size_t np = (size_t)W * H;
+        float *ref = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u), *ecc = (float *)malloc(np * 4u);
+        if (g_dn_scene >= 0 && sc != g_dn_scene) { free(ref); free(img); free(ecc); continue; }
+        if (pt_scene_make(&S, sc) != 0) { free(ref); free(img); free(ecc); continue; }
+        S.cam.width = W; S.cam.height = H;
+        for (gi = 0; gi < 2; ++gi) {
+            const char *nm = pt_scene_names[sc], *gz = gi ? "corner" : "centre";
+            fov_gaze g;
+            fov_ecc_model em;
+            fovpt_config c;
+            fovpt_stats st, st_m[4][2];
+            double t_u4, t_m[4][2], f1_u4 = NAN;
+            uint32_t x, y;
+            int m, d, fov_only;
+            g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
+            g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
+            fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
+            for (y = 0; y < H; ++y)
+                for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
+            render(&S, &c, g, ref, &st, threads);
+            method_cfg(&c, 0);
+            t_u4 = render(&S, &c, g, img, &st, 1);
+            printf("%s %s (uniform4 %.1f ms):\n", nm, gz, t_u4);
+            for (m = 0; m <= 3; ++m) { /* default budgets: uniform4, (uniform1 skipped), layers, layers_diam */
+                if (m == 1) continue;
+                for (d = 0; d < 2; ++d) {
+                    double ps[5], fl, fl1, t;
+                    char mname[64];
+                    method_cfg(&c, m);
+                    g_rb = d ? RB_GROUPS : 0u;
+                    t = render(&S, &c, g, img, &st, 1);
+                    g_rb = 0;
+                    psnr_fields(img, ref, ecc, np, ps);
+                    flip_of(img, ref, ecc, W, H, S.cam.fov_y_deg, g, &fl, &fl1);
+                    snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_rb" : "");
+                    if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
+                    fprintf(side, "%s,%s,%s,default,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1], ps[2],
+                            ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
+                    t_m[m][d] = t;
+                    st_m[m][d] = st;
+                    if (m == 0 && !d) f1_u4 = ps[0];
+                    printf("  %-22s %8.1f ms PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f (f1 %.4f)\n", mname, t, ps[0], ps[1],
+                           ps[2], ps[3], ps[4], fl, fl1);
+                }
+            }
+            for (m = 2; m <= 3; ++m)
+                for (fov_only = 0; fov_only < 2; ++fov_only)
+                    for (d = 0; d < 2; ++d) {
+                        double ps[5], fl, fl1, t;
+                        char mname[64];
+                        g_rb = d ? RB_GROUPS : 0u;
+                        t = eqtime_render(&S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
+                        g_rb = 0;
+                        psnr_fields(img, ref, ecc, np, ps);
+                        flip_of(img, ref, ecc, W, H, S.cam.fov_y_deg, g, &fl, &fl1);
+                        snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_rb" : "");
+                        if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
+                        fprintf(side, "%s,%s,%s,eqtime_uniform4,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0],
+                                ps[1], ps[2], ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
+                        printf("  %-22s at uniform4's time (%.1f ms): %8.1f ms, fovea spp %u, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
+                               " FLIP %.4f (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3],
+                               ps[4], fl, f1_u4, ps[0] - f1_u4);
+                    }
+            fflush(csv);
+            fflush(side);
+        }
+        pt_scene_free(&S);
+        free(ref); free(img); free(ecc);
+    }
+    fclose(csv); fclose(side);
+    printf("wrote %s, %s\n", out_path, spath);
+}
+
 /* -h / --help prints this to stdout (exit 0); an unknown option prints it to stderr (exit 2) */
 static void usage(FILE *f)
 {
@@ -1346,7 +1444,9 @@ static void usage(FILE *f)
           "                      eqtime_uniform4 rows), to FILE (default build/pt_lp.csv)\n"
           "  --denoise           only the denoised (_dn) rows: FILE (default\n"
           "                      bench/results/pt_dn.csv), pt_denoise.csv and pt_flicker.csv beside it\n"
-          "  --scene N           with --denoise: scene N only (0 cornell .. 4 interior)\n"
+          "  --robust            only the cfg.robust (_rb) rows and their plain twins: FILE\n"
+          "                      (default bench/results/pt_rb.csv), pt_robust.csv beside it\n"
+          "  --scene N           with --denoise or --robust: scene N only (0 cornell .. 4 interior)\n"
           "  --w W, --h H        image size (default 320 x 240)\n"
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
           "  --threads N         render threads (default 2)\n"
@@ -1357,7 +1457,8 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, out_set = 0, threads = 2, i, sc, gi;
+    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, only_rb = 0, out_set = 0, threads = 2, i, sc,
+        gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv, *dn_side = NULL, *dn_flicker = NULL;
     double t_start = now_ms();
@@ -1369,6 +1470,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--temporal")) only_temporal = 1;
         else if (!strcmp(argv[i], "--lp")) only_lp = 1;
         else if (!strcmp(argv[i], "--denoise")) only_dn = 1;
+        else if (!strcmp(argv[i], "--robust")) only_rb = 1;
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) g_dn_scene = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--fovea-spp")) { fovea_spp_curve(); return 0; }
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
@@ -1381,6 +1483,12 @@ int main(int argc, char **argv)
     if (only_lp && !out_set) out_path = "build/pt_lp.csv"; /* pt.csv is left alone */
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
+    if (only_rb) {
+        if (!strcmp(out_path, "bench/results/pt.csv")) out_path = "bench/results/pt_rb.csv";
+        robust_only(out_path, W, H, gt_spp, threads);
+        printf("(%.0f s)\n", (now_ms() - t_start) * 1e-3);
+        return 0;
+    }
     if (only_dn) {
         if (!strcmp(out_path, "bench/results/pt.csv")) out_path = "bench/results/pt_dn.csv";
         denoise_only(out_path, W, H, gt_spp, quick, threads);

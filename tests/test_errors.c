@@ -368,6 +368,9 @@ static const fcase pt_cases[] = {
     {"set_view_size_differs", FOV_ERR_INVALID_ARG, "differs"},
     {"radiance_dir_zero", FOV_ERR_DEGENERATE, "dir"},
     {"render_out_null", FOV_ERR_NULL, "out"},
+    {"robust_2", FOV_ERR_INVALID_ARG, "config.robust"},
+    {"robust_over_cap", FOV_ERR_LIMIT, "config.robust"},
+    {"shade_points_robust_1", FOV_ERR_INVALID_ARG, "c.robust"},
 };
 static fov_result pt_run(int k, const fov_logger *lg)
 {
@@ -421,6 +424,8 @@ static fov_result pt_run(int k, const fov_logger *lg)
     case 10: sh[0].r = -1.0f; return fovpt_scene_size(&d, &sb);
     case 11: mat[0].albedo[1] = 2.0f; return fovpt_scene_size(&d, &sb);
     case 12: return fovpt_scene_build(&scene, &d, NULL, 4096);
+    case 21: cfg.robust = 2; return fovpt_config_resolve(&cfg, &out);
+    case 22: cfg.robust = FOVPT_ROBUST_MAX + 1u; return fovpt_config_resolve(&cfg, &out);
     default: break;
     }
     d.logger = none;
@@ -433,6 +438,11 @@ static fov_result pt_run(int k, const fov_logger *lg)
         scene.materials = NULL;
         return fovpt_init(&ctx, &cfg, &scene, &cam, gz, cmem, sizeof cmem);
     case 19: return fovpt_radiance(&scene, &cfg, org, dir, &rng, rgb, NULL);
+    case 23: {
+        float xy[2] = {4.0f, 4.0f};
+        cfg.robust = 1;
+        return fovpt_shade_points(&scene, &cfg, &cam, 1, xy, 0, 0, 0, 1, 0.0f, rgb, NULL, NULL);
+    }
     default: break;
     }
     cfg.logger = none;
