@@ -5,10 +5,11 @@
                             Whitted; every method and budget; about 10-15 minutes here)
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
-                    [--threads N] [--temporal] [--lp]
+                    [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--scene N]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
-                    box's fovea error falls with spp, see README)
+                    box's fovea error falls with spp, see README; --denoise, --robust: only
+                    the _dn / _rb rows, see below)
 
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
@@ -20,7 +21,12 @@
      listed in full at the end of this comment. lp_cfov, lp_cfov_taa, lp_cfov_fovea, lp_acuity,
      lp_acuity_taa, lp_acuity_fovea: path tracing at fovlp.h's log-polar positions (fovpt_shade_points; Koskela
      et al. 2019 on the GPU), see "path tracing in log-polar space" below; --lp runs only them
-     and the rows they sit beside.
+     and the rows they sit beside. <method>_dn: with the denoiser (below); <method>_rb: with
+     cfg.robust = 4 (fovpt.h ROBUST PIXEL ESTIMATE) for uniform4, layers, layers_diam at their
+     default budgets and layers, layers_fovea, layers_diam, layers_diam_fovea at
+     eqtime_uniform4 (each its own pilot; uniform4's time is the plain one), with
+     pt_robust.csv beside the CSV (scene, method, gaze, budget, psnr_f1..f4, psnr_all, flip,
+     flip_f1, time_ms, spp_fovea: every _rb row with its plain twin of the same run).
    - budget: which budget the row was given.
        default          the method's own settings (the rows above).
        eqrays_<m>       method uniform_eq: UNIFORM at the spp whose camera rays match method
@@ -1342,6 +1348,65 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
    (scene, method, gaze, budget, psnr_f1..f4, psnr_all, flip, flip_f1, time_ms, spp_fovea)
    both. The ground truth is the plain mean (unbiased), as for every row. */
 #define RB_GROUPS 4u
+static void rb_side_header(FILE *side)
+{
+    fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,spp_fovea\n");
+}
+/* the _rb rows of one scene and gaze; t_u4 = uniform4's (plain) time in the same run */
+static void rb_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc,
+                    double t_u4)
+{
+    uint32_t W = S->cam.width, H = S->cam.height;
+    size_t np = (size_t)W * H;
+    float *img = (float *)malloc(np * 12u);
+    fovpt_config c;
+    fovpt_stats st, st_m[4][2];
+    double t_m[4][2], f1_u4 = NAN;
+    int m, d, fov_only;
+    for (m = 0; m <= 3; ++m) { /* default budgets: uniform4, (uniform1 skipped), layers, layers_diam */
+        if (m == 1) continue;
+        for (d = 0; d < 2; ++d) {
+            double ps[5], fl, fl1, t;
+            char mname[64];
+            method_cfg(&c, m);
+            g_rb = d ? RB_GROUPS : 0u;
+            t = render(S, &c, g, img, &st, 1);
+            g_rb = 0;
+            psnr_fields(img, ref, ecc, np, ps);
+            flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+            snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_rb" : "");
+            if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
+            fprintf(side, "%s,%s,%s,default,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1], ps[2], ps[3],
+                    ps[4], fl, fl1, t, fovea_spp(&c));
+            t_m[m][d] = t;
+            st_m[m][d] = st;
+            if (m == 0 && !d) f1_u4 = ps[0];
+            printf("  %-22s %8.1f ms PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f (f1 %.4f)\n", mname, t, ps[0], ps[1], ps[2],
+                   ps[3], ps[4], fl, fl1);
+        }
+    }
+    for (m = 2; m <= 3; ++m)
+        for (fov_only = 0; fov_only < 2; ++fov_only)
+            for (d = 0; d < 2; ++d) {
+                double ps[5], fl, fl1, t;
+                char mname[64];
+                g_rb = d ? RB_GROUPS : 0u;
+                t = eqtime_render(S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
+                g_rb = 0;
+                psnr_fields(img, ref, ecc, np, ps);
+                flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+                snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_rb" : "");
+                if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
+                fprintf(side, "%s,%s,%s,eqtime_uniform4,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1],
+                        ps[2], ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
+                printf("  %-22s at uniform4's time (%.1f ms): %8.1f ms, fovea spp %u, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
+                       " FLIP %.4f (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3], ps[4], fl,
+                       f1_u4, ps[0] - f1_u4);
+            }
+    fflush(csv);
+    fflush(side);
+    free(img);
+}
 static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t gt_spp, int threads)
 {
     char spath[1024];
@@ -1352,23 +1417,22 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
     side = fopen(spath, "w");
     if (!csv || !side) { fprintf(stderr, "cannot write %s / %s\n", out_path, spath); return; }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
-    fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,spp_fovea\n");
+    rb_side_header(side);
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
         pt_scene S;
         size_t np = (size_t)W * H;
-        float *ref = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u), *ecc = (float *)malloc(np * 4u);
-        if (g_dn_scene >= 0 && sc != g_dn_scene) { free(ref); free(img); free(ecc); continue; }
-        if (pt_scene_make(&S, sc) != 0) { free(ref); free(img); free(ecc); continue; }
+        float *ref, *img, *ecc;
+        if (g_dn_scene >= 0 && sc != g_dn_scene) continue;
+        if (pt_scene_make(&S, sc) != 0) continue;
+        ref = (float *)malloc(np * 12u); img = (float *)malloc(np * 12u); ecc = (float *)malloc(np * 4u);
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
-            const char *nm = pt_scene_names[sc], *gz = gi ? "corner" : "centre";
             fov_gaze g;
             fov_ecc_model em;
             fovpt_config c;
-            fovpt_stats st, st_m[4][2];
-            double t_u4, t_m[4][2], f1_u4 = NAN;
+            fovpt_stats st;
+            double t_u4;
             uint32_t x, y;
-            int m, d, fov_only;
             g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
             g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
             fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
@@ -1378,49 +1442,8 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
             render(&S, &c, g, ref, &st, threads);
             method_cfg(&c, 0);
             t_u4 = render(&S, &c, g, img, &st, 1);
-            printf("%s %s (uniform4 %.1f ms):\n", nm, gz, t_u4);
-            for (m = 0; m <= 3; ++m) { /* default budgets: uniform4, (uniform1 skipped), layers, layers_diam */
-                if (m == 1) continue;
-                for (d = 0; d < 2; ++d) {
-                    double ps[5], fl, fl1, t;
-                    char mname[64];
-                    method_cfg(&c, m);
-                    g_rb = d ? RB_GROUPS : 0u;
-                    t = render(&S, &c, g, img, &st, 1);
-                    g_rb = 0;
-                    psnr_fields(img, ref, ecc, np, ps);
-                    flip_of(img, ref, ecc, W, H, S.cam.fov_y_deg, g, &fl, &fl1);
-                    snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_rb" : "");
-                    if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
-                    fprintf(side, "%s,%s,%s,default,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1], ps[2],
-                            ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
-                    t_m[m][d] = t;
-                    st_m[m][d] = st;
-                    if (m == 0 && !d) f1_u4 = ps[0];
-                    printf("  %-22s %8.1f ms PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f FLIP %.4f (f1 %.4f)\n", mname, t, ps[0], ps[1],
-                           ps[2], ps[3], ps[4], fl, fl1);
-                }
-            }
-            for (m = 2; m <= 3; ++m)
-                for (fov_only = 0; fov_only < 2; ++fov_only)
-                    for (d = 0; d < 2; ++d) {
-                        double ps[5], fl, fl1, t;
-                        char mname[64];
-                        g_rb = d ? RB_GROUPS : 0u;
-                        t = eqtime_render(&S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
-                        g_rb = 0;
-                        psnr_fields(img, ref, ecc, np, ps);
-                        flip_of(img, ref, ecc, W, H, S.cam.fov_y_deg, g, &fl, &fl1);
-                        snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_rb" : "");
-                        if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
-                        fprintf(side, "%s,%s,%s,eqtime_uniform4,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0],
-                                ps[1], ps[2], ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
-                        printf("  %-22s at uniform4's time (%.1f ms): %8.1f ms, fovea spp %u, PSNR f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f"
-                               " FLIP %.4f (uniform4 f1 %.2f: %+.2f dB)\n", mname, t_u4, t, fovea_spp(&c), ps[0], ps[1], ps[2], ps[3],
-                               ps[4], fl, f1_u4, ps[0] - f1_u4);
-                    }
-            fflush(csv);
-            fflush(side);
+            printf("%s %s (uniform4 %.1f ms):\n", pt_scene_names[sc], gi ? "corner" : "centre", t_u4);
+            rb_rows(csv, side, &S, pt_scene_names[sc], gi ? "corner" : "centre", g, ref, ecc, t_u4);
         }
         pt_scene_free(&S);
         free(ref); free(img); free(ecc);
@@ -1460,7 +1483,7 @@ int main(int argc, char **argv)
     int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, only_rb = 0, out_set = 0, threads = 2, i, sc,
         gi;
     const char *out_path = "bench/results/pt.csv";
-    FILE *csv, *dn_side = NULL, *dn_flicker = NULL;
+    FILE *csv, *dn_side = NULL, *dn_flicker = NULL, *rb_side = NULL;
     double t_start = now_ms();
     for (i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) { usage(stdout); return 0; }
@@ -1511,6 +1534,8 @@ int main(int argc, char **argv)
         snprintf(p1, sizeof p1, "%.*spt_denoise.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
         snprintf(p2, sizeof p2, "%.*spt_flicker.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
         if (!only_tp && !only_lp) { dn_side = fopen(p1, "w"); dn_flicker = fopen(p2, "w"); }
+        snprintf(p1, sizeof p1, "%.*spt_robust.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+        if (!only_tp && !only_lp && (rb_side = fopen(p1, "w")) != NULL) rb_side_header(rb_side);
         if (dn_side) fprintf(dn_side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
         if (dn_flicker) fprintf(dn_flicker, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
     }
@@ -1615,6 +1640,8 @@ int main(int argc, char **argv)
             /* the denoised rows (_dn) and, gaze at the centre, the flicker */
             if (dn_side) dn_rows(csv, dn_side, &S, nm, gz, g, ref_p, ecc, t_u4);
             if (dn_flicker && !gi) flicker_rows(dn_flicker, &S, nm, g, ecc, ref_p);
+            /* the robust rows (_rb, cfg.robust) beside their plain twins */
+            if (rb_side) rb_rows(csv, rb_side, &S, nm, gz, g, ref_p, ecc, t_u4);
             fflush(csv);
         }
         pt_scene_free(&S);
@@ -1630,6 +1657,7 @@ int main(int argc, char **argv)
     fclose(csv);
     if (dn_side) fclose(dn_side);
     if (dn_flicker) fclose(dn_flicker);
+    if (rb_side) fclose(rb_side);
     printf("wrote %s (%.0f s)\n", out_path, (now_ms() - t_start) * 1e-3);
     /* plots next to the CSV: pt_<scene>.png, speed-up over uniform4 against fovea PSNR (f1)
        and near-periphery PSNR (f4), every method, both gazes */
