@@ -4685,8 +4685,9 @@ typedef struct fovpt__ray {
     float o[4], d[4], inv[4]; /* inv: 1 / d, +inf where d is +-0; [3]: padding, so the SIMD
                                  entry (fovpt__ray_fast) stores each as 4 lanes */
     float ig[4];              /* inv * FOVPT__BOX_GROW (the far planes' factor) */
-    uint32_t nb[3], fb[3]; /* index into fovpt__node.b of each slab's near and far plane:
-                              lo (k) and hi (3 + k), swapped where the direction is negative */
+    uint32_t oct;             /* bit k set where inv[k] < 0 (d[k] < 0): the slabs' near and
+                                 far planes in fovpt__node.b, lo (k) and hi (3 + k), swapped
+                                 there (fovpt__closest) */
 } fovpt__ray;
 
 /* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): the far
@@ -4874,14 +4875,13 @@ FOVPT__PRIV void fovpt__ray_set(fovpt__ray *r, const float org[3], const float d
         const float d = dir[k];
         /* |d| <= 2^-128: +-inf; 0 < |d| < 2^-126 rays go to brute force (fovpt__dir_tiny) */
         const float inv = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf();
-        const uint32_t neg = inv < 0.0f ? 3u : 0u;
         r->o[k] = org[k];
         r->d[k] = d;
         r->inv[k] = inv;
         r->ig[k] = inv * FOVPT__BOX_GROW;
-        r->nb[k] = k + neg;
-        r->fb[k] = k + 3u - neg;
     }
+    r->oct = (r->inv[0] < 0.0f ? 1u : 0u) | (r->inv[1] < 0.0f ? 2u : 0u) |
+             (r->inv[2] < 0.0f ? 4u : 0u);
 }
 FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
 {
@@ -4896,7 +4896,7 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
    fovpt__dir_class gives 0 (no rescale: the largest lies in [2^-32, 2^32]; nothing tiny: no
    component below FLT_MIN) and no component is 0, so the record is fovpt__ray_set's with
    inv = 1 / d in every lane: one 4-lane IEEE division, correctly rounded per lane, the same
-   floats as three scalar ones; nb / fb from the sign bits of d < 0 (= inv < 0). Lane 3 of
+   floats as three scalar ones; oct from d < 0 (= inv < 0). Lane 3 of
    the direction is 1 (no division by 0). A subnormal or zero component (or one flushed to
    zero in the compare), a non-finite value or a direction to rescale returns 0: the caller
    takes the scalar entry, which is this function's twin (and the only path without SIMD). */
@@ -4908,11 +4908,9 @@ FOVPT__PRIV int fovpt__ray_fast(fovpt__ray *r, const float org[3], const float d
         FOVPT__M_BITS(FOVPT__V_LE(FOVPT__V_ABS(o), FOVPT__V_SET1(FLT_MAX))) &
         FOVPT__M_BITS(FOVPT__M_AND(FOVPT__V_GE(ad, FOVPT__V_SET1(1.17549435e-38f)),
                                    FOVPT__V_LE(ad, FOVPT__V_SET1(4294967296.0f))));
-    uint32_t neg;
     if (ok != 15u || !(FOVPT__M_BITS(FOVPT__V_GE(ad, FOVPT__V_SET1(2.3283064365386963e-10f))) &
                        7u))
         return 0;
-    neg = FOVPT__M_BITS(FOVPT__V_LT(d, FOVPT__V_SET1(0.0f))); /* lane 3: 1, never set */
     FOVPT__V_ST(r->o, o);
     FOVPT__V_ST(r->d, d);
     {
@@ -4920,9 +4918,7 @@ FOVPT__PRIV int fovpt__ray_fast(fovpt__ray *r, const float org[3], const float d
         FOVPT__V_ST(r->inv, inv);
         FOVPT__V_ST(r->ig, FOVPT__V_MUL(inv, FOVPT__V_SET1(FOVPT__BOX_GROW)));
     }
-    r->nb[0] = (neg & 1u) * 3u; r->nb[1] = 1u + ((neg >> 1) & 1u) * 3u;
-    r->nb[2] = 2u + (neg >> 2) * 3u;
-    r->fb[0] = 3u - r->nb[0]; r->fb[1] = 5u - r->nb[1]; r->fb[2] = 7u - r->nb[2];
+    r->oct = FOVPT__M_BITS(FOVPT__V_LT(d, FOVPT__V_SET1(0.0f))); /* lane 3: 1, never set */
     return 1;
 }
 #endif
@@ -5111,8 +5107,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         float stack_t[FOVPT__STACK], lim;
         fovpt__rayv rv;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
-        const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
-            fz = r->fb[2];
+        /* per octant: the near planes' rows in fovpt__node.b (lo x, y, z = 0, 1, 2; hi = 3, 4,
+           5, swapped on a negative axis), then the far planes' */
+        static const uint32_t rows[8][6] = {
+            { 0, 1, 2, 3, 4, 5 }, { 3, 1, 2, 0, 4, 5 }, { 0, 4, 2, 3, 1, 5 }, { 3, 4, 2, 0, 1, 5 },
+            { 0, 1, 5, 3, 4, 2 }, { 3, 1, 5, 0, 4, 2 }, { 0, 4, 5, 3, 1, 2 }, { 3, 4, 5, 0, 1, 2 }
+        };
+        const uint32_t *rw = rows[r->oct];
+        const uint32_t nx = rw[0], ny = rw[1], nz = rw[2], fx = rw[3], fy = rw[4], fz = rw[5];
 #if FOVPT__SIMD
         const float ifx = r->ig[0], ify = r->ig[1], ifz = r->ig[2];
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
