@@ -5134,6 +5134,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
             wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
         __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
+        const __m256 wgk = _mm256_set1_ps(gk);
         (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
 #endif
 #else
@@ -5175,25 +5176,37 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
+                    /* + gk on every node: with gk = 0 (tmin >= 0) u0 + 0 = u0 (-0 turns +0,
+                       which compares the same), one add instead of a test and a branch */
+                    u0 = _mm256_add_ps(u0, wgk);
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
-                    hm = 0;
-                    for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
-                        fovpt__v4 t0 = vtmin, u0 = vtmax;
-#define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz), u0);
-#undef FOVPT__SLAB4
-                        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);
-                        hm |= FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;
-                        FOVPT__V_ST(tv + j, t0);
+                    /* four children per pass, the passes written out (W / 4 of them) */
+#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
+#define FOVPT__PASS4(j, bits)                                                              \
+    do {                                                                                   \
+        fovpt__v4 t0 = vtmin, u0 = vtmax;                                                  \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx, j), u0);                             \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy, j), u0);                             \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz, j), u0);                             \
+        u0 = FOVPT__V_ADD(u0, vgk); /* + gk: as in the 8-wide test above */                \
+        bits = FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;                                    \
+        FOVPT__V_ST(tv + j, t0);                                                           \
+    } while (0)
+                    FOVPT__PASS4(0u, hm);
+#if FOVPT_BVH_WIDTH == 8
+                    {
+                        uint32_t hm1;
+                        FOVPT__PASS4(4u, hm1);
+                        hm |= hm1;
                     }
+#endif
+#undef FOVPT__PASS4
+#undef FOVPT__SLAB4
 #else
                     hm = 0;
                     for (j = 0; j < FOVPT__W; ++j) {
