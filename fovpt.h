@@ -5134,7 +5134,6 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
             wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
         __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
-        const __m256 wgk = _mm256_set1_ps(gk);
         (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
 #endif
 #else
@@ -5176,9 +5175,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    /* + gk on every node: with gk = 0 (tmin >= 0) u0 + 0 = u0 (-0 turns +0,
-                       which compares the same), one add instead of a test and a branch */
-                    u0 = _mm256_add_ps(u0, wgk);
+                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
@@ -5193,7 +5190,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy, j), u0);                             \
         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz, j), t0);                             \
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz, j), u0);                             \
-        u0 = FOVPT__V_ADD(u0, vgk); /* + gk: as in the 8-wide test above */                \
+        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);                                         \
         bits = FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;                                    \
         FOVPT__V_ST(tv + j, t0);                                                           \
     } while (0)
