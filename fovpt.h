@@ -5029,12 +5029,13 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
             }
         }
 #else
+        uint32_t lb;
         (void)rv;
         hm = dm = 0;
-        for (j = 0; j < 4u; ++j) {
+        for (lb = lanes; lb; lb &= lb - 1u) { /* the leaf's lanes, lowest first */
             float v0[3], e1[3], e2[3], pv[3], sv[3], qv[3], det, ad, sg, u, v, t;
             uint32_t k;
-            if (!(lanes & (1u << j))) continue;
+            j = fovpt__ctz(lb);
             for (k = 0; k < 3; ++k) {
                 v0[k] = q[4u * k + j]; e1[k] = q[4u * (3u + k) + j]; e2[k] = q[4u * (6u + k) + j];
             }
