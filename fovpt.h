@@ -3168,6 +3168,10 @@ typedef __m128 fovpt__m4;
 #define FOVPT__V_ABS(a) _mm_andnot_ps(_mm_set1_ps(-0.0f), a)
 #define FOVPT__V_XOR(a, m) _mm_xor_ps(a, m)
 #define FOVPT__M_BITS(m) ((uint32_t)_mm_movemask_ps(m))
+/* p[0], p[1], p[2], w: three floats of a caller's float[3] (no load past it) and a constant */
+#define FOVPT__V_LD3(p, w)                                                                 \
+    _mm_movelh_ps(_mm_loadl_pi(_mm_setzero_ps(), (const __m64 *)(const void *)(p)),        \
+                  _mm_unpacklo_ps(_mm_load_ss((p) + 2), _mm_set_ss(w)))
 #elif !defined(FOVPT_NO_SIMD) && defined(__aarch64__) && (defined(__ARM_NEON) || defined(_M_ARM64))
 #define FOVPT__SIMD 2
 #include <arm_neon.h>
@@ -3196,6 +3200,7 @@ FOV__PRIV uint32_t fovpt__neon_bits(uint32x4_t m)
     return vaddvq_u32(vandq_u32(m, vld1q_u32(w)));
 }
 #define FOVPT__M_BITS(m) fovpt__neon_bits(m)
+#define FOVPT__V_LD3(p, w) vcombine_f32(vld1_f32(p), vset_lane_f32((p)[2], vdup_n_f32(w), 0))
 #elif !defined(FOVPT_NO_SIMD) && defined(__wasm_simd128__)
 #define FOVPT__SIMD 3
 #include <wasm_simd128.h>
@@ -3219,6 +3224,7 @@ typedef v128_t fovpt__m4;
 #define FOVPT__V_ABS(a) wasm_f32x4_abs(a)
 #define FOVPT__V_XOR(a, m) wasm_v128_xor(a, m)
 #define FOVPT__M_BITS(m) ((uint32_t)wasm_i32x4_bitmask(m))
+#define FOVPT__V_LD3(p, w) wasm_f32x4_make((p)[0], (p)[1], (p)[2], w)
 #else
 #define FOVPT__SIMD 0
 #endif
@@ -4728,9 +4734,12 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
 
 /* ---- intersection ------------------------------------------------------------------------- */
 typedef struct fovpt__ray {
-    float o[3], d[3], inv[3]; /* inv: 1 / d, +inf where d is +-0 */
-    uint32_t nb[3], fb[3]; /* index into fovpt__node.b of each slab's near and far plane:
-                              lo (k) and hi (3 + k), swapped where the direction is negative */
+    float o[4], d[4], inv[4]; /* inv: 1 / d, +inf where d is +-0; [3]: padding, so the SIMD
+                                 entry (fovpt__ray_fast) stores each as 4 lanes */
+    float ig[4];              /* inv * FOVPT__BOX_GROW (the far planes' factor) */
+    uint32_t oct;             /* bit k set where inv[k] < 0 (d[k] < 0): the slabs' near and
+                                 far planes in fovpt__node.b, lo (k) and hi (3 + k), swapped
+                                 there (fovpt__closest) */
 } fovpt__ray;
 
 /* The BVH box test's rounding margin (Ize 2013, "Robust BVH Ray Traversal"): the far
@@ -4918,13 +4927,13 @@ FOVPT__PRIV void fovpt__ray_set(fovpt__ray *r, const float org[3], const float d
         const float d = dir[k];
         /* |d| <= 2^-128: +-inf; 0 < |d| < 2^-126 rays go to brute force (fovpt__dir_tiny) */
         const float inv = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf();
-        const uint32_t neg = inv < 0.0f ? 3u : 0u;
         r->o[k] = org[k];
         r->d[k] = d;
         r->inv[k] = inv;
-        r->nb[k] = k + neg;
-        r->fb[k] = k + 3u - neg;
+        r->ig[k] = inv * FOVPT__BOX_GROW;
     }
+    r->oct = (r->inv[0] < 0.0f ? 1u : 0u) | (r->inv[1] < 0.0f ? 2u : 0u) |
+             (r->inv[2] < 0.0f ? 4u : 0u);
 }
 FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float dir[3])
 {
@@ -4932,6 +4941,39 @@ FOVPT__PRIV int fovpt__ray_init(fovpt__ray *r, const float org[3], const float d
     fovpt__ray_set(r, org, dir);
     return 1;
 }
+#if FOVPT__SIMD
+/* The entry of fovpt_intersect and fovpt_occluded for the common ray, one 4-lane pass instead
+   of fovpt__dir_class, fov__finite3 twice and fovpt__ray_set: the origin finite and every
+   direction component's magnitude in [FLT_MIN, 2^32], the largest >= 2^-32. Then
+   fovpt__dir_class gives 0 (no rescale: the largest lies in [2^-32, 2^32]; nothing tiny: no
+   component below FLT_MIN) and no component is 0, so the record is fovpt__ray_set's with
+   inv = 1 / d in every lane: one 4-lane IEEE division, correctly rounded per lane, the same
+   floats as three scalar ones; oct from d < 0 (= inv < 0). Lane 3 of
+   the direction is 1 (no division by 0). A subnormal or zero component (or one flushed to
+   zero in the compare), a non-finite value or a direction to rescale returns 0: the caller
+   takes the scalar entry, which is this function's twin (and the only path without SIMD). */
+FOVPT__PRIV int fovpt__ray_fast(fovpt__ray *r, const float org[3], const float dir[3])
+{
+    const fovpt__v4 o = FOVPT__V_LD3(org, 0.0f), d = FOVPT__V_LD3(dir, 1.0f);
+    const fovpt__v4 ad = FOVPT__V_ABS(d);
+    const uint32_t ok =
+        FOVPT__M_BITS(FOVPT__V_LE(FOVPT__V_ABS(o), FOVPT__V_SET1(FLT_MAX))) &
+        FOVPT__M_BITS(FOVPT__M_AND(FOVPT__V_GE(ad, FOVPT__V_SET1(1.17549435e-38f)),
+                                   FOVPT__V_LE(ad, FOVPT__V_SET1(4294967296.0f))));
+    if (ok != 15u || !(FOVPT__M_BITS(FOVPT__V_GE(ad, FOVPT__V_SET1(2.3283064365386963e-10f))) &
+                       7u))
+        return 0;
+    FOVPT__V_ST(r->o, o);
+    FOVPT__V_ST(r->d, d);
+    {
+        const fovpt__v4 inv = FOVPT__V_DIV(FOVPT__V_SET1(1.0f), d);
+        FOVPT__V_ST(r->inv, inv);
+        FOVPT__V_ST(r->ig, FOVPT__V_MUL(inv, FOVPT__V_SET1(FOVPT__BOX_GROW)));
+    }
+    r->oct = FOVPT__M_BITS(FOVPT__V_LT(d, FOVPT__V_SET1(0.0f))); /* lane 3: 1, never set */
+    return 1;
+}
+#endif
 
 /* The slab test (Kay-Kajiya) of fovpt__closest, W boxes at once, with the near and far
    planes picked by the direction's sign, so no swap: the same products as (lo - o) * inv and
@@ -4977,20 +5019,18 @@ typedef struct fovpt__rayv {
 #endif
 } fovpt__rayv;
 FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fovpt__rayv *rv,
-                            uint32_t first, uint32_t end, float tmin, float *tmax,
-                            uint32_t *best, uint32_t *pos, int any)
+                            uint32_t first, uint32_t count, float tmin, float *tmax,
+                            uint32_t *best, uint32_t *pos, int any, int shapes)
 {
     const fovpt__prim *prims = (const fovpt__prim *)s->prims;
-    uint32_t blk, blk1;
-    /* an empty child of a 4-wide node (count 0, box inverted) is reached only when the box
-       test is widened to everything (a tmin of -inf after the direction's rescale) */
-    if (first >= end) return 0;
-    blk1 = (end - 1u) >> 2;
-    for (blk = first >> 2; blk <= blk1; ++blk) {
-        const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)blk;
-        const uint32_t b0 = blk << 2;
-        const uint32_t lo = first > b0 ? first - b0 : 0u, hi = end - b0 < 4u ? end - b0 : 4u;
-        const uint32_t lanes = (15u << lo) & (15u >> (4u - hi)) & 15u;
+    uint32_t blk = first >> 2, lm;
+    const float *q = s->leaf_tris + FOVPT__LBLK * (size_t)blk;
+    /* the leaf's slots [first, first + count) as a bit mask from lane 0 of its first block
+       (count <= FOVPT__LEAF_MAX = 16: at most 19 bits), 4 bits per block; an empty child of
+       a W-wide node (count 0, box inverted: reached only when the box test is widened to
+       everything, a tmin of -inf after the direction's rescale) has none */
+    for (lm = ((1u << count) - 1u) << (first & 3u); lm; lm >>= 4, ++blk, q += FOVPT__LBLK) {
+        const uint32_t b0 = blk << 2, lanes = lm & 15u;
         uint32_t hm, dm, j;
         float tv[4];
 #if FOVPT__SIMD
@@ -5018,7 +5058,10 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
             u = FOVPT__V_XOR(u, FOVPT__V_SIGN(det)); /* u * sg: the sign flipped where det < 0 */
             m = FOVPT__M_AND(okd, FOVPT__M_AND(FOVPT__V_GE(u, zero), FOVPT__V_LE(u, ad)));
             hm = FOVPT__M_BITS(m) & lanes;
-            dm = ~FOVPT__M_BITS(okd) & lanes;
+            /* det = 0 (a slot that is not a triangle) or tiny: the loop below passes the
+               shapes to fovpt__isect and drops the triangles, so a scene whose bounded
+               primitives are all triangles needs no such lanes */
+            dm = shapes ? ~FOVPT__M_BITS(okd) & lanes : 0u;
             if (hm) {
                 qx = FOVPT__V_SUB(FOVPT__V_MUL(sy, e1z), FOVPT__V_MUL(sz, e1y));
                 qy = FOVPT__V_SUB(FOVPT__V_MUL(sz, e1x), FOVPT__V_MUL(sx, e1z));
@@ -5038,18 +5081,19 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
             }
         }
 #else
+        uint32_t lb;
         (void)rv;
         hm = dm = 0;
-        for (j = 0; j < 4u; ++j) {
+        for (lb = lanes; lb; lb &= lb - 1u) { /* the leaf's lanes, lowest first */
             float v0[3], e1[3], e2[3], pv[3], sv[3], qv[3], det, ad, sg, u, v, t;
             uint32_t k;
-            if (!(lanes & (1u << j))) continue;
+            j = fovpt__ctz(lb);
             for (k = 0; k < 3; ++k) {
                 v0[k] = q[4u * k + j]; e1[k] = q[4u * (3u + k) + j]; e2[k] = q[4u * (6u + k) + j];
             }
             fov__cross(r->d, e2, pv);
             det = fov__dot(e1, pv);
-            if (!(fov__absf(det) > 1e-30f)) { dm |= 1u << j; continue; }
+            if (!(fov__absf(det) > 1e-30f)) { dm |= shapes ? 1u << j : 0u; continue; }
             sg = det < 0.0f ? -1.0f : 1.0f;
             ad = det * sg;
             fovpt__sub3(sv, r->o, v0);
@@ -5109,15 +5153,23 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
     *pos = FOVPT_PRIM_NONE;
     if (s->nodes && !brute) {
         const fovpt__node4 *n4 = (const fovpt__node4 *)s->nodes4;
+        /* the bounded shapes come first in the primitive records, then the triangles: the
+           first record tells whether any leaf slot holds a shape */
+        const int shapes = prims[0].type != FOVPT__TRI;
         uint32_t stack[FOVPT__STACK], sp = 0, ref = 0;
         float stack_t[FOVPT__STACK], lim;
         fovpt__rayv rv;
         const float gk = tmin < 0.0f ? -tmin * FOVPT__BOX_NEG : 0.0f;
-        const uint32_t nx = r->nb[0], ny = r->nb[1], nz = r->nb[2], fx = r->fb[0], fy = r->fb[1],
-            fz = r->fb[2];
+        /* per octant: the near planes' rows in fovpt__node.b (lo x, y, z = 0, 1, 2; hi = 3, 4,
+           5, swapped on a negative axis), then the far planes' */
+        static const uint32_t rows[8][6] = {
+            { 0, 1, 2, 3, 4, 5 }, { 3, 1, 2, 0, 4, 5 }, { 0, 4, 2, 3, 1, 5 }, { 3, 4, 2, 0, 1, 5 },
+            { 0, 1, 5, 3, 4, 2 }, { 3, 1, 5, 0, 4, 2 }, { 0, 4, 5, 3, 1, 2 }, { 3, 4, 5, 0, 1, 2 }
+        };
+        const uint32_t *rw = rows[r->oct];
+        const uint32_t nx = rw[0], ny = rw[1], nz = rw[2], fx = rw[3], fy = rw[4], fz = rw[5];
 #if FOVPT__SIMD
-        const float ifx = r->inv[0] * FOVPT__BOX_GROW, ify = r->inv[1] * FOVPT__BOX_GROW,
-            ifz = r->inv[2] * FOVPT__BOX_GROW;
+        const float ifx = r->ig[0], ify = r->ig[1], ifz = r->ig[2];
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
             voz = FOVPT__V_SET1(r->o[2]);
         const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
@@ -5147,8 +5199,8 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
             lim = *tmax * FOVPT__BOX_GROW + gk; /* a pushed entry distance beyond: culled */
             for (;;) {
                 if (ref & FOVPT__LEAF4) {
-                    const uint32_t first = (ref & ~FOVPT__LEAF4) >> 5, end = first + (ref & 31u);
-                    if (fovpt__leaf(s, r, &rv, first, end, tmin, tmax, &best, pos, any))
+                    if (fovpt__leaf(s, r, &rv, (ref & ~FOVPT__LEAF4) >> 5, ref & 31u, tmin, tmax,
+                                    &best, pos, any, shapes))
                         return best;
                     lim = *tmax * FOVPT__BOX_GROW + gk;
 #if FOVPT__SIMD
@@ -5180,21 +5232,31 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
-                    hm = 0;
-                    for (j = 0; j < FOVPT__W; j += 4u) { /* four children per pass */
-                        fovpt__v4 t0 = vtmin, u0 = vtmax;
-#define FOVPT__SLAB4(row, o, i) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy), u0);
-                        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz), t0);
-                        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz), u0);
-#undef FOVPT__SLAB4
-                        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);
-                        hm |= FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;
-                        FOVPT__V_ST(tv + j, t0);
+                    /* four children per pass, the passes written out (W / 4 of them) */
+#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
+#define FOVPT__PASS4(j, bits)                                                              \
+    do {                                                                                   \
+        fovpt__v4 t0 = vtmin, u0 = vtmax;                                                  \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nx, vox, vix, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fx, vox, vfx, j), u0);                             \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(ny, voy, viy, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy, j), u0);                             \
+        t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz, j), t0);                             \
+        u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz, j), u0);                             \
+        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);                                         \
+        bits = FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;                                    \
+        FOVPT__V_ST(tv + j, t0);                                                           \
+    } while (0)
+                    FOVPT__PASS4(0u, hm);
+#if FOVPT_BVH_WIDTH == 8
+                    {
+                        uint32_t hm1;
+                        FOVPT__PASS4(4u, hm1);
+                        hm |= hm1;
                     }
+#endif
+#undef FOVPT__PASS4
+#undef FOVPT__SLAB4
 #else
                     hm = 0;
                     for (j = 0; j < FOVPT__W; ++j) {
@@ -5280,8 +5342,12 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
     if (!s || !h || !org || !dir || !s->prims) { if (h) h->prim = FOVPT_PRIM_NONE; return 0; }
     h->prim = FOVPT_PRIM_NONE;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
-    dc = fovpt__dir_class(dir);
-    if (!(dc & 1)) {
+#if FOVPT__SIMD
+    if (fovpt__ray_fast(&r, org, dir)) {
+        slot = fovpt__closest(s, &r, tmin, &t, brute, 0, &pos);
+    } else
+#endif
+    if (!((dc = fovpt__dir_class(dir)) & 1)) {
         /* largest component in [2^-32, 2^32]: dot(dir, dir) >= 2^-64 > 0 when finite */
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0;
         fovpt__ray_set(&r, org, dir);
@@ -5376,8 +5442,12 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
     int dc;
     if (!s || !org || !dir || !s->prims) return 0;
     if (!fov__finite(tmin) || !(tmax > tmin)) return 0;
-    dc = fovpt__dir_class(dir);
-    if (!(dc & 1)) {
+#if FOVPT__SIMD
+    if (fovpt__ray_fast(&r, org, dir)) {
+        if (fovpt__closest(s, &r, tmin, &t, 0, 1, &pos) != FOVPT_PRIM_NONE) return 1;
+    } else
+#endif
+    if (!((dc = fovpt__dir_class(dir)) & 1)) {
         if (!fov__finite3(org) || !fov__finite3(dir)) return 0; /* as in fovpt__hit */
         fovpt__ray_set(&r, org, dir);
         if (fovpt__closest(s, &r, tmin, &t, dc & 2, 1, &pos) != FOVPT_PRIM_NONE)

@@ -2680,6 +2680,84 @@ static void test_dir_class(void)
     check(bad == 0, "fovpt__dir_class: rescale and tiny-component bits on 18^3 edge-value directions", "%u of %u differ", bad, n);
 }
 
+/* fovpt__ray_fast (the SIMD entry of fovpt_intersect / fovpt_occluded) against its scalar
+   twin: it takes a ray exactly when the rules, evaluated here in double, say the scalar
+   entry would route it to the walk with nothing to rescale and no zero or subnormal
+   direction component (origin finite; every |d| in [FLT_MIN, 2^32], the largest >= 2^-32),
+   and then its record equals fovpt__ray_set's bit for bit (o, d, 1 / d, 1 / d * GROW, the
+   octant). Edge-value directions (18^3) times origins with a huge, infinite, NaN, -0 or
+   subnormal component, then 200k random directions over the whole exponent range. The
+   origin and direction live in 12-byte heap blocks, so a load past float[3] is an
+   out-of-bounds read under the sanitizers. */
+static void test_ray_fast(void)
+{
+#if FOVPT__SIMD
+    static const uint32_t bits[] = { 0x00000000u, 0x80000000u, 0x00000001u, 0x807fffffu, 0x007fffffu,
+        0x00800000u, 0x80800000u, 0x2f7fffffu, 0x2f800000u, 0x4f800000u, 0x4f800001u, 0x3f800000u,
+        0xbf000000u, 0x7f7fffffu, 0x7f800000u, 0xff800000u, 0x7fc00000u, 0x00400000u };
+    static const float org_base[3] = { 0.5f, -2.0f, 3.0f };
+    const uint32_t nb = (uint32_t)(sizeof bits / sizeof bits[0]);
+    float *o = (float *)malloc(3u * sizeof(float)), *d = (float *)malloc(3u * sizeof(float));
+    uint32_t i, k, oi, q, bad_route = 0, bad_rec = 0, n = 0, taken = 0, x = 0x9e3779b9u;
+    if (!o || !d) { check(0, "test_ray_fast: malloc", " "); free(o); free(d); return; }
+    for (i = 0; i < nb * nb * nb * 6u + 200000u; ++i) {
+        fovpt__ray r1, r2;
+        int want = 1, got;
+        double m = 0.0;
+        if (i < nb * nb * nb * 6u) {
+            uint32_t b3[3], e = i / 6u;
+            b3[0] = bits[e % nb]; b3[1] = bits[(e / nb) % nb]; b3[2] = bits[e / (nb * nb)];
+            for (q = 0; q < 3; ++q) memcpy(&d[q], &b3[q], sizeof d[q]);
+            oi = i % 6u;
+        } else {
+            for (q = 0; q < 3; ++q) {
+                uint32_t u;
+                x = x * 1664525u + 1013904223u;
+                u = x; /* any sign, exponent and mantissa: NaN, inf, subnormal and 0 included */
+                if ((x >> 29) == 0u) u &= 0x80000000u; /* some exact zeros */
+                else if ((x >> 30) != 0u) /* mostly exponents around [2^-32, 2^32] */
+                    u = (u & 0x807fffffu) | ((80u + (x >> 8) % 100u) << 23);
+                memcpy(&d[q], &u, sizeof d[q]);
+            }
+            oi = (i >> 3) % 6u;
+        }
+        memcpy(o, org_base, sizeof org_base);
+        if (oi == 1) o[1] = FLT_MAX;
+        else if (oi == 2) o[2] = (float)HUGE_VAL;
+        else if (oi == 3) { uint32_t u = 0x7fc00000u; memcpy(&o[0], &u, sizeof u); }
+        else if (oi == 4) o[0] = -0.0f;
+        else if (oi == 5) o[1] = 1e-40f;
+        for (q = 0; q < 3; ++q) {
+            const double a = fabs((double)d[q]);
+            if (!(fabs((double)o[q]) <= (double)FLT_MAX)) want = 0;
+            if (!(a >= 1.1754943508222875e-38 && a <= 4294967296.0)) want = 0; /* NaN too */
+            if (a > m) m = a;
+        }
+        if (!(m >= 2.3283064365386963e-10)) want = 0;
+        memset(&r1, 0x5a, sizeof r1);
+        got = fovpt__ray_fast(&r1, o, d);
+        ++n;
+        if (got != want) { ++bad_route; continue; }
+        if (!got) continue;
+        ++taken;
+        /* the scalar entry's view of the same ray: no rescale, nothing tiny, finite */
+        if (fovpt__dir_class(d) != 0 || !fov__finite3(o) || !fov__finite3(d)) { ++bad_route; continue; }
+        memset(&r2, 0x5a, sizeof r2);
+        fovpt__ray_set(&r2, o, d);
+        for (k = 0; k < 3; ++k)
+            if (memcmp(&r1.o[k], &r2.o[k], 4) || memcmp(&r1.d[k], &r2.d[k], 4) ||
+                memcmp(&r1.inv[k], &r2.inv[k], 4) || memcmp(&r1.ig[k], &r2.ig[k], 4))
+                break;
+        if (k < 3 || r1.oct != r2.oct) ++bad_rec;
+    }
+    check(bad_route == 0 && bad_rec == 0 && taken > 20000u,
+          "SIMD ray entry = the scalar entry: routing on edge-value and random rays, the record bit for bit",
+          "%u misrouted, %u records differ, %u of %u taken", bad_route, bad_rec, taken, n);
+    free(o);
+    free(d);
+#endif
+}
+
 static void test_rev32(void)
 {
     uint32_t i, x = 0x12345678u, bad = 0;
@@ -3328,6 +3406,7 @@ int main(void)
     test_watertight();
     test_tiny_dir();
     test_dir_class();
+    test_ray_fast();
     test_rev32();
     return fovcheck_summary();
 #endif
@@ -3365,6 +3444,7 @@ int main(void)
     test_watertight();
     test_tiny_dir();
     test_dir_class();
+    test_ray_fast();
     test_rev32();
     return fovcheck_summary();
 }
