@@ -1,4 +1,4 @@
-/* fovpt.h - v0.10.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.11.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -598,6 +598,17 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.11.0 (2026-12-05) cfg.robust (ROBUST PIXEL ESTIMATE): an opt-in adaptive median of means
+                      against caustic specks (Buisine et al. 2021), the camera's specular
+                      chains kept as a plain mean; off by default (every image as before); at
+                      equal time the Cornell box's fovea +3.7 / +4.1 dB (layers_fovea, centre /
+                      corner gaze). Traversal: one SIMD pass at the ray entry of
+                      fovpt_intersect and fovpt_occluded (finiteness, routing and 1/d by one
+                      4-lane division; the scalar entry is its twin), the ray's octant instead
+                      of six plane indices, the leaf's lanes from one mask and no
+                      not-a-triangle lanes in triangle-only scenes: 13-20 % fewer instructions
+                      per ray with SIMD, 1.05-1.21x side by side against 0.10.0; same hits.
+                      fovpt__lanczos_value (dead since 0.10.0) removed.
    0.10.0 (2026-12-05) BVH: with SIMD a binary subtree of <= 4 primitives is opened by its
                       W-wide parent while it has room, else it is one leaf child laid out in
                       one block of 4 lanes (padding slots: fovpt_scene gains num_slots); the
@@ -721,9 +732,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 10
+#define FOVPT_VERSION_MINOR 11
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.10.0"
+#define FOVPT_VERSION_STRING "0.11.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
