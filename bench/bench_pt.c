@@ -5,11 +5,13 @@
                             Whitted; every method and budget; about 10-15 minutes here)
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
-                    [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--scene N]
+                    [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--ref-floor]
+                    [--scene N] [--gt-fovea-spp N]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
                     box's fovea error falls with spp, see README; --denoise, --robust: only
-                    the _dn / _rb rows, see below)
+                    the _dn / _rb rows, see below; --ref-floor: only pt_ref_floor.csv, the
+                    ground truth's own noise)
 
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
@@ -1290,21 +1292,118 @@ static void flicker_rows(FILE *fc, pt_scene *S, const char *nm, fov_gaze g, cons
     fflush(fc);
 }
 
-/* --denoise: only the _dn rows (and their undenoised twins in pt_denoise.csv) and pt_flicker.csv */
-static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t gt_spp, int quick, int threads)
+/* The reference's own noise (pt_ref_floor.csv): a second UNIFORM image at gt_spp / 4 (at least
+   1) with its own seed (778) against the ground truth (seed 777) has, per field, the expected
+   MSE v_ref (1 + gt_spp / check_spp) (independent estimates, variance falling as 1 / spp), so
+   v_ref = MSE / (1 + gt_spp / check_spp); floor = 10 log10(1 / v_ref) dB. Any image's MSE
+   against the ground truth is its own MSE against the exact image plus v_ref (in expectation),
+   so a row's PSNR stays below the floor however good the image is, and a difference between
+   two rows close to it is compressed: MSE_true ~ 10^(-PSNR / 10) - v_ref. Costs a quarter of
+   the ground truth's samples. */
+static uint32_t g_gt_fovea_spp; /* --gt-fovea-spp N: the fovea's ground truth at N spp (0: off) */
+
+/* the fovea's pixels (e < 3.3 degrees) of ref replaced by a UNIFORM image at spp samples (seed
+   779; only the rows that hold them are traced, threads of them at once) */
+static void fovea_ref(pt_scene *S, fov_gaze g, uint32_t spp, const float *ecc, float *ref, int threads)
 {
-    char spath[1024], fpath[1024];
+    uint32_t W = S->cam.width, H = S->cam.height, ya = H, yb = 0, x, y;
+    size_t n = 0;
+    void *mem;
+    fovpt_ctx ctx;
+    fovpt_output out;
+    fovpt_stats st;
+    fovpt_config c = fovpt_config_default();
+    float *img = (float *)calloc((size_t)W * H * 3u, 4u);
+    pthread_t th[16];
+    job jobs[16];
+    int i;
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x)
+            if (ecc[(size_t)y * W + x] < 3.3f) { if (y < ya) ya = y; yb = y + 1u; }
+    c.spp = spp; c.seed = 779;
+    if (threads < 1) threads = 1;
+    if (threads > 16) threads = 16;
+    if (ya >= yb || fovpt_memory_size(&c, &S->cam, &n) != FOV_OK) { free(img); return; }
+    mem = malloc(n + 16u);
+    if (fovpt_init(&ctx, &c, &S->scene, &S->cam, g, mem, n) != FOV_OK) { free(mem); free(img); return; }
+    for (i = 0; i < threads; ++i) {
+        memset(&jobs[i], 0, sizeof jobs[i]);
+        jobs[i].ctx = &ctx;
+        jobs[i].y0 = ya + (yb - ya) * (uint32_t)i / (uint32_t)threads;
+        jobs[i].y1 = ya + (yb - ya) * (uint32_t)(i + 1) / (uint32_t)threads;
+        pthread_create(&th[i], NULL, worker, &jobs[i]);
+    }
+    for (i = 0; i < threads; ++i) pthread_join(th[i], NULL);
+    memset(&st, 0, sizeof st);
+    fovpt_refine_rows(&ctx, 0, ya, yb, &st);
+    fovpt_output_init(&out);
+    out.rgb = img;
+    fovpt_resolve_rows(&ctx, ya, yb, &out);
+    for (y = ya; y < yb; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t q = (size_t)y * W + x;
+            if (ecc[q] < 3.3f) memcpy(ref + 3u * q, img + 3u * q, 12u);
+        }
+    free(mem);
+    free(img);
+}
+
+static void ref_floor(pt_scene *S, fov_gaze g, uint32_t gt_spp, const float *ref, const float *ecc, int threads, uint32_t *check_spp,
+                      double fl[5])
+{
+    static const double lo[5] = { 0.0, 3.3, 5.5, 12.1, -1.0 }, hi[5] = { 3.3, 5.5, 12.1, 30.0, 1e9 };
+    size_t np = (size_t)S->cam.width * S->cam.height, i;
+    float *chk = (float *)malloc(np * 12u);
+    fovpt_config c = fovpt_config_default();
+    fovpt_stats st;
+    int f;
+    *check_spp = gt_spp / 4u ? gt_spp / 4u : 1u;
+    c.spp = *check_spp; c.seed = 778;
+    render(S, &c, g, chk, &st, threads);
+    for (f = 0; f < 5; ++f) {
+        double se = 0.0, v;
+        size_t cnt = 0, k;
+        for (i = 0; i < np; ++i) {
+            /* the pixel's ground truth samples: the fovea's own with --gt-fovea-spp */
+            double gs = (g_gt_fovea_spp > gt_spp && ecc[i] < 3.3f) ? (double)g_gt_fovea_spp : (double)gt_spp;
+            if (ecc[i] < lo[f] || ecc[i] >= hi[f]) continue;
+            for (k = 0; k < 3; ++k) {
+                double d = srgb(chk[3 * i + k]) - srgb(ref[3 * i + k]);
+                se += d * d / (1.0 + gs / (double)*check_spp);
+            }
+            cnt += 3;
+        }
+        v = cnt ? se / (double)cnt : NAN;
+        fl[f] = cnt ? (v > 0.0 ? 10.0 * log10(1.0 / v) : 99.0) : NAN;
+    }
+    free(chk);
+}
+
+/* --denoise: only the _dn rows (and their undenoised twins in pt_denoise.csv), pt_flicker.csv
+   and pt_ref_floor.csv; floor_only (--ref-floor): only pt_ref_floor.csv */
+static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t gt_spp, int quick, int threads, int floor_only)
+{
+    char spath[1024], fpath[1024], rpath[1024];
     const char *sl = strrchr(out_path, '/');
-    FILE *csv = fopen(out_path, "w"), *side, *fc;
+    FILE *csv = NULL, *side = NULL, *fc = NULL, *rf;
     int sc, gi;
     snprintf(spath, sizeof spath, "%.*spt_denoise.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
     snprintf(fpath, sizeof fpath, "%.*spt_flicker.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
-    side = fopen(spath, "w");
-    fc = fopen(fpath, "w");
-    if (!csv || !side || !fc) { fprintf(stderr, "cannot write %s / %s / %s\n", out_path, spath, fpath); return; }
+    snprintf(rpath, sizeof rpath, "%.*spt_ref_floor.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    rf = fopen(rpath, "w");
+    if (!rf) { fprintf(stderr, "cannot write %s\n", rpath); return; }
+    fprintf(rf, "scene,gaze,gt_spp,gt_fovea_spp,check_spp,floor_f1,floor_f2,floor_f3,floor_f4,floor_all\n");
+    if (!floor_only) {
+        csv = fopen(out_path, "w");
+        side = fopen(spath, "w");
+        fc = fopen(fpath, "w");
+        if (!csv || !side || !fc) { fprintf(stderr, "cannot write %s / %s / %s\n", out_path, spath, fpath); return; }
+    }
+    if (floor_only) goto scenes;
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
     fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,dn_ms\n");
     fprintf(fc, "scene,method,flicker_static,flicker_moving,psnr_f1_static,psnr_all_static\n");
+scenes:
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
         pt_scene S;
         size_t np = (size_t)W * H;
@@ -1327,6 +1426,18 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
                 for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
             c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
             render(&S, &c, g, ref, &st, threads);
+            if (g_gt_fovea_spp > gt_spp) fovea_ref(&S, g, g_gt_fovea_spp, ecc, ref, threads);
+            {
+                double fl[5];
+                uint32_t cs, gf = g_gt_fovea_spp > gt_spp ? g_gt_fovea_spp : gt_spp;
+                ref_floor(&S, g, gt_spp, ref, ecc, threads, &cs, fl);
+                fprintf(rf, "%s,%s,%u,%u,%u,%.2f,%.2f,%.2f,%.2f,%.2f\n", pt_scene_names[sc], gi ? "corner" : "centre", gt_spp, gf, cs, fl[0],
+                        fl[1], fl[2], fl[3], fl[4]);
+                fflush(rf);
+                printf("%s %s: the reference's own noise (%u spp, fovea %u), floor f1..f4 %6.2f %6.2f %6.2f %6.2f all %6.2f dB (check %u spp)\n",
+                       pt_scene_names[sc], gi ? "corner" : "centre", gt_spp, gf, fl[0], fl[1], fl[2], fl[3], fl[4], cs);
+                if (floor_only) continue;
+            }
             method_cfg(&c, 0);
             t_u4 = render(&S, &c, g, img, &st, 1);
             printf("%s %s (uniform4 %.1f ms):\n", pt_scene_names[sc], gi ? "corner" : "centre", t_u4);
@@ -1336,8 +1447,10 @@ static void denoise_only(const char *out_path, uint32_t W, uint32_t H, uint32_t 
         pt_scene_free(&S);
         free(ref); free(img); free(ecc);
     }
+    fclose(rf);
+    if (floor_only) { printf("wrote %s\n", rpath); return; }
     fclose(csv); fclose(side); fclose(fc);
-    printf("wrote %s, %s, %s\n", out_path, spath, fpath);
+    printf("wrote %s, %s, %s, %s\n", out_path, spath, fpath, rpath);
 }
 
 /* --robust: rows <method>_rb (fovpt.h ROBUST PIXEL ESTIMATE, cfg.robust = RB_GROUPS) beside
@@ -1466,12 +1579,16 @@ static void usage(FILE *f)
           "                      (uniform4, layers, layers_diam, zones, selective default, the\n"
           "                      eqtime_uniform4 rows), to FILE (default build/pt_lp.csv)\n"
           "  --denoise           only the denoised (_dn) rows: FILE (default\n"
-          "                      bench/results/pt_dn.csv), pt_denoise.csv and pt_flicker.csv beside it\n"
+          "                      bench/results/pt_dn.csv), pt_denoise.csv, pt_flicker.csv\n"
+          "                      and pt_ref_floor.csv (the reference's own noise per field)\n"
           "  --robust            only the cfg.robust (_rb) rows and their plain twins: FILE\n"
           "                      (default bench/results/pt_rb.csv), pt_robust.csv beside it\n"
-          "  --scene N           with --denoise or --robust: scene N only (0 cornell .. 4 interior)\n"
+          "  --ref-floor         only pt_ref_floor.csv beside FILE (default bench/results/)\n"
+          "  --scene N           with --denoise / --robust / --ref-floor: scene N only (0 cornell .. 4 interior)\n"
           "  --w W, --h H        image size (default 320 x 240)\n"
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
+          "  --gt-fovea-spp N    with --denoise / --ref-floor: the fovea's (e < 3.3 degrees)\n"
+          "                      ground truth at N spp (default: --gt-spp)\n"
           "  --threads N         render threads (default 2)\n"
           "  --out FILE          CSV (default bench/results/pt.csv)\n"
           "  -h, --help          this text\n", f);
@@ -1480,8 +1597,8 @@ static void usage(FILE *f)
 int main(int argc, char **argv)
 {
     uint32_t W = 320, H = 240, gt_spp = 512;
-    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, only_rb = 0, out_set = 0, threads = 2, i, sc,
-        gi;
+    int full = 0, quick = 0, only_tp = 0, only_temporal = 0, only_lp = 0, only_dn = 0, only_rb = 0, only_floor = 0, out_set = 0,
+        threads = 2, i, sc, gi;
     const char *out_path = "bench/results/pt.csv";
     FILE *csv, *dn_side = NULL, *dn_flicker = NULL, *rb_side = NULL;
     double t_start = now_ms();
@@ -1494,11 +1611,13 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--lp")) only_lp = 1;
         else if (!strcmp(argv[i], "--denoise")) only_dn = 1;
         else if (!strcmp(argv[i], "--robust")) only_rb = 1;
+        else if (!strcmp(argv[i], "--ref-floor")) only_floor = 1;
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) g_dn_scene = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--fovea-spp")) { fovea_spp_curve(); return 0; }
         else if (!strcmp(argv[i], "--w") && i + 1 < argc) W = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--gt-fovea-spp") && i + 1 < argc) g_gt_fovea_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) { out_path = argv[++i]; out_set = 1; }
         else { fprintf(stderr, "unknown option %s\n", argv[i]); usage(stderr); return 2; }
@@ -1512,9 +1631,9 @@ int main(int argc, char **argv)
         printf("(%.0f s)\n", (now_ms() - t_start) * 1e-3);
         return 0;
     }
-    if (only_dn) {
+    if (only_dn || only_floor) {
         if (!strcmp(out_path, "bench/results/pt.csv")) out_path = "bench/results/pt_dn.csv";
-        denoise_only(out_path, W, H, gt_spp, quick, threads);
+        denoise_only(out_path, W, H, gt_spp, quick, threads, only_floor && !only_dn);
         printf("(%.0f s)\n", (now_ms() - t_start) * 1e-3);
         return 0;
     }
