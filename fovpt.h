@@ -368,8 +368,11 @@ ROBUST PIXEL ESTIMATE (cfg.robust)
    fovpt_shade_points point, in path mode:
      - each sample is split into the radiance its camera ray's specular chain reaches
        (emission and background before the first bounce that is not a mirror or glass one:
-       deterministic along the ray, so a light's or a mirrored light's partly covered edge
-       is coverage, not noise) and the rest;
+       what the eye sees directly or through mirrors and glass, so a light's or a mirrored
+       light's partly covered edge is coverage, not noise; glass's random pick of reflection
+       or refraction and Russian roulette make these terms vary too, and they stay in the
+       plain mean, specks included) and the rest; Whitted mode: all of it (no random
+       numbers along its rays);
      - the rest is summed in g = min(k, spp / FOVPT_ROBUST_MIN_GROUP) groups of consecutive
        samples (sizes within one); with g >= 3, the groups' mean luminances l_1 <= .. <= l_g
        (0.2126 R + 0.7152 G + 0.0722 B) give the Gini coefficient G = sum_i (2 i - g - 1) l_i
@@ -378,9 +381,12 @@ ROBUST PIXEL ESTIMATE (cfg.robust)
        mean of the rest (the mean of the two middle ones for even g), else its plain mean.
    Biased where a rare path carries much of a pixel's true value: a caustic's own pixels
    (the Cornell box's ceiling, lit through its mirror sphere, comes out darker at 64 spp)
-   lose it with their specks. Consistent: as spp grows every group mean tends to the pixel's
-   and G to 0 (tested: its squared difference from the plain mean of the same samples falls
-   6x from 64 to 256 spp on that Cornell box). Fewer than 3 groups (spp < 3
+   lose it with their specks. Consistent as the samples of one call grow: every group mean
+   tends to the pixel's and G to 0 (tested: its squared difference from the plain mean of
+   the same samples falls 6x from 64 to 256 spp on that Cornell box). Not across calls: with
+   cfg.accumulate, a temporal filter or fovlp's TAA at a fixed spp per call the running
+   mean keeps the per-call bias (Cornell box, 64 x 48, 32 spp x 64 frames: the image's mean
+   luminance 3.9 % below the plain one's; 2048 spp in one call: equal). Fewer than 3 groups (spp < 3
    FOVPT_ROBUST_MIN_GROUP), Whitted mode (deterministic along each ray), SELECTIVE's and
    JIN's samples and lattice points that group their samples for clamp_white: the plain
    mean, as with robust 0 (the default: unbiased, every image as before). The guides' var
@@ -602,13 +608,14 @@ RECENT REVISION HISTORY
                       against caustic specks (Buisine et al. 2021), the camera's specular
                       chains kept as a plain mean; off by default (every image as before); at
                       equal time the Cornell box's fovea +3.7 / +4.1 dB (layers_fovea, centre /
-                      corner gaze). Traversal: one SIMD pass at the ray entry of
-                      fovpt_intersect and fovpt_occluded (finiteness, routing and 1/d by one
-                      4-lane division; the scalar entry is its twin), the ray's octant instead
-                      of six plane indices, the leaf's lanes from one mask and no
-                      not-a-triangle lanes in triangle-only scenes: 13-20 % fewer instructions
-                      per ray with SIMD, 1.05-1.21x side by side against 0.10.0; same hits.
-                      fovpt__lanczos_value (dead since 0.10.0) removed.
+                      corner gaze); the field follows sampler in fovpt_config (positional
+                      initialisers of the later fields move). Traversal: one SIMD pass at the
+                      ray entry of fovpt_intersect and fovpt_occluded (finiteness, routing and
+                      1/d by one 4-lane division; the scalar entry is its twin), the ray's
+                      octant instead of six plane indices, the leaf's lanes from one mask and
+                      no not-a-triangle lanes in triangle-only scenes: 13-20 % fewer
+                      instructions per ray with SIMD, 1.05-1.21x side by side against 0.10.0;
+                      same hits. fovpt__lanczos_value (dead since 0.10.0) removed.
    0.10.0 (2026-12-05) BVH: with SIMD a binary subtree of <= 4 primitives is opened by its
                       W-wide parent while it has room, else it is one leaf child laid out in
                       one block of 4 lanes (padding slots: fovpt_scene gains num_slots); the
@@ -1986,6 +1993,9 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
 #endif
 #ifndef FOVPT_ROBUST_GINI
 #define FOVPT_ROBUST_GINI 0.25f
+#endif
+#if FOVPT_ROBUST_MAX < 3 || FOVPT_ROBUST_MIN_GROUP < 1
+#error "fovpt.h: FOVPT_ROBUST_MAX must be at least 3 and FOVPT_ROBUST_MIN_GROUP at least 1"
 #endif
 #ifndef FOVPT_MAX_RADIANCE
 #define FOVPT_MAX_RADIANCE 1e16
@@ -6078,12 +6088,8 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
     if (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "radiance: c.max_depth above FOVPT_MAX_WHITTED");
-    if (c->mode == FOVPT_MODE_WHITTED) {
-        fovpt__whitted(s, c, org, dir, rgb, st, at);
-        if (at) fovpt__copy3(at->lc, rgb); /* deterministic along the ray */
-    } else {
-        fovpt__path(s, c, org, dir, rng, rgb, st, at);
-    }
+    if (c->mode == FOVPT_MODE_WHITTED) fovpt__whitted(s, c, org, dir, rgb, st, at);
+    else fovpt__path(s, c, org, dir, rng, rgb, st, at);
     if (!fov__finite3(rgb)) {
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         st->bad_samples++;
@@ -6091,9 +6097,13 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
         uint32_t k;
         for (k = 0; k < 3; ++k) rgb[k] = fov__minf(rgb[k], (float)FOVPT_MAX_RADIANCE);
     }
-    if (at) { /* the chain's part: within the sample's value (0 where that was dropped) */
+    if (at) { /* the chain's part, within the sample's final value: Whitted all of it (no
+                 random numbers along the ray), a path its chain's terms, 0 where NaN and at
+                 most the value (0 where a non-finite sample was dropped, the cap above) */
         uint32_t k;
-        for (k = 0; k < 3; ++k) at->lc[k] = fov__clampf(at->lc[k], 0.0f, rgb[k]);
+        for (k = 0; k < 3; ++k)
+            at->lc[k] = c->mode == FOVPT_MODE_WHITTED ? rgb[k]
+                      : at->lc[k] > 0.0f ? fov__minf(at->lc[k], rgb[k]) : 0.0f;
     }
     return FOV_OK;
 }
@@ -6175,9 +6185,11 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
     if (c->sampler >= (uint32_t)_FOVPT_SAMPLER_NUM)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "shade_points: c.sampler unknown (see fovpt_sampler)");
-    if (c->robust == 1u || c->robust == 2u || c->robust > (uint32_t)FOVPT_ROBUST_MAX)
+    if (c->robust == 1u || c->robust == 2u)
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,
                     "shade_points: c.robust must be 0 or 3 .. FOVPT_ROBUST_MAX");
+    if (c->robust > (uint32_t)FOVPT_ROBUST_MAX)
+        FOVPT__FAIL(&c->logger, FOV_ERR_LIMIT, "shade_points: c.robust above FOVPT_ROBUST_MAX");
     if (c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,

@@ -3253,6 +3253,7 @@ static void test_robust(void)
         fovpt_shape_sphere(&sh[25], 0.8f, -0.1f, 0.3f, 0.5f, 1);
         fovpt_scene_desc_init(&d);
         d.shapes = sh; d.num_shapes = 26; d.materials = m; d.num_materials = 2;
+        d.background[0] = 0.3f; d.background[1] = 0.5f; d.background[2] = 0.7f; /* a chain's too */
         build(&b, &d);
         fovpt_camera_init(&cam, W, H);
         cam.pos[2] = -3.0f;
@@ -3277,9 +3278,171 @@ static void test_robust(void)
             edge += im[0][3 * i] > 0.05f && im[0][3 * i] < 6.0f; /* under 30 % covered */
             for (k = 0; k < 3; ++k) diff += !(fabsf(im[0][3 * i + k] - im[1][3 * i + k]) <= 1e-5f * im[0][3 * i + k] + 1e-7f);
         }
-        check(diff == 0 && edge >= 8u, "robust: specular chains only (a light seen directly and in a mirror): the plain mean at every pixel, partly covered edges included",
+        check(diff == 0 && edge >= 8u, "robust: specular chains only (a light seen directly and in a mirror, the background): the plain mean at every pixel, partly covered edges included",
               "%u values differ, %u edge pixels", diff, edge);
         free(im[0]); free(im[1]); free(b.mem);
+    }
+    {   /* Whitted mode (no random numbers along a ray: every sample the chain's) gives the
+           plain mean bit for bit on the Cornell box, and a sample that comes out NaN (a light
+           1e9 wide at 1e-11 from a lit quad: the light's g overflows, 0 * inf) is dropped as
+           with robust 0, not passed into the pixel (the review R3's reproducer) */
+        fovpt_material m[6];
+        fovpt_shape sh[8];
+        fovpt_scene_desc d;
+        scene_buf b;
+        fovpt_camera cam;
+        const uint32_t W = 24, H = 16;
+        float *im[2];
+        uint32_t diff = 0, nan1 = 0, r;
+        fov_gaze gz;
+        cornell(m, sh, &d, 0);
+        build(&b, &d);
+        fovpt_camera_init(&cam, W, H);
+        cam.pos[2] = -3.0f;
+        gz.x = 12.0f; gz.y = 8.0f;
+        for (r = 0; r < 2; ++r) {
+            fovpt_config c = fovpt_config_default();
+            fovpt_ctx ctx;
+            fovpt_output out;
+            size_t need = 0;
+            void *mem;
+            im[r] = (float *)malloc(W * H * 12u);
+            c.mode = FOVPT_MODE_WHITTED; c.spp = 32u; c.seed = 8u; c.robust = r ? 4u : 0u;
+            fovpt_memory_size(&c, &cam, &need);
+            mem = amalloc(need);
+            fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
+            fovpt_output_init(&out);
+            out.rgb = im[r];
+            fovpt_render(&ctx, 0, &out, NULL);
+            free(mem);
+        }
+        for (i = 0; i < 3u * W * H; ++i) diff += memcmp(&im[0][i], &im[1][i], sizeof(float)) != 0;
+        free(im[0]); free(im[1]); free(b.mem);
+        {
+            fovpt_material mw[2];
+            fovpt_shape sw[2];
+            float c0[3] = {-5e8f, -5e8f, 0.0f}, u0[3] = {1e9f, 0.0f, 0.0f}, v0[3] = {0.0f, 1e9f, 0.0f};
+            float c1[3] = {-0.5f, -0.5f, -1e-11f}, u1[3] = {1.0f, 0.0f, 0.0f}, v1[3] = {0.0f, 1.0f, 0.0f};
+            fovpt_material_init(&mw[0]); fovpt_material_init(&mw[1]);
+            mw[0].albedo[0] = mw[0].albedo[1] = mw[0].albedo[2] = 0.0f;
+            mw[0].emission[0] = mw[0].emission[1] = mw[0].emission[2] = 1.0f;
+            mw[1].albedo[0] = 1.0f; mw[1].albedo[1] = mw[1].albedo[2] = 0.0f;
+            fovpt_shape_quad(&sw[0], c0, u0, v0, 0); fovpt_shape_quad(&sw[1], c1, u1, v1, 1);
+            fovpt_scene_desc_init(&d);
+            d.shapes = sw; d.num_shapes = 2; d.materials = mw; d.num_materials = 2;
+            build(&b, &d);
+            fovpt_camera_init(&cam, 8, 8);
+            cam.pos[0] = cam.pos[1] = 0.0f; cam.pos[2] = -5e-12f;
+            cam.target[0] = cam.target[1] = 0.0f; cam.target[2] = -1.0f;
+            for (r = 0; r < 2; ++r) {
+                fovpt_config c = fovpt_config_default();
+                fovpt_ctx ctx;
+                fovpt_output out;
+                fovpt_stats st;
+                size_t need = 0;
+                void *mem;
+                float img[8 * 8 * 3];
+                uint32_t nn = 0;
+                c.mode = FOVPT_MODE_WHITTED; c.spp = 24u; c.robust = r ? 4u : 0u;
+                fovpt_memory_size(&c, &cam, &need);
+                mem = amalloc(need);
+                gz.x = 4.0f; gz.y = 4.0f;
+                fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
+                fovpt_output_init(&out);
+                out.rgb = img;
+                memset(&st, 0, sizeof st);
+                fovpt_render(&ctx, 0, &out, &st);
+                for (i = 0; i < 192u; ++i) nn += !(img[i] >= 0.0f && img[i] <= FLT_MAX);
+                if (r) nan1 = nn + (st.bad_samples == 0 ? 1000u : 0u); /* the scene must produce them */
+                else nan1 += nn;
+                free(mem);
+            }
+            free(b.mem);
+        }
+        check(diff == 0 && nan1 == 0, "robust: Whitted mode gives the plain mean bit for bit, and a NaN sample is dropped (no NaN pixel)",
+              "%u values differ; %u non-finite or negative values (1000: no bad sample to test)", diff, nan1);
+    }
+    {   /* an emission of 1e38 seen directly: the sample is capped at FOVPT_MAX_RADIANCE, and
+           so is its chain's part: the pixel stays the cap, finite, robust or not */
+        fovpt_material m[1];
+        fovpt_shape sh[1];
+        fovpt_scene_desc d;
+        scene_buf b;
+        fovpt_camera cam;
+        float img[4 * 4 * 3];
+        uint32_t off = 0, r;
+        fov_gaze gz;
+        fovpt_material_init(&m[0]);
+        m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.0f;
+        m[0].emission[0] = m[0].emission[1] = m[0].emission[2] = 1e38f;
+        fovpt_shape_sphere(&sh[0], 0.0f, 0.0f, 0.0f, 0.1f, 0); /* small: its power stays finite */
+        fovpt_scene_desc_init(&d);
+        d.shapes = sh; d.num_shapes = 1; d.materials = m; d.num_materials = 1;
+        if (!check(build(&b, &d) == FOV_OK, "robust: a lamp of 1e38 builds", " ")) return;
+        fovpt_camera_init(&cam, 4, 4);
+        cam.pos[2] = -0.15f; /* the lamp fills the view (40 degrees of half-angle) */
+        gz.x = 2.0f; gz.y = 2.0f;
+        for (r = 0; r < 2; ++r) {
+            fovpt_config c = fovpt_config_default();
+            fovpt_ctx ctx;
+            fovpt_output out;
+            size_t need = 0;
+            void *mem;
+            c.spp = 32u; c.robust = r ? 16u : 0u;
+            fovpt_memory_size(&c, &cam, &need);
+            mem = amalloc(need);
+            if (fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need) != FOV_OK) { off += 1000u; free(mem); continue; }
+            fovpt_output_init(&out);
+            out.rgb = img;
+            fovpt_render(&ctx, 0, &out, NULL);
+            for (i = 0; i < 48u; ++i) off += !(fabsf(img[i] - (float)FOVPT_MAX_RADIANCE) <= 1e-5f * (float)FOVPT_MAX_RADIANCE);
+            free(mem);
+        }
+        free(b.mem);
+        check(off == 0, "robust: a 1e38 emission seen directly stays at FOVPT_MAX_RADIANCE with robust 16, as without", "%u values off", off);
+    }
+    {   /* LAYERS: robust groups a stride-1 point's samples, and a coarser point's where it does
+           not group them for clamp_white; with clamp_white 1 the coarse layers are unchanged */
+        fovpt_material m[6];
+        fovpt_shape sh[8];
+        fovpt_scene_desc d;
+        scene_buf b;
+        fovpt_camera cam;
+        uint32_t changed[2][2] = {{0, 0}, {0, 0}}, cw, n;
+        fov_gaze gz;
+        cornell(m, sh, &d, 0);
+        build(&b, &d);
+        fovpt_camera_init(&cam, 48, 32);
+        cam.pos[2] = -3.0f;
+        gz.x = 24.0f; gz.y = 16.0f;
+        for (cw = 0; cw < 2; ++cw) {
+            fovpt_ctx ctx[2];
+            void *mem[2];
+            uint32_t r;
+            for (r = 0; r < 2; ++r) {
+                fovpt_config c = fovpt_config_default();
+                size_t need = 0;
+                c.method = FOVPT_METHOD_LAYERS;
+                fovpt_layers_preset(&c.layers, FOVPT_LAYERS_KTH_RADIUS);
+                for (n = 0; n < c.layers.count; ++n) c.layers.layer[n].spp = 32u;
+                c.layers.clamp_white = cw ? 1.0f : 0.0f;
+                c.robust = r ? 4u : 0u;
+                fovpt_memory_size(&c, &cam, &need);
+                mem[r] = amalloc(need);
+                fovpt_init(&ctx[r], &c, &b.s, &cam, gz, mem[r], need);
+                fovpt_trace_rows(&ctx[r], 0, 0, 32, NULL);
+            }
+            for (n = 0; n < ctx[0].lay.count; ++n) {
+                size_t q, cnt = (size_t)ctx[0].layer_nx[n] * ctx[0].layer_ny[n] * 4u;
+                for (q = 0; q < cnt; ++q)
+                    changed[cw][ctx[0].lay.layer[n].stride >= 2u] += memcmp(&ctx[0].layer_buf[n][q], &ctx[1].layer_buf[n][q], sizeof(float)) != 0;
+            }
+            free(mem[0]); free(mem[1]);
+        }
+        free(b.mem);
+        check(changed[0][0] > 0 && changed[0][1] > 0 && changed[1][0] > 0 && changed[1][1] == 0,
+              "robust: LAYERS groups the stride-1 points and the coarse ones, except the coarse ones clamp_white groups",
+              "values changed: stride 1 %u, coarse %u; with clamp_white: stride 1 %u, coarse %u", changed[0][0], changed[0][1], changed[1][0], changed[1][1]);
     }
 }
 
