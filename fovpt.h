@@ -6110,20 +6110,23 @@ FOVPT__PRIV fov_result fovpt__radiance(const fovpt_scene *s, const fovpt_config 
 
 /* ROBUST PIXEL ESTIMATE: the group count for spp samples (0: the plain mean), the group of
    sample s, and the estimate as a sum over the spp samples: the specular chains' sum lc
-   (deterministic along each camera ray: a light's or a mirrored light's anti-aliased edge is
-   coverage, not a firefly) plus, from the groups' sums gs[0 .. g-1] of the rest, the median
-   group's mean times spp where the group means' Gini coefficient is above
-   FOVPT_ROBUST_GINI, else the sum of the groups' sums. fovpt__robust_add splits a sample. */
+   (what the eye sees directly or through mirrors and glass: a light's or a mirrored light's
+   anti-aliased edge is coverage, not a firefly) plus, from the groups' sums gs[0 .. g-1] of
+   the rest, the median group's mean times spp where the group means' Gini coefficient is
+   above FOVPT_ROBUST_GINI, else the sum of the groups' sums. fovpt__robust_add splits a
+   sample. 32-bit integers only (no compiler helpers on 32-bit targets): (g + 1) spp stays
+   below 2^32 because a count of spp above (2^32 - 1) / (FOVPT_ROBUST_MAX + 1) takes the plain
+   mean (a sample count no frame reaches: FOVPT_MAX_SPP is 65536). */
 FOVPT__PRIV uint32_t fovpt__robust_groups(uint32_t robust, uint32_t spp)
 {
     uint32_t g = spp / (uint32_t)FOVPT_ROBUST_MIN_GROUP;
-    if (robust < 3u) return 0u;
+    if (robust < 3u || spp > 0xFFFFFFFFu / ((uint32_t)FOVPT_ROBUST_MAX + 1u)) return 0u;
     if (g > robust) g = robust;
     return g >= 3u ? g : 0u;
 }
 FOVPT__PRIV uint32_t fovpt__robust_group_of(uint32_t s, uint32_t g, uint32_t spp)
 {
-    return (uint32_t)(((uint64_t)s * g) / spp);
+    return s * g / spp;
 }
 FOVPT__PRIV void fovpt__robust_add(float gs[][3], float lc[3], uint32_t g, uint32_t spp,
                                    uint32_t s, const float rgb[3], const float c[3])
@@ -6143,8 +6146,7 @@ FOVPT__PRIV void fovpt__robust_sum(float gs[][3], const float lc[3], uint32_t g,
     sum[0] = lc[0]; sum[1] = lc[1]; sum[2] = lc[2];
     for (i = 0; i < g; ++i) {
         /* group i: the samples s with floor(s g / spp) = i, from ceil(i spp / g) on */
-        n[i] = (float)((((uint64_t)(i + 1u) * spp + g - 1u) / g) -
-                       (((uint64_t)i * spp + g - 1u) / g));
+        n[i] = (float)(((i + 1u) * spp + g - 1u) / g - (i * spp + g - 1u) / g);
         for (k = 0; k < 3; ++k) sum[k] += gs[i][k];
         l[i] = (0.2126f * gs[i][0] + 0.7152f * gs[i][1] + 0.0722f * gs[i][2]) / n[i];
         tot += l[i];
