@@ -740,6 +740,21 @@ static void fovea_spp_curve(void)
     free(gt); free(im); free(err);
 }
 
+/* The benchmark's gaze gi (0: the image centre, 1: near the top-left corner) and every
+   pixel's eccentricity from the camera's field of view (fovpt_ecc_*) into ecc. */
+static fov_gaze bench_gaze(const pt_scene *S, int gi, float *ecc)
+{
+    uint32_t W = S->cam.width, H = S->cam.height, x, y;
+    fov_gaze g;
+    fov_ecc_model em;
+    g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
+    g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
+    fovpt_ecc_init(&em, NULL, S->cam.fov_y_deg, W, H, g);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+    return g;
+}
+
 /* ---- the methods of the default rows, equal-time calibration, CSV rows ------------------ */
 static const char *const names[] = { "uniform4", "uniform1", "layers", "layers_diam", "zones", "whitted1", "selective", "jin" };
 
@@ -1414,16 +1429,10 @@ scenes:
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
             fov_gaze g;
-            fov_ecc_model em;
             fovpt_config c;
             fovpt_stats st;
             double t_u4;
-            uint32_t x, y;
-            g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
-            g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
-            fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
-            for (y = 0; y < H; ++y)
-                for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            g = bench_gaze(&S, gi, ecc);
             c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
             render(&S, &c, g, ref, &st, threads);
             if (g_gt_fovea_spp > gt_spp) fovea_ref(&S, g, g_gt_fovea_spp, ecc, ref, threads);
@@ -1541,16 +1550,10 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
             fov_gaze g;
-            fov_ecc_model em;
             fovpt_config c;
             fovpt_stats st;
             double t_u4;
-            uint32_t x, y;
-            g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
-            g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
-            fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
-            for (y = 0; y < H; ++y)
-                for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            g = bench_gaze(&S, gi, ecc);
             c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
             render(&S, &c, g, ref, &st, threads);
             method_cfg(&c, 0);
@@ -1672,17 +1675,12 @@ int main(int argc, char **argv)
             fov_gaze g;
             fovpt_config base = fovpt_config_default(), c;
             fovpt_stats st;
-            fov_ecc_model em;
             double t_u4 = 0.0, t, t_m[8], f1_u4 = 0.0;
             fovpt_stats st_m[8];
             const char *nm = pt_scene_names[sc], *gz = gi ? "corner" : "centre";
-            uint32_t x, y, m;
+            uint32_t m;
             uint64_t cam_rays[8];
-            g.x = gi ? 0.08f * (float)W : 0.5f * (float)W;
-            g.y = gi ? 0.08f * (float)H : 0.5f * (float)H;
-            fovpt_ecc_init(&em, NULL, S.cam.fov_y_deg, W, H, g);
-            for (y = 0; y < H; ++y)
-                for (x = 0; x < W; ++x) ecc[(size_t)y * W + x] = fovpt_ecc_deg(&em, (float)x + 0.5f, (float)y + 0.5f);
+            g = bench_gaze(&S, gi, ecc);
             c = base; c.spp = gt_spp; c.seed = 777;
             t = render(&S, &c, g, ref_p, &st, threads);
             printf("%-9s %-6s ground truth (path, %u spp): %.0f ms\n", pt_scene_names[sc], gi ? "corner" : "centre", gt_spp, t);

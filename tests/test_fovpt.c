@@ -3108,6 +3108,29 @@ static double ref_gini(const double *l, uint32_t g)
         for (j = 0; j < g; ++j) sum += fabs(l[i] - l[j]);
     return sum / (2.0 * g * g * mu);
 }
+/* One frame of c (UNIFORM unless set) into img through the public API: fovpt_render's
+   result, FOV_ERR_* from a failed init; st (may be NULL) cleared and counted. */
+static fov_result render_cfg(const fovpt_scene *sc, const fovpt_camera *cam, fov_gaze gz, const fovpt_config *c,
+                             float *img, fovpt_stats *st)
+{
+    fovpt_ctx ctx;
+    fovpt_output out;
+    size_t need = 0;
+    void *mem;
+    fov_result e = fovpt_memory_size(c, cam, &need);
+    if (e != FOV_OK) return e;
+    mem = amalloc(need);
+    e = fovpt_init(&ctx, c, sc, cam, gz, mem, need);
+    if (e == FOV_OK) {
+        fovpt_output_init(&out);
+        out.rgb = img;
+        if (st) memset(st, 0, sizeof *st);
+        e = fovpt_render(&ctx, 0, &out, st);
+    }
+    free(mem);
+    return e;
+}
+
 static void test_robust(void)
 {
     uint32_t bad = 0, tried = 0, spp, g, i, trial, k;
@@ -3196,21 +3219,11 @@ static void test_robust(void)
         gz.x = 16.0f; gz.y = 12.0f;
         for (r = -1; r < 4; ++r) {
             fovpt_config c = fovpt_config_default();
-            fovpt_ctx ctx;
-            fovpt_output out;
-            size_t need = 0;
-            void *mem;
             c.spp = r < 0 ? 512u : r >= 2 ? 256u : 64u;
             c.seed = r < 0 ? 99u : 5u;
             c.robust = r == 1 || r == 2 ? 4u : 0u;
-            fovpt_memory_size(&c, &cam, &need);
-            mem = amalloc(need);
-            fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
-            fovpt_output_init(&out);
             if (r >= 0) im[r] = (float *)malloc(W * H * 12u);
-            out.rgb = r < 0 ? ref : im[r];
-            fovpt_render(&ctx, 0, &out, NULL);
-            free(mem);
+            render_cfg(&b.s, &cam, gz, &c, r < 0 ? ref : im[r], NULL);
             if (r >= 0)
                 for (i = 0; i < 3u * W * H; ++i) {
                     double a = im[r][i] < 1.0f ? (double)im[r][i] : 1.0, e = ref[i] < 1.0f ? (double)ref[i] : 1.0;
@@ -3260,19 +3273,9 @@ static void test_robust(void)
         gz.x = 12.0f; gz.y = 8.0f;
         for (r = 0; r < 2; ++r) {
             fovpt_config c = fovpt_config_default();
-            fovpt_ctx ctx;
-            fovpt_output out;
-            size_t need = 0;
-            void *mem;
             im[r] = (float *)malloc(W * H * 12u);
             c.spp = 48u; c.seed = 3u; c.robust = r ? 4u : 0u;
-            fovpt_memory_size(&c, &cam, &need);
-            mem = amalloc(need);
-            fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
-            fovpt_output_init(&out);
-            out.rgb = im[r];
-            fovpt_render(&ctx, 0, &out, NULL);
-            free(mem);
+            render_cfg(&b.s, &cam, gz, &c, im[r], NULL);
         }
         for (i = 0; i < W * H; ++i) {
             edge += im[0][3 * i] > 0.05f && im[0][3 * i] < 6.0f; /* under 30 % covered */
@@ -3302,19 +3305,9 @@ static void test_robust(void)
         gz.x = 12.0f; gz.y = 8.0f;
         for (r = 0; r < 2; ++r) {
             fovpt_config c = fovpt_config_default();
-            fovpt_ctx ctx;
-            fovpt_output out;
-            size_t need = 0;
-            void *mem;
             im[r] = (float *)malloc(W * H * 12u);
             c.mode = FOVPT_MODE_WHITTED; c.spp = 32u; c.seed = 8u; c.robust = r ? 4u : 0u;
-            fovpt_memory_size(&c, &cam, &need);
-            mem = amalloc(need);
-            fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
-            fovpt_output_init(&out);
-            out.rgb = im[r];
-            fovpt_render(&ctx, 0, &out, NULL);
-            free(mem);
+            render_cfg(&b.s, &cam, gz, &c, im[r], NULL);
         }
         for (i = 0; i < 3u * W * H; ++i) diff += memcmp(&im[0][i], &im[1][i], sizeof(float)) != 0;
         free(im[0]); free(im[1]); free(b.mem);
@@ -3336,26 +3329,16 @@ static void test_robust(void)
             cam.target[0] = cam.target[1] = 0.0f; cam.target[2] = -1.0f;
             for (r = 0; r < 2; ++r) {
                 fovpt_config c = fovpt_config_default();
-                fovpt_ctx ctx;
-                fovpt_output out;
                 fovpt_stats st;
-                size_t need = 0;
-                void *mem;
                 float img[8 * 8 * 3];
                 uint32_t nn = 0;
                 c.mode = FOVPT_MODE_WHITTED; c.spp = 24u; c.robust = r ? 4u : 0u;
-                fovpt_memory_size(&c, &cam, &need);
-                mem = amalloc(need);
                 gz.x = 4.0f; gz.y = 4.0f;
-                fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need);
-                fovpt_output_init(&out);
-                out.rgb = img;
                 memset(&st, 0, sizeof st);
-                fovpt_render(&ctx, 0, &out, &st);
+                if (render_cfg(&b.s, &cam, gz, &c, img, &st) != FOV_OK) nn += 2000u;
                 for (i = 0; i < 192u; ++i) nn += !(img[i] >= 0.0f && img[i] <= FLT_MAX);
                 if (r) nan1 = nn + (st.bad_samples == 0 ? 1000u : 0u); /* the scene must produce them */
                 else nan1 += nn;
-                free(mem);
             }
             free(b.mem);
         }
@@ -3384,19 +3367,9 @@ static void test_robust(void)
         gz.x = 2.0f; gz.y = 2.0f;
         for (r = 0; r < 2; ++r) {
             fovpt_config c = fovpt_config_default();
-            fovpt_ctx ctx;
-            fovpt_output out;
-            size_t need = 0;
-            void *mem;
             c.spp = 32u; c.robust = r ? 16u : 0u;
-            fovpt_memory_size(&c, &cam, &need);
-            mem = amalloc(need);
-            if (fovpt_init(&ctx, &c, &b.s, &cam, gz, mem, need) != FOV_OK) { off += 1000u; free(mem); continue; }
-            fovpt_output_init(&out);
-            out.rgb = img;
-            fovpt_render(&ctx, 0, &out, NULL);
+            if (render_cfg(&b.s, &cam, gz, &c, img, NULL) != FOV_OK) { off += 1000u; continue; }
             for (i = 0; i < 48u; ++i) off += !(fabsf(img[i] - (float)FOVPT_MAX_RADIANCE) <= 1e-5f * (float)FOVPT_MAX_RADIANCE);
-            free(mem);
         }
         free(b.mem);
         check(off == 0, "robust: a 1e38 emission seen directly stays at FOVPT_MAX_RADIANCE with robust 16, as without", "%u values off", off);
