@@ -4876,7 +4876,9 @@ FOVPT__PRIV float fovpt__isect(const fovpt__prim *p, const fovpt__ray *r, float 
    Returns the factor applied to t (1 for ordinary directions, bit for bit as before). */
 /* One pass over a direction's components (every ray): bit 1 when the largest magnitude lies
    outside [2^-32, 2^32] or is NaN (the direction is rescaled), bit 2 when a component is not
-   0 but below FLT_MIN in magnitude (fovpt__dir_tiny: the brute-force loop). */
+   0 but below FLT_MIN in magnitude: its reciprocal overflows (|d| <= 2^-128) or the box
+   test's margin on it does, so the slab test could cull a box the ray enters; such rays take
+   the brute-force loop (NUMERICS). Also called on a rescaled direction (bit 2 alone). */
 FOVPT__PRIV int fovpt__dir_class(const float d[3])
 {
     uint32_t k, tiny = 0;
@@ -4888,15 +4890,6 @@ FOVPT__PRIV int fovpt__dir_class(const float d[3])
     }
     m = fov__maxf(fov__absf(d[0]), fov__maxf(fov__absf(d[1]), fov__absf(d[2])));
     return (!(m >= 2.3283064365386963e-10f && m <= 4294967296.0f) ? 1 : 0) | (tiny ? 2 : 0);
-}
-/* 1 when a direction component is not 0 but below FLT_MIN (2^-126) in magnitude: its
-   reciprocal overflows (|d| <= 2^-128) or the box test's margin on it does, so the slab test
-   could cull a box the ray enters. Such rays take the brute-force loop (NUMERICS). */
-FOVPT__PRIV int fovpt__dir_tiny(const float d[3])
-{
-    float a = fov__absf(d[0]), b = fov__absf(d[1]), c = fov__absf(d[2]);
-    return (a < 1.17549435e-38f && a > 0.0f) || (b < 1.17549435e-38f && b > 0.0f) ||
-           (c < 1.17549435e-38f && c > 0.0f);
 }
 /* The floats next to finite x, up and down (for the rescaled t below). */
 FOVPT__PRIV float fovpt__next_up(float x)
@@ -4946,7 +4939,7 @@ FOVPT__PRIV void fovpt__ray_set(fovpt__ray *r, const float org[3], const float d
     uint32_t k;
     for (k = 0; k < 3; ++k) {
         const float d = dir[k];
-        /* |d| <= 2^-128: +-inf; 0 < |d| < 2^-126 rays go to brute force (fovpt__dir_tiny) */
+        /* |d| <= 2^-128: +-inf; 0 < |d| < 2^-126 rays go to brute force (fovpt__dir_class) */
         const float inv = d < 0.0f || d > 0.0f ? 1.0f / d : fovpt__inf();
         r->o[k] = org[k];
         r->d[k] = d;
@@ -5377,7 +5370,7 @@ FOVPT__PRIV int fovpt__hit(const fovpt_scene *s, const float org[3], const float
         float ds[3], sc = fovpt__dir_scale(dir, ds), ts;
         if (!fovpt__ray_init(&r, org, ds)) return 0;
         ts = tmax * sc; /* t along ds */
-        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute || fovpt__dir_tiny(ds), 0, &pos);
+        slot = fovpt__closest(s, &r, tmin * sc, &ts, brute || (fovpt__dir_class(ds) & 2), 0, &pos);
         if (slot != FOVPT_PRIM_NONE && !fovpt__unscale_t(ts, sc, tmin, tmax, &t)) {
             slot = FOVPT_PRIM_NONE; /* no float strictly inside (tmin, tmax) */
             t = tmax;
@@ -5479,7 +5472,8 @@ FOVPT_API int fovpt_occluded(const fovpt_scene *s, const float org[3], const flo
         t = tmax * sc;
         /* any hit inside the scaled interval is one inside (tmin, tmax), t rounded onto the
            nearest float inside as fovpt_intersect reports it (fovpt__unscale_t) */
-        if (fovpt__closest(s, &r, tmin * sc, &t, fovpt__dir_tiny(ds), 1, &pos) != FOVPT_PRIM_NONE) {
+        if (fovpt__closest(s, &r, tmin * sc, &t, fovpt__dir_class(ds) & 2, 1, &pos) !=
+            FOVPT_PRIM_NONE) {
             float tt;
             if (fovpt__unscale_t(t, sc, tmin, tmax, &tt)) return 1;
         }
