@@ -1,4 +1,4 @@
-/* fovpt.h - v0.11.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.12.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -391,7 +391,40 @@ ROBUST PIXEL ESTIMATE (cfg.robust)
    JIN's samples and lattice points that group their samples for clamp_white: the plain
    mean, as with robust 0 (the default: unbiased, every image as before). The guides' var
    stays the plain samples' variance. Measured: bench/README.md (`bench_pt --robust`, the
-   rows <method>_rb).
+   rows <method>_rb). Light through a mirror sphere or quad is better served unbiased by
+   cfg.mirror_nee (below).
+
+NEXT-EVENT ESTIMATION THROUGH MIRRORS (cfg.mirror_nee)
+   Next-event estimation samples a point on a light and connects to it; light that reaches a
+   diffuse point only by way of a mirror (a caustic: the Cornell box's wall lit through its
+   mirror sphere) is found only when a sampled bounce happens to hit the light's small image
+   in the mirror, rarely and with a large value: specks. cfg.mirror_nee = 1 (path mode)
+   connects through the mirrors as well, after Mitchell and Hanrahan 1992, "Illumination from
+   Curved Reflectors" (the reflection point by Fermat's principle, the irradiance from the
+   reflected wavefront's curvature), the one-mirror case of the manifold next-event
+   estimation of Hanika, Droske and Fascione 2015:
+     - at each Lambert or Phong vertex (where next-event estimation runs, below max_depth - 1
+       bounces), one of the scene's mirror spheres and quads (shapes of material
+       FOVPT_MAT_MIRROR; fovpt_scene.mirrors, uniformly) and one light point y (as next-event
+       estimation picks it) give the reflection point p on the mirror (a quad: y mirrored in
+       its plane; a sphere: the one point on the side that x and y see, by the Illinois
+       method); the segments x p and p y are tested for occlusion (two shadow rays) and the
+       sample adds f cos albedo_mirror L_e g cos_y / (pdf_mirror pdf_y), with g the solid
+       angle at x per area at y through the mirror (a plane: 1 / |x - y'|^2; a sphere of
+       radius R at incidence t: 1 / (w_t w_s), w = d1 + d2 + 2 d1 d2 / (R cos t) and d1 + d2
+       + 2 d1 d2 cos t / R, the Coddington equations);
+     - a sampled bounce from such a vertex that reflects off one of these mirrors (a sphere
+       from outside) and then hits a sampleable light does not add that light's emission:
+       the connection counted it (no double counting; every other path as before).
+   Unbiased: the mean of a Lambert point's radiance through a mirror sphere and through a
+   mirror quad equals its irradiance integrated in double over the hemisphere, with a
+   hundredth to a fiftieth of the plain estimator's variance there (tests/test_fovpt_mirror.c).
+   Not covered (plain sampling as before): glass, mirror boxes, planes and mesh triangles,
+   two or more mirror bounces in a row, the inside of a mirror sphere, Whitted mode.
+   Cost: a root solve and up to two shadow rays per diffuse vertex where the scene has a
+   mirror sphere or quad (no cost and every image bit for bit as before where it has none, and
+   with mirror_nee 0, the default). Measured: bench/README.md (`bench_pt --mirror-nee`, the
+   rows <method>_mn).
 
 DOES NOT
    - use a GPU API, start threads, allocate memory, or read or write files;
@@ -600,10 +633,19 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
    Duff et al. 2017 T. Duff, J. Burgess, P. Christensen, C. Hery, A. Kensler, M. Liani,
                     R. Villemin, "Building an Orthonormal Basis, Revisited", Journal of
                     Computer Graphics Techniques 6(1), 2017.
+   Mitchell & Hanrahan 1992  D. Mitchell, P. Hanrahan, "Illumination from Curved
+                    Reflectors", SIGGRAPH 1992. (NEXT-EVENT ESTIMATION THROUGH MIRRORS)
+   Hanika et al. 2015  J. Hanika, M. Droske, L. Fascione, "Manifold Next Event Estimation",
+                    Computer Graphics Forum 34(4) (EGSR), 2015.
 
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.12.0 (2026-12-05) cfg.mirror_nee (NEXT-EVENT ESTIMATION THROUGH MIRRORS): next-event
+                      estimation through mirror spheres and quads (Mitchell and Hanrahan 1992),
+                      unbiased, opt-in; fovpt_scene.mirrors / num_mirrors list them (the scene
+                      memory grows by 4 bytes per mirror). The field follows robust in
+                      fovpt_config (positional initialisers of the later fields move).
    0.11.0 (2026-12-05) cfg.robust (ROBUST PIXEL ESTIMATE): an opt-in adaptive median of means
                       against caustic specks (Buisine et al. 2021), the camera's specular
                       chains kept as a plain mean; off by default (every image as before); at
@@ -739,9 +781,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 11
+#define FOVPT_VERSION_MINOR 12
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.11.0"
+#define FOVPT_VERSION_STRING "0.12.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
@@ -1258,6 +1300,9 @@ typedef struct fovpt_scene {
     fovpt_user_hit_fn user_hit;
     void *user;
     float bounds_lo[3], bounds_hi[3];  /* of the bounded primitives */
+    const uint32_t *mirrors;   /* primitive slots of the mirror spheres and quads (shapes of
+                                  material FOVPT_MAT_MIRROR): cfg.mirror_nee's targets */
+    uint32_t num_mirrors;
 } fovpt_scene;
 
 typedef struct fovpt_hit {
@@ -1413,6 +1458,7 @@ typedef struct fovpt_config {
     uint32_t sampler;       /* fovpt_sampler (SAMPLERS)                          0: random */
     uint32_t robust;        /* ROBUST PIXEL ESTIMATE: group count k, 3 .. FOVPT_ROBUST_MAX;
                                0: the plain mean (unbiased)                       0: off */
+    uint32_t mirror_nee;    /* 1: NEXT-EVENT ESTIMATION THROUGH MIRRORS (path mode)  0: off */
     float acuity_budget;    /* read by fovpt_config_acuity only (ACUITY-DRIVEN CONFIGURATION,
                                samples): 0: each layer's / zone's spp the fewest that keep its
                                eye-filtered noise at UNIFORM's at spp; > 0: the total samples
@@ -3555,6 +3601,8 @@ FOVPT_API fov_result fovpt_config_resolve(const fovpt_config *in, fovpt_config *
                     "config.robust must be 0 (off) or 3 .. FOVPT_ROBUST_MAX groups");
     if (c.robust > (uint32_t)FOVPT_ROBUST_MAX)
         FOVPT__FAIL(lg, FOV_ERR_LIMIT, "config.robust above FOVPT_ROBUST_MAX");
+    if (c.mirror_nee > 1u)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "config.mirror_nee must be 0 or 1");
     /* layers (Axblad 2020) */
     if (c.layers.count == 0) {
         float bd = c.layers.blend_deg;
@@ -4008,8 +4056,8 @@ typedef struct fovpt__node4 {
 #define FOVPT__STACK ((FOVPT__W - 1u) * FOVPT_MAX_BVH_DEPTH + 2u)
 
 typedef struct fovpt__layout {
-    size_t prims, nodes, nodes4, order, lights, cdf, area, pbox, total;
-    uint32_t n_prims, n_bounded, n_tris, n_lights, n_nodes_max, n_slots;
+    size_t prims, nodes, nodes4, order, lights, cdf, area, mirrors, pbox, total;
+    uint32_t n_prims, n_bounded, n_tris, n_lights, n_mirrors, n_nodes_max, n_slots;
 } fovpt__layout;
 /* Leaf slots reserved for n bounded primitives: n rounded up to whole blocks of 4, plus
    FOVPT__SLACK(n) blocks for the padding that keeps leaves of <= 4 inside one block. */
@@ -4053,7 +4101,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
 {
     const fov_logger *lg;
     uint32_t i, k;
-    uint64_t n_tris = 0, n_prims, n_bounded = 0, n_lights = 0, skipped = 0;
+    uint64_t n_tris = 0, n_prims, n_bounded = 0, n_lights = 0, n_mirrors = 0, skipped = 0;
     uint64_t sz;
     if (!d) return FOV_ERR_NULL;
     lg = &d->logger;
@@ -4110,6 +4158,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
         if (s->material >= d->num_materials)
             FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: shapes[].material >= num_materials");
         em = fovpt__emissive(&d->materials[s->material]);
+        if ((s->type == FOVPT_SHAPE_SPHERE || s->type == FOVPT_SHAPE_QUAD) &&
+            d->materials[s->material].type == FOVPT_MAT_MIRROR)
+            ++n_mirrors; /* cfg.mirror_nee's targets */
         if (!fov__finite3(s->p) || !fov__finite3(s->u) || !fov__finite3(s->v) || !fov__finite(s->r))
             FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: a shapes[] value NaN or infinite");
         switch (s->type) {
@@ -4204,6 +4255,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->n_bounded = (uint32_t)n_bounded;
     L->n_tris = (uint32_t)n_tris;
     L->n_lights = (uint32_t)n_lights;
+    L->n_mirrors = (uint32_t)n_mirrors;
     L->n_nodes_max = L->n_bounded ? 2u * L->n_bounded - 1u : 0u;
     L->n_slots = 4u * ((L->n_bounded + 3u) / 4u + FOVPT__SLACK(L->n_bounded));
     if (L->n_slots > (1u << 26)) L->n_slots = 1u << 26; /* a leaf's first slot: 26 bits */
@@ -4234,6 +4286,9 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->area = (size_t)sz;
     sz += 4u * n_lights;
+    sz = (sz + 15u) & ~(uint64_t)15u;
+    L->mirrors = (size_t)sz;
+    sz += 4u * n_mirrors;
     sz = (sz + 15u) & ~(uint64_t)15u;
     L->pbox = (size_t)sz;   /* build data: 9 floats per bounded primitive (box, centroid);
                                after the build: the leaf-ordered triangles (v0, e1, e2) in
@@ -4575,7 +4630,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     fovpt__prim *prims;
     uint32_t i, k, np = 0, nl = 0, nb, skipped = 0;
     unsigned char *base = (unsigned char *)mem;
-    uint32_t *lights;
+    uint32_t *lights, *mirrors, nm = 0;
     float *cdf, *area, total = 0.0f;
     if (!d) return FOV_ERR_NULL;
     if (!s) FOVPT__FAIL(&d->logger, FOV_ERR_NULL, "scene_build: s is NULL");
@@ -4591,6 +4646,7 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
     lights = (uint32_t *)(void *)(base + L.lights);
     cdf = (float *)(void *)(base + L.cdf);
     area = (float *)(void *)(base + L.area);
+    mirrors = (uint32_t *)(void *)(base + L.mirrors);
     /* bounded primitives first (shapes, then triangles), planes last */
     for (i = 0; i < d->num_shapes; ++i) {
         const fovpt_shape *sh = &d->shapes[i];
@@ -4670,6 +4726,14 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         for (i = 0; i < nl; ++i) cdf[i] /= total;
         cdf[nl - 1u] = 1.0f;
     }
+    /* cfg.mirror_nee's targets: the mirror spheres and quads */
+    for (i = 0; i < nb; ++i)
+        if ((prims[i].type == FOVPT_SHAPE_SPHERE || prims[i].type == FOVPT_SHAPE_QUAD) &&
+            d->materials[prims[i].material].type == FOVPT_MAT_MIRROR)
+            mirrors[nm++] = i;
+    FOV_ASSERT(nm == L.n_mirrors);
+    s->mirrors = mirrors;
+    s->num_mirrors = nm;
     s->prims = prims;
     s->order = (const uint32_t *)(void *)(base + L.order);
     s->lights = lights;
@@ -5801,6 +5865,139 @@ FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d
     fovpt__madd3(o, p, e, n);
 }
 
+/* NEXT-EVENT ESTIMATION THROUGH MIRRORS: the point p on the mirror sphere or quad mp where
+   light from y reflects to x, the mirror's unit normal n there (on x's and y's side) and
+   g = dw_x / (cos_y dA_y), the solid angle at x per projected area at y through the mirror.
+   0: no such point (x or y behind the mirror or inside the sphere, p off the quad, grazing).
+   Quad: y mirrored in the plane (y'), p where x y' crosses it, g = 1 / |x - y'|^2. Sphere
+   (centre c, radius R): p = c + R n with n between (x - c) and (y - c), found by the
+   Illinois method on the tangential part of the unit directions to x and y (0 at the
+   reflection point; positive at n = (x - c) / |x - c|, negative at the other end); g from
+   the reflected pencil's two principal widths per unit angle at x (the Coddington equations
+   of a convex mirror, focal lengths R cos t / 2 and R / (2 cos t), t the angle of
+   incidence): w = d1 + d2 + 2 d1 d2 / (R cos t) and d1 + d2 + 2 d1 d2 cos t / R, g =
+   1 / (w w') (a plane mirror, R -> infinity: 1 / (d1 + d2)^2). */
+FOVPT__PRIV int fovpt__mirror_point(const fovpt__prim *mp, const float x[3], const float y[3],
+                                    float p[3], float n[3], float *g)
+{
+    float vx[3], vy[3], d1, d2, ct, wt, ws;
+    uint32_t k, it;
+    if (mp->type == FOVPT_SHAPE_QUAD) {
+        float sx, sy, yr[3], t, q[3], bc[3], c1[3], den, al, be;
+        fovpt__sub3(vx, x, mp->a);
+        fovpt__sub3(vy, y, mp->a);
+        sx = fov__dot(vx, mp->n);
+        sy = fov__dot(vy, mp->n);
+        if (!(sx * sy > 0.0f)) return 0; /* not on one side */
+        fovpt__madd3(yr, y, -2.0f * sy, mp->n);
+        t = sx / (sx + sy);
+        for (k = 0; k < 3; ++k) p[k] = x[k] + t * (yr[k] - x[k]);
+        fovpt__sub3(q, p, mp->a);
+        fov__cross(mp->b, mp->c, bc);
+        den = fov__dot(bc, bc);
+        fov__cross(q, mp->c, c1);
+        al = fov__dot(c1, bc) / den;
+        fov__cross(mp->b, q, c1);
+        be = fov__dot(c1, bc) / den;
+        if (!(al >= 0.0f && al <= 1.0f && be >= 0.0f && be <= 1.0f)) return 0;
+        for (k = 0; k < 3; ++k) n[k] = sx > 0.0f ? mp->n[k] : -mp->n[k];
+        fovpt__sub3(vx, yr, x);
+        d1 = fov__dot(vx, vx);
+        if (!(d1 > 0.0f) || !fov__finite(d1)) return 0;
+        *g = 1.0f / d1;
+        return 1;
+    } else {
+        const float R = mp->r;
+        float ux[3], uy[3], t0[3], dx, dy, s0 = 0.0f, s1 = 1.0f, f0, f1, sm = 0.0f, fm = 1.0f;
+        int side = 0;
+        fovpt__sub3(ux, x, mp->a);
+        fovpt__sub3(uy, y, mp->a);
+        dx = fov__normalize(ux);
+        dy = fov__normalize(uy);
+        if (!(dx > R && dy > R) || fov__dot(ux, uy) < -0.9999f) return 0;
+        fovpt__sub3(t0, uy, ux);
+        f0 = 1.0f; f1 = -1.0f; /* signs at the ends (values: any of these signs) */
+        for (it = 0; it < 48u && s1 - s0 > 1e-7f; ++it) {
+            float wx[3], wy[3], tn, nn;
+            /* regula falsi with the Illinois halving (first step: the midpoint) */
+            sm = it ? (s0 * f1 - s1 * f0) / (f1 - f0) : 0.5f;
+            if (!(sm > s0 && sm < s1)) sm = 0.5f * (s0 + s1);
+            for (k = 0; k < 3; ++k) n[k] = (1.0f - sm) * ux[k] + sm * uy[k];
+            nn = fov__normalize(n);
+            if (!(nn > 0.0f)) return 0;
+            fovpt__madd3(p, mp->a, R, n);
+            fovpt__sub3(wx, x, p);
+            fovpt__sub3(wy, y, p);
+            if (!(fov__normalize(wx) > 0.0f) || !(fov__normalize(wy) > 0.0f)) return 0;
+            tn = fov__dot(t0, n);
+            ct = fov__dot(wx, n);
+            fm = fov__dot(wx, t0) + fov__dot(wy, t0) - tn * (ct + fov__dot(wy, n));
+            if (!fov__finite(fm)) return 0;
+            /* the sines' residual: about 1e-6 rad where the incidence is steep, less than
+               that near grazing, where the sine's slope is cos t */
+            if (fov__absf(fm) <= 1e-6f * fov__len(t0) * fov__maxf(fov__absf(ct), 1e-3f)) break;
+            if (fm > 0.0f) { s0 = sm; f0 = fm; if (side > 0) f1 *= 0.5f; side = 1; }
+                else { s1 = sm; f1 = fm; if (side < 0) f0 *= 0.5f; side = -1; }
+        }
+        fovpt__sub3(vx, x, p);
+        fovpt__sub3(vy, y, p);
+        d1 = fov__normalize(vx);
+        d2 = fov__normalize(vy);
+        ct = fov__dot(vx, n);
+        if (!(ct > 1e-6f && fov__dot(vy, n) > 1e-6f && d1 > 0.0f && d2 > 0.0f)) return 0;
+        wt = d1 + d2 + 2.0f * d1 * d2 / (R * ct);
+        ws = d1 + d2 + 2.0f * d1 * d2 * ct / R;
+        *g = 1.0f / (wt * ws);
+        return fov__finite(*g) && *g > 0.0f;
+    }
+}
+/* whether hit h (a mirror's) is one that fovpt__mirror_point finds: a mirror quad, or a
+   mirror sphere reached from outside (ray direction d) */
+FOVPT__PRIV int fovpt__mirror_target(const fovpt_scene *s, const fovpt_hit *h, const float d[3])
+{
+    const fovpt__prim *p = (const fovpt__prim *)s->prims + h->slot;
+    if (p->type == FOVPT_SHAPE_QUAD) return 1;
+    return p->type == FOVPT_SHAPE_SPHERE && fov__dot(h->n, d) < 0.0f;
+}
+/* cfg.mirror_nee at a Lambert or Phong vertex x (normal nx, outgoing wo): one light point
+   seen through one mirror (picked uniformly), both segments tested for occlusion; adds
+   beta f cos albedo_mirror emission g cos_y / (pdf_mirror pdf_area) to L */
+FOVPT__PRIV void fovpt__mirror_nee(const fovpt_scene *s, const fovpt_material *m, const float x[3],
+                                   const float nx[3], const float wo[3], const float beta[3],
+                                   fovpt_rng *rng, float L[3], fovpt_stats *st)
+{
+    const fovpt__prim *pr = (const fovpt__prim *)s->prims, *mp, *lp;
+    float u = fovpt_rng_next(rng), y[3], ny[3], p[3], n[3], g, wx[3], v[3], fcos[3], pb, d1, dv,
+        cl, w, xo[3], po[3], sv[3];
+    uint32_t j = (uint32_t)(u * (float)s->num_mirrors), li, k;
+    if (j >= s->num_mirrors) j = s->num_mirrors - 1u;
+    mp = pr + s->mirrors[j];
+    li = fovpt__light_sample(s, rng, y, ny);
+    lp = pr + s->lights[li];
+    if (lp == mp || !fovpt__mirror_point(mp, x, y, p, n, &g)) return;
+    fovpt__sub3(wx, p, x);
+    d1 = fov__normalize(wx);
+    fovpt__sub3(v, y, p);
+    dv = fov__len(v);
+    if (!(d1 > 0.0f) || !(dv > 0.0f)) return;
+    cl = fov__absf(fov__dot(ny, v)) / dv;
+    fovpt_bsdf_eval(m, nx, wo, wx, fcos, &pb);
+    if (!(cl > 0.0f) || !(fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f)) return;
+    w = g * cl * s->light_area[li] * (float)s->num_mirrors / fovpt__light_pick_pdf(s, li);
+    if (!fov__finite(w) || !(w > 0.0f)) return;
+    fovpt__offset(x, nx, wx, xo);
+    fovpt__sub3(sv, p, xo);
+    st->shadow_rays++;
+    if (fovpt_occluded(s, xo, sv, 0.0f, 1.0f - 1e-4f)) return;
+    fovpt__offset(p, n, v, po);
+    fovpt__sub3(sv, y, po);
+    st->shadow_rays++;
+    if (fovpt_occluded(s, po, sv, 0.0f, 1.0f - 1e-4f)) return;
+    for (k = 0; k < 3; ++k)
+        L[k] += beta[k] * fcos[k] * s->materials[mp->material].albedo[k] *
+                s->materials[lp->material].emission[k] * w;
+}
+
 /* ---- the path tracer (Axblad 2020, Eq. 2.1, 3.4; one consistent estimator, see doc block) */
 /* Kim et al. 2021, Table 1: attributes of a presample (this library has no textures: the
    texture flags never differ). */
@@ -5828,6 +6025,9 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
     float o[3], d[3], beta[3] = { 1.0f, 1.0f, 1.0f }, prev_pdf = 0.0f,
         prev_p[3] = { 0.0f, 0.0f, 0.0f };
     int prev_delta = 1, nee = !c->no_nee && s->num_lights > 0, sec = 0, chain = 1;
+    /* cfg.mirror_nee: ms 1 after a vertex that sampled the lights through the mirrors, 2 when
+       the path then reflected off one of them (the light it reaches next is counted there) */
+    int mnee = nee && c->mirror_nee && s->num_mirrors > 0, ms = 0, drop;
     uint32_t bounce, k;
     fovpt_hit h;
     fovpt__copy3(o, org);
@@ -5845,6 +6045,11 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
             break;
         }
         m = &s->materials[h.material];
+        drop = ms == 2;
+        ms = ms == 1 && m->type == FOVPT_MAT_MIRROR && h.slot != FOVPT_PRIM_USER &&
+                     fovpt__mirror_target(s, &h, d)
+                 ? 2
+                 : 0;
         if (at && bounce == 0) {
             fovpt__attr_hit(&h, d, &at->poid, at->pn);
             at->pt = h.t;
@@ -5853,7 +6058,9 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         } else if (at && bounce == 1 && sec) {
             fovpt__attr_hit(&h, d, &at->soid, at->sn);
         }
-        if (fovpt__emissive(m)) {
+        if (fovpt__emissive(m) &&
+            !(drop && h.slot != FOVPT_PRIM_USER &&
+              ((const fovpt__prim *)s->prims + h.slot)->light)) {
             float w = 1.0f;
             if (nee && !prev_delta && h.slot != FOVPT_PRIM_USER) {
                 const fovpt__prim *p = (const fovpt__prim *)s->prims + h.slot;
@@ -5906,6 +6113,10 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                         else if (bounce == 1 && sec) at->ssc++;
                     }
                 }
+            }
+            if (mnee && bounce + 1u < c->max_depth) {
+                fovpt__mirror_nee(s, m, h.p, h.n, wo, beta, rng, L, st);
+                ms = 1;
             }
         }
         if (!fovpt_bsdf_sample(m, h.n, wo, rng, wi, wgt, &pdf)) break;
@@ -6186,6 +6397,8 @@ FOVPT_API fov_result fovpt_shade_points(const fovpt_scene *s, const fovpt_config
                     "shade_points: c.robust must be 0 or 3 .. FOVPT_ROBUST_MAX");
     if (c->robust > (uint32_t)FOVPT_ROBUST_MAX)
         FOVPT__FAIL(&c->logger, FOV_ERR_LIMIT, "shade_points: c.robust above FOVPT_ROBUST_MAX");
+    if (c->mirror_nee > 1u)
+        FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG, "shade_points: c.mirror_nee must be 0 or 1");
     if (c->max_depth > FOVPT_MAX_BOUNCES ||
         (c->mode == FOVPT_MODE_WHITTED && c->max_depth > FOVPT_MAX_WHITTED))
         FOVPT__FAIL(&c->logger, FOV_ERR_INVALID_ARG,

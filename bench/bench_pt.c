@@ -5,12 +5,13 @@
                             Whitted; every method and budget; about 10-15 minutes here)
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
-                    [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--ref-floor]
+                    [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--mirror-nee]
+                    [--ref-floor]
                     [--scene N] [--gt-fovea-spp N]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
-                    box's fovea error falls with spp, see README; --denoise, --robust: only
-                    the _dn / _rb rows, see below; --ref-floor: only pt_ref_floor.csv, the
+                    box's fovea error falls with spp, see README; --denoise, --robust,
+                    --mirror-nee: only the _dn / _rb / _mn rows, see below; --ref-floor: only pt_ref_floor.csv, the
                     ground truth's own noise)
 
    Columns (the first eleven are the issue's, in order):
@@ -29,6 +30,10 @@
      eqtime_uniform4 (each its own pilot; uniform4's time is the plain one), with
      pt_robust.csv beside the CSV (scene, method, gaze, budget, psnr_f1..f4, psnr_all, flip,
      flip_f1, time_ms, spp_fovea: every _rb row with its plain twin of the same run).
+     <method>_mn: the same rows with cfg.mirror_nee = 1 (fovpt.h NEXT-EVENT ESTIMATION THROUGH
+     MIRRORS) instead, pt_mirror_nee.csv beside (--mirror-nee; its ground truth is rendered
+     with cfg.mirror_nee too: the same mean, less noise; the plain twins and uniform4's time
+     are measured against it).
    - budget: which budget the row was given.
        default          the method's own settings (the rows above).
        eqrays_<m>       method uniform_eq: UNIFORM at the spp whose camera rays match method
@@ -123,6 +128,7 @@ static void *worker(void *a)
 /* renders with cfg; threads > 1 only for ground truths (UNIFORM: no refine phase) */
 static int g_dn;
 static uint32_t g_rb;            /* --robust rows: cfg.robust of the timed renders (0: off) */
+static uint32_t g_mn;            /* --mirror-nee rows: cfg.mirror_nee of every render (0: off) */
 static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st);
 static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st, int threads)
 {
@@ -133,6 +139,7 @@ static double render(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rg
     fovpt_config cr;
     double t0, t;
     if (g_rb && threads <= 1) { cr = *cfg; cr.robust = g_rb; cfg = &cr; }
+    if (g_mn) { cr = *cfg; cr.mirror_nee = 1u; cfg = &cr; }
     if (g_dn && threads <= 1) return render_dn(S, cfg, g, rgb, st); /* --denoise rows */
     memset(st, 0, sizeof *st);
     if (fovpt_memory_size(cfg, &S->cam, &n) != FOV_OK) return -1.0;
@@ -1335,7 +1342,7 @@ static void fovea_ref(pt_scene *S, fov_gaze g, uint32_t spp, const float *ecc, f
     for (y = 0; y < H; ++y)
         for (x = 0; x < W; ++x)
             if (ecc[(size_t)y * W + x] < 3.3f) { if (y < ya) ya = y; yb = y + 1u; }
-    c.spp = spp; c.seed = 779;
+    c.spp = spp; c.seed = 779; c.mirror_nee = g_mn;
     if (threads < 1) threads = 1;
     if (threads > 16) threads = 16;
     if (ya >= yb || fovpt_memory_size(&c, &S->cam, &n) != FOV_OK) { free(img); return; }
@@ -1422,10 +1429,11 @@ scenes:
     for (sc = 0; sc < PT_SCENE_NUM; ++sc) {
         pt_scene S;
         size_t np = (size_t)W * H;
-        float *ref = (float *)malloc(np * 12u), *img = (float *)malloc(np * 12u), *ecc = (float *)malloc(np * 4u);
+        float *ref, *img, *ecc;
         if (quick && sc != PT_SCENE_CORNELL && sc != PT_SCENE_CUBES) continue;
         if (g_dn_scene >= 0 && sc != g_dn_scene) continue;
         if (pt_scene_make(&S, sc) != 0) continue;
+        ref = (float *)malloc(np * 12u); img = (float *)malloc(np * 12u); ecc = (float *)malloc(np * 4u);
         S.cam.width = W; S.cam.height = H;
         for (gi = 0; gi < 2; ++gi) {
             fov_gaze g;
@@ -1475,9 +1483,16 @@ static void rb_side_header(FILE *side)
     fprintf(side, "scene,method,gaze,budget,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,flip,flip_f1,time_ms,spp_fovea\n");
 }
 /* the _rb rows of one scene and gaze; t_u4 = uniform4's (plain) time in the same run */
+static int g_variant; /* rb_rows' variant: 0 cfg.robust (_rb), 1 cfg.mirror_nee (_mn) */
+static void variant_set(int on)
+{
+    if (g_variant) g_mn = on ? 1u : 0u;
+    else g_rb = on ? RB_GROUPS : 0u;
+}
 static void rb_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc,
                     double t_u4)
 {
+    const char *suf = g_variant ? "_mn" : "_rb";
     uint32_t W = S->cam.width, H = S->cam.height;
     size_t np = (size_t)W * H;
     float *img = (float *)malloc(np * 12u);
@@ -1491,12 +1506,12 @@ static void rb_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
             double ps[5], fl, fl1, t;
             char mname[64];
             method_cfg(&c, m);
-            g_rb = d ? RB_GROUPS : 0u;
+            variant_set(d);
             t = render(S, &c, g, img, &st, 1);
-            g_rb = 0;
+            variant_set(0);
             psnr_fields(img, ref, ecc, np, ps);
             flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
-            snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_rb" : "");
+            snprintf(mname, sizeof mname, "%s%s", names[m], d ? suf : "");
             if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
             fprintf(side, "%s,%s,%s,default,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1], ps[2], ps[3],
                     ps[4], fl, fl1, t, fovea_spp(&c));
@@ -1512,12 +1527,12 @@ static void rb_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
             for (d = 0; d < 2; ++d) {
                 double ps[5], fl, fl1, t;
                 char mname[64];
-                g_rb = d ? RB_GROUPS : 0u;
+                variant_set(d);
                 t = eqtime_render(S, m, fov_only, t_u4, t_m[m][d], &st_m[m][d], g, img, &c, &st);
-                g_rb = 0;
+                variant_set(0);
                 psnr_fields(img, ref, ecc, np, ps);
                 flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
-                snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_rb" : "");
+                snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? suf : "");
                 if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
                 fprintf(side, "%s,%s,%s,eqtime_uniform4,%.2f,%.2f,%.2f,%.2f,%.2f,%.4f,%.4f,%.2f,%u\n", nm, mname, gz, ps[0], ps[1],
                         ps[2], ps[3], ps[4], fl, fl1, t, fovea_spp(&c));
@@ -1535,7 +1550,8 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
     const char *sl = strrchr(out_path, '/');
     FILE *csv = fopen(out_path, "w"), *side;
     int sc, gi;
-    snprintf(spath, sizeof spath, "%.*spt_robust.csv", sl ? (int)(sl - out_path + 1) : 0, out_path);
+    snprintf(spath, sizeof spath, "%.*s%s", sl ? (int)(sl - out_path + 1) : 0, out_path,
+             g_variant ? "pt_mirror_nee.csv" : "pt_robust.csv");
     side = fopen(spath, "w");
     if (!csv || !side) { fprintf(stderr, "cannot write %s / %s\n", out_path, spath); return; }
     fprintf(csv, "scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,mode,rays,camera_rays,speedup,budget_time_ms,spp_fovea\n");
@@ -1555,7 +1571,10 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
             double t_u4;
             g = bench_gaze(&S, gi, ecc);
             c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
+            g_mn = g_variant ? 1u : 0u; /* --mirror-nee: the ground truth with it (the same mean, less noise) */
             render(&S, &c, g, ref, &st, threads);
+            if (g_gt_fovea_spp > gt_spp) fovea_ref(&S, g, g_gt_fovea_spp, ecc, ref, threads);
+            g_mn = 0;
             method_cfg(&c, 0);
             t_u4 = render(&S, &c, g, img, &st, 1);
             printf("%s %s (uniform4 %.1f ms):\n", pt_scene_names[sc], gi ? "corner" : "centre", t_u4);
@@ -1586,11 +1605,14 @@ static void usage(FILE *f)
           "                      and pt_ref_floor.csv (the reference's own noise per field)\n"
           "  --robust            only the cfg.robust (_rb) rows and their plain twins: FILE\n"
           "                      (default bench/results/pt_rb.csv), pt_robust.csv beside it\n"
+          "  --mirror-nee        only the cfg.mirror_nee (_mn) rows and their plain twins (as --robust's),\n"
+          "                      the ground truth with cfg.mirror_nee: FILE (default\n"
+          "                      bench/results/pt_mn.csv), pt_mirror_nee.csv beside it\n"
           "  --ref-floor         only pt_ref_floor.csv beside FILE (default bench/results/)\n"
-          "  --scene N           with --denoise / --robust / --ref-floor: scene N only (0 cornell .. 4 interior)\n"
+          "  --scene N           with --denoise / --robust / --mirror-nee / --ref-floor: scene N only (0 cornell .. 4 interior)\n"
           "  --w W, --h H        image size (default 320 x 240)\n"
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
-          "  --gt-fovea-spp N    with --denoise / --ref-floor: the fovea's (e < 3.3 degrees)\n"
+          "  --gt-fovea-spp N    with --denoise / --robust / --mirror-nee / --ref-floor: the fovea's (e < 3.3 degrees)\n"
           "                      ground truth at N spp (default: --gt-spp)\n"
           "  --threads N         render threads (default 2)\n"
           "  --out FILE          CSV (default bench/results/pt.csv)\n"
@@ -1614,6 +1636,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--lp")) only_lp = 1;
         else if (!strcmp(argv[i], "--denoise")) only_dn = 1;
         else if (!strcmp(argv[i], "--robust")) only_rb = 1;
+        else if (!strcmp(argv[i], "--mirror-nee")) { only_rb = 1; g_variant = 1; }
         else if (!strcmp(argv[i], "--ref-floor")) only_floor = 1;
         else if (!strcmp(argv[i], "--scene") && i + 1 < argc) g_dn_scene = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--fovea-spp")) { fovea_spp_curve(); return 0; }
@@ -1629,7 +1652,7 @@ int main(int argc, char **argv)
     if (quick) { W = 96; H = 72; gt_spp = 32; }
     if (full) { W = 640; H = 480; gt_spp = 1024; }
     if (only_rb) {
-        if (!strcmp(out_path, "bench/results/pt.csv")) out_path = "bench/results/pt_rb.csv";
+        if (!strcmp(out_path, "bench/results/pt.csv")) out_path = g_variant ? "bench/results/pt_mn.csv" : "bench/results/pt_rb.csv";
         robust_only(out_path, W, H, gt_spp, threads);
         printf("(%.0f s)\n", (now_ms() - t_start) * 1e-3);
         return 0;

@@ -12,7 +12,7 @@
 #   unit tests (three_builds NAME: NAME, NAME_nolibm, NAME_sanitizers):
 #     unit_fovsdf scene_fovsdf accel_fovsdf contract_fovsdf heads_fovsdf props_fovsdf naive_sdf,
 #     acuity_fovsdf, prune_fovsdf,
-#     fov_cells_sanitizers, unit_fovpt acuity_fovpt points_fovpt denoise_fovpt unit_fovpt_nosimd unit_fovpt_w4 unit_fovpt_avx2, unit_fovlp taa_fovlp
+#     fov_cells_sanitizers, unit_fovpt acuity_fovpt points_fovpt denoise_fovpt mirror_fovpt unit_fovpt_nosimd unit_fovpt_w4 unit_fovpt_avx2, unit_fovlp taa_fovlp
 #     numerics_fovlp, srgb8_fovlp acuity_fovlp, api_stress, versions, stats, camera, eye, errors
 #     errors_nostrings,
 #     style shared refs, unit_metrics
@@ -234,6 +234,7 @@ three_builds unit_fovpt tests/test_fovpt.c
 three_builds acuity_fovpt tests/test_fovpt_acuity.c link
 three_builds points_fovpt tests/test_fovpt_points.c link
 three_builds denoise_fovpt tests/test_fovpt_denoise.c
+three_builds mirror_fovpt tests/test_fovpt_mirror.c
 three_builds sampler_fovpt tests/test_fovpt_sampler.c link
 # the BVH traversal without SSE (the scalar four-box test that wasm32 and Cortex-M4 run)
 if build_test test_fovpt_nosimd tests/test_fovpt.c -std=c99 -O2 $WARN -DFOVPT_NO_SIMD -DFOVPT__BITREV=0 -I. -Itests/common -lm; then

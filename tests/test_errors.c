@@ -371,6 +371,8 @@ static const fcase pt_cases[] = {
     {"robust_2", FOV_ERR_INVALID_ARG, "config.robust"},
     {"robust_over_cap", FOV_ERR_LIMIT, "config.robust"},
     {"shade_points_robust_1", FOV_ERR_INVALID_ARG, "c.robust"},
+    {"mirror_nee_2", FOV_ERR_INVALID_ARG, "config.mirror_nee"},
+    {"shade_points_mirror_nee_3", FOV_ERR_INVALID_ARG, "c.mirror_nee"},
 };
 static fov_result pt_run(int k, const fov_logger *lg)
 {
@@ -426,6 +428,7 @@ static fov_result pt_run(int k, const fov_logger *lg)
     case 12: return fovpt_scene_build(&scene, &d, NULL, 4096);
     case 21: cfg.robust = 2; return fovpt_config_resolve(&cfg, &out);
     case 22: cfg.robust = FOVPT_ROBUST_MAX + 1u; return fovpt_config_resolve(&cfg, &out);
+    case 24: cfg.mirror_nee = 2; return fovpt_config_resolve(&cfg, &out);
     default: break;
     }
     d.logger = none;
@@ -441,6 +444,11 @@ static fov_result pt_run(int k, const fov_logger *lg)
     case 23: {
         float xy[2] = {4.0f, 4.0f};
         cfg.robust = 1;
+        return fovpt_shade_points(&scene, &cfg, &cam, 1, xy, 0, 0, 0, 1, 0.0f, rgb, NULL, NULL);
+    }
+    case 25: {
+        float xy[2] = {4.0f, 4.0f};
+        cfg.mirror_nee = 3;
         return fovpt_shade_points(&scene, &cfg, &cam, 1, xy, 0, 0, 0, 1, 0.0f, rgb, NULL, NULL);
     }
     default: break;
