@@ -5877,10 +5877,18 @@ FOVPT__PRIV void fovpt__offset(const float p[3], const float n[3], const float d
    of a convex mirror, focal lengths R cos t / 2 and R / (2 cos t), t the angle of
    incidence): w = d1 + d2 + 2 d1 d2 / (R cos t) and d1 + d2 + 2 d1 d2 cos t / R, g =
    1 / (w w') (a plane mirror, R -> infinity: 1 / (d1 + d2)^2). */
+FOVPT__PRIV float fovpt__mirror_g(float R, float d1, float d2, float ct)
+{
+    float wt, ws;
+    if (!(R > 0.0f)) return 1.0f / ((d1 + d2) * (d1 + d2)); /* a plane */
+    wt = d1 + d2 + 2.0f * d1 * d2 / (R * ct);
+    ws = d1 + d2 + 2.0f * d1 * d2 * ct / R;
+    return 1.0f / (wt * ws);
+}
 FOVPT__PRIV int fovpt__mirror_point(const fovpt__prim *mp, const float x[3], const float y[3],
                                     float p[3], float n[3], float *g)
 {
-    float vx[3], vy[3], d1, d2, ct, wt, ws;
+    float vx[3], vy[3], d1, d2, ct;
     uint32_t k, it;
     if (mp->type == FOVPT_SHAPE_QUAD) {
         float sx, sy, yr[3], t, q[3], bc[3], c1[3], den, al, be;
@@ -5945,9 +5953,7 @@ FOVPT__PRIV int fovpt__mirror_point(const fovpt__prim *mp, const float x[3], con
         d2 = fov__normalize(vy);
         ct = fov__dot(vx, n);
         if (!(ct > 1e-6f && fov__dot(vy, n) > 1e-6f && d1 > 0.0f && d2 > 0.0f)) return 0;
-        wt = d1 + d2 + 2.0f * d1 * d2 / (R * ct);
-        ws = d1 + d2 + 2.0f * d1 * d2 * ct / R;
-        *g = 1.0f / (wt * ws);
+        *g = fovpt__mirror_g(R, d1, d2, ct);
         return fov__finite(*g) && *g > 0.0f;
     }
 }
@@ -5983,8 +5989,10 @@ FOVPT__PRIV void fovpt__mirror_nee(const fovpt_scene *s, const fovpt_material *m
     cl = fov__absf(fov__dot(ny, v)) / dv;
     fovpt_bsdf_eval(m, nx, wo, wx, fcos, &pb);
     if (!(cl > 0.0f) || !(fcos[0] > 0.0f || fcos[1] > 0.0f || fcos[2] > 0.0f)) return;
+    /* 1 / the solid-angle pdf at x, times the power heuristic against the BSDF's pdf pb */
     w = g * cl * s->light_area[li] * (float)s->num_mirrors / fovpt__light_pick_pdf(s, li);
     if (!fov__finite(w) || !(w > 0.0f)) return;
+    w = w / (1.0f + pb * pb * w * w);
     fovpt__offset(x, nx, wx, xo);
     fovpt__sub3(sv, p, xo);
     st->shadow_rays++;
@@ -6028,6 +6036,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
     /* cfg.mirror_nee: ms 1 after a vertex that sampled the lights through the mirrors, 2 when
        the path then reflected off one of them (the light it reaches next is counted there) */
     int mnee = nee && c->mirror_nee && s->num_mirrors > 0, ms = 0, drop;
+    float m_pdf = 0.0f, m_d1 = 0.0f, m_ct = 0.0f, m_r = 0.0f; /* that bounce: pdf, mirror hit */
     uint32_t bounce, k;
     fovpt_hit h;
     fovpt__copy3(o, org);
@@ -6050,6 +6059,13 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
                      fovpt__mirror_target(s, &h, d)
                  ? 2
                  : 0;
+        if (ms == 2) { /* what the light's weight needs (the sampled bounce's pdf is still x's) */
+            const fovpt__prim *p = (const fovpt__prim *)s->prims + h.slot;
+            m_pdf = prev_pdf;
+            m_d1 = h.t;
+            m_ct = fov__absf(fov__dot(d, h.n));
+            m_r = p->type == FOVPT_SHAPE_SPHERE ? p->r : 0.0f;
+        }
         if (at && bounce == 0) {
             fovpt__attr_hit(&h, d, &at->poid, at->pn);
             at->pt = h.t;
@@ -6058,11 +6074,20 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         } else if (at && bounce == 1 && sec) {
             fovpt__attr_hit(&h, d, &at->soid, at->sn);
         }
-        if (fovpt__emissive(m) &&
-            !(drop && h.slot != FOVPT_PRIM_USER &&
-              ((const fovpt__prim *)s->prims + h.slot)->light)) {
+        if (fovpt__emissive(m)) {
             float w = 1.0f;
-            if (nee && !prev_delta && h.slot != FOVPT_PRIM_USER) {
+            if (drop && h.slot != FOVPT_PRIM_USER &&
+                ((const fovpt__prim *)s->prims + h.slot)->light) {
+                /* x -> mirror -> this light, which cfg.mirror_nee samples too: the power
+                   heuristic against its pdf at x, (1 / M) pick / (area g cos_y) */
+                const fovpt__prim *p = (const fovpt__prim *)s->prims + h.slot;
+                float cy = fov__absf(fov__dot(d, h.n)),
+                      pm = fovpt__light_pick_pdf(s, p->light - 1u) /
+                           ((float)s->num_mirrors * s->light_area[p->light - 1u] *
+                            fovpt__mirror_g(m_r, m_d1, h.t, m_ct) * cy);
+                w = fov__finite(pm) ? m_pdf * m_pdf / (m_pdf * m_pdf + pm * pm) : 0.0f;
+                if (!fov__finite(w)) w = 0.0f;
+            } else if (nee && !prev_delta && h.slot != FOVPT_PRIM_USER) {
                 const fovpt__prim *p = (const fovpt__prim *)s->prims + h.slot;
                 if (p->light) { /* power heuristic against the light-sampling pdf */
                     float v[3], d2, cl, pl;
