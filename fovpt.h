@@ -409,16 +409,19 @@ NEXT-EVENT ESTIMATION THROUGH MIRRORS (cfg.mirror_nee)
        estimation picks it) give the reflection point p on the mirror (a quad: y mirrored in
        its plane; a sphere: the one point on the side that x and y see, by the Illinois
        method); the segments x p and p y are tested for occlusion (two shadow rays) and the
-       sample adds f cos albedo_mirror L_e g cos_y / (pdf_mirror pdf_y), with g the solid
-       angle at x per area at y through the mirror (a plane: 1 / |x - y'|^2; a sphere of
-       radius R at incidence t: 1 / (w_t w_s), w = d1 + d2 + 2 d1 d2 / (R cos t) and d1 + d2
-       + 2 d1 d2 cos t / R, the Coddington equations);
-     - a sampled bounce from such a vertex that reflects off one of these mirrors (a sphere
-       from outside) and then hits a sampleable light does not add that light's emission:
-       the connection counted it (no double counting; every other path as before).
+       sample adds f cos albedo_mirror L_e / p_c, p_c = pdf_mirror pdf_y / (g cos_y) its
+       solid-angle pdf at x, with g the solid angle at x per area at y through the mirror (a
+       plane: 1 / |x - y'|^2; a sphere of radius R at incidence t: 1 / (w_t w_s), w = d1 + d2
+       + 2 d1 d2 / (R cos t) and d1 + d2 + 2 d1 d2 cos t / R, the Coddington equations);
+     - the same path found by the vertex's sampled bounce (off one of these mirrors, a sphere
+       from outside, then a sampleable light) and the connection are weighed by the power
+       heuristic of their pdfs at x (Veach 1997), as next-event estimation and the bounce
+       are for a light seen directly: a small light's image takes the connection, a large
+       one the bounce (every other path as before).
    Unbiased: the mean of a Lambert point's radiance through a mirror sphere and through a
-   mirror quad equals its irradiance integrated in double over the hemisphere, with a
-   hundredth to a fiftieth of the plain estimator's variance there (tests/test_fovpt_mirror.c).
+   mirror quad, lit by a small and by a large light, equals its irradiance integrated in
+   double over the hemisphere; with the small light at a hundredth to a fiftieth of the plain
+   estimator's variance, with the large one below it (tests/test_fovpt_mirror.c).
    Not covered (plain sampling as before): glass, mirror boxes, planes and mesh triangles,
    two or more mirror bounces in a row, the inside of a mirror sphere, Whitted mode.
    Cost: a root solve and up to two shadow rays per diffuse vertex where the scene has a
