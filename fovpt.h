@@ -5076,7 +5076,9 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
                shapes to fovpt__isect and drops the triangles, so a scene whose bounded
                primitives are all triangles needs no such lanes */
             dm = shapes ? ~FOVPT__M_BITS(okd) & lanes : 0u;
-            if (hm) {
+            {   /* the rest of the test whatever hm is: u passes in most blocks a ray reaches
+                   (87 % on the terrain's bounce rays), and the branch it would take is the
+                   hard one to predict (measured 1.02-1.05x faster without it) */
                 qx = FOVPT__V_SUB(FOVPT__V_MUL(sy, e1z), FOVPT__V_MUL(sz, e1y));
                 qy = FOVPT__V_SUB(FOVPT__V_MUL(sz, e1x), FOVPT__V_MUL(sx, e1z));
                 qz = FOVPT__V_SUB(FOVPT__V_MUL(sx, e1y), FOVPT__V_MUL(sy, e1x));
@@ -5151,12 +5153,13 @@ FOVPT__PRIV int fovpt__leaf(const fovpt_scene *s, const fovpt__ray *r, const fov
    children's boxes bound it): the W children's slab tests at once (SSE / AVX / NEON /
    SIMD128, or the same arithmetic per child), then a single hit child is visited directly
    (the lowest set bit of the hit mask), of two the nearer (by entry distance) is visited and
-   the other pushed, of three or more all are pushed, sorted in place farthest first, and the
-   nearest is popped and visited; every stack entry keeps its entry distance. A pop skips
-   entries that start beyond the closest hit found meanwhile (no
-   second box test: tn <= min(box exit, tmax) widened by the rounding margin at the push, so
-   tn <= new tmax, widened alike, is the same test). Leaf triangles are intersected inline
-   from a leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
+   the other pushed, of three the two farther are pushed (farthest first, by a sorting
+   network) and the nearest visited, of four or more all are pushed, sorted in place farthest
+   first, and the nearest is popped and visited; every stack entry keeps its entry distance.
+   A pop skips entries that start beyond the closest hit found meanwhile (no second box test:
+   tn <= min(box exit, tmax) widened by the rounding margin at the push, so tn <= new tmax,
+   widened alike, is the same test). Leaf triangles are intersected inline from a
+   leaf-ordered copy (v0, e1, e2), the other shapes through fovpt__isect; the planes
    (unbounded) are tested after the bounded primitives. */
 FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, float tmin,
                                     float *tmax, int brute, int any, uint32_t *pos)
@@ -5227,8 +5230,9 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     /* the W children's slab tests (the slab test's arithmetic, the same
                        operand order: max(a, t) = a > t ? a : t), then the hit children
                        nearest first: one is visited; of two the nearer is visited and the
-                       other pushed; three or more are all pushed with their entry
-                       distances, sorted farthest first, and the nearest popped */
+                       other pushed; of three the two farther are pushed, farthest first,
+                       and the nearest visited; four or more are all pushed with their
+                       entry distances, sorted farthest first, and the nearest popped */
                     const fovpt__node4 *nd = &n4[ref];
                     float tv[FOVPT_BVH_WIDTH];
                     uint32_t hm, j;
@@ -5302,7 +5306,20 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                             ref = nd->child[j0];
                             continue;
                         }
-                        /* three or more: all pushed, sorted farthest first (insertion by
+                        if (!(hm & (hm - 1u))) {
+                            /* three: a sorting network on the lane numbers (compare and
+                               swap by a mask, no branch: the order of three entry
+                               distances is what a branch predictor misses), farthest first */
+                            uint32_t j2 = fovpt__ctz(hm), x;
+                            x = (j0 ^ j1) & (0u - (uint32_t)(tv[j0] < tv[j1])); j0 ^= x; j1 ^= x;
+                            x = (j1 ^ j2) & (0u - (uint32_t)(tv[j1] < tv[j2])); j1 ^= x; j2 ^= x;
+                            x = (j0 ^ j1) & (0u - (uint32_t)(tv[j0] < tv[j1])); j0 ^= x; j1 ^= x;
+                            stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0];
+                            stack[sp] = nd->child[j1]; stack_t[sp++] = tv[j1];
+                            ref = nd->child[j2];
+                            continue;
+                        }
+                        /* four or more: all pushed, sorted farthest first (insertion by
                            entry distance), the nearest popped and visited */
                         base = sp;
                         stack[sp] = nd->child[j0]; stack_t[sp++] = tv[j0];
