@@ -649,6 +649,10 @@ RECENT REVISION HISTORY
                       unbiased, opt-in; fovpt_scene.mirrors / num_mirrors list them (the scene
                       memory grows by 4 bytes per mirror). The field follows robust in
                       fovpt_config (positional initialisers of the later fields move).
+                      Traversal: the SIMD leaf runs the whole triangle test (no early exit
+                      on u), three hit children are ordered by a branch-free sorting
+                      network, AVX leaves broadcast the ray from its record: 3-5 % fewer
+                      instructions per terrain ray (AVX2), same hits, images identical.
    0.11.0 (2026-12-05) cfg.robust (ROBUST PIXEL ESTIMATE): an opt-in adaptive median of means
                       against caustic specks (Buisine et al. 2021), the camera's specular
                       chains kept as a plain mean; off by default (every image as before); at
