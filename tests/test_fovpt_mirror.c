@@ -182,43 +182,31 @@ static void mirror_case(const char *name, world *w, const double x[3], const flo
     fovcheck_info("mirror %s: E %.4f (through the mirror %.4f); variance on %.4g off %.4g", name, E[1], Em[1], von[1], voff[1]);
 }
 
-static void test_through_sphere(int large)
+/* a floor point lit through a mirror sphere (quad 0) or a mirror quad (quad 1), by the small or
+   the large light */
+static void test_through_mirror(int quad, int large)
 {
     world w;
-    const double x[3] = { 0.8, 0.0, 0.2 }, c[3] = { 0.0, 1.2, 0.0 };
-    const float o[3] = { 0.8f, 2.0f, 2.2f }, d[3] = { 0.0f, -1.0f, -1.0f }, pt[3] = { 0, 0, 0 }, up[3] = { 0, 1, 0 };
-    float lc[3], lu[3], lv[3];
-    set_light(large, lc, lu, lv);
-    memset(&w, 0, sizeof w);
-    mats(&w);
-    fovpt_shape_plane(&w.shapes[0], pt, up, 0);
-    fovpt_shape_sphere(&w.shapes[1], 0.0f, 1.2f, 0.0f, 1.0f, 1);
-    fovpt_shape_quad(&w.shapes[2], lc, lu, lv, 2);
-    w.ns = 3;
-    if (!check(build(&w), "mirror_sphere_scene_builds", "fovpt_scene_build failed")) return;
-    check(w.sc.num_mirrors == 1u && ((const fovpt__prim *)w.sc.prims)[w.sc.mirrors[0]].type == FOVPT_SHAPE_SPHERE,
-          "mirror_sphere_scene_lists_the_sphere", "num_mirrors %u", w.sc.num_mirrors);
-    mirror_case(large ? "sphere_large_light" : "sphere", &w, x, o, d, c, 1.0, NULL, NULL, NULL, large);
-    free(w.mem);
-}
-static void test_through_quad(int large)
-{
-    world w;
-    const double x[3] = { 0.8, 0.0, 0.2 }, mc[3] = { -1.0, 0.0, -1.0 }, mu[3] = { 3.5, 0.0, 0.0 }, mv[3] = { 0.0, 2.0, 0.0 };
+    const double x[3] = { 0.8, 0.0, 0.2 }, c[3] = { 0.0, 1.2, 0.0 }, mc[3] = { -1.0, 0.0, -1.0 }, mu[3] = { 3.5, 0.0, 0.0 },
+                 mv[3] = { 0.0, 2.0, 0.0 };
     const float o[3] = { 0.8f, 2.0f, 2.2f }, d[3] = { 0.0f, -1.0f, -1.0f }, pt[3] = { 0, 0, 0 }, up[3] = { 0, 1, 0 },
                 fc[3] = { -1.0f, 0.0f, -1.0f }, fu[3] = { 3.5f, 0.0f, 0.0f }, fv[3] = { 0.0f, 2.0f, 0.0f };
+    const char *nm = quad ? (large ? "quad_large_light" : "quad") : (large ? "sphere_large_light" : "sphere");
     float lc[3], lu[3], lv[3];
     set_light(large, lc, lu, lv);
     memset(&w, 0, sizeof w);
     mats(&w);
     fovpt_shape_plane(&w.shapes[0], pt, up, 0);
-    fovpt_shape_quad(&w.shapes[1], fc, fu, fv, 1);
+    if (quad) fovpt_shape_quad(&w.shapes[1], fc, fu, fv, 1);
+    else fovpt_shape_sphere(&w.shapes[1], 0.0f, 1.2f, 0.0f, 1.0f, 1);
     fovpt_shape_quad(&w.shapes[2], lc, lu, lv, 2);
     w.ns = 3;
-    if (!check(build(&w), "mirror_quad_scene_builds", "fovpt_scene_build failed")) return;
-    check(w.sc.num_mirrors == 1u && ((const fovpt__prim *)w.sc.prims)[w.sc.mirrors[0]].type == FOVPT_SHAPE_QUAD,
-          "mirror_quad_scene_lists_the_quad", "num_mirrors %u", w.sc.num_mirrors);
-    mirror_case(large ? "quad_large_light" : "quad", &w, x, o, d, NULL, 0.0, mc, mu, mv, large);
+    if (!check(build(&w), N("mirror_%s_scene_builds", nm), "fovpt_scene_build failed")) return;
+    check(w.sc.num_mirrors == 1u &&
+              ((const fovpt__prim *)w.sc.prims)[w.sc.mirrors[0]].type == (quad ? FOVPT_SHAPE_QUAD : FOVPT_SHAPE_SPHERE),
+          N("mirror_%s_scene_lists_the_mirror", nm), "num_mirrors %u", w.sc.num_mirrors);
+    if (quad) mirror_case(nm, &w, x, o, d, NULL, 0.0, mc, mu, mv, large);
+    else mirror_case(nm, &w, x, o, d, c, 1.0, NULL, NULL, NULL, large);
     free(w.mem);
 }
 
@@ -366,10 +354,10 @@ static void test_no_targets(void)
 int main(void)
 {
     test_reflection_law();
-    test_through_sphere(0);
-    test_through_sphere(1);
-    test_through_quad(0);
-    test_through_quad(1);
+    test_through_mirror(0, 0);
+    test_through_mirror(0, 1);
+    test_through_mirror(1, 0);
+    test_through_mirror(1, 1);
     test_inside_sphere();
     test_no_targets();
     return fovcheck_summary();
