@@ -82,8 +82,10 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       (albedo, normal, depth, samples per pixel, variance) from the traced samples, then
       temporal accumulation with reprojection and the edge-avoiding a-trous wavelet filter
       (Dammertz et al. 2010) with variance guidance (Schied et al. 2017), foveated: fewer
-      passes and a shorter history where the eye resolves the pixels and the samples are dense
-      (the declarations' DENOISING comment has the details).
+      passes and a shorter history where the eye resolves the pixels and the samples are dense;
+      where a pixel's own samples are many, the input or a pass's output by least Stein's
+      unbiased risk estimate (Li et al. 2012) (the declarations' DENOISING comment has the
+      details).
 
 STATUS (v0.5.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
