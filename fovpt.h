@@ -82,8 +82,10 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       (albedo, normal, depth, samples per pixel, variance) from the traced samples, then
       temporal accumulation with reprojection and the edge-avoiding a-trous wavelet filter
       (Dammertz et al. 2010) with variance guidance (Schied et al. 2017), foveated: fewer
-      passes and a shorter history where the eye resolves the pixels and the samples are dense
-      (the declarations' DENOISING comment has the details).
+      passes and a shorter history where the eye resolves the pixels and the samples are dense;
+      where a pixel's own samples are many, the input or a pass's output by least Stein's
+      unbiased risk estimate (Li et al. 2012) (the declarations' DENOISING comment has the
+      details).
 
 STATUS (v0.5.0)
    Implemented and tested: geometry, BVH, intersection (BVH, brute force, user hook), the
@@ -1833,7 +1835,13 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
      var     1 float: the variance of the pixel's mean luminance (0.2126 R + 0.7152 G +
              0.0722 B, linear) from its own samples: the sample variance of this call's n
              >= 2 samples / the number of samples the pixel's value is the mean of (n; with
-             accumulate the running total); -1 where unknown (fewer than 2 own samples)
+             accumulate the running total); -1 where unknown (fewer than 2 own samples, or
+             a LAYERS / ZONES blend band, where the value mixes two layers: the variance of
+             one layer's samples is not the value's; the denoiser then estimates it
+             spatially. Measured as below, fovea, layers_diam_fovea at its equal-time
+             density, against the former var of the larger-weight layer: cornell +1.8 dB
+             (corner +3.2), cubes441 corner +8.0, mesh100k +0.3, interior +0.2 (+1.2),
+             mirrors -1.6 (+0.4); the other methods' fovea lies outside the bands)
    Which samples: UNIFORM and the pixels a stride-1 layer or zone traces: the pixel's own
    samples (the guides are their means; where two stride-1 layers trace a pixel, in their
    blend band, those of the layer with the larger weight in the resolve's blend, the inner
@@ -1897,6 +1905,37 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    all have missed the light): it costs one compare per pass. A guide var from at least 8
    samples is trusted alone (the spatial estimate, which counts shading as noise, is mixed in
    only below).
+   SURE selection (on unless cfg.no_sure; Li, Wu, Chuang 2012, "SURE-based optimization for
+   adaptive sampling and reconstruction", ACM TOG 31(6)): where a pixel's guide var rests on
+   at least sure_min_spp samples (the spp guide; 16: the sample variance of fewer is too
+   noisy, measured below), its output is the candidate of least estimated error among the
+   temporal phase's output y (no pass) and the output F_k after each pass k. The estimate is
+   Stein's unbiased risk estimate of the luminance: (F - y)^2 - s2 + 2 s2 dF/dy (s2 = the
+   variance of y: the guide's var, propagated with the history; y itself: s2), weighted by
+   the squared slope of the display curve at y (min(12.92, 0.5 / sqrt(l)), as skip_noise:
+   the error is judged in display codes, so a bright outlier does not decide for its dark
+   neighbours), then averaged over the (2 sure_radius + 1)^2 pixels around (those with a
+   selection; per pixel SURE is too noisy to choose by) and compared by strict <: a tie
+   keeps the earlier candidate. dF/dy, the approximation: each pass is a normalised weighted
+   mean, its derivative by the pixel's own input the centre weight / the weight sum plus the
+   luminance stop's slope (sig sum_j w_j sgn(l - l_j) (F - l_j) / sum w; the other stops and
+   the variance guide do not depend on y), exact for one pass (tests/test_fovpt_denoise.c:
+   sure_derivative_vs_difference, against a central difference); over passes the product
+   of these along the centre path (the paths through neighbours that return to the pixel
+   are left out: a small underestimate where the kernel is wide, when the candidates' own
+   SURE is small anyway). The cost: one more pass over the selected pixels per pass (the
+   window mean) and 40 bytes per pixel (fovpt_denoise_size; none with no_sure); the SSE2
+   pass computes the same derivative lane by lane (bit-identical to the scalar one).
+   Measured (a harness outside the repository over this API: 320 x 240, four seeds each,
+   centre / corner gaze, the fovea (f1) against eight 512-spp fovea references, LAYERS and
+   ZONES at the equal-time fovea densities of bench_pt; selection minus none, dB, the same
+   noisy frames): cubes441 +0.2 (17 spp) +1.5 (53) +0.0 (171), corner +0.7 (53); mirrors
+   +2.2 (16) +1.7 (63) +0.0 (192), corner +2.2 +1.9; cornell, mesh100k, interior and every
+   ZONES case -0.12 .. +0.07, except interior at 21 spp -0.1 (centre) / -0.5 (corner); the
+   whole image within 0.02. With sure_min_spp 2 the low counts lose
+   (cornell 11 spp -0.3, 7 spp -2.7; mesh100k 5 and 15 spp -0.1); without the luminance
+   stop's slope in dF/dy the 21-spp interior lost 0.9 dB (corner). bench/README.md has the
+   equal-time rows.
    Weights: one exponential per tap (fovpt__exp_neg) for the depth, albedo, luminance and
    normal stops; with phi_normal >= 32, c^phi_normal = exp(-phi_normal (-ln c)) with -ln c
    from a 4-term series for c >= 3/4 (absolute weight error below 3.2e-6 of the centre
@@ -1926,8 +1965,9 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
    1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved in one
    program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
-   Memory: fovpt_denoise_size, 164 bytes per pixel (two history frames of 12 floats, two
-   filter buffers of 4, the coarseness, the guides packed); no threads, no allocation. */
+   Memory: fovpt_denoise_size, 204 bytes per pixel (two history frames of 12 floats, two
+   filter buffers of 4, the coarseness, the guides packed, the SURE selection's 10 floats;
+   164 with no_sure); no threads, no allocation. */
 #ifndef FOVPT_DN_MAX_LEVELS
 #define FOVPT_DN_MAX_LEVELS 8
 #endif
@@ -1964,6 +2004,13 @@ typedef struct fovpt_denoise_cfg {
                                  (0, 1e30]                                            0: 16 */
     float r_small;            /* reach r k from which the passes take 3 x 3 taps instead
                                  of 5 x 5, [1, 65536]                                0: 2 */
+    uint32_t no_sure;         /* 1: no SURE selection (the last pass's output everywhere);
+                                 0: per pixel with a guide var from >= sure_min_spp
+                                 samples, the input or the output of a pass, whichever
+                                 has the least smoothed SURE (see DENOISING)            */
+    uint32_t sure_radius;     /* the SURE smoothing window's radius, 1 .. 8          0: 4 */
+    float sure_min_spp;       /* the least samples (spp guide) behind a pixel's var for
+                                 the selection, [2, 1e30]                            0: 16 */
     fov_display display;      /* eccentricity (fov_display); all zero: the camera's frustum */
     fov_eye eye;              /* the eye model (fov_eye), zero fields: the defaults */
     fov_logger logger;
@@ -1980,6 +2027,10 @@ typedef struct fovpt_denoise {  /* filled by fovpt_denoise_init; read-only for t
     float *buf[2];              /* 4 floats per pixel: rgb, var */
     float *coarse;              /* 1 float per pixel: r */
     float *pack;                /* 8 floats per pixel: depth, normal, albedo, luminance */
+    float *sel;                 /* SURE: 10 floats per pixel (NULL without): the best
+                                   candidate's rgb and smoothed SURE, two raw SURE slots,
+                                   the input luminance, its variance, the output's centre
+                                   derivative, the last pass's centre weight fraction */
     uint32_t cur, frames, has_prev, passes, in_frame;
     void *mem;
     size_t mem_size;
@@ -8058,6 +8109,21 @@ FOVPT__PRIV uint32_t fovpt__gwin(const fovpt_ctx *ctx, uint32_t x, uint32_t y, f
     return win;
 }
 
+/* LAYERS, ZONES: 1 when layer win alone gives the pixel's value at eccentricity e (its
+   weight in the resolve's blend, as in fovpt__gwin, is 1), 0 in a blend band (the value
+   mixes layers: the variance of its own samples' mean is not the value's) */
+FOVPT__PRIV int fovpt__gsole(const fovpt_ctx *ctx, float e, uint32_t win)
+{
+    const fovpt_layers_cfg *L = &ctx->lay;
+    uint32_t n, m, top = 0;
+    float w;
+    for (n = L->count - 1u; n > 0; --n)
+        if (fovpt__vb(L, n, e) >= 1.0f) { top = n; break; }
+    w = win == top ? 1.0f : win < top ? 0.0f : fovpt__vb(L, win, e);
+    for (m = win + 1u; m < L->count; ++m) w *= 1.0f - fovpt__vb(L, m, e);
+    return w >= 1.0f;
+}
+
 FOVPT__PRIV int fovpt__gstride_bad(uint32_t stride, uint32_t ch, uint32_t W)
 {
     return stride != 0u && stride < ch * W;
@@ -8160,7 +8226,8 @@ FOVPT__PRIV void fovpt__trace(fovpt_ctx *ctx, uint32_t frame, uint32_t y0, uint3
                                  own ? &G : NULL, st);
                     fovpt__store(acc, sum, spp, ctx->cfg.accumulate);
                     if (own && fovpt__gwin(ctx, px, py, ep) == n) /* one layer's guides */
-                        fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep), acc[3]);
+                        fovpt__gwrite(g, W, px, py, &G, fovpt__density(ctx, ep),
+                                      fovpt__gsole(ctx, ep, n) ? acc[3] : 0.0f);
                     st->layer_targets[n]++;
                     st->layer_samples[n] += spp;
                 }
@@ -8267,6 +8334,7 @@ FOVPT__PRIV float fovpt__exp_neg(float x)
 }
 #define FOVPT__DN_HIST 12u
 #define FOVPT__DN_MAXN 32.0f
+#define FOVPT__DN_SEL 10u /* floats per pixel of SURE (see fovpt_denoise.sel) */
 /* a guide var from at least this many samples is trusted alone (no spatial estimate mixed in) */
 #ifndef FOVPT__DN_VAR_SPP
 #define FOVPT__DN_VAR_SPP 8.0f
@@ -8289,6 +8357,8 @@ FOVPT_API fovpt_denoise_cfg fovpt_denoise_cfg_default(void)
     c.skip_noise = 0.5f;
     c.r_small = 2.0f;
     c.spp_full = 16.0f;
+    c.sure_radius = 4;
+    c.sure_min_spp = 16.0f;
     return c;
 }
 
@@ -8354,6 +8424,16 @@ FOVPT_API fov_result fovpt_denoise_resolve(const fovpt_denoise_cfg *in, fovpt_de
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.skip_noise must be in (0, 255]");
     if (!(c.r_small >= 1.0f && c.r_small <= 65536.0f))
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.r_small must be in [1, 65536]");
+    if (c.no_sure > 1u)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.no_sure is 0 or 1");
+    if (!c.sure_radius) c.sure_radius = d.sure_radius;
+    if (c.sure_radius > 8u)
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.sure_radius must be in [1, 8]");
+    if (!fov__finite(c.sure_min_spp))
+        FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "denoise: a cfg field is NaN or infinite");
+    if (fov__is0(c.sure_min_spp)) c.sure_min_spp = d.sure_min_spp;
+    if (!(c.sure_min_spp >= 2.0f && c.sure_min_spp <= 1e30f))
+        FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.sure_min_spp must be in [2, 1e30]");
     if (!(c.spp_full > 0.0f && c.spp_full <= 1e30f))
         FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "denoise: cfg.spp_full must be in (0, 1e30]");
     if (!fov__finite(c.eye.mar0_arcmin) || !fov__finite(c.eye.slope_arcmin) ||
@@ -8373,7 +8453,8 @@ FOVPT_API fov_result fovpt_denoise_size(const fovpt_denoise_cfg *cfg, size_t *by
     e = fovpt_denoise_resolve(cfg, &c);
     if (e != FOV_OK) return e;
     px = (uint64_t)c.width * c.height;
-    px = px * 4u * (2u * FOVPT__DN_HIST + 2u * 4u + 1u + 8u) + 64u;
+    px = px * 4u * (2u * FOVPT__DN_HIST + 2u * 4u + 1u + 8u + (c.no_sure ? 0u : FOVPT__DN_SEL)) +
+         64u;
     if (px > (uint64_t)(SIZE_MAX / 2u))
         FOVPT__FAIL(&cfg->logger, FOV_ERR_LIMIT, "denoise_size: memory overflows size_t");
     *bytes = (size_t)px;
@@ -8405,7 +8486,8 @@ FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_c
     dn->buf[0] = p; p += 4u * px;
     dn->buf[1] = p; p += 4u * px;
     dn->coarse = p; p += px;
-    dn->pack = p;
+    dn->pack = p; p += 8u * px;
+    dn->sel = dn->cfg.no_sure ? NULL : p;
     dn->mem = mem;
     dn->mem_size = bytes;
     dn->passes = dn->cfg.no_filter ? 0u : dn->cfg.levels;
@@ -8546,6 +8628,14 @@ FOVPT__PRIV float fovpt__dn_coarse(const fovpt_denoise *dn, uint32_t x, uint32_t
     return fov__clampf(r, 1.0f, 65536.0f);
 }
 
+/* SURE: a pixel's weight of its luminance SURE, the squared slope of the display
+   curve at its input luminance l, min(12.92, 0.5 / sqrt(l))^2 (the gamma-2 curve's, as
+   skip_noise): the error is judged on the display codes */
+FOVPT__PRIV float fovpt__dn_sure_w(float l)
+{
+    return fov__minf(166.9264f, 0.25f / fov__maxf(l, 1e-30f));
+}
+
 FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
 {
     uint32_t x, y, k, W, H;
@@ -8573,7 +8663,7 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
             float hw = 0.0f;
             float a = fov__maxf(dn->cfg.alpha_periphery, dn->cfg.alpha_fovea / r), n = 1.0f;
             float var_own = 0.0f; /* the samples behind the guide's var */
-            int hit = z > 0.0f && fov__finite(z);
+            int hit = z > 0.0f && fov__finite(z), gv = 0;
             for (k = 0; k < 3; ++k) in[k] = fov__finite(c[k]) ? fov__maxf(c[k], 0.0f) : 0.0f;
             if (!hit) z = 0.0f;
             l = fovpt__lum(in);
@@ -8583,6 +8673,7 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                 float v = *fovpt__gin(g->var, g->var_stride, 1u, W, x, y);
                 if (v >= 0.0f && fov__finite(v)) {
                     var_in = v;
+                    gv = 1;
                     if (g->spp) var_own = *fovpt__gin(g->spp, g->spp_stride, 1u, W, x, y);
                 }
             }
@@ -8655,6 +8746,18 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                 o[6] = var_in;
             }
             o[5] = n;
+            if (dn->sel) { /* SURE: the candidate "no pass" (S = var) and the input */
+                float *sp = dn->sel + FOVPT__DN_SEL * i;
+                float v = gv && var_own >= dn->cfg.sure_min_spp ? fov__minf(o[6], FLT_MAX)
+                                                                 : -1.0f;
+                sp[0] = o[0]; sp[1] = o[1]; sp[2] = o[2];
+                sp[3] = FLT_MAX;
+                sp[6] = fovpt__lum(o);
+                sp[4] = sp[5] = v * fovpt__dn_sure_w(sp[6]);
+                sp[7] = v;
+                sp[8] = 1.0f;
+                sp[9] = 1.0f;
+            }
             if (o[6] < 0.0f || (n < 4.0f && !(var_own >= FOVPT__DN_VAR_SPP))) {
                 /* spatial: 3 x 3 pixels at the lattice spacing */
                 int st = (int)fov__clampf(FOV__FLOOR(r + 0.5f), 1.0f, 4.0f), dx, dy, cnt = 0;
@@ -8745,7 +8848,7 @@ FOVPT__PRIV float fovpt__dn_ipow(float c, uint32_t e)
 /* one a-trous pass's per-pass constants */
 typedef struct fovpt__dnp {
     const float *src, *pk;
-    float *dst;
+    float *dst, *dfr; /* dfr: SURE's centre weight fractions (stride FOVPT__DN_SEL) */
     float ia2, pn, fstep;
     uint32_t W, H, ipn;
     int step, alb, nfar, nser;
@@ -8803,11 +8906,13 @@ FOVPT__PRIV void fovpt__dn_px(const fovpt_denoise *dn, const fovpt__dnp *P, uint
     size_t i = (size_t)y * W + x;
     const float *src = P->src, *pk = P->pk, *p = src + 4u * i, *gp = pk + 8u * i, *hk;
     float *o = P->dst + 4u * i, ws = 0.0f, wv = 0.0f, acc[3] = { 0.0f, 0.0f, 0.0f };
+    float sa = 0.0f, sb = 0.0f; /* SURE: sum w sgn(lp - lq), sum w sgn(lp - lq) lq */
     int dx, dy, dx0, dx1, dy0, dy1, rad, step = P->step;
     fovpt__dnl L;
     fovpt__dn_lane(dn, P, x, y, &L);
     if (!L.on) { /* not at this pixel */
         o[0] = p[0]; o[1] = p[1]; o[2] = p[2]; o[3] = p[3];
+        if (P->dfr) P->dfr[FOVPT__DN_SEL * i] = 1.0f;
         return;
     }
     rad = L.rad;
@@ -8824,10 +8929,11 @@ FOVPT__PRIV void fovpt__dn_px(const fovpt_denoise *dn, const fovpt__dnp *P, uint
         for (dx = dx0; dx <= dx1; ++dx) {
             size_t j = row + (size_t)((int)x + dx * step);
             const float *q = src + 4u * j, *gq = pk + 8u * j;
-            float w = hk[dx + rad] * hy, ex;
+            float w = hk[dx + rad] * hy, ex, lq;
             if (dx || dy) {
                 if (L.hitp != (gq[0] > 0.0f)) continue;
-                ex = fov__absf(L.lp - fovpt__lum(q)) * L.sig;
+                lq = fovpt__lum(q);
+                ex = fov__absf(L.lp - lq) * L.sig;
                 if (L.hitp) {
                     float c = gp[1] * gq[1] + gp[2] * gq[2] + gp[3] * gq[3];
                     ex += fov__absf(L.zp - gq[0]) * L.idz[ady][dx < 0 ? -dx : dx];
@@ -8845,6 +8951,11 @@ FOVPT__PRIV void fovpt__dn_px(const fovpt_denoise *dn, const fovpt__dnp *P, uint
                 if (!(ex < 30.0f)) continue; /* weight below 1e-13 */
                 w *= fovpt__exp_neg(ex);
                 if (!(w > 1e-13f)) continue;
+                if (P->dfr) {
+                    float t = w * (L.lp > lq ? 1.0f : L.lp < lq ? -1.0f : 0.0f);
+                    sa += t;
+                    sb += t * lq;
+                }
             }
             for (k = 0; k < 3; ++k) acc[k] += w * q[k];
             ws += w;
@@ -8853,6 +8964,12 @@ FOVPT__PRIV void fovpt__dn_px(const fovpt_denoise *dn, const fovpt__dnp *P, uint
     }
     for (k = 0; k < 3; ++k) o[k] = acc[k] / ws;
     o[3] = wv / (ws * ws);
+    if (P->dfr) { /* d out / d centre: the centre weight and the luminance stop's slope */
+        float fl = 0.2126f * o[0] + 0.7152f * o[1] + 0.0722f * o[2];
+        float d = (hk[rad] * hk[rad] + L.sig * (fl * sa - sb)) / ws;
+        d = d > 0.0f ? d : 0.0f;
+        P->dfr[FOVPT__DN_SEL * i] = d < 1.0f ? d : 1.0f;
+    }
 }
 
 #if FOVPT__DN_SSE2
@@ -8891,7 +9008,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     const float *src = P->src, *pk = P->pk;
     float *o = P->dst + 4u * i;
     __m128 hv[5], idz[3][3], lp, sig, zp, hitp, n1, n2, n3, a0, a1, a2, r, g, bl, v;
-    __m128 acc0, acc1, acc2, ws, wv, q0, q1, q2, q3, zero = _mm_setzero_ps();
+    __m128 acc0, acc1, acc2, ws, wv, q0, q1, q2, q3, zero = _mm_setzero_ps(), sa, sb;
     __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
     __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
     float t[4];
@@ -8901,6 +9018,8 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                                        _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
     if (!on) {
         for (l = 0; l < 16u; ++l) o[l] = src[4u * i + l];
+        if (P->dfr)
+            for (l = 0; l < 4u; ++l) P->dfr[FOVPT__DN_SEL * (i + l)] = 1.0f;
         return;
     }
     rad1 = _mm_cmpge_ps(cr, _mm_set1_ps(dn->cfg.r_small));
@@ -8983,7 +9102,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                                           _mm_mul_ps(sl1, _mm_set1_ps((float)b))),
                                _mm_mul_ps(_mm_set1_ps(1e-3f), zp)));
     }
-    acc0 = acc1 = acc2 = ws = wv = zero;
+    acc0 = acc1 = acc2 = ws = wv = sa = sb = zero;
     dy0 = -fovpt__dn_mini(2, (int)y / step);
     dy1 = fovpt__dn_mini(2, (int)(H - 1u - y) / step);
     for (dy = dy0; dy <= dy1; ++dy) {
@@ -9068,6 +9187,13 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                 w = _mm_mul_ps(w, e);
                 live = _mm_and_ps(live, _mm_cmpgt_ps(w, _mm_set1_ps(1e-13f)));
                 w = _mm_and_ps(live, w);
+                if (P->dfr) { /* fovpt__dn_px's sa, sb (a skipped lane adds +-0) */
+                    __m128 sg = _mm_or_ps(_mm_and_ps(_mm_cmpgt_ps(lp, d), _mm_set1_ps(1.0f)),
+                                          _mm_and_ps(_mm_cmplt_ps(lp, d), _mm_set1_ps(-1.0f)));
+                    __m128 tt = _mm_mul_ps(w, sg);
+                    sa = _mm_add_ps(sa, tt);
+                    sb = _mm_add_ps(sb, _mm_and_ps(live, _mm_mul_ps(tt, d)));
+                }
             }
             /* a lane whose tap the scalar pass skips adds an exact +0, not +0 times its
                value (an infinite value would make NaN); the centre tap is every lane's */
@@ -9084,14 +9210,27 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     q1 = _mm_div_ps(acc1, ws);
     q2 = _mm_div_ps(acc2, ws);
     q3 = _mm_div_ps(wv, _mm_mul_ps(ws, ws));
+    if (P->dfr) { /* fovpt__dn_px's centre derivative, lane by lane */
+        __m128 fl = _mm_add_ps(_mm_add_ps(_mm_mul_ps(_mm_set1_ps(0.2126f), q0),
+                                          _mm_mul_ps(_mm_set1_ps(0.7152f), q1)),
+                               _mm_mul_ps(_mm_set1_ps(0.0722f), q2));
+        __m128 dd = _mm_div_ps(_mm_add_ps(_mm_mul_ps(hv[2], hv[2]),
+                                          _mm_mul_ps(sig, _mm_sub_ps(_mm_mul_ps(fl, sa), sb))),
+                               ws);
+        _mm_storeu_ps(t, _mm_min_ps(_mm_max_ps(dd, zero), _mm_set1_ps(1.0f)));
+    }
     _MM_TRANSPOSE4_PS(q0, q1, q2, q3);
     _mm_storeu_ps(o, q0);
     _mm_storeu_ps(o + 4, q1);
     _mm_storeu_ps(o + 8, q2);
     _mm_storeu_ps(o + 12, q3);
-    for (l = 0; l < 4; ++l)
-        if (!(on >> l & 1))
+    for (l = 0; l < 4; ++l) {
+        if (P->dfr) P->dfr[FOVPT__DN_SEL * (i + l)] = t[l];
+        if (!(on >> l & 1)) {
             for (b = 0; b < 4; ++b) o[4u * l + b] = src[4u * (i + l) + b];
+            if (P->dfr) P->dfr[FOVPT__DN_SEL * (i + l)] = 1.0f;
+        }
+    }
 }
 #endif
 
@@ -9106,6 +9245,7 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
     P.pk = dn->pack;
     P.src = dn->buf[pass & 1u];
     P.dst = dn->buf[(pass & 1u) ^ 1u];
+    P.dfr = dn->sel ? dn->sel + 9 : NULL;
     P.step = 1 << pass;
     P.fstep = (float)P.step;
     P.ia2 = 1.0f / (dn->cfg.phi_albedo * dn->cfg.phi_albedo);
@@ -9134,6 +9274,68 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
     }
 }
 
+/* SURE: the mean of the raw SURE in slot (4 or 5) over the window around (x, y) (the
+   pixels with a guide var) */
+FOVPT__PRIV float fovpt__dn_sure_mean(const fovpt_denoise *dn, uint32_t x, uint32_t y,
+                                      uint32_t slot)
+{
+    int R = (int)dn->cfg.sure_radius, W = (int)dn->cfg.width, H = (int)dn->cfg.height;
+    int qx, qy, x0 = (int)x - R, x1 = (int)x + R, ya = (int)y - R, yb = (int)y + R, n = 0;
+    float s = 0.0f;
+    if (x0 < 0) x0 = 0;
+    if (ya < 0) ya = 0;
+    if (x1 > W - 1) x1 = W - 1;
+    if (yb > H - 1) yb = H - 1;
+    for (qy = ya; qy <= yb; ++qy)
+        for (qx = x0; qx <= x1; ++qx) {
+            const float *q = dn->sel + FOVPT__DN_SEL * ((size_t)qy * (size_t)W + (size_t)qx);
+            if (!(q[7] >= 0.0f)) continue;
+            s += q[slot];
+            n++;
+        }
+    if (!n) return FLT_MAX;
+    s /= (float)n;
+    return s;
+}
+
+/* SURE, rows [y0, y1): the candidate in buf[pass & 1] (the output of pass - 1, or the
+   input for pass 0) replaces the best so far where its smoothed SURE is lower */
+FOVPT__PRIV void fovpt__dn_sure_pick(fovpt_denoise *dn, uint32_t pass, uint32_t y0, uint32_t y1)
+{
+    uint32_t x, y, W = dn->cfg.width;
+    const float *src = dn->buf[pass & 1u];
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            float *sp = dn->sel + FOVPT__DN_SEL * i, m;
+            if (!(sp[7] >= 0.0f)) continue;
+            m = fovpt__dn_sure_mean(dn, x, y, 4u + (pass & 1u));
+            if (m < sp[3]) {
+                sp[0] = src[4u * i]; sp[1] = src[4u * i + 1u]; sp[2] = src[4u * i + 2u];
+                sp[3] = m;
+            }
+        }
+}
+
+/* SURE, rows [y0, y1) after pass `pass`: the output's derivative by its input at the
+   pixel (the product of the passes' centre weight fractions) and its raw SURE
+   (F - y)^2 - var + 2 var dF/dy into slot 4 + ((pass + 1) & 1) */
+FOVPT__PRIV void fovpt__dn_sure_raw(fovpt_denoise *dn, uint32_t pass, uint32_t y0, uint32_t y1)
+{
+    uint32_t x, y, W = dn->cfg.width, slot = 4u + ((pass + 1u) & 1u);
+    const float *dst = dn->buf[(pass & 1u) ^ 1u];
+    for (y = y0; y < y1; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            float *sp = dn->sel + FOVPT__DN_SEL * i, d, v = sp[7], e;
+            if (!(v >= 0.0f)) continue;
+            sp[8] *= sp[9];
+            d = fovpt__lum(dst + 4u * i) - sp[6];
+            e = (d * d - v + 2.0f * v * sp[8]) * fovpt__dn_sure_w(sp[6]);
+            sp[slot] = fov__finite(e) ? e : FLT_MAX;
+        }
+}
+
 FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
                                                uint32_t y1)
 {
@@ -9151,7 +9353,9 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
         FOVPT__FAIL(&dn->cfg.logger, FOV_ERR_INVALID_ARG,
                     "denoise_atrous_rows: a row has not finished the previous phase (temporal "
                     "or pass - 1) or already ran a later pass");
+    if (dn->sel) fovpt__dn_sure_pick(dn, pass, y0, y1);
     fovpt__dn_atrous(dn, pass, y0, y1, 1);
+    if (dn->sel) fovpt__dn_sure_raw(dn, pass, y0, y1);
     for (; y0 < y1; ++y0) *fovpt__dn_rowmark(dn, y0) = 2.0f + (float)pass;
     return FOV_OK;
 }
@@ -9182,6 +9386,12 @@ FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_
     for (y = y0; y < y1; ++y)
         for (x = 0; x < W; ++x) {
             const float *c = src + 4u * ((size_t)y * W + x);
+            if (dn->sel && dn->passes) { /* SURE: the last pass's output or the best */
+                const float *sp = dn->sel + FOVPT__DN_SEL * ((size_t)y * W + x);
+                if (sp[7] >= 0.0f &&
+                    !(fovpt__dn_sure_mean(dn, x, y, 4u + (dn->passes & 1u)) < sp[3]))
+                    c = sp;
+            }
             if (out->rgb) {
                 float *o =
                     out->rgb + (size_t)y * (out->rgb_stride ? out->rgb_stride : 3u * W) + 3u * x;

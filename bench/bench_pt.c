@@ -6,13 +6,12 @@
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
                     [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--mirror-nee]
-                    [--ref-floor]
-                    [--scene N] [--gt-fovea-spp N]
+                    [--ref-floor] [--scene N] [--gt-fovea-spp N] [--dn-no-sure]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
                     box's fovea error falls with spp, see README; --denoise, --robust,
-                    --mirror-nee: only the _dn / _rb / _mn rows, see below; --ref-floor: only pt_ref_floor.csv, the
-                    ground truth's own noise)
+                    --mirror-nee: only the _dn / _rb / _mn rows, see below; --ref-floor:
+                    only pt_ref_floor.csv, the ground truth's own noise)
 
    Columns (the first eleven are the issue's, in order):
      scene,method,gaze,budget,rays_per_s,time_ms,psnr_f1,psnr_f2,psnr_f3,psnr_f4,psnr_all,
@@ -1076,6 +1075,8 @@ static void lp_rows(FILE *csv, pt_scene *S, const char *nm, const char *gz, fov_
 static double g_dn_ms;           /* the denoiser's share of the last render, ms */
 static int g_dn_scene = -1;      /* --denoise --scene N: that scene only */
 
+static uint32_t g_dn_no_sure; /* --dn-no-sure: the denoiser with cfg.no_sure = 1 */
+
 static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st)
 {
     size_t n = 0, dnb = 0, np = (size_t)S->cam.width * S->cam.height;
@@ -1085,6 +1086,7 @@ static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float 
     fovpt_guide gd;
     fovpt_denoise dn;
     fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    dc.no_sure = g_dn_no_sure;
     float *noisy = (float *)malloc(np * 12u), *gb = (float *)malloc(np * 32u);
     double t0, t1, t;
     fov_result e;
@@ -1236,6 +1238,7 @@ static double flicker_seq(pt_scene *S, const fovpt_config *c, fov_gaze g, int mo
     fovpt_guide gd;
     fovpt_denoise dn;
     fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    dc.no_sure = g_dn_no_sure;
     fovpt_camera cam, prev;
     float *noisy = (float *)malloc(np * 12u), *gb = (float *)malloc(np * 36u), *cur = (float *)malloc(np * 12u),
           *old = (float *)malloc(np * 12u);
@@ -1614,6 +1617,7 @@ static void usage(FILE *f)
           "  --gt-spp N          ground truth samples per pixel of the path modes (default 512)\n"
           "  --gt-fovea-spp N    with --denoise / --robust / --mirror-nee / --ref-floor: the fovea's (e < 3.3 degrees)\n"
           "                      ground truth at N spp (default: --gt-spp)\n"
+          "  --dn-no-sure        with --denoise: the denoiser without its SURE selection (cfg.no_sure)\n"
           "  --threads N         render threads (default 2)\n"
           "  --out FILE          CSV (default bench/results/pt.csv)\n"
           "  -h, --help          this text\n", f);
@@ -1644,6 +1648,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--h") && i + 1 < argc) H = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-fovea-spp") && i + 1 < argc) g_gt_fovea_spp = (uint32_t)atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--dn-no-sure")) g_dn_no_sure = 1;
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) { out_path = argv[++i]; out_set = 1; }
         else { fprintf(stderr, "unknown option %s\n", argv[i]); usage(stderr); return 2; }

@@ -473,6 +473,22 @@ static void t_errors(void)
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_NOT_FINITE, "dn_cfg_spp_full_nan", "spp_full NaN accepted");
     r = dc; r.spp_full = -2.0f;
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_spp_full_negative", "spp_full -2 accepted");
+    r = dc; r.no_sure = 2;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_no_sure_2", "no_sure 2 accepted");
+    r = dc; r.sure_radius = 9;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_sure_radius_9", "sure_radius 9 accepted");
+    r = dc; r.sure_min_spp = 1.5f;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG, "dn_cfg_sure_min_spp_below_2", "sure_min_spp 1.5 accepted");
+    r = dc; r.sure_min_spp = NAN;
+    check(fovpt_denoise_size(&r, &b) == FOV_ERR_NOT_FINITE, "dn_cfg_sure_min_spp_nan", "sure_min_spp NaN accepted");
+    {   /* the selection's memory: FOVPT__DN_SEL floats per pixel more than without */
+        size_t b0 = 0, b1 = 0;
+        r = dc; r.width = 10; r.height = 10;
+        fovpt_denoise_size(&r, &b0);
+        r.no_sure = 1;
+        fovpt_denoise_size(&r, &b1);
+        check(b0 == b1 + 100u * 4u * FOVPT__DN_SEL, "dn_size_sure", "%zu bytes with, %zu without", b0, b1);
+    }
     r = dc; r.alpha_fovea = 0.1f; r.alpha_periphery = 0.5f;
     g_log_count = 0;
     check(fovpt_denoise_size(&r, &b) == FOV_ERR_INVALID_ARG && g_log_count == 1 && g_log_code == FOV_ERR_INVALID_ARG,
@@ -580,8 +596,19 @@ static void t_same_image(void)
             for (i = 0; i < 40u * 30u; ++i) bad += a.spp[i] != 2.0f || !(a.var[i] >= 0.0f) || fabsf(a.alb[3 * i] - 0.6f) > 1e-6f;
             check(bad == 0, "guide_uniform_spp_var_albedo", "%zu pixels with spp != 2, var < 0 or albedo != 0.6", bad);
         } else {
-            /* the gaze pixel has the innermost layer's density, the corner a coarser one */
-            check(a.spp[15 * 40 + 20] > a.spp[0] && a.var[15 * 40 + 20] >= 0.0f && fabsf(a.var[0] + 1.0f) < 1e-6f,
+            /* the gaze pixel has the innermost layer's density, the corner a coarser one;
+               a var only where one stride-1 layer alone gives the value (its own spp, 2: no
+               blend band), -1 elsewhere */
+            size_t i, own = 0, bad = 0;
+            float sp1 = (float)ctx.lay.layer[ctx.lay.count - 1u].spp; /* the innermost layer's */
+            for (i = 0; i < 40u * 30u; ++i) {
+                own += a.var[i] >= 0.0f;
+                bad += a.var[i] >= 0.0f ? a.spp[i] != sp1 : a.var[i] != -1.0f;
+            }
+            /* (ZONES at 40 x 30: every fovea pixel is in a blend band) */
+            check((meth == 2 || own > 0u) && bad == 0u, N("guide_layers_var_own_only_%u", meth),
+                  "%zu pixels with a var, %zu with a var but a blended spp or another negative var", own, bad);
+            check(a.spp[15 * 40 + 20] > a.spp[0] && (meth == 2 || a.var[15 * 40 + 20] >= 0.0f) && fabsf(a.var[0] + 1.0f) < 1e-6f,
                   N("guide_layers_density_%u", meth), "gaze spp %g var %g, corner spp %g var %g", (double)a.spp[15 * 40 + 20],
                   (double)a.var[15 * 40 + 20], (double)a.spp[0], (double)a.var[0]);
         }
@@ -647,8 +674,10 @@ static void t_var_accum(void)
     box_run_end(&r);
 }
 
-/* two stride-1 layers overlapping in their blend band: the guides come from the layer with
-   the larger resolve weight (inner where vb > 1/2: 4 spp, var >= 0; outer: 1 spp, var -1) */
+/* two stride-1 layers overlapping in their blend band (7 .. 13 degrees): inside it the
+   inner layer alone (4 spp: var >= 0); in the band the value mixes the two layers, so the
+   var of one layer's samples is not the value's: -1 (earlier versions: the var of the
+   layer with the larger weight); outside, the outer layer's 1 spp: -1 */
 static void t_two_stride1(void)
 {
     fovpt_config c = fovpt_config_default();
@@ -665,11 +694,11 @@ static void t_two_stride1(void)
     for (y = 0; ok && y < 120; ++y)
         for (x = 0; x < 160; ++x) {
             float e = fovpt_ecc_deg(&r.ctx.ecc, (float)x + 0.5f, (float)y + 0.5f), v = r.a.var[y * 160u + x];
-            if (e > 7.3f && e < 9.7f) { in_n++; in_bad += !(v >= 0.0f); }
-            if (e > 10.3f && e < 12.7f && e <= r.ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
+            if (e < 6.7f) { in_n++; in_bad += !(v >= 0.0f); }
+            if (e > 7.3f && e < 12.7f && e <= r.ctx.layer_trace_deg[1]) { out_n++; out_bad += v != -1.0f; }
         }
-    check(ok && in_n > 20u && out_n > 20u && in_bad == 0u && out_bad == 0u, "guide_two_stride1_layers_larger_weight",
-          "ok %d: inner half of the band %u px (%u without var), outer half %u px (%u with var; trace %g deg)", ok, in_n, in_bad,
+    check(ok && in_n > 20u && out_n > 20u && in_bad == 0u && out_bad == 0u, "guide_two_stride1_band_var_unknown",
+          "ok %d: inside the band %u px (%u without var), in the band %u px (%u with var; trace %g deg)", ok, in_n, in_bad,
           out_n, out_bad, ok ? (double)r.ctx.layer_trace_deg[1] : 0.0);
     box_run_end(&r);
 }
@@ -1173,12 +1202,20 @@ static uint32_t simd_vs_scalar(fovpt_denoise *dn, float *ref, size_t n, uint32_t
         float *dst = dn->buf[(p & 1u) ^ 1u];
         fovpt__dn_atrous(dn, p, 0, H, 0);
         memcpy(ref, dst, n * 16u);
+        if (dn->sel) /* the SURE selection's centre derivatives too */
+            for (i = 0; i < n; ++i) ref[4u * n + i] = dn->sel[FOVPT__DN_SEL * i + 9u];
         fovpt__dn_atrous(dn, p, 0, H, 1);
         for (i = 0; i < n * 4u; ++i) {
             double d = fabs((double)dst[i] - (double)ref[i]);
             if (!(d <= *worst)) *worst = d; /* NaN too */
             nd += memcmp(&dst[i], &ref[i], sizeof(float)) != 0;
             *nan += dst[i] != dst[i];
+        }
+        for (i = 0; dn->sel && i < n; ++i) {
+            const float *f = dn->sel + FOVPT__DN_SEL * i + 9u;
+            double d = fabs((double)*f - (double)ref[4u * n + i]);
+            if (!(d <= *worst)) *worst = d;
+            nd += memcmp(f, &ref[4u * n + i], sizeof(float)) != 0;
         }
         ++*passes;
     }
@@ -1190,7 +1227,7 @@ static void t_simd_scalar(void)
     static const float pns[5] = { 32.0f, 128.0f, 200.5f, 8.0f, 3.5f };
     size_t n = (size_t)W * H;
     img a;
-    float *ref = (float *)malloc(n * 16u);
+    float *ref = (float *)malloc(n * 20u); /* 4 floats per pixel, then the derivatives */
     int kind, ip, alb;
     if (!check(ref != NULL, "atrous_simd_equals_scalar: memory", "malloc")) return;
     img_alloc(&a, W, H);
@@ -1241,7 +1278,7 @@ static void t_simd_scalar_edge(void)
                 const uint32_t W = ws[iw], H = 11;
                 size_t n = (size_t)W * H, i;
                 img a;
-                float *ref = (float *)malloc(n * 16u);
+                float *ref = (float *)malloc(n * 20u);
                 fovpt_denoise dn;
                 fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
                 fovpt_camera cam;
@@ -1283,6 +1320,187 @@ static void t_simd_scalar_edge(void)
             }
 }
 
+/* ---- the SURE selection (Li, Wu, Chuang 2012) ---------------------------------------------- */
+/* a flat wall (depth 1, normal +z, albedo 0.5), every pixel with spp 32 */
+static void sure_img(img *a, uint32_t seed, float amp)
+{
+    uint32_t x, y, k, s = seed;
+    flat_guides(a, 32.0f, amp * amp / 3.0f);
+    for (y = 0; y < a->h; ++y)
+        for (x = 0; x < a->w; ++x) {
+            size_t i = (size_t)y * a->w + x;
+            float n;
+            s = s * 1664525u + 1013904223u;
+            n = amp * (2.0f * (float)(s >> 8) / 16777216.0f - 1.0f); /* uniform: var amp^2 / 3 */
+            for (k = 0; k < 3; ++k) a->rgb[3 * i + k] = 0.5f + n;
+        }
+}
+
+/* A constant image with a known (nonzero) variance and 32 spp stays constant with the
+   selection on (every candidate is the constant). */
+static void t_sure_constant(void)
+{
+    const uint32_t W = 40, H = 30;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fov_gaze g = { 20.0f, 15.0f };
+    img a;
+    float *out = (float *)malloc((size_t)W * H * 12u);
+    size_t i;
+    double worst = 0.0;
+    int ok;
+    img_alloc(&a, W, H);
+    flat_guides(&a, 32.0f, 0.01f);
+    for (i = 0; i < (size_t)W * H * 3u; ++i) a.rgb[i] = 0.25f;
+    dc.width = W; dc.height = H;
+    ok = out && dn_once(&dc, &a, g, out, NULL);
+    for (i = 0; ok && i < (size_t)W * H * 3u; ++i) worst = fmax(worst, fabs((double)out[i] - 0.25));
+    check(ok && worst <= 1e-6, "sure_constant_stays_constant", "worst deviation %g (ok %d)", worst, ok);
+    free(out);
+    img_free(&a);
+}
+
+/* The analytic two-region image: the left half an exact texture (stripes 0.2 / 0.4 two
+   pixels wide, var 1e-8 from 32 samples: exact to 1e-4), the right half 0.6 plus uniform
+   noise of known variance (the guide's var). With phi_lum 1e6 (the luminance stop nearly
+   off) the a-trous passes blur the stripes (checked with cfg.no_sure); the selection must keep
+   the exact input there (its SURE is the var, every pass's about the squared change) and take
+   a filtered value on the noisy half (>= 90 % of its pixels changed, the error against the
+   truth below 0.1x the input's). Pixels within two windows of the boundary are not counted. */
+static void t_sure_two_region(void)
+{
+    const uint32_t W = 64, H = 32;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fov_gaze g = { 32.0f, 16.0f };
+    img a;
+    float *out = (float *)malloc((size_t)W * H * 12u), *off = (float *)malloc((size_t)W * H * 12u);
+    uint32_t x, y, k, s = 99u, nl = 0, keep = 0, blur_off = 0, nr = 0, same = 0;
+    double ein = 0.0, eout = 0.0;
+    int ok, m = 2 * 4 + 2; /* two windows (sure_radius 4) and a pixel */
+    img_alloc(&a, W, H);
+    flat_guides(&a, 32.0f, 0.0f);
+    for (y = 0; y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            float n;
+            s = s * 1664525u + 1013904223u;
+            n = 0.2f * (2.0f * (float)(s >> 8) / 16777216.0f - 1.0f);
+            for (k = 0; k < 3; ++k) a.rgb[3 * i + k] = x < W / 2u ? ((x / 2u) % 2u ? 0.4f : 0.2f) : 0.6f + n;
+            a.var[i] = x < W / 2u ? 1e-8f : 0.04f / 3.0f;
+        }
+    dc.width = W; dc.height = H; dc.phi_lum = 1e6f; dc.skip_noise = 1e-9f;
+    dc.fovea_step = 64.0f;
+    ok = out && off && dn_once(&dc, &a, g, out, NULL);
+    dc.no_sure = 1;
+    ok = ok && dn_once(&dc, &a, g, off, NULL);
+    for (y = 0; ok && y < H; ++y)
+        for (x = 0; x < W; ++x) {
+            size_t i = (size_t)y * W + x;
+            if ((int)x < (int)(W / 2u) - m) {
+                nl++;
+                keep += memcmp(out + 3 * i, a.rgb + 3 * i, 12u) == 0;
+                blur_off += fabsf(off[3 * i] - a.rgb[3 * i]) > 0.01f;
+            } else if ((int)x >= (int)(W / 2u) + m) {
+                double d;
+                nr++;
+                same += memcmp(out + 3 * i, a.rgb + 3 * i, 12u) != 0;
+                d = (double)a.rgb[3 * i] - 0.6; ein += d * d;
+                d = (double)out[3 * i] - 0.6; eout += d * d;
+            }
+        }
+    check(ok && nl > 100u && keep == nl, "sure_keeps_exact_input",
+          "%u of %u exact pixels kept bit for bit (ok %d)", keep, nl, ok);
+    check(ok && blur_off * 2u > nl, "sure_two_region_filter_blurs_without",
+          "without the selection %u of %u exact pixels moved by > 0.01 (want most: else the "
+          "test shows nothing)", blur_off, nl);
+    check(ok && nr > 100u && same * 10u >= nr * 9u && eout < 0.1 * ein, "sure_filters_noisy_region",
+          "%u of %u noisy pixels take a filtered value; MSE %g -> %g (want < 0.1x)", same, nr,
+          ein / (nr ? nr : 1u), eout / (nr ? nr : 1u));
+    free(out); free(off);
+    img_free(&a);
+}
+
+/* The centre derivative after pass 0 (the centre weight / the sum plus the luminance
+   stop's slope; the other weights fixed) against a central difference of the pass's output
+   luminance in the pixel's own luminance (double), on a noisy wall: within 2 % + 1e-3. And
+   the mean raw SURE of each candidate (the input, each pass) against the mean true squared
+   error of its luminance, both weighted by the display slope as the selection weighs them
+   (double), 96 x 64 pixels: within 0.06 of the mean weighted input variance s2 (SURE is
+   unbiased for a weighted mean with fixed weights; its own spread over 6144 pixels is about
+   0.02 s2, plus the derivative's centre-path approximation; a derivative of 0 would miss
+   the one-pass candidate by about 0.3 s2, of 1 every filtered one by about 2 s2). */
+static void t_sure_vs_truth(void)
+{
+    const uint32_t W = 96, H = 64;
+    fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+    fovpt_camera cam;
+    fov_gaze g = { 48.0f, 32.0f };
+    fovpt_denoise dn;
+    void *dm = NULL;
+    img a;
+    float *o1 = (float *)malloc((size_t)W * H * 12u), *o2 = (float *)malloc((size_t)W * H * 12u);
+    size_t n = (size_t)W * H, i, probe[4];
+    double dworst = 0.0, rworst = 0.0, ratio[8] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 }, s2 = 0.0;
+    uint32_t p, np = 0, j;
+    int ok;
+    img_alloc(&a, W, H);
+    sure_img(&a, 4242u, 0.15f);
+    fovpt_camera_init(&cam, W, H);
+    dc.width = W; dc.height = H; dc.skip_noise = 1e-9f; dc.spp_full = 1e30f; dc.fovea_step = 16.0f;
+    ok = o1 && o2 && dn_make(&dn, &dc, &dm);
+    ok = ok && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+         fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK;
+    for (p = 0; ok && p <= dn.passes; ++p) { /* candidate p: the output of p passes */
+        const float *src = dn.buf[p & 1u];
+        double sr = 0.0, st = 0.0;
+        if (p == 0u)
+            for (i = 0; i < n; ++i) s2 += (double)dn.sel[FOVPT__DN_SEL * i + 4u] / (double)n;
+        for (i = 0; i < n; ++i) {
+            const float *sp = dn.sel + FOVPT__DN_SEL * i;
+            double l = 0.2126 * (double)src[4 * i] + 0.7152 * (double)src[4 * i + 1] + 0.0722 * (double)src[4 * i + 2];
+            double w = fmin(166.9264, 0.25 / fmax((double)sp[6], 1e-30));
+            sr += (double)sp[4 + (p & 1u)];
+            st += (l - 0.5) * (l - 0.5) * w;
+        }
+        ratio[np++] = (sr - st) / (double)n / s2;
+        if (!(fabs(ratio[np - 1u]) <= rworst)) rworst = fabs(ratio[np - 1u]);
+        if (p < dn.passes) ok = fovpt_denoise_atrous_rows(&dn, p, 0, H) == FOV_OK;
+    }
+    check(ok && np == 6u && s2 > 0.0 && rworst < 0.06, "sure_mean_vs_true_mse",
+          "(SURE - true error) / s2 per candidate %.3f %.3f %.3f %.3f %.3f %.3f (want within 0.06; ok %d, %u)",
+          ratio[0], ratio[1], ratio[2], ratio[3], ratio[4], ratio[5], ok, np);
+    free(dm);
+    /* the derivative of one pass */
+    dc.levels = 1;
+    probe[0] = 5u * W + 7u; probe[1] = 20u * W + 24u; probe[2] = 53u * W + 80u; probe[3] = 11u * W + 60u;
+    for (j = 0; ok && j < 4u; ++j) {
+        size_t q = probe[j];
+        double dfr, fd, l1, l2;
+        float save[3];
+        int k;
+        fovpt_denoise_cfg d0 = dc;
+        ok = dn_make(&dn, &d0, &dm) && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+             fovpt_denoise_temporal_rows(&dn, 0, H) == FOV_OK && fovpt_denoise_atrous_rows(&dn, 0, 0, H) == FOV_OK;
+        dfr = ok ? (double)dn.sel[FOVPT__DN_SEL * q + 9u] : 0.0;
+        free(dm);
+        d0.no_sure = 1;
+        for (k = 0; k < 3; ++k) save[k] = a.rgb[3 * q + (size_t)k];
+        for (k = 0; k < 3; ++k) a.rgb[3 * q + (size_t)k] = save[k] + 1e-3f;
+        ok = ok && dn_once(&d0, &a, g, o1, NULL);
+        for (k = 0; k < 3; ++k) a.rgb[3 * q + (size_t)k] = save[k] - 1e-3f;
+        ok = ok && dn_once(&d0, &a, g, o2, NULL);
+        for (k = 0; k < 3; ++k) a.rgb[3 * q + (size_t)k] = save[k];
+        l1 = 0.2126 * (double)o1[3 * q] + 0.7152 * (double)o1[3 * q + 1] + 0.0722 * (double)o1[3 * q + 2];
+        l2 = 0.2126 * (double)o2[3 * q] + 0.7152 * (double)o2[3 * q + 1] + 0.0722 * (double)o2[3 * q + 2];
+        fd = (l1 - l2) / ((double)(save[0] + 1e-3f) - (double)(save[0] - 1e-3f));
+        if (!(fabs(fd - dfr) <= 0.02 * fabs(fd) + 1e-3)) dworst = fmax(dworst, fabs(fd - dfr) + 1.0);
+        if (j == 0u && !(dfr > 0.0 && dfr < 1.0)) dworst = 99.0;
+    }
+    check(ok && dworst == 0.0, "sure_derivative_vs_difference",
+          "the pass's centre derivative differs from the central difference (worst flag %g; ok %d)", dworst, ok);
+    free(o1); free(o2);
+    img_free(&a);
+}
+
 int main(void)
 {
     t_constant();
@@ -1302,5 +1520,8 @@ int main(void)
     t_skip_evidence();
     t_simd_scalar();
     t_simd_scalar_edge();
+    t_sure_constant();
+    t_sure_two_region();
+    t_sure_vs_truth();
     return fovcheck_summary();
 }
