@@ -1373,6 +1373,17 @@ static void fovea_ref(pt_scene *S, fov_gaze g, uint32_t spp, const float *ecc, f
     free(img);
 }
 
+/* the ground truth of S at gaze g: UNIFORM at gt_spp (seed 777), the fovea's pixels at
+   --gt-fovea-spp where that is more */
+static void ground_truth(pt_scene *S, fov_gaze g, uint32_t gt_spp, const float *ecc, float *ref, int threads)
+{
+    fovpt_config c = fovpt_config_default();
+    fovpt_stats st;
+    c.spp = gt_spp; c.seed = 777;
+    render(S, &c, g, ref, &st, threads);
+    if (g_gt_fovea_spp > gt_spp) fovea_ref(S, g, g_gt_fovea_spp, ecc, ref, threads);
+}
+
 static void ref_floor(pt_scene *S, fov_gaze g, uint32_t gt_spp, const float *ref, const float *ecc, int threads, uint32_t *check_spp,
                       double fl[5])
 {
@@ -1444,9 +1455,7 @@ scenes:
             fovpt_stats st;
             double t_u4;
             g = bench_gaze(&S, gi, ecc);
-            c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
-            render(&S, &c, g, ref, &st, threads);
-            if (g_gt_fovea_spp > gt_spp) fovea_ref(&S, g, g_gt_fovea_spp, ecc, ref, threads);
+            ground_truth(&S, g, gt_spp, ecc, ref, threads);
             {
                 double fl[5];
                 uint32_t cs, gf = g_gt_fovea_spp > gt_spp ? g_gt_fovea_spp : gt_spp;
@@ -1573,10 +1582,8 @@ static void robust_only(const char *out_path, uint32_t W, uint32_t H, uint32_t g
             fovpt_stats st;
             double t_u4;
             g = bench_gaze(&S, gi, ecc);
-            c = fovpt_config_default(); c.spp = gt_spp; c.seed = 777;
             g_mn = g_variant ? 1u : 0u; /* --mirror-nee: the ground truth with it (the same mean, less noise) */
-            render(&S, &c, g, ref, &st, threads);
-            if (g_gt_fovea_spp > gt_spp) fovea_ref(&S, g, g_gt_fovea_spp, ecc, ref, threads);
+            ground_truth(&S, g, gt_spp, ecc, ref, threads);
             g_mn = 0;
             method_cfg(&c, 0);
             t_u4 = render(&S, &c, g, img, &st, 1);
