@@ -3131,6 +3131,23 @@ static fov_result render_cfg(const fovpt_scene *sc, const fovpt_camera *cam, fov
     return e;
 }
 
+/* test_robust's pairs: c with robust 0 into im[0] and robust 4 into im[1] (allocated here),
+   W x H from (0, 0, -3), gaze at (12, 8) */
+static void render_robust_pair(const fovpt_scene *sc, uint32_t W, uint32_t H, fovpt_config c, float *im[2])
+{
+    fovpt_camera cam;
+    fov_gaze gz;
+    uint32_t r;
+    fovpt_camera_init(&cam, W, H);
+    cam.pos[2] = -3.0f;
+    gz.x = 12.0f; gz.y = 8.0f;
+    for (r = 0; r < 2; ++r) {
+        im[r] = (float *)malloc(W * H * 12u);
+        c.robust = r ? 4u : 0u;
+        render_cfg(sc, &cam, gz, &c, im[r], NULL);
+    }
+}
+
 static void test_robust(void)
 {
     uint32_t bad = 0, tried = 0, spp, g, i, trial, k;
@@ -3250,12 +3267,9 @@ static void test_robust(void)
         fovpt_shape sh[26];
         fovpt_scene_desc d;
         scene_buf b;
-        fovpt_camera cam;
         const uint32_t W = 24, H = 16;
         float *im[2];
         uint32_t edge = 0, diff = 0;
-        int r;
-        fov_gaze gz;
         fovpt_material_init(&m[0]); fovpt_material_init(&m[1]);
         m[0].albedo[0] = m[0].albedo[1] = m[0].albedo[2] = 0.0f;
         m[0].emission[0] = 20.0f; m[0].emission[1] = 10.0f; m[0].emission[2] = 5.0f;
@@ -3268,14 +3282,10 @@ static void test_robust(void)
         d.shapes = sh; d.num_shapes = 26; d.materials = m; d.num_materials = 2;
         d.background[0] = 0.3f; d.background[1] = 0.5f; d.background[2] = 0.7f; /* a chain's too */
         build(&b, &d);
-        fovpt_camera_init(&cam, W, H);
-        cam.pos[2] = -3.0f;
-        gz.x = 12.0f; gz.y = 8.0f;
-        for (r = 0; r < 2; ++r) {
+        {
             fovpt_config c = fovpt_config_default();
-            im[r] = (float *)malloc(W * H * 12u);
-            c.spp = 48u; c.seed = 3u; c.robust = r ? 4u : 0u;
-            render_cfg(&b.s, &cam, gz, &c, im[r], NULL);
+            c.spp = 48u; c.seed = 3u;
+            render_robust_pair(&b.s, W, H, c, im);
         }
         for (i = 0; i < W * H; ++i) {
             edge += im[0][3 * i] > 0.05f && im[0][3 * i] < 6.0f; /* under 30 % covered */
@@ -3300,14 +3310,10 @@ static void test_robust(void)
         fov_gaze gz;
         cornell(m, sh, &d, 0);
         build(&b, &d);
-        fovpt_camera_init(&cam, W, H);
-        cam.pos[2] = -3.0f;
-        gz.x = 12.0f; gz.y = 8.0f;
-        for (r = 0; r < 2; ++r) {
+        {
             fovpt_config c = fovpt_config_default();
-            im[r] = (float *)malloc(W * H * 12u);
-            c.mode = FOVPT_MODE_WHITTED; c.spp = 32u; c.seed = 8u; c.robust = r ? 4u : 0u;
-            render_cfg(&b.s, &cam, gz, &c, im[r], NULL);
+            c.mode = FOVPT_MODE_WHITTED; c.spp = 32u; c.seed = 8u;
+            render_robust_pair(&b.s, W, H, c, im);
         }
         for (i = 0; i < 3u * W * H; ++i) diff += memcmp(&im[0][i], &im[1][i], sizeof(float)) != 0;
         free(im[0]); free(im[1]); free(b.mem);
