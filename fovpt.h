@@ -4162,6 +4162,12 @@ FOVPT__PRIV int fovpt__tri_area2(const float *v0, const float *v1, const float *
 }
 
 FOVPT__PRIV int fovpt__emissive(const fovpt_material *m) { return fovpt__nonzero3(m->emission); }
+/* a shape or primitive of this type and material is one of cfg.mirror_nee's targets
+   (fovpt_scene.mirrors): a mirror sphere or quad */
+FOVPT__PRIV int fovpt__mirror_kind(uint32_t type, const fovpt_material *m)
+{
+    return (type == FOVPT_SHAPE_SPHERE || type == FOVPT_SHAPE_QUAD) && m->type == FOVPT_MAT_MIRROR;
+}
 
 /* Validates a description and computes the memory layout. */
 FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
@@ -4225,9 +4231,7 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
         if (s->material >= d->num_materials)
             FOVPT__FAIL(lg, FOV_ERR_INVALID_ARG, "scene: shapes[].material >= num_materials");
         em = fovpt__emissive(&d->materials[s->material]);
-        if ((s->type == FOVPT_SHAPE_SPHERE || s->type == FOVPT_SHAPE_QUAD) &&
-            d->materials[s->material].type == FOVPT_MAT_MIRROR)
-            ++n_mirrors; /* cfg.mirror_nee's targets */
+        n_mirrors += (uint64_t)fovpt__mirror_kind(s->type, &d->materials[s->material]);
         if (!fov__finite3(s->p) || !fov__finite3(s->u) || !fov__finite3(s->v) || !fov__finite(s->r))
             FOVPT__FAIL(lg, FOV_ERR_NOT_FINITE, "scene: a shapes[] value NaN or infinite");
         switch (s->type) {
@@ -4793,11 +4797,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
         for (i = 0; i < nl; ++i) cdf[i] /= total;
         cdf[nl - 1u] = 1.0f;
     }
-    /* cfg.mirror_nee's targets: the mirror spheres and quads */
     for (i = 0; i < nb; ++i)
-        if ((prims[i].type == FOVPT_SHAPE_SPHERE || prims[i].type == FOVPT_SHAPE_QUAD) &&
-            d->materials[prims[i].material].type == FOVPT_MAT_MIRROR)
-            mirrors[nm++] = i;
+        if (fovpt__mirror_kind(prims[i].type, &d->materials[prims[i].material])) mirrors[nm++] = i;
     FOV_ASSERT(nm == L.n_mirrors);
     s->mirrors = mirrors;
     s->num_mirrors = nm;
@@ -6064,13 +6065,13 @@ FOVPT__PRIV int fovpt__mirror_point(const fovpt__prim *mp, const float x[3], con
         return fov__finite(*g) && *g > 0.0f;
     }
 }
-/* whether hit h (a mirror's) is one that fovpt__mirror_point finds: a mirror quad, or a
+/* whether hit h is one that fovpt__mirror_point finds: a mirror quad, or a
    mirror sphere reached from outside (ray direction d) */
 FOVPT__PRIV int fovpt__mirror_target(const fovpt_scene *s, const fovpt_hit *h, const float d[3])
 {
     const fovpt__prim *p = (const fovpt__prim *)s->prims + h->slot;
-    if (p->type == FOVPT_SHAPE_QUAD) return 1;
-    return p->type == FOVPT_SHAPE_SPHERE && fov__dot(h->n, d) < 0.0f;
+    return fovpt__mirror_kind(p->type, &s->materials[h->material]) &&
+           (p->type == FOVPT_SHAPE_QUAD || fov__dot(h->n, d) < 0.0f);
 }
 /* cfg.mirror_nee at a Lambert or Phong vertex x (normal nx, outgoing wo): one light point
    seen through one mirror (picked uniformly), both segments tested for occlusion; adds
@@ -6162,8 +6163,7 @@ FOVPT__PRIV void fovpt__path(const fovpt_scene *s, const fovpt_config *c, const 
         }
         m = &s->materials[h.material];
         drop = ms == 2;
-        ms = ms == 1 && m->type == FOVPT_MAT_MIRROR && h.slot != FOVPT_PRIM_USER &&
-                     fovpt__mirror_target(s, &h, d)
+        ms = ms == 1 && h.slot != FOVPT_PRIM_USER && fovpt__mirror_target(s, &h, d)
                  ? 2
                  : 0;
         if (ms == 2) { /* what the light's weight needs (the sampled bounce's pdf is still x's) */
