@@ -4338,13 +4338,14 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     L->nodes = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
-    /* W-wide nodes: one with fewer than W children holds a whole binary subtree, whose
-       root has more than FOVPT__COMBINE primitives (fovpt__mark_small: a smaller subtree is
-       opened by its parent or is one leaf child), so there are at most
-       n / (FOVPT__COMBINE + 1) of them besides the root; one with W children
-       opened W - 1 of the at most n - 1 binary inner nodes; or the root alone */
+    /* W-wide nodes: one with fewer than W children holds a whole binary subtree (these are
+       disjoint), whose root has more than FOVPT__COMBINE primitives or a bounded shape
+       (fovpt__mark_small: a smaller subtree is opened by its parent or is one leaf child),
+       so there are at most n / (FOVPT__COMBINE + 1) + shapes of them besides the root; one
+       with W children opened W - 1 of the at most n - 1 binary inner nodes; or the root */
     L->nodes4 = (size_t)sz;
     sz += (uint64_t)sizeof(fovpt__node4) * ((uint64_t)L->n_bounded / (FOVPT__COMBINE + 1u) +
+                                            (uint64_t)(L->n_bounded - L->n_tris) +
                                             (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
     sz += 4u * (uint64_t)L->n_slots;
@@ -4434,16 +4435,27 @@ typedef struct fovpt__bin {
 /* Leaves sized to the leaf test's blocks. A small subtree is one of at most FOVPT__COMBINE
    primitives (4, one block of 4 lanes; 1 without SIMD, where every triangle is a test of its
    own and the binary leaves' boxes pay: +4 / +6 % instructions per terrain ray with leaves
-   of 4): its primitives are contiguous in order. Each inner small subtree is marked (n =
+   of 4) and no bounded shape (its leaf keeps its own box: see fovpt__build_bvh): its
+   primitives are contiguous in order. Each inner small subtree is marked (n =
    FOVPT__LEAF4 | count), laid out in one block (fovpt__leaf_layout) and never made a W-wide
    node of its own (fovpt__collapse4: a node opens it while it has room, else it is one leaf
-   child), so every W-wide node but the root holds more than FOVPT__COMBINE primitives (the
-   node bound of fovpt__plan). Combining sibling leaves outright, even only where the
-   parent's box is no larger than theirs together, tested more leaves (interior: 1.14 ->
-   1.50 per camera ray, +8 % instructions); the marks keep the leaves' own boxes where a node
-   has room for them. Children follow their parent in the node array, so one backward pass
-   sees them first. */
-FOVPT__PRIV void fovpt__mark_small(fovpt__node *nodes, uint32_t used)
+   child), so every W-wide node but the root holds more than FOVPT__COMBINE primitives or a
+   bounded shape (the node bound of fovpt__plan). Combining sibling leaves outright, even
+   only where the parent's box is no larger than theirs together, tested more leaves
+   (interior: 1.14 -> 1.50 per camera ray, +8 % instructions); the marks keep the leaves' own
+   boxes where a node has room for them. Children follow their parent in the node array, so
+   one backward pass sees them first. */
+FOVPT__PRIV int fovpt__leaf_has_shape(const fovpt__node *l, const uint32_t *order,
+                                      const fovpt__prim *prims)
+{
+    uint32_t k;
+    if (l->n & FOVPT__LEAF4) return 0; /* a marked subtree: triangles only */
+    for (k = 0; k < l->n; ++k)
+        if (prims[order[l->a + k]].type != FOVPT__TRI) return 1;
+    return 0;
+}
+FOVPT__PRIV void fovpt__mark_small(fovpt__node *nodes, uint32_t used, const uint32_t *order,
+                                   const fovpt__prim *prims)
 {
     uint32_t i = used;
     while (i-- > 0) {
@@ -4453,7 +4465,9 @@ FOVPT__PRIV void fovpt__mark_small(fovpt__node *nodes, uint32_t used)
         if (nd->n) continue;
         l = &nodes[nd->a]; r = l + 1;
         c = (l->n & ~FOVPT__LEAF4) + (r->n & ~FOVPT__LEAF4);
-        if (l->n && r->n && c <= FOVPT__COMBINE) nd->n = FOVPT__LEAF4 | c; /* else large: 0 */
+        if (l->n && r->n && c <= FOVPT__COMBINE && !fovpt__leaf_has_shape(l, order, prims) &&
+            !fovpt__leaf_has_shape(r, order, prims))
+            nd->n = FOVPT__LEAF4 | c; /* else large: 0 */
     }
 }
 /* The first slot of a node's subtree (its leftmost leaf). */
@@ -4582,10 +4596,11 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         work w = stack[--sp];
         fovpt__node *nd = &nodes[w.node];
         float clo[3], chi[3], best_cost, leaf_cost, area;
-        uint32_t best_axis = 3, best_split = 0, mid;
+        uint32_t best_axis = 3, best_split = 0, mid, ns = 0;
         for (k = 0; k < 3; ++k) { nd->b[k] = clo[k] = FLT_MAX; nd->b[3 + k] = chi[k] = -FLT_MAX; }
         for (i = w.start; i < w.start + w.count; ++i) {
             const float *q = pb + 9u * (size_t)order[i];
+            ns += prims[order[i]].type != FOVPT__TRI;
             for (k = 0; k < 3; ++k) {
                 nd->b[k] = fov__minf(nd->b[k], q[k]);
                 nd->b[3 + k] = fov__maxf(nd->b[3 + k], q[3 + k]);
@@ -4597,7 +4612,7 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
         /* whole blocks of 4 with SIMD (see below) */
         leaf_cost = FOVPT__COMBINE > 1u ? 4.0f * (float)((w.count + 3u) >> 2) : (float)w.count;
         best_cost = FLT_MAX;
-        if (w.count > leaf) {
+        if (w.count > leaf || (ns > 0u && w.count > 1u)) {
             uint32_t axis;
             for (axis = 0; axis < 3; ++axis) {
                 fovpt__bin bin[FOVPT__BINS_MAX];
@@ -4655,9 +4670,16 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
            just over a block splits where that pays (the children's costs stay per primitive:
            rounded there, the binned sweep loses its gradient; cubes441: 2.6 -> 2.5 block
            tests per camera ray, rounded sweep 4.6). */
-        if (w.count <= leaf ||
-            (w.count <= FOVPT__LEAF_MAX &&
-             (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost))) {
+        /* A bounded shape (sphere, quad, box, ...) is a leaf of its own: the leaf test hands
+           it to fovpt__isect alone, 40-100 instructions, where the W children's boxes cost
+           one SIMD pass, so only identical centroids (no split) keep it with others. Cornell
+           box, UNIFORM 2 spp at 160 x 120 (callgrind, the same image): 379M -> 221M
+           instructions, the mirrors 448M -> 329M, the interior 549M -> 383M (fovpt__isect per
+           ray 8 -> 2-3 on the Cornell box). */
+        if (ns > 0u ? w.count <= 1u || best_axis == 3u :
+            (w.count <= leaf ||
+             (w.count <= FOVPT__LEAF_MAX &&
+              (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost)))) {
             nd->a = w.start; nd->n = w.count;
             continue;
         }
@@ -4836,7 +4858,8 @@ FOVPT_API fov_result fovpt_scene_build(fovpt_scene *s, const fovpt_scene_desc *d
             s->nodes = base + L.nodes;
             {   /* the build data is spent: a copy of the build's order, then the leaves */
                 uint32_t *tmp = (uint32_t *)(void *)(base + L.pbox);
-                fovpt__mark_small((fovpt__node *)(void *)(base + L.nodes), s->num_nodes);
+                fovpt__mark_small((fovpt__node *)(void *)(base + L.nodes), s->num_nodes, order,
+                                  (const fovpt__prim *)s->prims);
                 for (i = 0; i < nb; ++i) tmp[i] = order[i];
                 s->num_slots = fovpt__leaf_layout((fovpt__node *)(void *)(base + L.nodes), tmp,
                                                   order, nb, L.n_slots);

@@ -355,6 +355,23 @@ static uint32_t wide_prims(const fovpt__node4 *n4, uint32_t i)
     }
     return c;
 }
+/* bounded shapes (not triangles) under W-wide node i */
+static uint32_t wide_shapes(const fovpt__node4 *n4, uint32_t i, const fovpt_scene *s)
+{
+    const fovpt__prim *pr = (const fovpt__prim *)s->prims;
+    uint32_t j, t, c = 0;
+    for (j = 0; j < FOVPT__W; ++j) {
+        uint32_t ch = n4[i].child[j];
+        if (n4[i].b[0][j] > n4[i].b[3][j]) continue;
+        if (ch & FOVPT__LEAF4) {
+            for (t = (ch & ~FOVPT__LEAF4) >> 5; t < ((ch & ~FOVPT__LEAF4) >> 5) + (ch & 31u); ++t)
+                c += s->order[t] < s->num_bounded && pr[s->order[t]].type != FOVPT__TRI;
+        } else {
+            c += wide_shapes(n4, ch, s);
+        }
+    }
+    return c;
+}
 /* primitives under binary node i (recursive: the test scenes' trees are shallow) */
 static uint32_t subtree_prims(const fovpt__node *n2, uint32_t i)
 {
@@ -389,10 +406,13 @@ static void test_bvh_random(void)
                leaf slot, every child box inside its parent's, 2..W children per inner node, one
                node per 1..W-1 binary inner nodes (reachable from the root; those of more than
                FOVPT__COMBINE primitives all opened), every node but the root over
-               FOVPT__COMBINE primitives (a smaller subtree is a leaf child), a leaf of <= 4
-               in one block of 4 slots unless the padding reserve is spent */
+               FOVPT__COMBINE primitives or holding a bounded shape (a smaller subtree is a
+               leaf child), a leaf of <= 4 in one block of 4 slots unless the padding reserve
+               is spent, a leaf with a bounded shape that shape alone (unless centroids
+               coincide) */
             static uint32_t seen[4000], stackn[4000];
-            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, nbig = 0, strad = 0, k, j;
+            uint32_t sp = 0, bad = 0, visited = 0, ninner = 0, nbig = 0, strad = 0, k, j, nshape = 0, shared = 0;
+            const fovpt__prim *pr = (const fovpt__prim *)b.s.prims;
             const uint32_t nslots = 4u * ((b.s.num_bounded + 3u) / 4u + (b.s.num_bounded + 15u) / 16u);
             const fovpt__node4 *n4 = (const fovpt__node4 *)b.s.nodes4;
             const fovpt__node *n2 = (const fovpt__node *)b.s.nodes;
@@ -411,14 +431,26 @@ static void test_bvh_random(void)
                 const fovpt__node4 *q = &n4[ni];
                 ++visited;
                 for (j = 0; j < FOVPT__W; ++j) {
-                    uint32_t c = q->child[j];
+                    uint32_t c = q->child[j], kk2;
                     if (q->b[0][j] > q->b[3][j]) continue; /* empty slot */
                     ++real;
                     if (c & FOVPT__LEAF4) {
                         uint32_t f = (c & ~FOVPT__LEAF4) >> 5, n = c & 31u, t;
+                        uint32_t shp = 0;
                         if (n > 16u || ((f + n - 1u) >> 2) - (f >> 2) > (n - 1u) >> 2) strad++;
                         for (t = f; t < f + n; ++t)
                             if (t >= b.s.num_slots || b.s.order[t] >= b.s.num_bounded || seen[b.s.order[t]]++) bad++;
+                            else shp += pr[b.s.order[t]].type != FOVPT__TRI;
+                        if (shp > 0u && n > 1u) {
+                            /* together only where no split exists: one centroid */
+                            float lo0[3], hi0[3], lo1[3], hi1[3];
+                            fovpt__prim_box(&pr[b.s.order[f]], lo0, hi0, 1);
+                            for (t = f + 1u; t < f + n && t < b.s.num_slots; ++t) {
+                                fovpt__prim_box(&pr[b.s.order[t]], lo1, hi1, 1);
+                                for (kk2 = 0; kk2 < 3; ++kk2)
+                                    if (0.5f * (lo0[kk2] + hi0[kk2]) != 0.5f * (lo1[kk2] + hi1[kk2])) shared++;
+                            }
+                        }
                     } else {
                         const fovpt__node4 *cq = &n4[c];
                         uint32_t cj, kk;
@@ -432,11 +464,25 @@ static void test_bvh_random(void)
                     }
                 }
                 if (real < 2u && !(ni == 0 && n2[0].n)) bad++;
-                if (ni != 0 && wide_prims(n4, ni) <= FOVPT__COMBINE) bad++; /* a small subtree is a leaf */
+                /* a small subtree without shapes is a leaf */
+                if (ni != 0 && wide_prims(n4, ni) <= FOVPT__COMBINE && wide_shapes(n4, ni, &b.s) == 0) bad++;
             }
-            for (k = 0; k < b.s.num_bounded; ++k) if (seen[k] != 1u) bad++;
+            for (k = 0; k < b.s.num_bounded; ++k) {
+                if (seen[k] != 1u) bad++;
+                nshape += pr[k].type != FOVPT__TRI;
+            }
+            check(nshape > 0 && shared == 0, N("random scene %d: each of its %u bounded shapes in a leaf of its own", sc, nshape),
+                  "%u leaf primitives beside a shape with another centroid", shared);
+            {   /* fovpt_scene_size lays out the bound below, shapes included */
+                fovpt__layout L;
+                size_t want = b.s.num_bounded / (FOVPT__COMBINE + 1u) + nshape + b.s.num_bounded / (FOVPT__W - 1u) + 1u;
+                memset(&L, 0, sizeof L);
+                check(fovpt__plan(&d, &L) == FOV_OK && (L.order - L.nodes4) / sizeof(fovpt__node4) >= want,
+                      N("random scene %d: the W-wide nodes' region holds the bound with its shapes", sc), "%zu < %zu",
+                      (size_t)((L.order - L.nodes4) / sizeof(fovpt__node4)), want);
+            }
             check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= nbig && b.s.num_nodes4 <= ninner &&
-                      b.s.num_nodes4 <= b.s.num_bounded / (FOVPT__COMBINE + 1u) + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
+                      b.s.num_nodes4 <= b.s.num_bounded / (FOVPT__COMBINE + 1u) + nshape + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
                       b.s.num_slots % 4u == 0 && b.s.num_slots >= b.s.num_bounded && b.s.num_slots <= nslots &&
                       (strad == 0 || b.s.num_slots == nslots),
                   N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children, leaves in blocks", sc, FOVPT__W, FOVPT__W),
