@@ -55,8 +55,9 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       leaves lie in whole blocks, padded where one would straddle two; a node's boxes are
       tested in SIMD passes of 4 (SSE on x86, NEON on AArch64, SIMD128 on wasm32 with
       -msimd128) or one of 8 (AVX), one after another elsewhere), nearest child first; leaf
-      triangles are stored in SoA blocks of four and tested four at a time the same way;
-      planes and the user hook are tested apart. Fewer than bvh_min_prims bounded
+      triangles are stored in SoA blocks of four and tested four at a time the same way; a
+      bounded shape is a leaf of its own, culled by its box; planes and the user hook are
+      tested apart. Fewer than bvh_min_prims bounded
       primitives: no BVH, a plain loop. The box test is conservative (NUMERICS): the BVH
       never misses a hit that the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
@@ -1283,10 +1284,12 @@ typedef struct fovpt_scene_desc {
     fovpt_user_hit_fn user_hit;      void *user;
     uint32_t bvh_min_prims;    /* no BVH below this many bounded primitives       0: 8 */
     uint32_t bvh_bins;         /* SAH bins per axis, 2 .. 32                      0: 16 */
-    uint32_t bvh_leaf;         /* primitives per leaf when SAH finds no better    0: 2
+    uint32_t bvh_leaf;         /* triangles per leaf when SAH finds no better     0: 2
                                   (1 .. 16; larger leaves only when SAH prefers them, up to 16;
                                   with SIMD the SAH counts a leaf's whole blocks of 4, and a
-                                  subtree of <= 4 may be one leaf child of the W-wide tree) */
+                                  subtree of <= 4 may be one leaf child of the W-wide tree);
+                                  a bounded shape is always a leaf of its own (shapes with one
+                                  centroid excepted) */
     uint32_t bvh_max_depth;    /* depth cap, 2 .. FOVPT_MAX_BVH_DEPTH; deeper is an error
                                                                        0: FOVPT_MAX_BVH_DEPTH */
     uint32_t skip_degenerate;  /* 1: drop zero-area triangles instead of failing */
