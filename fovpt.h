@@ -4342,14 +4342,17 @@ FOVPT__PRIV fov_result fovpt__plan(const fovpt_scene_desc *d, fovpt__layout *L)
     sz += (uint64_t)sizeof(fovpt__node) * L->n_nodes_max;
     sz = (sz + 15u) & ~(uint64_t)15u;
     /* W-wide nodes: one with fewer than W children holds a whole binary subtree (these are
-       disjoint), whose root has more than FOVPT__COMBINE primitives or a bounded shape
-       (fovpt__mark_small: a smaller subtree is opened by its parent or is one leaf child),
-       so there are at most n / (FOVPT__COMBINE + 1) + shapes of them besides the root; one
-       with W children opened W - 1 of the at most n - 1 binary inner nodes; or the root */
+       disjoint) of more than FOVPT__COMBINE primitives, or of two or more with a bounded
+       shape (fovpt__mark_small: a smaller subtree is opened by its parent or is one leaf
+       child): with a triangle weighing 1 and a shape FOVPT__COMBINE, each such subtree
+       weighs more than FOVPT__COMBINE, so there are at most (n + (FOVPT__COMBINE - 1) shapes) /
+       (FOVPT__COMBINE + 1) of them besides the root; one with W children opened W - 1 of
+       the at most n - 1 binary inner nodes; or the root */
     L->nodes4 = (size_t)sz;
-    sz += (uint64_t)sizeof(fovpt__node4) * ((uint64_t)L->n_bounded / (FOVPT__COMBINE + 1u) +
-                                            (uint64_t)(L->n_bounded - L->n_tris) +
-                                            (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
+    sz += (uint64_t)sizeof(fovpt__node4) *
+          (((uint64_t)L->n_bounded + (FOVPT__COMBINE - 1u) * (uint64_t)(L->n_bounded - L->n_tris)) /
+               (FOVPT__COMBINE + 1u) +
+           (uint64_t)L->n_bounded / (FOVPT__W - 1u) + 1u);
     L->order = (size_t)sz;
     sz += 4u * (uint64_t)L->n_slots;
     sz = (sz + 15u) & ~(uint64_t)15u;

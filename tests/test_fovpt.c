@@ -475,14 +475,14 @@ static void test_bvh_random(void)
                   "%u leaf primitives beside a shape with another centroid", shared);
             {   /* fovpt_scene_size lays out the bound below, shapes included */
                 fovpt__layout L;
-                size_t want = b.s.num_bounded / (FOVPT__COMBINE + 1u) + nshape + b.s.num_bounded / (FOVPT__W - 1u) + 1u;
+                size_t want = (b.s.num_bounded + (FOVPT__COMBINE - 1u) * nshape) / (FOVPT__COMBINE + 1u) + b.s.num_bounded / (FOVPT__W - 1u) + 1u;
                 memset(&L, 0, sizeof L);
                 check(fovpt__plan(&d, &L) == FOV_OK && (L.order - L.nodes4) / sizeof(fovpt__node4) >= want,
                       N("random scene %d: the W-wide nodes' region holds the bound with its shapes", sc), "%zu < %zu",
                       (size_t)((L.order - L.nodes4) / sizeof(fovpt__node4)), want);
             }
             check(bad == 0 && visited == b.s.num_nodes4 && (FOVPT__W - 1u) * b.s.num_nodes4 >= nbig && b.s.num_nodes4 <= ninner &&
-                      b.s.num_nodes4 <= b.s.num_bounded / (FOVPT__COMBINE + 1u) + nshape + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
+                      b.s.num_nodes4 <= (b.s.num_bounded + (FOVPT__COMBINE - 1u) * nshape) / (FOVPT__COMBINE + 1u) + b.s.num_bounded / (FOVPT__W - 1u) + 1u && /* fovpt_scene_size's bound */
                       b.s.num_slots % 4u == 0 && b.s.num_slots >= b.s.num_bounded && b.s.num_slots <= nslots &&
                       (strad == 0 || b.s.num_slots == nslots),
                   N("random scene %d: %u-wide BVH covers every primitive once, boxes nested, 2-%u children, leaves in blocks", sc, FOVPT__W, FOVPT__W),
