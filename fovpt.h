@@ -538,9 +538,11 @@ NUMERICS
    - BVH = brute force: the box test is conservative, so fovpt_intersect and fovpt_occluded
      find every hit fovpt_intersect_brute finds (same t: both run the same primitive tests;
      the four-lane triangle test performs the same float operations in the same order on
-     every SIMD path, FMA contraction off). The closest hit is canonical: the smallest t,
-     and among equal t the lowest primitive slot (the brute-force loop's order), whatever
-     order the traversal visits the leaves in, so the BVH returns the same primitive too.
+     every SIMD path, FMA contraction off: the implementation turns it off itself, for gcc
+     in every mode and for clang, whose -ffp-contract=fast and -ffast-math override that).
+     The closest hit is canonical: the smallest t, and among equal t the lowest primitive
+     slot (the brute-force loop's order), whatever order the traversal visits the leaves in,
+     so the BVH returns the same primitive too.
      Slabs (Kay-Kajiya) with 1 / d = +inf for a zero direction component; a ray lying in a
      slab's face plane gives 0 * inf = NaN, which the max/min operand order drops (the slab
      does not constrain it), on every SIMD path and the scalar one (FOVPT_NO_SIMD,
@@ -1969,14 +1971,13 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    phi_normal take the scalar pass. Each lane performs the scalar pass's float operations in
    its order (a tap the scalar pass skips adds +0), so the image is bit-identical to
    FOVPT_NO_SIMD's (tests/test_fovpt_denoise.c: atrous_simd_equals_scalar_*, widths 13,
-   30, 101, an input that overflows the variance) when the compiler does not contract the
-   scalar a * b + c into FMA: with FMA enabled (-mfma, -march=native) gcc's default
-   -ffp-contract=fast and clang's default contract it, so such a build rounds a few values
-   differently; -ffp-contract=off keeps them equal. Measured (a harness outside the
-   repository: callgrind, one LAYERS KTH-radius frame 320 x 240, instructions per pixel,
-   temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016, mesh100k
-   1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved in one
-   program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
+   30, 101, an input that overflows the variance) as the implementation keeps the compiler
+   from contracting the scalar a * b + c into FMA (NUMERICS; clang's -ffp-contract=fast and
+   -ffast-math override it, and such a build rounds a few values differently). Measured (a
+   harness outside the repository: callgrind, one LAYERS KTH-radius frame 320 x 240,
+   instructions per pixel, temporal / a-trous passes): cubes441 1204 / 6631 -> 1204 / 4016,
+   mesh100k 1204 / 7192 -> 1204 / 3817; time of fovpt_denoise_run, old and new interleaved
+   in one program: 1.73x (cubes441), 1.85x (mesh100k) faster (medians of 21).
    Memory: fovpt_denoise_size, 204 bytes per pixel (two history frames of 12 floats, two
    filter buffers of 4, the coarseness, the guides packed, the SURE selection's 10 floats;
    164 with no_sure); no threads, no allocation. */
@@ -2130,6 +2131,15 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
 
 #if defined(FOVPT_IMPLEMENTATION) && !defined(FOVPT_IMPL_INCLUDED)
 #define FOVPT_IMPL_INCLUDED
+/* No FMA contraction in the implementation, whatever the build's flags (gcc's gnu modes and
+   clang contract a * b + c into one rounding where the target has FMA): the SIMD paths and
+   their scalar twins, and the BVH and brute force, then round alike (NUMERICS). */
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC push_options
+#pragma GCC optimize("fp-contract=off")
+#endif
 /* ==== FOV_SHARED_BEGIN impl: shared by fovsdf.h, fovlp.h and fovpt.h ========================= */
 /* Byte-identical in the three headers, compiled once per translation unit (edit
    tools/fov_shared.h, then run `python3 tools/sync_shared.py`). Private: every name starts
@@ -7841,7 +7851,8 @@ FOVPT__PRIV void fovpt__smooth(const fovpt_ctx *ctx, uint32_t x, uint32_t y, flo
    60 degrees, but 1e-5 at 89 degrees, where a pixel at e = T was decided outside (a
    reviewer's case). Below 2 degrees the cross product's rounding (eps / sin e relative)
    differs between this copy and fov__ecc_deg's where a compiler contracts them into FMA
-   differently (gnu99, -mfma: decisions contradicted at e < 0.2 degrees, a second review). */
+   differently (gnu99, -mfma: decisions contradicted at e < 0.2 degrees, a second review;
+   the implementation now turns contraction off, NUMERICS). */
 FOVPT__PRIV int fovpt__ecc_side(float s2, float co, float tan2)
 {
     float r;
@@ -9035,7 +9046,7 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
 /* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
    columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
    order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
-   contract the scalar code into FMA (see the denoiser's block above) */
+   contract the scalar code into FMA (the implementation turns that off: NUMERICS) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                uint32_t y)
 {
@@ -9456,6 +9467,11 @@ FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *ou
     return fovpt_denoise_resolve_rows(dn, 0, dn->cfg.height, out);
 }
 
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT DEFAULT
+#elif defined(__GNUC__)
+#pragma GCC pop_options
+#endif
 #endif /* FOVPT_IMPLEMENTATION */
 
 /* ==== FOV_SHARED_BEGIN license ============================================================== */
