@@ -6,7 +6,7 @@
    make bench-pt FULL=1     the same rows at 640x480, ground truth 1024 spp
    ./build/bench_pt [--quick] [--full] [--throughput] [--w W --h H] [--gt-spp N] [--out FILE]
                     [--threads N] [--temporal] [--lp] [--denoise] [--robust] [--mirror-nee]
-                    [--ref-floor] [--scene N] [--gt-fovea-spp N] [--dn-no-sure]
+                    [--ref-floor] [--scene N] [--gt-fovea-spp N] [--dn-no-sure] [--seeds N]
                     (--throughput: only the fovpt / Embree ray-rate rows; --temporal: only
                     pt_temporal.csv, written beside FILE; --fovea-spp: prints how the Cornell
                     box's fovea error falls with spp, see README; --denoise, --robust,
@@ -1076,6 +1076,7 @@ static double g_dn_ms;           /* the denoiser's share of the last render, ms 
 static int g_dn_scene = -1;      /* --denoise --scene N: that scene only */
 
 static uint32_t g_dn_no_sure; /* --dn-no-sure: the denoiser with cfg.no_sure = 1 */
+static int g_dn_seeds = 1;    /* --seeds N: the _dn rows' and their twins' PSNR over N seeds */
 
 static double render_dn(pt_scene *S, const fovpt_config *cfg, fov_gaze g, float *rgb, fovpt_stats *st)
 {
@@ -1151,6 +1152,33 @@ static void dn_side_row(FILE *side, const char *scene, const char *method, const
             fl, fl1, t, tdn);
 }
 
+/* --seeds N: ps (the PSNR of the run with config c, seed c->seed) replaced by the PSNR of
+   the mean MSE per field over N renders of c, with the seeds c->seed + 7919 s (s = 0 .. N - 1;
+   s = 0 is the image already measured), with the denoiser when dn; the time, FLIP and the
+   equal-time calibration stay those of the first run */
+static void seeds_psnr(pt_scene *S, const fovpt_config *c, int dn, fov_gaze g, const float *ref, const float *ecc, double ps[5])
+{
+    size_t np = (size_t)S->cam.width * S->cam.height;
+    double mse[5], p2[5];
+    float *tmp;
+    int s, f;
+    if (g_dn_seeds <= 1) return;
+    tmp = (float *)malloc(np * 12u);
+    for (f = 0; f < 5; ++f) mse[f] = pow(10.0, -ps[f] / 10.0);
+    for (s = 1; s < g_dn_seeds; ++s) {
+        fovpt_config cs = *c;
+        fovpt_stats st;
+        cs.seed = c->seed + 7919u * (uint32_t)s;
+        g_dn = dn;
+        render(S, &cs, g, tmp, &st, 1);
+        g_dn = 0;
+        psnr_fields(tmp, ref, ecc, np, p2);
+        for (f = 0; f < 5; ++f) mse[f] += pow(10.0, -p2[f] / 10.0);
+    }
+    for (f = 0; f < 5; ++f) ps[f] = -10.0 * log10(mse[f] / (double)g_dn_seeds);
+    free(tmp);
+}
+
 /* the _dn rows of one scene and gaze; t_u4 = uniform4's time without a denoiser (same run) */
 static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const char *gz, fov_gaze g, const float *ref, const float *ecc,
                     double t_u4)
@@ -1173,6 +1201,7 @@ static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
             g_dn = 0;
             psnr_fields(img, ref, ecc, np, ps);
             flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+            seeds_psnr(S, &c, d, g, ref, ecc, ps);
             snprintf(mname, sizeof mname, "%s%s", names[m], d ? "_dn" : "");
             if (d) row(csv, nm, mname, gz, "default", &st, t, ps, 0, t_u4, -1.0, fovea_spp(&c));
             t_m[m][d] = t; /* the pilots of the equal-time rows, each its own */
@@ -1195,6 +1224,7 @@ static void dn_rows(FILE *csv, FILE *side, pt_scene *S, const char *nm, const ch
                 g_dn = 0;
                 psnr_fields(img, ref, ecc, np, ps);
                 flip_of(img, ref, ecc, W, H, S->cam.fov_y_deg, g, &fl, &fl1);
+                seeds_psnr(S, &c, d, g, ref, ecc, ps);
                 snprintf(mname, sizeof mname, "%s%s%s", names[m], fov_only ? "_fovea" : "", d ? "_dn" : "");
                 if (d) row(csv, nm, mname, gz, "eqtime_uniform4", &st, t, ps, 0, t_u4, t_u4, fovea_spp(&c));
                 dn_side_row(side, nm, mname, gz, "eqtime_uniform4", ps, fl, fl1, t, d ? g_dn_ms : 0.0);
@@ -1625,6 +1655,8 @@ static void usage(FILE *f)
           "  --gt-fovea-spp N    with --denoise / --robust / --mirror-nee / --ref-floor: the fovea's (e < 3.3 degrees)\n"
           "                      ground truth at N spp (default: --gt-spp)\n"
           "  --dn-no-sure        with --denoise: the denoiser without its SURE selection (cfg.no_sure)\n"
+          "  --seeds N           with --denoise: the _dn rows' and their twins' PSNR from the mean MSE\n"
+          "                      over N seeds (each row's config, calibrated once; default 1)\n"
           "  --threads N         render threads (default 2)\n"
           "  --out FILE          CSV (default bench/results/pt.csv)\n"
           "  -h, --help          this text\n", f);
@@ -1656,6 +1688,10 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--gt-spp") && i + 1 < argc) gt_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--gt-fovea-spp") && i + 1 < argc) g_gt_fovea_spp = (uint32_t)atoi(argv[++i]);
         else if (!strcmp(argv[i], "--dn-no-sure")) g_dn_no_sure = 1;
+        else if (!strcmp(argv[i], "--seeds") && i + 1 < argc) {
+            g_dn_seeds = atoi(argv[++i]);
+            if (g_dn_seeds < 1 || g_dn_seeds > 1000) { fprintf(stderr, "--seeds must be in [1, 1000]\n"); return 2; }
+        }
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) { out_path = argv[++i]; out_set = 1; }
         else { fprintf(stderr, "unknown option %s\n", argv[i]); usage(stderr); return 2; }
