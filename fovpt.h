@@ -5338,10 +5338,13 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const float ifx = r->ig[0], ify = r->ig[1], ifz = r->ig[2];
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
             voz = FOVPT__V_SET1(r->o[2]);
-        const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
-            viz = FOVPT__V_SET1(r->inv[2]);
-        const fovpt__v4 vfx = FOVPT__V_SET1(ifx), vfy = FOVPT__V_SET1(ify),
-            vfz = FOVPT__V_SET1(ifz);
+        /* the slab distances as (o - plane) * -inv: -(plane - o) and -inv exactly, so the
+           same floats as (plane - o) * inv (NaN where that is NaN), and with AVX the plane's
+           load folds into the subtraction (o - [mem]) */
+        const fovpt__v4 vix = FOVPT__V_SET1(-r->inv[0]), viy = FOVPT__V_SET1(-r->inv[1]),
+            viz = FOVPT__V_SET1(-r->inv[2]);
+        const fovpt__v4 vfx = FOVPT__V_SET1(-ifx), vfy = FOVPT__V_SET1(-ify),
+            vfz = FOVPT__V_SET1(-ifz);
         const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgk = FOVPT__V_SET1(gk);
         fovpt__v4 vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
 #if FOVPT__RAYV
@@ -5354,9 +5357,10 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
 #endif
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
-            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
-            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
-            wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
+            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(-r->inv[0]),
+            wiy = _mm256_set1_ps(-r->inv[1]), wiz = _mm256_set1_ps(-r->inv[2]),
+            wfx = _mm256_set1_ps(-ifx), wfy = _mm256_set1_ps(-ify), wfz = _mm256_set1_ps(-ifz),
+            wgk = _mm256_set1_ps(gk);
         __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
         (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
         (void)vox; (void)voy; (void)voz;
@@ -5393,7 +5397,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     uint32_t hm, j;
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
                     __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
-#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
+#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(o, _mm256_loadu_ps(nd->b[row])), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wfx), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
@@ -5401,12 +5405,12 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
+                    u0 = _mm256_add_ps(u0, wgk); /* + 0 (tmin >= 0) is exact: u0 is no NaN */
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
                     /* four children per pass, the passes written out (W / 4 of them) */
-#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
+#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(o, FOVPT__V_LD(nd->b[row] + j)), i)
 #define FOVPT__PASS4(j, bits)                                                              \
     do {                                                                                   \
         fovpt__v4 t0 = vtmin, u0 = vtmax;                                                  \
@@ -5416,7 +5420,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy, j), u0);                             \
         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz, j), t0);                             \
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz, j), u0);                             \
-        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);                                         \
+        u0 = FOVPT__V_ADD(u0, vgk); /* + 0 is exact: u0 is no NaN */                       \
         bits = FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;                                    \
         FOVPT__V_ST(tv + j, t0);                                                           \
     } while (0)
