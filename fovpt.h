@@ -5405,7 +5405,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    u0 = _mm256_add_ps(u0, wgk); /* + 0 (tmin >= 0) is exact: u0 is no NaN */
+                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, wgk); /* a branch: off the chain */
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
@@ -5420,7 +5420,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fy, voy, vfy, j), u0);                             \
         t0 = FOVPT__V_MAXT(FOVPT__SLAB4(nz, voz, viz, j), t0);                             \
         u0 = FOVPT__V_MINT(FOVPT__SLAB4(fz, voz, vfz, j), u0);                             \
-        u0 = FOVPT__V_ADD(u0, vgk); /* + 0 is exact: u0 is no NaN */                       \
+        if (gk > 0.0f) u0 = FOVPT__V_ADD(u0, vgk);                                         \
         bits = FOVPT__M_BITS(FOVPT__V_LE(t0, u0)) << j;                                    \
         FOVPT__V_ST(tv + j, t0);                                                           \
     } while (0)
