@@ -5338,13 +5338,10 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         const float ifx = r->ig[0], ify = r->ig[1], ifz = r->ig[2];
         const fovpt__v4 vox = FOVPT__V_SET1(r->o[0]), voy = FOVPT__V_SET1(r->o[1]),
             voz = FOVPT__V_SET1(r->o[2]);
-        /* the slab distances as (o - plane) * -inv: -(plane - o) and -inv exactly, so the
-           same floats as (plane - o) * inv (NaN where that is NaN), and with AVX the plane's
-           load folds into the subtraction (o - [mem]) */
-        const fovpt__v4 vix = FOVPT__V_SET1(-r->inv[0]), viy = FOVPT__V_SET1(-r->inv[1]),
-            viz = FOVPT__V_SET1(-r->inv[2]);
-        const fovpt__v4 vfx = FOVPT__V_SET1(-ifx), vfy = FOVPT__V_SET1(-ify),
-            vfz = FOVPT__V_SET1(-ifz);
+        const fovpt__v4 vix = FOVPT__V_SET1(r->inv[0]), viy = FOVPT__V_SET1(r->inv[1]),
+            viz = FOVPT__V_SET1(r->inv[2]);
+        const fovpt__v4 vfx = FOVPT__V_SET1(ifx), vfy = FOVPT__V_SET1(ify),
+            vfz = FOVPT__V_SET1(ifz);
         const fovpt__v4 vtmin = FOVPT__V_SET1(tmin), vgk = FOVPT__V_SET1(gk);
         fovpt__v4 vtmax = FOVPT__V_SET1(*tmax * FOVPT__BOX_GROW);
 #if FOVPT__RAYV
@@ -5356,11 +5353,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         (void)vtmin;
 #endif
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+        /* the slab distances as (o - plane) * -inv: -(plane - o) and -inv exactly, so the
+           same floats as (plane - o) * inv (NaN where that is NaN), and the plane's load
+           folds into the subtraction (vsubps o, [mem]); SSE without VEX gains nothing (the
+           load cannot fold, o needs a copy), so the 4-lane passes keep (plane - o) * inv */
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
             woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(-r->inv[0]),
             wiy = _mm256_set1_ps(-r->inv[1]), wiz = _mm256_set1_ps(-r->inv[2]),
-            wfx = _mm256_set1_ps(-ifx), wfy = _mm256_set1_ps(-ify), wfz = _mm256_set1_ps(-ifz),
-            wgk = _mm256_set1_ps(gk);
+            wfx = _mm256_set1_ps(-ifx), wfy = _mm256_set1_ps(-ify), wfz = _mm256_set1_ps(-ifz);
         __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
         (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
         (void)vox; (void)voy; (void)voz;
@@ -5405,12 +5405,12 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nz, woz, wiz), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fz, woz, wfz), u0);
 #undef FOVPT__SLAB8
-                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, wgk); /* a branch: off the chain */
+                    if (gk > 0.0f) u0 = _mm256_add_ps(u0, _mm256_set1_ps(gk));
                     hm = (uint32_t)_mm256_movemask_ps(_mm256_cmp_ps(t0, u0, _CMP_LE_OQ));
                     _mm256_storeu_ps(tv, t0);
 #elif FOVPT__SIMD
                     /* four children per pass, the passes written out (W / 4 of them) */
-#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(o, FOVPT__V_LD(nd->b[row] + j)), i)
+#define FOVPT__SLAB4(row, o, i, j) FOVPT__V_MUL(FOVPT__V_SUB(FOVPT__V_LD(nd->b[row] + j), o), i)
 #define FOVPT__PASS4(j, bits)                                                              \
     do {                                                                                   \
         fovpt__v4 t0 = vtmin, u0 = vtmax;                                                  \
