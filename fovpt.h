@@ -5392,10 +5392,14 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
         (void)vtmin;
 #endif
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
+        /* the slab distances as (o - plane) * -inv: -(plane - o) and -inv exactly, so the
+           same floats as (plane - o) * inv (NaN where that is NaN), and the plane's load
+           folds into the subtraction (vsubps o, [mem]); SSE without VEX gains nothing (the
+           load cannot fold, o needs a copy), so the 4-lane passes keep (plane - o) * inv */
         const __m256 wox = _mm256_set1_ps(r->o[0]), woy = _mm256_set1_ps(r->o[1]),
-            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(r->inv[0]),
-            wiy = _mm256_set1_ps(r->inv[1]), wiz = _mm256_set1_ps(r->inv[2]),
-            wfx = _mm256_set1_ps(ifx), wfy = _mm256_set1_ps(ify), wfz = _mm256_set1_ps(ifz);
+            woz = _mm256_set1_ps(r->o[2]), wix = _mm256_set1_ps(-r->inv[0]),
+            wiy = _mm256_set1_ps(-r->inv[1]), wiz = _mm256_set1_ps(-r->inv[2]),
+            wfx = _mm256_set1_ps(-ifx), wfy = _mm256_set1_ps(-ify), wfz = _mm256_set1_ps(-ifz);
         __m256 wtmax = _mm256_set1_ps(*tmax * FOVPT__BOX_GROW);
         (void)vix; (void)viy; (void)viz; (void)vfx; (void)vfy; (void)vfz; (void)vgk; (void)vtmax;
         (void)vox; (void)voy; (void)voz;
@@ -5432,7 +5436,7 @@ FOVPT__PRIV uint32_t fovpt__closest(const fovpt_scene *s, const fovpt__ray *r, f
                     uint32_t hm, j;
 #if FOVPT__SIMD == 1 && FOVPT_BVH_WIDTH == 8 && defined(__AVX__)
                     __m256 t0 = _mm256_set1_ps(tmin), u0 = wtmax;
-#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(_mm256_loadu_ps(nd->b[row]), o), i)
+#define FOVPT__SLAB8(row, o, i) _mm256_mul_ps(_mm256_sub_ps(o, _mm256_loadu_ps(nd->b[row])), i)
                     t0 = _mm256_max_ps(FOVPT__SLAB8(nx, wox, wix), t0);
                     u0 = _mm256_min_ps(FOVPT__SLAB8(fx, wox, wfx), u0);
                     t0 = _mm256_max_ps(FOVPT__SLAB8(ny, woy, wiy), t0);
