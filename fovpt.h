@@ -1,4 +1,4 @@
-/* fovpt.h - v0.12.0 - foveated path tracing: layers, zones, selective supersampling
+/* fovpt.h - v0.13.0 - foveated path tracing: layers, zones, selective supersampling
                      - MIT or public domain (see end of file)
 
    In *one* C or C++ file, #define FOVPT_IMPLEMENTATION (or FOV_IMPL, for every fov header)
@@ -652,6 +652,16 @@ table of that work; "the thesis" in a Phong or Catmull-Rom comment is Axblad 202
 LICENSE: see end of file.
 
 RECENT REVISION HISTORY
+   0.13.0 (2026-12-06) A bounded shape (sphere, quad, box) is a BVH leaf of its own, never in a
+                      combined leaf block, so the W-wide node's box test culls it: Cornell
+                      box frames 1.6-1.7x fewer instructions, the mirror room and the
+                      interior 1.4-1.5x, the same images; the scene memory reserves up to
+                      (n + 3 shapes) / 5 more W-wide nodes with SIMD. The implementation
+                      turns FMA contraction off itself (gcc in every mode, clang but for
+                      -ffp-contract=fast / -ffast-math): built with -mfma in gnu mode, the
+                      BVH had missed hits that brute force finds. AVX node test: slab
+                      distances as (o - plane) * -inv, the same floats (3-4 % fewer
+                      instructions per terrain ray).
    0.12.0 (2026-12-05) cfg.mirror_nee (NEXT-EVENT ESTIMATION THROUGH MIRRORS): next-event
                       estimation through mirror spheres and quads (Mitchell and Hanrahan 1992),
                       unbiased, opt-in; fovpt_scene.mirrors / num_mirrors list them (the scene
@@ -802,9 +812,9 @@ RECENT REVISION HISTORY
 #include <stdint.h>
 
 #define FOVPT_VERSION_MAJOR 0
-#define FOVPT_VERSION_MINOR 12
+#define FOVPT_VERSION_MINOR 13
 #define FOVPT_VERSION_PATCH 0
-#define FOVPT_VERSION_STRING "0.12.0"
+#define FOVPT_VERSION_STRING "0.13.0"
 
 #ifndef FOVPT_MAX_LAYERS
 #define FOVPT_MAX_LAYERS 8
