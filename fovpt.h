@@ -4698,11 +4698,12 @@ FOVPT__PRIV fov_result fovpt__build_bvh(fovpt_scene *s, fovpt__node *nodes, uint
            tests per camera ray, rounded sweep 4.6). */
         /* A bounded shape (sphere, quad, box, ...) is a leaf of its own: the leaf test hands
            it to fovpt__isect alone, 40-100 instructions, where the W children's boxes cost
-           one SIMD pass, so only identical centroids (no split) keep it with others. Cornell
+           one SIMD pass, so only identical centroids (no split) keep it with others (up to
+           FOVPT__LEAF_MAX; more are split in the middle, as triangles are). Cornell
            box, UNIFORM 2 spp at 160 x 120 (callgrind, the same image): 379M -> 221M
            instructions, the mirrors 448M -> 329M, the interior 549M -> 383M (fovpt__isect per
            ray 8 -> 2-3 on the Cornell box). */
-        if (ns > 0u ? w.count <= 1u || best_axis == 3u :
+        if (ns > 0u ? w.count <= 1u || (best_axis == 3u && w.count <= FOVPT__LEAF_MAX) :
             (w.count <= leaf ||
              (w.count <= FOVPT__LEAF_MAX &&
               (best_axis == 3u || !(area > 0.0f) || 1.5f + best_cost / area >= leaf_cost)))) {

@@ -2494,6 +2494,66 @@ static void test_bvh_size_bound(void)
           "%u mismatches, %u hits of %u rays", mism, hits, rays);
 }
 
+/* shapes that share one centroid (concentric spheres, boxes about one centre, with triangles
+   around them): no split separates them, so they may share a leaf, but never more than
+   FOVPT__LEAF_MAX (a leaf child's count has 5 bits); the BVH still equals brute force */
+static void test_bvh_concentric(void)
+{
+    static const uint32_t counts[4] = { 3, 16, 17, 40 };
+    int ci;
+    for (ci = 0; ci < 4; ++ci) {
+        uint32_t n = counts[ci], nt = 20, i, k, mism = 0, hits = 0, bad = 0, j;
+        fovpt_shape sh[40];
+        float pos[9u * 20u];
+        fovpt_material m;
+        fovpt_mesh mesh;
+        fovpt_scene_desc d;
+        scene_buf b;
+        for (i = 0; i < n; ++i) {
+            float lo[3], hi[3], r = 0.1f + 0.05f * (float)i;
+            if (i % 3 == 2) {
+                for (k = 0; k < 3; ++k) { lo[k] = 1.0f - r; hi[k] = 1.0f + r; }
+                fovpt_shape_box(&sh[i], lo, hi, 0);
+            } else {
+                fovpt_shape_sphere(&sh[i], 1.0f, 1.0f, 1.0f, r, 0);
+            }
+        }
+        for (i = 0; i < 9u * nt; ++i) pos[i] = frand(-6.0f, 6.0f);
+        fovpt_material_init(&m);
+        memset(&mesh, 0, sizeof mesh);
+        mesh.positions = pos; mesh.num_vertices = 3u * nt; mesh.num_triangles = nt;
+        fovpt_scene_desc_init(&d);
+        d.shapes = sh; d.num_shapes = n; d.meshes = &mesh; d.num_meshes = 1; d.materials = &m; d.num_materials = 1;
+        d.bvh_min_prims = 1; d.skip_degenerate = 1;
+        if (!check(build(&b, &d) == FOV_OK && b.s.nodes4 != NULL, N("%u concentric shapes build a BVH", n), "no BVH")) {
+            free(b.mem);
+            continue;
+        }
+        {
+            const fovpt__node4 *n4 = (const fovpt__node4 *)b.s.nodes4;
+            for (i = 0; i < b.s.num_nodes4; ++i)
+                for (j = 0; j < FOVPT__W; ++j)
+                    if (!(n4[i].b[0][j] > n4[i].b[3][j]) && (n4[i].child[j] & FOVPT__LEAF4) &&
+                        (n4[i].child[j] & 31u) > FOVPT__LEAF_MAX)
+                        bad++;
+        }
+        for (i = 0; i < 3000; ++i) {
+            float o[3], dd[3];
+            fovpt_hit h1, h2;
+            int a1, a2;
+            for (k = 0; k < 3; ++k) { o[k] = frand(-5.0f, 7.0f); dd[k] = frand(-1.0f, 1.0f); }
+            a1 = fovpt_intersect(&b.s, o, dd, 0.0f, FLT_MAX, &h1);
+            a2 = fovpt_intersect_brute(&b.s, o, dd, 0.0f, FLT_MAX, &h2);
+            if (a1 != a2 || (a1 && (!(h1.t <= h2.t && h1.t >= h2.t) || h1.prim != h2.prim))) mism++;
+            hits += (uint32_t)a2;
+        }
+        check(bad == 0 && mism == 0 && hits > 300,
+              N("%u concentric shapes: leaves of at most %u, BVH = brute force on 3000 rays", n, FOVPT__LEAF_MAX),
+              "%u leaves over the limit, %u mismatches, %u hits", bad, mism, hits);
+        free(b.mem);
+    }
+}
+
 static void test_bvh_adversarial(void)
 {
     static const float scales[6] = { 1e-3f, 0.1f, 1.0f, 10.0f, 1e3f, 1e5f };
@@ -3588,6 +3648,7 @@ int main(void)
     test_f7_regressions();
     test_scene_bad();
     test_bvh_random();
+    test_bvh_concentric();
     test_bvh_size_bound();
     test_any_length();
     test_bvh_adversarial();
@@ -3610,6 +3671,7 @@ int main(void)
     test_eyes();
     test_scene_bad();
     test_bvh_random();
+    test_bvh_concentric();
     test_bvh_size_bound();
     test_user_hook();
     test_any_length();
