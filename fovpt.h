@@ -9075,7 +9075,7 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
     __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
     float t[4];
-    int dx, dy, dy0, dy1, step = P->step, on, any_hit;
+    int dx, dy, dy0, dy1, step = P->step, on, any_hit, rd;
     /* fovpt__dn_lane's terms, 4 lanes at once */
     on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
                                        _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
@@ -9166,23 +9166,25 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                                _mm_mul_ps(_mm_set1_ps(1e-3f), zp)));
     }
     acc0 = acc1 = acc2 = ws = wv = sa = sb = zero;
-    dy0 = -fovpt__dn_mini(2, (int)y / step);
-    dy1 = fovpt__dn_mini(2, (int)(H - 1u - y) / step);
+    /* every lane 3 x 3: only those taps (the 5 x 5 ring's weights are 0 in every lane) */
+    rd = _mm_movemask_ps(rad1) == 15 ? 1 : 2;
+    dy0 = -fovpt__dn_mini(rd, (int)y / step);
+    dy1 = fovpt__dn_mini(rd, (int)(H - 1u - y) / step);
     for (dy = dy0; dy <= dy1; ++dy) {
         size_t row = (size_t)((int)y + dy * step) * W;
         __m128 hy = hv[dy + 2];
         int ady = dy < 0 ? -dy : dy;
-        for (dx = -2; dx <= 2; ++dx) {
+        for (dx = -rd; dx <= rd; ++dx) {
             size_t j = row + (size_t)((int)x + dx * step);
             const float *q = src + 4u * j, *gq = pk + 8u * j;
             __m128 w = _mm_mul_ps(hv[dx + 2], hy), ex, z, c, live, d, e;
+            if ((dx || dy) && !_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
             q0 = _mm_loadu_ps(q);
             q1 = _mm_loadu_ps(q + 4);
             q2 = _mm_loadu_ps(q + 8);
             q3 = _mm_loadu_ps(q + 12);
             _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* r, g, b, var of the 4 taps */
             if (dx || dy) {
-                if (!_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
                 r = _mm_loadu_ps(gq);
                 g = _mm_loadu_ps(gq + 8);
                 bl = _mm_loadu_ps(gq + 16);
