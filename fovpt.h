@@ -9057,9 +9057,9 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
     return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b));
 }
 
-/* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
-   columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
-   order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
+/* the pass at pixels x .. x + 3 of row y, all of whose taps (5 x 5, or 3 x 3 where all 4 take
+   those) lie inside the image columns (rows clipped as in fovpt__dn_px): the scalar
+   operations lane by lane, in the same order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
    contract the scalar code into FMA (the implementation turns that off: NUMERICS) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                uint32_t y)
@@ -9330,9 +9330,21 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
         x = 0;
 #if FOVPT__DN_SSE2
         if (simd) {
-            uint32_t m = 2u * (uint32_t)P.step;
-            for (; x < m && x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
-            for (; x + 3u + m < P.W; x += 4u) fovpt__dn_px4(dn, &P, x, y);
+            /* 4 at once where their 5 x 5 taps lie inside the columns, or their 3 x 3 taps
+               where all 4 take those (the periphery's image borders) */
+            uint32_t m = 2u * (uint32_t)P.step, s1 = (uint32_t)P.step;
+            const float *cr = dn->coarse + (size_t)y * P.W;
+            float rs = dn->cfg.r_small;
+            while (x + 3u + s1 < P.W) {
+                if ((x >= m && x + 3u + m < P.W) ||
+                    (x >= s1 && cr[x] >= rs && cr[x + 1u] >= rs && cr[x + 2u] >= rs &&
+                     cr[x + 3u] >= rs)) {
+                    fovpt__dn_px4(dn, &P, x, y);
+                    x += 4u;
+                } else {
+                    fovpt__dn_px(dn, &P, x++, y);
+                }
+            }
         }
 #endif
         for (; x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
