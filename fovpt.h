@@ -9059,8 +9059,9 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
 
 /* the pass at pixels x .. x + 3 of row y, all of whose taps (5 x 5, or 3 x 3 where all 4 take
    those) lie inside the image columns (rows clipped as in fovpt__dn_px): the scalar
-   operations lane by lane, in the same order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
-   contract the scalar code into FMA (the implementation turns that off: NUMERICS) */
+   operations lane by lane, in the same order, so the result is bit-identical to fovpt__dn_px
+   as long as the compiler does not contract the scalar code into FMA (the implementation
+   turns that off: NUMERICS) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                uint32_t y)
 {
