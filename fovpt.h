@@ -8399,6 +8399,9 @@ FOVPT__PRIV float fovpt__exp_neg(float x)
 #define FOVPT__DN_MAXN 32.0f
 #define FOVPT__DN_SEL 10u /* floats per pixel of SURE (see fovpt_denoise.sel) */
 /* a guide var from at least this many samples is trusted alone (no spatial estimate mixed in) */
+#ifndef FOVPT__DN_QUIET /* the quiet test's factor on the running variance (see fovpt__dn_quiet) */
+#define FOVPT__DN_QUIET 64.0f
+#endif
 #ifndef FOVPT__DN_VAR_SPP
 #define FOVPT__DN_VAR_SPP 8.0f
 #endif
@@ -8924,6 +8927,16 @@ typedef struct fovpt__dnl {
     int on, rad, hitp;
 } fovpt__dnl;
 
+/* after the first pass: the running estimate's noise (its variance, as display codes like
+   skip_noise) is already below skip_noise: the pass leaves the pixel as it is */
+FOVPT__PRIV int fovpt__dn_quiet(const fovpt_denoise *dn, const fovpt__dnp *P, const float *p)
+{
+    float l = fovpt__lum(p), g = fov__minf(166.9264f, 0.25f / fov__maxf(l, 1e-30f));
+    return P->step > 1 &&
+           fov__maxf(p[3], 0.0f) * g * 65025.0f * FOVPT__DN_QUIET <
+               dn->cfg.skip_noise * dn->cfg.skip_noise;
+}
+
 FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                 uint32_t y, fovpt__dnl *L)
 {
@@ -8936,7 +8949,7 @@ FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, ui
     uint32_t xm = x > 0 ? x - 1u : 0u, xp = x + 1u < W ? x + 1u : x;
     float v3, sl[2];
     int a, b;
-    L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]);
+    L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]) && !fovpt__dn_quiet(dn, P, p);
     if (!L->on) return; /* passed through: nothing else needed */
     L->zp = P->pk[8u * i];
     L->hitp = L->zp > 0.0f;
@@ -9080,6 +9093,8 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     /* fovpt__dn_lane's terms, 4 lanes at once */
     on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
                                        _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
+    for (l = 0; l < 4u; ++l)
+        if ((on >> l & 1) && fovpt__dn_quiet(dn, P, src + 4u * (i + l))) on &= ~(1 << l);
     if (!on) {
         for (l = 0; l < 16u; ++l) o[l] = src[4u * i + l];
         if (P->dfr)
