@@ -1928,7 +1928,16 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    variance rests on at least 8 samples (the spp guide times the history frames; fewer may
    all have missed the light): it costs one compare per pass. A guide var from at least 8
    samples is trusted alone (the spatial estimate, which counts shading as noise, is mixed in
-   only below).
+   only below). Passes after the first also leave a pixel as it is where the running
+   estimate's variance (the one the passes propagate, as display codes the same way) is below
+   (skip_noise / 8)^2 (FOVPT__DN_QUIET 64: the propagated variance leaves out the correlation
+   the passes build, so it underestimates the noise left, by about 3x on a flat noisy grey
+   (tests/test_fovpt_denoise.c fovea_filtered_least_*); with the factor 1 those tests fail).
+   Pass 0 has pooled the 3 x 3 (or 5 x 5) neighbourhood by then, so the estimate is not one
+   pixel's few samples. It catches sky, black and converged regions of the periphery, where
+   the wide passes cost the most: one 320 x 240 LAYERS frame (bench_pt's scenes, fovea 53 /
+   30 spp, callgrind, fovpt_denoise_run) cubes441 401 -> 386 M instructions, mesh100k 382 ->
+   346 M; PSNR per field unchanged to 0.001 dB, bench_pt's periphery flicker within 1 %.
    SURE selection (on unless cfg.no_sure; Li, Wu, Chuang 2012, "SURE-based optimization for
    adaptive sampling and reconstruction", ACM TOG 31(6)): where a pixel's guide var rests on
    at least sure_min_spp samples (the spp guide; 16: the sample variance of fewer is too
@@ -2020,7 +2029,9 @@ typedef struct fovpt_denoise_cfg {
     float normal_cos;         /* least normal dot of reprojection, [-1, 1)          0: 0.9 */
     float skip_noise;         /* a pass leaves a pixel as it is where its noise is below
                                  this many 8-bit display codes (a variance from >= 8
-                                 samples), (0, 255]; 1e-9: only where it is 0     0: 0.5 */
+                                 samples; after pass 0 also where the running estimate's
+                                 is below skip_noise / 8), (0, 255]; 1e-9: only where
+                                 it is 0                                          0: 0.5 */
     float spp_full;           /* samples per pixel (the spp guide) up to which a pixel gets
                                  every pass of its coarseness; above, the widest step shrinks
                                  by sqrt(spp_full / spp): a converged fovea is left as it is,
@@ -9336,8 +9347,9 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
     P.ipn = 0;
     if (P.pn <= 4096.0f && fov__is0(P.pn - FOV__FLOOR(P.pn))) P.ipn = (uint32_t)P.pn;
 #if FOVPT__DN_SSE2
-    /* 4 pixels at once where their 5 x 5 taps lie inside the columns and the normal stop
-       needs no powf (an integer phi_normal or one whose far taps are dropped) */
+    /* 4 pixels at once where their taps lie inside the columns (5 x 5, or 3 x 3 where all 4
+       take those) and the normal stop needs no powf (an integer phi_normal or one whose far
+       taps are dropped) */
     if (!(P.ipn || P.nfar)) simd = 0;
 #else
     (void)simd;
