@@ -1928,7 +1928,16 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
    variance rests on at least 8 samples (the spp guide times the history frames; fewer may
    all have missed the light): it costs one compare per pass. A guide var from at least 8
    samples is trusted alone (the spatial estimate, which counts shading as noise, is mixed in
-   only below).
+   only below). Passes after the first also leave a pixel as it is where the running
+   estimate's variance (the one the passes propagate, as display codes the same way) is below
+   (skip_noise / 8)^2 (FOVPT__DN_QUIET 64: the propagated variance leaves out the correlation
+   the passes build, so it underestimates the noise left, by about 3x on a flat noisy grey
+   (tests/test_fovpt_denoise.c fovea_filtered_least_*); with the factor 1 those tests fail).
+   Pass 0 has pooled the 3 x 3 (or 5 x 5) neighbourhood by then, so the estimate is not one
+   pixel's few samples. It catches sky, black and converged regions of the periphery, where
+   the wide passes cost the most: one 320 x 240 LAYERS frame (bench_pt's scenes, fovea 53 /
+   30 spp, callgrind, fovpt_denoise_run) cubes441 401 -> 386 M instructions, mesh100k 382 ->
+   346 M; PSNR per field unchanged to 0.001 dB, bench_pt's periphery flicker within 1 %.
    SURE selection (on unless cfg.no_sure; Li, Wu, Chuang 2012, "SURE-based optimization for
    adaptive sampling and reconstruction", ACM TOG 31(6)): where a pixel's guide var rests on
    at least sure_min_spp samples (the spp guide; 16: the sample variance of fewer is too
@@ -2020,7 +2029,9 @@ typedef struct fovpt_denoise_cfg {
     float normal_cos;         /* least normal dot of reprojection, [-1, 1)          0: 0.9 */
     float skip_noise;         /* a pass leaves a pixel as it is where its noise is below
                                  this many 8-bit display codes (a variance from >= 8
-                                 samples), (0, 255]; 1e-9: only where it is 0     0: 0.5 */
+                                 samples; after pass 0 also where the running estimate's
+                                 is below skip_noise / 8), (0, 255]; 1e-9: only where
+                                 it is 0                                          0: 0.5 */
     float spp_full;           /* samples per pixel (the spp guide) up to which a pixel gets
                                  every pass of its coarseness; above, the widest step shrinks
                                  by sqrt(spp_full / spp): a converged fovea is left as it is,
@@ -8400,6 +8411,9 @@ FOVPT__PRIV float fovpt__exp_neg(float x)
 #define FOVPT__DN_MAXN 32.0f
 #define FOVPT__DN_SEL 10u /* floats per pixel of SURE (see fovpt_denoise.sel) */
 /* a guide var from at least this many samples is trusted alone (no spatial estimate mixed in) */
+#ifndef FOVPT__DN_QUIET /* the quiet test's factor on the running variance (see fovpt__dn_quiet) */
+#define FOVPT__DN_QUIET 64.0f
+#endif
 #ifndef FOVPT__DN_VAR_SPP
 #define FOVPT__DN_VAR_SPP 8.0f
 #endif
@@ -8925,6 +8939,16 @@ typedef struct fovpt__dnl {
     int on, rad, hitp;
 } fovpt__dnl;
 
+/* after the first pass: the running estimate's noise (its variance, as display codes like
+   skip_noise) is already below skip_noise: the pass leaves the pixel as it is */
+FOVPT__PRIV int fovpt__dn_quiet(const fovpt_denoise *dn, const fovpt__dnp *P, const float *p)
+{
+    float l = fovpt__lum(p), g = fov__minf(166.9264f, 0.25f / fov__maxf(l, 1e-30f));
+    return P->step > 1 &&
+           fov__maxf(p[3], 0.0f) * g * 65025.0f * FOVPT__DN_QUIET <
+               dn->cfg.skip_noise * dn->cfg.skip_noise;
+}
+
 FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                 uint32_t y, fovpt__dnl *L)
 {
@@ -8937,7 +8961,7 @@ FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, ui
     uint32_t xm = x > 0 ? x - 1u : 0u, xp = x + 1u < W ? x + 1u : x;
     float v3, sl[2];
     int a, b;
-    L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]);
+    L->on = !(P->fstep > dn->cfg.fovea_step * dn->coarse[i]) && !fovpt__dn_quiet(dn, P, p);
     if (!L->on) return; /* passed through: nothing else needed */
     L->zp = P->pk[8u * i];
     L->hitp = L->zp > 0.0f;
@@ -9058,10 +9082,11 @@ FOVPT__PRIV __m128 fovpt__dn_sel4(__m128 m, __m128 a, __m128 b)
     return _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b));
 }
 
-/* the pass at pixels x .. x + 3 of row y, all of whose 5 x 5 taps lie inside the image
-   columns (rows clipped as in fovpt__dn_px): the scalar operations lane by lane, in the same
-   order, so the result is bit-identical to fovpt__dn_px as long as the compiler does not
-   contract the scalar code into FMA (the implementation turns that off: NUMERICS) */
+/* the pass at pixels x .. x + 3 of row y, all of whose taps (5 x 5, or 3 x 3 where all 4 take
+   those) lie inside the image columns (rows clipped as in fovpt__dn_px): the scalar
+   operations lane by lane, in the same order, so the result is bit-identical to fovpt__dn_px
+   as long as the compiler does not contract the scalar code into FMA (the implementation
+   turns that off: NUMERICS) */
 FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
                                uint32_t y)
 {
@@ -9076,10 +9101,12 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
     __m128 c75 = _mm_set1_ps(0.75f), pn = _mm_set1_ps(P->pn), ia2 = _mm_set1_ps(P->ia2);
     __m128 cr = _mm_loadu_ps(dn->coarse + i), rad1, sl0, sl1, v3;
     float t[4];
-    int dx, dy, dy0, dy1, step = P->step, on, any_hit;
+    int dx, dy, dy0, dy1, step = P->step, on, any_hit, rd;
     /* fovpt__dn_lane's terms, 4 lanes at once */
     on = _mm_movemask_ps(_mm_cmpngt_ps(_mm_set1_ps(P->fstep),
                                        _mm_mul_ps(_mm_set1_ps(dn->cfg.fovea_step), cr)));
+    for (l = 0; l < 4u; ++l)
+        if ((on >> l & 1) && fovpt__dn_quiet(dn, P, src + 4u * (i + l))) on &= ~(1 << l);
     if (!on) {
         for (l = 0; l < 16u; ++l) o[l] = src[4u * i + l];
         if (P->dfr)
@@ -9167,23 +9194,25 @@ FOVPT__PRIV void fovpt__dn_px4(const fovpt_denoise *dn, const fovpt__dnp *P, uin
                                _mm_mul_ps(_mm_set1_ps(1e-3f), zp)));
     }
     acc0 = acc1 = acc2 = ws = wv = sa = sb = zero;
-    dy0 = -fovpt__dn_mini(2, (int)y / step);
-    dy1 = fovpt__dn_mini(2, (int)(H - 1u - y) / step);
+    /* every lane 3 x 3: only those taps (the 5 x 5 ring's weights are 0 in every lane) */
+    rd = _mm_movemask_ps(rad1) == 15 ? 1 : 2;
+    dy0 = -fovpt__dn_mini(rd, (int)y / step);
+    dy1 = fovpt__dn_mini(rd, (int)(H - 1u - y) / step);
     for (dy = dy0; dy <= dy1; ++dy) {
         size_t row = (size_t)((int)y + dy * step) * W;
         __m128 hy = hv[dy + 2];
         int ady = dy < 0 ? -dy : dy;
-        for (dx = -2; dx <= 2; ++dx) {
+        for (dx = -rd; dx <= rd; ++dx) {
             size_t j = row + (size_t)((int)x + dx * step);
             const float *q = src + 4u * j, *gq = pk + 8u * j;
             __m128 w = _mm_mul_ps(hv[dx + 2], hy), ex, z, c, live, d, e;
+            if ((dx || dy) && !_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
             q0 = _mm_loadu_ps(q);
             q1 = _mm_loadu_ps(q + 4);
             q2 = _mm_loadu_ps(q + 8);
             q3 = _mm_loadu_ps(q + 12);
             _MM_TRANSPOSE4_PS(q0, q1, q2, q3); /* r, g, b, var of the 4 taps */
             if (dx || dy) {
-                if (!_mm_movemask_ps(_mm_cmpgt_ps(w, zero))) continue;
                 r = _mm_loadu_ps(gq);
                 g = _mm_loadu_ps(gq + 8);
                 bl = _mm_loadu_ps(gq + 16);
@@ -9319,8 +9348,9 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
     P.ipn = 0;
     if (P.pn <= 4096.0f && fov__is0(P.pn - FOV__FLOOR(P.pn))) P.ipn = (uint32_t)P.pn;
 #if FOVPT__DN_SSE2
-    /* 4 pixels at once where their 5 x 5 taps lie inside the columns and the normal stop
-       needs no powf (an integer phi_normal or one whose far taps are dropped) */
+    /* 4 pixels at once where their taps lie inside the columns (5 x 5, or 3 x 3 where all 4
+       take those) and the normal stop needs no powf (an integer phi_normal or one whose far
+       taps are dropped) */
     if (!(P.ipn || P.nfar)) simd = 0;
 #else
     (void)simd;
@@ -9329,9 +9359,21 @@ FOVPT__PRIV void fovpt__dn_atrous(fovpt_denoise *dn, uint32_t pass, uint32_t y0,
         x = 0;
 #if FOVPT__DN_SSE2
         if (simd) {
-            uint32_t m = 2u * (uint32_t)P.step;
-            for (; x < m && x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);
-            for (; x + 3u + m < P.W; x += 4u) fovpt__dn_px4(dn, &P, x, y);
+            /* 4 at once where their 5 x 5 taps lie inside the columns, or their 3 x 3 taps
+               where all 4 take those (the periphery's image borders) */
+            uint32_t m = 2u * (uint32_t)P.step, s1 = (uint32_t)P.step;
+            const float *cr = dn->coarse + (size_t)y * P.W;
+            float rs = dn->cfg.r_small;
+            while (x + 3u + s1 < P.W) {
+                if ((x >= m && x + 3u + m < P.W) ||
+                    (x >= s1 && cr[x] >= rs && cr[x + 1u] >= rs && cr[x + 2u] >= rs &&
+                     cr[x + 3u] >= rs)) {
+                    fovpt__dn_px4(dn, &P, x, y);
+                    x += 4u;
+                } else {
+                    fovpt__dn_px(dn, &P, x++, y);
+                }
+            }
         }
 #endif
         for (; x < P.W; ++x) fovpt__dn_px(dn, &P, x, y);

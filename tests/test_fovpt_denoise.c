@@ -1320,6 +1320,56 @@ static void t_simd_scalar_edge(void)
             }
 }
 
+/* a pass after the first leaves a pixel as it is where the running estimate's noise (its
+   variance, as display codes) is below skip_noise / 8: a grey image whose input noise is
+   0.5 / 64 codes^2 (above (skip_noise / 8)^2, from 1 sample: the temporal skip does not
+   apply) is quiet after pass 0, so 5 levels give the image of 1 level; with 100x the variance
+   pass 1 and on filter */
+static void t_quiet(void)
+{
+    const uint32_t W = 40, H = 30;
+    size_t n = (size_t)W * H, i;
+    img a;
+    float *o1 = (float *)malloc(n * 12u), *o5 = (float *)malloc(n * 12u);
+    int loud;
+    img_alloc(&a, W, H);
+    for (loud = 0; loud < 2; ++loud) {
+        fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+        fov_gaze g = { 20.0f, 15.0f };
+        float amp = loud ? 0.0085f : 0.00085f; /* uniform: var amp^2 / 3 */
+        uint32_t x, y, s = 99u, diff = 0, cnt = 0;
+        int ok;
+        flat_guides(&a, 1.0f, amp * amp / 3.0f);
+        for (i = 0; i < n; ++i) {
+            float v;
+            s = s * 1664525u + 1013904223u;
+            v = 0.5f + amp * (2.0f * (float)(s >> 8) / 16777216.0f - 1.0f);
+            a.rgb[3 * i] = a.rgb[3 * i + 1] = a.rgb[3 * i + 2] = v;
+        }
+        dc.width = W; dc.height = H; dc.no_temporal = 1;
+        dc.fovea_step = 65536.0f; dc.spp_full = 1e30f; /* every pass on at every pixel */
+        dc.levels = 1;
+        ok = dn_once(&dc, &a, g, o1, NULL);
+        dc.levels = 5;
+        ok = ok && dn_once(&dc, &a, g, o5, NULL);
+        for (y = 2; y + 2u < H; ++y) /* the border's fewer taps may leave it louder */
+            for (x = 2; x + 2u < W; ++x) {
+                i = (size_t)y * W + x;
+                diff += memcmp(o1 + 3 * i, o5 + 3 * i, 12u) != 0;
+                cnt++;
+            }
+        if (loud)
+            check(ok && diff > cnt / 2u, "quiet_loud_filtered_by_later_passes",
+                  "%u of %u pixels differ between 1 and 5 levels (ok %d)", diff, cnt, ok);
+        else
+            check(ok && diff == 0u, "quiet_after_pass0_later_passes_leave_it",
+                  "%u of %u pixels differ between 1 and 5 levels (want 0; ok %d)", diff, cnt, ok);
+    }
+    free(o1);
+    free(o5);
+    img_free(&a);
+}
+
 /* ---- the SURE selection (Li, Wu, Chuang 2012) ---------------------------------------------- */
 /* a flat wall (depth 1, normal +z, albedo 0.5), every pixel with spp 32 */
 static void sure_img(img *a, uint32_t seed, float amp)
@@ -1518,6 +1568,7 @@ int main(void)
     t_adaptive();
     t_faceted();
     t_skip_evidence();
+    t_quiet();
     t_simd_scalar();
     t_simd_scalar_edge();
     t_sure_constant();
