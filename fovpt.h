@@ -661,7 +661,11 @@ RECENT REVISION HISTORY
                       -ffp-contract=fast / -ffast-math): built with -mfma in gnu mode, the
                       BVH had missed hits that brute force finds. AVX node test: slab
                       distances as (o - plane) * -inv, the same floats (3-4 % fewer
-                      instructions per terrain ray).
+                      instructions per terrain ray). The denoiser runs 10-22 % fewer
+                      instructions: the SSE2 pass takes only 3 x 3 taps where all 4 lanes do
+                      and runs at the image borders too (bit-identical), and a pass after the
+                      first leaves a pixel whose running variance is below (skip_noise / 8)^2
+                      (PSNR per field within 0.001 dB on the bench's scenes).
    0.12.0 (2026-12-05) cfg.mirror_nee (NEXT-EVENT ESTIMATION THROUGH MIRRORS): next-event
                       estimation through mirror spheres and quads (Mitchell and Hanrahan 1992),
                       unbiased, opt-in; fovpt_scene.mirrors / num_mirrors list them (the scene
