@@ -8717,6 +8717,13 @@ FOVPT__PRIV float fovpt__dn_sure_w(float l)
 {
     return fov__minf(166.9264f, 0.25f / fov__maxf(l, 1e-30f));
 }
+/* a variance var (linear, at luminance l) times factor below skip_noise^2 in 8-bit display
+   codes (the slope as fovpt__dn_sure_w's) */
+FOVPT__PRIV int fovpt__dn_below_skip(const fovpt_denoise *dn, float var, float l, float factor)
+{
+    return fov__maxf(var, 0.0f) * fovpt__dn_sure_w(l) * 65025.0f * factor <
+           dn->cfg.skip_noise * dn->cfg.skip_noise;
+}
 
 FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
 {
@@ -8865,8 +8872,7 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
                FOVPT__DN_VAR_SPP samples (the guide's spp, at least 1, times the history
                frames): no pass filters the pixel */
             if (fov__maxf(var_own, 1.0f) * n >= FOVPT__DN_VAR_SPP &&
-                fov__maxf(o[6], 0.0f) * fov__minf(166.9264f, 0.25f / fov__maxf(o[3], 1e-30f)) *
-                    65025.0f < dn->cfg.skip_noise * dn->cfg.skip_noise)
+                fovpt__dn_below_skip(dn, o[6], o[3], 1.0f))
                 dn->coarse[i] = 0.0f;
             o[7] = 0.0f;
             o[8] = z;
@@ -8947,10 +8953,7 @@ typedef struct fovpt__dnl {
    skip_noise) is already below skip_noise: the pass leaves the pixel as it is */
 FOVPT__PRIV int fovpt__dn_quiet(const fovpt_denoise *dn, const fovpt__dnp *P, const float *p)
 {
-    float l = fovpt__lum(p), g = fov__minf(166.9264f, 0.25f / fov__maxf(l, 1e-30f));
-    return P->step > 1 &&
-           fov__maxf(p[3], 0.0f) * g * 65025.0f * FOVPT__DN_QUIET <
-               dn->cfg.skip_noise * dn->cfg.skip_noise;
+    return P->step > 1 && fovpt__dn_below_skip(dn, p[3], fovpt__lum(p), FOVPT__DN_QUIET);
 }
 
 FOVPT__PRIV void fovpt__dn_lane(const fovpt_denoise *dn, const fovpt__dnp *P, uint32_t x,
