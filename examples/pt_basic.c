@@ -103,7 +103,7 @@ int main(int argc, char **argv)
     cfg.layers.count = 0;                               /* the preset's table (KTH radius) ... */
     cfg.layers.bspline = 1;                             /* ... smoothing B-spline for the coarse layers */
     cfg.layers.cell_jitter = 1;                         /* samples over the lattice cell */
-    cfg.sampler = FOVPT_SAMPLER_SOBOL;                  /* stratified samples: less noise (fovpt.h SAMPLERS) */
+    cfg.sampler = FOVPT_SAMPLER_SOBOL;                  /* stratified samples (the default; fovpt.h SAMPLERS) */
 
     if ((r = fovpt_memory_size(&cfg, &cam, &ctx_bytes)) != FOV_OK) { fprintf(stderr, "%s\n", fovpt_result_string(r)); return 1; }
     ctx_mem = malloc(ctx_bytes + 16u);

@@ -93,6 +93,7 @@ static void test_equals_reference(void)
         c = fovpt_config_default();
         c.mode = mode == 1 ? FOVPT_MODE_WHITTED : FOVPT_MODE_PATH;
         c.seed = 99u;
+        c.sampler = FOVPT_SAMPLER_RANDOM; /* the fovpt_rng_init recipe (SOBOL's: test_fovpt_sampler.c) */
         fovpt_config_resolve(&c, &c);
         fovpt_stats_init(&st);
         if (!check(fovpt_shade_points(&S.scene, &c, &S.cam, n, xy, 0, first, frame, spp, jit, rgb, t, &st) == FOV_OK,

@@ -342,7 +342,10 @@ static void test_render_error(void)
         uint32_t smp;
         for (smp = 0; smp < 2; ++smp) {
             double e = 0.0, mean = 0.0;
-            if (!render(&S, FOVPT_METHOD_UNIFORM, smp, 16, seed, img)) { check(0, "render 16 spp", "error"); continue; }
+            if (!render(&S, FOVPT_METHOD_UNIFORM, smp ? FOVPT_SAMPLER_SOBOL : FOVPT_SAMPLER_RANDOM, 16, seed, img)) {
+                check(0, "render 16 spp", "error");
+                continue;
+            }
             for (i = 0; i < n; ++i) {
                 double a = img[i] < 1.0f ? (double)img[i] : 1.0, b = ref[i] < 1.0f ? (double)ref[i] : 1.0;
                 e += (a - b) * (a - b); mean += (double)img[i];
@@ -424,7 +427,7 @@ static void test_errors(void)
     void *mem;
     fov_gaze g = { 8.0f, 6.0f };
     float xy[2] = { 1.0f, 1.0f }, rgb[3] = { -1.0f, -1.0f, -1.0f };
-    uint32_t bad_vals[3] = { 2u, 17u, 0x7FFFFFFFu }, i;
+    uint32_t bad_vals[3] = { 3u, 17u, 0x7FFFFFFFu }, i;
     if (pt_scene_make(&S, PT_SCENE_CORNELL) != 0) { check(0, "cornell scene", "setup"); return; }
     S.cam.width = 16; S.cam.height = 12;
     if (fovpt_memory_size(&c, &S.cam, &bytes) != FOV_OK) { check(0, "memory size", "error"); pt_scene_free(&S); return; }
@@ -445,13 +448,64 @@ static void test_errors(void)
               g_log_count);
     }
     c = fovpt_config_default();
-    check(c.sampler == FOVPT_SAMPLER_RANDOM, "default sampler is RANDOM (SAMPLERS)", "%u", c.sampler);
+    check(c.sampler == FOVPT_SAMPLER_SOBOL, "default sampler is SOBOL (SAMPLERS, since 0.14.0)", "%u", c.sampler);
+    {   /* resolve: DEFAULT (0) becomes SOBOL, the named ones stay */
+        fovpt_config in, out;
+        uint32_t v;
+        int okr = 1;
+        for (v = 0; v < 3u; ++v) {
+            memset(&in, 0, sizeof in);
+            in.sampler = v;
+            okr &= fovpt_config_resolve(&in, &out) == FOV_OK &&
+                   out.sampler == (v == (uint32_t)FOVPT_SAMPLER_RANDOM ? (uint32_t)FOVPT_SAMPLER_RANDOM
+                                                                      : (uint32_t)FOVPT_SAMPLER_SOBOL);
+        }
+        check(okr && FOVPT_SAMPLER_DEFAULT == 0 && FOVPT_SAMPLER_SOBOL == 1 && FOVPT_SAMPLER_RANDOM == 2,
+              "resolve: sampler 0 (DEFAULT) -> SOBOL, SOBOL and RANDOM kept", "ok %d", okr);
+    }
     free(mem);
     pt_scene_free(&S);
 }
 
+/* a zero sampler field renders what SOBOL renders, bit for bit, through fovpt_render and
+   fovpt_shade_points alike, and RANDOM renders something else (the same seed) */
+static void test_default_is_sobol(void)
+{
+    pt_scene S;
+    uint32_t W = 16, H = 12, n = 3u * 16u * 12u, i, m, diff_d, diff_r;
+    float *a = (float *)malloc(sizeof(float) * n), *b = (float *)malloc(sizeof(float) * n);
+    if (!a || !b || pt_scene_make(&S, PT_SCENE_CUBES) != 0) { check(0, "cubes scene", "setup"); free(a); free(b); return; }
+    S.cam.width = W; S.cam.height = H;
+    for (m = 0; m < (uint32_t)_FOVPT_METHOD_NUM; ++m) {
+        int ok = render(&S, m, FOVPT_SAMPLER_DEFAULT, 4, 5u, a) && render(&S, m, FOVPT_SAMPLER_SOBOL, 4, 5u, b);
+        for (diff_d = 0, i = 0; i < n; ++i) diff_d += a[i] != b[i];
+        ok = ok && render(&S, m, FOVPT_SAMPLER_RANDOM, 4, 5u, b);
+        for (diff_r = 0, i = 0; i < n; ++i) diff_r += a[i] != b[i];
+        check(ok && diff_d == 0 && diff_r > 0, N("method %u: sampler 0 renders SOBOL's image, RANDOM another", m),
+              "ok %d, %u values differ from SOBOL, %u from RANDOM", ok, diff_d, diff_r);
+    }
+    {   /* fovpt_shade_points takes its config unresolved */
+        fovpt_config c = fovpt_config_default();
+        float xy[8] = { 1.5f, 1.5f, 7.25f, 3.5f, 12.0f, 9.0f, 4.0f, 10.5f }, pa[12], pb[12], pr[12];
+        int ok;
+        c.spp = 4; c.seed = 9u;
+        c.sampler = FOVPT_SAMPLER_DEFAULT;
+        ok = fovpt_shade_points(&S.scene, &c, &S.cam, 4, xy, 2, 1, 0, 4, 1.0f, pa, NULL, NULL) == FOV_OK;
+        c.sampler = FOVPT_SAMPLER_SOBOL;
+        ok = ok && fovpt_shade_points(&S.scene, &c, &S.cam, 4, xy, 2, 1, 0, 4, 1.0f, pb, NULL, NULL) == FOV_OK;
+        c.sampler = FOVPT_SAMPLER_RANDOM;
+        ok = ok && fovpt_shade_points(&S.scene, &c, &S.cam, 4, xy, 2, 1, 0, 4, 1.0f, pr, NULL, NULL) == FOV_OK;
+        for (diff_d = 0, diff_r = 0, i = 0; i < 12; ++i) { diff_d += pa[i] != pb[i]; diff_r += pa[i] != pr[i]; }
+        check(ok && diff_d == 0 && diff_r > 0, "shade_points: sampler 0 shades as SOBOL, RANDOM otherwise",
+              "ok %d, %u differ from SOBOL, %u from RANDOM", ok, diff_d, diff_r);
+    }
+    pt_scene_free(&S);
+    free(a); free(b);
+}
+
 int main(void)
 {
+    test_default_is_sobol();
     test_stratified();
     test_uniform();
     test_render_recipe();

@@ -107,8 +107,8 @@ static int xt_scene(uint32_t id, const fovpt_scene *scene, size_t scene_bytes)
     cam.pos[1] = 1.0f; cam.pos[2] = -3.2f; cam.target[1] = 1.0f; cam.target[2] = 0.0f; cam.fov_y_deg = 45.0f;
     gaze.x = 0.4f * (float)XT_W;
     gaze.y = 0.5f * (float)XT_H;
-    if (id == 0) { cfg.spp = 2; cfg.sampler = FOVPT_SAMPLER_SOBOL; } /* SELECTIVE: RANDOM */
-    else { cfg.method = FOVPT_METHOD_SELECTIVE; cfg.mode = FOVPT_MODE_WHITTED; }
+    if (id == 0) { cfg.spp = 2; cfg.sampler = FOVPT_SAMPLER_SOBOL; }
+    else { cfg.method = FOVPT_METHOD_SELECTIVE; cfg.mode = FOVPT_MODE_WHITTED; cfg.sampler = FOVPT_SAMPLER_RANDOM; }
     r = fovpt_memory_size(&cfg, &cam, &ctx_bytes);
     if (r != FOV_OK) { step = "memory_size"; goto done; }
     if (ctx_bytes > sizeof xt_ctx_mem) { r = FOV_ERR_TOO_SMALL; step = "ctx_memory"; goto done; }
