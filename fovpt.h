@@ -61,8 +61,8 @@ WHAT IT DOES (the pipeline, in the order the data flows)
       primitives: no BVH, a plain loop. The box test is conservative (NUMERICS): the BVH
       never misses a hit that the brute-force loop finds.
    2. Camera rays, one deterministic random stream per (pixel, sample, frame) (fovpt_rng: a
-      counter-based integer hash, no state outside the stream); with cfg.sampler SOBOL the
-      pixel's samples are stratified (SAMPLERS).
+      counter-based integer hash, no state outside the stream); with cfg.sampler SOBOL (the
+      default) the pixel's samples are stratified (SAMPLERS).
    3. Radiance (fovpt_radiance): Kajiya's rendering equation (Kajiya 1986; Axblad 2020, Eq.
       2.1) estimated by an iterative path tracer: BSDF sampling (Lambert, the two-lobe Phong
       of Axblad 2020, Sec. 3.2.2, mirror, dielectric with Fresnel), next-event estimation
@@ -232,8 +232,10 @@ ACUITY-DRIVEN CONFIGURATION (fovpt_config_acuity)
      hollow and cell_jitter as for the layers; spp[3] as below.
    - Samples (layers' spp, zones.spp; the path tracer's noise is what the periphery shows).
      After the eye's blur (a Gaussian of s = 0.375 MAR(e), the measure of examples/fovmetrics.h,
-     s in pixels) independent noise of variance v per sample keeps v / spp_u x cu of it in
-     UNIFORM's image, cu = 1 / (1 + 4 pi s^2) (the Gaussian's sum of squared weights: exact
+     s in pixels) independent noise of variance v per sample (RANDOM's; SOBOL's, the default,
+     falls faster with spp where the error is direct light and edges, so there the plan errs
+     towards more samples) keeps v / spp_u x cu of it in UNIFORM's image,
+     cu = 1 / (1 + 4 pi s^2) (the Gaussian's sum of squared weights: exact
      for s -> 0 and s >> 1, an approximation between), and v / spp_n x cl on a stride-d
      lattice, cl = 1 / (1 + 4 pi (b^2 + s^2 / d^2)), b^2 = 1/3 (the B-spline) + 1/12 (the cell
      box) in cells^2; cu and cl averaged over each layer's band (a 48 x 48 grid of image
@@ -297,10 +299,11 @@ SHADING IMAGE POINTS (fovpt_shade_points; path tracing in log-polar space with f
    examples/lp_pt.c is the whole program (Cornell box, TAA over frames). Point i is
    (xy[i stride], xy[i stride + 1]) in the camera's image (pixels, continuous, centres at
    +0.5; off-image points work as in fovpt_camera_ray). Its sample k (k < spp) is exactly
-      fovpt_rng_init(&rng, cfg->seed, first + i, k, frame);     // stream (first + i) mod 2^32
-                                       // (fovpt_rng_init_sobol with cfg->sampler SOBOL)
+      fovpt_rng_init_sobol(&rng, cfg->seed, first + i, k, frame);   // stream (first + i)
+                                       // mod 2^32 (fovpt_rng_init with cfg->sampler RANDOM)
       if (jitter > 0) { x += (fovpt_rng_next(&rng) - 0.5f) * jitter;    // in this order
                         y += (fovpt_rng_next(&rng) - 0.5f) * jitter; }
+      else if (rng.sobol) { fovpt_rng_next(&rng); fovpt_rng_next(&rng); } // pair dropped
       fovpt_camera_ray(cam, x, y, org, dir);
       fovpt_radiance(scene, cfg, org, dir, &rng, c_k, stats);
    and rgb[3 i ..] = (c_0 + ... + c_(spp-1)) / spp, the sum in k order (bit for bit; tested
@@ -659,7 +662,10 @@ RECENT REVISION HISTORY
                       RANDOM; code that leaves the field 0 now gets stratified samples: at
                       equal samples +2.6 to +6.4 dB on the terrain, the cubes and the mirrors,
                       for 12-20 % more instructions per frame). Images of a default config
-                      change; their mean does not.
+                      change; their mean does not. FOVPT_SAMPLER_RANDOM renders 0.13.0's
+                      images bit for bit; a sampler value of 0 that was stored, computed or
+                      passed as a number now means SOBOL, and 2 is no longer rejected
+                      (_FOVPT_SAMPLER_NUM is 3).
    0.13.0 (2026-12-06) A bounded shape (sphere, quad, box) is a BVH leaf of its own, never in a
                       combined leaf block, so the W-wide node's box test culls it: Cornell
                       box frames 1.6-1.7x fewer instructions, the mirror room and the
@@ -5864,8 +5870,8 @@ FOVPT_API float fovpt_rng_next(fovpt_rng *r)
     x = fovpt__mix(fovpt__mix(r->key + 0x9e3779b9u * c) ^ r->key);
     return (float)(x >> 8) * (1.0f / 16777216.0f);
 }
-/* The stream of a sample under the config's sampler (DEFAULT, unresolved in
-   fovpt_shade_points' config, is SOBOL). */
+/* The stream of a sample under the config's sampler (DEFAULT, which a config handed to
+   fovpt_shade_points without fovpt_config_resolve may still hold, is SOBOL). */
 FOVPT__PRIV int fovpt__sobol(const fovpt_config *c)
 {
     return c->sampler != (uint32_t)FOVPT_SAMPLER_RANDOM;

@@ -116,7 +116,9 @@ int main(int argc, char **argv)
             for (seed = 1; seed <= seeds; ++seed)
                 for (smp = 0; smp < 2; ++smp) { /* interleaved: RANDOM, SOBOL, RANDOM, ... */
                     double ms = 0.0;
-                    if (!render(&S, runs[r].method, smp, runs[r].spp, seed, img, &ms)) return 1;
+                    if (!render(&S, runs[r].method, smp ? FOVPT_SAMPLER_SOBOL : FOVPT_SAMPLER_RANDOM, runs[r].spp,
+                                seed, img, &ms))
+                        return 1;
                     mse[smp] += mse_of(img, ref, n) / (double)seeds;
                     if (ms < best[smp]) best[smp] = ms;
                 }
