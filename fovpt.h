@@ -7400,6 +7400,7 @@ FOVPT__PRIV float fovpt__lum(const float c[3])
 typedef struct fovpt__gsum {
     float alb[3], nrm[3], dep, l1, l2;
     uint32_t n, hits;
+    uint32_t dep_lo; /* 1: dep holds the distances times 2^-32 (their sum overflowed) */
 } fovpt__gsum;
 
 FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fovpt__attr *at,
@@ -7411,7 +7412,16 @@ FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fov
     G->l2 += l * l;
     if (at->poid == FOVPT_PRIM_NONE || !(at->pt > 0.0f)) return;
     G->hits++;
-    G->dep += at->pt;
+    if (G->dep_lo) {
+        G->dep += at->pt * 2.3283064365386963e-10f;
+    } else if (fov__finite(G->dep + at->pt)) {
+        G->dep += at->pt;
+    } else { /* distances near FLT_MAX (a camera 1e38 from a plane): their sum overflows, so
+                from here on it is kept scaled by 2^-32 (exact for such sums); fovpt__gwrite
+                scales the mean back */
+        G->dep = G->dep * 2.3283064365386963e-10f + at->pt * 2.3283064365386963e-10f;
+        G->dep_lo = 1u;
+    }
     fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
     if (at->pmat < s->num_materials)
         fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
@@ -8139,7 +8149,9 @@ FOVPT__PRIV void fovpt__gwrite(const fovpt_guide *g, uint32_t W, uint32_t x, uin
     }
     if (g->depth)
         *fovpt__gptr(g->depth, g->depth_stride, 1u, W, x, y) =
-            G->hits ? G->dep / (float)G->hits : 0.0f;
+            !G->hits ? 0.0f
+                     : (G->dep_lo ? fov__minf(G->dep / (float)G->hits * 4294967296.0f, FLT_MAX)
+                                  : G->dep / (float)G->hits);
     if (g->spp) *fovpt__gptr(g->spp, g->spp_stride, 1u, W, x, y) = spp < 0.0f ? (float)G->n : spp;
     if (g->var) {
         float v = -1.0f;

@@ -1551,6 +1551,54 @@ static void t_sure_vs_truth(void)
     img_free(&a);
 }
 
+/* The depth guide is the mean hit distance even where the distances sum beyond FLT_MAX: a
+   camera 2.5e38 below a floor plane, looking up, hits it at t in [2.5e38, 2.9e38]; four
+   samples per pixel summed to inf before the fix (fuzz finding F1 of session 18,
+   tests/fuzz/regress/fovpt_dn/F1_depth_sum_overflow.bin) */
+static void t_depth_far(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 2.0f, 2.0f };
+    const float p0[3] = { 0.0f, 0.0f, 0.0f }, n0[3] = { 0.0f, 1.0f, 0.0f };
+    size_t sb = 0, cb = 0, i, bad = 0, badn = 0;
+    void *sm = NULL, *cm = NULL;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    fovpt_shape_plane(&sh, p0, n0, 0);
+    fovpt_scene_desc_init(&d);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    fovpt_camera_init(&cam, 4, 4);
+    cam.pos[1] = -2.5e38f;
+    cam.up[0] = 0.0f; cam.up[1] = 0.0f; cam.up[2] = 1.0f;
+    cam.fov_y_deg = 40.0f;
+    c.spp = 4;
+    img_alloc(&a, 4, 4);
+    ok = fovpt_scene_size(&d, &sb) == FOV_OK && (sm = malloc(sb)) != NULL &&
+         fovpt_scene_build(&s, &d, sm, sb) == FOV_OK && fovpt_memory_size(&c, &cam, &cb) == FOV_OK &&
+         (cm = malloc(cb)) != NULL && fovpt_init(&ctx, &c, &s, &cam, g, cm, cb) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; ok && i < 16u; ++i) {
+        bad += !(a.dep[i] >= 2.5e38f && a.dep[i] <= 3.0e38f);
+        badn += !(a.nrm[3 * i] == 0.0f && a.nrm[3 * i + 1] == -1.0f && a.nrm[3 * i + 2] == 0.0f);
+    }
+    check(ok && bad == 0 && badn == 0, "guide_depth_mean_near_flt_max",
+          "ok %d, %zu of 16 depths outside [2.5e38, 3e38] (pixel 0: %g), %zu normals not (0, -1, 0)", ok, bad,
+          (double)a.dep[0], badn);
+    img_free(&a);
+    free(cm);
+    free(sm);
+}
+
 int main(void)
 {
     t_constant();
@@ -1560,6 +1608,7 @@ int main(void)
     t_foveation();
     t_errors();
     t_same_image();
+    t_depth_far();
     t_robust();
     t_var_accum();
     t_two_stride1();
