@@ -2101,7 +2101,10 @@ FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_c
 FOVPT_API fov_result fovpt_denoise_reset(fovpt_denoise *dn);   /* forgets the history */
 /* Starts a frame: its camera (the size of the config), gaze, the noisy linear image (3 floats
    per pixel, stride in floats, 0: packed) and its guides (depth and normal required; albedo,
-   spp, var optional). The previous frame (if any) becomes the history. */
+   spp, var optional). The previous frame (if any) becomes the history. The buffers' values are
+   not checked: radiance NaN, infinite or negative reads as 0, a depth <= 0 or not finite as a
+   miss, a normal longer than unit (|n|^2 > 1.0001) is normalised, one with a NaN or infinite
+   component (or too long to square) as (0, 0, 0). */
 FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
                                          fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
                                          const fovpt_guide *g);
@@ -8752,6 +8755,20 @@ FOVPT__PRIV int fovpt__dn_below_skip(const fovpt_denoise *dn, float var, float l
            dn->cfg.skip_noise * dn->cfg.skip_noise;
 }
 
+/* the normal guide as the denoiser reads it: a unit normal (|n|^2 <= 1.0001) bit for bit; a
+   longer one (a caller's unnormalised normal) normalised; one with a NaN or infinite
+   component, or whose square overflows, (0, 0, 0) (no normal stop passes it). Longer normals
+   gave dots c >> 1 and c^phi_normal = inf weights: NaN pixels (fuzz finding, session 18) */
+FOVPT__PRIV void fovpt__dn_nrm(const float *g, float n[3])
+{
+    float l2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2], s;
+    fovpt__copy3(n, g);
+    if (l2 <= 1.0001f) return;
+    s = l2 <= FLT_MAX ? 1.0f / FOV__SQRT(l2) : 0.0f; /* NaN or inf: 0 */
+    n[0] *= s; n[1] *= s; n[2] *= s;
+    if (!(fov__finite(n[0]) && fov__finite(n[1]) && fov__finite(n[2]))) n[0] = n[1] = n[2] = 0.0f;
+}
+
 FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
 {
     uint32_t x, y, k, W, H;
@@ -8772,14 +8789,14 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
             const float *c = fovpt__gin(dn->in, dn->in_stride, 3u, W, x, y);
-            const float *nrm = fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y);
-            float z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y);
+            float nrm[3], z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y);
             float *o = dn->hist[dn->cur] + FOVPT__DN_HIST * i, *b = dn->buf[0] + 4u * i;
             float kr, in[3], l, var_in = -1.0f, r = fovpt__dn_coarse(dn, x, y, &kr), hs[8];
             float hw = 0.0f;
             float a = fov__maxf(dn->cfg.alpha_periphery, dn->cfg.alpha_fovea / r), n = 1.0f;
             float var_own = 0.0f; /* the samples behind the guide's var */
             int hit = z > 0.0f && fov__finite(z), gv = 0;
+            fovpt__dn_nrm(fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y), nrm);
             for (k = 0; k < 3; ++k) in[k] = fov__finite(c[k]) ? fov__maxf(c[k], 0.0f) : 0.0f;
             if (!hit) z = 0.0f;
             l = fovpt__lum(in);

@@ -1599,6 +1599,55 @@ static void t_depth_far(void)
     free(sm);
 }
 
+/* A caller's normal guide that is not unit: one pixel's normal (0, 0, 1e20) or (0, 0, inf)
+   among (0.6, 0, 0.8) gives dots c of 8e19 or inf, and with phi_normal below 32 (the exact
+   power: 16 by squaring, 31.13 by powf) c^phi_normal = inf weights made NaN pixels before the
+   fix (fuzz finding F2 of session 18, tests/fuzz/regress/fovpt_dn/F2_normal_inf_nan.bin). Now
+   a normal longer than unit is normalised, a non-finite one reads as (0, 0, 0): the image is
+   finite and >= 0 */
+static void t_normal_hostile(void)
+{
+    static const float pns[2] = { 16.0f, 31.13f };
+    const uint32_t W = 12, H = 9;
+    size_t n = (size_t)W * H, i;
+    int ip, kind;
+    for (ip = 0; ip < 2; ++ip)
+        for (kind = 0; kind < 2; ++kind) {
+            fovpt_denoise dn;
+            fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+            fovpt_camera cam;
+            fovpt_output out;
+            fov_gaze g = { 6.0f, 4.0f };
+            void *dm = NULL;
+            img a;
+            float *o3 = (float *)malloc(n * 3u * sizeof(float));
+            uint32_t bad = 0, st = 12345u;
+            int ok;
+            img_alloc(&a, W, H);
+            for (i = 0; i < n; ++i) {
+                st = st * 1664525u + 1013904223u;
+                a.rgb[3 * i] = a.rgb[3 * i + 1] = a.rgb[3 * i + 2] = 0.2f + (float)(st >> 8) / 16777216.0f;
+                a.alb[3 * i] = a.alb[3 * i + 1] = a.alb[3 * i + 2] = 0.5f;
+                a.nrm[3 * i] = 0.6f; a.nrm[3 * i + 1] = 0.0f; a.nrm[3 * i + 2] = 0.8f;
+                a.dep[i] = 5.0f; a.spp[i] = 4.0f; a.var[i] = 0.01f;
+            }
+            a.nrm[3 * (4 * W + 4) + 0] = 0.0f;
+            a.nrm[3 * (4 * W + 4) + 2] = kind ? (float)HUGE_VAL : 1e20f;
+            dc.width = W; dc.height = H; dc.phi_normal = pns[ip];
+            fovpt_camera_init(&cam, W, H);
+            fovpt_output_init(&out);
+            out.rgb = o3;
+            ok = o3 && dn_make(&dn, &dc, &dm) && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                 fovpt_denoise_run(&dn, &out) == FOV_OK;
+            for (i = 0; ok && i < n * 3u; ++i) bad += !(o3[i] >= 0.0f && o3[i] <= FLT_MAX);
+            check(ok && bad == 0u, N("denoise_normal_%s_finite_pn%g", kind ? "inf" : "1e20", (double)pns[ip]),
+                  "%u of %u values NaN, infinite or negative (ok %d)", bad, (unsigned)(n * 3u), ok);
+            free(dm);
+            free(o3);
+            img_free(&a);
+        }
+}
+
 int main(void)
 {
     t_constant();
@@ -1609,6 +1658,7 @@ int main(void)
     t_errors();
     t_same_image();
     t_depth_far();
+    t_normal_hostile();
     t_robust();
     t_var_accum();
     t_two_stride1();
