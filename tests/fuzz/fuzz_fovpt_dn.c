@@ -26,7 +26,8 @@
      (a failed fovpt_denoise_frame before the good one; phases out of order: the documented
      FOV_ERR_INVALID_ARG, the output untouched). FOV_OK: A's and B's images equal bit for
      bit (rgb and rgb8), finite and >= 0; stride padding and canaries after every caller
-     buffer (images, guides, denoiser memory) intact.
+     buffer (images, guides, denoiser memory) intact. Last, sometimes: a frame whose temporal
+     phase ran on some rows only is not history (A's next frame = B's after a reset).
    Every buffer has a stride with 0 .. 3 elements of padding (or 0: packed). Each input runs
    in a few ms (ASan). */
 #define FOVPT_IMPLEMENTATION
@@ -733,6 +734,30 @@ static void fz_denoise(fz_in *in, const fovpt_scene *s)
             /* the frame's buffers unchanged by the denoiser */
             fz_buf_check(&nA, "noisy rgb (denoiser input)");
             for (k = 0; k < 5; ++k) fz_buf_check(&gbA[k], "guide (denoiser input)");
+        }
+    }
+    /* "A frame whose temporal phase did not run on every row is not used as history": A runs
+       the temporal phase of one more frame on rows [0, k) only, then a frame in full; B
+       forgets its history (fovpt_denoise_reset) before that frame: the same image. (The last
+       reads of an input, so the seeds before this check keep their meaning.) */
+    if (have_dn && fz_u8(in) >= 192) {
+        uint32_t kk = fz_pick(in, H);
+        e = fovpt_denoise_frame(&dnA, &cam, gaze, nA.p, nA.stride, &gA);
+        if (e == FOV_OK) {
+            if (kk) {
+                e = fovpt_denoise_temporal_rows(&dnA, 0, kk);
+                FZ_CHECK(e == FOV_OK, "temporal_rows on rows [0, %u): %d", kk, (int)e);
+            }
+            e = fovpt_denoise_frame(&dnA, &cam, gaze, nA.p, nA.stride, &gA);
+            FZ_CHECK(e == FOV_OK, "denoise_frame after a partial frame: %d", (int)e);
+            FZ_CHECK(fovpt_denoise_reset(&dnB) == FOV_OK, "denoise_reset");
+            e = fovpt_denoise_frame(&dnB, &cam, gaze, nA.p, nA.stride, &gA);
+            FZ_CHECK(e == FOV_OK, "denoise_frame after reset: %d", (int)e);
+            e = fovpt_denoise_run(&dnA, &outA);
+            e2 = fovpt_denoise_run(&dnB, &outB);
+            FZ_CHECK(e == FOV_OK && e2 == FOV_OK, "denoise_run: %d %d", (int)e, (int)e2);
+            fz_dn_out_check(&dA, "denoise_run after a partial frame");
+            fz_buf_same(&dA, &dB, "a partial frame used as history (vs. no history after reset): rgb");
         }
     }
     if (have_ctx) {
