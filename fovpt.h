@@ -491,8 +491,9 @@ MEMORY
    distance) per depth level, 3.6 KiB with 8-wide nodes, 1.5 KiB with 4; the BVH build 2.5
    KiB (the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins), its collapse 3.7 KiB;
    resolve_rows 2 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
-   The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
-   (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
+   The denoiser: fovpt_denoise_size (204 bytes per pixel, 164 with cfg.no_sure) into caller
+   memory (fovpt_denoise_init); its input image and guide buffers are caller buffers with
+   strides.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
