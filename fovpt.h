@@ -494,8 +494,9 @@ MEMORY
    distance) per depth level, 3.6 KiB with 8-wide nodes, 1.5 KiB with 4; the BVH build 2.5
    KiB (the work stack of FOVPT_MAX_BVH_DEPTH entries and 32 bins), its collapse 3.7 KiB;
    resolve_rows 2 KiB). Lower FOVPT_MAX_BVH_DEPTH to save stack.
-   The denoiser: fovpt_denoise_size (164 bytes per pixel) into caller memory
-   (fovpt_denoise_init); its input image and guide buffers are caller buffers with strides.
+   The denoiser: fovpt_denoise_size (204 bytes per pixel, 164 with cfg.no_sure) into caller
+   memory (fovpt_denoise_init); its input image and guide buffers are caller buffers with
+   strides.
 
 ERRORS AND LOGGING
    Every fallible function returns fov_result: FOV_OK (0) or a negative code;
@@ -2107,7 +2108,10 @@ FOVPT_API fov_result fovpt_denoise_init(fovpt_denoise *dn, const fovpt_denoise_c
 FOVPT_API fov_result fovpt_denoise_reset(fovpt_denoise *dn);   /* forgets the history */
 /* Starts a frame: its camera (the size of the config), gaze, the noisy linear image (3 floats
    per pixel, stride in floats, 0: packed) and its guides (depth and normal required; albedo,
-   spp, var optional). The previous frame (if any) becomes the history. */
+   spp, var optional). The previous frame (if any) becomes the history. The buffers' values are
+   not checked: radiance NaN, infinite or negative reads as 0, a depth <= 0 or not finite as a
+   miss, a normal longer than unit (|n|^2 > 1.0001) is normalised, one with a NaN or infinite
+   component (or too long to square) as (0, 0, 0). */
 FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
                                          fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
                                          const fovpt_guide *g);
@@ -7406,6 +7410,7 @@ FOVPT__PRIV float fovpt__lum(const float c[3])
 typedef struct fovpt__gsum {
     float alb[3], nrm[3], dep, l1, l2;
     uint32_t n, hits;
+    uint32_t dep_lo; /* 1: dep holds the distances times 2^-32 (their sum overflowed) */
 } fovpt__gsum;
 
 FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fovpt__attr *at,
@@ -7417,7 +7422,16 @@ FOVPT__PRIV void fovpt__gsum_add(fovpt__gsum *G, const fovpt_scene *s, const fov
     G->l2 += l * l;
     if (at->poid == FOVPT_PRIM_NONE || !(at->pt > 0.0f)) return;
     G->hits++;
-    G->dep += at->pt;
+    if (G->dep_lo) {
+        G->dep += at->pt * 2.3283064365386963e-10f;
+    } else if (fov__finite(G->dep + at->pt)) {
+        G->dep += at->pt;
+    } else { /* distances near FLT_MAX (a camera 1e38 from a plane): their sum overflows, so
+                from here on it is kept scaled by 2^-32 (exact for such sums); fovpt__gwrite
+                scales the mean back */
+        G->dep = G->dep * 2.3283064365386963e-10f + at->pt * 2.3283064365386963e-10f;
+        G->dep_lo = 1u;
+    }
     fovpt__madd3(G->nrm, G->nrm, 1.0f, at->pn);
     if (at->pmat < s->num_materials)
         fovpt__madd3(G->alb, G->alb, 1.0f, s->materials[at->pmat].albedo);
@@ -8145,7 +8159,9 @@ FOVPT__PRIV void fovpt__gwrite(const fovpt_guide *g, uint32_t W, uint32_t x, uin
     }
     if (g->depth)
         *fovpt__gptr(g->depth, g->depth_stride, 1u, W, x, y) =
-            G->hits ? G->dep / (float)G->hits : 0.0f;
+            !G->hits ? 0.0f
+                     : (G->dep_lo ? fov__minf(G->dep / (float)G->hits * 4294967296.0f, FLT_MAX)
+                                  : G->dep / (float)G->hits);
     if (g->spp) *fovpt__gptr(g->spp, g->spp_stride, 1u, W, x, y) = spp < 0.0f ? (float)G->n : spp;
     if (g->var) {
         float v = -1.0f;
@@ -8746,6 +8762,20 @@ FOVPT__PRIV int fovpt__dn_below_skip(const fovpt_denoise *dn, float var, float l
            dn->cfg.skip_noise * dn->cfg.skip_noise;
 }
 
+/* the normal guide as the denoiser reads it: a unit normal (|n|^2 <= 1.0001) bit for bit; a
+   longer one (a caller's unnormalised normal) normalised; one with a NaN or infinite
+   component, or whose square overflows, (0, 0, 0) (no normal stop passes it). Longer normals
+   gave dots c >> 1 and c^phi_normal = inf weights: NaN pixels (fuzz finding, session 18) */
+FOVPT__PRIV void fovpt__dn_nrm(const float *g, float n[3])
+{
+    float l2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2], s;
+    fovpt__copy3(n, g);
+    if (l2 <= 1.0001f) return;
+    s = l2 <= FLT_MAX ? 1.0f / FOV__SQRT(l2) : 0.0f; /* NaN or inf: 0 */
+    n[0] *= s; n[1] *= s; n[2] *= s;
+    if (!(fov__finite(n[0]) && fov__finite(n[1]) && fov__finite(n[2]))) n[0] = n[1] = n[2] = 0.0f;
+}
+
 FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
 {
     uint32_t x, y, k, W, H;
@@ -8766,14 +8796,14 @@ FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0,
         for (x = 0; x < W; ++x) {
             size_t i = (size_t)y * W + x;
             const float *c = fovpt__gin(dn->in, dn->in_stride, 3u, W, x, y);
-            const float *nrm = fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y);
-            float z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y);
+            float nrm[3], z = *fovpt__gin(g->depth, g->depth_stride, 1u, W, x, y);
             float *o = dn->hist[dn->cur] + FOVPT__DN_HIST * i, *b = dn->buf[0] + 4u * i;
             float kr, in[3], l, var_in = -1.0f, r = fovpt__dn_coarse(dn, x, y, &kr), hs[8];
             float hw = 0.0f;
             float a = fov__maxf(dn->cfg.alpha_periphery, dn->cfg.alpha_fovea / r), n = 1.0f;
             float var_own = 0.0f; /* the samples behind the guide's var */
             int hit = z > 0.0f && fov__finite(z), gv = 0;
+            fovpt__dn_nrm(fovpt__gin(g->normal, g->normal_stride, 3u, W, x, y), nrm);
             for (k = 0; k < 3; ++k) in[k] = fov__finite(c[k]) ? fov__maxf(c[k], 0.0f) : 0.0f;
             if (!hit) z = 0.0f;
             l = fovpt__lum(in);

@@ -1551,6 +1551,103 @@ static void t_sure_vs_truth(void)
     img_free(&a);
 }
 
+/* The depth guide is the mean hit distance even where the distances sum beyond FLT_MAX: a
+   camera 2.5e38 below a floor plane, looking up, hits it at t in [2.5e38, 2.9e38]; four
+   samples per pixel summed to inf before the fix (fuzz finding F1 of session 18,
+   tests/fuzz/regress/fovpt_dn/F1_depth_sum_overflow.bin) */
+static void t_depth_far(void)
+{
+    fovpt_material m;
+    fovpt_shape sh;
+    fovpt_scene_desc d;
+    fovpt_scene s;
+    fovpt_camera cam;
+    fovpt_config c = fovpt_config_default();
+    fovpt_ctx ctx;
+    fovpt_output o;
+    fov_gaze g = { 2.0f, 2.0f };
+    const float p0[3] = { 0.0f, 0.0f, 0.0f }, n0[3] = { 0.0f, 1.0f, 0.0f };
+    size_t sb = 0, cb = 0, i, bad = 0, badn = 0;
+    void *sm = NULL, *cm = NULL;
+    img a;
+    int ok;
+    fovpt_material_init(&m);
+    fovpt_shape_plane(&sh, p0, n0, 0);
+    fovpt_scene_desc_init(&d);
+    d.shapes = &sh; d.num_shapes = 1; d.materials = &m; d.num_materials = 1;
+    fovpt_camera_init(&cam, 4, 4);
+    cam.pos[1] = -2.5e38f;
+    cam.up[0] = 0.0f; cam.up[1] = 0.0f; cam.up[2] = 1.0f;
+    cam.fov_y_deg = 40.0f;
+    c.spp = 4;
+    img_alloc(&a, 4, 4);
+    ok = fovpt_scene_size(&d, &sb) == FOV_OK && (sm = malloc(sb)) != NULL &&
+         fovpt_scene_build(&s, &d, sm, sb) == FOV_OK && fovpt_memory_size(&c, &cam, &cb) == FOV_OK &&
+         (cm = malloc(cb)) != NULL && fovpt_init(&ctx, &c, &s, &cam, g, cm, cb) == FOV_OK;
+    fovpt_output_init(&o);
+    o.rgb = a.rgb;
+    ok = ok && fovpt_render_guide(&ctx, 0, &o, &a.g, NULL) == FOV_OK;
+    for (i = 0; ok && i < 16u; ++i) {
+        bad += !(a.dep[i] >= 2.5e38f && a.dep[i] <= 3.0e38f);
+        badn += !(a.nrm[3 * i] == 0.0f && a.nrm[3 * i + 1] == -1.0f && a.nrm[3 * i + 2] == 0.0f);
+    }
+    check(ok && bad == 0 && badn == 0, "guide_depth_mean_near_flt_max",
+          "ok %d, %zu of 16 depths outside [2.5e38, 3e38] (pixel 0: %g), %zu normals not (0, -1, 0)", ok, bad,
+          (double)a.dep[0], badn);
+    img_free(&a);
+    free(cm);
+    free(sm);
+}
+
+/* A caller's normal guide that is not unit: one pixel's normal (0, 0, 1e20) or (0, 0, inf)
+   among (0.6, 0, 0.8) gives dots c of 8e19 or inf, and with phi_normal below 32 (the exact
+   power: 16 by squaring, 31.13 by powf) c^phi_normal = inf weights made NaN pixels before the
+   fix (fuzz finding F2 of session 18, tests/fuzz/regress/fovpt_dn/F2_normal_inf_nan.bin). Now
+   a normal longer than unit is normalised, a non-finite one reads as (0, 0, 0): the image is
+   finite and >= 0 */
+static void t_normal_hostile(void)
+{
+    static const float pns[2] = { 16.0f, 31.13f };
+    const uint32_t W = 12, H = 9;
+    size_t n = (size_t)W * H, i;
+    int ip, kind;
+    for (ip = 0; ip < 2; ++ip)
+        for (kind = 0; kind < 2; ++kind) {
+            fovpt_denoise dn;
+            fovpt_denoise_cfg dc = fovpt_denoise_cfg_default();
+            fovpt_camera cam;
+            fovpt_output out;
+            fov_gaze g = { 6.0f, 4.0f };
+            void *dm = NULL;
+            img a;
+            float *o3 = (float *)malloc(n * 3u * sizeof(float));
+            uint32_t bad = 0, st = 12345u;
+            int ok;
+            img_alloc(&a, W, H);
+            for (i = 0; i < n; ++i) {
+                st = st * 1664525u + 1013904223u;
+                a.rgb[3 * i] = a.rgb[3 * i + 1] = a.rgb[3 * i + 2] = 0.2f + (float)(st >> 8) / 16777216.0f;
+                a.alb[3 * i] = a.alb[3 * i + 1] = a.alb[3 * i + 2] = 0.5f;
+                a.nrm[3 * i] = 0.6f; a.nrm[3 * i + 1] = 0.0f; a.nrm[3 * i + 2] = 0.8f;
+                a.dep[i] = 5.0f; a.spp[i] = 4.0f; a.var[i] = 0.01f;
+            }
+            a.nrm[3 * (4 * W + 4) + 0] = 0.0f;
+            a.nrm[3 * (4 * W + 4) + 2] = kind ? (float)HUGE_VAL : 1e20f;
+            dc.width = W; dc.height = H; dc.phi_normal = pns[ip];
+            fovpt_camera_init(&cam, W, H);
+            fovpt_output_init(&out);
+            out.rgb = o3;
+            ok = o3 && dn_make(&dn, &dc, &dm) && fovpt_denoise_frame(&dn, &cam, g, a.rgb, 0, &a.g) == FOV_OK &&
+                 fovpt_denoise_run(&dn, &out) == FOV_OK;
+            for (i = 0; ok && i < n * 3u; ++i) bad += !(o3[i] >= 0.0f && o3[i] <= FLT_MAX);
+            check(ok && bad == 0u, N("denoise_normal_%s_finite_pn%g", kind ? "inf" : "1e20", (double)pns[ip]),
+                  "%u of %u values NaN, infinite or negative (ok %d)", bad, (unsigned)(n * 3u), ok);
+            free(dm);
+            free(o3);
+            img_free(&a);
+        }
+}
+
 int main(void)
 {
     t_constant();
@@ -1560,6 +1657,8 @@ int main(void)
     t_foveation();
     t_errors();
     t_same_image();
+    t_depth_far();
+    t_normal_hostile();
     t_robust();
     t_var_accum();
     t_two_stride1();
