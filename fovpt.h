@@ -666,7 +666,12 @@ RECENT REVISION HISTORY
                       change; their mean does not. FOVPT_SAMPLER_RANDOM renders 0.13.0's
                       images bit for bit; a sampler value of 0 that was stored, computed or
                       passed as a number now means SOBOL, and 2 is no longer rejected
-                      (_FOVPT_SAMPLER_NUM is 3).
+                      (_FOVPT_SAMPLER_NUM is 3). Found by a new fuzzing target of the guides
+                      and the denoiser (tests/fuzz/fuzz_fovpt_dn.c): the depth guide is the
+                      mean hit distance where the distances sum beyond FLT_MAX (was inf);
+                      the denoiser normalises a normal guide longer than unit and reads a
+                      non-finite one as (0, 0, 0) (with phi_normal below 32 such a normal
+                      gave NaN pixels).
    0.13.0 (2026-12-06) A bounded shape (sphere, quad, box) is a BVH leaf of its own, never in a
                       combined leaf block, so the W-wide node's box test culls it: Cornell
                       box frames 1.6-1.7x fewer instructions, the mirror room and the
@@ -1869,7 +1874,7 @@ FOVPT_API float fovpt_alpha(const fovpt_temporal_cfg *resolved_t,
      albedo  3 floats: the mean over the pixel's samples of the first hit's material albedo
              (kd, or the mirror / glass tint); 0 where a sample leaves the scene
      normal  3 floats: the normalised mean of the first hits' unit normals, turned towards
-             the camera; (0, 0, 0) when no sample hits
+             the camera; (0, 0, 0) when no sample hits or the normals cancel
      depth   1 float: the mean distance from the pinhole to the first hit along the unit
              ray (ray distance, not view-plane depth), over the samples that hit; 0: none hit
      spp     1 float: samples per pixel behind the pixel's value: UNIFORM its samples (with
@@ -2121,7 +2126,8 @@ FOVPT_API fov_result fovpt_denoise_atrous_rows(fovpt_denoise *dn, uint32_t pass,
                                                uint32_t y1);
 FOVPT_API fov_result fovpt_denoise_resolve_rows(const fovpt_denoise *dn, uint32_t y0,
                                                 uint32_t y1, const fovpt_output *out);
-/* Every phase on the whole image (after fovpt_denoise_frame). */
+/* Every phase on the whole image (after fovpt_denoise_frame). The denoised image is finite and
+   >= 0 whatever the buffers hold (a fuzzing target checks it: tests/fuzz/fuzz_fovpt_dn.c). */
 FOVPT_API fov_result fovpt_denoise_run(fovpt_denoise *dn, const fovpt_output *out);
 
 /* The documented limits (see the configuration macros above), defined here so that a
