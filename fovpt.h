@@ -2116,7 +2116,7 @@ FOVPT_API fov_result fovpt_denoise_reset(fovpt_denoise *dn);   /* forgets the hi
    spp, var optional). The previous frame (if any) becomes the history. The buffers' values are
    not checked: radiance NaN, infinite or negative reads as 0, a depth <= 0 or not finite as a
    miss, a normal longer than unit (|n|^2 > 1.0001) is normalised, one with a NaN or infinite
-   component (or too long to square) as (0, 0, 0). */
+   component reads as (0, 0, 0). */
 FOVPT_API fov_result fovpt_denoise_frame(fovpt_denoise *dn, const fovpt_camera *cam,
                                          fov_gaze gaze, const float *rgb, uint32_t rgb_stride,
                                          const fovpt_guide *g);
@@ -8769,17 +8769,15 @@ FOVPT__PRIV int fovpt__dn_below_skip(const fovpt_denoise *dn, float var, float l
 }
 
 /* the normal guide as the denoiser reads it: a unit normal (|n|^2 <= 1.0001) bit for bit; a
-   longer one (a caller's unnormalised normal) normalised; one with a NaN or infinite
-   component, or whose square overflows, (0, 0, 0) (no normal stop passes it). Longer normals
-   gave dots c >> 1 and c^phi_normal = inf weights: NaN pixels (fuzz finding, session 18) */
+   longer one (a caller's unnormalised normal) normalised by the shared fov__normalize (which
+   prescales what would overflow); one with a NaN or infinite component (0, 0, 0) (no normal
+   stop passes it). Longer normals gave dots c >> 1 and c^phi_normal = inf weights: NaN pixels
+   (fuzz finding, session 18) */
 FOVPT__PRIV void fovpt__dn_nrm(const float *g, float n[3])
 {
-    float l2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2], s;
     fovpt__copy3(n, g);
-    if (l2 <= 1.0001f) return;
-    s = l2 <= FLT_MAX ? 1.0f / FOV__SQRT(l2) : 0.0f; /* NaN or inf: 0 */
-    n[0] *= s; n[1] *= s; n[2] *= s;
-    if (!(fov__finite(n[0]) && fov__finite(n[1]) && fov__finite(n[2]))) n[0] = n[1] = n[2] = 0.0f;
+    if (fov__dot(n, n) <= 1.0001f) return;
+    if (!(fov__normalize(n) > 0.0f)) n[0] = n[1] = n[2] = 0.0f;
 }
 
 FOVPT_API fov_result fovpt_denoise_temporal_rows(fovpt_denoise *dn, uint32_t y0, uint32_t y1)
